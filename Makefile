@@ -1,0 +1,59 @@
+# noiselab: `make` builds bin/noiselab and build/libnoiselab.a; `make test`
+# runs the tests; `make figures` reproduces the paper figures.  Every target
+# first installs the missing Debian packages of deps.txt.
+
+VERSION   := 0.1.0
+CC        ?= gcc
+OPT       ?= -O2 -g
+CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
+             -I/usr/include/OpenEXR -DNL_VERSION='"$(VERSION)"'
+LDLIBS    := -lOpenEXRCore -lfftw3 -lgsl -lgslcblas -lpng -ljansson -lmatheval -lm
+BUILD     := build
+
+LIB_SRC   := $(wildcard core/*.c synth/*.c analysis/*.c)
+CLI_SRC   := $(wildcard cli/*.c)
+TEST_SRC  := $(wildcard tests/*.c)
+LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
+CLI_OBJ   := $(CLI_SRC:%.c=$(BUILD)/%.o)
+TEST_OBJ  := $(TEST_SRC:%.c=$(BUILD)/%.o)
+LIB       := $(BUILD)/libnoiselab.a
+BIN       := bin/noiselab
+DEPS_OK   := $(BUILD)/.deps-ok
+
+.PHONY: all deps test figures experiments clean
+all: $(BIN) $(LIB)
+
+# One list of packages, in deps.txt; the stamp is redone when it changes.
+$(DEPS_OK): deps.txt tools/deps.sh
+	@sh tools/deps.sh
+	@mkdir -p $(BUILD) && touch $@
+deps: $(DEPS_OK)
+
+$(BUILD)/%.o: %.c | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -c $< -o $@
+
+$(LIB): $(LIB_OBJ)
+	$(AR) rcs $@ $^
+
+$(BIN): $(CLI_OBJ) $(LIB)
+	@mkdir -p bin
+	$(CC) $(CFLAGS) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
+
+$(BUILD)/tests/run: $(TEST_OBJ) $(LIB)
+	$(CC) $(CFLAGS) -o $@ $(TEST_OBJ) $(LIB) $(LDLIBS) -lcriterion
+
+# Unit, error-path, CLI and statistical tests (Criterion).
+test: $(BIN) $(BUILD)/tests/run
+	NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
+
+# Every experiment writes its data, picture and verdict into paper-figures/.
+figures: $(BIN)
+	@sh experiments/run-all.sh paper-figures
+
+experiments: figures
+
+clean:
+	rm -rf $(BUILD) bin tests/work
+
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d)

@@ -1,0 +1,44 @@
+/* Autocorrelation estimates from the FFT lag sums (Lewis 1987, eq. (15)). */
+#include "acf.h"
+#include "../core/autocorr.h"
+#include "../core/nl_error.h"
+#include "../core/wk.h"
+
+#include <math.h>
+
+int an_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out)
+{
+    nl_field *c;
+    int st = nl_autocorr_sums(x, isnan(mean) ? nl_field_mean(x) : mean, &c);
+    if (st)
+        return st;
+    for (size_t k = 0; k < c->n[2]; k++)
+        for (size_t j = 0; j < c->n[1]; j++)
+            for (size_t i = 0; i < c->n[0]; i++) {
+                size_t idx[3] = {i, j, k};
+                double w = unbiased ? 1.0 : (double)x->count;
+                for (int a = 0; unbiased && a < x->dim; a++) {
+                    long l = nl_wrap(idx[a], c->n[a]);
+                    w *= (double)x->n[a] - fabs((double)l);
+                }
+                c->data[(k * c->n[1] + j) * c->n[0] + i] /= w > 0 ? w : 1.0;
+            }
+    *out = c;
+    return NL_OK;
+}
+
+int an_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, double *val)
+{
+    size_t stride = 1;
+    if (axis < 0 || axis >= full->dim)
+        return NL_ERROR(NL_EINVAL, "axis: expected an axis of the %d-D field, got %d", full->dim, axis);
+    if (maxlag >= full->n[axis] / 2)
+        return NL_ERROR(NL_EINVAL, "max-lag: expected at most %zu samples, got %zu", full->n[axis] / 2 - 1, maxlag);
+    for (int a = 0; a < axis; a++)
+        stride *= full->n[a];
+    for (size_t i = 0; i <= maxlag; i++) {
+        lag[i] = (double)i * full->h[axis];
+        val[i] = full->data[i * stride];
+    }
+    return NL_OK;
+}

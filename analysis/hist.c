@@ -1,0 +1,44 @@
+/* Histogram and moments through GSL. */
+#include "hist.h"
+#include "../core/nl_error.h"
+
+#include <gsl/gsl_histogram.h>
+#include <gsl/gsl_statistics_double.h>
+#include <math.h>
+
+int an_moments_compute(const nl_field *x, an_moments *m)
+{
+    if (x->count < 2)
+        return NL_ERROR(NL_EINVAL, "moments: expected at least 2 samples, got %zu", x->count);
+    m->n = x->count;
+    m->mean = gsl_stats_mean(x->data, 1, x->count);
+    m->variance = gsl_stats_variance_m(x->data, 1, x->count, m->mean);
+    m->skewness = gsl_stats_skew_m_sd(x->data, 1, x->count, m->mean, sqrt(m->variance));
+    m->kurtosis = gsl_stats_kurtosis_m_sd(x->data, 1, x->count, m->mean, sqrt(m->variance));
+    gsl_stats_minmax(&m->min, &m->max, x->data, 1, x->count);
+    return NL_OK;
+}
+
+int an_hist(const nl_field *x, size_t bins, double *edges, double *counts)
+{
+    double lo, hi;
+    gsl_histogram *h;
+    if (bins < 1)
+        return NL_ERROR(NL_EINVAL, "bins: expected at least 1, got %zu", bins);
+    gsl_stats_minmax(&lo, &hi, x->data, 1, x->count);
+    if (!(hi > lo))
+        hi = lo + 1;
+    h = gsl_histogram_alloc(bins);
+    if (!h)
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu bins", bins);
+    /* nudge the upper edge so that the maximum is counted in the last bin */
+    gsl_histogram_set_ranges_uniform(h, lo, nextafter(hi, INFINITY));
+    for (size_t i = 0; i < x->count; i++)
+        gsl_histogram_increment(h, x->data[i]);
+    for (size_t b = 0; b <= bins; b++)
+        edges[b] = h->range[b];
+    for (size_t b = 0; b < bins; b++)
+        counts[b] = h->bin[b];
+    gsl_histogram_free(h);
+    return NL_OK;
+}

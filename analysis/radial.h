@@ -1,0 +1,20 @@
+/* Radial (isotropic) averages of a quantity on a wrapped grid.
+ *
+ * Sample i of axis a of the grid g sits at nl_wrap(i, m_a) * unit_a, with
+ * unit_a = h_a for lag grids and 1 / (m_a h_a) for frequency grids.  Bin b
+ * (0 <= b < nbins) collects the samples whose distance d satisfies
+ * (b - 0.5) step <= d < (b + 0.5) step; r[b] is the mean distance of its
+ * samples, v[b] their mean value and cnt[b] their number (r = v = NAN when
+ * empty). */
+#ifndef AN_RADIAL_H
+#define AN_RADIAL_H
+
+#include "../core/field.h"
+
+#include <stddef.h>
+
+enum { AN_GRID_LAG = 0, AN_GRID_FREQ = 1 };
+
+int an_radial(const nl_field *g, int kind, double step, size_t nbins, double *r, double *v, size_t *cnt);
+
+#endif

@@ -1,0 +1,55 @@
+/* Helpers shared by the subcommands: errors, option values, outputs. */
+#ifndef NL_CLI_H
+#define NL_CLI_H
+
+#include "../core/field.h"
+#include "../core/io.h"
+
+#include <jansson.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* Subcommand entry points: argv[0] is the subcommand name. */
+int cmd_synth(int argc, char **argv);
+int cmd_acf(int argc, char **argv);
+int cmd_psd(int argc, char **argv);
+int cmd_hist(int argc, char **argv);
+int cmd_models(int argc, char **argv);
+
+/* Print "noiselab: MSG" on stderr and exit with `code` (2: bad usage or
+ * input, 1: failure while running).  Pending outputs are removed. */
+void cli_die(int code, const char *fmt, ...) __attribute__((noreturn, format(printf, 2, 3)));
+
+/* Exit with the library's last message for status `st` (exit 2 or 1). */
+void cli_die_status(int st) __attribute__((noreturn));
+
+/* Report an option error from getopt for subcommand `cmd` and exit 2. */
+void cli_bad_option(const char *cmd, int c, char **argv);
+
+/* Option values; each exits 2 with a message naming the option on error. */
+int cli_parse_size(const char *opt, const char *s, size_t *n, size_t min);   /* returns dim */
+uint64_t cli_parse_u64(const char *opt, const char *s);
+double cli_parse_double(const char *opt, const char *s);
+size_t cli_parse_count(const char *opt, const char *s, size_t min);
+int cli_parse_spacing(const char *opt, const char *s, int dim, double *h);
+
+/* Does path end with ext (case-insensitive, ext with its dot)? */
+int cli_has_ext(const char *path, const char *ext);
+
+/* Outputs appear whole or not at all: cli_out_begin checks that a temporary
+ * file beside `path` can be created (exit 2 naming the path if not) and
+ * returns its name; cli_out_commit renames it to `path`.  Temporary files
+ * still pending at exit are removed. */
+const char *cli_out_begin(const char *path);
+void cli_out_commit(const char *path);
+
+/* Print a JSON object on stdout (compact keys in insertion order). */
+void cli_json_print(json_t *obj);
+
+/* A JSON array of n doubles (NaN becomes null). */
+json_t *cli_json_array(const double *v, size_t n);
+
+/* Read a field (EXR, PNG or TSV), exiting on error. */
+nl_field *cli_read_field(const char *path, nl_meta *meta);
+
+#endif

@@ -1,0 +1,51 @@
+/* noiselab models: the model catalogue. */
+#include "cli.h"
+#include "../core/model.h"
+
+#include <getopt.h>
+#include <stdio.h>
+#include <string.h>
+
+static const char help[] =
+    "usage: noiselab models [--json]\n\n"
+    "Lists every model a --acf or --spectrum SPEC may name, with its parameters\n"
+    "and formula.  A spec is NAME[:key=value,...], e.g. markov:scale=8.\n"
+    "In 2D and 3D every R model is isotropic, R(|lag|), unless given\n"
+    "  sep          separable: R(x) R(y) R(z) / var^(dim-1)\n"
+    "  angle=DEG    rotate the correlation ellipse about z\n"
+    "  ratio=Q      length along the rotated y axis / length along x\n"
+    "  zratio=Q     length along z / length along x\n"
+    "(for expr:, spectrum: and image: after a final ';', e.g. \"expr:exp(-r);ratio=0.5\").\n"
+    "Lags are in spacing units; frequencies in cycles per unit length; spectra\n"
+    "are two-sided densities whose integral is the variance R(0).\n";
+
+int cmd_models(int argc, char **argv)
+{
+    static const struct option opts[] = {{"json", no_argument, 0, 'j'}, {"help", no_argument, 0, 'h'}, {0}};
+    int c, json = 0;
+    size_t n;
+    const nl_model_info *cat = nl_model_catalogue(&n);
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+        if (c == 'j')
+            json = 1;
+        else if (c == 'h') {
+            fputs(help, stdout);
+            return 0;
+        } else
+            cli_bad_option("models", c, argv);
+    }
+    if (optind < argc)
+        cli_die(2, "models: unexpected argument \"%s\"", argv[optind]);
+    if (json) {
+        json_t *arr = json_array();
+        for (size_t i = 0; i < n; i++)
+            json_array_append_new(arr, json_pack("{s:s,s:s,s:s}", "name", cat[i].name, "params", cat[i].params,
+                                                 "formula", cat[i].formula));
+        cli_json_print(json_pack("{s:o}", "models", arr));
+        return 0;
+    }
+    for (size_t i = 0; i < n; i++)
+        printf("%-14s %s\n%14s %s\n", cat[i].name, cat[i].params, "", cat[i].formula);
+    return 0;
+}

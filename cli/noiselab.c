@@ -1,0 +1,51 @@
+/* noiselab: synthesise random fields with a prescribed autocorrelation or
+ * spectrum, and measure what was produced. */
+#include "cli.h"
+
+#include <gsl/gsl_errno.h>
+#include <stdio.h>
+#include <string.h>
+
+static const struct {
+    const char *name;
+    int (*run)(int, char **);
+    const char *summary;
+} commands[] = {
+    {"models", cmd_models, "list the autocorrelation and spectrum models with their parameters"},
+    {"synth", cmd_synth, "synthesise a field (method: fft)"},
+    {"acf", cmd_acf, "estimate the autocorrelation of a field"},
+    {"psd", cmd_psd, "estimate the power spectral density of a field (periodogram)"},
+    {"hist", cmd_hist, "histogram and moments of a field"},
+};
+
+static void usage(FILE *fp)
+{
+    fprintf(fp, "usage: noiselab COMMAND [OPTIONS]\n\n"
+                "Synthesise random fields with a prescribed autocorrelation or spectrum,\n"
+                "and measure what was produced.\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+        fprintf(fp, "  %-8s %s\n", commands[i].name, commands[i].summary);
+    fprintf(fp, "\n`noiselab COMMAND --help` describes each; `noiselab --version` prints the version.\n");
+}
+
+int main(int argc, char **argv)
+{
+    gsl_set_error_handler_off();
+    if (argc < 2) {
+        usage(stderr);
+        return 2;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+        usage(stdout);
+        return 0;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("noiselab %s\n", NL_VERSION);
+        return 0;
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+        if (strcmp(argv[1], commands[i].name) == 0)
+            return commands[i].run(argc - 1, argv + 1);
+    cli_die(2, "unknown command \"%s\" (expected one of: models, synth, acf, psd, hist; see noiselab --help)",
+            argv[1]);
+}

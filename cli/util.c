@@ -1,0 +1,201 @@
+/* Errors, option parsing and atomic outputs for the subcommands. */
+#include "cli.h"
+#include "../core/nl_error.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+enum { MAX_OUT = 8 };
+static struct {
+    char final[PATH_MAX];
+    char tmp[PATH_MAX];
+} outs[MAX_OUT];
+static int nouts;
+
+static void remove_pending(void)
+{
+    for (int i = 0; i < nouts; i++)
+        if (outs[i].tmp[0])
+            unlink(outs[i].tmp);
+    nouts = 0;
+}
+
+void cli_die(int code, const char *fmt, ...)
+{
+    va_list ap;
+    fputs("noiselab: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    remove_pending();
+    exit(code);
+}
+
+void cli_die_status(int st)
+{
+    cli_die(nl_error_is_input(st) ? 2 : 1, "%s", nl_errmsg());
+}
+
+void cli_bad_option(const char *cmd, int c, char **argv)
+{
+    extern int optind, optopt;
+    const char *arg = argv[optind - 1];
+    if (c == ':')
+        cli_die(2, "%s: option \"%s\" expects a value", cmd, arg);
+    if (optopt && (!arg || strncmp(arg, "--", 2) != 0))
+        cli_die(2, "%s: unknown option \"-%c\" (see noiselab %s --help)", cmd, optopt, cmd);
+    cli_die(2, "%s: unknown option \"%s\" (see noiselab %s --help)", cmd, arg ? arg : "?", cmd);
+}
+
+int cli_parse_size(const char *opt, const char *s, size_t *n, size_t min)
+{
+    const char *p = s;
+    int dim = 0;
+    while (1) {
+        char *end;
+        unsigned long long v;
+        if (dim == 3 || *p < '0' || *p > '9')
+            break;
+        errno = 0;
+        v = strtoull(p, &end, 10);
+        if (errno || v < min)
+            break;
+        n[dim++] = (size_t)v;
+        if (*end == 0)
+            return dim;
+        if (*end != 'x')
+            break;
+        p = end + 1;
+    }
+    cli_die(2, "%s: expected N, NxM or NxMxK with each N >= %zu, got \"%s\"", opt, min, s);
+}
+
+uint64_t cli_parse_u64(const char *opt, const char *s)
+{
+    char *end;
+    unsigned long long v;
+    errno = 0;
+    v = strtoull(s, &end, 10);
+    if (*s < '0' || *s > '9' || *end || errno)
+        cli_die(2, "%s: expected an integer from 0 to 2^64-1, got \"%s\"", opt, s);
+    return (uint64_t)v;
+}
+
+double cli_parse_double(const char *opt, const char *s)
+{
+    char *end;
+    double v = strtod(s, &end);
+    if (end == s || *end || !isfinite(v))
+        cli_die(2, "%s: expected a finite number, got \"%s\"", opt, s);
+    return v;
+}
+
+size_t cli_parse_count(const char *opt, const char *s, size_t min)
+{
+    char *end;
+    unsigned long long v;
+    errno = 0;
+    v = strtoull(s, &end, 10);
+    if (*s < '0' || *s > '9' || *end || errno || v < min)
+        cli_die(2, "%s: expected an integer >= %zu, got \"%s\"", opt, min, s);
+    return (size_t)v;
+}
+
+int cli_parse_spacing(const char *opt, const char *s, int dim, double *h)
+{
+    const char *p = s;
+    int k = 0;
+    while (k < 3) {
+        char *end;
+        double v = strtod(p, &end);
+        if (end == p || !(v > 0) || !isfinite(v))
+            break;
+        h[k++] = v;
+        if (*end == 0) {
+            if (k == 1)
+                for (int a = 1; a < dim; a++)
+                    h[a] = v;
+            else if (k != dim)
+                break;
+            return k;
+        }
+        if (*end != ',')
+            break;
+        p = end + 1;
+    }
+    cli_die(2, "%s: expected a positive spacing H or one per axis (H0,H1,...), got \"%s\"", opt, s);
+}
+
+int cli_has_ext(const char *path, const char *ext)
+{
+    size_t lp = strlen(path), le = strlen(ext);
+    return lp > le && strcasecmp(path + lp - le, ext) == 0;
+}
+
+const char *cli_out_begin(const char *path)
+{
+    int fd;
+    if (nouts == 0)
+        atexit(remove_pending);
+    if (nouts == MAX_OUT)
+        cli_die(1, "too many outputs");
+    if (!*path)
+        cli_die(2, "output: expected a file name, got \"\"");
+    snprintf(outs[nouts].final, PATH_MAX, "%s", path);
+    if (snprintf(outs[nouts].tmp, PATH_MAX, "%s.tmp.%ld", path, (long)getpid()) >= PATH_MAX)
+        cli_die(2, "output: path too long: \"%s\"", path);
+    fd = open(outs[nouts].tmp, O_WRONLY | O_CREAT | O_EXCL, 0644);
+    if (fd < 0) {
+        int e = errno;
+        outs[nouts].tmp[0] = 0;
+        cli_die(2, "output: cannot write \"%s\": %s", path, strerror(e));
+    }
+    close(fd);
+    return outs[nouts++].tmp;
+}
+
+void cli_out_commit(const char *path)
+{
+    for (int i = 0; i < nouts; i++)
+        if (outs[i].tmp[0] && strcmp(outs[i].final, path) == 0) {
+            if (rename(outs[i].tmp, outs[i].final) != 0)
+                cli_die(1, "output: cannot rename to \"%s\": %s", path, strerror(errno));
+            outs[i].tmp[0] = 0;
+        }
+}
+
+void cli_json_print(json_t *obj)
+{
+    char *s = json_dumps(obj, JSON_PRESERVE_ORDER | JSON_COMPACT | JSON_REAL_PRECISION(10));
+    if (!s)
+        cli_die(1, "cannot format the JSON output");
+    puts(s);
+    free(s);
+    json_decref(obj);
+}
+
+json_t *cli_json_array(const double *v, size_t n)
+{
+    json_t *a = json_array();
+    for (size_t i = 0; i < n; i++)
+        json_array_append_new(a, isfinite(v[i]) ? json_real(v[i]) : json_null());
+    return a;
+}
+
+nl_field *cli_read_field(const char *path, nl_meta *meta)
+{
+    nl_field *f;
+    int st = nl_field_read(path, &f, meta);
+    if (st)
+        cli_die_status(st);
+    return f;
+}

@@ -1,0 +1,20 @@
+/* Lag-product sums of a field by FFT (the shared primitive under the
+ * empirical autocorrelation of eq. (15), Lewis 1987, and the ACF estimators).
+ *
+ * c(l) = sum over j with j and j + l inside the grid of
+ *        (x_j - mean)(x_{j+l} - mean),  for every lag |l_a| < n_a.
+ * The result is a field of m_a = 2 n_a samples per axis (1 beyond dim), in
+ * wrapped order: index i holds lag i for i < n_a and lag i - m_a for
+ * i > n_a (index n_a is lag -n_a, which is 0).  Zero padding to 2 n_a makes
+ * the circular correlation equal to the linear one. */
+#ifndef NL_AUTOCORR_H
+#define NL_AUTOCORR_H
+
+#include "field.h"
+
+int nl_autocorr_sums(const nl_field *x, double mean, nl_field **out);
+
+/* Arithmetic mean of the samples. */
+double nl_field_mean(const nl_field *x);
+
+#endif

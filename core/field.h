@@ -1,0 +1,37 @@
+/* An n-D field: a grid of doubles in 1, 2 or 3 dimensions.
+ *
+ * Layout is row-major with x fastest: sample (i, j, k) (x, y, z index) is
+ * data[(k * n[1] + j) * n[0] + i].  Axes beyond `dim` have n = 1 and h = 1.
+ * h[a] is the grid spacing along axis a, so the lag between samples i and
+ * i + m along x is m * h[0] (lags are always in spacing units). */
+#ifndef NL_FIELD_H
+#define NL_FIELD_H
+
+#include <stddef.h>
+
+typedef struct {
+    int dim;         /* 1, 2 or 3 */
+    size_t n[3];     /* samples per axis (x, y, z); 1 beyond dim */
+    double h[3];     /* grid spacing per axis; 1 beyond dim */
+    size_t count;    /* n[0] * n[1] * n[2] */
+    double *data;    /* count samples, row-major, x fastest; fftw_malloc'ed (SIMD-aligned) */
+} nl_field;
+
+/* Check that a grid of n[0..dim-1] samples of `elem` bytes each, times
+ * `copies` arrays alive at once, neither overflows size_t nor exceeds the
+ * memory available on this machine.  Returns NL_OK, or NL_ETOOBIG with a
+ * message; writes the sample count to *count when not NULL. */
+int nl_size_check(int dim, const size_t *n, size_t elem, size_t copies, size_t *count);
+
+/* Allocate a zeroed field of dim 1..3 with n[a] >= 1 samples and spacing
+ * h[a] > 0 (h may be NULL for unit spacing).  Returns NULL and sets the
+ * error message (NL_EINVAL, NL_ETOOBIG or NL_ENOMEM in *status) on failure. */
+nl_field *nl_field_alloc(int dim, const size_t *n, const double *h, int *status);
+
+void nl_field_free(nl_field *f);
+
+/* Bytes of memory available to this process now (MemAvailable), or 0 if
+ * unknown. */
+size_t nl_mem_available(void);
+
+#endif

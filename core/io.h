@@ -1,0 +1,60 @@
+/* Field files: OpenEXR (through the OpenEXRCore C API), PNG, TSV.
+ *
+ * EXR: one FLOAT channel "Y", ZIP-compressed scanlines; a 1D field is one
+ * row, a 3D field of n0 x n1 x n2 is stored as an image n0 wide and n1*n2
+ * high (slice k is rows k*n1 .. k*n1+n1-1), with noiselab.size saying so.
+ * String attributes record how the field was made (nl_meta).
+ *
+ * Writers write exactly the path given; making outputs appear atomically is
+ * the caller's job (cli/ writes to a temporary name and renames). */
+#ifndef NL_IO_H
+#define NL_IO_H
+
+#include "field.h"
+
+#include <stdint.h>
+
+/* Provenance stored with a field; empty strings are not written. */
+typedef struct {
+    char model[1024];   /* noiselab.model: the model spec */
+    char method[64];    /* noiselab.method: synthesis method */
+    char seed[32];      /* noiselab.seed: decimal seed */
+    char spacing[128];  /* noiselab.spacing: "h0[,h1[,h2]]" */
+    char size[64];      /* noiselab.size: "N[xM[xK]]" */
+    char version[32];   /* noiselab.version */
+} nl_meta;
+
+/* Write `f` as EXR with the attributes of `meta` (may be NULL).  Samples
+ * are stored as 32-bit floats. Returns NL_OK or NL_EIO/NL_EINVAL. */
+int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta);
+
+/* Read the "Y" channel (or the only channel) of an EXR into a new field;
+ * noiselab.size and noiselab.spacing are honoured when present.  `meta`
+ * (may be NULL) receives the attributes found.  NL_EINPUT on a bad file. */
+int nl_exr_read(const char *path, nl_field **out, nl_meta *meta);
+
+/* Read an 8- or 16-bit PNG (grey, or colour converted to grey by the
+ * Rec. 709 weights) into a new 2D field with values in [0, 1]. */
+int nl_png_read(const char *path, nl_field **out);
+
+/* Write an 8-bit grey PNG of a w x h row-major image. */
+int nl_png_write_gray8(const char *path, size_t w, size_t h, const uint8_t *pix);
+
+/* 8-bit preview of a 2D field (the first z slice of a 3D one): values from
+ * lo to hi map linearly onto 0..255 and are clamped. */
+int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi);
+
+/* Write a TSV table: `comment` (may be NULL) as a '#' line, a header line of
+ * the ncols names, then nrows rows of the columns cols[0..ncols-1]. */
+int nl_tsv_write(const char *path, const char *comment, int ncols, const char *const *names,
+                 size_t nrows, const double *const *cols);
+
+/* Read a 1D field from a TSV table with a header line: the column named
+ * "value" if there is one, else the last; the spacing is taken from a first
+ * column named "t" or "x" when present.  Lines starting with '#' are skipped. */
+int nl_tsv_read_field(const char *path, nl_field **out);
+
+/* Read any field: EXR by content, else PNG by content, else TSV. */
+int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
+
+#endif

@@ -1,0 +1,85 @@
+/* PNG read (exemplars) and 8-bit grey write (previews) through libpng. */
+#include "io.h"
+#include "nl_error.h"
+
+#include <math.h>
+#include <png.h>
+#include <stdlib.h>
+#include <string.h>
+
+int nl_png_read(const char *path, nl_field **out)
+{
+    png_image img;
+    png_bytep buf;
+    size_t n[2];
+    nl_field *f;
+    int st;
+
+    *out = NULL;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&img, path))
+        return NL_ERROR(NL_EINPUT, "%s: not a readable PNG file: %s", path, img.message);
+    /* 16-bit linear grey keeps 16-bit precision; colour is reduced to grey
+     * by libpng's Rec. 709 weights. */
+    img.format = PNG_FORMAT_LINEAR_Y;
+    n[0] = img.width;
+    n[1] = img.height;
+    f = nl_field_alloc(2, n, NULL, &st);
+    if (!f) {
+        png_image_free(&img);
+        return st;
+    }
+    buf = malloc(PNG_IMAGE_SIZE(img));
+    if (!buf) {
+        png_image_free(&img);
+        nl_field_free(f);
+        return NL_ERROR(NL_ENOMEM, "out of memory reading %s", path);
+    }
+    if (!png_image_finish_read(&img, NULL, buf, 0, NULL)) {
+        st = NL_ERROR(NL_EINPUT, "%s: corrupt PNG: %s", path, img.message);
+        free(buf);
+        nl_field_free(f);
+        png_image_free(&img);
+        return st;
+    }
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] = ((const png_uint_16 *)buf)[i] / 65535.0;
+    free(buf);
+    *out = f;
+    return NL_OK;
+}
+
+int nl_png_write_gray8(const char *path, size_t w, size_t h, const uint8_t *pix)
+{
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    if (w > 0x7fffffff || h > 0x7fffffff)
+        return NL_ERROR(NL_ETOOBIG, "PNG: %zu x %zu is too large", w, h);
+    img.width = (png_uint_32)w;
+    img.height = (png_uint_32)h;
+    img.format = PNG_FORMAT_GRAY;
+    if (!png_image_write_to_file(&img, path, 0, pix, 0, NULL))
+        return NL_ERROR(NL_EIO, "%s: cannot write PNG: %s", path, img.message);
+    return NL_OK;
+}
+
+int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi)
+{
+    size_t w = f->n[0], h = f->dim >= 2 ? f->n[1] : 1;
+    uint8_t *pix;
+    int st;
+    if (!(hi > lo))
+        return NL_ERROR(NL_EINVAL, "preview: expected a range lo < hi, got %g..%g", lo, hi);
+    pix = malloc(w * h);
+    if (!pix)
+        return NL_ERROR(NL_ENOMEM, "out of memory for the preview");
+    for (size_t i = 0; i < w * h; i++) {
+        double v = (f->data[i] - lo) / (hi - lo) * 255.0;
+        pix[i] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : lrint(v));
+    }
+    st = nl_png_write_gray8(path, w, h, pix);
+    free(pix);
+    return st;
+}

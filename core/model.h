@@ -1,0 +1,87 @@
+/* The model layer: an autocorrelation R(lag) and, where known, its spectrum.
+ *
+ * A model is made from a spec string (see `noiselab models`):
+ *     markov[:scale=1,var=1]          R = var exp(-|t|/scale)
+ *     gauss[:scale=1]                 R = var exp(-(t/scale)^2)
+ *     markaussian:alpha=1.4[,scale=1] R = var exp(-|t/scale|^alpha)
+ *     oscillatory:omega=10[,scale=1]  R = var cos(omega t) exp(-|t|/scale)
+ *     gauss-osc:omega=10[,scale=1]    R = var cos(omega t) exp(-(t/scale)^2)
+ *     matern:nu=1.5[,scale=1]         R = var 2^(1-nu)/Gamma(nu) u^nu K_nu(u), u = sqrt(2 nu)|t|/scale
+ *     power:d=2.5[,fmin=,fmax=]       S = c |f|^-d for fmin <= |f| <= fmax, c such that the integral of S is var
+ *     expr:EXPR                       R given by a libmatheval expression
+ *     spectrum:EXPR                   S given by a libmatheval expression
+ *     image:FILE                      R = empirical autocorrelation of an exemplar (Lewis 1987, eq. 15)
+ * Named models take var= (R(0)) and, in 2D and 3D, `sep` (separable:
+ * R(x)R(y)R(z)/var^(dim-1)), `angle=` (degrees, rotation about z) and `ratio=`
+ * (correlation length along the rotated y axis over that along x), `zratio=`
+ * (same for z) for the ellipsoidal stretch of Stam and Fiume; default is
+ * isotropic, R(|lag|).  For expr:, spectrum: and image: these keys may follow
+ * a final ';', e.g. "expr:exp(-abs(t));ratio=0.5".
+ *
+ * Expression variables.  ACF expressions: t (the signed lag in 1D; the
+ * stretched lag norm in n-D), x, y, z (lag components), r (the stretched lag
+ * norm).  Spectrum expressions: f (|frequency|; signed in 1D), fx, fy, fz,
+ * k (|frequency|).  Frequencies are in cycles per unit length (cycles per
+ * sample at unit spacing); spectra are two-sided densities, so the variance
+ * is the integral of S over all frequencies.
+ *
+ * libmatheval evaluation is not thread-safe: nl_model_acf and
+ * nl_model_spectrum must not be called on one model from two threads. */
+#ifndef NL_MODEL_H
+#define NL_MODEL_H
+
+#include <stddef.h>
+
+typedef enum {
+    NL_MODEL_MARKOV,
+    NL_MODEL_GAUSS,
+    NL_MODEL_MARKAUSSIAN,
+    NL_MODEL_OSCILLATORY,
+    NL_MODEL_GAUSS_OSC,
+    NL_MODEL_MATERN,
+    NL_MODEL_POWER,
+    NL_MODEL_EXPR,
+    NL_MODEL_SPECTRUM,
+    NL_MODEL_IMAGE
+} nl_model_kind;
+
+typedef struct nl_model nl_model;
+
+/* Parse a spec.  Returns NL_OK and a new model in *out, or NL_EINVAL
+ * (NL_EINPUT for an unreadable image) with a message naming the bad part. */
+int nl_model_parse(const char *spec, nl_model **out);
+
+void nl_model_free(nl_model *m);
+
+nl_model_kind nl_model_get_kind(const nl_model *m);
+
+/* The spec as given by the user. */
+const char *nl_model_spec(const nl_model *m);
+
+/* Is the model defined by its spectrum (power, spectrum:) rather than by R? */
+int nl_model_is_spectral(const nl_model *m);
+
+/* R at the lag vector lag[0..dim-1] (spacing units), for models defined by R.
+ * For spectral models returns NAN (use the sampled conversion in wk.h). */
+double nl_model_acf(const nl_model *m, int dim, const double *lag);
+
+/* S at the frequency vector f[0..dim-1] (cycles per unit length) for spectral
+ * models, and for the 1D analytic spectra of markov, gauss, oscillatory and
+ * gauss-osc; NAN where no closed form is implemented. */
+double nl_model_spectrum(const nl_model *m, int dim, const double *f);
+
+/* Check that the model can be used in `dim` dimensions (e.g. an image model
+ * has no 3D table, spectral models take no anisotropy keys). */
+int nl_model_check_dim(const nl_model *m, int dim);
+
+/* One entry of the model catalogue printed by `noiselab models`. */
+typedef struct {
+    const char *name;     /* as written in a spec */
+    const char *params;   /* parameters with defaults; required ones first */
+    const char *formula;  /* R or S */
+} nl_model_info;
+
+/* The catalogue; *count receives its length. */
+const nl_model_info *nl_model_catalogue(size_t *count);
+
+#endif

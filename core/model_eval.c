@@ -1,0 +1,151 @@
+/* Evaluation of R(lag) and S(f) for every model family. */
+#include "model_internal.h"
+
+#include <gsl/gsl_sf_bessel.h>
+#include <gsl/gsl_sf_gamma.h>
+#include <math.h>
+#include <matheval.h>
+
+static double eval_expr(void *ev, const char *const *names, double *values, int n)
+{
+    return evaluator_evaluate(ev, n, (char **)names, values);
+}
+
+static double acf_expr(const nl_model *m, double t, double x, double y, double z, double r)
+{
+    static const char *const names[] = {"t", "x", "y", "z", "r"};
+    double v[] = {t, x, y, z, r};
+    return eval_expr(m->eval, names, v, 5);
+}
+
+static double matern(double nu, double u)
+{
+    gsl_sf_result lk;
+    if (u == 0)
+        return 1.0;
+    if (gsl_sf_bessel_lnKnu_e(nu, u, &lk) != 0)
+        return 0.0;
+    return exp((1 - nu) * M_LN2 - gsl_sf_lngamma(nu) + nu * log(u) + lk.val);
+}
+
+/* The 1D profile R1(t) of a model, t signed. */
+static double profile(const nl_model *m, double t)
+{
+    double a = fabs(t) / m->scale;
+    switch (m->kind) {
+    case NL_MODEL_MARKOV: return m->var * exp(-a);
+    case NL_MODEL_GAUSS: return m->var * exp(-a * a);
+    case NL_MODEL_MARKAUSSIAN: return m->var * exp(-pow(a, m->alpha));
+    case NL_MODEL_OSCILLATORY: return m->var * cos(m->omega * t) * exp(-a);
+    case NL_MODEL_GAUSS_OSC: return m->var * cos(m->omega * t) * exp(-a * a);
+    case NL_MODEL_MATERN: return m->var * matern(m->nu, sqrt(2 * m->nu) * a);
+    case NL_MODEL_EXPR: return acf_expr(m, t, t, 0, 0, fabs(t));
+    case NL_MODEL_IMAGE: return nl_model_image_acf(m, t, 0);
+    default: return NAN;
+    }
+}
+
+double nl_model_acf(const nl_model *m, int dim, const double *lag)
+{
+    double u, v, w, r;
+    if (nl_model_is_spectral(m))
+        return NAN;
+    if (dim == 1)
+        return profile(m, lag[0]);
+    if (m->kind == NL_MODEL_IMAGE)
+        return nl_model_image_acf(m, lag[0], lag[1]);
+    /* Stam and Fiume's ellipsoid: rotate by -angle, then shrink the y and z
+     * axes by their length ratios. */
+    u = cos(m->angle) * lag[0] + sin(m->angle) * lag[1];
+    v = (-sin(m->angle) * lag[0] + cos(m->angle) * lag[1]) / m->ratio;
+    w = dim == 3 ? lag[2] / m->zratio : 0;
+    if (m->sep) {
+        double r0 = profile(m, 0), p = profile(m, u) * profile(m, v);
+        if (dim == 3)
+            p *= profile(m, w) / r0;
+        return p / r0;
+    }
+    r = sqrt(u * u + v * v + w * w);
+    if (m->kind == NL_MODEL_EXPR)
+        return acf_expr(m, r, u, v, w, r);
+    return profile(m, r);
+}
+
+/* Integral of k^-d over fmin <= |k| <= fmax in `dim` dimensions. */
+static double power_norm(const nl_model *m, int dim)
+{
+    static const double shell[] = {0, 2.0, 2 * M_PI, 4 * M_PI};
+    double e = dim - 1 - m->d;  /* integrand k^e dk over the radius */
+    double radial;
+    if (fabs(e + 1) < 1e-12)
+        radial = log(m->fmax / m->fmin);
+    else
+        radial = (pow(m->fmax, e + 1) - pow(m->fmin, e + 1)) / (e + 1);
+    return shell[dim] * radial;
+}
+
+/* Two-sided 1D spectrum of a Markov (exponential) and a Gaussian ACF. */
+static double s_markov(double var, double s, double f)
+{
+    double q = 2 * M_PI * f * s;
+    return var * 2 * s / (1 + q * q);
+}
+
+static double s_gauss(double var, double s, double f)
+{
+    double q = M_PI * f * s;
+    return var * s * sqrt(M_PI) * exp(-q * q);
+}
+
+double nl_model_spectrum(const nl_model *m, int dim, const double *f)
+{
+    double k2 = 0, k, f0 = m->omega / (2 * M_PI);
+    for (int a = 0; a < dim; a++)
+        k2 += f[a] * f[a];
+    k = sqrt(k2);
+    switch (m->kind) {
+    case NL_MODEL_POWER:
+        if (k < m->fmin || k > m->fmax || k == 0)
+            return 0.0;
+        return m->var / power_norm(m, dim) * pow(k, -m->d);
+    case NL_MODEL_SPECTRUM: {
+        static const char *const names[] = {"f", "fx", "fy", "fz", "k"};
+        double v[] = {dim == 1 ? f[0] : k, f[0], dim > 1 ? f[1] : 0, dim > 2 ? f[2] : 0, k};
+        return eval_expr(m->eval, names, v, 5);
+    }
+    default:
+        break;
+    }
+    if (dim != 1)
+        return NAN;
+    switch (m->kind) {
+    case NL_MODEL_MARKOV: return s_markov(m->var, m->scale, f[0]);
+    case NL_MODEL_GAUSS: return s_gauss(m->var, m->scale, f[0]);
+    case NL_MODEL_OSCILLATORY:
+        return 0.5 * (s_markov(m->var, m->scale, f[0] - f0) + s_markov(m->var, m->scale, f[0] + f0));
+    case NL_MODEL_GAUSS_OSC:
+        return 0.5 * (s_gauss(m->var, m->scale, f[0] - f0) + s_gauss(m->var, m->scale, f[0] + f0));
+    default: return NAN;
+    }
+}
+
+static const nl_model_info catalogue[] = {
+    {"markov", "[scale=1,var=1]", "R = var exp(-|t|/scale); 1D S = var 2 scale / (1 + (2 pi f scale)^2)"},
+    {"gauss", "[scale=1,var=1]", "R = var exp(-(t/scale)^2); 1D S = var scale sqrt(pi) exp(-(pi f scale)^2)"},
+    {"markaussian", "alpha=A [,scale=1,var=1]", "R = var exp(-|t/scale|^alpha), 0 < alpha <= 2"},
+    {"oscillatory", "omega=W [,scale=1,var=1]", "R = var cos(omega t) exp(-|t|/scale)"},
+    {"gauss-osc", "omega=W [,scale=1,var=1]", "R = var cos(omega t) exp(-(t/scale)^2)"},
+    {"matern", "nu=V [,scale=1,var=1]",
+     "R = var 2^(1-nu)/Gamma(nu) u^nu K_nu(u), u = sqrt(2 nu) |t| / scale"},
+    {"power", "d=D [,fmin=1/1024,fmax=0.5,var=1]",
+     "S = c |f|^-d for fmin <= |f| <= fmax (0 elsewhere), c such that the integral of S is var"},
+    {"expr:EXPR", "variables t, x, y, z, r", "R = EXPR (libmatheval syntax), e.g. expr:cos(10*t)*exp(-abs(t))"},
+    {"spectrum:EXPR", "variables f, fx, fy, fz, k", "S = EXPR, a non-negative two-sided density"},
+    {"image:FILE", "PNG (8/16-bit grey) or EXR", "R = empirical autocorrelation of the exemplar (Lewis 1987, eq. 15)"},
+};
+
+const nl_model_info *nl_model_catalogue(size_t *count)
+{
+    *count = sizeof catalogue / sizeof *catalogue;
+    return catalogue;
+}

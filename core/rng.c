@@ -1,0 +1,30 @@
+/* Philox4x32-10 counter-based Gaussian numbers. */
+#include "rng.h"
+
+#include <math.h>
+#include <Random123/philox.h>
+#include <Random123/u01fixedpt.h>
+
+static philox4x32_ctr_t block(uint64_t seed, uint32_t stream, uint64_t index)
+{
+    philox4x32_ctr_t c = {{(uint32_t)index, (uint32_t)(index >> 32), stream, 0}};
+    philox4x32_key_t k = {{(uint32_t)seed, (uint32_t)(seed >> 32)}};
+    return philox4x32(c, k);
+}
+
+static uint64_t join(uint32_t lo, uint32_t hi) { return ((uint64_t)hi << 32) | lo; }
+
+double nl_rng_uniform(uint64_t seed, uint32_t stream, uint64_t index)
+{
+    philox4x32_ctr_t r = block(seed, stream, index);
+    return u01fixedpt_open_open_64_double(join(r.v[0], r.v[1]));
+}
+
+double nl_rng_gauss(uint64_t seed, uint32_t stream, uint64_t index)
+{
+    philox4x32_ctr_t r = block(seed, stream, index);
+    double u1 = u01fixedpt_open_open_64_double(join(r.v[0], r.v[1]));
+    double u2 = u01fixedpt_open_open_64_double(join(r.v[2], r.v[3]));
+    /* Box and Muller (1958) */
+    return sqrt(-2.0 * log(u1)) * cos(2.0 * M_PI * u2);
+}

@@ -1,0 +1,27 @@
+/* Counter-based random numbers (Random123 Philox4x32-10).
+ *
+ * How a seed maps to every random number: the Gaussian number for
+ * (seed, stream, index) is computed from the Philox block with key = the
+ * 64-bit seed and counter = (index low 32 bits, index high 32 bits, stream,
+ * 0).  Its first two 64-bit halves are mapped to uniforms in (0, 1) and
+ * turned into one standard normal by the Box-Muller transform (cosine
+ * branch).  No state is carried between calls, so any sample of any field
+ * can be recomputed on its own, in any order and with any thread count.
+ *
+ * Streams in use: NL_STREAM_WHITE is the white noise under FFT synthesis
+ * (one number per grid sample, index = row-major sample index), so two
+ * models synthesised with the same seed and size share it. */
+#ifndef NL_RNG_H
+#define NL_RNG_H
+
+#include <stdint.h>
+
+enum { NL_STREAM_WHITE = 0 };
+
+/* Uniform in the open interval (0, 1), 53 bits. */
+double nl_rng_uniform(uint64_t seed, uint32_t stream, uint64_t index);
+
+/* Standard normal N(0, 1). */
+double nl_rng_gauss(uint64_t seed, uint32_t stream, uint64_t index);
+
+#endif

@@ -1,0 +1,37 @@
+/* Models sampled on a periodic grid, and the Wiener-Khinchine conversion
+ * between autocorrelation and spectrum on that grid (Lewis 1987, eq. (2)).
+ *
+ * Wrapped order: along an axis of n samples with spacing h, index j stands
+ * for lag w(j) h and for frequency w(j) / (n h) (cycles per unit length),
+ * where w(j) = j for j <= n/2 and j - n otherwise.
+ *
+ * Scaling (FFTW is unnormalised; these are not):
+ *     forward  S_k = (h_1 ... h_d) sum_j R_j exp(-2 pi i j.k / n)
+ *     inverse  R_j = 1 / (n_1 h_1 ... n_d h_d) sum_k S_k exp(+2 pi i j.k / n)
+ * so S is a two-sided spectral density in (variance) per (cycles per unit)^d
+ * and R_0 is the Riemann sum of S over the grid frequencies.  The two are
+ * exact inverses of each other. */
+#ifndef NL_WK_H
+#define NL_WK_H
+
+#include "field.h"
+#include "model.h"
+
+/* Wrapped index to signed offset. */
+static inline long nl_wrap(size_t j, size_t n) { return j <= n / 2 ? (long)j : (long)j - (long)n; }
+
+/* Fill R (whose dim, n and h are set) with the model's autocorrelation at the
+ * wrapped lags.  Spectral models are sampled in frequency and converted. */
+int nl_wk_sample_acf(const nl_model *m, nl_field *R);
+
+/* Fill S with the model's spectrum at the wrapped frequencies of a space grid
+ * of R's n and h: the closed form for spectral models, otherwise the forward
+ * conversion of the sampled autocorrelation. */
+int nl_wk_sample_spectrum(const nl_model *m, nl_field *S);
+
+/* Forward and inverse conversion of real, even (R_j = R_-j) fields; the
+ * imaginary part, zero for even input up to rounding, is dropped. */
+int nl_wk_acf_to_spectrum(const nl_field *R, nl_field *S);
+int nl_wk_spectrum_to_acf(const nl_field *S, nl_field *R);
+
+#endif

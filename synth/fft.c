@@ -1,0 +1,161 @@
+/* Periodic FFT synthesis: filter white noise by the square root of the
+ * spectrum (Lewis 1987, "Fourier synthesis"; Wiener-Khinchine, eq. (2)). */
+#include "fft.h"
+#include "../core/nl_error.h"
+#include "../core/rng.h"
+#include "../core/wk.h"
+
+#include <complex.h>
+#include <fftw3.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct synth_fft_plan {
+    int dim;            /* 1..3 */
+    size_t n[3];        /* grid size */
+    double h[3];        /* grid spacing */
+    size_t count;       /* samples */
+    size_t half;        /* r2c coefficients: count / n0 * (n0/2 + 1) */
+    double *amp;        /* sqrt(lambda_k) / count on the r2c half grid */
+    fftw_plan fwd, inv; /* r2c and c2r on fftw_malloc'ed arrays */
+    synth_fft_info info;
+};
+
+void synth_fft_plan_free(synth_fft_plan *p)
+{
+    if (!p)
+        return;
+    if (p->fwd)
+        fftw_destroy_plan(p->fwd);
+    if (p->inv)
+        fftw_destroy_plan(p->inv);
+    free(p->amp);
+    free(p);
+}
+
+static int make_fftw_plans(synth_fft_plan *p)
+{
+    int dims[3];
+    double *x = fftw_alloc_real(p->count);
+    fftw_complex *c = fftw_alloc_complex(p->half);
+    int st = NL_OK;
+    for (int a = 0; a < p->dim; a++)
+        dims[a] = (int)p->n[p->dim - 1 - a];
+    if (!x || !c)
+        st = NL_ERROR(NL_ENOMEM, "out of memory for the FFT plan");
+    if (!st) {
+        p->fwd = fftw_plan_dft_r2c(p->dim, dims, x, c, FFTW_ESTIMATE);
+        p->inv = fftw_plan_dft_c2r(p->dim, dims, c, x, FFTW_ESTIMATE);
+        if (!p->fwd || !p->inv)
+            st = NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", p->dim);
+    }
+    fftw_free(x);
+    fftw_free(c);
+    return st;
+}
+
+int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                         synth_fft_plan **out)
+{
+    synth_fft_plan *p;
+    nl_field *S;
+    double cell = 1, neg = 0, lmin = INFINITY, lmax = -INFINITY, sum = 0;
+    int st;
+
+    *out = NULL;
+    /* the spectrum grid, a complex FFT buffer, the field and its transform */
+    if ((st = nl_size_check(dim, n, sizeof(double), 6, NULL)))
+        return st;
+    for (int a = 0; a < dim; a++)
+        if (n[a] > INT32_MAX)
+            return NL_ERROR(NL_ETOOBIG, "size: %zu samples along an axis is beyond FFTW's int sizes", n[a]);
+    S = nl_field_alloc(dim, n, h, &st);
+    if (!S)
+        return st;
+    if ((st = nl_wk_sample_spectrum(m, S))) {
+        nl_field_free(S);
+        return st;
+    }
+    p = calloc(1, sizeof *p);
+    if (!p) {
+        nl_field_free(S);
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    p->dim = dim;
+    p->count = S->count;
+    for (int a = 0; a < 3; a++) {
+        p->n[a] = S->n[a];
+        p->h[a] = S->h[a];
+        cell *= S->h[a];
+    }
+    p->half = p->count / p->n[0] * (p->n[0] / 2 + 1);
+    for (size_t i = 0; i < p->count; i++) {
+        double l = S->data[i] / cell;
+        if (l < lmin) lmin = l;
+        if (l > lmax) lmax = l;
+        if (l < 0) {
+            neg -= l;
+            p->info.negatives++;
+        } else {
+            sum += l;
+        }
+    }
+    p->info.variance = sum / (double)p->count;
+    p->info.min_lambda = lmin * cell;
+    p->info.max_lambda = lmax * cell;
+    p->info.clamp_error = p->info.variance > 0 ? neg / (double)p->count / p->info.variance : INFINITY;
+    if (!(p->info.variance > 0)) {
+        st = NL_ERROR(NL_ENOTPD, "%s: the sampled spectrum has no positive part on this grid", nl_model_spec(m));
+    } else if (p->info.clamp_error > SYNTH_FFT_CLAMP_TOL && !(flags & SYNTH_FFT_CLAMP)) {
+        st = NL_ERROR(NL_ENOTPD,
+                      "%s: not positive definite on this grid: min spectrum %.3g (max %.3g); zeroing the %zu "
+                      "negative values would change the covariance by up to %.2g of R(0), above %.0e "
+                      "(use --clamp to accept, or a larger grid if the model is truncated)",
+                      nl_model_spec(m), p->info.min_lambda, p->info.max_lambda, p->info.negatives,
+                      p->info.clamp_error, SYNTH_FFT_CLAMP_TOL);
+    }
+    if (!st) {
+        p->amp = malloc(p->half * sizeof *p->amp);
+        if (!p->amp)
+            st = NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    if (!st) {
+        size_t h0 = p->n[0] / 2 + 1, rows = p->count / p->n[0];
+        for (size_t r = 0; r < rows; r++)
+            for (size_t i = 0; i < h0; i++) {
+                double l = S->data[r * p->n[0] + i] / cell;
+                p->amp[r * h0 + i] = l > 0 ? sqrt(l) / (double)p->count : 0.0;
+            }
+        st = make_fftw_plans(p);
+    }
+    nl_field_free(S);
+    if (st) {
+        synth_fft_plan_free(p);
+        return st;
+    }
+    *out = p;
+    return NL_OK;
+}
+
+void synth_fft_plan_info(const synth_fft_plan *p, synth_fft_info *info) { *info = p->info; }
+
+int synth_fft_execute(const synth_fft_plan *p, uint64_t seed, nl_field *out)
+{
+    fftw_complex *c;
+    if (out->dim != p->dim || out->count != p->count || out->n[0] != p->n[0] || out->n[1] != p->n[1])
+        return NL_ERROR(NL_EINVAL, "FFT synthesis: the output field does not match the plan's grid");
+    c = fftw_alloc_complex(p->half);
+    if (!c)
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu complex samples", p->half);
+#pragma omp parallel for schedule(static)
+    for (size_t j = 0; j < p->count; j++)
+        out->data[j] = nl_rng_gauss(seed, NL_STREAM_WHITE, j);
+    fftw_execute_dft_r2c(p->fwd, out->data, c);
+#pragma omp parallel for schedule(static)
+    for (size_t k = 0; k < p->half; k++)
+        c[k] *= p->amp[k];
+    fftw_execute_dft_c2r(p->inv, c, out->data);
+    fftw_free(c);
+    return NL_OK;
+}
