@@ -20,9 +20,11 @@ int nl_png_read(const char *path, nl_field **out)
     img.version = PNG_IMAGE_VERSION;
     if (!png_image_begin_read_from_file(&img, path))
         return NL_ERROR(NL_EINPUT, "%s: not a readable PNG file: %s", path, img.message);
-    /* 16-bit linear grey keeps 16-bit precision; colour is reduced to grey
-     * by libpng's Rec. 709 weights. */
-    img.format = PNG_FORMAT_LINEAR_Y;
+    /* Sample values are taken as stored, without gamma decoding: 16-bit
+     * files are read as 16-bit grey, 8-bit files as 8-bit grey; colour is
+     * reduced to grey by libpng's Rec. 709 weights. */
+    int wide = (img.format & PNG_FORMAT_FLAG_LINEAR) != 0;
+    img.format = wide ? PNG_FORMAT_LINEAR_Y : PNG_FORMAT_GRAY;
     n[0] = img.width;
     n[1] = img.height;
     f = nl_field_alloc(2, n, NULL, &st);
@@ -44,7 +46,7 @@ int nl_png_read(const char *path, nl_field **out)
         return st;
     }
     for (size_t i = 0; i < f->count; i++)
-        f->data[i] = ((const png_uint_16 *)buf)[i] / 65535.0;
+        f->data[i] = wide ? ((const png_uint_16 *)buf)[i] / 65535.0 : buf[i] / 255.0;
     free(buf);
     *out = f;
     return NL_OK;

@@ -58,25 +58,46 @@ int nl_wk_spectrum_to_acf(const nl_field *S, nl_field *R)
     return dft_real(S, R, FFTW_BACKWARD, df);
 }
 
+/* Model value at wrapped index idx.  On an even axis the Nyquist index
+ * n/2 stands for both +n/2 and -n/2; averaging the two keeps the sampled
+ * field even (R_j = R_-j), so that its transform is exactly real. */
+static double value_at(const nl_model *m, const nl_field *f, const size_t *idx, int freq)
+{
+    double v[3] = {0, 0, 0}, unit[3], sum = 0;
+    int nyq[3] = {0, 0, 0}, combos = 1;
+    for (int a = 0; a < f->dim; a++) {
+        unit[a] = freq ? 1.0 / ((double)f->n[a] * f->h[a]) : f->h[a];
+        nyq[a] = f->n[a] % 2 == 0 && idx[a] == f->n[a] / 2;
+        combos <<= nyq[a];
+    }
+    for (int c = 0; c < combos; c++) {
+        int bit = 0;
+        for (int a = 0; a < f->dim; a++) {
+            double s = 1;
+            if (nyq[a])
+                s = (c >> bit++) & 1 ? -1 : 1;
+            v[a] = s * (double)nl_wrap(idx[a], f->n[a]) * unit[a];
+        }
+        sum += freq ? nl_model_spectrum(m, f->dim, v) : nl_model_acf(m, f->dim, v);
+    }
+    return sum / combos;
+}
+
 /* Fill f with model values at the wrapped lags (freq = 0) or frequencies. */
 static int fill(const nl_model *m, nl_field *f, int freq)
 {
-    double v[3] = {0, 0, 0};
     int st = nl_model_check_dim(m, f->dim);
     if (st)
         return st;
     for (size_t k = 0; k < f->n[2]; k++)
         for (size_t j = 0; j < f->n[1]; j++)
             for (size_t i = 0; i < f->n[0]; i++) {
-                size_t idx[3] = {i, j, k}, p = (k * f->n[1] + j) * f->n[0] + i;
-                double y;
-                for (int a = 0; a < f->dim; a++)
-                    v[a] = nl_wrap(idx[a], f->n[a]) * (freq ? 1.0 / ((double)f->n[a] * f->h[a]) : f->h[a]);
-                y = freq ? nl_model_spectrum(m, f->dim, v) : nl_model_acf(m, f->dim, v);
+                size_t idx[3] = {i, j, k};
+                double y = value_at(m, f, idx, freq);
                 if (!isfinite(y))
-                    return NL_ERROR(NL_EINVAL, "%s: the model is not finite (%g) at %s (%g, %g, %g)",
-                                    nl_model_spec(m), y, freq ? "frequency" : "lag", v[0], v[1], v[2]);
-                f->data[p] = y;
+                    return NL_ERROR(NL_EINVAL, "%s: the model is not finite (%g) at %s index (%zu, %zu, %zu)",
+                                    nl_model_spec(m), y, freq ? "frequency" : "lag", i, j, k);
+                f->data[(k * f->n[1] + j) * f->n[0] + i] = y;
             }
     return NL_OK;
 }

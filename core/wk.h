@@ -3,7 +3,9 @@
  *
  * Wrapped order: along an axis of n samples with spacing h, index j stands
  * for lag w(j) h and for frequency w(j) / (n h) (cycles per unit length),
- * where w(j) = j for j <= n/2 and j - n otherwise.
+ * where w(j) = j for j <= n/2 and j - n otherwise.  On an even axis the
+ * sample at n/2 stands for both +n/2 and -n/2: models are sampled there as
+ * the mean of the two, so sampled grids are exactly even.
  *
  * Scaling (FFTW is unnormalised; these are not):
  *     forward  S_k = (h_1 ... h_d) sum_j R_j exp(-2 pi i j.k / n)

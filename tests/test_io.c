@@ -1,0 +1,136 @@
+/* File I/O: EXR, PNG and TSV round trips and malformed inputs. */
+#include "../core/io.h"
+#include "../core/nl_error.h"
+#include "util.h"
+
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+static char path_buf[512];
+static const char *path(const char *name)
+{
+    snprintf(path_buf, sizeof path_buf, "%s/%s", scratch_dir(), name);
+    return path_buf;
+}
+
+static void exr_round_trip(int dim, const size_t *n)
+{
+    double h[3] = {0.5, 2.25, 3};
+    nl_field *f = nl_field_alloc(dim, n, h, NULL), *g;
+    nl_meta meta, back;
+    memset(&meta, 0, sizeof meta);
+    strcpy(meta.model, "expr:exp(-abs(t))");
+    strcpy(meta.method, "fft");
+    strcpy(meta.seed, "18446744073709551615");
+    snprintf(meta.spacing, sizeof meta.spacing, "0.5,2.25,3");
+    if (dim == 1)
+        snprintf(meta.size, sizeof meta.size, "%zu", n[0]), strcpy(meta.spacing, "0.5");
+    else if (dim == 2)
+        snprintf(meta.size, sizeof meta.size, "%zux%zu", n[0], n[1]), strcpy(meta.spacing, "0.5,2.25");
+    else
+        snprintf(meta.size, sizeof meta.size, "%zux%zux%zu", n[0], n[1], n[2]);
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] = sin(2.385 * (double)i) * 1e3;
+    cr_assert_eq(nl_exr_write(path("a.exr"), f, &meta), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_exr_read(path("a.exr"), &g, &back), 0, "%s", nl_errmsg());
+    cr_assert_eq(g->dim, dim);
+    cr_assert_eq(g->count, f->count);
+    for (int a = 0; a < dim; a++) {
+        cr_assert_eq(g->n[a], f->n[a]);
+        cr_assert_eq(g->h[a], f->h[a]);
+    }
+    for (size_t i = 0; i < f->count; i++)
+        cr_assert_eq(g->data[i], (double)(float)f->data[i], "sample %zu", i);
+    cr_assert_str_eq(back.model, meta.model);
+    cr_assert_str_eq(back.seed, meta.seed);
+    cr_assert_str_eq(back.size, meta.size);
+    nl_field_free(f);
+    nl_field_free(g);
+}
+
+Test(io, exr_round_trip_1d_2d_3d)
+{
+    size_t n1[1] = {1000}, n2[2] = {37, 41}, n3[3] = {9, 7, 5};
+    exr_round_trip(1, n1);
+    exr_round_trip(2, n2);
+    exr_round_trip(3, n3);
+}
+
+Test(io, exr_malformed_inputs_are_refused)
+{
+    size_t n[2] = {64, 64};
+    nl_field *f = nl_field_alloc(2, n, NULL, NULL), *g;
+    FILE *fp = fopen(path("junk.exr"), "w");
+    long size;
+    fputs("this is not an EXR file", fp);
+    fclose(fp);
+    cr_assert_eq(nl_exr_read(path("junk.exr"), &g, NULL), NL_EINPUT);
+    cr_assert_eq(nl_exr_read(path("missing.exr"), &g, NULL), NL_EINPUT);
+    cr_assert(strstr(nl_errmsg(), "missing.exr") != NULL);
+    /* a valid file truncated to half its length */
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] = cos((double)i);
+    cr_assert_eq(nl_exr_write(path("t.exr"), f, NULL), 0);
+    fp = fopen(path("t.exr"), "r+");
+    fseek(fp, 0, SEEK_END);
+    size = ftell(fp);
+    fclose(fp);
+    cr_assert_eq(truncate(path("t.exr"), size / 2), 0);
+    cr_assert_eq(nl_exr_read(path("t.exr"), &g, NULL), NL_EINPUT);
+    nl_field_free(f);
+}
+
+Test(io, exr_unwritable_path)
+{
+    size_t n[1] = {8};
+    nl_field *f = nl_field_alloc(1, n, NULL, NULL);
+    cr_assert_eq(nl_exr_write("/nonexistent/dir/a.exr", f, NULL), NL_EIO);
+    nl_field_free(f);
+}
+
+/* 8-bit value v is written as v and read back as v * 257 / 65535 = v / 255. */
+Test(io, png_round_trip)
+{
+    size_t n[2] = {17, 5};
+    nl_field *f = nl_field_alloc(2, n, NULL, NULL), *g;
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] = (double)((i * 37) % 256);
+    cr_assert_eq(nl_png_write_field(path("a.png"), f, 0, 255), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_png_read(path("a.png"), &g), 0, "%s", nl_errmsg());
+    cr_assert_eq(g->n[0], 17);
+    cr_assert_eq(g->n[1], 5);
+    for (size_t i = 0; i < f->count; i++)
+        cr_assert_float_eq(g->data[i], f->data[i] / 255.0, 1e-12, "pixel %zu", i);
+    cr_assert_eq(nl_png_read(path("junk.exr"), &g), NL_EINPUT);
+    nl_field_free(f);
+    nl_field_free(g);
+}
+
+Test(io, tsv_round_trip_and_errors)
+{
+    static const char *const names[] = {"t", "value"};
+    double t[5] = {0, 0.25, 0.5, 0.75, 1}, v[5] = {1.5, -2, 3.25, 1e-300, 7};
+    const double *cols[2] = {t, v};
+    nl_field *f;
+    FILE *fp;
+    cr_assert_eq(nl_tsv_write(path("a.tsv"), "a comment", 2, names, 5, cols), 0);
+    cr_assert_eq(nl_field_read(path("a.tsv"), &f, NULL), 0, "%s", nl_errmsg());
+    cr_assert_eq(f->count, 5);
+    cr_assert_eq(f->h[0], 0.25);
+    for (int i = 0; i < 5; i++)
+        cr_assert_eq(f->data[i], v[i]);
+    nl_field_free(f);
+    fp = fopen(path("bad.tsv"), "w");
+    fputs("t\tvalue\n0\t1\n1\tnan\n", fp);
+    fclose(fp);
+    cr_assert_eq(nl_tsv_read_field(path("bad.tsv"), &f), NL_EINPUT);
+    cr_assert(strstr(nl_errmsg(), ":3:") != NULL, "names the line: %s", nl_errmsg());
+    fp = fopen(path("bad2.tsv"), "w");
+    fputs("t\tvalue\n0\t1\n1\n", fp);
+    fclose(fp);
+    cr_assert_eq(nl_tsv_read_field(path("bad2.tsv"), &f), NL_EINPUT);
+    cr_assert(strstr(nl_errmsg(), "expected 2 columns") != NULL, "%s", nl_errmsg());
+}

@@ -1,0 +1,61 @@
+/* Running the CLI from tests and scratch space. */
+#include "util.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static void slurp(const char *path, char *buf, size_t len)
+{
+    FILE *fp = fopen(path, "r");
+    size_t n = 0;
+    if (fp) {
+        n = fread(buf, 1, len - 1, fp);
+        fclose(fp);
+    }
+    buf[n] = 0;
+}
+
+const char *scratch_dir(void)
+{
+    static char dir[256];
+    if (!dir[0]) {
+        snprintf(dir, sizeof dir, "/tmp/noiselab-test-%ld", (long)getpid());
+        mkdir(dir, 0755);
+    }
+    return dir;
+}
+
+int run_noiselab(const char *args, char *out, size_t outlen, char *err, size_t errlen)
+{
+    const char *bin = getenv("NOISELAB");
+    char cmd[4096], fo[300], fe[300];
+    int rc;
+    snprintf(fo, sizeof fo, "%s/stdout", scratch_dir());
+    snprintf(fe, sizeof fe, "%s/stderr", scratch_dir());
+    snprintf(cmd, sizeof cmd, "cd %s && %s %s >%s 2>%s", scratch_dir(), bin ? bin : "../bin/noiselab", args, fo,
+             fe);
+    rc = system(cmd);
+    if (out)
+        slurp(fo, out, outlen);
+    if (err)
+        slurp(fe, err, errlen);
+    return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+int file_exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+int count_lines(const char *s)
+{
+    int n = 0;
+    for (; *s; s++)
+        n += *s == '\n';
+    return n;
+}

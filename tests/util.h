@@ -1,0 +1,21 @@
+/* Shared helpers for the tests. */
+#ifndef NL_TEST_UTIL_H
+#define NL_TEST_UTIL_H
+
+#include <stddef.h>
+
+/* Run the noiselab binary ($NOISELAB) with the shell words of `args`; the
+ * exit status is returned, stdout and stderr go to the buffers (NUL
+ * terminated, truncated to their size). */
+int run_noiselab(const char *args, char *out, size_t outlen, char *err, size_t errlen);
+
+/* A fresh scratch directory for this test process; path is static. */
+const char *scratch_dir(void);
+
+/* Does a file exist? */
+int file_exists(const char *path);
+
+/* Number of lines in s. */
+int count_lines(const char *s);
+
+#endif
