@@ -1,0 +1,160 @@
+/* The command line: success paths, and every error path giving exit 2, one
+ * line on stderr naming the bad value, and no output file. */
+#include "../core/io.h"
+#include "util.h"
+
+#include <criterion/criterion.h>
+#include <dirent.h>
+#include <jansson.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static char out[1 << 16], err[1 << 12];
+
+/* No file whose name starts with "out" (the final name or a temporary). */
+static int outputs_left(void)
+{
+    DIR *d = opendir(scratch_dir());
+    struct dirent *e;
+    int n = 0;
+    while ((e = readdir(d)))
+        n += strncmp(e->d_name, "out", 3) == 0;
+    closedir(d);
+    return n;
+}
+
+static void bad(const char *args, const char *needle)
+{
+    int rc = run_noiselab(args, out, sizeof out, err, sizeof err);
+    cr_expect_eq(rc, 2, "%s: exit %d, stderr: %s", args, rc, err);
+    cr_expect_eq(count_lines(err), 1, "%s: expected one line on stderr, got: %s", args, err);
+    cr_expect(strncmp(err, "noiselab: ", 10) == 0, "%s: %s", args, err);
+    cr_expect(strstr(err, needle) != NULL, "%s: stderr \"%s\" should name \"%s\"", args, err, needle);
+    cr_expect_eq(outputs_left(), 0, "%s: left an output file", args);
+}
+
+Test(cli, synth_error_paths)
+{
+    bad("synth fft --acf markov:scale=8 --size 0x5 -o out.exr", "\"0x5\"");
+    bad("synth fft --acf markov --size 1 -o out.exr", "\"1\"");
+    bad("synth fft --acf markov --size 8x8x8x8 -o out.exr", "\"8x8x8x8\"");
+    bad("synth fft --acf nosuch:scale=2 --size 64 -o out.exr", "\"nosuch\"");
+    bad("synth fft --acf 'expr:cos(t' --size 64 -o out.exr", "\"cos(t\"");
+    bad("synth fft --acf markaussian --size 64 -o out.exr", "alpha");
+    bad("synth fft --acf markov:scale=0 --size 64 -o out.exr", "scale");
+    bad("synth fft --acf markov --size 64 -o /nonexistent/out.exr", "/nonexistent/out.exr");
+    bad("synth fft --acf markov --size 64 --frobnicate -o out.exr", "--frobnicate");
+    bad("synth fft --acf markov --size 64 -o", "-o");
+    bad("synth fft --acf markov --size 64 --seed -3 -o out.exr", "\"-3\"");
+    bad("synth fft --acf markov --size 64 --spacing 0 -o out.exr", "\"0\"");
+    bad("synth fft --acf markov --size 64x64 -o out.tsv", "out.tsv");
+    bad("synth fft --acf markov --size 64 -o out.txt", "out.txt");
+    bad("synth fft --size 64 -o out.exr", "--acf");
+    bad("synth fft --acf markov -o out.exr", "--size");
+    bad("synth fft --acf markov --size 64", "-o");
+    bad("synth wavelets --acf markov --size 64 -o out.exr", "\"wavelets\"");
+    bad("synth subdiv --acf markov --size 64 -o out.exr", "\"subdiv\"");
+    bad("synth fft --acf power:d=2 --size 64 -o out.exr", "power:d=2");
+    bad("synth fft --spectrum markov --size 64 -o out.exr", "\"markov\"");
+    bad("synth fft --acf oscillatory:omega=2,scale=10 --size 64x64 -o out.exr", "not positive definite");
+    bad("synth fft --acf markov --size 1000000x1000000x1000 -o out.exr", "available");
+    bad("synth fft --acf markov --size 99999999999999999999999 -o out.exr", "99999999999999999999999");
+    bad("synth fft --acf image:/nonexistent.png --size 64x64 -o out.exr", "/nonexistent.png");
+    bad("synth fft --acf markov --size 64 --preview out.png -o out.exr", "--preview");
+}
+
+Test(cli, estimator_error_paths)
+{
+    bad("acf /nonexistent.exr", "/nonexistent.exr");
+    bad("acf", "expected one input file");
+    cr_assert_eq(run_noiselab("synth fft --acf markov --size 64 -o f.tsv", 0, 0, err, sizeof err), 0, "%s", err);
+    bad("acf f.tsv --axis y", "axis");
+    bad("acf f.tsv --axis w", "\"w\"");
+    bad("acf f.tsv --max-lag 64", "64");
+    bad("acf f.tsv --radial", "--radial");
+    bad("acf f.tsv --target markov:bad=1 -o out.tsv", "\"bad\"");
+    bad("psd f.tsv --mean nan", "\"nan\"");
+    bad("hist f.tsv --bins 0", "\"0\"");
+    bad("hist f.tsv --bins x", "\"x\"");
+    bad("nosuchcommand", "\"nosuchcommand\"");
+    FILE *fp = fopen("/tmp/noiselab-bad.tsv", "w");
+    fputs("t\tvalue\n0\t1\n1\tabc\n", fp);
+    fclose(fp);
+    bad("hist /tmp/noiselab-bad.tsv", "\"abc\"");
+}
+
+Test(cli, synth_writes_exr_with_provenance)
+{
+    char path[512];
+    nl_field *f;
+    nl_meta meta;
+    int rc = run_noiselab("synth fft --acf markov:scale=2 --size 64x32 --seed 7 --spacing 0.5 -o a.exr "
+                          "--preview a.png",
+                          out, sizeof out, err, sizeof err);
+    cr_assert_eq(rc, 0, "%s", err);
+    cr_assert_eq(err[0], 0, "success is quiet: %s", err);
+    snprintf(path, sizeof path, "%s/a.exr", scratch_dir());
+    cr_assert_eq(nl_exr_read(path, &f, &meta), 0);
+    cr_assert_eq(f->n[0], 64);
+    cr_assert_eq(f->n[1], 32);
+    cr_assert_eq(f->h[1], 0.5);
+    cr_assert_str_eq(meta.model, "markov:scale=2");
+    cr_assert_str_eq(meta.method, "fft");
+    cr_assert_str_eq(meta.seed, "7");
+    cr_assert_str_eq(meta.spacing, "0.5,0.5");
+    cr_assert_str_eq(meta.version, NL_VERSION);
+    nl_field_free(f);
+    snprintf(path, sizeof path, "%s/a.png", scratch_dir());
+    cr_assert(file_exists(path));
+}
+
+Test(cli, json_outputs)
+{
+    json_error_t je;
+    json_t *j;
+    cr_assert_eq(run_noiselab("synth fft --acf gauss:scale=4 --size 256 -o g.tsv", 0, 0, err, sizeof err), 0);
+    cr_assert_eq(run_noiselab("acf g.tsv --max-lag 8 --target gauss:scale=4 --json", out, sizeof out, 0, 0), 0);
+    j = json_loads(out, 0, &je);
+    cr_assert_not_null(j, "%s", je.text);
+    cr_assert_eq(json_array_size(json_object_get(j, "lag")), 9);
+    cr_assert_eq(json_array_size(json_object_get(j, "acf")), 9);
+    cr_assert_float_eq(json_real_value(json_array_get(json_object_get(j, "target"), 4)), exp(-1), 1e-9);
+    json_decref(j);
+    cr_assert_eq(run_noiselab("psd g.tsv --json", out, sizeof out, 0, 0), 0);
+    j = json_loads(out, 0, &je);
+    cr_assert_not_null(j, "%s", je.text);
+    cr_assert_eq(json_array_size(json_object_get(j, "freq")), 129);
+    cr_assert_str_eq(json_string_value(json_object_get(j, "sided")), "two-sided");
+    json_decref(j);
+    cr_assert_eq(run_noiselab("hist g.tsv --bins 7 --json", out, sizeof out, 0, 0), 0);
+    j = json_loads(out, 0, &je);
+    cr_assert_not_null(j, "%s", je.text);
+    const char *keys[] = {"mean", "variance", "skewness", "kurtosis"};
+    for (int i = 0; i < 4; i++)
+        cr_assert(json_is_number(json_object_get(j, keys[i])), "%s", keys[i]);
+    cr_assert_eq(json_array_size(json_object_get(j, "edges")), 8);
+    cr_assert_eq(json_array_size(json_object_get(j, "counts")), 7);
+    json_decref(j);
+    cr_assert_eq(run_noiselab("models --json", out, sizeof out, 0, 0), 0);
+    j = json_loads(out, 0, &je);
+    cr_assert_eq(json_array_size(json_object_get(j, "models")), 10);
+    json_decref(j);
+}
+
+Test(cli, help_and_version)
+{
+    const char *cmds[] = {"synth", "acf", "psd", "hist", "models"};
+    char args[64];
+    cr_assert_eq(run_noiselab("--version", out, sizeof out, 0, 0), 0);
+    cr_assert(strncmp(out, "noiselab ", 9) == 0);
+    cr_assert_eq(run_noiselab("--help", out, sizeof out, 0, 0), 0);
+    for (int i = 0; i < 5; i++) {
+        cr_assert(strstr(out, cmds[i]) != NULL, "--help lists %s", cmds[i]);
+        snprintf(args, sizeof args, "%s --help", cmds[i]);
+        cr_assert_eq(run_noiselab(args, out, sizeof out, 0, 0), 0, "%s", args);
+        cr_assert(strncmp(out, "usage: noiselab", 15) == 0, "%s", args);
+        run_noiselab("--help", out, sizeof out, 0, 0);
+    }
+    cr_assert_eq(run_noiselab("", 0, 0, 0, 0), 2);
+}
