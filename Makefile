@@ -13,6 +13,8 @@ BUILD     := build
 LIB_SRC   := $(wildcard core/*.c synth/*.c analysis/*.c)
 CLI_SRC   := $(wildcard cli/*.c)
 TEST_SRC  := $(wildcard tests/*.c)
+EXP_SRC   := $(wildcard experiments/*.c)
+EXP_BIN   := $(EXP_SRC:%.c=$(BUILD)/%)
 LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
 CLI_OBJ   := $(CLI_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ  := $(TEST_SRC:%.c=$(BUILD)/%.o)
@@ -21,6 +23,7 @@ BIN       := bin/noiselab
 DEPS_OK   := $(BUILD)/.deps-ok
 
 .PHONY: all deps test figures experiments clean
+.SECONDARY:
 all: $(BIN) $(LIB)
 
 # One list of packages, in deps.txt; the stamp is redone when it changes.
@@ -43,12 +46,15 @@ $(BIN): $(CLI_OBJ) $(LIB)
 $(BUILD)/tests/run: $(TEST_OBJ) $(LIB)
 	$(CC) $(CFLAGS) -o $@ $(TEST_OBJ) $(LIB) $(LDLIBS) -lcriterion
 
+$(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
+	$(CC) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 # Unit, error-path, CLI and statistical tests (Criterion).
 test: $(BIN) $(BUILD)/tests/run
 	NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
 
 # Every experiment writes its data, picture and verdict into paper-figures/.
-figures: $(BIN)
+figures: $(BIN) $(EXP_BIN)
 	@sh experiments/run-all.sh paper-figures
 
 experiments: figures
@@ -56,4 +62,4 @@ experiments: figures
 clean:
 	rm -rf $(BUILD) bin tests/work
 
--include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d)
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(EXP_SRC:%.c=$(BUILD)/%.d)
