@@ -49,6 +49,10 @@ void cli_json_print(json_t *obj);
 /* A JSON array of n doubles (NaN becomes null). */
 json_t *cli_json_array(const double *v, size_t n);
 
+/* A TSV table to `path`, or to stdout when path is NULL. */
+int write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
+                const double *const *cols);
+
 /* Read a field (EXR, PNG or TSV), exiting on error. */
 nl_field *cli_read_field(const char *path, nl_meta *meta);
 

@@ -151,7 +151,7 @@ int cmd_acf(int argc, char **argv)
         char comment[256];
         snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in spacing units",
                  unbiased ? "unbiased" : "biased", radial ? "radial average" : "along one axis");
-        st = nl_tsv_write(out ? tmp : "/dev/stdout", comment, tgt ? 3 : 2, names, nl, cols);
+        st = write_table(out ? tmp : NULL, comment, tgt ? 3 : 2, names, nl, cols);
         if (st)
             cli_die_status(st);
     }

@@ -59,7 +59,7 @@ int cmd_hist(int argc, char **argv)
     if (out || !json) {
         static const char *const names[] = {"lo", "hi", "count"};
         const double *cols[] = {edges, edges + 1, counts};
-        if ((st = nl_tsv_write(out ? tmp : "/dev/stdout", NULL, 3, names, bins, cols)))
+        if ((st = write_table(out ? tmp : NULL, NULL, 3, names, bins, cols)))
             cli_die_status(st);
     }
     if (out)

@@ -111,8 +111,7 @@ int cmd_psd(int argc, char **argv)
     if (out || !json) {
         static const char *const names[] = {"freq", "psd", "target"};
         const double *cols[] = {freq, val, tgt};
-        st = nl_tsv_write(out ? tmp : "/dev/stdout",
-                          x->dim == 1 ? "noiselab psd: two-sided periodogram density, freq in cycles per unit"
+        st = write_table(out ? tmp : NULL, x->dim == 1 ? "noiselab psd: two-sided periodogram density, freq in cycles per unit"
                                       : "noiselab psd: two-sided periodogram density, radial average, freq in "
                                         "cycles per unit",
                           tgt ? 3 : 2, names, nf, cols);

@@ -199,3 +199,11 @@ nl_field *cli_read_field(const char *path, nl_meta *meta)
         cli_die_status(st);
     return f;
 }
+
+int write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
+                const double *const *cols)
+{
+    if (path)
+        return nl_tsv_write(path, comment, ncols, names, nrows, cols);
+    return nl_tsv_fwrite(stdout, comment, ncols, names, nrows, cols);
+}

@@ -1,6 +1,7 @@
 /* Field files: OpenEXR (through the OpenEXRCore C API), PNG, TSV.
  *
- * EXR: one FLOAT channel "Y", ZIP-compressed scanlines; a 1D field is one
+ * EXR: one FLOAT channel "Y", PIZ-compressed scanlines (OpenEXRCore 3.1.5
+ * corrupts ZIP chunks that do not compress, see tests/test_io.c); a 1D field is one
  * row, a 3D field of n0 x n1 x n2 is stored as an image n0 wide and n1*n2
  * high (slice k is rows k*n1 .. k*n1+n1-1), with noiselab.size saying so.
  * String attributes record how the field was made (nl_meta).
@@ -13,6 +14,7 @@
 #include "field.h"
 
 #include <stdint.h>
+#include <stdio.h>
 
 /* Provenance stored with a field; empty strings are not written. */
 typedef struct {
@@ -48,6 +50,10 @@ int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi
  * the ncols names, then nrows rows of the columns cols[0..ncols-1]. */
 int nl_tsv_write(const char *path, const char *comment, int ncols, const char *const *names,
                  size_t nrows, const double *const *cols);
+
+/* The same, to an open stream (e.g. stdout); the stream is not closed. */
+int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *names, size_t nrows,
+                  const double *const *cols);
 
 /* Read a 1D field from a TSV table with a header line: the column named
  * "value" if there is one, else the last; the spacing is taken from a first

@@ -8,12 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-int nl_tsv_write(const char *path, const char *comment, int ncols, const char *const *names,
-                 size_t nrows, const double *const *cols)
+int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *names, size_t nrows,
+                  const double *const *cols)
 {
-    FILE *fp = fopen(path, "w");
-    if (!fp)
-        return NL_ERROR(NL_EIO, "%s: cannot write: %s", path, strerror(errno));
     if (comment)
         fprintf(fp, "# %s\n", comment);
     for (int c = 0; c < ncols; c++)
@@ -21,9 +18,22 @@ int nl_tsv_write(const char *path, const char *comment, int ncols, const char *c
     for (size_t r = 0; r < nrows; r++)
         for (int c = 0; c < ncols; c++)
             fprintf(fp, "%.10g%c", cols[c][r], c + 1 < ncols ? '\t' : '\n');
-    if (ferror(fp) | fclose(fp))
-        return NL_ERROR(NL_EIO, "%s: write failed", path);
+    if (fflush(fp) || ferror(fp))
+        return NL_ERROR(NL_EIO, "writing the table failed: %s", strerror(errno));
     return NL_OK;
+}
+
+int nl_tsv_write(const char *path, const char *comment, int ncols, const char *const *names,
+                 size_t nrows, const double *const *cols)
+{
+    FILE *fp = fopen(path, "w");
+    int st;
+    if (!fp)
+        return NL_ERROR(NL_EIO, "%s: cannot write: %s", path, strerror(errno));
+    st = nl_tsv_fwrite(fp, comment, ncols, names, nrows, cols);
+    if (fclose(fp) && !st)
+        st = NL_ERROR(NL_EIO, "%s: write failed: %s", path, strerror(errno));
+    return st;
 }
 
 /* Split a line at tabs into at most `max` fields; returns the count. */
