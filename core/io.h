@@ -60,7 +60,8 @@ int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *n
  * column named "t" or "x" when present.  Lines starting with '#' are skipped. */
 int nl_tsv_read_field(const char *path, nl_field **out);
 
-/* Read any field: EXR by content, else PNG by content, else TSV. */
+/* Read any field: EXR by content, else PNG by content, else TSV.  Samples
+ * must be finite (NL_EINPUT names the first that is not). */
 int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
 
 #endif

@@ -142,8 +142,16 @@ int nl_field_read(const char *path, nl_field **out, nl_meta *meta)
         return NL_ERROR(NL_EINPUT, "%s: cannot open: %s", path, strerror(errno));
     got = fread(head, 1, 4, fp);
     fclose(fp);
-    if (got == 4 && memcmp(head, exr_magic, 4) == 0)
-        return nl_exr_read(path, out, meta);
+    if (got == 4 && memcmp(head, exr_magic, 4) == 0) {
+        int st = nl_exr_read(path, out, meta);
+        for (size_t i = 0; !st && i < (*out)->count; i++)
+            if (!isfinite((*out)->data[i])) {
+                st = NL_ERROR(NL_EINPUT, "%s: sample %zu is %g; expected finite values", path, i, (*out)->data[i]);
+                nl_field_free(*out);
+                *out = NULL;
+            }
+        return st;
+    }
     if (got == 4 && memcmp(head, png_magic, 4) == 0)
         return nl_png_read(path, out);
     return nl_tsv_read_field(path, out);

@@ -84,6 +84,16 @@ Test(cli, estimator_error_paths)
     bad("hist /tmp/noiselab-bad.tsv", "\"abc\"");
 }
 
+/* Text output to stdout keeps everything printed before the table. */
+Test(cli, hist_text_output_is_whole)
+{
+    cr_assert_eq(run_noiselab("synth fft --acf markov --size 64 -o h.tsv", 0, 0, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(run_noiselab("hist h.tsv --bins 5", out, sizeof out, err, sizeof err), 0, "%s", err);
+    cr_assert(strstr(out, "# mean ") != NULL, "%s", out);
+    cr_assert(strstr(out, "lo\thi\tcount\n") != NULL, "%s", out);
+    cr_assert_eq(count_lines(out), 5 + 1 + 5);
+}
+
 Test(cli, synth_writes_exr_with_provenance)
 {
     char path[512];

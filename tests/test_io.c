@@ -162,3 +162,14 @@ Test(io, exr_round_trip_of_synthesised_fields)
                 nl_field_free(f), nl_field_free(g), synth_fft_plan_free(p), nl_model_free(m);
             }
 }
+
+Test(io, non_finite_samples_are_refused)
+{
+    size_t n[2] = {8, 8};
+    nl_field *f = nl_field_alloc(2, n, NULL, NULL), *g;
+    f->data[13] = NAN;
+    cr_assert_eq(nl_exr_write(path("nan.exr"), f, NULL), 0);
+    cr_assert_eq(nl_field_read(path("nan.exr"), &g, NULL), NL_EINPUT);
+    cr_assert(strstr(nl_errmsg(), "sample 13") != NULL, "%s", nl_errmsg());
+    nl_field_free(f);
+}
