@@ -12,7 +12,8 @@ static const struct {
     const char *summary;
 } commands[] = {
     {"models", cmd_models, "list the autocorrelation and spectrum models with their parameters"},
-    {"synth", cmd_synth, "synthesise a field (method: fft)"},
+    {"coeffs", cmd_coeffs, "subdivision coefficients, variances and flags per level"},
+    {"synth", cmd_synth, "synthesise a field (methods: fft, subdiv, midpoint)"},
     {"acf", cmd_acf, "estimate the autocorrelation of a field"},
     {"psd", cmd_psd, "estimate the power spectral density of a field (periodogram)"},
     {"hist", cmd_hist, "histogram and moments of a field"},
@@ -46,6 +47,6 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
             return commands[i].run(argc - 1, argv + 1);
-    cli_die(2, "unknown command \"%s\" (expected one of: models, synth, acf, psd, hist; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, coeffs, synth, acf, psd, hist; see noiselab --help)",
             argv[1]);
 }

@@ -1,0 +1,161 @@
+/* noiselab coeffs: midpoint estimation coefficients of generalized
+ * stochastic subdivision, level by level. */
+#include "cli.h"
+#include "../core/model.h"
+#include "../synth/subdiv.h"
+
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static const char help[] =
+    "usage: noiselab coeffs --acf SPEC --dim 1|2 [--neighborhood N|auto] [--tol E] [--levels L]\n"
+    "                       [--spacing0 S] [--json]\n\n"
+    "Solves the orthogonality equations of generalized stochastic subdivision\n"
+    "(Lewis 1987, eqs. 4, 10, 12) at every level, with the displacement variance\n"
+    "(eq. 7), the condition number and the flags of each point class.\n\n"
+    "  --neighborhood N  half-width: 2N points in 1D, a 2N x 2N block in 2D (default 2);\n"
+    "                    auto grows N per level until eq. (7) improves by less than\n"
+    "                    E R(0) (--tol, default 1e-4), up to 16 in 1D and 6 in 2D\n"
+    "  --levels L        number of levels (default 10)\n"
+    "  --spacing0 S      observation spacing at level 0, in lag units (default 1);\n"
+    "                    level k uses S / 2^k\n"
+    "  --json            {\"levels\": [{\"level\", \"spacing\", \"N\", \"classes\": [{\"class\",\n"
+    "                    \"coefficients\", \"variance\", \"condition\", \"flags\"}]}]}\n"
+    "Coefficients are in neighbourhood order: k = 1-N..N in 1D; row-major over\n"
+    "(r, c) = 1-N..N in 2D, r along y.  Classes: mid (1D); face, edge-x, edge-y (2D).\n";
+
+static json_t *flags_json(unsigned f)
+{
+    json_t *a = json_array();
+    for (unsigned b = 0; b < 6; b++)
+        if (f & (1u << b))
+            json_array_append_new(a, json_string(subdiv_flag_name(b)));
+    return a;
+}
+
+static void print_flags(unsigned f)
+{
+    int first = 1;
+    for (unsigned b = 0; b < 6; b++)
+        if (f & (1u << b)) {
+            printf("%s%s", first ? "" : ",", subdiv_flag_name(b));
+            first = 0;
+        }
+    if (first)
+        printf("-");
+}
+
+static void print_text(const subdiv_coeffs *c, const char *spec)
+{
+    printf("# %s, %dD, spacing0 %g, %d levels\n", spec, c->dim, c->spacing0, c->levels);
+    for (int k = 0; k < c->levels; k++) {
+        const subdiv_level *l = &c->level[k];
+        for (int j = 0; j < l->nclass; j++) {
+            const subdiv_class *cl = &l->cls[j];
+            printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %-10.3g flags ", l->level,
+                   l->spacing, l->N, subdiv_class_name(cl->cls), cl->variance, cl->condition);
+            print_flags(cl->flags);
+            printf("\n");
+            if (c->dim == 1) {
+                /* the right half a_1..a_N, as in Lewis's Table 1 (a_k = a_{1-k}) */
+                printf("    a_1..a_N:");
+                for (int i = l->N; i < 2 * l->N; i++)
+                    printf(" %10.6f", cl->a[i]);
+                printf("\n");
+            } else {
+                int w = 2 * l->N;
+                for (int r = 0; r < w; r++) {
+                    printf("   ");
+                    for (int s = 0; s < w; s++)
+                        printf(" %10.6f", cl->a[r * w + s]);
+                    printf("\n");
+                }
+            }
+        }
+    }
+}
+
+int cmd_coeffs(int argc, char **argv)
+{
+    static const struct option opts[] = {
+        {"acf", required_argument, 0, 'a'},      {"dim", required_argument, 0, 'd'},
+        {"neighborhood", required_argument, 0, 'N'}, {"tol", required_argument, 0, 't'},
+        {"levels", required_argument, 0, 'L'},   {"spacing0", required_argument, 0, 's'},
+        {"json", no_argument, 0, 'j'},           {"help", no_argument, 0, 'h'},
+        {0}};
+    const char *spec = NULL;
+    int c, dim = 0, N = 2, levels = 10, json = 0, st;
+    double tol = 1e-4, s0 = 1;
+    nl_model *m;
+    subdiv_coeffs *co;
+
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+        switch (c) {
+        case 'a': spec = optarg; break;
+        case 'd':
+            if (strcmp(optarg, "1") && strcmp(optarg, "2"))
+                cli_die(2, "--dim: expected 1 or 2, got \"%s\"", optarg);
+            dim = optarg[0] - '0';
+            break;
+        case 'N':
+            N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
+            break;
+        case 't':
+            tol = cli_parse_double("--tol", optarg);
+            if (!(tol > 0))
+                cli_die(2, "--tol: expected a positive number, got \"%s\"", optarg);
+            break;
+        case 'L': levels = (int)cli_parse_count("--levels", optarg, 1); break;
+        case 's':
+            s0 = cli_parse_double("--spacing0", optarg);
+            if (!(s0 > 0))
+                cli_die(2, "--spacing0: expected a positive number, got \"%s\"", optarg);
+            break;
+        case 'j': json = 1; break;
+        case 'h': fputs(help, stdout); return 0;
+        default: cli_bad_option("coeffs", c, argv);
+        }
+    }
+    if (optind < argc)
+        cli_die(2, "coeffs: unexpected argument \"%s\"", argv[optind]);
+    if (!spec)
+        cli_die(2, "coeffs: --acf: expected an autocorrelation model (see noiselab models)");
+    if (!dim)
+        cli_die(2, "coeffs: --dim: expected 1 or 2");
+    if (levels > 40)
+        cli_die(2, "--levels: expected at most 40, got %d", levels);
+    if (N > (dim == 1 ? 64 : 8))
+        cli_die(2, "--neighborhood: expected at most %d in %dD, got %d", dim == 1 ? 64 : 8, dim, N);
+    if ((st = nl_model_parse(spec, &m)))
+        cli_die_status(st);
+    if ((st = subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co)))
+        cli_die_status(st);
+    if (json) {
+        json_t *lv = json_array();
+        for (int k = 0; k < co->levels; k++) {
+            const subdiv_level *l = &co->level[k];
+            json_t *cls = json_array();
+            for (int j = 0; j < l->nclass; j++) {
+                const subdiv_class *cl = &l->cls[j];
+                json_array_append_new(
+                    cls, json_pack("{s:s,s:o,s:f,s:f,s:o,s:f,s:o}", "class", subdiv_class_name(cl->cls),
+                                   "coefficients", cli_json_array(cl->a, cl->n), "variance", cl->variance,
+                                   "raw_variance", cl->raw_variance,
+                                   "condition", isfinite(cl->condition) ? json_real(cl->condition) : json_null(),
+                                   "min_eigenvalue", cl->min_eigenvalue, "flags", flags_json(cl->flags)));
+            }
+            json_array_append_new(lv, json_pack("{s:i,s:f,s:i,s:o}", "level", l->level, "spacing", l->spacing, "N",
+                                                l->N, "classes", cls));
+        }
+        cli_json_print(json_pack("{s:s,s:i,s:f,s:o,s:o}", "model", spec, "dim", dim, "spacing0", s0, "flags",
+                                 flags_json(co->flags), "levels", lv));
+    } else {
+        print_text(co, spec);
+    }
+    subdiv_coeffs_free(co);
+    nl_model_free(m);
+    return 0;
+}

@@ -1,0 +1,131 @@
+/* Generalized stochastic subdivision (Lewis 1987).
+ *
+ * Geometry.  Level k refines a grid of observation spacing s_k = s_0 / 2^k
+ * (s_0 = spacing0, in the model's lag units; eq. (6) is this scaling of R).
+ * Old points keep their values; each new point is
+ *     x_p = u_p + sum_k a_k x_{p_k}                         eq. (3), (9), (11)
+ * with the a_k from the orthogonality principle
+ *     R(p - p_j) = sum_k a_k R(p_k - p_j),  all j            eq. (4), (10), (12)
+ * and u_p independent Gaussian with the variance of eq. (7)
+ *     E{u^2} = R(0) - sum_k a_k R(p - p_k).
+ *
+ * Point classes and neighbourhood order:
+ *   1D "mid":  observations at k = 1-N..N (times s_k), target 0.5 s_k;
+ *              coefficient i is for k = i + 1 - N.
+ *   2D, observations at (r, c) = 1-N..N squared (r along y, c along x),
+ *              coefficient i = (r + N - 1) 2N + (c + N - 1) (row-major):
+ *      "face"   target (y, x) = (0.5, 0.5)  the mid-face vertex
+ *      "edge-x" target (0, 0.5)             mid-edge between (0,0) and (0,1)
+ *      "edge-y" target (0.5, 0)             mid-edge between (0,0) and (1,0)
+ *   (the edges use the 2N x 2N block of the face below/right of them, as in
+ *   Lewis's Fig. 3, so their neighbourhood is one row (column) heavier on
+ *   the far side).
+ *
+ * Solving.  The symmetric matrix of eq. (4)/(10) is factorised by Cholesky
+ * when it is positive definite and its condition number is at most
+ * SUBDIV_COND_MAX.  Past that it is "singular": the solution is the SVD
+ * pseudo-inverse with singular values below sigma_max / SUBDIV_COND_MAX
+ * dropped, and a pseudo-inverse that comes out uniform (every a = 1/n to
+ * within 1e-3/n, Lewis: "the generalized inverse sets the coefficients to
+ * 1/2N") is reset to the equivalent nearest-neighbour interpolant before the
+ * variance is computed.  A matrix with an eigenvalue below
+ * -n eps lambda_max is "not positive definite" (solved by the pseudo-inverse
+ * and flagged); a negative variance (7) is clamped to 0 and flagged. */
+#ifndef SYNTH_SUBDIV_H
+#define SYNTH_SUBDIV_H
+
+#include "../core/field.h"
+#include "../core/model.h"
+
+#include <stdint.h>
+
+/* Condition number past which the matrix is treated as singular: the
+ * solution's relative error bound eps * cond is then above 2e-6. */
+#define SUBDIV_COND_MAX 1e10
+
+/* diagonal-bias: a corner coefficient of the 2N x 2N block exceeds this
+ * fraction of the largest coefficient. */
+#define SUBDIV_DIAG_BIAS_FRAC 0.01
+
+enum { SUBDIV_MID = 0, SUBDIV_FACE = 1, SUBDIV_EDGE_X = 2, SUBDIV_EDGE_Y = 3 };
+
+enum {
+    SUBDIV_SINGULAR = 1u << 0,  /* condition number > SUBDIV_COND_MAX */
+    SUBDIV_PINV = 1u << 1,      /* solved by the pseudo-inverse */
+    SUBDIV_NOT_PD = 1u << 2,    /* negative eigenvalue */
+    SUBDIV_NEG_VAR = 1u << 3,   /* eq. (7) came out negative; clamped to 0 */
+    SUBDIV_DIAG_BIAS = 1u << 4, /* corner coefficients not negligible */
+    SUBDIV_NN_RESET = 1u << 5   /* uniform pseudo-inverse reset to nearest neighbours */
+};
+
+/* Names of the flags, in bit order ("singular", "pseudo-inverse", ...). */
+const char *subdiv_flag_name(unsigned bit);
+const char *subdiv_class_name(int cls);
+
+typedef struct {
+    int cls;              /* SUBDIV_MID, _FACE, _EDGE_X, _EDGE_Y */
+    size_t n;             /* coefficients: 2N in 1D, (2N)^2 in 2D */
+    double *a;            /* n coefficients in neighbourhood order */
+    double variance;      /* displacement variance, eq. (7), clamped at 0 */
+    double raw_variance;  /* eq. (7) as computed */
+    double condition;     /* 2-norm condition number of the matrix */
+    double min_eigenvalue;/* smallest eigenvalue of the matrix */
+    unsigned flags;       /* SUBDIV_* */
+} subdiv_class;
+
+typedef struct {
+    int level;            /* 0 = coarsest */
+    double spacing;       /* observation spacing s_k */
+    int N;                /* neighbourhood half-width: 2N points per axis */
+    int nclass;           /* 1 in 1D; 3 in 2D (face, edge-x, edge-y) */
+    subdiv_class cls[3];
+} subdiv_level;
+
+typedef struct {
+    int dim;              /* 1 or 2 */
+    int levels;           /* number of levels */
+    double spacing0;      /* s_0 */
+    double r0;            /* R(0) */
+    unsigned flags;       /* union of all class flags */
+    subdiv_level *level;  /* levels entries */
+} subdiv_coeffs;
+
+/* Compute the coefficients of `levels` levels.  N > 0 fixes the
+ * half-width; N = 0 chooses it per level ("auto"): N grows from 1 until the
+ * displacement variance (7) of the mid (1D) or face (2D) class improves by
+ * less than tol * R(0), up to nmax.  Returns NL_OK, or NL_EINVAL/NL_EFAIL. */
+int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
+                        subdiv_coeffs **out);
+
+void subdiv_coeffs_free(subdiv_coeffs *c);
+
+/* Eq. (12) for any observation set: n points pts[i*dim..] and the target,
+ * in lag units.  Fills cls (a must hold n doubles); `reset` gives the
+ * nearest-neighbour coefficients to use when the pseudo-inverse is uniform
+ * (NULL: no reset). */
+int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
+                 const double *reset, subdiv_class *cls);
+
+/* Synthesis.  Random numbers: the displacement of the point with index
+ * (i, j) on the grid of level k + 1 (and the seed values at level 0) is
+ * nl_rng_gauss(seed, SUBDIV_STREAM + level, j * 2^32 + i) with the signed
+ * indices taken modulo 2^32, so every number is a pure function of
+ * (seed, level, integer position). */
+#define SUBDIV_STREAM 100u
+
+/* Periodic synthesis into f (dim 1 or 2, each n divisible by 2^levels and
+ * the coarse grid n / 2^levels at least 2): the coarse grid is synthesised
+ * exactly (periodic FFT synthesis of R at spacing s_0) and refined with
+ * wrapped neighbourhoods.  f->h is set to s_0 / 2^levels.  NL_ENOTPD when the
+ * coarse grid or any level is not positive definite (unless allow_not_pd). */
+int subdiv_synth_periodic(const subdiv_coeffs *c, const nl_model *m, uint64_t seed, int allow_not_pd,
+                          nl_field *f);
+
+/* Non-periodic window: the samples of an infinite field at finest-grid
+ * indices origin[a] .. origin[a] + n[a] - 1.  Level 0 is white noise of
+ * variance R(0) at spacing s_0 (exact when R(s_0) is negligible; the
+ * residual correlation R(s_0)/R(0) is the caller's to report).  Two windows
+ * agree bit for bit where they overlap. */
+int subdiv_synth_window(const subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f);
+
+#endif

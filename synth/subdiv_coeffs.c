@@ -1,0 +1,290 @@
+/* Midpoint estimation coefficients of generalized stochastic subdivision:
+ * Lewis 1987, eqs. (4), (6), (7), (10), (12). */
+#include "subdiv.h"
+#include "../core/nl_error.h"
+
+#include <float.h>
+#include <gsl/gsl_eigen.h>
+#include <gsl/gsl_linalg.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const flag_names[] = {"singular", "pseudo-inverse", "not-positive-definite",
+                                         "negative-variance", "diagonal-bias", "nearest-neighbour-reset"};
+
+const char *subdiv_flag_name(unsigned bit) { return bit < 6 ? flag_names[bit] : "?"; }
+
+const char *subdiv_class_name(int cls)
+{
+    static const char *const names[] = {"mid", "face", "edge-x", "edge-y"};
+    return cls >= 0 && cls < 4 ? names[cls] : "?";
+}
+
+static double acf_at(const nl_model *m, int dim, const double *p, const double *q)
+{
+    double lag[3] = {0, 0, 0};
+    for (int a = 0; a < dim; a++)
+        lag[a] = p[a] - q[a];
+    return nl_model_acf(m, dim, lag);
+}
+
+/* Eigenvalues of the symmetric A (destroyed): min and max |.|. */
+static int eig_range(gsl_matrix *A, double *lmin, double *amax, double *amin)
+{
+    size_t n = A->size1;
+    gsl_vector *ev = gsl_vector_alloc(n);
+    gsl_eigen_symm_workspace *w = gsl_eigen_symm_alloc(n);
+    int st = (!ev || !w) ? GSL_ENOMEM : gsl_eigen_symm(A, ev, w);
+    if (!st) {
+        *lmin = INFINITY, *amax = 0, *amin = INFINITY;
+        for (size_t i = 0; i < n; i++) {
+            double l = gsl_vector_get(ev, i);
+            *lmin = fmin(*lmin, l);
+            *amax = fmax(*amax, fabs(l));
+            *amin = fmin(*amin, fabs(l));
+        }
+    }
+    gsl_vector_free(ev);
+    gsl_eigen_symm_free(w);
+    return st;
+}
+
+/* Pseudo-inverse solution through the SVD, dropping singular values below
+ * sigma_max / SUBDIV_COND_MAX. */
+static int pinv_solve(gsl_matrix *A, const gsl_vector *b, gsl_vector *x)
+{
+    size_t n = A->size1;
+    gsl_matrix *V = gsl_matrix_alloc(n, n);
+    gsl_vector *S = gsl_vector_alloc(n), *work = gsl_vector_alloc(n);
+    int st = (!V || !S || !work) ? GSL_ENOMEM : gsl_linalg_SV_decomp(A, V, S, work);
+    if (!st) {
+        double smax = gsl_vector_get(S, 0);
+        for (size_t i = 0; i < n; i++)
+            if (gsl_vector_get(S, i) < smax / SUBDIV_COND_MAX)
+                gsl_vector_set(S, i, 0.0);
+        st = gsl_linalg_SV_solve(A, V, S, b, x);
+    }
+    gsl_matrix_free(V);
+    gsl_vector_free(S);
+    gsl_vector_free(work);
+    return st;
+}
+
+int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
+                 const double *reset, subdiv_class *cls)
+{
+    gsl_matrix *A = gsl_matrix_alloc(n, n), *F = gsl_matrix_alloc(n, n);
+    gsl_vector *b = gsl_vector_alloc(n), *x = gsl_vector_alloc(n);
+    double lmin = 0, amax = 0, amin = 0, v;
+    int st = NL_OK, uniform = 1;
+
+    cls->flags = 0;
+    cls->n = n;
+    if (!A || !F || !b || !x) {
+        st = NL_ERROR(NL_ENOMEM, "out of memory for a %zu x %zu system", n, n);
+        goto done;
+    }
+    for (size_t j = 0; j < n; j++) {
+        for (size_t k = 0; k < n; k++)
+            gsl_matrix_set(A, j, k, acf_at(m, dim, pts + j * dim, pts + k * dim));
+        gsl_vector_set(b, j, acf_at(m, dim, target, pts + j * dim));
+    }
+    gsl_matrix_memcpy(F, A);
+    if (eig_range(F, &lmin, &amax, &amin)) {
+        st = NL_ERROR(NL_EFAIL, "the eigenvalues of a %zu x %zu system did not converge", n, n);
+        goto done;
+    }
+    cls->min_eigenvalue = lmin;
+    cls->condition = amin > 0 ? amax / amin : INFINITY;
+    if (lmin < -(double)n * DBL_EPSILON * amax)
+        cls->flags |= SUBDIV_NOT_PD;
+    if (cls->condition > SUBDIV_COND_MAX)
+        cls->flags |= SUBDIV_SINGULAR;
+    gsl_matrix_memcpy(F, A);
+    if (!(cls->flags & (SUBDIV_NOT_PD | SUBDIV_SINGULAR)) && gsl_linalg_cholesky_decomp1(F) == 0) {
+        gsl_linalg_cholesky_solve(F, b, x);
+    } else {
+        gsl_matrix_memcpy(F, A);
+        cls->flags |= SUBDIV_PINV;
+        if (pinv_solve(F, b, x)) {
+            st = NL_ERROR(NL_EFAIL, "the SVD of a %zu x %zu system failed", n, n);
+            goto done;
+        }
+    }
+    for (size_t k = 0; k < n; k++) {
+        cls->a[k] = gsl_vector_get(x, k);
+        if (fabs(cls->a[k] - 1.0 / (double)n) > 1e-3 / (double)n)
+            uniform = 0;
+    }
+    if ((cls->flags & SUBDIV_PINV) && uniform && reset && n > 1) {
+        memcpy(cls->a, reset, n * sizeof *cls->a);
+        cls->flags |= SUBDIV_NN_RESET;
+    }
+    /* eq. (7) */
+    v = acf_at(m, dim, target, target);
+    for (size_t k = 0; k < n; k++)
+        v -= cls->a[k] * gsl_vector_get(b, k);
+    cls->raw_variance = v;
+    cls->variance = v > 0 ? v : 0.0;
+    if (v < 0)
+        cls->flags |= SUBDIV_NEG_VAR;
+done:
+    gsl_matrix_free(A);
+    gsl_matrix_free(F);
+    gsl_vector_free(b);
+    gsl_vector_free(x);
+    return st;
+}
+
+/* Observation points, target and reset pattern of a class at spacing s. */
+static void geometry(int cls, int N, double s, double *pts, double *target, double *reset)
+{
+    int w = 2 * N;
+    if (cls == SUBDIV_MID) {
+        for (int i = 0; i < w; i++) {
+            pts[i] = (i + 1 - N) * s;
+            reset[i] = (i == N - 1 || i == N) ? 0.5 : 0.0;
+        }
+        target[0] = 0.5 * s;
+        return;
+    }
+    target[0] = (cls == SUBDIV_EDGE_Y ? 0.0 : 0.5) * s;  /* x */
+    target[1] = (cls == SUBDIV_EDGE_X ? 0.0 : 0.5) * s;  /* y */
+    for (int r = 1 - N; r <= N; r++)
+        for (int c = 1 - N; c <= N; c++) {
+            int i = (r + N - 1) * w + (c + N - 1);
+            int near_r = cls == SUBDIV_EDGE_X ? r == 0 : (r == 0 || r == 1);
+            int near_c = cls == SUBDIV_EDGE_Y ? c == 0 : (c == 0 || c == 1);
+            pts[2 * i] = c * s;
+            pts[2 * i + 1] = r * s;
+            reset[i] = near_r && near_c ? (cls == SUBDIV_FACE ? 0.25 : 0.5) : 0.0;
+        }
+}
+
+static int solve_class(const nl_model *m, int dim, int cls, int N, double s, subdiv_class *out)
+{
+    size_t n = dim == 1 ? (size_t)(2 * N) : (size_t)(4 * N * N);
+    double *pts = malloc(n * dim * sizeof *pts), *reset = malloc(n * sizeof *reset), target[2];
+    int st;
+    out->cls = cls;
+    out->a = malloc(n * sizeof *out->a);
+    if (!pts || !reset || !out->a) {
+        free(pts), free(reset);
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    geometry(cls, N, s, pts, target, reset);
+    st = subdiv_solve(m, dim, n, pts, target, reset, out);
+    if (!st && dim == 2) {
+        double amax = 0;
+        size_t w = (size_t)(2 * N), corner[4] = {0, w - 1, w * (w - 1), w * w - 1};
+        for (size_t k = 0; k < n; k++)
+            amax = fmax(amax, fabs(out->a[k]));
+        for (int k = 0; k < 4 && N > 1; k++)
+            if (fabs(out->a[corner[k]]) > SUBDIV_DIAG_BIAS_FRAC * amax)
+                out->flags |= SUBDIV_DIAG_BIAS;
+    }
+    free(pts);
+    free(reset);
+    return st;
+}
+
+static void free_level(subdiv_level *l)
+{
+    for (int c = 0; c < l->nclass; c++)
+        free(l->cls[c].a), l->cls[c].a = NULL;
+}
+
+static int solve_level(const nl_model *m, int dim, int N, double s, subdiv_level *l)
+{
+    static const int classes2[] = {SUBDIV_FACE, SUBDIV_EDGE_X, SUBDIV_EDGE_Y};
+    int st = NL_OK;
+    l->N = N;
+    l->spacing = s;
+    l->nclass = dim == 1 ? 1 : 3;
+    memset(l->cls, 0, sizeof l->cls);
+    for (int c = 0; c < l->nclass && !st; c++)
+        st = solve_class(m, dim, dim == 1 ? SUBDIV_MID : classes2[c], N, s, &l->cls[c]);
+    return st;
+}
+
+void subdiv_coeffs_free(subdiv_coeffs *c)
+{
+    if (!c)
+        return;
+    for (int k = 0; c->level && k < c->levels; k++)
+        free_level(&c->level[k]);
+    free(c->level);
+    free(c);
+}
+
+int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
+                        subdiv_coeffs **out)
+{
+    subdiv_coeffs *c;
+    double zero[2] = {0, 0};
+    int st;
+    *out = NULL;
+    if (dim != 1 && dim != 2)
+        return NL_ERROR(NL_EINVAL, "subdivision: expected dimension 1 or 2, got %d", dim);
+    if (levels < 1 || levels > 40)
+        return NL_ERROR(NL_EINVAL, "levels: expected 1 to 40, got %d", levels);
+    if (!(spacing0 > 0) || !isfinite(spacing0))
+        return NL_ERROR(NL_EINVAL, "spacing0: expected a positive number, got %g", spacing0);
+    if (N < 0 || N > (dim == 1 ? 64 : 8) || (N == 0 && (nmax < 1 || nmax > (dim == 1 ? 64 : 8))))
+        return NL_ERROR(NL_EINVAL, "neighborhood: expected a half-width from 1 to %d, got %d", dim == 1 ? 64 : 8,
+                        N ? N : nmax);
+    if (N == 0 && !(tol > 0))
+        return NL_ERROR(NL_EINVAL, "tol: expected a positive tolerance, got %g", tol);
+    if ((st = nl_model_check_dim(m, dim)))
+        return st;
+    if (nl_model_is_spectral(m))
+        return NL_ERROR(NL_EINVAL, "%s: subdivision needs R(lag); give the autocorrelation (spectral models "
+                        "are not converted here)", nl_model_spec(m));
+    c = calloc(1, sizeof *c);
+    if (!c || !(c->level = calloc((size_t)levels, sizeof *c->level))) {
+        free(c);
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    c->dim = dim;
+    c->levels = levels;
+    c->spacing0 = spacing0;
+    c->r0 = nl_model_acf(m, dim, zero);
+    if (!(c->r0 > 0)) {
+        subdiv_coeffs_free(c);
+        return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a positive variance", nl_model_spec(m), c->r0);
+    }
+    for (int k = 0; k < levels && !st; k++) {
+        double s = ldexp(spacing0, -k);
+        subdiv_level *l = &c->level[k];
+        l->level = k;
+        if (N > 0) {
+            st = solve_level(m, dim, N, s, l);
+        } else {
+            /* grow N until eq. (7) improves by less than tol R(0) */
+            st = solve_level(m, dim, 1, s, l);
+            for (int n = 2; !st && n <= nmax; n++) {
+                subdiv_level next;
+                next.level = k;
+                if ((st = solve_level(m, dim, n, s, &next))) {
+                    free_level(&next);
+                    break;
+                }
+                if (l->cls[0].variance - next.cls[0].variance < tol * c->r0) {
+                    free_level(&next);
+                    break;
+                }
+                free_level(l);
+                *l = next;
+            }
+        }
+        for (int j = 0; !st && j < l->nclass; j++)
+            c->flags |= l->cls[j].flags;
+    }
+    if (st) {
+        subdiv_coeffs_free(c);
+        return st;
+    }
+    *out = c;
+    return NL_OK;
+}
