@@ -1,8 +1,6 @@
 /* noiselab synth: synthesise a field with a prescribed model. */
-#include "cli.h"
-#include "../core/model.h"
+#include "synth.h"
 #include "../core/nl_error.h"
-#include "../synth/fft.h"
 
 #include <getopt.h>
 #include <inttypes.h>
@@ -14,24 +12,34 @@
 static const char help[] =
     "usage: noiselab synth METHOD (--acf SPEC | --spectrum SPEC) --size N[xM[xK]]\n"
     "                      [--seed S] [--spacing H[,H...]] [--clamp] [--preview P.png]\n"
-    "                      [--json] -o OUT.exr|OUT.tsv\n\n"
+    "                      [--json] [method options] -o OUT.exr|OUT.tsv\n\n"
     "METHOD\n"
-    "  fft      periodic Fourier synthesis: white noise filtered by the square root of\n"
-    "           the model's spectrum on the periodic grid; Gaussian, zero ensemble mean,\n"
-    "           variance R(0), covariance exactly the model's R sampled on the torus.\n"
-    "           The same seed and size give the same white noise for every model.\n\n"
+    "  fft       periodic Fourier synthesis: white noise filtered by the square root of\n"
+    "            the model's spectrum on the periodic grid; Gaussian, zero ensemble mean,\n"
+    "            variance R(0), covariance exactly the model's R sampled on the torus.\n"
+    "            The same seed and size give the same white noise for every model.\n"
+    "  subdiv    generalized stochastic subdivision (Lewis 1987), 1D or 2D:\n"
+    "            --levels L          levels of refinement (default: down to a coarse grid\n"
+    "                                of 8 samples, or 6 levels with --nonperiodic)\n"
+    "            --neighborhood N|auto  half-width of the neighbourhood (default 2: 4 or 4x4)\n"
+    "            --tol E             auto: grow N until eq. (7) improves by < E R(0) (1e-4)\n"
+    "            --nonperiodic       a window of an infinite, spatially consistent field\n"
+    "            --origin X[,Y]      the window's first sample, in output samples (default 0)\n"
+    "            --seed-image FILE   start from this image as the coarse level (kept exactly)\n"
+    "  midpoint  midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
+    "            only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
+    "            (1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
+    "            by an extra Q (Haruyama-Barsky-style altered variances)\n\n"
     "  --acf SPEC       autocorrelation model (see noiselab models)\n"
     "  --spectrum SPEC  spectrum model: power:d=..., spectrum:EXPR, or a bare EXPR in f/fx/fy/k\n"
-    "  --size           samples per axis, each >= 2 (1D, 2D or 3D)\n"
+    "  --size           samples per axis, each >= 2 (fft: 1D, 2D or 3D; subdiv: 1D or 2D)\n"
     "  --seed           64-bit seed (default 1)\n"
-    "  --spacing        grid spacing, one value or one per axis (default 1)\n"
-    "  --clamp          accept a spectrum with negative values by zeroing them\n"
+    "  --spacing        output grid spacing, one value or one per axis (default 1)\n"
+    "  --clamp          synthesise a model that is not positive definite by zeroing its\n"
+    "                   negative spectrum (fft) or variances (subdiv); flagged in the output\n"
     "  --preview        8-bit PNG of a 2D field (the first slice of 3D), mean +- 3 sd\n"
-    "  --json           print the synthesis report (variance, spectrum range) as JSON\n"
+    "  --json           print the synthesis report as JSON\n"
     "  -o               EXR (any dimension) or TSV (1D: columns t, value)\n";
-
-static const char *const methods_planned[] = {"subdiv", "midpoint", "circulant", "cholesky", "sparse",
-                                              "faulting", "lattice", "rank1"};
 
 /* The spec for --spectrum: a bare expression means spectrum:EXPR. */
 static const char *spectrum_spec(const char *s, char *buf, size_t len)
@@ -60,121 +68,213 @@ static void write_tsv(const char *path, const nl_field *f)
         cli_die_status(st);
 }
 
+static void parse_origin(const char *s, long *o)
+{
+    char *end;
+    o[0] = strtol(s, &end, 10);
+    if (end == s)
+        cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
+    if (*end == ',') {
+        char *p = end + 1;
+        o[1] = strtol(p, &end, 10);
+        if (end == p)
+            cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
+    }
+    if (*end)
+        cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
+}
+
+/* Options that only some methods take. */
+static void only_for(const char *opt, int given, const char *method, const char *allowed)
+{
+    char list[64];
+    snprintf(list, sizeof list, " %s ", allowed);
+    char word[32];
+    snprintf(word, sizeof word, " %s ", method);
+    if (given && !strstr(list, word))
+        cli_die(2, "synth %s: %s applies to %s only", method, opt, allowed);
+}
+
 int cmd_synth(int argc, char **argv)
 {
     static const struct option opts[] = {
-        {"acf", required_argument, 0, 'a'},     {"spectrum", required_argument, 0, 'S'},
-        {"size", required_argument, 0, 'n'},    {"seed", required_argument, 0, 's'},
-        {"spacing", required_argument, 0, 'H'}, {"clamp", no_argument, 0, 'c'},
-        {"preview", required_argument, 0, 'p'}, {"json", no_argument, 0, 'j'},
-        {"output", required_argument, 0, 'o'},  {"help", no_argument, 0, 'h'},
+        {"acf", required_argument, 0, 'a'},        {"spectrum", required_argument, 0, 'S'},
+        {"size", required_argument, 0, 'n'},       {"seed", required_argument, 0, 's'},
+        {"spacing", required_argument, 0, 'H'},    {"clamp", no_argument, 0, 'c'},
+        {"preview", required_argument, 0, 'p'},    {"json", no_argument, 0, 'j'},
+        {"output", required_argument, 0, 'o'},     {"help", no_argument, 0, 'h'},
+        {"levels", required_argument, 0, 'L'},     {"neighborhood", required_argument, 0, 'N'},
+        {"tol", required_argument, 0, 't'},        {"nonperiodic", no_argument, 0, 'P'},
+        {"origin", required_argument, 0, 'O'},     {"seed-image", required_argument, 0, 'I'},
+        {"H", required_argument, 0, 'u'},          {"variance-scale", required_argument, 0, 'v'},
         {0}};
     const char *acf = NULL, *spec = NULL, *size = NULL, *spacing = NULL, *out = NULL, *preview = NULL;
-    const char *method, *tmp, *ptmp = NULL;
+    const char *tmp, *ptmp = NULL, *origin = NULL;
     char sbuf[1100];
-    uint64_t seed = 1;
-    unsigned flags = 0;
-    int c, dim, json = 0, st;
-    size_t n[3] = {1, 1, 1};
-    double h[3] = {1, 1, 1};
-    nl_model *m;
-    synth_fft_plan *plan;
-    synth_fft_info info;
+    int c, json = 0, st, given_L = 0, given_N = 0, given_tol = 0, given_vs = 0;
+    synth_job job;
+    synth_result res;
     nl_field *f;
     nl_meta meta;
 
+    memset(&job, 0, sizeof job);
+    memset(&res, 0, sizeof res);
+    job.seed = 1;
+    job.N = -1;
+    job.tol = 1e-4;
+    job.H = NAN;
+    job.vscale = 1;
+    for (int a = 0; a < 3; a++)
+        job.n[a] = 1, job.h[a] = 1;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
         case 'a': acf = optarg; break;
         case 'S': spec = optarg; break;
         case 'n': size = optarg; break;
-        case 's': seed = cli_parse_u64("--seed", optarg); break;
+        case 's': job.seed = cli_parse_u64("--seed", optarg); break;
         case 'H': spacing = optarg; break;
-        case 'c': flags |= SYNTH_FFT_CLAMP; break;
+        case 'c': job.clamp = 1; break;
         case 'p': preview = optarg; break;
         case 'j': json = 1; break;
         case 'o': out = optarg; break;
+        case 'L':
+            job.levels = (int)cli_parse_count("--levels", optarg, 1);
+            if (job.levels > 30)
+                cli_die(2, "--levels: expected 1 to 30, got \"%s\"", optarg);
+            given_L = 1;
+            break;
+        case 'N':
+            job.N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
+            given_N = 1;
+            break;
+        case 't':
+            job.tol = cli_parse_double("--tol", optarg);
+            if (!(job.tol > 0))
+                cli_die(2, "--tol: expected a positive number, got \"%s\"", optarg);
+            given_tol = 1;
+            break;
+        case 'P': job.nonperiodic = 1; break;
+        case 'O': origin = optarg; break;
+        case 'I': job.seed_image = optarg; break;
+        case 'u':
+            job.H = cli_parse_double("--H", optarg);
+            if (!(job.H > 0 && job.H < 1))
+                cli_die(2, "--H: expected a Hurst exponent between 0 and 1, got \"%s\"", optarg);
+            break;
+        case 'v':
+            job.vscale = cli_parse_double("--variance-scale", optarg);
+            if (!(job.vscale > 0))
+                cli_die(2, "--variance-scale: expected a positive factor, got \"%s\"", optarg);
+            given_vs = 1;
+            break;
         case 'h': fputs(help, stdout); return 0;
         default: cli_bad_option("synth", c, argv);
         }
     }
     if (optind >= argc)
-        cli_die(2, "synth: expected a METHOD (fft), see noiselab synth --help");
-    method = argv[optind];
+        cli_die(2, "synth: expected a METHOD (fft, subdiv or midpoint), see noiselab synth --help");
+    job.method = argv[optind];
     if (optind + 1 < argc)
         cli_die(2, "synth: unexpected argument \"%s\"", argv[optind + 1]);
-    if (strcmp(method, "fft") != 0) {
-        for (size_t i = 0; i < sizeof methods_planned / sizeof *methods_planned; i++)
-            if (strcmp(method, methods_planned[i]) == 0)
-                cli_die(2, "synth: method \"%s\" is not available in this version (available: fft)", method);
-        cli_die(2, "synth: unknown method \"%s\" (expected fft)", method);
+    if (strcmp(job.method, "fft") && strcmp(job.method, "subdiv") && strcmp(job.method, "midpoint")) {
+        static const char *const planned[] = {"circulant", "cholesky", "sparse", "faulting", "lattice", "rank1"};
+        for (size_t i = 0; i < sizeof planned / sizeof *planned; i++)
+            if (strcmp(job.method, planned[i]) == 0)
+                cli_die(2, "synth: method \"%s\" is not available in this version (available: fft, subdiv, "
+                        "midpoint)", job.method);
+        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv or midpoint)", job.method);
     }
-    if (!acf == !spec)
+    only_for("--levels", given_L, job.method, "subdiv midpoint");
+    only_for("--neighborhood", given_N, job.method, "subdiv");
+    only_for("--tol", given_tol, job.method, "subdiv");
+    only_for("--nonperiodic", job.nonperiodic, job.method, "subdiv");
+    only_for("--origin", origin != NULL, job.method, "subdiv");
+    only_for("--seed-image", job.seed_image != NULL, job.method, "subdiv");
+    only_for("--H", !isnan(job.H), job.method, "midpoint");
+    only_for("--variance-scale", given_vs, job.method, "midpoint");
+    if (origin && !job.nonperiodic)
+        cli_die(2, "synth subdiv: --origin needs --nonperiodic (a periodic field has no origin)");
+    if (origin)
+        parse_origin(origin, job.origin);
+    if (strcmp(job.method, "midpoint") == 0 && !isnan(job.H) && (acf || spec))
+        cli_die(2, "synth midpoint: give either --H or a power-law model, not both");
+    if (!(strcmp(job.method, "midpoint") == 0 && !isnan(job.H)) && !acf == !spec)
         cli_die(2, "synth: expected exactly one of --acf SPEC or --spectrum SPEC");
     if (!size)
         cli_die(2, "synth: --size: expected N, NxM or NxMxK");
     if (!out)
         cli_die(2, "synth: -o: expected an output file (.exr or .tsv)");
-    dim = cli_parse_size("--size", size, n, 2);
+    job.dim = cli_parse_size("--size", size, job.n, 2);
     if (spacing)
-        cli_parse_spacing("--spacing", spacing, dim, h);
+        cli_parse_spacing("--spacing", spacing, job.dim, job.h);
     if (!cli_has_ext(out, ".exr") && !cli_has_ext(out, ".tsv"))
         cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", out);
-    if (cli_has_ext(out, ".tsv") && dim != 1)
-        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", dim, out);
-    if (preview && dim == 1)
+    if (cli_has_ext(out, ".tsv") && job.dim != 1)
+        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", job.dim, out);
+    if (preview && job.dim == 1)
         cli_die(2, "--preview: expected a 2D or 3D field, got --size \"%s\"", size);
     if (preview && !cli_has_ext(preview, ".png"))
         cli_die(2, "--preview: expected a file name ending in .png, got \"%s\"", preview);
-    if ((st = nl_model_parse(acf ? acf : spectrum_spec(spec, sbuf, sizeof sbuf), &m)))
-        cli_die_status(st);
-    if (acf && nl_model_is_spectral(m))
-        cli_die(2, "--acf: \"%s\" is a spectrum model; pass it with --spectrum", acf);
-    if (spec && !nl_model_is_spectral(m))
-        cli_die(2, "--spectrum: \"%s\" is an autocorrelation model; pass it with --acf", spec);
+    if (acf || spec) {
+        if ((st = nl_model_parse(acf ? acf : spectrum_spec(spec, sbuf, sizeof sbuf), &job.m)))
+            cli_die_status(st);
+        if (acf && nl_model_is_spectral(job.m))
+            cli_die(2, "--acf: \"%s\" is a spectrum model; pass it with --spectrum", acf);
+        if (spec && !nl_model_is_spectral(job.m))
+            cli_die(2, "--spectrum: \"%s\" is an autocorrelation model; pass it with --acf", spec);
+    }
     tmp = cli_out_begin(out);
     if (preview)
         ptmp = cli_out_begin(preview);
-    if ((st = synth_fft_plan_alloc(m, dim, n, h, flags, &plan)))
-        cli_die_status(st);
-    synth_fft_plan_info(plan, &info);
-    f = nl_field_alloc(dim, n, h, &st);
+    f = nl_field_alloc(job.dim, job.n, job.h, &st);
     if (!f)
         cli_die_status(st);
-    if ((st = synth_fft_execute(plan, seed, f)))
-        cli_die_status(st);
+    if (strcmp(job.method, "fft") == 0)
+        synth_fft_run(&job, f, &res);
+    else if (strcmp(job.method, "subdiv") == 0)
+        synth_subdiv_run(&job, f, &res);
+    else
+        synth_midpoint_run(&job, f, &res);
 
     memset(&meta, 0, sizeof meta);
-    snprintf(meta.model, sizeof meta.model, "%s", nl_model_spec(m));
-    snprintf(meta.method, sizeof meta.method, "fft%s", (flags & SYNTH_FFT_CLAMP) ? " clamp" : "");
-    snprintf(meta.seed, sizeof meta.seed, "%" PRIu64, seed);
+    snprintf(meta.model, sizeof meta.model, "%s", job.m ? nl_model_spec(job.m) : "");
+    snprintf(meta.method, sizeof meta.method, "%s", res.method);
+    snprintf(meta.flags, sizeof meta.flags, "%s", res.flags);
+    snprintf(meta.seed, sizeof meta.seed, "%" PRIu64, job.seed);
     snprintf(meta.version, sizeof meta.version, "%s", NL_VERSION);
-    for (int a = 0, k = 0, l = 0; a < dim; a++) {
-        k += snprintf(meta.spacing + k, sizeof meta.spacing - (size_t)k, "%s%.17g", a ? "," : "", h[a]);
-        l += snprintf(meta.size + l, sizeof meta.size - (size_t)l, "%s%zu", a ? "x" : "", n[a]);
+    for (int a = 0, k = 0, l = 0; a < job.dim; a++) {
+        k += snprintf(meta.spacing + k, sizeof meta.spacing - (size_t)k, "%s%.17g", a ? "," : "", f->h[a]);
+        l += snprintf(meta.size + l, sizeof meta.size - (size_t)l, "%s%zu", a ? "x" : "", job.n[a]);
     }
-    st = cli_has_ext(out, ".exr") ? nl_exr_write(tmp, f, &meta) : NL_OK;
-    if (st)
-        cli_die_status(st);
-    if (cli_has_ext(out, ".tsv"))
-        write_tsv(tmp, f);
-    if (preview) {
-        double sd = sqrt(info.variance);
-        if ((st = nl_png_write_field(ptmp, f, -3 * sd, 3 * sd)))
+    if (cli_has_ext(out, ".exr")) {
+        if ((st = nl_exr_write(tmp, f, &meta)))
             cli_die_status(st);
+    } else {
+        write_tsv(tmp, f);
     }
+    if (preview && (st = nl_png_write_field(ptmp, f, -3 * res.sd, 3 * res.sd)))
+        cli_die_status(st);
     cli_out_commit(out);
     if (preview)
         cli_out_commit(preview);
-    if (json)
-        cli_json_print(json_pack("{s:s,s:s,s:I,s:s,s:f,s:f,s:f,s:I,s:f}", "model", nl_model_spec(m), "method",
-                                 meta.method, "seed", (json_int_t)seed, "size", meta.size, "variance",
-                                 info.variance, "min_spectrum", info.min_lambda, "max_spectrum",
-                                 info.max_lambda, "clamped", (json_int_t)info.negatives, "clamp_error",
-                                 info.clamp_error));
+    if (json) {
+        json_t *o = json_pack("{s:s,s:s,s:I,s:s,s:s}", "model", meta.model, "method", meta.method, "seed",
+                              (json_int_t)job.seed, "size", meta.size, "spacing", meta.spacing);
+        json_t *fl = json_array();
+        char *p = res.flags;
+        while (*p) {
+            size_t l = strcspn(p, ",");
+            json_array_append_new(fl, json_stringn(p, l));
+            p += l + (p[l] == ',');
+        }
+        json_object_set_new(o, "flags", fl);
+        if (res.report)
+            json_object_update(o, res.report);
+        cli_json_print(o);
+    }
+    json_decref(res.report);
     nl_field_free(f);
-    synth_fft_plan_free(plan);
-    nl_model_free(m);
+    nl_model_free(job.m);
     return 0;
 }

@@ -19,11 +19,12 @@
 /* Provenance stored with a field; empty strings are not written. */
 typedef struct {
     char model[1024];   /* noiselab.model: the model spec */
-    char method[64];    /* noiselab.method: synthesis method */
+    char method[256];   /* noiselab.method: synthesis method and its parameters */
     char seed[32];      /* noiselab.seed: decimal seed */
     char spacing[128];  /* noiselab.spacing: "h0[,h1[,h2]]" */
     char size[64];      /* noiselab.size: "N[xM[xK]]" */
     char version[32];   /* noiselab.version */
+    char flags[256];    /* noiselab.flags: comma-separated detector flags */
 } nl_meta;
 
 /* Write `f` as EXR with the attributes of `meta` (may be NULL).  Samples

@@ -27,6 +27,7 @@ static const struct {
     {"noiselab.spacing", offsetof(nl_meta, spacing), sizeof(((nl_meta *)0)->spacing)},
     {"noiselab.size", offsetof(nl_meta, size), sizeof(((nl_meta *)0)->size)},
     {"noiselab.version", offsetof(nl_meta, version), sizeof(((nl_meta *)0)->version)},
+    {"noiselab.flags", offsetof(nl_meta, flags), sizeof(((nl_meta *)0)->flags)},
 };
 enum { NATTR = sizeof attrs / sizeof *attrs };
 

@@ -61,8 +61,10 @@ const char *nl_model_spec(const nl_model *m);
 /* Is the model defined by its spectrum (power, spectrum:) rather than by R? */
 int nl_model_is_spectral(const nl_model *m);
 
-/* R at the lag vector lag[0..dim-1] (spacing units), for models defined by R.
- * For spectral models returns NAN (use the sampled conversion in wk.h). */
+/* R at the lag vector lag[0..dim-1] (spacing units), for models defined by R,
+ * and for power:, whose R is computed by quadrature (the Fourier or Hankel
+ * transform of its band-limited spectrum, Lewis 1987 eq. (13)).  For
+ * spectrum: models returns NAN (use the sampled conversion in wk.h). */
 double nl_model_acf(const nl_model *m, int dim, const double *lag);
 
 /* S at the frequency vector f[0..dim-1] (cycles per unit length) for spectral

@@ -48,6 +48,12 @@ static double profile(const nl_model *m, double t)
 double nl_model_acf(const nl_model *m, int dim, const double *lag)
 {
     double u, v, w, r;
+    if (m->kind == NL_MODEL_POWER) {
+        double r2 = 0;
+        for (int a = 0; a < dim; a++)
+            r2 += lag[a] * lag[a];
+        return nl_model_power_acf(m, dim, sqrt(r2));
+    }
     if (nl_model_is_spectral(m))
         return NAN;
     if (dim == 1)

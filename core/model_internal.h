@@ -31,4 +31,7 @@ int nl_model_image_load(nl_model *m, const char *path);
  * the half-size of the exemplar. */
 double nl_model_image_acf(const nl_model *m, double dx, double dy);
 
+/* R of the power model at distance r by quadrature (model_hankel.c). */
+double nl_model_power_acf(const nl_model *m, int dim, double r);
+
 #endif

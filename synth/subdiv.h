@@ -115,11 +115,31 @@ int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const 
 
 /* Periodic synthesis into f (dim 1 or 2, each n divisible by 2^levels and
  * the coarse grid n / 2^levels at least 2): the coarse grid is synthesised
- * exactly (periodic FFT synthesis of R at spacing s_0) and refined with
- * wrapped neighbourhoods.  f->h is set to s_0 / 2^levels.  NL_ENOTPD when the
- * coarse grid or any level is not positive definite (unless allow_not_pd). */
+ * exactly by periodic FFT synthesis of m at spacing s_0 (its white noise is
+ * the FFT stream of `seed`), or, when m is NULL, as independent values of
+ * variance c->r0; then it is refined with wrapped neighbourhoods.  f->h is
+ * set to s_0 / 2^levels.  NL_ENOTPD when the coarse grid or any level is not
+ * positive definite (unless allow_not_pd: negative variances are then 0). */
 int subdiv_synth_periodic(const subdiv_coeffs *c, const nl_model *m, uint64_t seed, int allow_not_pd,
                           nl_field *f);
+
+/* Refine a given coarse level (kept exactly: external consistency, Lewis
+ * 1987 Fig. 5) into f, whose size must be the coarse size times 2^levels. */
+int subdiv_refine_periodic(const subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
+                           nl_field *f);
+
+/* Midpoint displacement (Fournier, Fussell and Carpenter 1982) as a
+ * subdivision plan: nearest-neighbour averages (1D: the two ends; 2D: the
+ * four face corners, the two edge ends) with the displacement variance
+ * that makes the increments those of fractional Brownian motion with
+ * variogram 2 gamma(h) = sigma2 |h|^(2H):
+ *     v = 2 sum_k a_k gamma(p - p_k) - sum_jk a_j a_k gamma(p_j - p_k),
+ * (1D: sigma2 s^(2H) (2^(-2H) - 1/4)), times vscale^k at level k
+ * (vscale = 1: the fractal schedule; otherwise the altered variances of
+ * Haruyama and Barsky).  r0 is set to sigma2 s_0^(2H) / 2, the variance of
+ * the independent coarse values. */
+int subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
+                           subdiv_coeffs **out);
 
 /* Non-periodic window: the samples of an infinite field at finest-grid
  * indices origin[a] .. origin[a] + n[a] - 1.  Level 0 is white noise of

@@ -238,9 +238,9 @@ int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0,
         return NL_ERROR(NL_EINVAL, "tol: expected a positive tolerance, got %g", tol);
     if ((st = nl_model_check_dim(m, dim)))
         return st;
-    if (nl_model_is_spectral(m))
-        return NL_ERROR(NL_EINVAL, "%s: subdivision needs R(lag); give the autocorrelation (spectral models "
-                        "are not converted here)", nl_model_spec(m));
+    if (nl_model_get_kind(m) == NL_MODEL_SPECTRUM)
+        return NL_ERROR(NL_EINVAL, "%s: subdivision needs R(lag); give the autocorrelation, or a power: model "
+                        "(whose R is computed by quadrature)", nl_model_spec(m));
     c = calloc(1, sizeof *c);
     if (!c || !(c->level = calloc((size_t)levels, sizeof *c->level))) {
         free(c);

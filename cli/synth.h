@@ -1,0 +1,39 @@
+/* The synthesis methods behind `noiselab synth`: each fills a field from a
+ * parsed job and describes what it did. */
+#ifndef NL_CLI_SYNTH_H
+#define NL_CLI_SYNTH_H
+
+#include "cli.h"
+#include "../core/model.h"
+
+typedef struct {
+    const char *method;    /* fft, subdiv, midpoint */
+    nl_model *m;           /* the model */
+    int dim;               /* 1..3 */
+    size_t n[3];           /* output size */
+    double h[3];           /* output spacing */
+    uint64_t seed;         /* --seed */
+    int clamp;             /* --clamp */
+    int levels;            /* --levels, 0 = default */
+    int N;                 /* --neighborhood: -1 default, 0 auto */
+    double tol;            /* --tol for auto */
+    int nonperiodic;       /* --nonperiodic */
+    long origin[2];        /* --origin, finest-grid indices */
+    const char *seed_image;/* --seed-image */
+    double H;              /* midpoint: Hurst exponent, NAN if unset */
+    double vscale;         /* midpoint: --variance-scale factor per level */
+} synth_job;
+
+typedef struct {
+    char method[256];      /* method and its parameters, for noiselab.method */
+    char flags[256];       /* comma-separated flags, for noiselab.flags */
+    double sd;             /* standard deviation for the preview range */
+    json_t *report;        /* method-specific JSON report (owned) */
+} synth_result;
+
+/* Each exits through cli_die on bad input; returns only on success. */
+void synth_fft_run(const synth_job *job, nl_field *f, synth_result *r);
+void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r);
+void synth_midpoint_run(const synth_job *job, nl_field *f, synth_result *r);
+
+#endif

@@ -1,0 +1,188 @@
+/* The methods of `noiselab synth`: plan, synthesise, report. */
+#include "synth.h"
+#include "../core/autocorr.h"
+#include "../core/nl_error.h"
+#include "../synth/fft.h"
+#include "../synth/subdiv.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+void synth_fft_run(const synth_job *job, nl_field *f, synth_result *r)
+{
+    synth_fft_plan *p;
+    synth_fft_info info;
+    int st;
+    if ((st = synth_fft_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? SYNTH_FFT_CLAMP : 0, &p)))
+        cli_die_status(st);
+    synth_fft_plan_info(p, &info);
+    if ((st = synth_fft_execute(p, job->seed, f)))
+        cli_die_status(st);
+    synth_fft_plan_free(p);
+    snprintf(r->method, sizeof r->method, "fft");
+    if (info.clamp_error > SYNTH_FFT_CLAMP_TOL)
+        snprintf(r->flags, sizeof r->flags, "clamped");
+    r->sd = sqrt(info.variance);
+    r->report = json_pack("{s:f,s:f,s:f,s:I,s:f}", "variance", info.variance, "min_spectrum", info.min_lambda,
+                          "max_spectrum", info.max_lambda, "clamped", (json_int_t)info.negatives, "clamp_error",
+                          info.clamp_error);
+}
+
+/* Largest L with every size divisible by 2^L and at least `min` coarse samples. */
+static int default_levels(const synth_job *job, long min)
+{
+    int L = 0;
+    for (;;) {
+        int ok = 1;
+        for (int a = 0; a < job->dim; a++)
+            if ((long)job->n[a] % (2L << L) != 0 || (long)job->n[a] / (2L << L) < min)
+                ok = 0;
+        if (!ok || L >= 30)
+            return L;
+        L++;
+    }
+}
+
+static void flags_string(unsigned f, char *buf, size_t len)
+{
+    size_t k = 0;
+    buf[0] = 0;
+    for (unsigned b = 0; b < 6; b++)
+        if (f & (1u << b))
+            k += (size_t)snprintf(buf + k, len - k, "%s%s", k ? "," : "", subdiv_flag_name(b));
+}
+
+static json_t *levels_report(const subdiv_coeffs *c)
+{
+    json_t *a = json_array();
+    for (int k = 0; k < c->levels; k++) {
+        const subdiv_level *l = &c->level[k];
+        unsigned fl = 0;
+        double v = 0;
+        char buf[128];
+        for (int j = 0; j < l->nclass; j++)
+            fl |= l->cls[j].flags, v = fmax(v, l->cls[j].variance);
+        flags_string(fl, buf, sizeof buf);
+        json_array_append_new(a, json_pack("{s:i,s:f,s:i,s:f,s:s}", "level", k, "spacing", l->spacing, "N", l->N,
+                                           "max_variance", v, "flags", buf));
+    }
+    return a;
+}
+
+static nl_field *seed_image(const synth_job *job, double *mean)
+{
+    nl_field *img;
+    int st = nl_field_read(job->seed_image, &img, NULL);
+    if (st)
+        cli_die_status(st);
+    if (img->dim != job->dim)
+        cli_die(2, "--seed-image: %s is %dD, expected %dD like --size", job->seed_image, img->dim, job->dim);
+    *mean = nl_field_mean(img);
+    return img;
+}
+
+void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r)
+{
+    subdiv_coeffs *c;
+    nl_field *img = NULL;
+    double mean = 0, s0, zero[2] = {0, 0}, coarse_corr = NAN;
+    int L = job->levels, N = job->N < 0 ? 2 : job->N, st;
+    if (job->dim > 2)
+        cli_die(2, "synth subdiv: expected a 1D or 2D --size, got %dD", job->dim);
+    for (int a = 1; a < job->dim; a++)
+        if (job->h[a] != job->h[0])
+            cli_die(2, "--spacing: subdivision needs the same spacing on every axis");
+    if (job->seed_image) {
+        int Li = 0;
+        img = seed_image(job, &mean);
+        while ((img->n[0] << Li) < job->n[0])
+            Li++;
+        if ((img->n[0] << Li) != job->n[0] || (job->dim == 2 && (img->n[1] << Li) != job->n[1]))
+            cli_die(2, "--seed-image: a %zu%s%.0zu image refines to a power-of-two multiple of its size, not to "
+                    "--size %zu%s%.0zu", img->n[0], job->dim == 2 ? "x" : "", job->dim == 2 ? img->n[1] : (size_t)0,
+                    job->n[0], job->dim == 2 ? "x" : "", job->dim == 2 ? job->n[1] : (size_t)0);
+        if (L && L != Li)
+            cli_die(2, "--levels: the seed image fixes %d levels, got %d", Li, L);
+        L = Li;
+        if (L < 1)
+            cli_die(2, "--seed-image: the image is already as large as --size");
+    }
+    if (!L)
+        L = job->nonperiodic ? 6 : default_levels(job, 8);
+    if (L < 1)
+        cli_die(2, "--size: expected a size divisible by 2 with at least 16 samples for subdivision, got %zu",
+                job->n[0]);
+    s0 = ldexp(job->h[0], L);
+    if ((st = subdiv_coeffs_alloc(job->m, job->dim, L, s0, N, job->tol, job->dim == 1 ? 16 : 6, &c)))
+        cli_die_status(st);
+    if (job->nonperiodic) {
+        double lag[2] = {s0, 0};
+        coarse_corr = nl_model_acf(job->m, job->dim, lag) / nl_model_acf(job->m, job->dim, zero);
+        st = subdiv_synth_window(c, job->seed, job->origin, f);
+    } else if (img) {
+        size_t step = (size_t)1 << L;
+        nl_field *work = nl_field_alloc(img->dim, img->n, img->h, &st);
+        if (!work)
+            cli_die_status(st);
+        for (size_t i = 0; i < img->count; i++)
+            work->data[i] = img->data[i] - mean;
+        st = subdiv_refine_periodic(c, work, job->seed, job->clamp, f);
+        nl_field_free(work);
+        for (size_t i = 0; !st && i < f->count; i++)
+            f->data[i] += mean;
+        /* the seed samples are the data, bit for bit (not (v - mean) + mean) */
+        for (size_t j = 0; !st && j < img->n[1]; j++)
+            for (size_t i = 0; i < img->n[0]; i++)
+                f->data[(job->dim == 2 ? j * step * f->n[0] : 0) + i * step] = img->data[j * img->n[0] + i];
+    } else {
+        st = subdiv_synth_periodic(c, job->m, job->seed, job->clamp, f);
+    }
+    if (st)
+        cli_die_status(st);
+    char nb[16] = "auto";
+    if (N)
+        snprintf(nb, sizeof nb, "%d", N);
+    snprintf(r->method, sizeof r->method, "subdiv:levels=%d,neighborhood=%s,tol=%g%s%s", L, nb, job->tol,
+             job->nonperiodic ? ",nonperiodic" : ",periodic", img ? ",seed-image" : "");
+    if (job->nonperiodic)
+        snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), ",origin=%ld,%ld",
+                 job->origin[0], job->origin[1]);
+    flags_string(c->flags, r->flags, sizeof r->flags);
+    r->sd = sqrt(c->r0);
+    r->report = json_pack("{s:f,s:f,s:o}", "spacing0", s0, "variance", c->r0, "levels", levels_report(c));
+    if (job->nonperiodic)
+        json_object_set_new(r->report, "coarse_correlation", json_real(coarse_corr));
+    nl_field_free(img);
+    subdiv_coeffs_free(c);
+}
+
+void synth_midpoint_run(const synth_job *job, nl_field *f, synth_result *r)
+{
+    subdiv_coeffs *c;
+    double H = job->H;
+    int L = job->levels, st;
+    if (job->dim > 2)
+        cli_die(2, "synth midpoint: expected a 1D or 2D --size, got %dD", job->dim);
+    if (isnan(H)) {
+        /* f^-d with d = 2H + E (E = 1 or 2) */
+        if (nl_model_get_kind(job->m) != NL_MODEL_POWER)
+            cli_die(2, "synth midpoint: expected --H or a power:d=D model, got \"%s\"", nl_model_spec(job->m));
+        double d = NAN;
+        sscanf(strstr(nl_model_spec(job->m), "d=") + 2, "%lf", &d);
+        H = (d - job->dim) / 2;
+        if (!(H > 0 && H < 1))
+            cli_die(2, "synth midpoint: power:d=%g gives H = %g in %dD; expected %d < d < %d", d, H, job->dim,
+                    job->dim, job->dim + 2);
+    }
+    if (!L)
+        L = default_levels(job, 2);
+    if ((st = subdiv_coeffs_midpoint(job->dim, L, ldexp(job->h[0], L), H, 1.0, job->vscale, &c)))
+        cli_die_status(st);
+    if ((st = subdiv_synth_periodic(c, NULL, job->seed, 0, f)))
+        cli_die_status(st);
+    snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g", H, L, job->vscale);
+    r->sd = sqrt(c->r0);
+    r->report = json_pack("{s:f,s:i,s:f}", "H", H, "levels", L, "variance_scale", job->vscale);
+    subdiv_coeffs_free(c);
+}

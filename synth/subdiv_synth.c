@@ -1,0 +1,247 @@
+/* Generalized stochastic subdivision: refinement of a grid level by level,
+ * periodic (Lewis 1987, "Boundary Conditions": wrapped indices) or as a
+ * window of an infinite, spatially consistent field. */
+#include "subdiv.h"
+#include "fft.h"
+#include "../core/nl_error.h"
+#include "../core/rng.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Samples of one level at integer indices x0..x0+nx-1, y0..y0+ny-1. */
+typedef struct {
+    double *v;     /* row-major, x fastest */
+    long x0, y0;   /* index of v[0] */
+    long nx, ny;   /* extent (ny = 1 in 1D) */
+} grid;
+
+static long fdiv2(long a) { return a >= 0 ? a / 2 : -((-a + 1) / 2); }
+
+static uint64_t rng_index(int dim, long i, long j)
+{
+    if (dim == 1)
+        return (uint64_t)i;
+    return ((uint64_t)(uint32_t)j << 32) | (uint32_t)i;
+}
+
+static int grid_alloc(grid *g, long x0, long y0, long nx, long ny)
+{
+    size_t n[2] = {(size_t)nx, (size_t)ny};
+    int st = nl_size_check(2, n, sizeof(double), 1, NULL);
+    if (st)
+        return st;
+    g->x0 = x0, g->y0 = y0, g->nx = nx, g->ny = ny;
+    g->v = malloc((size_t)nx * (size_t)ny * sizeof *g->v);
+    return g->v ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory for a %ld x %ld level", nx, ny);
+}
+
+static inline double at(const grid *g, long i, long j) { return g->v[(j - g->y0) * g->nx + (i - g->x0)]; }
+
+/* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
+ * the finer grid is old point I/2 when I is even, else the midpoint of old
+ * points (I-1)/2 and (I+1)/2.  Eq. (3) in 1D, eq. (9) in 2D. */
+static void refine(int dim, const subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv)
+{
+    const int N = l->N, w = 2 * N;
+#pragma omp parallel for schedule(static)
+    for (long J = dst->y0; J < dst->y0 + dst->ny; J++) {
+        double *row = dst->v + (J - dst->y0) * dst->nx;
+        for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
+            long i = fdiv2(I), j = fdiv2(J);
+            int ox = (int)(I - 2 * i), oy = dim == 2 ? (int)(J - 2 * j) : 0;
+            const subdiv_class *cl;
+            double s = 0;
+            if (!ox && !oy) {
+                row[I - dst->x0] = at(src, i, dim == 2 ? j : src->y0);
+                continue;
+            }
+            if (dim == 1) {
+                cl = &l->cls[0];
+                for (int k = 0; k < w; k++)
+                    s += cl->a[k] * at(src, i + 1 - N + k, src->y0);
+            } else {
+                int c = ox && oy ? 0 : ox ? 1 : 2;  /* face, edge-x, edge-y */
+                cl = &l->cls[c];
+                for (int r = 0; r < w; r++)
+                    for (int q = 0; q < w; q++)
+                        s += cl->a[r * w + q] * at(src, i + 1 - N + q, j + 1 - N + r);
+            }
+            s += sqrt(cl->variance) * nl_rng_gauss(seed, SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
+            row[I - dst->x0] = s;
+        }
+    }
+}
+
+static int check_levels(const subdiv_coeffs *c, int allow_not_pd)
+{
+    if (!allow_not_pd && (c->flags & SUBDIV_NOT_PD)) {
+        for (int k = 0; k < c->levels; k++)
+            for (int j = 0; j < c->level[k].nclass; j++)
+                if (c->level[k].cls[j].flags & SUBDIV_NOT_PD)
+                    return NL_ERROR(NL_ENOTPD,
+                                    "subdivision: the model is not positive definite at level %d (%s, spacing %g, "
+                                    "min eigenvalue %.3g); use --clamp to synthesise it anyway",
+                                    k, subdiv_class_name(c->level[k].cls[j].cls), c->level[k].spacing,
+                                    c->level[k].cls[j].min_eigenvalue);
+    }
+    return NL_OK;
+}
+
+/* Copy a periodic level (indices 0..n-1) into a grid padded by `pad` wrapped
+ * samples on each side. */
+static int pad_periodic(int dim, const double *v, long nx, long ny, long pad, grid *g)
+{
+    long py = dim == 2 ? pad : 0;
+    int st = grid_alloc(g, -pad, -py, nx + 2 * pad, ny + 2 * py);
+    if (st)
+        return st;
+    for (long j = -py; j < ny + py; j++)
+        for (long i = -pad; i < nx + pad; i++)
+            g->v[(j + py) * g->nx + (i + pad)] = v[(((j % ny) + ny) % ny) * nx + ((i % nx) + nx) % nx];
+    return NL_OK;
+}
+
+int subdiv_refine_periodic(const subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
+                           nl_field *f)
+{
+    const int dim = c->dim;
+    long nx = (long)f->n[0], ny = dim == 2 ? (long)f->n[1] : 1;
+    long cx = (long)coarse->n[0], cy = dim == 2 ? (long)coarse->n[1] : 1;
+    double *cur;
+    int st;
+
+    if (f->dim != dim || coarse->dim != dim)
+        return NL_ERROR(NL_EINVAL, "subdivision: a %dD plan cannot fill a %dD field", dim, f->dim);
+    if ((cx << c->levels) != nx || (cy << (dim == 2 ? c->levels : 0)) != ny)
+        return NL_ERROR(NL_EINVAL, "size: expected %ld%s%.0ld samples (the %ld%s%.0ld coarse grid refined %d times), "
+                        "got %ld%s%.0ld", cx << c->levels, dim == 2 ? "x" : "", dim == 2 ? cy << c->levels : 0L,
+                        cx, dim == 2 ? "x" : "", dim == 2 ? cy : 0L, c->levels, nx, dim == 2 ? "x" : "",
+                        dim == 2 ? ny : 0L);
+    for (int k = 0; k < c->levels; k++) {
+        long nk = dim == 2 && cy < cx ? cy << k : cx << k;
+        if (nk < 2L * c->level[k].N)
+            return NL_ERROR(NL_EINVAL, "size: level %d has %ld samples per axis, fewer than its neighbourhood "
+                            "of %d; use fewer --levels or a larger --size", k, nk, 2 * c->level[k].N);
+    }
+    if ((st = check_levels(c, allow_not_pd)))
+        return st;
+    cur = malloc(coarse->count * sizeof *cur);
+    if (!cur)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    memcpy(cur, coarse->data, coarse->count * sizeof *cur);
+    for (int k = 0; k < c->levels && !st; k++) {
+        grid src, dst;
+        if ((st = pad_periodic(dim, cur, cx, cy, c->level[k].N, &src)))
+            break;
+        st = grid_alloc(&dst, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1);
+        if (!st) {
+            refine(dim, &c->level[k], &src, &dst, seed, (unsigned)k);
+            free(cur);
+            cur = dst.v;
+            cx *= 2;
+            if (dim == 2)
+                cy *= 2;
+        }
+        free(src.v);
+    }
+    if (!st) {
+        memcpy(f->data, cur, f->count * sizeof *cur);
+        for (int a = 0; a < dim; a++)
+            f->h[a] = ldexp(c->spacing0, -c->levels);
+    }
+    free(cur);
+    return st;
+}
+
+int subdiv_synth_periodic(const subdiv_coeffs *c, const nl_model *m, uint64_t seed, int allow_not_pd,
+                          nl_field *f)
+{
+    const int dim = c->dim;
+    size_t cn[2] = {f->n[0] >> c->levels, dim == 2 ? f->n[1] >> c->levels : 1};
+    double h[2] = {c->spacing0, c->spacing0};
+    nl_field *coarse;
+    int st;
+
+    if (f->dim != dim)
+        return NL_ERROR(NL_EINVAL, "subdivision: a %dD plan cannot fill a %dD field", dim, f->dim);
+    if ((cn[0] << c->levels) != f->n[0] || (dim == 2 && (cn[1] << c->levels) != f->n[1]) || cn[0] < 2 ||
+        (dim == 2 && cn[1] < 2))
+        return NL_ERROR(NL_EINVAL, "size: expected each size a multiple of 2^%d = %ld with at least 2 coarse "
+                        "samples, got %zu%s%.0zu", c->levels, 1L << c->levels, f->n[0], dim == 2 ? "x" : "",
+                        dim == 2 ? f->n[1] : (size_t)0);
+    if ((st = check_levels(c, allow_not_pd)))
+        return st;
+    coarse = nl_field_alloc(dim, cn, h, &st);
+    if (!coarse)
+        return st;
+    if (m) {
+        /* level 0: exact periodic synthesis at spacing s0 */
+        synth_fft_plan *p;
+        st = synth_fft_plan_alloc(m, dim, cn, h, allow_not_pd ? SYNTH_FFT_CLAMP : 0, &p);
+        if (!st)
+            st = synth_fft_execute(p, seed, coarse);
+        synth_fft_plan_free(p);
+    } else {
+        for (size_t j = 0; j < cn[1]; j++)
+            for (size_t i = 0; i < cn[0]; i++)
+                coarse->data[j * cn[0] + i] =
+                    sqrt(c->r0) * nl_rng_gauss(seed, SUBDIV_STREAM, rng_index(dim, (long)i, (long)j));
+    }
+    if (!st)
+        st = subdiv_refine_periodic(c, coarse, seed, allow_not_pd, f);
+    nl_field_free(coarse);
+    return st;
+}
+
+int subdiv_synth_window(const subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f)
+{
+    const int dim = c->dim, L = c->levels;
+    long (*rx)[2], (*ry)[2];
+    grid g;
+    int st;
+
+    if (f->dim != dim)
+        return NL_ERROR(NL_EINVAL, "subdivision: a %dD plan cannot fill a %dD field", dim, f->dim);
+    if ((st = check_levels(c, 0)))
+        return st;
+    rx = malloc((size_t)(L + 1) * sizeof *rx);
+    ry = malloc((size_t)(L + 1) * sizeof *ry);
+    if (!rx || !ry) {
+        free(rx), free(ry);
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    /* index ranges needed at each level, finest first */
+    rx[L][0] = origin[0], rx[L][1] = origin[0] + (long)f->n[0] - 1;
+    ry[L][0] = dim == 2 ? origin[1] : 0, ry[L][1] = dim == 2 ? origin[1] + (long)f->n[1] - 1 : 0;
+    for (int k = L - 1; k >= 0; k--) {
+        int N = c->level[k].N;
+        rx[k][0] = fdiv2(rx[k + 1][0]) + 1 - N, rx[k][1] = fdiv2(rx[k + 1][1]) + N;
+        ry[k][0] = dim == 2 ? fdiv2(ry[k + 1][0]) + 1 - N : 0, ry[k][1] = dim == 2 ? fdiv2(ry[k + 1][1]) + N : 0;
+    }
+    /* level 0: independent samples of variance R(0) */
+    st = grid_alloc(&g, rx[0][0], ry[0][0], rx[0][1] - rx[0][0] + 1, ry[0][1] - ry[0][0] + 1);
+    for (long j = 0; !st && j < g.ny; j++)
+        for (long i = 0; i < g.nx; i++)
+            g.v[j * g.nx + i] = sqrt(c->r0) * nl_rng_gauss(seed, SUBDIV_STREAM, rng_index(dim, g.x0 + i, g.y0 + j));
+    for (int k = 0; k < L && !st; k++) {
+        grid dst;
+        st = grid_alloc(&dst, rx[k + 1][0], ry[k + 1][0], rx[k + 1][1] - rx[k + 1][0] + 1,
+                        ry[k + 1][1] - ry[k + 1][0] + 1);
+        if (!st) {
+            refine(dim, &c->level[k], &g, &dst, seed, (unsigned)k);
+            free(g.v);
+            g = dst;
+        }
+    }
+    if (!st) {
+        memcpy(f->data, g.v, f->count * sizeof *g.v);
+        for (int a = 0; a < dim; a++)
+            f->h[a] = ldexp(c->spacing0, -L);
+    }
+    free(g.v);
+    free(rx);
+    free(ry);
+    return st;
+}
