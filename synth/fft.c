@@ -148,11 +148,11 @@ int synth_fft_execute(const synth_fft_plan *p, uint64_t seed, nl_field *out)
     c = fftw_alloc_complex(p->half);
     if (!c)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu complex samples", p->half);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (p->count > 65536)
     for (size_t j = 0; j < p->count; j++)
         out->data[j] = nl_rng_gauss(seed, NL_STREAM_WHITE, j);
     fftw_execute_dft_r2c(p->fwd, out->data, c);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (p->count > 65536)
     for (size_t k = 0; k < p->half; k++)
         c[k] *= p->amp[k];
     fftw_execute_dft_c2r(p->inv, c, out->data);

@@ -45,7 +45,7 @@ static inline double at(const grid *g, long i, long j) { return g->v[(j - g->y0)
 static void refine(int dim, const subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv)
 {
     const int N = l->N, w = 2 * N;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (dst->nx * dst->ny > 65536)
     for (long J = dst->y0; J < dst->y0 + dst->ny; J++) {
         double *row = dst->v + (J - dst->y0) * dst->nx;
         for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {

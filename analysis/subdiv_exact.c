@@ -1,0 +1,127 @@
+/* Exact covariance propagation through periodic subdivision levels. */
+#include "subdiv_exact.h"
+#include "../core/nl_error.h"
+#include "../core/wk.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* New point I of a level: the old points and weights it is made of, and the
+ * variance of its own displacement. */
+typedef struct {
+    int n;          /* stencil size (1 for a kept point) */
+    long idx[256];  /* old flat indices */
+    double w[256];  /* weights */
+    double var;     /* displacement variance */
+} stencil;
+
+static long wrap(long i, long n) { return ((i % n) + n) % n; }
+
+static void make_stencil(const subdiv_level *l, int dim, long cx, long cy, long I, long J, stencil *s)
+{
+    long i = I / 2, j = J / 2;
+    int ox = (int)(I % 2), oy = (int)(J % 2), N = l->N, w = 2 * N;
+    const subdiv_class *cl;
+    s->n = 0;
+    if (!ox && !oy) {
+        s->n = 1, s->idx[0] = j * cx + i, s->w[0] = 1, s->var = 0;
+        return;
+    }
+    if (dim == 1) {
+        cl = &l->cls[0];
+        for (int k = 0; k < w; k++)
+            s->idx[s->n] = wrap(i + 1 - N + k, cx), s->w[s->n++] = cl->a[k];
+    } else {
+        cl = &l->cls[ox && oy ? 0 : ox ? 1 : 2];
+        for (int r = 0; r < w; r++)
+            for (int q = 0; q < w; q++)
+                s->idx[s->n] = wrap(j + 1 - N + r, cy) * cx + wrap(i + 1 - N + q, cx), s->w[s->n++] = cl->a[r * w + q];
+    }
+    s->var = cl->variance;
+}
+
+int an_subdiv_exact_acf(const subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,
+                        const long *lags, double *out)
+{
+    const int dim = c->dim;
+    long cx = (long)(nx >> c->levels), cy = dim == 2 ? (long)(ny >> c->levels) : 1;
+    size_t cn[2] = {(size_t)cx, (size_t)cy}, big = nx * ny;
+    double h[2] = {c->spacing0, c->spacing0}, *C;
+    stencil *st;
+    nl_field *R;
+    int s;
+
+    if ((dim == 2 ? 2 * c->level[c->levels - 1].N : 0) > 8 || (dim == 1 && c->level[c->levels - 1].N > 128))
+        return NL_ERROR(NL_EINVAL, "exact covariance: neighbourhood too large");
+    for (int k = 0; k < c->levels; k++)
+        if (c->level[k].N > 8 && dim == 2)
+            return NL_ERROR(NL_EINVAL, "exact covariance: 2D neighbourhoods up to 16x16");
+    if (big > 4096)
+        return NL_ERROR(NL_ETOOBIG, "exact covariance: expected at most 4096 samples, got %zu", big);
+    if ((size_t)cx << c->levels != nx || (dim == 2 && (size_t)cy << c->levels != ny) || cx < 2)
+        return NL_ERROR(NL_EINVAL, "exact covariance: the size must be the coarse size times 2^levels");
+    /* coarse covariance: the model wrapped on the coarse grid (core/wk.h) */
+    R = nl_field_alloc(dim, cn, h, &s);
+    if (!R)
+        return s;
+    if ((s = nl_wk_sample_acf(m, R))) {
+        nl_field_free(R);
+        return s;
+    }
+    C = malloc((size_t)(cx * cy) * (size_t)(cx * cy) * sizeof *C);
+    st = malloc(sizeof *st);
+    if (!C || !st) {
+        free(C), free(st), nl_field_free(R);
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    for (long p = 0; p < cx * cy; p++)
+        for (long q = 0; q < cx * cy; q++) {
+            long dx = wrap(q % cx - p % cx, cx), dy = wrap(q / cx - p / cx, cy);
+            C[p * cx * cy + q] = R->data[dy * cx + dx];
+        }
+    nl_field_free(R);
+    for (int k = 0; k < c->levels; k++) {
+        long nx2 = 2 * cx, ny2 = dim == 2 ? 2 * cy : 1, n1 = cx * cy, n2 = nx2 * ny2;
+        double *T = calloc((size_t)(n2 * n1), sizeof *T), *C2 = malloc((size_t)(n2 * n2) * sizeof *C2);
+        if (!T || !C2) {
+            free(T), free(C2), free(C), free(st);
+            return NL_ERROR(NL_ENOMEM, "out of memory");
+        }
+        for (long P = 0; P < n2; P++) {  /* T = M C */
+            make_stencil(&c->level[k], dim, cx, cy, P % nx2, P / nx2, st);
+            for (int q = 0; q < st->n; q++)
+                for (long j = 0; j < n1; j++)
+                    T[P * n1 + j] += st->w[q] * C[st->idx[q] * n1 + j];
+        }
+        for (long Q = 0; Q < n2; Q++) {  /* C' = T M^T + D */
+            make_stencil(&c->level[k], dim, cx, cy, Q % nx2, Q / nx2, st);
+            for (long P = 0; P < n2; P++) {
+                double v = 0;
+                for (int q = 0; q < st->n; q++)
+                    v += st->w[q] * T[P * n1 + st->idx[q]];
+                C2[P * n2 + Q] = v + (P == Q ? st->var : 0);
+            }
+        }
+        free(T);
+        free(C);
+        C = C2;
+        cx = nx2, cy = ny2;
+    }
+    for (size_t i = 0; i < nlags; i++) {
+        long lx = lags[2 * i], ly = dim == 2 ? lags[2 * i + 1] : 0;
+        double sum = 0;
+        long cnt = 0;
+        for (long y = 0; y < cy; y++)
+            for (long x = 0; x < cx; x++) {
+                long x2 = x + lx, y2 = y + ly;
+                if (x2 < 0 || x2 >= cx || y2 < 0 || y2 >= cy)
+                    continue;
+                sum += C[(y * cx + x) * cx * cy + y2 * cx + x2];
+                cnt++;
+            }
+        out[i] = cnt ? sum / (double)cnt : 0;
+    }
+    free(C);
+    free(st);
+    return NL_OK;
+}
