@@ -54,7 +54,22 @@ Test(cli, synth_error_paths)
     bad("synth fft --acf markov -o out.exr", "--size");
     bad("synth fft --acf markov --size 64", "-o");
     bad("synth wavelets --acf markov --size 64 -o out.exr", "\"wavelets\"");
-    bad("synth subdiv --acf markov --size 64 -o out.exr", "\"subdiv\"");
+    bad("synth circulant --acf markov --size 64 -o out.exr", "\"circulant\"");
+    bad("synth subdiv --acf markov --size 100 --levels 3 -o out.exr", "100");
+    bad("synth subdiv --acf markov --size 64x64x64 -o out.exr", "3D");
+    bad("synth subdiv --acf markov --size 64 --origin 5 -o out.exr", "--nonperiodic");
+    bad("synth subdiv --acf markov --size 64 --nonperiodic --origin 5,x -o out.exr", "\"5,x\"");
+    bad("synth subdiv --acf markov --size 64 --neighborhood 0 -o out.exr", "\"0\"");
+    bad("synth subdiv --acf 'expr:cos(10*r)*exp(-r)' --size 128x128 --spacing 0.25 -o out.exr", "not positive definite");
+    bad("synth subdiv --spectrum 'spectrum:1/(1+k^2)' --size 64 -o out.exr", "subdivision needs R");
+    bad("synth fft --acf markov --size 64 --levels 3 -o out.exr", "--levels");
+    bad("synth midpoint --acf markov --size 64 -o out.exr", "power:d=D");
+    bad("synth midpoint --H 1.5 --size 64 -o out.exr", "\"1.5\"");
+    bad("synth midpoint --spectrum power:d=3.5 --size 64 -o out.exr", "d=3.5");
+    bad("coeffs --acf markov --dim 3", "\"3\"");
+    bad("coeffs --acf markov", "--dim");
+    bad("coeffs --acf markov --dim 1 --spacing0 -1", "\"-1\"");
+    bad("coeffs --acf markov --dim 2 --neighborhood 9", "9");
     bad("synth fft --acf power:d=2 --size 64 -o out.exr", "power:d=2");
     bad("synth fft --spectrum markov --size 64 -o out.exr", "\"markov\"");
     bad("synth fft --acf oscillatory:omega=2,scale=10 --size 64x64 -o out.exr", "not positive definite");
@@ -119,6 +134,37 @@ Test(cli, synth_writes_exr_with_provenance)
     cr_assert(file_exists(path));
 }
 
+/* Subdivision reports its flags in the EXR and in --json. */
+Test(cli, subdiv_flags_reach_the_output)
+{
+    char path[512];
+    nl_field *f;
+    nl_meta meta;
+    json_error_t je;
+    json_t *j;
+    int rc = run_noiselab("synth subdiv --acf gauss:scale=2 --size 4096 --levels 6 --spacing 0.005 --json -o g.exr", out, sizeof out,
+                          err, sizeof err);
+    cr_assert_eq(rc, 0, "%s", err);
+    snprintf(path, sizeof path, "%s/g.exr", scratch_dir());
+    cr_assert_eq(nl_exr_read(path, &f, &meta), 0);
+    cr_assert(strstr(meta.flags, "singular") != NULL, "noiselab.flags = \"%s\"", meta.flags);
+    cr_assert(strncmp(meta.method, "subdiv:levels=6", 15) == 0, "%s", meta.method);
+    nl_field_free(f);
+    j = json_loads(out, 0, &je);
+    cr_assert_not_null(j, "%s", je.text);
+    cr_assert_str_eq(json_string_value(json_array_get(json_object_get(j, "flags"), 0)), "singular");
+    cr_assert_eq(json_array_size(json_object_get(j, "levels")), 6);
+    json_decref(j);
+    rc = run_noiselab("coeffs --acf markov --dim 1 --levels 3 --json", out, sizeof out, err, sizeof err);
+    cr_assert_eq(rc, 0, "%s", err);
+    j = json_loads(out, 0, &je);
+    cr_assert_not_null(j, "%s", je.text);
+    json_t *cls = json_array_get(json_object_get(json_array_get(json_object_get(j, "levels"), 2), "classes"), 0);
+    cr_assert_str_eq(json_string_value(json_object_get(cls, "class")), "mid");
+    cr_assert_eq(json_array_size(json_object_get(cls, "coefficients")), 4);
+    json_decref(j);
+}
+
 Test(cli, json_outputs)
 {
     json_error_t je;
@@ -154,12 +200,12 @@ Test(cli, json_outputs)
 
 Test(cli, help_and_version)
 {
-    const char *cmds[] = {"synth", "acf", "psd", "hist", "models"};
+    const char *cmds[] = {"synth", "acf", "psd", "hist", "models", "coeffs"};
     char args[64];
     cr_assert_eq(run_noiselab("--version", out, sizeof out, 0, 0), 0);
     cr_assert(strncmp(out, "noiselab ", 9) == 0);
     cr_assert_eq(run_noiselab("--help", out, sizeof out, 0, 0), 0);
-    for (int i = 0; i < 5; i++) {
+    for (int i = 0; i < 6; i++) {
         cr_assert(strstr(out, cmds[i]) != NULL, "--help lists %s", cmds[i]);
         snprintf(args, sizeof args, "%s --help", cmds[i]);
         cr_assert_eq(run_noiselab(args, out, sizeof out, 0, 0), 0, "%s", args);
