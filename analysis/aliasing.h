@@ -1,0 +1,29 @@
+/* Aliasing across subdivision levels (Lewis 1987, "Aliasing").
+ *
+ * Subdivision keeps old samples, so the field at level L-1 is the field at
+ * level L decimated without a low-pass filter.  The half-resolution field a
+ * viewer should see is the low-passed one: frequencies above half the
+ * Nyquist rate (|f_a| > 1 / (4 h_a) on any axis) removed, then every other
+ * sample kept.  Their difference is the high band folded down; its energy
+ * relative to the variance of the field is
+ *     measured  A = sum (x[2i] - lowpass(x)[2i])^2 / sum (x[2i] - mean)^2,
+ *     predicted A = (spectrum mass above half Nyquist) / (total mass),
+ * the prediction from the target's spectrum on the field's grid.
+ * Flag: A > AN_ALIAS_MAX, a tenth of the variance changing between levels
+ * (Lewis's Fig. 2, levels 3 to 4 of an oscillatory noise, is far above;
+ * monotone spectra at fine levels are far below). */
+#ifndef AN_ALIASING_H
+#define AN_ALIASING_H
+
+#include "../core/field.h"
+#include "../core/model.h"
+
+#define AN_ALIAS_MAX 0.1
+
+/* Measured A of a 1D or 2D field with even sizes (periodic). */
+int an_aliasing_measure(const nl_field *f, double *A);
+
+/* Predicted A for model m on the grid of f (its n and h). */
+int an_aliasing_predict(const nl_model *m, const nl_field *f, double *A);
+
+#endif
