@@ -56,6 +56,10 @@ int an_subdiv_exact_acf(const subdiv_coeffs *c, const nl_model *m, size_t nx, si
     for (int k = 0; k < c->levels; k++)
         if (c->level[k].N > 8 && dim == 2)
             return NL_ERROR(NL_EINVAL, "exact covariance: 2D neighbourhoods up to 16x16");
+    for (int k = 0; k < c->levels; k++)
+        for (int j = 0; j < c->level[k].nclass; j++)
+            if (c->level[k].cls[j].nalt)
+                return NL_ERROR(NL_EINVAL, "exact covariance: random neighbourhoods are not supported");
     if (big > 4096)
         return NL_ERROR(NL_ETOOBIG, "exact covariance: expected at most 4096 samples, got %zu", big);
     if ((size_t)cx << c->levels != nx || (dim == 2 && (size_t)cy << c->levels != ny) || cx < 2)

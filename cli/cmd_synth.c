@@ -26,6 +26,8 @@ static const char help[] =
     "            --nonperiodic       a window of an infinite, spatially consistent field\n"
     "            --origin X[,Y]      the window's first sample, in output samples (default 0)\n"
     "            --seed-image FILE   start from this image as the coarse level (kept exactly)\n"
+    "            --random-neighborhoods K  2D: K random quadrilateral neighbourhoods per\n"
+    "                                point class, one drawn per point (against diagonal bias)\n"
     "  midpoint  midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
     "            only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
     "            (1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
@@ -107,6 +109,7 @@ int cmd_synth(int argc, char **argv)
         {"tol", required_argument, 0, 't'},        {"nonperiodic", no_argument, 0, 'P'},
         {"origin", required_argument, 0, 'O'},     {"seed-image", required_argument, 0, 'I'},
         {"H", required_argument, 0, 'u'},          {"variance-scale", required_argument, 0, 'v'},
+        {"random-neighborhoods", required_argument, 0, 'R'},
         {0}};
     const char *acf = NULL, *spec = NULL, *size = NULL, *spacing = NULL, *out = NULL, *preview = NULL;
     const char *tmp, *ptmp = NULL, *origin = NULL;
@@ -157,6 +160,11 @@ int cmd_synth(int argc, char **argv)
         case 'P': job.nonperiodic = 1; break;
         case 'O': origin = optarg; break;
         case 'I': job.seed_image = optarg; break;
+        case 'R':
+            job.random_nb = (int)cli_parse_count("--random-neighborhoods", optarg, 1);
+            if (job.random_nb > 256)
+                cli_die(2, "--random-neighborhoods: expected 1 to 256, got \"%s\"", optarg);
+            break;
         case 'u':
             job.H = cli_parse_double("--H", optarg);
             if (!(job.H > 0 && job.H < 1))
@@ -191,6 +199,7 @@ int cmd_synth(int argc, char **argv)
     only_for("--nonperiodic", job.nonperiodic, job.method, "subdiv");
     only_for("--origin", origin != NULL, job.method, "subdiv");
     only_for("--seed-image", job.seed_image != NULL, job.method, "subdiv");
+    only_for("--random-neighborhoods", job.random_nb != 0, job.method, "subdiv");
     only_for("--H", !isnan(job.H), job.method, "midpoint");
     only_for("--variance-scale", given_vs, job.method, "midpoint");
     if (origin && !job.nonperiodic)

@@ -20,6 +20,7 @@ typedef struct {
     int nonperiodic;       /* --nonperiodic */
     long origin[2];        /* --origin, finest-grid indices */
     const char *seed_image;/* --seed-image */
+    int random_nb;         /* --random-neighborhoods K, 0 = the standard block */
     double H;              /* midpoint: Hurst exponent, NAN if unset */
     double vscale;         /* midpoint: --variance-scale factor per level */
 } synth_job;

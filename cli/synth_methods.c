@@ -116,6 +116,12 @@ void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r)
     s0 = ldexp(job->h[0], L);
     if ((st = subdiv_coeffs_alloc(job->m, job->dim, L, s0, N, job->tol, job->dim == 1 ? 16 : 6, &c)))
         cli_die_status(st);
+    if (job->random_nb) {
+        if (job->dim != 2)
+            cli_die(2, "--random-neighborhoods: expected a 2D --size");
+        if ((st = subdiv_coeffs_randomize(c, job->m, job->random_nb, 1)))
+            cli_die_status(st);
+    }
     if (job->nonperiodic) {
         double lag[2] = {s0, 0};
         coarse_corr = nl_model_acf(job->m, job->dim, lag) / nl_model_acf(job->m, job->dim, zero);
@@ -145,6 +151,9 @@ void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r)
         snprintf(nb, sizeof nb, "%d", N);
     snprintf(r->method, sizeof r->method, "subdiv:levels=%d,neighborhood=%s,tol=%g%s%s", L, nb, job->tol,
              job->nonperiodic ? ",nonperiodic" : ",periodic", img ? ",seed-image" : "");
+    if (job->random_nb)
+        snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), ",random-neighborhoods=%d",
+                 job->random_nb);
     if (job->nonperiodic)
         snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), ",origin=%ld,%ld",
                  job->origin[0], job->origin[1]);

@@ -39,6 +39,7 @@ int subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, doubl
         l->level = k;
         l->spacing = s;
         l->N = 1;
+        l->reach = 1;
         l->nclass = dim == 1 ? 1 : 3;
         for (int j = 0; j < l->nclass; j++) {
             subdiv_class *cl = &l->cls[j];

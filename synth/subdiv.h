@@ -71,12 +71,21 @@ typedef struct {
     double condition;     /* 2-norm condition number of the matrix */
     double min_eigenvalue;/* smallest eigenvalue of the matrix */
     unsigned flags;       /* SUBDIV_* */
+    /* random quadrilateral neighbourhoods (2D, optional): nalt alternative
+     * observation sets, each of n points at offsets (offx, offy) from the
+     * anchor (i, j) of the new point, with their own coefficients and
+     * variance; empty for the standard 2N x 2N block */
+    int nalt;             /* 0, or the number of alternatives */
+    int *offx, *offy;     /* nalt * n offsets, alternative-major */
+    double *alt_a;        /* nalt * n coefficients */
+    double *alt_var;      /* nalt variances (clamped at 0) */
 } subdiv_class;
 
 typedef struct {
     int level;            /* 0 = coarsest */
     double spacing;       /* observation spacing s_k */
     int N;                /* neighbourhood half-width: 2N points per axis */
+    int reach;            /* largest |offset| of an observation from the anchor */
     int nclass;           /* 1 in 1D; 3 in 2D (face, edge-x, edge-y) */
     subdiv_class cls[3];
 } subdiv_level;
@@ -98,6 +107,16 @@ int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0,
                         subdiv_coeffs **out);
 
 void subdiv_coeffs_free(subdiv_coeffs *c);
+
+/* Replace every 2D class's block by `k` random neighbourhoods of the same
+ * size (Lewis 1987's remedy for diagonal bias): each grows from the nearest
+ * observation points (the face corners, the edge ends) by adding, (2N)^2 - m
+ * times, a point chosen uniformly among the grid points 4-adjacent to the
+ * set (an unbiased random walk of the frontier); eq. (12) is solved for
+ * each.  The walk draws from nl_rng_uniform(plan_seed, level * 4 + class,
+ * step).  During synthesis each new point uses alternative
+ * nl_rng_uniform(seed, SUBDIV_STREAM + 64 + level, position) * k. */
+int subdiv_coeffs_randomize(subdiv_coeffs *c, const nl_model *m, int k, uint64_t plan_seed);
 
 /* Eq. (12) for any observation set: n points pts[i*dim..] and the target,
  * in lag units.  Fills cls (a must hold n doubles); `reset` gives the

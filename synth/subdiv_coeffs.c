@@ -2,6 +2,7 @@
  * Lewis 1987, eqs. (4), (6), (7), (10), (12). */
 #include "subdiv.h"
 #include "../core/nl_error.h"
+#include "../core/rng.h"
 
 #include <float.h>
 #include <gsl/gsl_eigen.h>
@@ -191,8 +192,13 @@ static int solve_class(const nl_model *m, int dim, int cls, int N, double s, sub
 
 static void free_level(subdiv_level *l)
 {
-    for (int c = 0; c < l->nclass; c++)
-        free(l->cls[c].a), l->cls[c].a = NULL;
+    for (int c = 0; c < l->nclass; c++) {
+        subdiv_class *cl = &l->cls[c];
+        free(cl->a), free(cl->offx), free(cl->offy), free(cl->alt_a), free(cl->alt_var);
+        cl->a = cl->alt_a = cl->alt_var = NULL;
+        cl->offx = cl->offy = NULL;
+        cl->nalt = 0;
+    }
 }
 
 static int solve_level(const nl_model *m, int dim, int N, double s, subdiv_level *l)
@@ -200,6 +206,7 @@ static int solve_level(const nl_model *m, int dim, int N, double s, subdiv_level
     static const int classes2[] = {SUBDIV_FACE, SUBDIV_EDGE_X, SUBDIV_EDGE_Y};
     int st = NL_OK;
     l->N = N;
+    l->reach = N;
     l->spacing = s;
     l->nclass = dim == 1 ? 1 : 3;
     memset(l->cls, 0, sizeof l->cls);
@@ -251,8 +258,9 @@ int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0,
     c->spacing0 = spacing0;
     c->r0 = nl_model_acf(m, dim, zero);
     if (!(c->r0 > 0)) {
+        double r0 = c->r0;
         subdiv_coeffs_free(c);
-        return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a positive variance", nl_model_spec(m), c->r0);
+        return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a positive variance", nl_model_spec(m), r0);
     }
     for (int k = 0; k < levels && !st; k++) {
         double s = ldexp(spacing0, -k);
@@ -286,5 +294,94 @@ int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0,
         return st;
     }
     *out = c;
+    return NL_OK;
+}
+
+/* One random neighbourhood of n points for class cls, grown from its
+ * nearest points; writes offsets (x, y). */
+static void random_set(int cls, size_t n, uint64_t seed, uint32_t stream, int *ox, int *oy)
+{
+    enum { MAXF = 4096 };
+    static const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+    int fx[MAXF], fy[MAXF];
+    size_t m = 0, nf = 0;
+    uint64_t step = 0;
+    /* nearest: face corners (0,0),(1,0),(0,1),(1,1); edge-x (0,0),(1,0); edge-y (0,0),(0,1) */
+    ox[m] = 0, oy[m++] = 0;
+    if (cls != SUBDIV_EDGE_Y)
+        ox[m] = 1, oy[m++] = 0;
+    if (cls != SUBDIV_EDGE_X)
+        ox[m] = 0, oy[m++] = 1;
+    if (cls == SUBDIV_FACE)
+        ox[m] = 1, oy[m++] = 1;
+    while (m < n) {
+        /* the frontier: points 4-adjacent to the set, not in it, each once */
+        nf = 0;
+        for (size_t p = 0; p < m; p++)
+            for (int d = 0; d < 4; d++) {
+                int x = ox[p] + dx[d], y = oy[p] + dy[d], dup = 0;
+                for (size_t q = 0; q < m && !dup; q++)
+                    dup = ox[q] == x && oy[q] == y;
+                for (size_t q = 0; q < nf && !dup; q++)
+                    dup = fx[q] == x && fy[q] == y;
+                if (!dup && nf < MAXF)
+                    fx[nf] = x, fy[nf++] = y;
+            }
+        size_t pick = (size_t)(nl_rng_uniform(seed, stream, step++) * (double)nf);
+        ox[m] = fx[pick < nf ? pick : nf - 1], oy[m] = fy[pick < nf ? pick : nf - 1];
+        m++;
+    }
+}
+
+int subdiv_coeffs_randomize(subdiv_coeffs *c, const nl_model *m, int k, uint64_t plan_seed)
+{
+    if (c->dim != 2)
+        return NL_ERROR(NL_EINVAL, "random neighbourhoods: expected a 2D plan");
+    if (k < 1 || k > 256)
+        return NL_ERROR(NL_EINVAL, "random neighbourhoods: expected 1 to 256 alternatives, got %d", k);
+    for (int lv = 0; lv < c->levels; lv++) {
+        subdiv_level *l = &c->level[lv];
+        for (int j = 0; j < l->nclass; j++) {
+            subdiv_class *cl = &l->cls[j], tmp;
+            size_t n = cl->n;
+            double *pts = malloc(2 * n * sizeof *pts), target[2];
+            cl->offx = malloc((size_t)k * n * sizeof *cl->offx);
+            cl->offy = malloc((size_t)k * n * sizeof *cl->offy);
+            cl->alt_a = malloc((size_t)k * n * sizeof *cl->alt_a);
+            cl->alt_var = malloc((size_t)k * sizeof *cl->alt_var);
+            if (!pts || !cl->offx || !cl->offy || !cl->alt_a || !cl->alt_var) {
+                free(pts);
+                return NL_ERROR(NL_ENOMEM, "out of memory");
+            }
+            cl->nalt = k;
+            target[0] = (cl->cls == SUBDIV_EDGE_Y ? 0.0 : 0.5) * l->spacing;
+            target[1] = (cl->cls == SUBDIV_EDGE_X ? 0.0 : 0.5) * l->spacing;
+            for (int a = 0; a < k; a++) {
+                int *ox = cl->offx + (size_t)a * n, *oy = cl->offy + (size_t)a * n, st;
+                random_set(cl->cls, n, plan_seed, (uint32_t)(lv * 4 + cl->cls) * 256u + (uint32_t)a, ox, oy);
+                for (size_t p = 0; p < n; p++)
+                    pts[2 * p] = ox[p] * l->spacing, pts[2 * p + 1] = oy[p] * l->spacing;
+                tmp.a = cl->alt_a + (size_t)a * n;
+                if ((st = subdiv_solve(m, 2, n, pts, target, NULL, &tmp))) {
+                    free(pts);
+                    return st;
+                }
+                cl->alt_var[a] = tmp.variance;
+                for (size_t p = 0; p < n; p++) {
+                    int r = abs(ox[p]) > abs(oy[p]) ? abs(ox[p]) : abs(oy[p]);
+                    if (r > l->reach)
+                        l->reach = r;
+                }
+                cl->flags |= tmp.flags & ~SUBDIV_DIAG_BIAS;
+                c->flags |= cl->flags;
+            }
+            cl->flags &= ~SUBDIV_DIAG_BIAS;
+            free(pts);
+        }
+    }
+    c->flags &= ~SUBDIV_DIAG_BIAS;
+    for (int lv = 0; lv < c->levels; lv++)
+        for (int j = 0; j < c->level[lv].nclass; j++)
+            c->flags |= c->level[lv].cls[j].flags;
     return NL_OK;
 }

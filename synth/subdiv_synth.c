@@ -64,6 +64,18 @@ static void refine(int dim, const subdiv_level *l, const grid *src, grid *dst, u
             } else {
                 int c = ox && oy ? 0 : ox ? 1 : 2;  /* face, edge-x, edge-y */
                 cl = &l->cls[c];
+                if (cl->nalt) {
+                    /* a random quadrilateral neighbourhood */
+                    size_t n = cl->n, alt = (size_t)(nl_rng_uniform(seed, SUBDIV_STREAM + 64 + lv,
+                                                                    rng_index(dim, I, J)) * cl->nalt);
+                    const int *ofx = cl->offx + alt * n, *ofy = cl->offy + alt * n;
+                    const double *a = cl->alt_a + alt * n;
+                    for (size_t p = 0; p < n; p++)
+                        s += a[p] * at(src, i + ofx[p], j + ofy[p]);
+                    s += sqrt(cl->alt_var[alt]) * nl_rng_gauss(seed, SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
+                    row[I - dst->x0] = s;
+                    continue;
+                }
                 for (int r = 0; r < w; r++)
                     for (int q = 0; q < w; q++)
                         s += cl->a[r * w + q] * at(src, i + 1 - N + q, j + 1 - N + r);
@@ -121,9 +133,9 @@ int subdiv_refine_periodic(const subdiv_coeffs *c, const nl_field *coarse, uint6
                         dim == 2 ? ny : 0L);
     for (int k = 0; k < c->levels; k++) {
         long nk = dim == 2 && cy < cx ? cy << k : cx << k;
-        if (nk < 2L * c->level[k].N)
+        if (nk < 2L * c->level[k].reach)
             return NL_ERROR(NL_EINVAL, "size: level %d has %ld samples per axis, fewer than its neighbourhood "
-                            "of %d; use fewer --levels or a larger --size", k, nk, 2 * c->level[k].N);
+                            "of %d; use fewer --levels or a larger --size", k, nk, 2 * c->level[k].reach);
     }
     if ((st = check_levels(c, allow_not_pd)))
         return st;
@@ -133,7 +145,7 @@ int subdiv_refine_periodic(const subdiv_coeffs *c, const nl_field *coarse, uint6
     memcpy(cur, coarse->data, coarse->count * sizeof *cur);
     for (int k = 0; k < c->levels && !st; k++) {
         grid src, dst;
-        if ((st = pad_periodic(dim, cur, cx, cy, c->level[k].N, &src)))
+        if ((st = pad_periodic(dim, cur, cx, cy, c->level[k].reach, &src)))
             break;
         st = grid_alloc(&dst, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1);
         if (!st) {
@@ -216,9 +228,9 @@ int subdiv_synth_window(const subdiv_coeffs *c, uint64_t seed, const long *origi
     rx[L][0] = origin[0], rx[L][1] = origin[0] + (long)f->n[0] - 1;
     ry[L][0] = dim == 2 ? origin[1] : 0, ry[L][1] = dim == 2 ? origin[1] + (long)f->n[1] - 1 : 0;
     for (int k = L - 1; k >= 0; k--) {
-        int N = c->level[k].N;
-        rx[k][0] = fdiv2(rx[k + 1][0]) + 1 - N, rx[k][1] = fdiv2(rx[k + 1][1]) + N;
-        ry[k][0] = dim == 2 ? fdiv2(ry[k + 1][0]) + 1 - N : 0, ry[k][1] = dim == 2 ? fdiv2(ry[k + 1][1]) + N : 0;
+        int N = c->level[k].reach;
+        rx[k][0] = fdiv2(rx[k + 1][0]) - N, rx[k][1] = fdiv2(rx[k + 1][1]) + N;
+        ry[k][0] = dim == 2 ? fdiv2(ry[k + 1][0]) - N : 0, ry[k][1] = dim == 2 ? fdiv2(ry[k + 1][1]) + N : 0;
     }
     /* level 0: independent samples of variance R(0) */
     st = grid_alloc(&g, rx[0][0], ry[0][0], rx[0][1] - rx[0][0] + 1, ry[0][1] - ry[0][0] + 1);

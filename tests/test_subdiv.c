@@ -279,3 +279,30 @@ Test(subdiv, synthesis_refuses_not_positive_definite)
     cr_assert(strstr(nl_errmsg(), "not positive definite") != NULL, "%s", nl_errmsg());
     nl_field_free(f), nl_model_free(m), subdiv_coeffs_free(c);
 }
+
+/* Random quadrilateral neighbourhoods: each alternative is solved exactly
+ * (its variance never above the nearest-neighbour one, since it contains the
+ * nearest points), reaches beyond the block are honoured, and windows stay
+ * consistent. */
+Test(subdiv, random_neighbourhoods)
+{
+    nl_model *m;
+    subdiv_coeffs *c = coeffs("markov:scale=6", 2, 4, 32.0, 2), *nn = coeffs("markov:scale=6", 2, 4, 32.0, 1);
+    cr_assert_eq(nl_model_parse("markov:scale=6", &m), 0);
+    cr_assert_eq(subdiv_coeffs_randomize(c, m, 8, 1), 0, "%s", nl_errmsg());
+    for (int k = 0; k < 4; k++)
+        for (int j = 0; j < 3; j++) {
+            const subdiv_class *cl = &c->level[k].cls[j];
+            cr_assert_eq(cl->nalt, 8);
+            for (int a = 0; a < 8; a++)
+                cr_expect_leq(cl->alt_var[a], nn->level[k].cls[j].variance + 1e-12, "level %d class %d alt %d", k,
+                              j, a);
+        }
+    cr_expect_geq(c->level[0].reach, 2);
+    nl_field *a = window(c, 2, -9, 4, 40, 40), *b = window(c, 2, 1, 10, 40, 40);
+    for (long y = 10; y < 44; y++)
+        for (long x = 1; x < 31; x++)
+            cr_assert_eq(a->data[(y - 4) * 40 + (x + 9)], b->data[(y - 10) * 40 + (x - 1)], "(%ld, %ld)", x, y);
+    nl_field_free(a), nl_field_free(b);
+    nl_model_free(m), subdiv_coeffs_free(c), subdiv_coeffs_free(nn);
+}
