@@ -8,7 +8,7 @@ dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
 bin=$top/build/experiments/fft_acf
 mkdir -p "$dir/data"
-md=$dir/data/fft-acf.md
+md=$dir/data/90-fft-acf.md
 status=0
 {
     echo "## FFT synthesis against the target autocorrelation"
