@@ -11,7 +11,7 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: noiselab detect IN --levels L [--acf SPEC] [--json]\n\n"
+    "usage: noiselab detect IN --levels L [--acf SPEC | --spectrum SPEC] [--json]\n\n"
     "Looks for the artefacts of subdivision in a 1D or 2D field made with L levels:\n"
     "  creases   mean squared second difference across the vertices (1D) or grid lines\n"
     "            (2D) made at each level, relative to the finest level's (1 for a\n"
@@ -19,13 +19,13 @@ static const char help[] =
     "            the median over levels 1..L-1 with at least 64 samples; flagged above 1.5\n"
     "  aliasing  the energy by which every other sample differs from the low-passed,\n"
     "            decimated field, over the variance (zooming out one level); flagged\n"
-    "            above 0.1; with --acf, also the value the model's spectrum predicts\n"
+    "            above 0.1; with a model, also the value its spectrum predicts\n"
     "Exit status 0 whatever is found; the flags are in the output.\n";
 
 int cmd_detect(int argc, char **argv)
 {
     static const struct option opts[] = {{"levels", required_argument, 0, 'L'}, {"acf", required_argument, 0, 'a'},
-                                         {"json", no_argument, 0, 'j'},         {"help", no_argument, 0, 'h'},
+                                         {"spectrum", required_argument, 0, 'a'}, {"json", no_argument, 0, 'j'},         {"help", no_argument, 0, 'h'},
                                          {0}};
     const char *spec = NULL;
     int c, L = 0, json = 0, st;
