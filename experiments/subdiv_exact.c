@@ -1,0 +1,111 @@
+/* Experiment: the exact covariance of subdivision fields against the target.
+ *
+ * usage: subdiv_exact OUT.md OUT.tsv
+ * For each model, the expected unbiased ACF (known mean 0) of a periodic
+ * subdivision field, computed exactly by propagating the covariance through
+ * the levels (analysis/subdiv_exact.h): the method's own error, free of
+ * sampling error.  Then the diagonal bias of the 2D quadrilateral mesh for
+ * the isotropic exp(-r/12): the ACF along the diagonal minus the ACF along
+ * x at the same distance (linear interpolation), for N = 1..4.
+ * Verdict: exp(-|t|) is exact in 1D (error < 1e-10); exit 1 otherwise. */
+#include "../analysis/subdiv_exact.h"
+#include "../core/model.h"
+
+#include <math.h>
+#include <stdio.h>
+
+static double err_1d(const char *spec, double h, int N, FILE *tsv)
+{
+    nl_model *m;
+    subdiv_coeffs *c;
+    long lags[2 * 65];
+    double ex[65], e = 0;
+    nl_model_parse(spec, &m);
+    subdiv_coeffs_alloc(m, 1, 6, ldexp(h, 6), N, 1e-4, 16, &c);
+    for (int i = 0; i < 65; i++)
+        lags[2 * i] = i, lags[2 * i + 1] = 0;
+    an_subdiv_exact_acf(c, m, 1024, 1, 65, lags, ex);
+    for (int i = 0; i < 65; i++) {
+        double lag = i * h, r = nl_model_acf(m, 1, &lag);
+        e = fmax(e, fabs(ex[i] - r) / c->r0);
+        fprintf(tsv, "%s\t%d\t%g\t%.8g\t%.8g\n", spec, N, lag, ex[i] / c->r0, r / c->r0);
+    }
+    fprintf(tsv, "\n\n");
+    subdiv_coeffs_free(c);
+    nl_model_free(m);
+    return e;
+}
+
+static double diag_bias(int N, double *axis_err)
+{
+    nl_model *m;
+    subdiv_coeffs *c;
+    long lags[2 * 40];
+    double ex[40], a = 0;
+    nl_model_parse("markov:scale=12", &m);
+    subdiv_coeffs_alloc(m, 2, 4, 16.0, N, 1e-4, 8, &c);
+    for (int k = 0; k < 20; k++)
+        lags[2 * k] = k, lags[2 * k + 1] = 0, lags[2 * (20 + k)] = k, lags[2 * (20 + k) + 1] = k;
+    an_subdiv_exact_acf(c, m, 64, 64, 40, lags, ex);
+    *axis_err = 0;
+    for (int k = 1; k < 12; k++) {
+        double d = k * sqrt(2.0), f = d - floor(d), lag[2] = {k, 0};
+        int i = (int)d;
+        double ax = (1 - f) * ex[i] + f * ex[i + 1];
+        if (fabs(ex[20 + k] - ax) > fabs(a))
+            a = ex[20 + k] - ax;
+        *axis_err = fmax(*axis_err, fabs(ex[k] - nl_model_acf(m, 2, lag)));
+    }
+    subdiv_coeffs_free(c);
+    nl_model_free(m);
+    return a;
+}
+
+int main(int argc, char **argv)
+{
+    static const struct {
+        const char *spec;
+        double h;
+    } models[] = {{"markov:scale=8", 1},
+                  {"markaussian:alpha=1.4,scale=8", 1},
+                  {"expr:100*cos(10*t)*exp(-abs(t))", 15.0 / 1024},
+                  {"gauss-osc:omega=10", 0.01171875}};
+    FILE *md, *tsv;
+    double emk = 1;
+    if (argc != 3 || !(md = fopen(argv[1], "w")) || !(tsv = fopen(argv[2], "w")))
+        return 2;
+    fprintf(tsv, "model\tN\tlag\texact\ttarget\n");
+    fprintf(md, "## The method's own error: exact covariance of subdivision fields\n\n"
+                "Not a figure of the papers. Lewis's construction estimates each new point from earlier levels "
+                "only; new points of one level get independent displacements although their estimation errors "
+                "are correlated, so the field's covariance differs from R (eq. (5) holds only for lags to the "
+                "point's own neighbourhood). The expected ACF of a periodic 1024-sample field made in 6 levels "
+                "is computed exactly by propagating the covariance through the levels; the ensemble tests in "
+                "`tests/test_subdiv_stat.c` confirm the synthesis matches it.\n\n"
+                "![exact](subdiv-exact.png)\n\n| model | max \\|exact − R\\| / R(0), N = 2 | N = 4 |\n|---|---|---|\n");
+    for (size_t i = 0; i < sizeof models / sizeof *models; i++) {
+        double e2 = err_1d(models[i].spec, models[i].h, 2, tsv), e4 = err_1d(models[i].spec, models[i].h, 4, tsv);
+        if (i == 0)
+            emk = e2;
+        fprintf(md, "| `%s` (spacing %g) | %.4f | %.4f |\n", models[i].spec, models[i].h, e2, e4);
+    }
+    fprintf(md, "\nDiagonal bias of the 2D quadrilateral mesh (isotropic exp(-r/12), 64x64, 4 levels): the "
+                "exact ACF along the diagonal minus that along x at the same distance (0 for an isotropic "
+                "field), and the largest error along x:\n\n| N | diagonal − axis | axis error |\n|---|---|---|\n");
+    for (int N = 1; N <= 4; N++) {
+        double ae, d = diag_bias(N, &ae);
+        fprintf(md, "| %d | %+.4f | %.4f |\n", N, d, ae);
+    }
+    fprintf(md, "\nVerdict: exp(-|t|) is exact in 1D (max error %.1e, bound 1e-10): %s. The other models keep "
+                "an error that a larger neighbourhood removes only in part, or not at all (table above): it "
+                "comes mostly from the independent displacements of sibling points, not from truncating the "
+                "neighbourhood. Likewise the "
+                "diagonal excess of the 2D mesh is a few thousandths and does not shrink with N, so the "
+                "paper's remedy (a larger neighbourhood) does not apply to it; the larger error is the loss "
+                "of variance along the axes, shared by the separable model.\n\n",
+            emk, emk < 1e-10 ? "pass" : "FAIL");
+    fclose(md);
+    fclose(tsv);
+    printf("subdiv exact: markov error %.1e\n", emk);
+    return emk < 1e-10 ? 0 : 1;
+}
