@@ -22,7 +22,7 @@ LIB       := $(BUILD)/libnoiselab.a
 BIN       := bin/noiselab
 DEPS_OK   := $(BUILD)/.deps-ok
 
-.PHONY: all deps test figures experiments clean
+.PHONY: all deps test figures experiments bench clean
 .SECONDARY:
 all: $(BIN) $(LIB)
 
@@ -58,6 +58,10 @@ figures: $(BIN) $(EXP_BIN)
 	@sh experiments/run-all.sh paper-figures
 
 experiments: figures
+
+# Speed against this machine's floor, measured in the same run (TSV).
+bench: $(BIN)
+	$(BIN) bench
 
 clean:
 	rm -rf $(BUILD) bin tests/work

@@ -18,6 +18,7 @@ static const struct {
     {"psd", cmd_psd, "estimate the power spectral density of a field (periodogram)"},
     {"hist", cmd_hist, "histogram and moments of a field"},
     {"detect", cmd_detect, "creases and aliasing in a subdivision field"},
+    {"bench", cmd_bench, "speed of the methods against this machine's floor (TSV)"},
 };
 
 static void usage(FILE *fp)
@@ -48,6 +49,6 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
             return commands[i].run(argc - 1, argv + 1);
-    cli_die(2, "unknown command \"%s\" (expected one of: models, coeffs, synth, acf, psd, hist, detect; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, coeffs, synth, acf, psd, hist, detect, bench; see noiselab --help)",
             argv[1]);
 }
