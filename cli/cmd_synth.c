@@ -28,6 +28,12 @@ static const char help[] =
     "            --seed-image FILE   start from this image as the coarse level (kept exactly)\n"
     "            --random-neighborhoods K  2D: K random quadrilateral neighbourhoods per\n"
     "                                point class, one drawn per point (against diagonal bias)\n"
+    "  circulant exact stationary field on a NON-periodic grid by circulant embedding\n"
+    "            (Dietrich-Newsam, Wood-Chan): the embedding doubles until its eigenvalues\n"
+    "            are non-negative, up to 16x the size; the report gives the embedding and\n"
+    "            the smallest eigenvalue\n"
+    "  cholesky  direct simulation by the Cholesky factor of the covariance matrix; exact,\n"
+    "            O(N^3), at most 8192 samples: the ground truth for small grids\n"
     "  midpoint  midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
     "            only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
     "            (1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
@@ -181,17 +187,28 @@ int cmd_synth(int argc, char **argv)
         }
     }
     if (optind >= argc)
-        cli_die(2, "synth: expected a METHOD (fft, subdiv or midpoint), see noiselab synth --help");
+        cli_die(2, "synth: expected a METHOD (fft, subdiv, midpoint, circulant, cholesky), see noiselab synth --help");
     job.method = argv[optind];
     if (optind + 1 < argc)
         cli_die(2, "synth: unexpected argument \"%s\"", argv[optind + 1]);
-    if (strcmp(job.method, "fft") && strcmp(job.method, "subdiv") && strcmp(job.method, "midpoint")) {
-        static const char *const planned[] = {"circulant", "cholesky", "sparse", "faulting", "lattice", "rank1"};
+    static const struct {
+        const char *name;
+        void (*run)(const synth_job *, nl_field *, synth_result *);
+    } methods[] = {{"fft", synth_fft_run},         {"subdiv", synth_subdiv_run},
+                   {"midpoint", synth_midpoint_run}, {"circulant", synth_circulant_run},
+                   {"cholesky", synth_cholesky_run}};
+    void (*run)(const synth_job *, nl_field *, synth_result *) = NULL;
+    for (size_t i = 0; i < sizeof methods / sizeof *methods; i++)
+        if (strcmp(job.method, methods[i].name) == 0)
+            run = methods[i].run;
+    if (!run) {
+        static const char *const planned[] = {"sparse", "faulting", "lattice", "rank1"};
         for (size_t i = 0; i < sizeof planned / sizeof *planned; i++)
             if (strcmp(job.method, planned[i]) == 0)
                 cli_die(2, "synth: method \"%s\" is not available in this version (available: fft, subdiv, "
-                        "midpoint)", job.method);
-        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv or midpoint)", job.method);
+                        "midpoint, circulant, cholesky)", job.method);
+        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant or cholesky)",
+                job.method);
     }
     only_for("--levels", given_L, job.method, "subdiv midpoint");
     only_for("--neighborhood", given_N, job.method, "subdiv");
@@ -239,12 +256,7 @@ int cmd_synth(int argc, char **argv)
     f = nl_field_alloc(job.dim, job.n, job.h, &st);
     if (!f)
         cli_die_status(st);
-    if (strcmp(job.method, "fft") == 0)
-        synth_fft_run(&job, f, &res);
-    else if (strcmp(job.method, "subdiv") == 0)
-        synth_subdiv_run(&job, f, &res);
-    else
-        synth_midpoint_run(&job, f, &res);
+    run(&job, f, &res);
 
     memset(&meta, 0, sizeof meta);
     snprintf(meta.model, sizeof meta.model, "%s", job.m ? nl_model_spec(job.m) : "");

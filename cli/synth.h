@@ -36,5 +36,7 @@ typedef struct {
 void synth_fft_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_midpoint_run(const synth_job *job, nl_field *f, synth_result *r);
+void synth_circulant_run(const synth_job *job, nl_field *f, synth_result *r);
+void synth_cholesky_run(const synth_job *job, nl_field *f, synth_result *r);
 
 #endif

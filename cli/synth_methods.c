@@ -2,6 +2,8 @@
 #include "synth.h"
 #include "../core/autocorr.h"
 #include "../core/nl_error.h"
+#include "../synth/cholesky.h"
+#include "../synth/circulant.h"
 #include "../synth/fft.h"
 #include "../synth/subdiv.h"
 
@@ -194,4 +196,42 @@ void synth_midpoint_run(const synth_job *job, nl_field *f, synth_result *r)
     r->sd = sqrt(c->r0);
     r->report = json_pack("{s:f,s:i,s:f}", "H", H, "levels", L, "variance_scale", job->vscale);
     subdiv_coeffs_free(c);
+}
+
+void synth_circulant_run(const synth_job *job, nl_field *f, synth_result *r)
+{
+    synth_circulant_plan *p;
+    synth_circulant_info info;
+    int st;
+    if ((st = synth_circulant_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? SYNTH_FFT_CLAMP : 0, 16,
+                                         &p)))
+        cli_die_status(st);
+    synth_circulant_plan_info(p, &info);
+    if ((st = synth_circulant_execute(p, job->seed, f)))
+        cli_die_status(st);
+    synth_circulant_plan_free(p);
+    snprintf(r->method, sizeof r->method, "circulant:embedding=%zux%zux%zu", info.m[0], info.m[1], info.m[2]);
+    if (info.clamp_error > SYNTH_FFT_CLAMP_TOL)
+        snprintf(r->flags, sizeof r->flags, "clamped");
+    double zero[3] = {0, 0, 0};
+    r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
+    if (!(r->sd > 0))
+        r->sd = 1;
+    r->report = json_pack("{s:[I,I,I],s:f,s:f,s:f,s:i}", "embedding", (json_int_t)info.m[0], (json_int_t)info.m[1],
+                          (json_int_t)info.m[2], "min_eigenvalue", info.min_eigenvalue, "max_eigenvalue",
+                          info.max_eigenvalue, "clamp_error", info.clamp_error, "doublings", info.doublings);
+}
+
+void synth_cholesky_run(const synth_job *job, nl_field *f, synth_result *r)
+{
+    synth_cholesky_plan *p;
+    int st;
+    double zero[3] = {0, 0, 0};
+    if ((st = synth_cholesky_plan_alloc(job->m, job->dim, job->n, job->h, &p)))
+        cli_die_status(st);
+    if ((st = synth_cholesky_execute(p, job->seed, f)))
+        cli_die_status(st);
+    synth_cholesky_plan_free(p);
+    snprintf(r->method, sizeof r->method, "cholesky");
+    r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
 }

@@ -54,7 +54,9 @@ Test(cli, synth_error_paths)
     bad("synth fft --acf markov -o out.exr", "--size");
     bad("synth fft --acf markov --size 64", "-o");
     bad("synth wavelets --acf markov --size 64 -o out.exr", "\"wavelets\"");
-    bad("synth circulant --acf markov --size 64 -o out.exr", "\"circulant\"");
+    bad("synth sparse --acf markov --size 64 -o out.exr", "\"sparse\"");
+    bad("synth cholesky --acf markov --size 100x100 -o out.exr", "10000");
+    bad("synth circulant --acf gauss-osc:omega=2,scale=3 --size 64x64 -o out.exr", "cannot be embedded");
     bad("synth subdiv --acf markov --size 100 --levels 3 -o out.exr", "100");
     bad("synth subdiv --acf markov --size 64x64x64 -o out.exr", "3D");
     bad("synth subdiv --acf markov --size 64 --origin 5 -o out.exr", "--nonperiodic");

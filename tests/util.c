@@ -1,6 +1,8 @@
 /* Running the CLI from tests and scratch space. */
 #include "util.h"
 
+#include <gsl/gsl_errno.h>
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -59,3 +61,6 @@ int count_lines(const char *s)
         n += *s == '\n';
     return n;
 }
+
+/* As in noiselab's main: GSL reports errors by status, never aborts. */
+__attribute__((constructor)) static void gsl_errors_by_status(void) { gsl_set_error_handler_off(); }

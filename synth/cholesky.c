@@ -1,0 +1,93 @@
+/* Cholesky factorisation of the grid covariance matrix (GSL). */
+#include "cholesky.h"
+#include "../core/nl_error.h"
+#include "../core/rng.h"
+
+#include <gsl/gsl_linalg.h>
+#include <stdlib.h>
+
+struct synth_cholesky_plan {
+    int dim;            /* 1..3 */
+    size_t n[3];        /* grid */
+    size_t count;       /* samples */
+    gsl_matrix *L;      /* lower Cholesky factor (upper triangle unused) */
+};
+
+void synth_cholesky_plan_free(synth_cholesky_plan *p)
+{
+    if (!p)
+        return;
+    gsl_matrix_free(p->L);
+    free(p);
+}
+
+int synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h,
+                              synth_cholesky_plan **out)
+{
+    synth_cholesky_plan *p;
+    size_t count, nn[2];
+    double hh[3] = {1, 1, 1};
+    int st;
+    *out = NULL;
+    if ((st = nl_size_check(dim, n, 1, 1, &count)))
+        return st;
+    if (count > SYNTH_CHOLESKY_MAX)
+        return NL_ERROR(NL_ETOOBIG, "cholesky: %zu samples need a %zu x %zu covariance matrix; expected at most "
+                        "%d samples (use circulant for larger grids)", count, count, count, SYNTH_CHOLESKY_MAX);
+    nn[0] = nn[1] = count;
+    if ((st = nl_size_check(2, nn, sizeof(double), 1, NULL)))
+        return st;
+    if ((st = nl_model_check_dim(m, dim)))
+        return st;
+    p = calloc(1, sizeof *p);
+    if (!p || !(p->L = gsl_matrix_alloc(count, count))) {
+        free(p);
+        return NL_ERROR(NL_ENOMEM, "out of memory for the covariance matrix");
+    }
+    p->dim = dim;
+    p->count = count;
+    for (int a = 0; a < 3; a++) {
+        p->n[a] = a < dim ? n[a] : 1;
+        if (a < dim && h)
+            hh[a] = h[a];
+    }
+    for (size_t i = 0; i < count; i++)
+        for (size_t j = 0; j <= i; j++) {
+            double lag[3];
+            size_t pi[3] = {i % p->n[0], (i / p->n[0]) % p->n[1], i / (p->n[0] * p->n[1])};
+            size_t pj[3] = {j % p->n[0], (j / p->n[0]) % p->n[1], j / (p->n[0] * p->n[1])};
+            for (int a = 0; a < 3; a++)
+                lag[a] = ((double)pi[a] - (double)pj[a]) * hh[a];
+            double r = nl_model_acf(m, dim, lag);
+            gsl_matrix_set(p->L, i, j, r);
+            gsl_matrix_set(p->L, j, i, r);
+        }
+    if (gsl_linalg_cholesky_decomp1(p->L) != 0) {
+        synth_cholesky_plan_free(p);
+        return NL_ERROR(NL_ENOTPD, "%s: the %zu x %zu covariance matrix is not positive definite (Cholesky "
+                        "failed); the model is not valid on this grid, or it is singular at this spacing",
+                        nl_model_spec(m), count, count);
+    }
+    *out = p;
+    return NL_OK;
+}
+
+int synth_cholesky_execute(const synth_cholesky_plan *p, uint64_t seed, nl_field *out)
+{
+    double *z;
+    if (out->count != p->count)
+        return NL_ERROR(NL_EINVAL, "cholesky: the output field does not match the plan's grid");
+    z = malloc(p->count * sizeof *z);
+    if (!z)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    for (size_t j = 0; j < p->count; j++)
+        z[j] = nl_rng_gauss(seed, SYNTH_CHOLESKY_STREAM, j);
+    for (size_t i = 0; i < p->count; i++) {
+        double s = 0;
+        for (size_t j = 0; j <= i; j++)
+            s += gsl_matrix_get(p->L, i, j) * z[j];
+        out->data[i] = s;
+    }
+    free(z);
+    return NL_OK;
+}

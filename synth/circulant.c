@@ -1,0 +1,117 @@
+/* Circulant embedding: periodic FFT synthesis on an embedding grid, cropped. */
+#include "circulant.h"
+#include "../core/nl_error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct synth_circulant_plan {
+    int dim;                 /* 1..3 */
+    size_t n[3];             /* output grid */
+    double h[3];             /* spacing */
+    synth_fft_plan *fft;     /* periodic synthesis on the embedding */
+    nl_field *work;          /* embedding-size field; NOT shared between threads */
+    synth_circulant_info info;
+};
+
+/* Smallest even 2,3,5-smooth number >= x. */
+static size_t smooth_even(size_t x)
+{
+    for (size_t m = x + (x % 2);; m += 2) {
+        size_t r = m;
+        while (r % 2 == 0) r /= 2;
+        while (r % 3 == 0) r /= 3;
+        while (r % 5 == 0) r /= 5;
+        if (r == 1)
+            return m;
+    }
+}
+
+void synth_circulant_plan_free(synth_circulant_plan *p)
+{
+    if (!p)
+        return;
+    synth_fft_plan_free(p->fft);
+    nl_field_free(p->work);
+    free(p);
+}
+
+int synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                               int max_factor, synth_circulant_plan **out)
+{
+    synth_circulant_plan *p;
+    size_t mm[3] = {1, 1, 1};
+    int st;
+    *out = NULL;
+    if (dim < 1 || dim > 3)
+        return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
+    p = calloc(1, sizeof *p);
+    if (!p)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    p->dim = dim;
+    for (int a = 0; a < 3; a++) {
+        p->n[a] = a < dim ? n[a] : 1;
+        p->h[a] = a < dim && h ? h[a] : 1;
+        if (a < dim)
+            mm[a] = smooth_even(2 * (n[a] > 1 ? n[a] - 1 : 1));
+    }
+    for (;;) {
+        synth_fft_info fi;
+        st = synth_fft_plan_alloc(m, dim, mm, p->h, SYNTH_FFT_CLAMP, &p->fft);
+        if (st)
+            break;
+        synth_fft_plan_info(p->fft, &fi);
+        p->info.min_eigenvalue = fi.min_lambda / (p->h[0] * p->h[1] * p->h[2]);
+        p->info.max_eigenvalue = fi.max_lambda / (p->h[0] * p->h[1] * p->h[2]);
+        p->info.clamp_error = fi.clamp_error;
+        memcpy(p->info.m, mm, sizeof mm);
+        if (fi.clamp_error <= SYNTH_FFT_CLAMP_TOL)
+            break;
+        int grow = 1;
+        for (int a = 0; a < dim; a++)
+            if (2 * mm[a] > (size_t)max_factor * p->n[a])
+                grow = 0;
+        if (!grow) {
+            if (!(flags & SYNTH_FFT_CLAMP))
+                st = NL_ERROR(NL_ENOTPD,
+                              "%s: cannot be embedded: the smallest eigenvalue is %.3g (largest %.3g) at embedding "
+                              "%zux%zux%zu after %d doublings; zeroing the negatives would change the covariance "
+                              "by %.2g of R(0) (use --clamp to accept)",
+                              nl_model_spec(m), p->info.min_eigenvalue, p->info.max_eigenvalue, mm[0], mm[1], mm[2],
+                              p->info.doublings, fi.clamp_error);
+            break;
+        }
+        synth_fft_plan_free(p->fft);
+        p->fft = NULL;
+        for (int a = 0; a < dim; a++)
+            mm[a] *= 2;
+        p->info.doublings++;
+    }
+    if (!st) {
+        p->work = nl_field_alloc(dim, mm, p->h, &st);
+    }
+    if (st) {
+        synth_circulant_plan_free(p);
+        return st;
+    }
+    *out = p;
+    return NL_OK;
+}
+
+void synth_circulant_plan_info(const synth_circulant_plan *p, synth_circulant_info *info) { *info = p->info; }
+
+int synth_circulant_execute(const synth_circulant_plan *p, uint64_t seed, nl_field *out)
+{
+    const nl_field *w = p->work;
+    int st;
+    if (out->dim != p->dim || out->n[0] != p->n[0] || out->n[1] != p->n[1] || out->n[2] != p->n[2])
+        return NL_ERROR(NL_EINVAL, "circulant: the output field does not match the plan's grid");
+    if ((st = synth_fft_execute(p->fft, seed, p->work)))
+        return st;
+    for (size_t k = 0; k < p->n[2]; k++)
+        for (size_t j = 0; j < p->n[1]; j++)
+            memcpy(out->data + (k * p->n[1] + j) * p->n[0], w->data + (k * w->n[1] + j) * w->n[0],
+                   p->n[0] * sizeof *out->data);
+    return NL_OK;
+}
