@@ -17,6 +17,7 @@ int cmd_hist(int argc, char **argv);
 int cmd_models(int argc, char **argv);
 int cmd_coeffs(int argc, char **argv);
 int cmd_detect(int argc, char **argv);
+int cmd_shape(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 
 /* Print "noiselab: MSG" on stderr and exit with `code` (2: bad usage or

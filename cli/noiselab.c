@@ -16,7 +16,8 @@ static const struct {
     {"synth", cmd_synth, "synthesise a field (methods: fft, subdiv, midpoint)"},
     {"acf", cmd_acf, "estimate the autocorrelation of a field"},
     {"psd", cmd_psd, "estimate the power spectral density of a field (periodogram)"},
-    {"hist", cmd_hist, "histogram and moments of a field"},
+    {"hist", cmd_hist, "histogram, moments and goodness of fit of a field"},
+    {"shape", cmd_shape, "memoryless distribution shaping of a field"},
     {"detect", cmd_detect, "creases and aliasing in a subdivision field"},
     {"bench", cmd_bench, "speed of the methods against this machine's floor (TSV)"},
 };
@@ -49,6 +50,6 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
             return commands[i].run(argc - 1, argv + 1);
-    cli_die(2, "unknown command \"%s\" (expected one of: models, coeffs, synth, acf, psd, hist, detect, bench; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, coeffs, synth, acf, psd, hist, shape, detect, bench; see noiselab --help)",
             argv[1]);
 }

@@ -95,6 +95,12 @@ Test(cli, estimator_error_paths)
     bad("hist f.tsv --bins 0", "\"0\"");
     bad("hist f.tsv --bins x", "\"x\"");
     bad("nosuchcommand", "\"nosuchcommand\"");
+    bad("shape f.tsv --to cauchy -o out.tsv", "\"cauchy\"");
+    bad("shape f.tsv --to laplace:a=-1 -o out.tsv", "laplace:a=-1");
+    bad("shape f.tsv --to laplace", "-o");
+    bad("shape f.tsv -o out.tsv", "--to");
+    bad("shape /nonexistent.exr --to laplace -o out.tsv", "/nonexistent.exr");
+    bad("hist f.tsv --against nope", "\"nope\"");
     FILE *fp = fopen("/tmp/noiselab-bad.tsv", "w");
     fputs("t\tvalue\n0\t1\n1\tabc\n", fp);
     fclose(fp);

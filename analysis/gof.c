@@ -1,0 +1,61 @@
+/* Kolmogorov-Smirnov and chi-square tests (GSL for sorting and the
+ * chi-square distribution; the Kolmogorov series is summed here, GSL has
+ * no KS test). */
+#include "gof.h"
+#include "../core/nl_error.h"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_sort.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static double q_ks(double l)
+{
+    double s = 0, sign = 1;
+    if (l < 0.2)
+        return 1.0;
+    for (int k = 1; k <= 100; k++) {
+        double t = sign * exp(-2.0 * k * k * l * l);
+        s += t;
+        if (fabs(t) < 1e-16 * fabs(s))
+            break;
+        sign = -sign;
+    }
+    return fmin(fmax(2 * s, 0), 1);
+}
+
+int an_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, an_gof *out)
+{
+    double *s, D = 0, en;
+    size_t *count;
+    if (n < 2 || bins < 2)
+        return NL_ERROR(NL_EINVAL, "goodness of fit: expected at least 2 samples and 2 bins");
+    s = malloc(n * sizeof *s);
+    count = calloc(bins, sizeof *count);
+    if (!s || !count) {
+        free(s), free(count);
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    memcpy(s, x, n * sizeof *s);
+    gsl_sort(s, 1, n);
+    for (size_t i = 0; i < n; i++) {
+        double F = nl_dist_cdf(d, s[i]);
+        D = fmax(D, fmax((double)(i + 1) / (double)n - F, F - (double)i / (double)n));
+        size_t b = (size_t)(F * (double)bins);
+        count[b < bins ? b : bins - 1]++;
+    }
+    en = sqrt((double)n);
+    out->D = D;
+    out->p_ks = q_ks((en + 0.12 + 0.11 / en) * D);
+    out->chi2 = 0;
+    for (size_t b = 0; b < bins; b++) {
+        double e = (double)n / (double)bins;
+        out->chi2 += ((double)count[b] - e) * ((double)count[b] - e) / e;
+    }
+    out->bins = bins;
+    out->p_chi2 = gsl_cdf_chisq_Q(out->chi2, (double)(bins - 1));
+    free(s);
+    free(count);
+    return NL_OK;
+}

@@ -1,0 +1,35 @@
+/* Named one-dimensional distributions: density, CDF and quantile (GSL).
+ *
+ *   gauss[:mean=0,sd=1]        normal
+ *   uniform[:a=0,b=1]          flat on [a, b]
+ *   laplace[:a=1]              density exp(-|y|/a) / (2a)
+ *   hyperbolic                 hyperbolic secant: density sech(pi y / 2) / 2,
+ *                              CDF (2/pi) atan(exp(pi y / 2)), variance 1
+ *   lognormal[:zeta=0,sigma=1] exp of a normal(zeta, sigma)
+ *   chi2-1                     the squared standard Gaussian (chi-square, 1
+ *                              degree of freedom; GI '86, section 4)
+ *   power:p=P                  U^P for U uniform on [0, 1] (y <- y^P of the
+ *                              paper's terrains, applied to the uniform rank)
+ *   table:FILE                 a quantile table: TSV with header, columns u y,
+ *                              u increasing from 0 to 1, y non-decreasing;
+ *                              linear interpolation */
+#ifndef NL_DIST_H
+#define NL_DIST_H
+
+#include <stddef.h>
+
+typedef struct nl_dist nl_dist;
+
+int nl_dist_parse(const char *spec, nl_dist **out);
+void nl_dist_free(nl_dist *d);
+const char *nl_dist_spec(const nl_dist *d);
+
+double nl_dist_cdf(const nl_dist *d, double y);
+double nl_dist_pdf(const nl_dist *d, double y);  /* NAN for table: */
+double nl_dist_quantile(const nl_dist *d, double u);
+
+/* Mean and variance (NAN where not finite or not known in closed form). */
+double nl_dist_mean(const nl_dist *d);
+double nl_dist_variance(const nl_dist *d);
+
+#endif
