@@ -2,6 +2,7 @@
 #include "cli.h"
 #include "../analysis/psd.h"
 #include "../analysis/radial.h"
+#include "../analysis/slope.h"
 #include "../core/model.h"
 #include "../core/wk.h"
 
@@ -11,7 +12,8 @@
 #include <stdlib.h>
 
 static const char help[] =
-    "usage: noiselab psd IN [--radial] [--mean M] [--target SPEC] [--json] [-o OUT.tsv]\n\n"
+    "usage: noiselab psd IN [--radial] [--mean M] [--target SPEC] [--slope F1:F2] [--json]\n"
+    "                    [-o OUT.tsv]\n\n"
     "Periodogram of IN (EXR, PNG or 1D TSV): P(f) = (h/N) |DFT(x - mean)|^2, a\n"
     "TWO-SIDED density in variance per (cycles per unit length)^dim, so that the sum\n"
     "of P over all grid frequencies times the frequency cell is the mean square.\n"
@@ -20,6 +22,9 @@ static const char help[] =
     "  --mean M      known mean to remove (default: the sample mean)\n"
     "  --target SPEC add the model's spectrum on the same grid (the spectrum of the\n"
     "                sampled process, aliasing included)\n"
+    "  --slope F1:F2 fit log psd = c + slope log f over F1 <= f <= F2: slope, its 95%\n"
+    "                confidence interval, and the fractal dimension D = E + (3 - d)/2,\n"
+    "                d = -slope (Lewis 1987, eq. 16)\n"
     "  --json        {\"freq\": [...], \"psd\": [...], \"sided\": \"two-sided\"} on stdout\n"
     "  -o            TSV with columns freq, psd[, target] (default: TSV on stdout)\n";
 
@@ -54,10 +59,12 @@ int cmd_psd(int argc, char **argv)
         {"radial", no_argument, 0, 'r'},     {"mean", required_argument, 0, 'm'},
         {"target", required_argument, 0, 't'}, {"json", no_argument, 0, 'j'},
         {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
-        {0}};
+        {"slope", required_argument, 0, 's'},  {0}};
     const char *out = NULL, *tmp = NULL, *target = NULL;
     double mean = NAN, *freq, *val, *tgt = NULL;
-    int c, json = 0, st;
+    int c, json = 0, st, slope = 0;
+    double f1 = 0, f2 = 0;
+    an_slope sl;
     size_t nf, maxn, *cnt;
     nl_field *x, *P;
 
@@ -67,6 +74,14 @@ int cmd_psd(int argc, char **argv)
         case 'r': break; /* nD output is always radial; accepted for clarity */
         case 'm': mean = cli_parse_double("--mean", optarg); break;
         case 't': target = optarg; break;
+        case 's': {
+            char *end;
+            f1 = strtod(optarg, &end);
+            if (end == optarg || *end != ':' || (f2 = strtod(end + 1, &end), *end) || !(f1 > 0) || !(f2 > f1))
+                cli_die(2, "--slope: expected F1:F2 with 0 < F1 < F2, got \"%s\"", optarg);
+            slope = 1;
+            break;
+        }
         case 'j': json = 1; break;
         case 'o': out = optarg; break;
         case 'h': fputs(help, stdout); return 0;
@@ -100,14 +115,23 @@ int cmd_psd(int argc, char **argv)
         nl_model_free(m);
         nl_field_free(S);
     }
+    if (slope && (st = an_psd_slope(freq, val, nf, f1, f2, x->dim, &sl)))
+        cli_die_status(st);
     if (json) {
         json_t *o = json_pack("{s:o,s:o}", "freq", cli_json_array(freq, nf), "psd", cli_json_array(val, nf));
         if (tgt)
             json_object_set_new(o, "target", cli_json_array(tgt, nf));
         json_object_set_new(o, "sided", json_string("two-sided"));
         json_object_set_new(o, "average", json_string(x->dim == 1 ? "none" : "radial"));
+        if (slope)
+            json_object_set_new(o, "slope", json_pack("{s:f,s:f,s:I,s:f,s:[f,f]}", "slope", sl.slope, "ci95", sl.ci95,
+                                                      "points", (json_int_t)sl.points, "fractal_dimension",
+                                                      sl.fractal_dim, "band", f1, f2));
         cli_json_print(o);
     }
+    if (slope && !json)
+        printf("# slope %.4f +- %.4f (95%%, %zu frequencies in [%g, %g]); fractal dimension "
+                "%.4f\n", sl.slope, sl.ci95, sl.points, f1, f2, sl.fractal_dim);
     if (out || !json) {
         static const char *const names[] = {"freq", "psd", "target"};
         const double *cols[] = {freq, val, tgt};

@@ -34,6 +34,9 @@ static const char help[] =
     "            the smallest eigenvalue\n"
     "  cholesky  direct simulation by the Cholesky factor of the covariance matrix; exact,\n"
     "            O(N^3), at most 8192 samples: the ground truth for small grids\n"
+    "  faulting  Poisson faulting (Mandelbrot): random steps in 1D, random lines in 2D;\n"
+    "            --density D faults per sample (1D) or lines per (nx + ny) (2D); no model:\n"
+    "            the spectrum is f^-2 (1D), k^-3 radially (2D)\n"
     "  midpoint  midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
     "            only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
     "            (1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
@@ -115,12 +118,12 @@ int cmd_synth(int argc, char **argv)
         {"tol", required_argument, 0, 't'},        {"nonperiodic", no_argument, 0, 'P'},
         {"origin", required_argument, 0, 'O'},     {"seed-image", required_argument, 0, 'I'},
         {"H", required_argument, 0, 'u'},          {"variance-scale", required_argument, 0, 'v'},
-        {"random-neighborhoods", required_argument, 0, 'R'},
+        {"random-neighborhoods", required_argument, 0, 'R'}, {"density", required_argument, 0, 'D'},
         {0}};
     const char *acf = NULL, *spec = NULL, *size = NULL, *spacing = NULL, *out = NULL, *preview = NULL;
     const char *tmp, *ptmp = NULL, *origin = NULL;
     char sbuf[1100];
-    int c, json = 0, st, given_L = 0, given_N = 0, given_tol = 0, given_vs = 0;
+    int c, json = 0, st, given_L = 0, given_N = 0, given_tol = 0, given_vs = 0, given_density = 0;
     synth_job job;
     synth_result res;
     nl_field *f;
@@ -133,6 +136,7 @@ int cmd_synth(int argc, char **argv)
     job.tol = 1e-4;
     job.H = NAN;
     job.vscale = 1;
+    job.density = 1;
     for (int a = 0; a < 3; a++)
         job.n[a] = 1, job.h[a] = 1;
     opterr = 0;
@@ -182,6 +186,12 @@ int cmd_synth(int argc, char **argv)
                 cli_die(2, "--variance-scale: expected a positive factor, got \"%s\"", optarg);
             given_vs = 1;
             break;
+        case 'D':
+            job.density = cli_parse_double("--density", optarg);
+            if (!(job.density > 0))
+                cli_die(2, "--density: expected a positive number, got \"%s\"", optarg);
+            given_density = 1;
+            break;
         case 'h': fputs(help, stdout); return 0;
         default: cli_bad_option("synth", c, argv);
         }
@@ -196,18 +206,18 @@ int cmd_synth(int argc, char **argv)
         void (*run)(const synth_job *, nl_field *, synth_result *);
     } methods[] = {{"fft", synth_fft_run},         {"subdiv", synth_subdiv_run},
                    {"midpoint", synth_midpoint_run}, {"circulant", synth_circulant_run},
-                   {"cholesky", synth_cholesky_run}};
+                   {"cholesky", synth_cholesky_run}, {"faulting", synth_faulting_run}};
     void (*run)(const synth_job *, nl_field *, synth_result *) = NULL;
     for (size_t i = 0; i < sizeof methods / sizeof *methods; i++)
         if (strcmp(job.method, methods[i].name) == 0)
             run = methods[i].run;
     if (!run) {
-        static const char *const planned[] = {"sparse", "faulting", "lattice", "rank1"};
+        static const char *const planned[] = {"sparse", "lattice", "rank1"};
         for (size_t i = 0; i < sizeof planned / sizeof *planned; i++)
             if (strcmp(job.method, planned[i]) == 0)
                 cli_die(2, "synth: method \"%s\" is not available in this version (available: fft, subdiv, "
-                        "midpoint, circulant, cholesky)", job.method);
-        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant or cholesky)",
+                        "midpoint, circulant, cholesky, faulting)", job.method);
+        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant, cholesky or faulting)",
                 job.method);
     }
     only_for("--levels", given_L, job.method, "subdiv midpoint");
@@ -219,13 +229,17 @@ int cmd_synth(int argc, char **argv)
     only_for("--random-neighborhoods", job.random_nb != 0, job.method, "subdiv");
     only_for("--H", !isnan(job.H), job.method, "midpoint");
     only_for("--variance-scale", given_vs, job.method, "midpoint");
+    only_for("--density", given_density, job.method, "faulting sparse");
     if (origin && !job.nonperiodic)
         cli_die(2, "synth subdiv: --origin needs --nonperiodic (a periodic field has no origin)");
     if (origin)
         parse_origin(origin, job.origin);
     if (strcmp(job.method, "midpoint") == 0 && !isnan(job.H) && (acf || spec))
         cli_die(2, "synth midpoint: give either --H or a power-law model, not both");
-    if (!(strcmp(job.method, "midpoint") == 0 && !isnan(job.H)) && !acf == !spec)
+    int needs_model = !(strcmp(job.method, "midpoint") == 0 && !isnan(job.H)) && strcmp(job.method, "faulting");
+    if (!needs_model && (acf || spec) && strcmp(job.method, "faulting") == 0)
+        cli_die(2, "synth faulting: takes no model (its spectrum is f^-2); got --acf/--spectrum");
+    if (needs_model && !acf == !spec)
         cli_die(2, "synth: expected exactly one of --acf SPEC or --spectrum SPEC");
     if (!size)
         cli_die(2, "synth: --size: expected N, NxM or NxMxK");
@@ -274,7 +288,7 @@ int cmd_synth(int argc, char **argv)
     } else {
         write_tsv(tmp, f);
     }
-    if (preview && (st = nl_png_write_field(ptmp, f, -3 * res.sd, 3 * res.sd)))
+    if (preview && (st = nl_png_write_field(ptmp, f, res.offset - 3 * res.sd, res.offset + 3 * res.sd)))
         cli_die_status(st);
     cli_out_commit(out);
     if (preview)

@@ -23,12 +23,14 @@ typedef struct {
     int random_nb;         /* --random-neighborhoods K, 0 = the standard block */
     double H;              /* midpoint: Hurst exponent, NAN if unset */
     double vscale;         /* midpoint: --variance-scale factor per level */
+    double density;        /* faulting, sparse: --density */
 } synth_job;
 
 typedef struct {
     char method[256];      /* method and its parameters, for noiselab.method */
     char flags[256];       /* comma-separated flags, for noiselab.flags */
     double sd;             /* standard deviation for the preview range */
+    double offset;         /* centre of the preview range */
     json_t *report;        /* method-specific JSON report (owned) */
 } synth_result;
 
@@ -38,5 +40,6 @@ void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_midpoint_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_circulant_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_cholesky_run(const synth_job *job, nl_field *f, synth_result *r);
+void synth_faulting_run(const synth_job *job, nl_field *f, synth_result *r);
 
 #endif

@@ -4,6 +4,7 @@
 #include "../core/nl_error.h"
 #include "../synth/cholesky.h"
 #include "../synth/circulant.h"
+#include "../synth/faulting.h"
 #include "../synth/fft.h"
 #include "../synth/subdiv.h"
 
@@ -234,4 +235,24 @@ void synth_cholesky_run(const synth_job *job, nl_field *f, synth_result *r)
     synth_cholesky_plan_free(p);
     snprintf(r->method, sizeof r->method, "cholesky");
     r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
+}
+
+void synth_faulting_run(const synth_job *job, nl_field *f, synth_result *r)
+{
+    size_t K;
+    int st;
+    if (job->dim > 2)
+        cli_die(2, "synth faulting: expected a 1D or 2D --size, got %dD", job->dim);
+    if ((st = synth_faulting(job->seed, job->density, f, &K)))
+        cli_die_status(st);
+    snprintf(r->method, sizeof r->method, "faulting:density=%.17g", job->density);
+    double mean = 0, var = 0;
+    for (size_t i = 0; i < f->count; i++)
+        mean += f->data[i] / (double)f->count;
+    for (size_t i = 0; i < f->count; i++)
+        var += (f->data[i] - mean) * (f->data[i] - mean) / (double)f->count;
+    r->sd = sqrt(var) > 0 ? sqrt(var) : 1;
+    /* the preview is centred on 0: shift the range by the mean */
+    r->offset = mean;
+    r->report = json_pack("{s:I,s:f}", "faults", (json_int_t)K, "density", job->density);
 }

@@ -96,6 +96,10 @@ Test(cli, estimator_error_paths)
     bad("hist f.tsv --bins x", "\"x\"");
     bad("nosuchcommand", "\"nosuchcommand\"");
     bad("shape f.tsv --to cauchy -o out.tsv", "\"cauchy\"");
+    bad("psd f.tsv --slope 0.3:0.1", "\"0.3:0.1\"");
+    bad("synth faulting --size 64 --density -2 -o out.tsv", "\"-2\"");
+    bad("synth faulting --acf markov --size 64 -o out.tsv", "takes no model");
+    bad("synth faulting --size 8x8x8 -o out.exr", "3D");
     bad("shape f.tsv --to laplace:a=-1 -o out.tsv", "laplace:a=-1");
     bad("shape f.tsv --to laplace", "-o");
     bad("shape f.tsv -o out.tsv", "--to");

@@ -1,0 +1,23 @@
+/* Spectral slope: least-squares fit of log S = c + slope log f over a band
+ * (GSL gsl_fit_linear), with the 95% confidence interval of the slope from
+ * the fit's residual variance (Student's t, n - 2 degrees of freedom), and
+ * the fractal dimension of Lewis 1987, eq. (16): D = E + (3 - d)/2 with
+ * d = -slope and E the Euclidean dimension.  The residuals are treated as
+ * independent, which holds for periodogram ordinates at distinct Fourier
+ * frequencies of a long record. */
+#ifndef AN_SLOPE_H
+#define AN_SLOPE_H
+
+#include <stddef.h>
+
+typedef struct {
+    double slope;     /* fitted exponent (negative for decaying spectra) */
+    double ci95;      /* half-width of the 95% confidence interval */
+    size_t points;    /* frequencies used */
+    double fractal_dim; /* eq. (16) */
+} an_slope;
+
+/* Frequencies f[i] with fmin <= f <= fmax and psd > 0 are used. */
+int an_psd_slope(const double *f, const double *psd, size_t n, double fmin, double fmax, int E, an_slope *out);
+
+#endif

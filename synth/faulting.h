@@ -1,0 +1,26 @@
+/* Poisson faulting (Mandelbrot 1975): a sum of randomly placed steps.
+ *
+ * 1D: faults at Poisson positions of rate `density` per sample over the
+ * n samples, each adding a N(0, 1) height to every sample at or after it;
+ * the result is a random walk with spectrum f^-2.
+ * 2D: random lines, a Poisson number of mean density * (nx + ny), with
+ * direction uniform in [0, pi) and signed distance from the grid centre
+ * uniform over half the diagonal; each adds a N(0, 1) height on one side.
+ * The surface is a Brownian (Levy) surface: radial spectrum k^-3, f^-2
+ * along a transect.
+ * Every fault is drawn from the counter-based RNG keyed by (seed,
+ * SYNTH_FAULT_STREAM, fault index); the count by inversion of the Poisson
+ * CDF with nl_rng_uniform(seed, SYNTH_FAULT_STREAM + 1, 0). */
+#ifndef SYNTH_FAULTING_H
+#define SYNTH_FAULTING_H
+
+#include "../core/field.h"
+
+#include <stdint.h>
+
+#define SYNTH_FAULT_STREAM 300u
+
+/* Fills f (1D or 2D); returns the number of faults in *count. */
+int synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count);
+
+#endif
