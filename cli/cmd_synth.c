@@ -37,6 +37,13 @@ static const char help[] =
     "  faulting  Poisson faulting (Mandelbrot): random steps in 1D, random lines in 2D;\n"
     "            --density D faults per sample (1D) or lines per (nx + ny) (2D); no model:\n"
     "            the spectrum is f^-2 (1D), k^-3 radially (2D)\n"
+    "  sparse    sparse convolution (Lewis GI '86): Poisson impulses in cells, convolved with\n"
+    "            a kernel: the model's (R = h * h), --kernel EXPR in x, y (t, r), or --exemplar\n"
+    "            FILE (Hann-windowed, for texture resynthesis); --density D impulses per\n"
+    "            cell (default 1), --cell C and --radius R in samples, --wrap for a periodic\n"
+    "            tile, --origin X[,Y] for a window of the infinite field, --angle EXPR in\n"
+    "            x, y rotating the kernel with position; the report predicts the excess\n"
+    "            kurtosis 3 sum h^4 / (lambda (sum h^2)^2)\n"
     "  midpoint  midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
     "            only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
     "            (1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
@@ -119,6 +126,9 @@ int cmd_synth(int argc, char **argv)
         {"origin", required_argument, 0, 'O'},     {"seed-image", required_argument, 0, 'I'},
         {"H", required_argument, 0, 'u'},          {"variance-scale", required_argument, 0, 'v'},
         {"random-neighborhoods", required_argument, 0, 'R'}, {"density", required_argument, 0, 'D'},
+        {"kernel", required_argument, 0, 'K'},     {"exemplar", required_argument, 0, 'E'},
+        {"angle", required_argument, 0, 'A'},      {"radius", required_argument, 0, 'r'},
+        {"cell", required_argument, 0, 'C'},       {"wrap", no_argument, 0, 'W'},
         {0}};
     const char *acf = NULL, *spec = NULL, *size = NULL, *spacing = NULL, *out = NULL, *preview = NULL;
     const char *tmp, *ptmp = NULL, *origin = NULL;
@@ -192,6 +202,12 @@ int cmd_synth(int argc, char **argv)
                 cli_die(2, "--density: expected a positive number, got \"%s\"", optarg);
             given_density = 1;
             break;
+        case 'K': job.kernel = optarg; break;
+        case 'E': job.exemplar = optarg; break;
+        case 'A': job.angle = optarg; break;
+        case 'r': job.radius = (int)cli_parse_count("--radius", optarg, 1); break;
+        case 'C': job.cell = (int)cli_parse_count("--cell", optarg, 1); break;
+        case 'W': job.wrap = 1; break;
         case 'h': fputs(help, stdout); return 0;
         default: cli_bad_option("synth", c, argv);
         }
@@ -206,41 +222,54 @@ int cmd_synth(int argc, char **argv)
         void (*run)(const synth_job *, nl_field *, synth_result *);
     } methods[] = {{"fft", synth_fft_run},         {"subdiv", synth_subdiv_run},
                    {"midpoint", synth_midpoint_run}, {"circulant", synth_circulant_run},
-                   {"cholesky", synth_cholesky_run}, {"faulting", synth_faulting_run}};
+                   {"cholesky", synth_cholesky_run}, {"faulting", synth_faulting_run},
+                   {"sparse", synth_sparse_run}};
     void (*run)(const synth_job *, nl_field *, synth_result *) = NULL;
     for (size_t i = 0; i < sizeof methods / sizeof *methods; i++)
         if (strcmp(job.method, methods[i].name) == 0)
             run = methods[i].run;
     if (!run) {
-        static const char *const planned[] = {"sparse", "lattice", "rank1"};
+        static const char *const planned[] = {"lattice", "rank1"};
         for (size_t i = 0; i < sizeof planned / sizeof *planned; i++)
             if (strcmp(job.method, planned[i]) == 0)
                 cli_die(2, "synth: method \"%s\" is not available in this version (available: fft, subdiv, "
-                        "midpoint, circulant, cholesky, faulting)", job.method);
-        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant, cholesky or faulting)",
+                        "midpoint, circulant, cholesky, faulting, sparse)", job.method);
+        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant, cholesky, faulting or "
+                "sparse)",
                 job.method);
     }
     only_for("--levels", given_L, job.method, "subdiv midpoint");
     only_for("--neighborhood", given_N, job.method, "subdiv");
     only_for("--tol", given_tol, job.method, "subdiv");
     only_for("--nonperiodic", job.nonperiodic, job.method, "subdiv");
-    only_for("--origin", origin != NULL, job.method, "subdiv");
+    only_for("--origin", origin != NULL, job.method, "subdiv sparse");
+    only_for("--kernel", job.kernel != NULL, job.method, "sparse");
+    only_for("--exemplar", job.exemplar != NULL, job.method, "sparse");
+    only_for("--angle", job.angle != NULL, job.method, "sparse");
+    only_for("--radius", job.radius != 0, job.method, "sparse");
+    only_for("--cell", job.cell != 0, job.method, "sparse");
+    only_for("--wrap", job.wrap, job.method, "sparse");
     only_for("--seed-image", job.seed_image != NULL, job.method, "subdiv");
     only_for("--random-neighborhoods", job.random_nb != 0, job.method, "subdiv");
     only_for("--H", !isnan(job.H), job.method, "midpoint");
     only_for("--variance-scale", given_vs, job.method, "midpoint");
     only_for("--density", given_density, job.method, "faulting sparse");
-    if (origin && !job.nonperiodic)
+    if (origin && !job.nonperiodic && strcmp(job.method, "subdiv") == 0)
         cli_die(2, "synth subdiv: --origin needs --nonperiodic (a periodic field has no origin)");
     if (origin)
         parse_origin(origin, job.origin);
     if (strcmp(job.method, "midpoint") == 0 && !isnan(job.H) && (acf || spec))
         cli_die(2, "synth midpoint: give either --H or a power-law model, not both");
-    int needs_model = !(strcmp(job.method, "midpoint") == 0 && !isnan(job.H)) && strcmp(job.method, "faulting");
+    int needs_model = !(strcmp(job.method, "midpoint") == 0 && !isnan(job.H)) && strcmp(job.method, "faulting") &&
+                      !(strcmp(job.method, "sparse") == 0 && (job.kernel || job.exemplar));
     if (!needs_model && (acf || spec) && strcmp(job.method, "faulting") == 0)
         cli_die(2, "synth faulting: takes no model (its spectrum is f^-2); got --acf/--spectrum");
-    if (needs_model && !acf == !spec)
+    if (needs_model && !acf == !spec) {
+        if (strcmp(job.method, "sparse") == 0)
+            cli_die(2, "synth sparse: expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or "
+                    "--exemplar FILE");
         cli_die(2, "synth: expected exactly one of --acf SPEC or --spectrum SPEC");
+    }
     if (!size)
         cli_die(2, "synth: --size: expected N, NxM or NxMxK");
     if (!out)

@@ -24,6 +24,12 @@ typedef struct {
     double H;              /* midpoint: Hurst exponent, NAN if unset */
     double vscale;         /* midpoint: --variance-scale factor per level */
     double density;        /* faulting, sparse: --density */
+    const char *kernel;    /* sparse: --kernel EXPR */
+    const char *exemplar;  /* sparse: --exemplar FILE */
+    const char *angle;     /* sparse: --angle EXPR */
+    int radius;            /* sparse: --radius, 0 = automatic */
+    int cell;              /* sparse: --cell, 0 = the radius */
+    int wrap;              /* sparse: --wrap */
 } synth_job;
 
 typedef struct {
@@ -41,5 +47,6 @@ void synth_midpoint_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_circulant_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_cholesky_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_faulting_run(const synth_job *job, nl_field *f, synth_result *r);
+void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r);
 
 #endif

@@ -6,6 +6,7 @@
 #include "../synth/circulant.h"
 #include "../synth/faulting.h"
 #include "../synth/fft.h"
+#include "../synth/sparse.h"
 #include "../synth/subdiv.h"
 
 #include <math.h>
@@ -255,4 +256,49 @@ void synth_faulting_run(const synth_job *job, nl_field *f, synth_result *r)
     /* the preview is centred on 0: shift the range by the mean */
     r->offset = mean;
     r->report = json_pack("{s:I,s:f}", "faults", (json_int_t)K, "density", job->density);
+}
+
+void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r)
+{
+    synth_sparse_plan *p;
+    synth_sparse_info info;
+    double mean = 0;
+    int st, given = (job->m != NULL) + (job->kernel != NULL) + (job->exemplar != NULL);
+    if (job->dim > 2)
+        cli_die(2, "synth sparse: expected a 1D or 2D --size, got %dD", job->dim);
+    if (given != 1)
+        cli_die(2, "synth sparse: expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE");
+    if (job->m)
+        st = synth_sparse_plan_model(job->m, job->dim, job->h, job->radius, job->cell, job->density, &p);
+    else if (job->kernel)
+        st = synth_sparse_plan_expr(job->kernel, job->dim, job->radius ? job->radius : 16, job->cell, job->density,
+                                    &p);
+    else {
+        nl_field *img = cli_read_field(job->exemplar, NULL);
+        if (job->dim != 2)
+            cli_die(2, "--exemplar: expected a 2D --size");
+        mean = nl_field_mean(img);
+        st = synth_sparse_plan_image(img, job->cell, job->density, &p);
+        nl_field_free(img);
+    }
+    if (st)
+        cli_die_status(st);
+    if (job->angle && (st = synth_sparse_set_angle(p, job->angle)))
+        cli_die_status(st);
+    synth_sparse_plan_info(p, &info);
+    if (job->wrap && job->nonperiodic)
+        cli_die(2, "synth sparse: --wrap and --origin exclude each other");
+    if ((st = synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f)))
+        cli_die_status(st);
+    for (size_t i = 0; mean != 0 && i < f->count; i++)
+        f->data[i] += mean;
+    synth_sparse_plan_free(p);
+    snprintf(r->method, sizeof r->method, "sparse:radius=%d,cell=%d,density=%.17g%s%s%s%s%s%s", info.radius, info.cell,
+             info.density, job->wrap ? ",wrap" : "", job->kernel ? ",kernel=" : "", job->kernel ? job->kernel : "",
+             job->exemplar ? ",exemplar=" : "", job->exemplar ? job->exemplar : "", job->angle ? ",angle" : "");
+    r->sd = sqrt(info.variance);
+    r->offset = mean;
+    r->report = json_pack("{s:i,s:i,s:f,s:f,s:f,s:f}", "radius", info.radius, "cell", info.cell, "density",
+                          info.density, "variance", info.variance, "excess_kurtosis", info.kurtosis, "truncated_energy",
+                          info.truncated);
 }

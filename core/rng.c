@@ -1,13 +1,14 @@
 /* Philox4x32-10 counter-based Gaussian numbers. */
 #include "rng.h"
 
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <Random123/philox.h>
 #include <Random123/u01fixedpt.h>
 
-static philox4x32_ctr_t block(uint64_t seed, uint32_t stream, uint64_t index)
+static philox4x32_ctr_t block2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub)
 {
-    philox4x32_ctr_t c = {{(uint32_t)index, (uint32_t)(index >> 32), stream, 0}};
+    philox4x32_ctr_t c = {{(uint32_t)index, (uint32_t)(index >> 32), stream, sub}};
     philox4x32_key_t k = {{(uint32_t)seed, (uint32_t)(seed >> 32)}};
     return philox4x32(c, k);
 }
@@ -16,15 +17,41 @@ static uint64_t join(uint32_t lo, uint32_t hi) { return ((uint64_t)hi << 32) | l
 
 double nl_rng_uniform(uint64_t seed, uint32_t stream, uint64_t index)
 {
-    philox4x32_ctr_t r = block(seed, stream, index);
-    return u01fixedpt_open_open_64_double(join(r.v[0], r.v[1]));
+    return nl_rng_uniform2(seed, stream, index, 0);
 }
 
 double nl_rng_gauss(uint64_t seed, uint32_t stream, uint64_t index)
 {
-    philox4x32_ctr_t r = block(seed, stream, index);
+    return nl_rng_gauss2(seed, stream, index, 0);
+}
+
+double nl_rng_uniform2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub)
+{
+    philox4x32_ctr_t r = block2(seed, stream, index, sub);
+    return u01fixedpt_open_open_64_double(join(r.v[0], r.v[1]));
+}
+
+double nl_rng_gauss2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub)
+{
+    philox4x32_ctr_t r = block2(seed, stream, index, sub);
     double u1 = u01fixedpt_open_open_64_double(join(r.v[0], r.v[1]));
     double u2 = u01fixedpt_open_open_64_double(join(r.v[2], r.v[3]));
     /* Box and Muller (1958) */
     return sqrt(-2.0 * log(u1)) * cos(2.0 * M_PI * u2);
+}
+
+unsigned long nl_rng_poisson(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub, double mean)
+{
+    double u = nl_rng_uniform2(seed, stream, index, sub);
+    unsigned long lo = 0, hi = (unsigned long)(mean + 20 * sqrt(mean) + 20);
+    if (!(mean > 0))
+        return 0;
+    while (lo < hi) {
+        unsigned long mid = lo + (hi - lo) / 2;
+        if (gsl_cdf_poisson_P((unsigned)mid, mean) < u)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
 }

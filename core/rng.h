@@ -24,4 +24,13 @@ double nl_rng_uniform(uint64_t seed, uint32_t stream, uint64_t index);
 /* Standard normal N(0, 1). */
 double nl_rng_gauss(uint64_t seed, uint32_t stream, uint64_t index);
 
+/* The same with a fourth counter word `sub` (0 in the two above), for
+ * numbers indexed by two integers such as (cell, impulse). */
+double nl_rng_uniform2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub);
+double nl_rng_gauss2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub);
+
+/* Poisson(mean) by inversion of its CDF (GSL) at nl_rng_uniform2(seed,
+ * stream, index, sub); mean <= 1e8. */
+unsigned long nl_rng_poisson(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub, double mean);
+
 #endif

@@ -3,24 +3,9 @@
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
-#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* Poisson(mean) count by inversion of the CDF. */
-static size_t poisson_count(double mean, double u)
-{
-    size_t lo = 0, hi = (size_t)(mean + 20 * sqrt(mean) + 20);
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (gsl_cdf_poisson_P((unsigned)mid, mean) < u)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
-}
 
 int synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count)
 {
@@ -33,7 +18,7 @@ int synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count)
     mean = density * (f->dim == 1 ? (double)nx : (double)(nx + ny));
     if (mean > 1e8)
         return NL_ERROR(NL_ETOOBIG, "density: %g faults are too many; expected at most 1e8", mean);
-    K = poisson_count(mean, nl_rng_uniform(seed, SYNTH_FAULT_STREAM + 1, 0));
+    K = nl_rng_poisson(seed, SYNTH_FAULT_STREAM + 1, 0, 0, mean);
     memset(f->data, 0, f->count * sizeof *f->data);
     if (f->dim == 1) {
         double *step = calloc(nx + 1, sizeof *step), s = 0;

@@ -54,7 +54,13 @@ Test(cli, synth_error_paths)
     bad("synth fft --acf markov -o out.exr", "--size");
     bad("synth fft --acf markov --size 64", "-o");
     bad("synth wavelets --acf markov --size 64 -o out.exr", "\"wavelets\"");
-    bad("synth sparse --acf markov --size 64 -o out.exr", "\"sparse\"");
+    bad("synth lattice --acf markov --size 64 -o out.exr", "\"lattice\"");
+    bad("synth sparse --size 64 -o out.tsv", "exactly one kernel");
+    bad("synth sparse --kernel 'exp(-r)' --acf markov --size 64 -o out.tsv", "exactly one kernel");
+    bad("synth sparse --kernel 'exp(-q)' --size 64 -o out.tsv", "\"q\"");
+    bad("synth sparse --acf markov --size 64 --density -1 -o out.tsv", "\"-1\"");
+    bad("synth sparse --kernel 'exp(-r)' --radius 40 --wrap --size 64x64 -o out.exr", "larger than the tile");
+    bad("synth sparse --exemplar /nonexistent.png --size 64x64 -o out.exr", "/nonexistent.png");
     bad("synth cholesky --acf markov --size 100x100 -o out.exr", "10000");
     bad("synth circulant --acf gauss-osc:omega=2,scale=3 --size 64x64 -o out.exr", "cannot be embedded");
     bad("synth subdiv --acf markov --size 100 --levels 3 -o out.exr", "100");

@@ -1,0 +1,429 @@
+/* Sparse convolution on the lattice: kernels and gather evaluation. */
+#include "sparse.h"
+#include "../core/nl_error.h"
+#include "../core/rng.h"
+#include "../core/wk.h"
+
+#include <complex.h>
+#include <fftw3.h>
+#include <math.h>
+#include <matheval.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct synth_sparse_plan {
+    int dim;            /* 1 or 2 */
+    int radius;         /* R: table covers offsets -R..R per axis */
+    int cell;           /* C */
+    double density;     /* impulses per cell */
+    double *h;          /* (2R+1)^dim kernel table, x fastest */
+    void *angle;        /* libmatheval theta(x, y) or NULL */
+    synth_sparse_info info;
+};
+
+void synth_sparse_plan_free(synth_sparse_plan *p)
+{
+    if (!p)
+        return;
+    if (p->angle)
+        evaluator_destroy(p->angle);
+    free(p->h);
+    free(p);
+}
+
+static size_t table_size(int dim, int R) { return dim == 1 ? (size_t)(2 * R + 1) : (size_t)(2 * R + 1) * (2 * R + 1); }
+
+/* Finish a plan: scale h so that the variance is `variance`, fill info. */
+static int finish(synth_sparse_plan *p, double variance)
+{
+    size_t n = table_size(p->dim, p->radius);
+    double s2 = 0, s4 = 0, lambda = p->density / pow(p->cell, p->dim), k;
+    for (size_t i = 0; i < n; i++)
+        s2 += p->h[i] * p->h[i];
+    if (!(s2 > 0))
+        return NL_ERROR(NL_EINVAL, "sparse: the kernel is zero everywhere within the radius");
+    k = sqrt(variance / (lambda * s2));
+    s2 = 0;
+    for (size_t i = 0; i < n; i++) {
+        p->h[i] *= k;
+        s2 += p->h[i] * p->h[i];
+        s4 += p->h[i] * p->h[i] * p->h[i] * p->h[i];
+    }
+    p->info.radius = p->radius;
+    p->info.cell = p->cell;
+    p->info.density = p->density;
+    p->info.kernel_energy = s2;
+    p->info.variance = lambda * s2;
+    p->info.kurtosis = 3 * s4 / (lambda * s2 * s2);
+    return NL_OK;
+}
+
+static int new_plan(int dim, int radius, int cell, double density, synth_sparse_plan **out)
+{
+    synth_sparse_plan *p;
+    *out = NULL;
+    if (dim != 1 && dim != 2)
+        return NL_ERROR(NL_EINVAL, "sparse: expected dimension 1 or 2, got %d", dim);
+    if (!(density > 0) || !isfinite(density) || density > 1e6)
+        return NL_ERROR(NL_EINVAL, "density: expected a positive number of impulses per cell (at most 1e6), got %g",
+                        density);
+    if (radius < 1 || radius > 4096)
+        return NL_ERROR(NL_EINVAL, "radius: expected 1 to 4096 samples, got %d", radius);
+    if (cell < 0 || cell > 4096)
+        return NL_ERROR(NL_EINVAL, "cell: expected 1 to 4096 samples, got %d", cell);
+    p = calloc(1, sizeof *p);
+    if (!p || !(p->h = calloc(table_size(dim, radius), sizeof *p->h))) {
+        free(p);
+        return NL_ERROR(NL_ENOMEM, "out of memory for the kernel");
+    }
+    p->dim = dim;
+    p->radius = radius;
+    if (cell > 0)
+        p->cell = cell;
+    else
+        for (p->cell = 4; p->cell < radius; p->cell *= 2)
+            ;
+    p->density = density;
+    *out = p;
+    return NL_OK;
+}
+
+int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
+                            synth_sparse_plan **out)
+{
+    size_t mm[2], M, span;
+    double hh[2] = {h ? h[0] : 1, h && dim == 2 ? h[1] : 1}, cellh = hh[0] * (dim == 2 ? hh[1] : 1);
+    double total = 0, kept = 0, zero[2] = {0, 0};
+    nl_field *S;
+    fftw_complex *g;
+    fftw_plan fp;
+    int dims[2], st, R = radius;
+    if (dim != 1 && dim != 2)
+        return NL_ERROR(NL_EINVAL, "sparse: expected dimension 1 or 2, got %d", dim);
+    /* periodic grid for h = IDFT(sqrt(lambda)) / N: large enough that the
+     * kernel has decayed where it wraps */
+    span = radius > 0 ? (size_t)(4 * radius + 4) : (dim == 1 ? 8192 : 512);
+    for (mm[0] = 64; mm[0] < span; mm[0] *= 2)
+        ;
+    mm[1] = dim == 2 ? mm[0] : 1;
+    M = mm[0] * mm[1];
+    S = nl_field_alloc(dim, mm, hh, &st);
+    if (!S)
+        return st;
+    if ((st = nl_wk_sample_spectrum(m, S))) {
+        nl_field_free(S);
+        return st;
+    }
+    g = fftw_alloc_complex(M);
+    for (int a = 0; a < dim; a++)
+        dims[a] = (int)mm[dim - 1 - a];
+    fp = g ? fftw_plan_dft(dim, dims, g, g, FFTW_BACKWARD, FFTW_ESTIMATE) : NULL;
+    if (!fp) {
+        fftw_free(g), nl_field_free(S);
+        return NL_ERROR(NL_ENOMEM, "sparse: cannot plan the kernel FFT");
+    }
+    for (size_t i = 0; i < M; i++)
+        g[i] = sqrt(fmax(S->data[i] / cellh, 0));
+    fftw_execute(fp);
+    fftw_destroy_plan(fp);
+    nl_field_free(S);
+    for (size_t i = 0; i < M; i++) {
+        double v = creal(g[i]) / (double)M;
+        g[i] = v;
+        total += v * v;
+    }
+    if (R <= 0) {
+        /* the smallest box keeping all but 1e-4 of the energy */
+        for (R = 1; R < (int)mm[0] / 4; R++) {
+            double in = 0;
+            for (long j = dim == 2 ? -R : 0; j <= (dim == 2 ? R : 0); j++)
+                for (long i = -R; i <= R; i++) {
+                    double v = creal(g[((j + (long)mm[1]) % (long)mm[1]) * mm[0] + (size_t)((i + (long)mm[0]) % (long)mm[0])]);
+                    in += v * v;
+                }
+            if (in >= (1 - SPARSE_ENERGY_TOL) * total)
+                break;
+        }
+    }
+    if ((st = new_plan(dim, R, cell, density, out))) {
+        fftw_free(g);
+        return st;
+    }
+    for (long j = dim == 2 ? -R : 0; j <= (dim == 2 ? R : 0); j++)
+        for (long i = -R; i <= R; i++) {
+            double v = creal(g[((j + (long)mm[1]) % (long)mm[1]) * mm[0] + (size_t)((i + (long)mm[0]) % (long)mm[0])]);
+            (*out)->h[(size_t)(dim == 2 ? (j + R) * (2 * R + 1) : 0) + (size_t)(i + R)] = v;
+            kept += v * v;
+        }
+    fftw_free(g);
+    (*out)->info.truncated = total > 0 ? 1 - kept / total : 0;
+    /* h * h = R within the box: the variance R(0) less the truncated energy */
+    st = finish(*out, nl_model_acf(m, dim, zero) * (1 - (*out)->info.truncated));
+    if (isnan(nl_model_acf(m, dim, zero)))
+        st = finish(*out, total * (1 - (*out)->info.truncated));
+    if (st) {
+        synth_sparse_plan_free(*out);
+        *out = NULL;
+    }
+    return st;
+}
+
+int synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
+                           synth_sparse_plan **out)
+{
+    static const char *const names[] = {"x", "y", "t", "r"};
+    void *ev;
+    char *copy = strdup(expr);
+    int st;
+    if (!copy)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    ev = evaluator_create(copy);
+    free(copy);
+    if (!ev)
+        return NL_ERROR(NL_EINVAL, "kernel: malformed expression \"%s\"", expr);
+    {
+        char **vars;
+        int nv;
+        evaluator_get_variables(ev, &vars, &nv);
+        for (int i = 0; i < nv; i++)
+            if (strcmp(vars[i], "x") && strcmp(vars[i], "y") && strcmp(vars[i], "t") && strcmp(vars[i], "r")) {
+                st = NL_ERROR(NL_EINVAL, "kernel: unknown variable \"%s\" in \"%s\" (expected x, y, t, r)", vars[i],
+                              expr);
+                evaluator_destroy(ev);
+                return st;
+            }
+    }
+    if ((st = new_plan(dim, radius, cell, density, out))) {
+        evaluator_destroy(ev);
+        return st;
+    }
+    for (int j = dim == 2 ? -radius : 0; j <= (dim == 2 ? radius : 0); j++)
+        for (int i = -radius; i <= radius; i++) {
+            double v[4] = {i, j, i, hypot(i, j)};
+            double y = evaluator_evaluate(ev, 4, (char **)names, v);
+            if (!isfinite(y)) {
+                evaluator_destroy(ev);
+                synth_sparse_plan_free(*out);
+                *out = NULL;
+                return NL_ERROR(NL_EINVAL, "kernel: \"%s\" is not finite at (%d, %d)", expr, i, j);
+            }
+            (*out)->h[(size_t)(dim == 2 ? (j + radius) * (2 * radius + 1) : 0) + (size_t)(i + radius)] = y;
+        }
+    evaluator_destroy(ev);
+    if ((st = finish(*out, 1.0))) {
+        synth_sparse_plan_free(*out);
+        *out = NULL;
+    }
+    return st;
+}
+
+int synth_sparse_plan_image(const nl_field *img, int cell, double density, synth_sparse_plan **out)
+{
+    size_t w = img->n[0], hgt = img->dim == 2 ? img->n[1] : 1;
+    int R = (int)((w > hgt ? w : hgt) / 2), st;
+    double mean = 0, var = 0;
+    if (img->dim != 2)
+        return NL_ERROR(NL_EINVAL, "exemplar: expected a 2D image, got %dD", img->dim);
+    if ((st = new_plan(2, R, cell, density, out)))
+        return st;
+    for (size_t i = 0; i < img->count; i++)
+        mean += img->data[i] / (double)img->count;
+    for (size_t i = 0; i < img->count; i++)
+        var += (img->data[i] - mean) * (img->data[i] - mean) / (double)img->count;
+    if (!(var > 0)) {
+        synth_sparse_plan_free(*out);
+        *out = NULL;
+        return NL_ERROR(NL_EINVAL, "exemplar: the image is constant");
+    }
+    for (size_t j = 0; j < hgt; j++)
+        for (size_t i = 0; i < w; i++) {
+            /* Hann window over the exemplar, centred in the table */
+            double wx = 0.5 * (1 - cos(2 * M_PI * ((double)i + 0.5) / (double)w));
+            double wy = 0.5 * (1 - cos(2 * M_PI * ((double)j + 0.5) / (double)hgt));
+            long ti = (long)i - (long)w / 2 + R, tj = (long)j - (long)hgt / 2 + R;
+            (*out)->h[(size_t)tj * (size_t)(2 * R + 1) + (size_t)ti] = (img->data[j * w + i] - mean) * wx * wy;
+        }
+    if ((st = finish(*out, var))) {
+        synth_sparse_plan_free(*out);
+        *out = NULL;
+    }
+    return st;
+}
+
+int synth_sparse_set_angle(synth_sparse_plan *p, const char *expr)
+{
+    char *copy, **vars;
+    int nv;
+    if (p->dim != 2)
+        return NL_ERROR(NL_EINVAL, "angle: a rotated kernel needs a 2D field");
+    copy = strdup(expr);
+    if (!copy)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    if (p->angle)
+        evaluator_destroy(p->angle);
+    p->angle = evaluator_create(copy);
+    free(copy);
+    if (!p->angle)
+        return NL_ERROR(NL_EINVAL, "angle: malformed expression \"%s\"", expr);
+    evaluator_get_variables(p->angle, &vars, &nv);
+    for (int i = 0; i < nv; i++)
+        if (strcmp(vars[i], "x") && strcmp(vars[i], "y"))
+            return NL_ERROR(NL_EINVAL, "angle: unknown variable \"%s\" in \"%s\" (expected x, y)", vars[i], expr);
+    return NL_OK;
+}
+
+void synth_sparse_plan_info(const synth_sparse_plan *p, synth_sparse_info *info) { *info = p->info; }
+
+/* The impulses of the cells cx0..cx1 x cy0..cy1 (absolute cell indices). */
+typedef struct {
+    long cx0, cy0, ncx, ncy;  /* cell range */
+    size_t *start;            /* ncx * ncy + 1 offsets into the arrays */
+    long *px, *py;            /* absolute lattice positions */
+    double *a, *c, *s;        /* amplitude, cos and sin of the kernel angle */
+} impulses;
+
+static void impulses_free(impulses *im)
+{
+    free(im->start), free(im->px), free(im->py), free(im->a), free(im->c), free(im->s);
+}
+
+static uint64_t cell_id(long cx, long cy) { return ((uint64_t)(uint32_t)cy << 32) | (uint32_t)cx; }
+
+static int make_impulses(const synth_sparse_plan *p, uint64_t seed, long cx0, long cx1, long cy0, long cy1,
+                         impulses *im)
+{
+    static const char *const names[] = {"x", "y"};
+    size_t ncell, total = 0, cap;
+    memset(im, 0, sizeof *im);
+    im->cx0 = cx0, im->cy0 = cy0, im->ncx = cx1 - cx0 + 1, im->ncy = cy1 - cy0 + 1;
+    ncell = (size_t)im->ncx * (size_t)im->ncy;
+    im->start = malloc((ncell + 1) * sizeof *im->start);
+    cap = (size_t)(p->density * (double)ncell * 1.5) + 64;
+    im->px = malloc(cap * sizeof *im->px), im->py = malloc(cap * sizeof *im->py);
+    im->a = malloc(cap * sizeof *im->a), im->c = malloc(cap * sizeof *im->c), im->s = malloc(cap * sizeof *im->s);
+    if (!im->start || !im->px || !im->py || !im->a || !im->c || !im->s) {
+        impulses_free(im);
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu cells of impulses", ncell);
+    }
+    for (long cy = cy0; cy <= cy1; cy++)
+        for (long cx = cx0; cx <= cx1; cx++) {
+            uint64_t id = cell_id(cx, p->dim == 2 ? cy : 0);
+            unsigned long k, K = nl_rng_poisson(seed, SPARSE_STREAM, id, 0, p->density);
+            im->start[(cy - cy0) * im->ncx + (cx - cx0)] = total;
+            for (k = 0; k < K; k++) {
+                if (total == cap) {
+                    cap *= 2;
+                    long *nx = realloc(im->px, cap * sizeof *nx), *ny = realloc(im->py, cap * sizeof *ny);
+                    double *na = realloc(im->a, cap * sizeof *na), *nc = realloc(im->c, cap * sizeof *nc),
+                           *ns = realloc(im->s, cap * sizeof *ns);
+                    if (nx) im->px = nx;
+                    if (ny) im->py = ny;
+                    if (na) im->a = na;
+                    if (nc) im->c = nc;
+                    if (ns) im->s = ns;
+                    if (!nx || !ny || !na || !nc || !ns) {
+                        impulses_free(im);
+                        return NL_ERROR(NL_ENOMEM, "out of memory for impulses");
+                    }
+                }
+                im->px[total] = cx * p->cell +
+                                (long)(nl_rng_uniform2(seed, SPARSE_STREAM + 1, id, (uint32_t)k) * p->cell);
+                im->py[total] = p->dim == 2 ? cy * p->cell + (long)(nl_rng_uniform2(seed, SPARSE_STREAM + 2, id,
+                                                                                   (uint32_t)k) * p->cell)
+                                            : 0;
+                im->a[total] = nl_rng_gauss2(seed, SPARSE_STREAM + 3, id, (uint32_t)k);
+                im->c[total] = 1, im->s[total] = 0;
+                if (p->angle) {
+                    double v[2] = {(double)im->px[total], (double)im->py[total]};
+                    double th = evaluator_evaluate(p->angle, 2, (char **)names, v);
+                    im->c[total] = cos(th), im->s[total] = sin(th);
+                }
+                total++;
+            }
+        }
+    im->start[ncell] = total;
+    return NL_OK;
+}
+
+/* Bilinear lookup of the kernel at a non-integer offset; 0 outside. */
+static double kernel_at(const synth_sparse_plan *p, double u, double v)
+{
+    int R = p->radius, w = 2 * R + 1;
+    double fu = floor(u), fv = floor(v), au = u - fu, av = v - fv, s = 0;
+    for (int dv = 0; dv <= 1; dv++)
+        for (int du = 0; du <= 1; du++) {
+            long i = (long)fu + du, j = (long)fv + dv;
+            if (i < -R || i > R || j < -R || j > R)
+                continue;
+            s += (du ? au : 1 - au) * (dv ? av : 1 - av) * p->h[(size_t)(j + R) * (size_t)w + (size_t)(i + R)];
+        }
+    return s;
+}
+
+static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+int synth_sparse_execute(const synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out)
+{
+    const int dim = p->dim, R = p->radius, C = p->cell, w = 2 * R + 1;
+    const long reach = p->angle ? (long)ceil(R * M_SQRT2) + 1 : R;
+    long nx = (long)out->n[0], ny = dim == 2 ? (long)out->n[1] : 1, ox = 0, oy = 0;
+    long cx0, cx1, cy0 = 0, cy1 = 0;
+    impulses im;
+    int st;
+    if (out->dim != dim)
+        return NL_ERROR(NL_EINVAL, "sparse: a %dD kernel cannot fill a %dD field", dim, out->dim);
+    if (wrap) {
+        if (origin)
+            return NL_ERROR(NL_EINVAL, "sparse: a periodic tile has no origin");
+        if (nx % C || (dim == 2 && ny % C))
+            return NL_ERROR(NL_EINVAL, "size: a periodic tile must be a multiple of the cell size %d, got %ld%s%.0ld",
+                            C, nx, dim == 2 ? "x" : "", dim == 2 ? ny : 0L);
+        if (2 * reach + 1 > nx || (dim == 2 && 2 * reach + 1 > ny))
+            return NL_ERROR(NL_EINVAL, "radius: the kernel (%ld samples across) is larger than the tile", 2 * reach + 1);
+        cx0 = 0, cx1 = nx / C - 1;
+        if (dim == 2)
+            cy0 = 0, cy1 = ny / C - 1;
+    } else {
+        if (origin)
+            ox = origin[0], oy = dim == 2 ? origin[1] : 0;
+        cx0 = floordiv(ox - reach, C), cx1 = floordiv(ox + nx - 1 + reach, C);
+        if (dim == 2)
+            cy0 = floordiv(oy - reach, C), cy1 = floordiv(oy + ny - 1 + reach, C);
+    }
+    if ((st = make_impulses(p, seed, cx0, cx1, cy0, cy1, &im)))
+        return st;
+#pragma omp parallel for schedule(dynamic, 8) if (out->count > 65536)
+    for (long j = 0; j < ny; j++)
+        for (long i = 0; i < nx; i++) {
+            long X = ox + i, Y = oy + j;
+            long a0 = floordiv(X - reach, C), a1 = floordiv(X + reach, C);
+            long b0 = dim == 2 ? floordiv(Y - reach, C) : 0, b1 = dim == 2 ? floordiv(Y + reach, C) : 0;
+            double s = 0;
+            for (long b = b0; b <= b1; b++)
+                for (long a = a0; a <= a1; a++) {
+                    long ca = wrap ? ((a % (im.ncx)) + im.ncx) % im.ncx : a - im.cx0;
+                    long cb = wrap ? ((b % (im.ncy)) + im.ncy) % im.ncy : b - im.cy0;
+                    size_t c = (size_t)(cb * im.ncx + ca);
+                    for (size_t k = im.start[c]; k < im.start[c + 1]; k++) {
+                        long dx = X - im.px[k], dy = dim == 2 ? Y - im.py[k] : 0;
+                        if (wrap) {
+                            /* the image of the impulse in the cell a, b */
+                            dx = X - (im.px[k] + (a - ca) * C);
+                            if (dim == 2)
+                                dy = Y - (im.py[k] + (b - cb) * C);
+                        }
+                        if (!p->angle) {
+                            if (dx < -R || dx > R || dy < -R || dy > R)
+                                continue;
+                            s += im.a[k] * p->h[(size_t)(dim == 2 ? (dy + R) * w + (dx + R) : dx + R)];
+                        } else {
+                            s += im.a[k] * kernel_at(p, im.c[k] * (double)dx + im.s[k] * (double)dy,
+                                                     -im.s[k] * (double)dx + im.c[k] * (double)dy);
+                        }
+                    }
+                }
+            out->data[j * nx + i] = s;
+        }
+    impulses_free(&im);
+    return NL_OK;
+}

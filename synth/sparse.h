@@ -1,0 +1,80 @@
+/* Sparse convolution: a shaped Poisson point process (Lewis GI '86, eq. 2).
+ *
+ *     x(p) = sum_i a_i h(p - p_i)
+ * with impulses p_i on the lattice of the output grid, amplitudes a_i ~
+ * N(0, 1), and the kernel h tabulated on the same lattice within
+ * |offset_a| <= radius samples.  The plane is split into cells of `cell`
+ * samples per axis; cell c holds a Poisson(density) number of impulses
+ * (count: nl_rng_uniform2(seed, SPARSE_STREAM, c, 0) by inversion; impulse
+ * k: position and amplitude from nl_rng_uniform2 / nl_rng_gauss2(seed,
+ * SPARSE_STREAM + 1..3, c, k)), c the cell index packed as in subdivision.
+ * Any sample is a pure function of the seed and its position: it sums the
+ * impulses of the cells within the radius, in cell order, so a sample
+ * computed alone equals the same sample of any grid, bit for bit.
+ *
+ * Second-order theory: x is stationary with R(d) = lambda E[a^2] sum_q
+ * h(q) h(q + d), lambda = density / cell^dim impulses per sample (eq. 1 of
+ * GI '86: R is the kernel's autocorrelation).  Higher cumulants are
+ * kappa_n = lambda E[a^n] sum h^n, so the excess kurtosis is
+ *     3 sum h^4 / (lambda (sum h^2)^2),
+ * which vanishes (the field becomes Gaussian) as the density grows.
+ *
+ * Kernels:
+ *  - model: h = IDFT(sqrt(lambda_k)) / N on a periodic grid twice the radius
+ *    (lambda_k the model's covariance eigenvalues, as in synth/fft.h), so that
+ *    h * h = R at every grid lag, truncated at the radius (the energy lost
+ *    is reported), then scaled so that the field variance is R(0);
+ *  - expression in x, y (t and r as for models), scaled to unit variance;
+ *  - an exemplar: the image minus its mean, times a Hann window, scaled to
+ *    the exemplar's variance (texture resynthesis).
+ * An optional angle expression theta(x, y) (radians, in grid samples)
+ * rotates the kernel at each impulse: h(R(-theta(p_i)) (p - p_i)), bilinear
+ * in the table, for non-stationary directional noise. */
+#ifndef SYNTH_SPARSE_H
+#define SYNTH_SPARSE_H
+
+#include "../core/field.h"
+#include "../core/model.h"
+
+#include <stdint.h>
+
+#define SPARSE_STREAM 400u
+
+/* Automatic radius: the kernel energy left outside is below this fraction;
+ * by Cauchy-Schwarz the ACF then changes by at most sqrt(1e-6) = 1e-3 R(0). */
+#define SPARSE_ENERGY_TOL 1e-6
+
+typedef struct synth_sparse_plan synth_sparse_plan;
+
+typedef struct {
+    int radius;             /* kernel half-width, samples */
+    int cell;               /* cell size, samples */
+    double density;         /* mean impulses per cell */
+    double kernel_energy;   /* sum h^2 after scaling */
+    double truncated;       /* model kernels: energy fraction beyond the radius */
+    double kurtosis;        /* predicted excess kurtosis */
+    double variance;        /* predicted variance */
+} synth_sparse_info;
+
+/* radius <= 0: the smallest radius keeping all but SPARSE_ENERGY_TOL of the kernel's
+ * energy (model kernels) or the image's half-size.  cell <= 0: the
+ * smallest power of two >= max(4, radius). */
+int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
+                            synth_sparse_plan **out);
+int synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
+                           synth_sparse_plan **out);
+int synth_sparse_plan_image(const nl_field *img, int cell, double density, synth_sparse_plan **out);
+
+/* Rotate the kernel by the angle expression theta(x, y). */
+int synth_sparse_set_angle(synth_sparse_plan *p, const char *expr);
+
+void synth_sparse_plan_info(const synth_sparse_plan *p, synth_sparse_info *info);
+
+/* The window of samples origin[a] .. origin[a] + n[a] - 1 (NULL: 0).  With
+ * wrap, the field is periodic with the grid's size (each a multiple of the
+ * cell size) and origin must be NULL. */
+int synth_sparse_execute(const synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out);
+
+void synth_sparse_plan_free(synth_sparse_plan *p);
+
+#endif
