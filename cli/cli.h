@@ -18,6 +18,7 @@ int cmd_models(int argc, char **argv);
 int cmd_coeffs(int argc, char **argv);
 int cmd_detect(int argc, char **argv);
 int cmd_shape(int argc, char **argv);
+int cmd_render(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 
 /* Print "noiselab: MSG" on stderr and exit with `code` (2: bad usage or

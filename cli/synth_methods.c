@@ -275,8 +275,23 @@ void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r)
                                     &p);
     else {
         nl_field *img = cli_read_field(job->exemplar, NULL);
-        if (job->dim != 2)
-            cli_die(2, "--exemplar: expected a 2D --size");
+        if (job->dim != 2 || img->dim != 2)
+            cli_die(2, "--exemplar: expected a 2D image and a 2D --size");
+        if (job->radius) {
+            /* the central 2R x 2R window of the exemplar */
+            size_t w = 2 * (size_t)job->radius, crop[2] = {w, w};
+            if (w > img->n[0] || w > img->n[1])
+                cli_die(2, "--radius: %d needs a %zux%zu window, larger than the %zux%zu exemplar", job->radius, w, w,
+                        img->n[0], img->n[1]);
+            nl_field *c = nl_field_alloc(2, crop, NULL, &st);
+            if (!c)
+                cli_die_status(st);
+            for (size_t j = 0; j < w; j++)
+                for (size_t i = 0; i < w; i++)
+                    c->data[j * w + i] = img->data[(j + (img->n[1] - w) / 2) * img->n[0] + i + (img->n[0] - w) / 2];
+            nl_field_free(img);
+            img = c;
+        }
         mean = nl_field_mean(img);
         st = synth_sparse_plan_image(img, job->cell, job->density, &p);
         nl_field_free(img);
