@@ -54,7 +54,12 @@ test: $(BIN) $(BUILD)/tests/run
 	NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
 
 # Every experiment writes its data, picture and verdict into paper-figures/.
-figures: $(BIN) $(EXP_BIN)
+# Exemplar images from Debian's python3-skimage package data (not committed).
+EXEMPLARS := $(BUILD)/exemplars/grass.png
+$(EXEMPLARS): tools/exemplars.sh | $(DEPS_OK)
+	@sh tools/exemplars.sh $(BUILD)/exemplars
+
+figures: $(BIN) $(EXP_BIN) $(EXEMPLARS)
 	@sh experiments/run-all.sh paper-figures
 
 experiments: figures
