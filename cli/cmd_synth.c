@@ -44,6 +44,10 @@ static const char help[] =
     "            tile, --origin X[,Y] for a window of the infinite field, --angle EXPR in\n"
     "            x, y rotating the kernel with position; the report predicts the excess\n"
     "            kurtosis 3 sum h^4 / (lambda (sum h^2)^2)\n"
+    "  lattice   interpolated noise lattice (Perlin gradient noise) summed over octaves,\n"
+    "            weighted to the target spectrum's power in each octave's band; --cell C\n"
+    "            largest lattice cell (default size/4), --octaves O (default: down to cell\n"
+    "            2); the report gives each octave's weight and its low-frequency leakage\n"
     "  midpoint  midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
     "            only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
     "            (1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
@@ -129,6 +133,7 @@ int cmd_synth(int argc, char **argv)
         {"kernel", required_argument, 0, 'K'},     {"exemplar", required_argument, 0, 'E'},
         {"angle", required_argument, 0, 'A'},      {"radius", required_argument, 0, 'r'},
         {"cell", required_argument, 0, 'C'},       {"wrap", no_argument, 0, 'W'},
+        {"octaves", required_argument, 0, 'V'},
         {0}};
     const char *acf = NULL, *spec = NULL, *size = NULL, *spacing = NULL, *out = NULL, *preview = NULL;
     const char *tmp, *ptmp = NULL, *origin = NULL;
@@ -208,6 +213,11 @@ int cmd_synth(int argc, char **argv)
         case 'r': job.radius = (int)cli_parse_count("--radius", optarg, 1); break;
         case 'C': job.cell = (int)cli_parse_count("--cell", optarg, 1); break;
         case 'W': job.wrap = 1; break;
+        case 'V':
+            job.octaves = (int)cli_parse_count("--octaves", optarg, 1);
+            if (job.octaves > 16)
+                cli_die(2, "--octaves: expected 1 to 16, got \"%s\"", optarg);
+            break;
         case 'h': fputs(help, stdout); return 0;
         default: cli_bad_option("synth", c, argv);
         }
@@ -223,19 +233,19 @@ int cmd_synth(int argc, char **argv)
     } methods[] = {{"fft", synth_fft_run},         {"subdiv", synth_subdiv_run},
                    {"midpoint", synth_midpoint_run}, {"circulant", synth_circulant_run},
                    {"cholesky", synth_cholesky_run}, {"faulting", synth_faulting_run},
-                   {"sparse", synth_sparse_run}};
+                   {"sparse", synth_sparse_run}, {"lattice", synth_lattice_run}};
     void (*run)(const synth_job *, nl_field *, synth_result *) = NULL;
     for (size_t i = 0; i < sizeof methods / sizeof *methods; i++)
         if (strcmp(job.method, methods[i].name) == 0)
             run = methods[i].run;
     if (!run) {
-        static const char *const planned[] = {"lattice", "rank1"};
+        static const char *const planned[] = {"rank1"};
         for (size_t i = 0; i < sizeof planned / sizeof *planned; i++)
             if (strcmp(job.method, planned[i]) == 0)
                 cli_die(2, "synth: method \"%s\" is not available in this version (available: fft, subdiv, "
-                        "midpoint, circulant, cholesky, faulting, sparse)", job.method);
-        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant, cholesky, faulting or "
-                "sparse)",
+                        "midpoint, circulant, cholesky, faulting, sparse, lattice)", job.method);
+        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant, cholesky, faulting, "
+                "sparse or lattice)",
                 job.method);
     }
     only_for("--levels", given_L, job.method, "subdiv midpoint");
@@ -247,7 +257,8 @@ int cmd_synth(int argc, char **argv)
     only_for("--exemplar", job.exemplar != NULL, job.method, "sparse");
     only_for("--angle", job.angle != NULL, job.method, "sparse");
     only_for("--radius", job.radius != 0, job.method, "sparse");
-    only_for("--cell", job.cell != 0, job.method, "sparse");
+    only_for("--cell", job.cell != 0, job.method, "sparse lattice");
+    only_for("--octaves", job.octaves != 0, job.method, "lattice");
     only_for("--wrap", job.wrap, job.method, "sparse");
     only_for("--seed-image", job.seed_image != NULL, job.method, "subdiv");
     only_for("--random-neighborhoods", job.random_nb != 0, job.method, "subdiv");

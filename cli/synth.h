@@ -30,6 +30,8 @@ typedef struct {
     int radius;            /* sparse: --radius, 0 = automatic */
     int cell;              /* sparse: --cell, 0 = the radius */
     int wrap;              /* sparse: --wrap */
+    int octaves;           /* lattice: --octaves, 0 = down to cell 2 */
+    double cell0;          /* lattice: --cell (largest cell), 0 = size / 4 */
 } synth_job;
 
 typedef struct {
@@ -48,5 +50,6 @@ void synth_circulant_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_cholesky_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_faulting_run(const synth_job *job, nl_field *f, synth_result *r);
 void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r);
+void synth_lattice_run(const synth_job *job, nl_field *f, synth_result *r);
 
 #endif

@@ -6,6 +6,7 @@
 #include "../synth/circulant.h"
 #include "../synth/faulting.h"
 #include "../synth/fft.h"
+#include "../synth/lattice.h"
 #include "../synth/sparse.h"
 #include "../synth/subdiv.h"
 
@@ -316,4 +317,30 @@ void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r)
     r->report = json_pack("{s:i,s:i,s:f,s:f,s:f,s:f}", "radius", info.radius, "cell", info.cell, "density",
                           info.density, "variance", info.variance, "excess_kurtosis", info.kurtosis, "truncated_energy",
                           info.truncated);
+}
+
+void synth_lattice_run(const synth_job *job, nl_field *f, synth_result *r)
+{
+    synth_lattice_plan p;
+    double c0 = job->cell ? job->cell : (double)f->n[0] / 4;
+    int O = job->octaves, st;
+    json_t *oct = json_array();
+    if (job->dim > 2)
+        cli_die(2, "synth lattice: expected a 1D or 2D --size, got %dD", job->dim);
+    if (!O)
+        for (O = 1; c0 / pow(2, O) >= 2 && O < LATTICE_MAX_OCTAVES; O++)
+            ;
+    if ((st = synth_lattice_plan_alloc(job->m, job->dim, c0, O, &p)) || (st = synth_lattice_execute(&p, job->seed, f)))
+        cli_die_status(st);
+    double var = 0;
+    for (int o = 0; o < p.octaves; o++) {
+        json_array_append_new(oct, json_pack("{s:f,s:f,s:f,s:f}", "cell", p.cell[o], "weight", p.weight[o], "peak",
+                                             p.peak[o], "leakage", p.leakage[o]));
+        var += p.weight[o] * p.weight[o];
+    }
+    snprintf(r->method, sizeof r->method, "lattice:cell=%.17g,octaves=%d", c0, O);
+    for (size_t i = 0; i < f->count; i++)
+        r->sd += f->data[i] * f->data[i] / (double)f->count;
+    r->sd = sqrt(r->sd) > 0 ? sqrt(r->sd) : 1;
+    r->report = json_pack("{s:o}", "octaves", oct);
 }

@@ -1,0 +1,223 @@
+/* Gradient noise and its octave sum. */
+#include "lattice.h"
+#include "../analysis/psd.h"
+#include "../analysis/radial.h"
+#include "../core/nl_error.h"
+#include "../core/rng.h"
+#include "../core/wk.h"
+
+#include <gsl/gsl_multifit.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static double fade(double t) { return t * t * t * (t * (6 * t - 15) + 10); }
+
+static uint64_t lat_index(int dim, long i, long j)
+{
+    return dim == 1 ? (uint64_t)i : ((uint64_t)(uint32_t)j << 32) | (uint32_t)i;
+}
+
+/* Gradient noise of cell c at sample (x, y); period (px, py) lattice cells
+ * when > 0. */
+static double gradient_noise(uint64_t seed, uint32_t stream, int dim, double c, double x, double y, long px, long py)
+{
+    double fx = x / c, fy = y / c, s = 0;
+    long i0 = (long)floor(fx), j0 = (long)floor(fy);
+    double tx = fx - (double)i0, ty = fy - (double)j0;
+    for (int dj = 0; dj <= (dim == 2); dj++)
+        for (int di = 0; di <= 1; di++) {
+            long i = i0 + di, j = j0 + dj;
+            if (px > 0)
+                i = ((i % px) + px) % px;
+            if (py > 0)
+                j = ((j % py) + py) % py;
+            double u = nl_rng_uniform(seed, stream, lat_index(dim, i, dim == 2 ? j : 0)), g;
+            double wx = di ? fade(tx) : 1 - fade(tx), rx = tx - di;
+            if (dim == 1) {
+                g = (2 * u - 1) * rx;
+                s += wx * g;
+            } else {
+                double a = 2 * M_PI * u, wy = dj ? fade(ty) : 1 - fade(ty), ry = ty - dj;
+                s += wx * wy * (cos(a) * rx + sin(a) * ry);
+            }
+        }
+    return s;
+}
+
+/* The basis spectrum at cell 16, measured once (8 periodic realizations). */
+static double basis16[2][2049];
+static int basis_ready[2];
+
+static void measure_basis(int dim)
+{
+    size_t n = dim == 1 ? 4096 : 256, nn[2] = {n, dim == 2 ? n : 1}, nb = n / 2 + 1, cnt[2049];
+    double acc[2049] = {0}, r[2049], v[2049];
+    nl_field *f = nl_field_alloc(dim, nn, NULL, NULL), *P;
+    for (uint64_t s = 1; s <= 8; s++) {
+        for (size_t j = 0; j < nn[1]; j++)
+            for (size_t i = 0; i < n; i++)
+                f->data[j * n + i] = gradient_noise(s, LATTICE_STREAM + 99, dim, 16, (double)i, (double)j,
+                                                    (long)n / 16, dim == 2 ? (long)n / 16 : 0);
+        an_psd_periodogram(f, 0.0, &P);
+        if (dim == 1)
+            for (size_t k = 0; k < nb; k++)
+                acc[k] += P->data[k] / 8;
+        else {
+            an_radial(P, AN_GRID_FREQ, 1.0 / (double)n, nb, r, v, cnt);
+            for (size_t k = 0; k < nb; k++)
+                acc[k] += (cnt[k] ? v[k] : 0) / 8;
+        }
+        nl_field_free(P);
+    }
+    nl_field_free(f);
+    /* store on a grid of 2048 steps in f * 16 from 0 to 8 (f from 0 to 0.5) */
+    for (int k = 0; k <= 2048; k++) {
+        double ff = 0.5 * k / 2048.0, t = ff * (double)n;
+        size_t i = (size_t)t;
+        double w = t - (double)i;
+        basis16[dim - 1][k] = i + 1 < nb ? (1 - w) * acc[i] + w * acc[i + 1] : acc[nb - 1];
+    }
+    basis_ready[dim - 1] = 1;
+}
+
+double synth_lattice_basis_spectrum(int dim, double c, double f)
+{
+    double t, w;
+    int k;
+    if (!basis_ready[dim - 1])
+        measure_basis(dim);
+    t = fabs(f) * c / 16 / 0.5 * 2048;
+    if (t >= 2048)
+        return 0;
+    k = (int)t;
+    w = t - k;
+    return ((1 - w) * basis16[dim - 1][k] + w * basis16[dim - 1][k + 1]) * pow(c / 16, dim);
+}
+
+/* Power of spectrum s over the frequencies lo..hi (radial shells in 2D). */
+static double band_power(int dim, double (*s)(const void *, double), const void *ctx, double lo, double hi)
+{
+    double p = 0, df = (hi - lo) / 400;
+    for (int i = 0; i < 400; i++) {
+        double f = lo + (i + 0.5) * df;
+        p += s(ctx, f) * (dim == 1 ? 2 : 2 * M_PI * f) * df;
+    }
+    return p;
+}
+
+typedef struct {
+    int dim;
+    double c;
+    const nl_model *m;
+} sctx;
+
+static double s_basis(const void *ctx, double f)
+{
+    const sctx *x = ctx;
+    return synth_lattice_basis_spectrum(x->dim, x->c, f);
+}
+
+/* Non-negative weights v_o (= w_o^2) minimising the relative error
+ * sum_f ((sum_o v_o S_o(f) - S_t(f)) / S_t(f))^2 on log-spaced frequencies:
+ * weighted least squares (GSL), dropping octaves whose weight comes out
+ * negative and refitting the rest (an active-set iteration). */
+static int fit_weights(int dim, const nl_model *m, synth_lattice_plan *p, double flo)
+{
+    enum { NF = 96 };
+    int O = p->octaves, active[LATTICE_MAX_OCTAVES], st = NL_OK;
+    for (int o = 0; o < O; o++)
+        active[o] = 1;
+    for (int iter = 0; iter < O; iter++) {
+        int k = 0, map[LATTICE_MAX_OCTAVES], neg = 0;
+        for (int o = 0; o < O; o++)
+            if (active[o])
+                map[k++] = o;
+        if (k == 0)
+            break;
+        gsl_matrix *X = gsl_matrix_alloc(NF, (size_t)k), *cov = gsl_matrix_alloc((size_t)k, (size_t)k);
+        gsl_vector *y = gsl_vector_alloc(NF), *w = gsl_vector_alloc(NF), *c = gsl_vector_alloc((size_t)k);
+        gsl_multifit_linear_workspace *ws = gsl_multifit_linear_alloc(NF, (size_t)k);
+        double chi2;
+        if (!X || !cov || !y || !w || !c || !ws) {
+            st = NL_ERROR(NL_ENOMEM, "out of memory");
+        } else {
+            for (int i = 0; i < NF; i++) {
+                double f = flo * pow(0.5 / flo, (i + 0.5) / NF), fv[2] = {f, 0};
+                double t = nl_model_spectrum(m, dim, fv);
+                for (int j = 0; j < k; j++)
+                    gsl_matrix_set(X, (size_t)i, (size_t)j, synth_lattice_basis_spectrum(dim, p->cell[map[j]], f));
+                gsl_vector_set(y, (size_t)i, t);
+                gsl_vector_set(w, (size_t)i, t > 0 ? 1 / (t * t) : 0);
+            }
+            if (gsl_multifit_wlinear(X, w, y, c, cov, &chi2, ws))
+                st = NL_ERROR(NL_EFAIL, "lattice: the weight fit failed");
+            for (int j = 0; !st && j < k; j++) {
+                double v = gsl_vector_get(c, (size_t)j);
+                if (v < 0)
+                    active[map[j]] = 0, neg = 1;
+                p->weight[map[j]] = v > 0 ? sqrt(v) : 0;
+            }
+        }
+        gsl_matrix_free(X), gsl_matrix_free(cov), gsl_vector_free(y), gsl_vector_free(w), gsl_vector_free(c);
+        gsl_multifit_linear_free(ws);
+        if (st || !neg)
+            break;
+    }
+    for (int o = 0; o < O; o++)
+        if (!active[o])
+            p->weight[o] = 0;
+    return st;
+}
+
+int synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, synth_lattice_plan *p)
+{
+    double probe[2] = {0.1, 0};
+    if (dim != 1 && dim != 2)
+        return NL_ERROR(NL_EINVAL, "lattice: expected dimension 1 or 2, got %d", dim);
+    if (octaves < 1 || octaves > LATTICE_MAX_OCTAVES)
+        return NL_ERROR(NL_EINVAL, "octaves: expected 1 to %d, got %d", LATTICE_MAX_OCTAVES, octaves);
+    if (!(cell0 >= 2) || cell0 / pow(2, octaves - 1) < 2)
+        return NL_ERROR(NL_EINVAL, "octaves: %d octaves from cell %g reach cells below 2 samples", octaves, cell0);
+    if (!isfinite(nl_model_spectrum(m, dim, probe)))
+        return NL_ERROR(NL_EINVAL, "%s: the lattice method needs the model's spectrum in closed form in %dD "
+                        "(power:, spectrum:, or a 1D markov, gauss, oscillatory, gauss-osc)", nl_model_spec(m), dim);
+    memset(p, 0, sizeof *p);
+    p->octaves = octaves;
+    for (int o = 0; o < octaves; o++) {
+        sctx b = {dim, cell0 / pow(2, o), m};
+        double fpk = 0, spk = -1;
+        /* peak of the basis spectrum at this cell */
+        for (int k = 1; k < 2048; k++) {
+            double f = 0.5 * k / 2048.0, v = synth_lattice_basis_spectrum(dim, b.c, f);
+            if (v > spk)
+                spk = v, fpk = f;
+        }
+        double lo = fpk / M_SQRT2;
+        double below = band_power(dim, s_basis, &b, 1e-9, lo), all = band_power(dim, s_basis, &b, 1e-9, 0.5);
+        p->cell[o] = b.c;
+        p->peak[o] = fpk;
+        p->leakage[o] = all > 0 ? below / all : 0;
+    }
+    return fit_weights(dim, m, p, p->peak[0] / 2);
+}
+
+int synth_lattice_execute(const synth_lattice_plan *p, uint64_t seed, nl_field *out)
+{
+    int dim = out->dim;
+    size_t nx = out->n[0], ny = dim == 2 ? out->n[1] : 1;
+    if (dim > 2)
+        return NL_ERROR(NL_EINVAL, "lattice: expected a 1D or 2D field, got %dD", dim);
+    memset(out->data, 0, out->count * sizeof *out->data);
+    for (int o = 0; o < p->octaves; o++) {
+        double c = p->cell[o];
+        long px = fmod((double)nx, c) == 0 ? (long)((double)nx / c) : 0;
+        long py = dim == 2 && fmod((double)ny, c) == 0 ? (long)((double)ny / c) : 0;
+#pragma omp parallel for schedule(static) if (out->count > 65536)
+        for (size_t j = 0; j < ny; j++)
+            for (size_t i = 0; i < nx; i++)
+                out->data[j * nx + i] += p->weight[o] * gradient_noise(seed, LATTICE_STREAM + (uint32_t)o, dim, c,
+                                                                       (double)i, (double)j, px, py);
+    }
+    return NL_OK;
+}

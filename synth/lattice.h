@@ -1,0 +1,54 @@
+/* Interpolated noise lattice (Perlin's gradient noise) and its sum over
+ * octaves approximating a target spectrum (Lewis 1987, "Comparison of
+ * Stochastic Synthesis Methods": "interpolated noise lattice").
+ *
+ * Basis: gradient noise of cell c samples: at every lattice point a random
+ * gradient (1D: uniform in [-1, 1]; 2D: a unit vector at a uniform angle),
+ * from nl_rng_uniform(seed, LATTICE_STREAM + octave, lattice index); the
+ * value between lattice points blends the corners' linear ramps with the
+ * quintic fade 6t^5 - 15t^4 + 10t^3 (Perlin 2002).  Any sample can be
+ * computed alone.
+ *
+ * Octaves: c_o = c_0 / 2^o.  The basis spectrum is measured once at plan
+ * time (the mean periodogram of 8 periodic realizations at cell 16, radial
+ * in 2D) and rescaled to each cell: S_o(f) = S_b(f c_o / 16) (c_o / 16)^dim.
+ * The weights v_o = w_o^2 >= 0 minimise the relative squared error of
+ * sum_o v_o S_o(f) against the target on 96 log-spaced frequencies from
+ * half the coarsest octave's peak f_0 to Nyquist (GSL weighted least
+ * squares, octaves with negative weights dropped and the rest refitted).
+ * The sum's spectrum is sum_o w_o^2 S_o(f).
+ *
+ * Leakage (Lewis: "the low frequency power in the noise lattice is not
+ * removed and cannot be removed in summation"): the fraction of each
+ * octave's power below f_o / sqrt 2, reported per octave. */
+#ifndef SYNTH_LATTICE_H
+#define SYNTH_LATTICE_H
+
+#include "../core/field.h"
+#include "../core/model.h"
+
+#include <stdint.h>
+
+#define LATTICE_STREAM 500u
+#define LATTICE_MAX_OCTAVES 16
+
+typedef struct {
+    int octaves;                          /* number of octaves */
+    double cell[LATTICE_MAX_OCTAVES];     /* cell size per octave, samples */
+    double weight[LATTICE_MAX_OCTAVES];   /* amplitude w_o */
+    double peak[LATTICE_MAX_OCTAVES];     /* f_o, cycles per sample */
+    double leakage[LATTICE_MAX_OCTAVES];  /* fraction of octave power below its band */
+} synth_lattice_plan;
+
+/* Plan the octaves for model m on a dim-D grid (spacing 1 sample; the
+ * model's lags in samples): c_0 = cell0, `octaves` octaves (cell >= 2). */
+int synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, synth_lattice_plan *p);
+
+/* The basis spectrum at cell c and frequency f (cycles per sample). */
+double synth_lattice_basis_spectrum(int dim, double c, double f);
+
+/* x = sum_o w_o noise_o into out (1D or 2D, periodic when every cell
+ * divides the size, otherwise a window at the origin). */
+int synth_lattice_execute(const synth_lattice_plan *p, uint64_t seed, nl_field *out);
+
+#endif
