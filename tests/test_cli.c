@@ -54,7 +54,9 @@ Test(cli, synth_error_paths)
     bad("synth fft --acf markov -o out.exr", "--size");
     bad("synth fft --acf markov --size 64", "-o");
     bad("synth wavelets --acf markov --size 64 -o out.exr", "\"wavelets\"");
-    bad("synth lattice --acf markov --size 64 -o out.exr", "\"lattice\"");
+    bad("synth rank1 --acf markov --size 64 -o out.exr", "\"rank1\"");
+    bad("synth lattice --acf markov --size 64x64 -o out.exr", "closed form");
+    bad("synth lattice --spectrum power:d=3 --size 64 --octaves 9 --cell 16 -o out.exr", "below 2 samples");
     bad("synth sparse --size 64 -o out.tsv", "exactly one kernel");
     bad("synth sparse --kernel 'exp(-r)' --acf markov --size 64 -o out.tsv", "exactly one kernel");
     bad("synth sparse --kernel 'exp(-q)' --size 64 -o out.tsv", "\"q\"");
