@@ -12,6 +12,7 @@ static const struct {
     const char *summary;
 } commands[] = {
     {"models", cmd_models, "list the autocorrelation and spectrum models with their parameters"},
+    {"check", cmd_check, "is a model positive definite, how smooth, where singular"},
     {"coeffs", cmd_coeffs, "subdivision coefficients, variances and flags per level"},
     {"synth", cmd_synth, "synthesise a field (methods: fft, subdiv, midpoint)"},
     {"acf", cmd_acf, "estimate the autocorrelation of a field"},
@@ -51,6 +52,6 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
             return commands[i].run(argc - 1, argv + 1);
-    cli_die(2, "unknown command \"%s\" (expected one of: models, coeffs, synth, acf, psd, hist, shape, render, detect, bench; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, check, coeffs, synth, acf, psd, hist, shape, render, detect, bench; see noiselab --help)",
             argv[1]);
 }

@@ -72,6 +72,14 @@ double nl_model_acf(const nl_model *m, int dim, const double *lag);
  * gauss-osc; NAN where no closed form is implemented. */
 double nl_model_spectrum(const nl_model *m, int dim, const double *f);
 
+/* Is R a function of |lag| alone in dim > 1 (no sep, angle or ratio, and
+ * for expressions no x, y, z)? */
+int nl_model_is_isotropic(const nl_model *m);
+
+/* d^2 R / dt^2 of the 1D profile at t by libmatheval's symbolic derivative
+ * (expr: models only; NAN otherwise or where the derivative is undefined). */
+double nl_model_acf_d2(const nl_model *m, double t);
+
 /* Check that the model can be used in `dim` dimensions (e.g. an image model
  * has no 3D table, spectral models take no anisotropy keys). */
 int nl_model_check_dim(const nl_model *m, int dim);

@@ -5,6 +5,7 @@
 #include <gsl/gsl_sf_gamma.h>
 #include <math.h>
 #include <matheval.h>
+#include <string.h>
 
 static double eval_expr(void *ev, const char *const *names, double *values, int n)
 {
@@ -154,4 +155,46 @@ const nl_model_info *nl_model_catalogue(size_t *count)
 {
     *count = sizeof catalogue / sizeof *catalogue;
     return catalogue;
+}
+
+double nl_model_acf_d2(const nl_model *m, double t)
+{
+    static const char *const names[] = {"t", "x", "y", "z", "r"};
+    double v[] = {t, t, 0, 0, fabs(t)}, y;
+    void *d1, *d2, *dr1, *dr2;
+    if (m->kind != NL_MODEL_EXPR)
+        return NAN;
+    /* R is a function of t (= x in 1D) and r = |t|: d/dt = d/dt + sign(t) d/dr */
+    d1 = evaluator_derivative(m->eval, "t");
+    dr1 = evaluator_derivative(m->eval, "r");
+    if (!d1 || !dr1) {
+        if (d1) evaluator_destroy(d1);
+        if (dr1) evaluator_destroy(dr1);
+        return NAN;
+    }
+    d2 = evaluator_derivative(d1, "t");
+    dr2 = evaluator_derivative(dr1, "r");
+    y = d2 && dr2 ? evaluator_evaluate(d2, 5, (char **)names, v) + evaluator_evaluate(dr2, 5, (char **)names, v)
+                  : NAN;
+    if (d2) evaluator_destroy(d2);
+    if (dr2) evaluator_destroy(dr2);
+    evaluator_destroy(d1);
+    evaluator_destroy(dr1);
+    return y;
+}
+
+int nl_model_is_isotropic(const nl_model *m)
+{
+    if (m->sep || m->angle != 0 || m->ratio != 1 || m->zratio != 1 || m->kind == NL_MODEL_IMAGE)
+        return 0;
+    if (m->kind == NL_MODEL_EXPR || m->kind == NL_MODEL_SPECTRUM) {
+        char **names;
+        int n;
+        evaluator_get_variables(m->eval, &names, &n);
+        for (int i = 0; i < n; i++)
+            if (strchr("xyz", names[i][0]) || strcmp(names[i], "fx") == 0 || strcmp(names[i], "fy") == 0 ||
+                strcmp(names[i], "fz") == 0)
+                return 0;
+    }
+    return 1;
 }

@@ -77,6 +77,9 @@ Test(cli, synth_error_paths)
     bad("synth midpoint --H 1.5 --size 64 -o out.exr", "\"1.5\"");
     bad("synth midpoint --spectrum power:d=3.5 --size 64 -o out.exr", "d=3.5");
     bad("coeffs --acf markov --dim 3", "\"3\"");
+    bad("check --acf markov --dim 4", "\"4\"");
+    bad("check --dim 2", "--acf");
+    bad("check --acf nope --dim 2", "\"nope\"");
     bad("coeffs --acf markov", "--dim");
     bad("coeffs --acf markov --dim 1 --spacing0 -1", "\"-1\"");
     bad("coeffs --acf markov --dim 2 --neighborhood 9", "9");
