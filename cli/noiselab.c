@@ -18,6 +18,7 @@ static const struct {
     {"acf", cmd_acf, "estimate the autocorrelation of a field"},
     {"psd", cmd_psd, "estimate the power spectral density of a field (periodogram)"},
     {"hist", cmd_hist, "histogram, moments and goodness of fit of a field"},
+    {"nonlin", cmd_nonlin, "predicted ACF and spectrum after a memoryless nonlinearity"},
     {"shape", cmd_shape, "memoryless distribution shaping of a field"},
     {"render", cmd_render, "a 2D field as a picture: grey levels or shaded relief"},
     {"detect", cmd_detect, "creases and aliasing in a subdivision field"},
@@ -52,6 +53,6 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
             return commands[i].run(argc - 1, argv + 1);
-    cli_die(2, "unknown command \"%s\" (expected one of: models, check, coeffs, synth, acf, psd, hist, shape, render, detect, bench; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, check, coeffs, synth, acf, psd, hist, nonlin, shape, render, detect, bench; see noiselab --help)",
             argv[1]);
 }

@@ -1,0 +1,72 @@
+/* Hermite coefficients by Gauss-Hermite quadrature (GSL). */
+#include "nonlin.h"
+#include "../core/nl_error.h"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_integration.h>
+#include <gsl/gsl_sf_gamma.h>
+#include <math.h>
+#include <string.h>
+
+int an_hermite_expand(const nl_dist *to, int terms, an_hermite *h)
+{
+    const size_t nodes = 400;
+    gsl_integration_fixed_workspace *w;
+    double he[AN_HERMITE_MAX + 1], m1 = 0, m2 = 0;
+    if (terms < 2 || terms > AN_HERMITE_MAX)
+        return NL_ERROR(NL_EINVAL, "terms: expected 2 to %d Hermite terms, got %d", AN_HERMITE_MAX, terms);
+    /* weight exp(-u^2); E[f(Z)] = pi^-1/2 int f(sqrt 2 u) exp(-u^2) du */
+    w = gsl_integration_fixed_alloc(gsl_integration_fixed_hermite, nodes, 0, 1, 0, 0);
+    if (!w)
+        return NL_ERROR(NL_ENOMEM, "out of memory for the quadrature");
+    memset(h, 0, sizeof *h);
+    h->terms = terms;
+    const double *x = gsl_integration_fixed_nodes(w), *wt = gsl_integration_fixed_weights(w);
+    for (size_t i = 0; i < nodes; i++) {
+        double z = M_SQRT2 * x[i], p = wt[i] / sqrt(M_PI), u = gsl_cdf_ugaussian_P(z);
+        u = fmin(fmax(u, 1e-300), 1 - 1e-16);
+        double G = nl_dist_quantile(to, u);
+        if (!isfinite(G))
+            continue;
+        he[0] = 1, he[1] = z;
+        for (int n = 1; n < terms; n++)
+            he[n + 1] = z * he[n] - n * he[n - 1];
+        for (int n = 0; n < terms; n++)
+            h->c[n] += p * G * he[n];
+        m1 += p * G, m2 += p * G * G;
+    }
+    gsl_integration_fixed_free(w);
+    h->variance = m2 - m1 * m1;
+    h->truncation = h->variance;
+    for (int n = 1; n < terms; n++) {
+        h->c[n] /= gsl_sf_fact((unsigned)n);
+        h->truncation -= h->c[n] * h->c[n] * gsl_sf_fact((unsigned)n);
+    }
+    return NL_OK;
+}
+
+double an_hermite_cov(const an_hermite *h, double rho)
+{
+    double s = 0, p = 1;
+    for (int n = 1; n < h->terms; n++) {
+        p *= rho;
+        s += h->c[n] * h->c[n] * gsl_sf_fact((unsigned)n) * p;
+    }
+    return s;
+}
+
+double an_hermite_invert(const an_hermite *h, double cov)
+{
+    double lo = -1, hi = 1;
+    double flo = an_hermite_cov(h, lo), fhi = an_hermite_cov(h, hi);
+    if (cov < fmin(flo, fhi) || cov > fmax(flo, fhi))
+        return NAN;
+    for (int i = 0; i < 100; i++) {
+        double mid = 0.5 * (lo + hi), f = an_hermite_cov(h, mid);
+        if ((f < cov) == (fhi > flo))
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}

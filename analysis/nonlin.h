@@ -1,0 +1,40 @@
+/* Memoryless nonlinearities of Gaussian noise: Beckmann's Hermite series
+ * (Lewis GI '86, section 4.1).
+ *
+ * For a zero-mean Gaussian input of variance s^2 and normalised ACF rho,
+ * and the shaping g(x) = F_y^-1(Phi(x / s)) of synth/shape.h, write
+ * G(z) = g(s z) = sum_n c_n He_n(z) (probabilists' Hermite polynomials,
+ * E[He_m He_n] = n! delta_mn), c_n = E[G(Z) He_n(Z)] / n!.  Then
+ *     E[y] = c_0,   Cov(y(t), y(t + tau)) = sum_{n>=1} c_n^2 n! rho(tau)^n,
+ * and by the convolution theorem the output spectrum is the matching sum
+ * of n-fold self-convolutions of the normalised input spectrum.  An odd g
+ * (a symmetric target density) has only odd n: a narrow band at f0 spreads
+ * to 3 f0, 5 f0, ... (GI '86 Fig. 7).
+ * The c_n are computed by Gauss-Hermite quadrature (GSL fixed quadrature,
+ * 400 nodes); the variance left out by K terms, Var(y) - sum_{n<K} c_n^2 n!,
+ * is reported as the truncation error. */
+#ifndef AN_NONLIN_H
+#define AN_NONLIN_H
+
+#include "../core/dist.h"
+
+#define AN_HERMITE_MAX 64
+
+typedef struct {
+    int terms;                    /* K */
+    double c[AN_HERMITE_MAX];     /* c_0 .. c_{K-1} */
+    double variance;              /* Var(y), by the same quadrature */
+    double truncation;            /* Var(y) - sum_{1<=n<K} c_n^2 n! */
+} an_hermite;
+
+int an_hermite_expand(const nl_dist *to, int terms, an_hermite *h);
+
+/* Output covariance at input correlation rho (|rho| <= 1). */
+double an_hermite_cov(const an_hermite *h, double rho);
+
+/* Inverse: the input correlation rho in [-1, 1] whose output covariance is
+ * `cov` (bisection; the series is increasing in rho for rho >= 0); NAN when
+ * cov is out of the attainable range. */
+double an_hermite_invert(const an_hermite *h, double cov);
+
+#endif
