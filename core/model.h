@@ -72,6 +72,12 @@ double nl_model_acf(const nl_model *m, int dim, const double *lag);
  * gauss-osc; NAN where no closed form is implemented. */
 double nl_model_spectrum(const nl_model *m, int dim, const double *f);
 
+/* The spectrum of an isotropic autocorrelation in dim = 1..4 dimensions at
+ * radial frequency w (cycles per unit), by the Hankel transform of Lewis
+ * 1987 eq. (13) with GSL quadrature and Bessel functions (4D uses the model's
+ * 3D profile, which is the same function of |lag|).  NAN on failure. */
+double nl_model_spectrum_iso(const nl_model *m, int dim, double w);
+
 /* Is R a function of |lag| alone in dim > 1 (no sep, angle or ratio, and
  * for expressions no x, y, z)? */
 int nl_model_is_isotropic(const nl_model *m);

@@ -71,3 +71,54 @@ double nl_model_power_acf(const nl_model *m, int dim, double r)
     gsl_integration_workspace_free(w);
     return st == 0 ? val : NAN;
 }
+
+/* Lewis 1987, eq. (13): the spectrum of an isotropic n-dimensional R,
+ *     S(w) = 2 pi w^(1 - n/2) int_0^inf R(r) J_{n/2 - 1}(2 pi w r) r^(n/2) dr,
+ * for w > 0 (J_{-1/2}(x) = sqrt(2 / (pi x)) cos x in 1D), and
+ *     S(0) = (surface of the unit sphere) int_0^inf R(r) r^(n-1) dr,
+ * by GSL adaptive quadrature up to the lag beyond which |R| < 1e-12 R(0). */
+struct hankel_arg {
+    const nl_model *m;
+    int dim;   /* the model's dimension (<= 3) for R */
+    int n;     /* the transform's dimension */
+    double w;
+};
+
+static double hankel_integrand(double r, void *p)
+{
+    const struct hankel_arg *a = p;
+    double lag[3] = {r, 0, 0}, R = nl_model_acf(a->m, a->dim, lag), nu = a->n / 2.0 - 1;
+    if (a->w == 0)
+        return R * pow(r, a->n - 1);
+    double x = 2 * M_PI * a->w * r;
+    double J = a->n == 1 ? (x > 0 ? sqrt(2 / (M_PI * x)) * cos(x) : 0) : gsl_sf_bessel_Jnu(nu, x);
+    return R * J * pow(r, a->n / 2.0);
+}
+
+double nl_model_spectrum_iso(const nl_model *m, int dim, double w)
+{
+    static const double sphere[] = {0, 2, 2 * M_PI, 4 * M_PI, 2 * M_PI * M_PI};
+    double zero[3] = {0, 0, 0}, r0 = nl_model_acf(m, dim < 3 ? dim : 3, zero), rmax = 1e-3, val, err;
+    struct hankel_arg a = {m, dim < 3 ? dim : 3, dim, fabs(w)};
+    gsl_integration_workspace *ws;
+    gsl_function F = {hankel_integrand, &a};
+    if (!(r0 > 0) || dim < 1 || dim > 4)
+        return NAN;
+    for (double t = 1e-3; t < 1e7; t *= 1.25) {
+        double lag[3] = {t, 0, 0};
+        if (fabs(nl_model_acf(m, a.dim, lag)) >= 1e-12 * r0)
+            rmax = t * 1.25;
+    }
+    ws = gsl_integration_workspace_alloc(4000);
+    if (!ws)
+        return NAN;
+    if (gsl_integration_qag(&F, 0, rmax, 1e-14 * r0, 1e-9, 4000, GSL_INTEG_GAUSS41, ws, &val, &err) != 0) {
+        /* oscillatory tails: accept the best estimate when it is converged to 1e-6 */
+        if (!(err <= 1e-6 * fabs(val) + 1e-12 * r0))
+            val = NAN;
+    }
+    gsl_integration_workspace_free(ws);
+    if (a.w == 0)
+        return sphere[dim] * val;
+    return 2 * M_PI * pow(a.w, 1 - dim / 2.0) * val;
+}

@@ -1,0 +1,257 @@
+/* Rank-1 lattices: generators, wave vectors, one-FFT synthesis, Delaunay. */
+#include "rank1.h"
+#include "../core/nl_error.h"
+#include "../core/rng.h"
+
+#include <complex.h>
+#include <fftw3.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void rank1_free(rank1_lattice *L)
+{
+    free(L->k);
+    L->k = NULL;
+}
+
+void rank1_point(const rank1_lattice *L, size_t n, double *x)
+{
+    for (int a = 0; a < L->s; a++)
+        x[a] = (double)((unsigned long long)n * (unsigned long long)L->g[a] % L->N) / (double)L->N;
+}
+
+/* Minimum torus distance between distinct lattice points: that of x_n to 0. */
+static double min_distance(size_t N, int s, const long *g)
+{
+    double best = INFINITY;
+    for (size_t n = 1; n < N; n++) {
+        double d2 = 0;
+        for (int a = 0; a < s; a++) {
+            double x = (double)((unsigned long long)n * (unsigned long long)g[a] % N) / (double)N;
+            if (x > 0.5)
+                x -= 1;
+            d2 += x * x;
+        }
+        best = fmin(best, d2);
+    }
+    return sqrt(best);
+}
+
+/* Enumerate k in shells of |k|_1 = L: all vectors with sum |k_a| = L. */
+typedef struct {
+    size_t N;
+    int s;
+    const long *g;
+    double *best;  /* squared norm per residue */
+    long *k;
+} search;
+
+static void visit(search *q, const long *k)
+{
+    long long m = 0;
+    double n2 = 0;
+    for (int a = 0; a < q->s; a++) {
+        m += (long long)k[a] * q->g[a];
+        n2 += (double)k[a] * (double)k[a];
+    }
+    m %= (long long)q->N;
+    if (m < 0)
+        m += (long long)q->N;
+    if (n2 < q->best[m]) {
+        q->best[m] = n2;
+        memcpy(q->k + (size_t)m * q->s, k, (size_t)q->s * sizeof *k);
+    }
+}
+
+/* Coordinates a.. with remaining |k|_1 budget r, lexicographic from -r up. */
+static void shell(search *q, long *k, int a, long r)
+{
+    if (a == q->s - 1) {
+        k[a] = -r;
+        visit(q, k);
+        if (r) {
+            k[a] = r;
+            visit(q, k);
+        }
+        return;
+    }
+    for (long v = -r; v <= r; v++) {
+        k[a] = v;
+        shell(q, k, a + 1, r - labs(v));
+    }
+}
+
+static int wave_vectors(rank1_lattice *L)
+{
+    search q = {L->N, L->s, L->g, malloc(L->N * sizeof(double)), malloc(L->N * (size_t)L->s * sizeof(long))};
+    long k[RANK1_MAX_DIM];
+    if (!q.best || !q.k) {
+        free(q.best), free(q.k);
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu wave vectors", L->N);
+    }
+    for (size_t m = 0; m < L->N; m++)
+        q.best[m] = INFINITY;
+    for (long r = 0;; r++) {
+        double worst = 0;
+        int all = 1;
+        for (size_t m = 0; m < L->N; m++) {
+            if (isinf(q.best[m]))
+                all = 0;
+            else
+                worst = fmax(worst, q.best[m]);
+        }
+        /* every vector of this shell has norm^2 >= r^2 / s */
+        if (all && (double)r * (double)r / L->s > worst)
+            break;
+        shell(&q, k, 0, r);
+    }
+    /* symmetric set for a real field */
+    for (size_t m = 1; 2 * m < L->N; m++)
+        for (int a = 0; a < L->s; a++)
+            q.k[(L->N - m) * L->s + a] = -q.k[m * L->s + a];
+    free(q.best);
+    L->k = q.k;
+    return NL_OK;
+}
+
+int rank1_generator(size_t N, int s, const long *g, rank1_lattice *L)
+{
+    memset(L, 0, sizeof *L);
+    if (s < 1 || s > RANK1_MAX_DIM)
+        return NL_ERROR(NL_EINVAL, "dim: expected 1 to %d, got %d", RANK1_MAX_DIM, s);
+    if (N < 2 || N > (1u << 24))
+        return NL_ERROR(NL_EINVAL, "points: expected 2 to 16777216, got %zu", N);
+    if (g[0] != 1)
+        return NL_ERROR(NL_EINVAL, "generator: expected a first component of 1, got %ld", g[0]);
+    L->s = s;
+    L->N = N;
+    for (int a = 0; a < s; a++)
+        L->g[a] = ((g[a] % (long)N) + (long)N) % (long)N;
+    L->min_dist = min_distance(N, s, L->g);
+    return wave_vectors(L);
+}
+
+int rank1_fibonacci(int index, rank1_lattice *L)
+{
+    unsigned long long f[64] = {0, 1, 1};
+    long g[2];
+    if (index < 3 || index > 34)
+        return NL_ERROR(NL_EINVAL, "fibonacci: expected an index from 3 to 34 (N = F_index), got %d", index);
+    for (int i = 3; i <= index; i++)
+        f[i] = f[i - 1] + f[i - 2];
+    g[0] = 1, g[1] = (long)f[index - 1];
+    return rank1_generator((size_t)f[index], 2, g, L);
+}
+
+int rank1_korobov(size_t N, int s, long a, rank1_lattice *L)
+{
+    long g[RANK1_MAX_DIM];
+    if (a <= 0) {
+        double best = -1;
+        size_t tries = N > 4096 ? 4096 : N;
+        for (size_t t = 2; t < tries; t++) {
+            long cand = (long)t;
+            g[0] = 1;
+            for (int d = 1; d < s; d++)
+                g[d] = (long)((unsigned long long)g[d - 1] * (unsigned long long)cand % N);
+            double md = min_distance(N, s, g);
+            if (md > best + 1e-15)
+                best = md, a = cand;
+        }
+        if (a <= 0)
+            a = 1;
+    }
+    g[0] = 1;
+    for (int d = 1; d < s; d++)
+        g[d] = (long)((unsigned long long)g[d - 1] * (unsigned long long)a % N);
+    return rank1_generator(N, s, g, L);
+}
+
+int rank1_coefficients(const rank1_lattice *L, rank1_spectrum S, void *ctx, uint64_t seed, double *c)
+{
+    size_t N = L->N;
+    for (size_t m = 0; m <= N / 2; m++) {
+        double v = S(L->k + m * L->s, L->s, ctx);
+        if (!(v >= 0) || !isfinite(v))
+            return NL_ERROR(NL_EINVAL, "spectrum: expected a finite non-negative value, got %g at wave vector %zu", v, m);
+        double xi = nl_rng_gauss2(seed, RANK1_STREAM, m, 0), eta = nl_rng_gauss2(seed, RANK1_STREAM, m, 1);
+        if (m == 0 || 2 * m == N) {
+            c[2 * m] = sqrt(v) * xi, c[2 * m + 1] = 0;
+        } else {
+            c[2 * m] = sqrt(v / 2) * xi, c[2 * m + 1] = sqrt(v / 2) * eta;
+            c[2 * (N - m)] = c[2 * m], c[2 * (N - m) + 1] = -c[2 * m + 1];
+        }
+    }
+    return NL_OK;
+}
+
+int rank1_synthesize(const rank1_lattice *L, const double *c, double extent, double *f, double *grad, double *imag)
+{
+    size_t N = L->N;
+    fftw_complex *b = fftw_alloc_complex(N);
+    fftw_plan p = b ? fftw_plan_dft_1d((int)N, b, b, FFTW_BACKWARD, FFTW_ESTIMATE) : NULL;
+    double im = 0;
+    if (!p) {
+        fftw_free(b);
+        return NL_ERROR(NL_ENOMEM, "cannot plan an FFT of %zu points", N);
+    }
+    for (int comp = -1; comp < (grad ? L->s : 0); comp++) {
+        for (size_t m = 0; m < N; m++) {
+            double complex v = c[2 * m] + I * c[2 * m + 1];
+            if (comp >= 0)
+                /* the N/2 term's derivative vanishes at every lattice point (sin(pi n) = 0) */
+                v *= 2 * m == N ? 0 : I * 2 * M_PI * (double)L->k[m * L->s + comp] / extent;
+            b[m] = v;
+        }
+        fftw_execute(p);
+        for (size_t n = 0; n < N; n++) {
+            if (comp < 0)
+                f[n] = creal(b[n]);
+            else
+                grad[n * L->s + comp] = creal(b[n]);
+            im = fmax(im, fabs(cimag(b[n])));
+        }
+    }
+    if (imag)
+        *imag = im;
+    fftw_destroy_plan(p);
+    fftw_free(b);
+    return NL_OK;
+}
+
+static void torus_vec(const rank1_lattice *L, size_t n, double *v)
+{
+    rank1_point(L, n, v);
+    for (int a = 0; a < 2; a++)
+        if (v[a] >= 0.5)
+            v[a] -= 1;
+}
+
+int rank1_delaunay(const rank1_lattice *L, size_t *n1, size_t *n2, double *v1, double *v2)
+{
+    double b1 = INFINITY, b2 = INFINITY, v[2];
+    if (L->s != 2)
+        return NL_ERROR(NL_EINVAL, "delaunay: expected a 2D lattice, got %dD", L->s);
+    if (L->N < 3)
+        return NL_ERROR(NL_EINVAL, "delaunay: expected at least 3 points");
+    for (size_t n = 1; n < L->N; n++) {
+        torus_vec(L, n, v);
+        double d = v[0] * v[0] + v[1] * v[1];
+        if (d < b1)
+            b1 = d, *n1 = n, v1[0] = v[0], v1[1] = v[1];
+    }
+    for (size_t n = 1; n < L->N; n++) {
+        torus_vec(L, n, v);
+        double d = v[0] * v[0] + v[1] * v[1], det = v1[0] * v[1] - v1[1] * v[0];
+        if (fabs(fabs(det) * (double)L->N - 1) < 1e-6 && d < b2)
+            b2 = d, *n2 = n, v2[0] = v[0], v2[1] = v[1];
+    }
+    if (isinf(b2))
+        return NL_ERROR(NL_EFAIL, "delaunay: no basis found");
+    if (v1[0] * v2[0] + v1[1] * v2[1] < 0) {
+        v2[0] = -v2[0], v2[1] = -v2[1];
+        *n2 = L->N - *n2;
+    }
+    return NL_OK;
+}
