@@ -255,3 +255,48 @@ int rank1_delaunay(const rank1_lattice *L, size_t *n1, size_t *n2, double *v1, d
     }
     return NL_OK;
 }
+
+int rank1_rasterize(const rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,
+                    double *gx, double *gy)
+{
+    size_t n1, n2, N = L->N;
+    double v1[2], v2[2];
+    int st = rank1_delaunay(L, &n1, &n2, v1, v2);
+    if (st)
+        return st;
+    for (size_t n = 0; n < N; n++) {
+        double x[2];
+        size_t id[4] = {n, (n + n1) % N, (n + n2) % N, (n + n1 + n2) % N};
+        static const int tri[2][3] = {{0, 1, 2}, {1, 3, 2}};
+        rank1_point(L, n, x);
+        double P[4][2] = {{x[0], x[1]}, {x[0] + v1[0], x[1] + v1[1]}, {x[0] + v2[0], x[1] + v2[1]},
+                          {x[0] + v1[0] + v2[0], x[1] + v1[1] + v2[1]}};
+        for (int t = 0; t < 2; t++) {
+            const double *a = P[tri[t][0]], *b = P[tri[t][1]], *c = P[tri[t][2]];
+            double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+            double lo[2], hi[2];
+            for (int q = 0; q < 2; q++) {
+                lo[q] = fmin(a[q], fmin(b[q], c[q])) * (double)W - 0.5;
+                hi[q] = fmax(a[q], fmax(b[q], c[q])) * (double)W - 0.5;
+            }
+            for (long py = (long)ceil(lo[1]); py <= (long)floor(hi[1]); py++)
+                for (long px = (long)ceil(lo[0]); px <= (long)floor(hi[0]); px++) {
+                    double X = ((double)px + 0.5) / (double)W, Y = ((double)py + 0.5) / (double)W;
+                    double wb = ((X - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (Y - a[1])) / det;
+                    double wc = ((b[0] - a[0]) * (Y - a[1]) - (X - a[0]) * (b[1] - a[1])) / det;
+                    double wa = 1 - wb - wc;
+                    if (wa < -1e-12 || wb < -1e-12 || wc < -1e-12)
+                        continue;
+                    size_t ix = (size_t)(((px % (long)W) + (long)W) % (long)W);
+                    size_t iy = (size_t)(((py % (long)W) + (long)W) % (long)W), q = iy * W + ix;
+                    size_t ia = id[tri[t][0]], ib = id[tri[t][1]], ic = id[tri[t][2]];
+                    img[q] = wa * f[ia] + wb * f[ib] + wc * f[ic];
+                    if (grad && gx && gy) {
+                        gx[q] = wa * grad[2 * ia] + wb * grad[2 * ib] + wc * grad[2 * ic];
+                        gy[q] = wa * grad[2 * ia + 1] + wb * grad[2 * ib + 1] + wc * grad[2 * ic + 1];
+                    }
+                }
+        }
+    }
+    return NL_OK;
+}

@@ -76,4 +76,10 @@ int rank1_synthesize(const rank1_lattice *L, const double *c, double extent, dou
  * n + n2) mod N, unwrapped by the vectors v1, v2. */
 int rank1_delaunay(const rank1_lattice *L, size_t *n1, size_t *n2, double *v1, double *v2);
 
+/* Linear interpolation of lattice values (and gradients, may be NULL) over
+ * the periodic Delaunay triangles onto a W x W periodic image of the unit
+ * square (pixel centres (i + 1/2)/W); outputs W*W doubles each. */
+int rank1_rasterize(const rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,
+                    double *gx, double *gy);
+
 #endif

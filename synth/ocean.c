@@ -1,0 +1,86 @@
+/* Tessendorf's ocean on rank-1 lattices and regular grids. */
+#include "ocean.h"
+#include "../core/nl_error.h"
+#include "../core/rng.h"
+
+#include <complex.h>
+#include <fftw3.h>
+#include <math.h>
+#include <stdlib.h>
+
+double ocean_phillips(const ocean_params *o, double kx, double ky)
+{
+    double Kx = 2 * M_PI * kx / o->patch, Ky = 2 * M_PI * ky / o->patch, K2 = Kx * Kx + Ky * Ky;
+    double L = o->wind * o->wind / OCEAN_G, l = L / 1000, c;
+    if (K2 == 0)
+        return 0;
+    c = (Kx * cos(o->angle) + Ky * sin(o->angle)) / sqrt(K2);
+    return o->amplitude * exp(-1 / (K2 * L * L)) / (K2 * K2) * c * c * exp(-K2 * l * l);
+}
+
+static double complex h0(const ocean_params *o, uint64_t seed, uint64_t index, double kx, double ky)
+{
+    double p = ocean_phillips(o, kx, ky);
+    return sqrt(p / 2) * (nl_rng_gauss2(seed, OCEAN_STREAM, index, 0) + I * nl_rng_gauss2(seed, OCEAN_STREAM, index, 1));
+}
+
+static double omega(const ocean_params *o, double kx, double ky)
+{
+    return sqrt(OCEAN_G * 2 * M_PI * hypot(kx, ky) / o->patch);
+}
+
+int ocean_lattice_coefficients(const rank1_lattice *L, const ocean_params *o, uint64_t seed, double t, double *c)
+{
+    size_t N = L->N;
+    if (L->s != 2)
+        return NL_ERROR(NL_EINVAL, "ocean: expected a 2D lattice");
+    for (size_t m = 0; m < N; m++) {
+        size_t mn = (N - m) % N;
+        double kx = (double)L->k[2 * m], ky = (double)L->k[2 * m + 1], w = omega(o, kx, ky);
+        /* h0(-k) is the draw of the residue N - m, whose vector is -k_m */
+        double complex v = h0(o, seed, m, kx, ky) * cexp(I * w * t) + conj(h0(o, seed, mn, -kx, -ky)) * cexp(-I * w * t);
+        if (2 * m == N)
+            v = creal(v);  /* k and -k share the residue: keep the real part */
+        c[2 * m] = creal(v), c[2 * m + 1] = cimag(v);
+    }
+    return NL_OK;
+}
+
+int ocean_grid(size_t M, const ocean_params *o, uint64_t seed, double t, double *h, double *gx, double *gy)
+{
+    size_t N = M * M;
+    fftw_complex *b = fftw_alloc_complex(N), *hk = fftw_alloc_complex(N);
+    fftw_plan p = b ? fftw_plan_dft_2d((int)M, (int)M, b, b, FFTW_BACKWARD, FFTW_ESTIMATE) : NULL;
+    if (!p || !hk) {
+        fftw_free(b), fftw_free(hk);
+        return NL_ERROR(NL_ENOMEM, "cannot plan a %zu x %zu FFT", M, M);
+    }
+    for (size_t j = 0; j < M; j++)
+        for (size_t i = 0; i < M; i++) {
+            long kx = i <= M / 2 ? (long)i : (long)i - (long)M, ky = j <= M / 2 ? (long)j : (long)j - (long)M;
+            size_t in = ((M - j) % M) * M + (M - i) % M;
+            double w = omega(o, (double)kx, (double)ky);
+            double complex v = h0(o, seed, j * M + i, (double)kx, (double)ky) * cexp(I * w * t) +
+                               conj(h0(o, seed, in, (double)-kx, (double)-ky)) * cexp(-I * w * t);
+            /* the Nyquist row and column have no distinct partner: left out */
+            if (2 * i == M || 2 * j == M)
+                v = 0;
+            hk[j * M + i] = v;
+        }
+    for (int comp = 0; comp < 3; comp++) {
+        double *out = comp == 0 ? h : comp == 1 ? gx : gy;
+        if (!out)
+            continue;
+        for (size_t j = 0; j < M; j++)
+            for (size_t i = 0; i < M; i++) {
+                long kx = i <= M / 2 ? (long)i : (long)i - (long)M, ky = j <= M / 2 ? (long)j : (long)j - (long)M;
+                double k = comp == 1 ? (double)kx : comp == 2 ? (double)ky : 0;
+                b[j * M + i] = comp == 0 ? hk[j * M + i] : I * 2 * M_PI * k / o->patch * hk[j * M + i];
+            }
+        fftw_execute(p);
+        for (size_t n = 0; n < N; n++)
+            out[n] = creal(b[n]);
+    }
+    fftw_destroy_plan(p), fftw_free(b), fftw_free(hk);
+    return NL_OK;
+}
