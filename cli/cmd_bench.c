@@ -4,7 +4,10 @@
 #include "../core/model.h"
 #include "../core/rng.h"
 #include "../synth/fft.h"
+#include "../synth/rank1.h"
 #include "../synth/subdiv.h"
+#include <complex.h>
+#include <math.h>
 
 #include <fftw3.h>
 #include <getopt.h>
@@ -157,6 +160,46 @@ int cmd_bench(int argc, char **argv)
         }
         row("acf 2D", f->count, median(t, reps), "fftw r2c+c2r padded", fft_floor(n, reps));
         nl_field_free(f);
+    }
+    /* rank-1 lattice synthesis (Keller) against the tensor-product FFT with
+     * the same number of points, s = 2, 3, 4: both are one O(N log N)
+     * transform; the lattice does the whole field with a 1D FFT of length N */
+    {
+        static const int side[5] = {0, 0, 128, 32, 16};
+        for (int sd = 2; sd <= 4; sd++) {
+            size_t M = (size_t)(quick ? side[sd] / 2 : side[sd]), NN = 1;
+            int dims[4];
+            for (int a = 0; a < sd; a++)
+                NN *= M, dims[a] = (int)M;
+            rank1_lattice L;
+            if ((st = rank1_korobov(NN, sd, 0, &L)))
+                cli_die_status(st);
+            double *cf = malloc(2 * NN * sizeof *cf), *f = malloc(NN * sizeof *f), tr[16], tt[16];
+            fftw_complex *b = fftw_alloc_complex(NN);
+            fftw_plan p = fftw_plan_dft(sd, dims, b, b, FFTW_BACKWARD, FFTW_ESTIMATE);
+            for (int r = 0; r < reps; r++) {
+                double t0 = now();
+                for (size_t k = 0; k < NN; k++) {
+                    double k2 = 0;
+                    for (int a = 0; a < sd; a++)
+                        k2 += (double)(L.k[k * sd + a] * L.k[k * sd + a]);
+                    cf[2 * k] = exp(-k2 / 64) * nl_rng_gauss2(1, 0, k, 0);
+                    cf[2 * k + 1] = exp(-k2 / 64) * nl_rng_gauss2(1, 0, k, 1);
+                }
+                rank1_synthesize(&L, cf, 1, f, NULL, NULL);
+                tr[r] = now() - t0;
+                t0 = now();
+                for (size_t k = 0; k < NN; k++)
+                    b[k] = exp(-(double)(k % 7) / 64) * (nl_rng_gauss2(1, 0, k, 0) + I * nl_rng_gauss2(1, 0, k, 1));
+                fftw_execute(p);
+                tt[r] = now() - t0;
+            }
+            char name[64], fl[64];
+            snprintf(name, sizeof name, "rank1 %dD N=%zu", sd, NN);
+            snprintf(fl, sizeof fl, "tensor FFT %dD %zu^%d", sd, M, sd);
+            row(name, NN, median(tr, reps), fl, median(tt, reps));
+            fftw_destroy_plan(p), fftw_free(b), free(cf), free(f), rank1_free(&L);
+        }
     }
     nl_model_free(m);
     return 0;

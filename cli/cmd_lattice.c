@@ -89,8 +89,6 @@ int cmd_lattice(int argc, char **argv)
         cli_die(2, "--points: expected at most 16777216, got %zu", N);
     if (mesh && s != 2)
         cli_die(2, "--mesh: expected --dim 2, got %d", s);
-    if ((mesh || out) && !spec)
-        cli_die(2, "lattice: a field (-o, --mesh) needs --acf or --spectrum");
     if (!gen)
         gen = s == 2 && fib_index(N) ? "fibonacci" : "korobov";
     if (strcmp(gen, "fibonacci") == 0) {
@@ -229,6 +227,51 @@ int cmd_lattice(int argc, char **argv)
             cli_out_commit(mesh);
         free(coef), free(f), free(grad);
         nl_model_free(m);
+    }
+    if (!spec && (out || mesh)) {
+        /* the points alone (-o) and the triangulation at height 0 (--mesh) */
+        if (out) {
+            tmp = cli_out_begin(out);
+            FILE *fp = fopen(tmp, "w");
+            if (!fp)
+                cli_die(2, "-o: cannot write \"%s\"", out);
+            for (int a = 0; a < s; a++)
+                fprintf(fp, "x%d%c", a + 1, a + 1 < s ? '\t' : '\n');
+            for (size_t n = 0; n < N; n++) {
+                double x[RANK1_MAX_DIM];
+                rank1_point(&L, n, x);
+                for (int a = 0; a < s; a++)
+                    fprintf(fp, "%.10g%c", x[a] * extent, a + 1 < s ? '\t' : '\n');
+            }
+            if (fclose(fp))
+                cli_die(1, "-o: write failed");
+            cli_out_commit(out);
+        }
+        if (mesh) {
+            size_t n1, n2;
+            double v1[2], v2[2];
+            if ((st = rank1_delaunay(&L, &n1, &n2, v1, v2)))
+                cli_die_status(st);
+            mtmp = cli_out_begin(mesh);
+            FILE *fp = fopen(mtmp, "w");
+            if (!fp)
+                cli_die(2, "--mesh: cannot write \"%s\"", mesh);
+            for (size_t n = 0; n < N; n++) {
+                double x[2];
+                rank1_point(&L, n, x);
+                double P[4][2] = {{x[0], x[1]}, {x[0] + v1[0], x[1] + v1[1]}, {x[0] + v2[0], x[1] + v2[1]},
+                                  {x[0] + v1[0] + v2[0], x[1] + v1[1] + v2[1]}};
+                static const int tri[2][3] = {{0, 1, 2}, {1, 3, 2}};
+                for (int t = 0; t < 2; t++)
+                    for (int v = 0; v < 3; v++)
+                        fprintf(fp, "v %.8g %.8g 0\n", P[tri[t][v]][0] * extent, P[tri[t][v]][1] * extent);
+            }
+            for (size_t t = 0; t < 2 * N; t++)
+                fprintf(fp, "f %zu %zu %zu\n", 3 * t + 1, 3 * t + 2, 3 * t + 3);
+            if (fclose(fp))
+                cli_die(1, "--mesh: write failed");
+            cli_out_commit(mesh);
+        }
     }
     rank1_free(&L);
     return 0;
