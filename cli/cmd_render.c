@@ -9,18 +9,23 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: noiselab render IN -o OUT.png [--range LO:HI] [--shade AZ,EL] [--zscale Z]\n\n"
+    "usage: noiselab render IN (-o OUT.png | --matrix OUT.txt) [--range LO:HI] [--shade AZ,EL]\n"
+    "                       [--zscale Z] [--step K]\n\n"
     "Grey levels: values from LO to HI map onto 0..255 (default: mean +- 3 sd).\n"
     "--shade AZ,EL: the field as an obliquely illuminated height field (Lambert),\n"
     "light from azimuth AZ (degrees from +x toward +y) and elevation EL (degrees);\n"
-    "heights are multiplied by Z (default 1) in units of the grid spacing.\n";
+    "heights are multiplied by Z (default 1) in units of the grid spacing.\n"
+    "--matrix: the field as a whitespace matrix (gnuplot's `matrix`), every K-th sample\n"
+    "(default 1), for perspective views with pm3d.\n";
 
 int cmd_render(int argc, char **argv)
 {
     static const struct option opts[] = {{"range", required_argument, 0, 'r'}, {"shade", required_argument, 0, 's'},
                                          {"zscale", required_argument, 0, 'z'}, {"output", required_argument, 0, 'o'},
+                                         {"matrix", required_argument, 0, 'm'}, {"step", required_argument, 0, 'k'},
                                          {"help", no_argument, 0, 'h'},         {0}};
-    const char *out = NULL, *tmp;
+    const char *out = NULL, *tmp, *matrix = NULL;
+    size_t step = 1;
     double lo = NAN, hi = NAN, az = NAN, el = NAN, zs = 1;
     int c, st;
     nl_field *x;
@@ -41,17 +46,37 @@ int cmd_render(int argc, char **argv)
                 cli_die(2, "--zscale: expected a positive factor, got \"%s\"", optarg);
             break;
         case 'o': out = optarg; break;
+        case 'm': matrix = optarg; break;
+        case 'k': step = cli_parse_count("--step", optarg, 1); break;
         case 'h': fputs(help, stdout); return 0;
         default: cli_bad_option("render", c, argv);
         }
     }
     if (optind + 1 != argc)
         cli_die(2, "render: expected one input file, got %d", argc - optind);
-    if (!out || !cli_has_ext(out, ".png"))
-        cli_die(2, "render: -o: expected an output file ending in .png");
+    if (!out && !matrix)
+        cli_die(2, "render: expected -o OUT.png or --matrix OUT.txt");
+    if (out && !cli_has_ext(out, ".png"))
+        cli_die(2, "render: -o: expected an output file ending in .png, got \"%s\"", out);
     x = cli_read_field(argv[optind], NULL);
     if (x->dim != 2)
         cli_die(2, "render: expected a 2D field, %s is %dD", argv[optind], x->dim);
+    if (matrix) {
+        const char *mt = cli_out_begin(matrix);
+        FILE *fp = fopen(mt, "w");
+        if (!fp)
+            cli_die(2, "--matrix: cannot write \"%s\"", matrix);
+        for (size_t j = 0; j < x->n[1]; j += step)
+            for (size_t i = 0; i < x->n[0]; i += step)
+                fprintf(fp, "%.6g%c", x->data[j * x->n[0] + i], i + step < x->n[0] ? ' ' : '\n');
+        if (fclose(fp))
+            cli_die(1, "--matrix: write failed");
+        cli_out_commit(matrix);
+        if (!out) {
+            nl_field_free(x);
+            return 0;
+        }
+    }
     tmp = cli_out_begin(out);
     if (!isnan(az)) {
         size_t nx = x->n[0], ny = x->n[1];

@@ -1,6 +1,6 @@
 # Exemplars beside their sparse-convolution resyntheses, with radial spectra.
 # gnuplot -e "dir='D'; names='grass gravel brick'; out='O.png'" plots/resynthesis.gp
-set terminal pngcairo size 1200,1150 font "DejaVu Sans,10"
+set terminal pngcairo size 1050,1000 font "DejaVu Sans,10"
 set output out
 set multiplot layout 3,3
 do for [i = 1:3] {
