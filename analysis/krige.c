@@ -1,0 +1,202 @@
+/* Ordinary and simple kriging through a Cholesky (or SVD) factorisation. */
+#include "krige.h"
+#include "../core/nl_error.h"
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct krige_plan {
+    const nl_model *m;  /* the covariance (borrowed) */
+    int dim;            /* 1..3 */
+    size_t n;           /* points */
+    double *pts;        /* n * dim */
+    int simple;         /* known mean */
+    double r0;          /* R(0) */
+    gsl_matrix *L;      /* Cholesky factor of C, or NULL */
+    gsl_matrix *pinv;   /* pseudo-inverse of C, or NULL */
+    gsl_vector *a;      /* C^-1 (d - b 1) */
+    gsl_vector *u;      /* C^-1 1 */
+    double s;           /* 1^T C^-1 1 */
+    krige_info info;
+};
+
+void krige_plan_free(krige_plan *p)
+{
+    if (!p)
+        return;
+    gsl_matrix_free(p->L), gsl_matrix_free(p->pinv);
+    gsl_vector_free(p->a), gsl_vector_free(p->u);
+    free(p->pts), free(p);
+}
+
+static double cov(const krige_plan *p, const double *x, const double *y)
+{
+    double lag[3] = {0, 0, 0};
+    for (int a = 0; a < p->dim; a++)
+        lag[a] = x[a] - y[a];
+    return nl_model_acf(p->m, p->dim, lag);
+}
+
+/* y = C^-1 b */
+static void solve(const krige_plan *p, const gsl_vector *b, gsl_vector *y)
+{
+    if (p->L)
+        gsl_linalg_cholesky_solve(p->L, b, y);
+    else
+        gsl_blas_dgemv(CblasNoTrans, 1.0, p->pinv, b, 0.0, y);
+}
+
+static int pseudo_inverse(krige_plan *p, const gsl_matrix *C)
+{
+    size_t n = p->n;
+    gsl_matrix *U = gsl_matrix_alloc(n, n), *V = gsl_matrix_alloc(n, n);
+    gsl_vector *S = gsl_vector_alloc(n), *w = gsl_vector_alloc(n);
+    int st = (!U || !V || !S || !w) ? NL_ERROR(NL_ENOMEM, "out of memory") : NL_OK;
+    if (!st) {
+        gsl_matrix_memcpy(U, C);
+        if (gsl_linalg_SV_decomp(U, V, S, w))
+            st = NL_ERROR(NL_EFAIL, "kriging: the SVD failed");
+    }
+    if (!st) {
+        double smax = gsl_vector_get(S, 0);
+        p->pinv = gsl_matrix_calloc(n, n);
+        p->info.rcond = gsl_vector_get(S, n - 1) / smax;
+        /* pinv = V diag(1/s_k) U^T over the kept singular values */
+        for (size_t k = 0; k < n; k++) {
+            double sk = gsl_vector_get(S, k);
+            gsl_vector_view col = gsl_matrix_column(V, k);
+            gsl_vector_scale(&col.vector, sk > KRIGE_RCOND_MIN * smax ? 1 / sk : 0);
+        }
+        gsl_blas_dgemm(CblasNoTrans, CblasTrans, 1.0, V, U, 0.0, p->pinv);
+    }
+    gsl_matrix_free(U), gsl_matrix_free(V), gsl_vector_free(S), gsl_vector_free(w);
+    return st;
+}
+
+int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
+                     double mean, int strict, krige_plan **out)
+{
+    krige_plan *p;
+    gsl_matrix *C;
+    gsl_vector *d, *one;
+    double zero[3] = {0, 0, 0};
+    int st = NL_OK;
+    *out = NULL;
+    if (n < 1)
+        return NL_ERROR(NL_EINVAL, "kriging: expected at least one data point");
+    if (dim < 1 || dim > 3)
+        return NL_ERROR(NL_EINVAL, "kriging: expected 1 to 3 coordinates, got %d", dim);
+    if ((st = nl_model_check_dim(m, dim)))
+        return st;
+    if (nl_model_is_spectral(m) && nl_model_get_kind(m) == NL_MODEL_SPECTRUM)
+        return NL_ERROR(NL_EINVAL, "%s: kriging needs R(lag)", nl_model_spec(m));
+    p = calloc(1, sizeof *p);
+    if (!p || !(p->pts = malloc(n * (size_t)dim * sizeof *p->pts))) {
+        free(p);
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    memcpy(p->pts, pts, n * (size_t)dim * sizeof *pts);
+    p->m = m, p->dim = dim, p->n = n, p->simple = simple;
+    p->r0 = nl_model_acf(m, dim, zero);
+    p->info.n = n;
+    C = gsl_matrix_alloc(n, n);
+    d = gsl_vector_alloc(n), one = gsl_vector_alloc(n);
+    p->a = gsl_vector_alloc(n), p->u = gsl_vector_alloc(n);
+    if (!C || !d || !one || !p->a || !p->u) {
+        gsl_matrix_free(C), gsl_vector_free(d), gsl_vector_free(one), krige_plan_free(p);
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu data points", n);
+    }
+    for (size_t i = 0; i < n; i++) {
+        for (size_t j = 0; j < n; j++)
+            gsl_matrix_set(C, i, j, cov(p, pts + i * dim, pts + j * dim));
+        gsl_vector_set(d, i, val[i]);
+        gsl_vector_set(one, i, 1.0);
+    }
+    p->L = gsl_matrix_alloc(n, n);
+    gsl_matrix_memcpy(p->L, C);
+    if (gsl_linalg_cholesky_decomp1(p->L) == 0) {
+        gsl_vector *work = gsl_vector_alloc(3 * n);
+        gsl_linalg_cholesky_rcond(p->L, &p->info.rcond, work);
+        gsl_vector_free(work);
+    } else {
+        p->info.rcond = 0;
+    }
+    if (p->info.rcond < KRIGE_RCOND_MIN) {
+        gsl_matrix_free(p->L);
+        p->L = NULL;
+        if (strict)
+            st = NL_ERROR(NL_EINVAL, "kriging: the %zu x %zu covariance matrix is singular (reciprocal condition "
+                          "%.2g): duplicate data points, or points closer than %s resolves",
+                          n, n, p->info.rcond, nl_model_spec(m));
+        else {
+            st = pseudo_inverse(p, C);
+            p->info.pseudo_inverse = 1;
+        }
+    }
+    if (!st) {
+        double b;
+        solve(p, one, p->u);
+        gsl_blas_ddot(one, p->u, &p->s);
+        if (simple) {
+            b = mean;
+        } else {
+            double ud;
+            gsl_blas_ddot(p->u, d, &ud);
+            b = ud / p->s;
+        }
+        p->info.mean = b;
+        for (size_t i = 0; i < n; i++)
+            gsl_vector_set(d, i, val[i] - b);
+        solve(p, d, p->a);
+    }
+    gsl_matrix_free(C), gsl_vector_free(d), gsl_vector_free(one);
+    if (st) {
+        krige_plan_free(p);
+        return st;
+    }
+    *out = p;
+    return NL_OK;
+}
+
+void krige_plan_info(const krige_plan *p, krige_info *info) { *info = p->info; }
+
+int krige_eval(const krige_plan *p, const double *x, double *est, double *var, double *lambda)
+{
+    size_t n = p->n;
+    double e = p->info.mean;
+    gsl_vector *c0 = NULL, *y = NULL;
+    int need = var || lambda;
+    if (need) {
+        c0 = gsl_vector_alloc(n), y = gsl_vector_alloc(n);
+        if (!c0 || !y) {
+            gsl_vector_free(c0), gsl_vector_free(y);
+            return NL_ERROR(NL_ENOMEM, "out of memory");
+        }
+    }
+    for (size_t i = 0; i < n; i++) {
+        double c = cov(p, x, p->pts + i * p->dim);
+        e += c * gsl_vector_get(p->a, i);
+        if (need)
+            gsl_vector_set(c0, i, c);
+    }
+    *est = e;
+    if (need) {
+        double cc, uc, mu;
+        solve(p, c0, y);               /* y = C^-1 c0 */
+        gsl_blas_ddot(c0, y, &cc);
+        gsl_blas_ddot(p->u, c0, &uc);  /* 1^T C^-1 c0 */
+        mu = p->simple ? 0 : (uc - 1) / p->s;
+        if (var) {
+            double v = p->r0 - cc + (p->simple ? 0 : (1 - uc) * (1 - uc) / p->s);
+            *var = v > 0 ? v : 0;
+        }
+        if (lambda)
+            for (size_t i = 0; i < n; i++)  /* lambda = C^-1 (c0 - mu 1) */
+                lambda[i] = gsl_vector_get(y, i) - mu * gsl_vector_get(p->u, i);
+    }
+    gsl_vector_free(c0), gsl_vector_free(y);
+    return NL_OK;
+}

@@ -1,0 +1,53 @@
+/* Kriging (Stam and Fiume 1991, section 5, eqs. (19)-(22)): the minimum-
+ * variance unbiased linear estimator L(t) = sum_i lambda_i d_i of a random
+ * field from data d_i at t_i, for a covariance R of the model layer (e.g.
+ * the ellipsoidal Gaussian of the paper: gauss:scale=..,angle=..,ratio=..).
+ *
+ * Ordinary kriging (unknown mean; unbiasedness by a Lagrange multiplier nu):
+ *     [C 1; 1^T 0] [lambda; nu] = [c_0; 1],  C_ij = R(t_i - t_j), c_0i = R(t - t_i),
+ * solved through C alone: with the generalised-least-squares mean
+ * b = 1^T C^-1 d / 1^T C^-1 1, the estimate is b + c_0^T C^-1 (d - b 1) and
+ * the kriging variance R(0) - c_0^T C^-1 c_0 + (1 - 1^T C^-1 c_0)^2 / 1^T C^-1 1.
+ * Simple kriging (known mean m): m + c_0^T C^-1 (d - m 1), variance
+ * R(0) - c_0^T C^-1 c_0.
+ * Plan/execute: C is factorised once (Cholesky; GSL), the dual weights
+ * a = C^-1 (d - b 1) stored, and each estimate costs O(n) (the variance
+ * O(n^2), a triangular solve).  A singular C (duplicate points, a Gaussian
+ * model with points closer than its scale resolves in double precision:
+ * Cholesky fails or its reciprocal condition number is below KRIGE_RCOND_MIN)
+ * is solved by the SVD pseudo-inverse (singular values below
+ * KRIGE_RCOND_MIN of the largest dropped) and flagged, or refused when the
+ * caller asks for strictness. */
+#ifndef AN_KRIGE_H
+#define AN_KRIGE_H
+
+#include "../core/model.h"
+
+#include <stddef.h>
+
+#define KRIGE_RCOND_MIN 1e-12
+
+typedef struct krige_plan krige_plan;
+
+typedef struct {
+    size_t n;           /* data points */
+    double rcond;       /* reciprocal condition number of C (1-norm estimate) */
+    int pseudo_inverse; /* C was singular: solved by the pseudo-inverse */
+    double mean;        /* b (ordinary) or m (simple) */
+} krige_info;
+
+/* pts: n points of dim coordinates; simple: use `mean` as the known mean.
+ * strict: refuse a singular system (NL_EINVAL naming it) instead of the
+ * pseudo-inverse. */
+int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
+                     double mean, int strict, krige_plan **out);
+
+/* Estimate at x; *var (may be NULL) receives the kriging variance.  The
+ * weights lambda (n doubles, may be NULL) are filled when asked (O(n^2)).
+ * Thread-safe for models that are (not expr:). */
+int krige_eval(const krige_plan *p, const double *x, double *est, double *var, double *lambda);
+
+void krige_plan_info(const krige_plan *p, krige_info *info);
+void krige_plan_free(krige_plan *p);
+
+#endif
