@@ -125,7 +125,7 @@ Test(cli, estimator_error_paths)
     fclose(fp);
     bad("krige --data /tmp/noiselab-pts.tsv --acf gauss --grid 8x8 --extent 0:1,0:1 --strict -o out.exr", "singular");
     bad("krige --data /tmp/noiselab-pts.tsv --acf markov --grid 8x8 --extent 0:1 -o out.exr", "--extent");
-    bad("krige --data /tmp/noiselab-pts.tsv --acf markov --grid 8x8x8 --extent 0:1,0:1,0:1 -o out.exr", "3 coordinates");
+    bad("krige --data /tmp/noiselab-pts.tsv --acf markov --grid 8x8x8 --extent 0:1,0:1,0:1 -o out.exr", "2 coordinates");
     bad("krige --data /nonexistent.tsv --acf markov --grid 8x8 --extent 0:1,0:1 -o out.exr", "/nonexistent.tsv");
     fp = fopen("/tmp/noiselab-bad.tsv", "w");
     fputs("t\tvalue\n0\t1\n1\tabc\n", fp);
