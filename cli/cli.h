@@ -21,6 +21,7 @@ int cmd_nonlin(int argc, char **argv);
 int cmd_lattice(int argc, char **argv);
 int cmd_ocean(int argc, char **argv);
 int cmd_krige(int argc, char **argv);
+int cmd_cloud(int argc, char **argv);
 int cmd_detect(int argc, char **argv);
 int cmd_shape(int argc, char **argv);
 int cmd_render(int argc, char **argv);

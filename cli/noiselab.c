@@ -21,6 +21,7 @@ static const struct {
     {"nonlin", cmd_nonlin, "predicted ACF and spectrum after a memoryless nonlinearity"},
     {"shape", cmd_shape, "memoryless distribution shaping of a field"},
     {"lattice", cmd_lattice, "rank-1 lattices, wave vectors, one-FFT random fields (Keller)"},
+    {"cloud", cmd_cloud, "render a cloud: kriged shape plus noise, ray-marched"},
     {"krige", cmd_krige, "kriging of scattered data onto a grid (Stam and Fiume)"},
     {"ocean", cmd_ocean, "Tessendorf ocean waves on a Fibonacci lattice or a grid"},
     {"render", cmd_render, "a 2D field as a picture: grey levels or shaded relief"},
@@ -56,6 +57,6 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
             return commands[i].run(argc - 1, argv + 1);
-    cli_die(2, "unknown command \"%s\" (expected one of: models, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, lattice, ocean, render, detect, bench; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, cloud, lattice, ocean, render, detect, bench; see noiselab --help)",
             argv[1]);
 }

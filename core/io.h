@@ -43,6 +43,9 @@ int nl_png_read(const char *path, nl_field **out);
 /* Write an 8-bit grey PNG of a w x h row-major image. */
 int nl_png_write_gray8(const char *path, size_t w, size_t h, const uint8_t *pix);
 
+/* Write an 8-bit RGB PNG of a w x h image (3 bytes per pixel, row-major). */
+int nl_png_write_rgb8(const char *path, size_t w, size_t h, const uint8_t *rgb);
+
 /* 8-bit preview of a 2D field (the first z slice of a 3D one): values from
  * lo to hi map linearly onto 0..255 and are clamped. */
 int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi);

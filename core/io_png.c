@@ -85,3 +85,18 @@ int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi
     free(pix);
     return st;
 }
+
+int nl_png_write_rgb8(const char *path, size_t w, size_t h, const uint8_t *rgb)
+{
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    if (w > 0x7fffffff || h > 0x7fffffff)
+        return NL_ERROR(NL_ETOOBIG, "PNG: %zu x %zu is too large", w, h);
+    img.width = (png_uint_32)w;
+    img.height = (png_uint_32)h;
+    img.format = PNG_FORMAT_RGB;
+    if (!png_image_write_to_file(&img, path, 0, rgb, 0, NULL))
+        return NL_ERROR(NL_EIO, "%s: cannot write PNG: %s", path, img.message);
+    return NL_OK;
+}

@@ -126,6 +126,16 @@ Test(cli, estimator_error_paths)
     bad("krige --data /tmp/noiselab-pts.tsv --acf gauss --grid 8x8 --extent 0:1,0:1 --strict -o out.exr", "singular");
     bad("krige --data /tmp/noiselab-pts.tsv --acf markov --grid 8x8 --extent 0:1 -o out.exr", "--extent");
     bad("krige --data /tmp/noiselab-pts.tsv --acf markov --grid 8x8x8 --extent 0:1,0:1,0:1 -o out.exr", "2 coordinates");
+    fp = fopen("/tmp/noiselab-scene.json", "w");
+    fputs("{\"size\": [32, 24], \"box\": [[-1,-1,-1],[1,1,1]], \"points\": [[0,0,0,1]], \"acf\": \"gauss:scale=0.5\", "
+          "\"noise\": {\"acf\": \"markov:scale=0.1\"}, \"camera\": {\"position\": [0,0,-4], \"look_at\": [0,0,0]}, "
+          "\"sun\": [0,0,0]}", fp);
+    fclose(fp);
+    bad("cloud /tmp/noiselab-scene.json -o out.png", "\"sun\"");
+    fp = fopen("/tmp/noiselab-scene.json", "w");
+    fputs("{\"size\": [32, 24], \"box\": [[-1,-1,-1],[1,1,1]], \"points\": [[0,0,0,1]], ", fp);
+    fclose(fp);
+    bad("cloud /tmp/noiselab-scene.json -o out.png", "not valid JSON");
     bad("krige --data /nonexistent.tsv --acf markov --grid 8x8 --extent 0:1,0:1 -o out.exr", "/nonexistent.tsv");
     fp = fopen("/tmp/noiselab-bad.tsv", "w");
     fputs("t\tvalue\n0\t1\n1\tabc\n", fp);
@@ -197,6 +207,26 @@ Test(cli, subdiv_flags_reach_the_output)
     cr_assert_str_eq(json_string_value(json_object_get(cls, "class")), "mid");
     cr_assert_eq(json_array_size(json_object_get(cls, "coefficients")), 4);
     json_decref(j);
+}
+
+/* A tiny cloud renders: sky in the corners (blue above red), cloud in the middle. */
+Test(cli, cloud_renders)
+{
+    char path[512];
+    nl_field *f;
+    FILE *fp = fopen("/tmp/noiselab-scene-ok.json", "w");
+    fputs("{\"size\": [32, 24], \"box\": [[-1,-1,-1],[1,1,1]], \"points\": [[0,0,0,1]], \"acf\": \"gauss:scale=0.6\", "
+          "\"noise\": {\"acf\": \"markov:scale=0.1\", \"amplitude\": 0.3}, \"grid\": 24, \"camera\": {\"position\": "
+          "[0,0,-4], \"look_at\": [0,0,0], \"fov\": 40}, \"sun\": [0.3,1,-0.5]}", fp);
+    fclose(fp);
+    int rc = run_noiselab("cloud /tmp/noiselab-scene-ok.json -o c.png --exr c.exr", out, sizeof out, err, sizeof err);
+    cr_assert_eq(rc, 0, "%s", err);
+    snprintf(path, sizeof path, "%s/c.exr", scratch_dir());
+    cr_assert_eq(nl_exr_read(path, &f, NULL), 0);
+    /* the cloud is brighter than the sky beside it */
+    cr_expect_gt(f->data[12 * 32 + 16], f->data[12 * 32 + 1], "centre %g, edge %g", f->data[12 * 32 + 16],
+                 f->data[12 * 32 + 1]);
+    nl_field_free(f);
 }
 
 Test(cli, json_outputs)
