@@ -216,7 +216,7 @@ Test(cli, cloud_renders)
     nl_field *f;
     FILE *fp = fopen("/tmp/noiselab-scene-ok.json", "w");
     fputs("{\"size\": [32, 24], \"box\": [[-1,-1,-1],[1,1,1]], \"points\": [[0,0,0,1]], \"acf\": \"gauss:scale=0.6\", "
-          "\"noise\": {\"acf\": \"markov:scale=0.1\", \"amplitude\": 0.3}, \"grid\": 24, \"camera\": {\"position\": "
+          "\"noise\": {\"acf\": \"markov:scale=0.1\", \"amplitude\": 0.3, \"period\": 2}, \"grid\": 24, \"camera\": {\"position\": "
           "[0,0,-4], \"look_at\": [0,0,0], \"fov\": 40}, \"sun\": [0.3,1,-0.5]}", fp);
     fclose(fp);
     int rc = run_noiselab("cloud /tmp/noiselab-scene-ok.json -o c.png --exr c.exr", out, sizeof out, err, sizeof err);
