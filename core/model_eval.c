@@ -63,8 +63,8 @@ double nl_model_acf(const nl_model *m, int dim, const double *lag)
         return nl_model_image_acf(m, lag[0], lag[1]);
     /* Stam and Fiume's ellipsoid: rotate by -angle, then shrink the y and z
      * axes by their length ratios. */
-    u = cos(m->angle) * lag[0] + sin(m->angle) * lag[1];
-    v = (-sin(m->angle) * lag[0] + cos(m->angle) * lag[1]) / m->ratio;
+    u = m->cosa * lag[0] + m->sina * lag[1];
+    v = (-m->sina * lag[0] + m->cosa * lag[1]) / m->ratio;
     w = dim == 3 ? lag[2] / m->zratio : 0;
     if (m->sep) {
         double r0 = profile(m, 0), p = profile(m, u) * profile(m, v);

@@ -16,6 +16,7 @@ struct nl_model {
     double fmin, fmax;   /* power-law band, cycles per unit length */
     int sep;             /* separable product over axes */
     double angle;        /* ellipsoid rotation about z, radians */
+    double cosa, sina;   /* cos and sin of angle, set after parsing */
     double ratio;        /* y length over x length */
     double zratio;       /* z length over x length */
     int aniso_given;     /* sep, angle, ratio or zratio was given */

@@ -238,6 +238,8 @@ int nl_model_parse(const char *spec, nl_model **out)
         nl_model_free(m);
         return st;
     }
+    m->cosa = cos(m->angle);
+    m->sina = sin(m->angle);
     *out = m;
     return NL_OK;
 }
