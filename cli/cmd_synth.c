@@ -61,6 +61,8 @@ static const char help[] =
     "                   negative spectrum (fft) or variances (subdiv); flagged in the output\n"
     "  --preview        8-bit PNG of a 2D field (the first slice of 3D), mean +- 3 sd\n"
     "  --json           print the synthesis report as JSON\n"
+    "  --from FILE      regenerate FILE from what it records (method, options, model,\n"
+    "                   seed, size, spacing): bit for bit for every method\n"
     "  -o               EXR (any dimension) or TSV (1D: columns t, value)\n";
 
 /* The spec for --spectrum: a bare expression means spectrum:EXPR. */
@@ -106,6 +108,76 @@ static void parse_origin(const char *s, long *o)
         cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
 }
 
+/* Regenerate from a field's provenance: the method string "name:k=v,...|k=v|..."
+ * written by the methods, the model, seed, size and spacing. */
+static void apply_from(const char *path, synth_job *job, const char **acf, const char **spec, const char **size,
+                       const char **spacing, char *mbuf, char *sizebuf, char *spbuf, char *methbuf)
+{
+    nl_meta meta;
+    nl_field *f = cli_read_field(path, &meta);
+    char *rest, *part, *save = NULL;
+    nl_field_free(f);
+    if (!meta.method[0] || !meta.seed[0] || !meta.size[0])
+        cli_die(2, "--from: %s does not record how it was made (noiselab.method, seed, size)", path);
+    snprintf(methbuf, 256, "%s", meta.method);
+    rest = strchr(methbuf, ':');
+    if (rest)
+        *rest++ = 0;
+    if (strchr(methbuf, ' '))
+        cli_die(2, "--from: %s was post-processed (\"%s\"); only synthesised fields regenerate", path, meta.method);
+    job->method = methbuf;
+    job->seed = cli_parse_u64("noiselab.seed", meta.seed);
+    snprintf(sizebuf, 64, "%s", meta.size), *size = sizebuf;
+    snprintf(spbuf, 128, "%s", meta.spacing), *spacing = spbuf[0] ? spbuf : NULL;
+    if (meta.model[0]) {
+        nl_model *m;
+        int st = nl_model_parse(meta.model, &m);
+        if (st)
+            cli_die_status(st);
+        snprintf(mbuf, 1100, "%s", meta.model);
+        if (nl_model_is_spectral(m))
+            *spec = mbuf;
+        else
+            *acf = mbuf;
+        nl_model_free(m);
+    }
+    if (strstr(meta.flags, "clamped") || strstr(meta.flags, "not-positive-definite"))
+        job->clamp = 1;
+    for (part = rest ? strtok_r(rest, "|", &save) : NULL; part; part = strtok_r(NULL, "|", &save)) {
+        if (part != rest) {  /* an expression-valued key: the rest of the part */
+            char *eq = strchr(part, '=');
+            if (!eq)
+                continue;
+            *eq = 0;
+            if (!strcmp(part, "kernel")) job->kernel = eq + 1;
+            else if (!strcmp(part, "exemplar")) job->exemplar = eq + 1;
+            else if (!strcmp(part, "angle")) job->angle = eq + 1;
+            else if (!strcmp(part, "seed-image")) job->seed_image = eq + 1;
+            continue;
+        }
+        char *kv, *s2 = NULL;
+        for (kv = strtok_r(part, ",", &s2); kv; kv = strtok_r(NULL, ",", &s2)) {
+            char *eq = strchr(kv, '=');
+            const char *v = eq ? eq + 1 : "";
+            if (eq)
+                *eq = 0;
+            if (!strcmp(kv, "levels")) job->levels = atoi(v);
+            else if (!strcmp(kv, "neighborhood")) job->N = strcmp(v, "auto") ? atoi(v) : 0;
+            else if (!strcmp(kv, "tol")) job->tol = atof(v);
+            else if (!strcmp(kv, "nonperiodic")) job->nonperiodic = 1;
+            else if (!strcmp(kv, "origin")) sscanf(v, "%ld:%ld", &job->origin[0], &job->origin[1]);
+            else if (!strcmp(kv, "random-neighborhoods")) job->random_nb = atoi(v);
+            else if (!strcmp(kv, "H")) job->H = atof(v);
+            else if (!strcmp(kv, "variance-scale")) job->vscale = atof(v);
+            else if (!strcmp(kv, "density")) job->density = atof(v);
+            else if (!strcmp(kv, "radius")) job->radius = atoi(v);
+            else if (!strcmp(kv, "cell")) job->cell = atoi(v), job->cell0 = atof(v);
+            else if (!strcmp(kv, "wrap")) job->wrap = 1;
+            else if (!strcmp(kv, "octaves")) job->octaves = atoi(v);
+        }
+    }
+}
+
 /* Options that only some methods take. */
 static void only_for(const char *opt, int given, const char *method, const char *allowed)
 {
@@ -133,11 +205,13 @@ int cmd_synth(int argc, char **argv)
         {"kernel", required_argument, 0, 'K'},     {"exemplar", required_argument, 0, 'E'},
         {"angle", required_argument, 0, 'A'},      {"radius", required_argument, 0, 'r'},
         {"cell", required_argument, 0, 'C'},       {"wrap", no_argument, 0, 'W'},
+        {"from", required_argument, 0, 'F'},
         {"octaves", required_argument, 0, 'V'},
         {0}};
     const char *acf = NULL, *spec = NULL, *size = NULL, *spacing = NULL, *out = NULL, *preview = NULL;
-    const char *tmp, *ptmp = NULL, *origin = NULL;
-    char sbuf[1100];
+    const char *tmp, *ptmp = NULL, *origin = NULL, *from = NULL;
+    static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
+    char sbuf[1200];
     int c, json = 0, st, given_L = 0, given_N = 0, given_tol = 0, given_vs = 0, given_density = 0;
     synth_job job;
     synth_result res;
@@ -213,6 +287,7 @@ int cmd_synth(int argc, char **argv)
         case 'r': job.radius = (int)cli_parse_count("--radius", optarg, 1); break;
         case 'C': job.cell = (int)cli_parse_count("--cell", optarg, 1); break;
         case 'W': job.wrap = 1; break;
+        case 'F': from = optarg; break;
         case 'V':
             job.octaves = (int)cli_parse_count("--octaves", optarg, 1);
             if (job.octaves > 16)
@@ -222,11 +297,27 @@ int cmd_synth(int argc, char **argv)
         default: cli_bad_option("synth", c, argv);
         }
     }
-    if (optind >= argc)
+    if (from) {
+        if (optind < argc || acf || spec || size || spacing || given_L || given_N || given_tol || given_vs ||
+            given_density || origin || job.nonperiodic || job.kernel || job.exemplar || job.angle || job.radius ||
+            job.cell || job.wrap || job.octaves || job.seed_image || job.random_nb || !isnan(job.H))
+            cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
+                    "and --json");
+        apply_from(from, &job, &acf, &spec, &size, &spacing, mbuf, sizebuf, spbuf, methbuf);
+        given_L = job.levels != 0;
+        given_density = strcmp(job.method, "faulting") == 0 || strcmp(job.method, "sparse") == 0;
+        given_N = strcmp(job.method, "subdiv") == 0;
+        given_tol = given_N;
+        given_vs = strcmp(job.method, "midpoint") == 0;
+        if (job.nonperiodic && (job.origin[0] || job.origin[1]))
+            origin = "recorded";
+    } else if (optind >= argc)
         cli_die(2, "synth: expected a METHOD (fft, subdiv, midpoint, circulant, cholesky), see noiselab synth --help");
-    job.method = argv[optind];
-    if (optind + 1 < argc)
-        cli_die(2, "synth: unexpected argument \"%s\"", argv[optind + 1]);
+    if (!from) {
+        job.method = argv[optind];
+        if (optind + 1 < argc)
+            cli_die(2, "synth: unexpected argument \"%s\"", argv[optind + 1]);
+    }
     static const struct {
         const char *name;
         void (*run)(const synth_job *, nl_field *, synth_result *);
@@ -267,7 +358,7 @@ int cmd_synth(int argc, char **argv)
     only_for("--density", given_density, job.method, "faulting sparse");
     if (origin && !job.nonperiodic && strcmp(job.method, "subdiv") == 0)
         cli_die(2, "synth subdiv: --origin needs --nonperiodic (a periodic field has no origin)");
-    if (origin)
+    if (origin && !from)
         parse_origin(origin, job.origin);
     if (strcmp(job.method, "midpoint") == 0 && !isnan(job.H) && (acf || spec))
         cli_die(2, "synth midpoint: give either --H or a power-law model, not both");

@@ -160,8 +160,11 @@ void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r)
         snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), ",random-neighborhoods=%d",
                  job->random_nb);
     if (job->nonperiodic)
-        snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), ",origin=%ld,%ld",
+        snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), ",origin=%ld:%ld",
                  job->origin[0], job->origin[1]);
+    if (img)
+        snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), "|seed-image=%s",
+                 job->seed_image);
     flags_string(c->flags, r->flags, sizeof r->flags);
     r->sd = sqrt(c->r0);
     r->report = json_pack("{s:f,s:f,s:o}", "spacing0", s0, "variance", c->r0, "levels", levels_report(c));
@@ -309,9 +312,14 @@ void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r)
     for (size_t i = 0; mean != 0 && i < f->count; i++)
         f->data[i] += mean;
     synth_sparse_plan_free(p);
-    snprintf(r->method, sizeof r->method, "sparse:radius=%d,cell=%d,density=%.17g%s%s%s%s%s%s", info.radius, info.cell,
-             info.density, job->wrap ? ",wrap" : "", job->kernel ? ",kernel=" : "", job->kernel ? job->kernel : "",
-             job->exemplar ? ",exemplar=" : "", job->exemplar ? job->exemplar : "", job->angle ? ",angle" : "");
+    /* expression-valued keys follow '|', as they may hold commas */
+    char org[64] = "";
+    if (!job->wrap && (job->origin[0] || job->origin[1]))
+        snprintf(org, sizeof org, ",origin=%ld:%ld", job->origin[0], job->origin[1]);
+    snprintf(r->method, sizeof r->method, "sparse:radius=%d,cell=%d,density=%.17g%s%s%s%s%s%s%s", info.radius,
+             info.cell, info.density, job->wrap ? ",wrap" : org, job->kernel ? "|kernel=" : "",
+             job->kernel ? job->kernel : "", job->exemplar ? "|exemplar=" : "", job->exemplar ? job->exemplar : "",
+             job->angle ? "|angle=" : "", job->angle ? job->angle : "");
     r->sd = sqrt(info.variance);
     r->offset = mean;
     r->report = json_pack("{s:i,s:i,s:f,s:f,s:f,s:f}", "radius", info.radius, "cell", info.cell, "density",
