@@ -23,7 +23,7 @@ BINDIR    ?= bin
 BIN       := $(BINDIR)/noiselab
 DEPS_OK   := $(BUILD)/.deps-ok
 
-.PHONY: all deps test figures experiments bench asan clean
+.PHONY: all deps test figures experiments bench asan fuzz clean
 .SECONDARY:
 all: $(BIN) $(LIB)
 
@@ -72,6 +72,21 @@ experiments: figures
 asan: $(DEPS_OK)
 	LSAN_OPTIONS=suppressions=$(abspath tests/lsan.supp) $(MAKE) BUILD=build/asan BINDIR=build/asan/bin \
 	    OPT="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" test
+
+# libFuzzer on the parsers (clang), FUZZ_SECONDS each (default 30), from the
+# committed seed corpora; crashes are left as crash-* files and fail the run.
+FUZZ_SECONDS ?= 30
+FUZZ_TARGETS := model dist field
+fuzz: $(DEPS_OK)
+	@mkdir -p $(BUILD)/fuzz
+	@n=1; for t in $(FUZZ_TARGETS); do \
+	    clang -O1 -g -fsanitize=fuzzer,address,undefined -DFUZZ_TARGET=$$n -D_GNU_SOURCE -I/usr/include/OpenEXR \
+	        -DNL_VERSION='"$(VERSION)"' tests/fuzz/fuzz_parse.c $(LIB_SRC) -o $(BUILD)/fuzz/$$t $(LDLIBS) -lm || exit 1; \
+	    mkdir -p $(BUILD)/fuzz/corpus-$$t && cp tests/fuzz/corpus/$$t/* $(BUILD)/fuzz/corpus-$$t/; \
+	    ASAN_OPTIONS=detect_leaks=0 $(BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	        -artifact_prefix=$(BUILD)/fuzz/$$t- $(BUILD)/fuzz/corpus-$$t || exit 1; \
+	    n=$$((n + 1)); \
+	done
 
 # Speed against this machine's floor, measured in the same run (TSV).
 bench: $(BIN)

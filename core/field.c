@@ -19,13 +19,20 @@ size_t nl_mem_available(void)
                 break;
         fclose(fp);
     }
+    size_t avail = (size_t)(kb * 1024ULL);
     if (kb == 0) {
         long pages = sysconf(_SC_AVPHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
-        if (pages > 0 && psize > 0)
-            return (size_t)pages * (size_t)psize;
-        return 0;
+        avail = pages > 0 && psize > 0 ? (size_t)pages * (size_t)psize : 0;
     }
-    return (size_t)(kb * 1024ULL);
+    /* NOISELAB_MEMORY_LIMIT (bytes) lowers the ceiling, e.g. on shared machines */
+    const char *lim = getenv("NOISELAB_MEMORY_LIMIT");
+    if (lim) {
+        char *end;
+        unsigned long long v = strtoull(lim, &end, 10);
+        if (end != lim && !*end && v > 0 && (avail == 0 || v < avail))
+            avail = (size_t)v;
+    }
+    return avail;
 }
 
 int nl_size_check(int dim, const size_t *n, size_t elem, size_t copies, size_t *count)

@@ -30,8 +30,9 @@ nl_field *nl_field_alloc(int dim, const size_t *n, const double *h, int *status)
 
 void nl_field_free(nl_field *f);
 
-/* Bytes of memory available to this process now (MemAvailable), or 0 if
- * unknown. */
+/* Bytes of memory available to this process now (MemAvailable, lowered by
+ * the environment variable NOISELAB_MEMORY_LIMIT in bytes when set), or 0
+ * if unknown. */
 size_t nl_mem_available(void);
 
 #endif
