@@ -12,6 +12,7 @@ static const struct {
     const char *summary;
 } commands[] = {
     {"models", cmd_models, "list the autocorrelation and spectrum models with their parameters"},
+    {"validate", cmd_validate, "check a model and test every method on it: a report with a verdict"},
     {"check", cmd_check, "is a model positive definite, how smooth, where singular"},
     {"coeffs", cmd_coeffs, "subdivision coefficients, variances and flags per level"},
     {"synth", cmd_synth, "synthesise a field (methods: fft, subdiv, midpoint)"},
@@ -57,6 +58,6 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
             return commands[i].run(argc - 1, argv + 1);
-    cli_die(2, "unknown command \"%s\" (expected one of: models, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, cloud, lattice, ocean, render, detect, bench; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, cloud, lattice, ocean, render, detect, bench; see noiselab --help)",
             argv[1]);
 }
