@@ -5,6 +5,7 @@
 #include "../core/wk.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 int an_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out)
 {
@@ -39,6 +40,46 @@ int an_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, doub
     for (size_t i = 0; i <= maxlag; i++) {
         lag[i] = (double)i * full->h[axis];
         val[i] = full->data[i * stride];
+    }
+    return NL_OK;
+}
+
+int an_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t maxlag, double *val)
+{
+    double m = isnan(mean) ? nl_field_mean(x) : mean;
+    size_t stride = 1, n = x->n[axis];
+    if (axis < 0 || axis >= x->dim)
+        return NL_ERROR(NL_EINVAL, "axis: expected an axis of the %d-D field, got %d", x->dim, axis);
+    if (maxlag >= n)
+        return NL_ERROR(NL_EINVAL, "max-lag: expected at most %zu samples, got %zu", n - 1, maxlag);
+    for (int a = 0; a < axis; a++)
+        stride *= x->n[a];
+    for (size_t l = 0; l <= maxlag; l++) {
+        double s = 0;
+        /* every pair (p, p + l e_axis) inside the grid (eq. 15) */
+        for (size_t q = 0; q < x->count; q++) {
+            size_t pos = (q / stride) % n;
+            if (pos + l < n)
+                s += (x->data[q] - m) * (x->data[q + l * stride] - m);
+        }
+        double pairs = (double)x->count / (double)n * (double)(n - l);
+        val[l] = s / (unbiased ? pairs : (double)x->count);
+    }
+    return NL_OK;
+}
+
+int an_acf_bartlett(const double *c, size_t nc, size_t N, size_t maxlag, double *var)
+{
+    if (nc < 2 * maxlag + 1)
+        return NL_ERROR(NL_EINVAL, "bartlett: expected the autocovariance to lag %zu at least", 2 * maxlag);
+    for (size_t k = 0; k <= maxlag; k++) {
+        double s = 0;
+        long K = (long)(nc - 1) - (long)k;
+        for (long v = -K; v <= K; v++) {
+            size_t av = (size_t)labs(v), p = (size_t)labs(v + (long)k), q = (size_t)labs(v - (long)k);
+            s += c[av] * c[av] + (p < nc && q < nc ? c[p] * c[q] : 0);
+        }
+        var[k] = s / (double)N;
     }
     return NL_OK;
 }

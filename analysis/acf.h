@@ -26,4 +26,16 @@ int an_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out);
  * lag[i] = i h_axis, val[i] = estimate.  maxlag must be < n_axis. */
 int an_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, double *val);
 
+/* The direct sum of eq. (15) for lags 0..maxlag along `axis` (O(N maxlag)),
+ * with the same divisors and mean as an_acf_full; agrees with the FFT
+ * estimate to rounding. */
+int an_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t maxlag, double *val);
+
+/* Bartlett's approximation (1946) to the variance of the biased
+ * autocovariance estimate of a 1D Gaussian series at lag k:
+ *     Var c_k ~ (1/N) sum_{|v| < N} [c_v^2 + c_{v+k} c_{v-k}],
+ * with the estimate c in place of R (its plug-in form), summed over
+ * |v| <= vmax.  var[k] for k = 0..maxlag. */
+int an_acf_bartlett(const double *c, size_t nc, size_t N, size_t maxlag, double *var);
+
 #endif

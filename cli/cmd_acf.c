@@ -22,6 +22,9 @@ static const char help[] =
     "  --axis        lag direction for 2D/3D fields (default x)\n"
     "  --radial      average over directions, bins of one sample spacing\n"
     "  --target SPEC add the model's R at each lag (radial: at lag (r, 0, 0))\n"
+    "  --direct      the direct sum of eq. (15) instead of the FFT (same numbers to rounding)\n"
+    "  --bands       1D: a 95% band lo, hi from Bartlett's formula for the variance of the\n"
+    "                (biased) estimate, with the estimate in place of R up to 4 max-lag\n"
     "  --json        {\"lag\": [...], \"acf\": [...], ...} on stdout\n"
     "  -o            TSV with columns lag, acf[, target] (default: TSV on stdout)\n";
 
@@ -68,10 +71,12 @@ int cmd_acf(int argc, char **argv)
         {"radial", no_argument, 0, 'r'},        {"unbiased", no_argument, 0, 'u'},
         {"mean", required_argument, 0, 'm'},    {"target", required_argument, 0, 't'},
         {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
-        {"help", no_argument, 0, 'h'},          {0}};
+        {"help", no_argument, 0, 'h'},          {"direct", no_argument, 0, 'D'},
+        {"bands", no_argument, 0, 'B'},          {0}};
     const char *out = NULL, *tmp = NULL, *target = NULL, *in;
     double maxlag = NAN, mean = NAN, *lag, *val, *tgt = NULL;
-    int c, axis = 0, radial = 0, unbiased = 0, json = 0, st;
+    int c, axis = 0, radial = 0, unbiased = 0, json = 0, st, direct = 0, bands = 0;
+    double *blo = NULL, *bhi = NULL;
     size_t nl, *cnt = NULL;
     nl_field *x, *full;
 
@@ -93,6 +98,8 @@ int cmd_acf(int argc, char **argv)
         case 'm': mean = cli_parse_double("--mean", optarg); break;
         case 't': target = optarg; break;
         case 'j': json = 1; break;
+        case 'D': direct = 1; break;
+        case 'B': bands = 1; break;
         case 'o': out = optarg; break;
         case 'h': fputs(help, stdout); return 0;
         default: cli_bad_option("acf", c, argv);
@@ -121,7 +128,15 @@ int cmd_acf(int argc, char **argv)
     cnt = malloc(nl * sizeof *cnt);
     if (!lag || !val || !cnt)
         cli_die(1, "out of memory");
-    if (radial) {
+    if ((direct || bands) && radial)
+        cli_die(2, "acf: --direct and --bands go with an axis, not --radial");
+    if (bands && (x->dim != 1 || unbiased))
+        cli_die(2, "acf: --bands is for the biased estimate of a 1D field");
+    if (direct) {
+        st = an_acf_direct(x, mean, unbiased, axis, nl - 1, val);
+        for (size_t i = 0; i < nl; i++)
+            lag[i] = (double)i * x->h[axis];
+    } else if (radial) {
         double step = x->h[0];
         for (int a = 1; a < x->dim; a++)
             step = fmin(step, x->h[a]);
@@ -131,6 +146,22 @@ int cmd_acf(int argc, char **argv)
     }
     if (st)
         cli_die_status(st);
+    if (bands) {
+        size_t nc = 4 * (nl - 1) + 1 < x->n[0] ? 4 * (nl - 1) + 1 : x->n[0];
+        double *cv = malloc(nc * sizeof *cv), *var = malloc(nl * sizeof *var);
+        blo = malloc(nl * sizeof *blo), bhi = malloc(nl * sizeof *bhi);
+        if (!cv || !var || !blo || !bhi)
+            cli_die(1, "out of memory");
+        for (size_t i = 0; i < nc; i++)
+            cv[i] = full->data[i];
+        if (nc < 2 * (nl - 1) + 1)
+            cli_die(2, "--bands: expected a field of at least %zu samples for --max-lag %zu", 2 * (nl - 1) + 1, nl - 1);
+        if ((st = an_acf_bartlett(cv, nc, x->count, nl - 1, var)))
+            cli_die_status(st);
+        for (size_t i = 0; i < nl; i++)
+            blo[i] = val[i] - 1.959964 * sqrt(var[i]), bhi[i] = val[i] + 1.959964 * sqrt(var[i]);
+        free(cv), free(var);
+    }
     if (target) {
         tgt = malloc(nl * sizeof *tgt);
         if (!tgt)
@@ -141,17 +172,26 @@ int cmd_acf(int argc, char **argv)
         json_t *o = json_pack("{s:o,s:o}", "lag", cli_json_array(lag, nl), "acf", cli_json_array(val, nl));
         if (tgt)
             json_object_set_new(o, "target", cli_json_array(tgt, nl));
+        if (bands) {
+            json_object_set_new(o, "band_lo", cli_json_array(blo, nl));
+            json_object_set_new(o, "band_hi", cli_json_array(bhi, nl));
+        }
         json_object_set_new(o, "estimator", json_string(unbiased ? "unbiased" : "biased"));
         json_object_set_new(o, "direction", json_string(radial ? "radial" : (const char *[]){"x", "y", "z"}[axis]));
         cli_json_print(o);
     }
     if (out || !json) {
-        static const char *const names[] = {"lag", "acf", "target"};
-        const double *cols[] = {lag, val, tgt};
+        const char *names[5] = {"lag", "acf"};
+        const double *cols[5] = {lag, val};
+        int ncol = 2;
+        if (tgt)
+            names[ncol] = "target", cols[ncol++] = tgt;
+        if (bands)
+            names[ncol] = "lo", cols[ncol++] = blo, names[ncol] = "hi", cols[ncol++] = bhi;
         char comment[256];
         snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in spacing units",
                  unbiased ? "unbiased" : "biased", radial ? "radial average" : "along one axis");
-        st = write_table(out ? tmp : NULL, comment, tgt ? 3 : 2, names, nl, cols);
+        st = write_table(out ? tmp : NULL, comment, ncol, names, nl, cols);
         if (st)
             cli_die_status(st);
     }
@@ -160,7 +200,7 @@ int cmd_acf(int argc, char **argv)
     free(lag);
     free(val);
     free(cnt);
-    free(tgt);
+    free(tgt), free(blo), free(bhi);
     nl_field_free(full);
     nl_field_free(x);
     return 0;
