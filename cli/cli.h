@@ -18,6 +18,7 @@ int cmd_models(int argc, char **argv);
 int cmd_coeffs(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_validate(int argc, char **argv);
+int cmd_card(int argc, char **argv);
 int cmd_nonlin(int argc, char **argv);
 int cmd_lattice(int argc, char **argv);
 int cmd_ocean(int argc, char **argv);

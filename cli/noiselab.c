@@ -25,6 +25,7 @@ static const struct {
     {"cloud", cmd_cloud, "render a cloud: kriged shape plus noise, ray-marched"},
     {"krige", cmd_krige, "kriging of scattered data onto a grid (Stam and Fiume)"},
     {"ocean", cmd_ocean, "Tessendorf ocean waves on a Fibonacci lattice or a grid"},
+    {"card", cmd_card, "one picture of a field: field, spectra, radial spectrum, histogram"},
     {"render", cmd_render, "a 2D field as a picture: grey levels or shaded relief"},
     {"detect", cmd_detect, "creases and aliasing in a subdivision field"},
     {"bench", cmd_bench, "speed of the methods against this machine's floor (TSV)"},
@@ -58,6 +59,6 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0)
             return commands[i].run(argc - 1, argv + 1);
-    cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, cloud, lattice, ocean, render, detect, bench; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, cloud, lattice, ocean, card, render, detect, bench; see noiselab --help)",
             argv[1]);
 }

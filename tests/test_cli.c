@@ -296,6 +296,16 @@ Test(cli, validate_reports)
     cr_expect(strstr(out, "fft refused") != NULL, "%s", out);
 }
 
+Test(cli, card)
+{
+    char path[512];
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 64x64 -o card.exr", 0, 0, err, sizeof err), 0);
+    cr_assert_eq(run_noiselab("card card.exr --acf markov:scale=4 -o card.png", 0, 0, err, sizeof err), 0, "%s", err);
+    snprintf(path, sizeof path, "%s/card.png", scratch_dir());
+    cr_expect(file_exists(path));
+    bad("card f.tsv -o out.png", "2D field");
+}
+
 Test(cli, json_outputs)
 {
     json_error_t je;

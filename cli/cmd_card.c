@@ -1,0 +1,149 @@
+/* noiselab card: one picture of a 2D field in the manner of Lagae et al.'s
+ * survey of procedural noise. */
+#include "cli.h"
+#include "../analysis/hist.h"
+#include "../analysis/psd.h"
+#include "../analysis/radial.h"
+#include "../analysis/welch.h"
+#include "../core/model.h"
+#include "../core/nl_error.h"
+#include "../core/wk.h"
+
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char help[] =
+    "usage: noiselab card FIELD -o CARD.png [--acf SPEC | --spectrum SPEC]\n\n"
+    "One picture of a 2D field: the field; one periodogram and the Welch average over\n"
+    "segments of a quarter of the side (log scale, zero frequency at the centre); the\n"
+    "radial spectrum against the model's (when given); the histogram against the\n"
+    "Gaussian of the same mean and variance.  Drawn by gnuplot.\n";
+
+static nl_field *centred_log(const nl_field *P)
+{
+    int st;
+    nl_field *C = nl_field_alloc(2, P->n, P->h, &st);
+    double mx = 0;
+    if (!C)
+        cli_die_status(st);
+    for (size_t q = 0; q < P->count; q++)
+        mx = fmax(mx, P->data[q]);
+    for (size_t j = 0; j < P->n[1]; j++)
+        for (size_t i = 0; i < P->n[0]; i++)
+            C->data[((j + P->n[1] / 2) % P->n[1]) * P->n[0] + (i + P->n[0] / 2) % P->n[0]] =
+                log10(fmax(P->data[j * P->n[0] + i], mx * 1e-8));
+    return C;
+}
+
+int cmd_card(int argc, char **argv)
+{
+    static const struct option opts[] = {{"output", required_argument, 0, 'o'}, {"acf", required_argument, 0, 'a'},
+                                         {"spectrum", required_argument, 0, 'a'}, {"help", no_argument, 0, 'h'},
+                                         {0}};
+    const char *out = NULL, *spec = NULL;
+    int c, st;
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+        switch (c) {
+        case 'o': out = optarg; break;
+        case 'a': spec = optarg; break;
+        case 'h': fputs(help, stdout); return 0;
+        default: cli_bad_option("card", c, argv);
+        }
+    }
+    if (optind + 1 != argc)
+        cli_die(2, "card: expected one field file, got %d", argc - optind);
+    if (!out || !cli_has_ext(out, ".png"))
+        cli_die(2, "card: -o: expected an output file ending in .png");
+    nl_field *x = cli_read_field(argv[optind], NULL), *P, *W;
+    if (x->dim != 2 || x->n[0] < 32 || x->n[1] < 32)
+        cli_die(2, "card: expected a 2D field of at least 32 x 32, %s is not", argv[optind]);
+    nl_model *m = NULL;
+    if (spec && (st = nl_model_parse(spec, &m)))
+        cli_die_status(st);
+    const char *tmp = cli_out_begin(out);
+    char dir[] = "/tmp/noiselab-card-XXXXXX", path[4200];
+    if (!mkdtemp(dir))
+        cli_die(1, "card: cannot create a temporary directory");
+    an_moments mo;
+    size_t seg = (x->n[0] < x->n[1] ? x->n[0] : x->n[1]) / 4, nseg;
+    if ((st = an_moments_compute(x, &mo)) || (st = an_psd_periodogram(x, NAN, &P)) ||
+        (st = an_psd_welch(x, seg, NAN, &W, &nseg)))
+        cli_die_status(st);
+    snprintf(path, sizeof path, "%s/field.png", dir);
+    double sd = sqrt(mo.variance);
+    if ((st = nl_png_write_field(path, x, mo.mean - 3 * sd, mo.mean + 3 * sd)))
+        cli_die_status(st);
+    nl_field *C = centred_log(P), *D = centred_log(W);
+    double mx = -INFINITY;
+    for (size_t q = 0; q < C->count; q++)
+        mx = fmax(mx, C->data[q]);
+    snprintf(path, sizeof path, "%s/periodogram.png", dir);
+    nl_png_write_field(path, C, mx - 7, mx);
+    mx = -INFINITY;
+    for (size_t q = 0; q < D->count; q++)
+        mx = fmax(mx, D->data[q]);
+    snprintf(path, sizeof path, "%s/welch.png", dir);
+    nl_png_write_field(path, D, mx - 7, mx);
+    /* radial spectra on the Welch grid */
+    size_t nb = seg / 2 + 1, *cnt = malloc(nb * sizeof *cnt);
+    double *r = malloc(nb * sizeof *r), *v = malloc(nb * sizeof *v), *t = malloc(nb * sizeof *t);
+    an_radial(W, AN_GRID_FREQ, 1.0 / ((double)seg * x->h[0]), nb, r, v, cnt);
+    for (size_t b = 0; b < nb; b++)
+        t[b] = NAN;
+    if (m) {
+        nl_field *S = nl_field_alloc(2, W->n, W->h, &st);
+        double *rr = malloc(nb * sizeof *rr);
+        if (S && nl_wk_sample_spectrum(m, S) == NL_OK)
+            an_radial(S, AN_GRID_FREQ, 1.0 / ((double)seg * x->h[0]), nb, rr, t, cnt);
+        nl_field_free(S), free(rr);
+    }
+    snprintf(path, sizeof path, "%s/radial.tsv", dir);
+    FILE *fp = fopen(path, "w");
+    fprintf(fp, "f\twelch\ttarget\n");
+    for (size_t b = 1; b < nb; b++)
+        fprintf(fp, "%.8g\t%.8g\t%.8g\n", r[b], v[b], t[b]);
+    fclose(fp);
+    /* histogram against the Gaussian */
+    double edges[41], counts[40];
+    an_hist(x, 40, edges, counts);
+    snprintf(path, sizeof path, "%s/hist.tsv", dir);
+    fp = fopen(path, "w");
+    fprintf(fp, "x\tdensity\tgauss\n");
+    for (int b = 0; b < 40; b++) {
+        double mid = 0.5 * (edges[b] + edges[b + 1]), w = edges[b + 1] - edges[b];
+        fprintf(fp, "%.8g\t%.8g\t%.8g\n", mid, counts[b] / ((double)x->count * w),
+                exp(-0.5 * (mid - mo.mean) * (mid - mo.mean) / mo.variance) / sqrt(2 * M_PI * mo.variance));
+    }
+    fclose(fp);
+    snprintf(path, sizeof path, "%s/card.gp", dir);
+    fp = fopen(path, "w");
+    fprintf(fp, "set terminal pngcairo size 1500,360 font 'DejaVu Sans,10'\nset output '%s'\n"
+                "set multiplot layout 1,5 title '%s%s%s'\nunset key\nunset tics\nunset border\nset size ratio -1\n"
+                "set title 'field'\nplot '%s/field.png' binary filetype=png with rgbimage\n"
+                "set title 'periodogram (log)'\nplot '%s/periodogram.png' binary filetype=png with rgbimage\n"
+                "set title 'Welch, %zu segments (log)'\nplot '%s/welch.png' binary filetype=png with rgbimage\n"
+                "set size noratio\nset border\nset tics\nset key bottom left\nset logscale xy\nset format y '10^{%%L}'\n"
+                "set title 'radial spectrum'\nset xlabel 'cycles per unit'\n"
+                "plot '%s/radial.tsv' using 1:2 with lines lw 2 lc rgb '#1f4e99' title 'measured'%s\n"
+                "unset logscale\nset format y '%%g'\nset xlabel 'value'\nset key top right\n"
+                "set title 'histogram'\nplot '%s/hist.tsv' using 1:2 with boxes lc rgb '#9fb6cd' title 'field', "
+                "'' using 1:3 with lines lw 2 lc rgb 'black' title 'Gaussian'\nunset multiplot\n",
+            tmp, argv[optind], m ? " against " : "", m ? spec : "", dir, dir, nseg, dir, dir,
+            m ? ", '' using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'model'" : "", dir);
+    fclose(fp);
+    snprintf(path, sizeof path, "gnuplot '%s/card.gp' 2>&1", dir);
+    if (system(path) != 0)
+        cli_die(1, "card: gnuplot failed");
+    snprintf(path, sizeof path, "rm -rf '%s'", dir);
+    if (system(path) != 0)
+        cli_die(1, "card: cannot remove %s", dir);
+    cli_out_commit(out);
+    free(cnt), free(r), free(v), free(t);
+    nl_field_free(C), nl_field_free(D), nl_field_free(P), nl_field_free(W), nl_field_free(x), nl_model_free(m);
+    return 0;
+}
