@@ -303,7 +303,8 @@ Test(cli, card)
     cr_assert_eq(run_noiselab("card card.exr --acf markov:scale=4 -o card.png", 0, 0, err, sizeof err), 0, "%s", err);
     snprintf(path, sizeof path, "%s/card.png", scratch_dir());
     cr_expect(file_exists(path));
-    bad("card f.tsv -o out.png", "2D field");
+    cr_assert_eq(run_noiselab("synth fft --acf markov --size 64 -o card1.tsv", 0, 0, err, sizeof err), 0);
+    bad("card card1.tsv -o out.png", "2D field");
 }
 
 Test(cli, json_outputs)
