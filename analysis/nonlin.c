@@ -1,6 +1,9 @@
 /* Hermite coefficients by Gauss-Hermite quadrature (GSL). */
 #include "nonlin.h"
 #include "../core/nl_error.h"
+#include "../core/wk.h"
+
+#include <stdlib.h>
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_integration.h>
@@ -69,4 +72,54 @@ double an_hermite_invert(const an_hermite *h, double cov)
             hi = mid;
     }
     return 0.5 * (lo + hi);
+}
+
+int an_nonlin_design(const an_hermite *h, const double *target, size_t n, double spacing, double *rho, double *S,
+                     double *err, size_t *unreachable)
+{
+    double var = an_hermite_cov(h, 1.0), scale, e = 0;
+    size_t bad = 0;
+    int st;
+    nl_field *R = nl_field_alloc(1, &n, &spacing, &st), *Sp = R ? nl_field_alloc(1, &n, &spacing, &st) : NULL;
+    if (!Sp) {
+        nl_field_free(R);
+        return st;
+    }
+    if (!(target[0] > 0)) {
+        nl_field_free(R), nl_field_free(Sp);
+        return NL_ERROR(NL_EINVAL, "design: the target variance must be positive, got %g", target[0]);
+    }
+    scale = var / target[0];
+    for (size_t j = 0; j < n; j++) {
+        double r = an_hermite_invert(h, target[j] * scale);
+        if (isnan(r)) {  /* beyond what g can produce: the nearest end */
+            bad++;
+            r = target[j] * scale > 0 ? 1 : -1;
+        }
+        R->data[j] = r;
+    }
+    R->data[0] = 1;
+    /* project onto valid (non-negative) spectra */
+    if ((st = nl_wk_acf_to_spectrum(R, Sp)) == NL_OK) {
+        for (size_t k = 0; k < n; k++)
+            Sp->data[k] = fmax(Sp->data[k], 0);
+        st = nl_wk_spectrum_to_acf(Sp, R);
+    }
+    if (!st) {
+        double r0 = R->data[0];
+        for (size_t k = 0; k < n; k++)
+            Sp->data[k] /= r0;
+        for (size_t j = 0; j < n; j++) {
+            rho[j] = R->data[j] / r0;
+            e = fmax(e, fabs(an_hermite_cov(h, fmax(-1, fmin(1, rho[j]))) - target[j] * scale) / var);
+        }
+        if (S)
+            for (size_t k = 0; k < n; k++)
+                S[k] = Sp->data[k];
+    }
+    nl_field_free(R), nl_field_free(Sp);
+    *err = e;
+    if (unreachable)
+        *unreachable = bad;
+    return st;
 }

@@ -37,4 +37,18 @@ double an_hermite_cov(const an_hermite *h, double rho);
  * cov is out of the attainable range. */
 double an_hermite_invert(const an_hermite *h, double cov);
 
+/* Design (GI '86: "in theory it should be possible to design the spectrum
+ * of the undistorted noise so that a desired spectrum is achieved after
+ * distortion"): given the wanted output covariance `target` on a periodic
+ * 1D grid (wrapped order, n samples; it is rescaled so that target[0] is
+ * the output variance of g), find the input correlation lag by lag with
+ * an_hermite_invert, then project onto valid spectra: the input's spectrum
+ * (core/wk.h, spacing h) with negative values set to 0 and its variance
+ * back to 1.  rho[] (n) receives the designed input correlation, S[] (n,
+ * may be NULL) its spectrum; *err the largest |predicted output - target|
+ * relative to the output variance after projection; *unreachable the lags
+ * whose target lies outside the output covariances g can produce. */
+int an_nonlin_design(const an_hermite *h, const double *target, size_t n, double spacing, double *rho, double *S,
+                     double *err, size_t *unreachable);
+
 #endif

@@ -4,6 +4,9 @@
 #include "../core/dist.h"
 #include "../core/model.h"
 #include "../core/wk.h"
+#include "../analysis/acf.h"
+#include "../synth/fft.h"
+#include "../synth/shape.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -20,19 +23,29 @@ static const char help[] =
     "n-fold self-convolutions of the input's, on a periodic 1D grid of N samples\n"
     "(default 4096) at spacing H (default 1); K Hermite terms (default 24).\n"
     "JSON keys: lag, input_acf, output_acf, freq, input_psd, output_psd,\n"
-    "hermite_coefficients, output_mean, output_variance, truncation.\n";
+    "hermite_coefficients, output_mean, output_variance, truncation.\n\n"
+    "noiselab nonlin --design --target SPEC --g DIST [--size N] [--spacing H] [--verify M]\n"
+    "                [--json] [-o DESIGN.tsv]\n"
+    "The inverse: the Gaussian input whose output after g has the autocorrelation\n"
+    "SPEC (its shape; rescaled to g's output variance): the series inverted lag by\n"
+    "lag, then projected onto the nearest valid spectrum.  --verify M synthesises M\n"
+    "inputs (seeds 1..M) from the design, shapes them with g and measures the output\n"
+    "ACF.  Output: lag, target, designed input_acf, predicted output, measured output.\n";
 
 int cmd_nonlin(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"acf", required_argument, 0, 'a'},   {"g", required_argument, 0, 'g'},   {"size", required_argument, 0, 'n'},
         {"spacing", required_argument, 0, 'H'}, {"terms", required_argument, 0, 'K'}, {"json", no_argument, 0, 'j'},
+        {"design", no_argument, 0, 'D'},      {"target", required_argument, 0, 'T'}, {"verify", required_argument, 0, 'V'},
         {"output", required_argument, 0, 'o'}, {"psd", required_argument, 0, 'p'}, {"help", no_argument, 0, 'h'},
         {0}};
     const char *spec = NULL, *gspec = NULL, *out = NULL, *pout = NULL, *tmp = NULL, *ptmp = NULL;
     size_t n = 4096;
     double h = 1, zero = 0;
-    int c, K = 24, json = 0, st;
+    int c, K = 24, json = 0, st, design = 0;
+    const char *tspec = NULL;
+    size_t verify = 0;
     nl_model *m;
     nl_dist *d;
     an_hermite he;
@@ -49,6 +62,9 @@ int cmd_nonlin(int argc, char **argv)
             break;
         case 'K': K = (int)cli_parse_count("--terms", optarg, 2); break;
         case 'j': json = 1; break;
+        case 'D': design = 1; break;
+        case 'T': tspec = optarg; break;
+        case 'V': verify = cli_parse_count("--verify", optarg, 1); break;
         case 'o': out = optarg; break;
         case 'p': pout = optarg; break;
         case 'h': fputs(help, stdout); return 0;
@@ -57,8 +73,14 @@ int cmd_nonlin(int argc, char **argv)
     }
     if (optind < argc)
         cli_die(2, "nonlin: unexpected argument \"%s\"", argv[optind]);
-    if (!spec || !gspec)
+    if (design) {
+        if (!tspec || !gspec || spec)
+            cli_die(2, "nonlin --design: expected --target SPEC and --g DIST (not --acf)");
+        spec = tspec;
+    } else if (!spec || !gspec)
         cli_die(2, "nonlin: expected --acf SPEC and --g DIST");
+    if (verify > 1000)
+        cli_die(2, "--verify: expected at most 1000 realizations, got %zu", verify);
     if (K > AN_HERMITE_MAX)
         cli_die(2, "--terms: expected at most %d, got %d", AN_HERMITE_MAX, K);
     if (n > (1u << 24))
@@ -71,6 +93,72 @@ int cmd_nonlin(int argc, char **argv)
         ptmp = cli_out_begin(pout);
     if ((st = an_hermite_expand(d, K, &he)))
         cli_die_status(st);
+    if (design) {
+        nl_field *T = nl_field_alloc(1, &n, &h, &st), *S = T ? nl_field_alloc(1, &n, &h, &st) : NULL;
+        double *rho = malloc(n * sizeof *rho), err, var = an_hermite_cov(&he, 1), *meas = NULL, merr = NAN;
+        size_t bad, nl2 = n / 2 + 1 < 129 ? n / 2 + 1 : 129;
+        if (!S || !rho)
+            cli_die(1, "out of memory");
+        if ((st = nl_wk_sample_acf(m, T)))
+            cli_die_status(st);
+        if ((st = an_nonlin_design(&he, T->data, n, h, rho, S->data, &err, &bad)))
+            cli_die_status(st);
+        double scale = var / T->data[0];
+        if (verify) {
+            synth_fft_plan *p;
+            nl_field *x = nl_field_alloc(1, &n, &h, &st), *full;
+            meas = calloc(nl2, sizeof *meas);
+            if ((st = synth_fft_plan_spectrum(S, SYNTH_FFT_CLAMP, &p)))
+                cli_die_status(st);
+            for (size_t s = 1; s <= verify; s++) {
+                synth_fft_execute(p, s, x);
+                if ((st = synth_shape(x, d, 0)) || (st = an_acf_full(x, NAN, AN_ACF_UNBIASED, &full)))
+                    cli_die_status(st);
+                for (size_t i = 0; i < nl2; i++)
+                    meas[i] += full->data[i] / (double)verify;
+                nl_field_free(full);
+            }
+            merr = 0;
+            for (size_t i = 0; i < nl2; i++)
+                merr = fmax(merr, fabs(meas[i] - T->data[i] * scale) / var);
+            synth_fft_plan_free(p), nl_field_free(x);
+        }
+        double *lag = malloc(nl2 * sizeof *lag), *tg = malloc(nl2 * sizeof *tg), *pred = malloc(nl2 * sizeof *pred);
+        for (size_t i = 0; i < nl2; i++) {
+            lag[i] = (double)i * h;
+            tg[i] = T->data[i] * scale;
+            pred[i] = an_hermite_cov(&he, fmax(-1, fmin(1, rho[i])));
+        }
+        if (json) {
+            json_t *o = json_pack("{s:s,s:s,s:o,s:o,s:o,s:o,s:f,s:I,s:o}", "target", tspec, "g", gspec, "lag",
+                                  cli_json_array(lag, nl2), "target_acf", cli_json_array(tg, nl2), "input_acf",
+                                  cli_json_array(rho, nl2), "predicted_output_acf", cli_json_array(pred, nl2),
+                                  "projection_error", err, "unreachable_lags", (json_int_t)bad, "hermite_coefficients",
+                                  cli_json_array(he.c, (size_t)K));
+            if (verify)
+                json_object_set_new(o, "measured_output_acf", cli_json_array(meas, nl2)),
+                    json_object_set_new(o, "measured_error", json_real(merr));
+            cli_json_print(o);
+        } else {
+            printf("# design for %s after %s: projection error %.3g of the output variance, %zu unreachable lags",
+                   tspec, gspec, err, bad);
+            if (verify)
+                printf("; measured over %zu realizations: %.3g", verify, merr);
+            printf("\n");
+        }
+        if (out || !json) {
+            const char *names[5] = {"lag", "target", "input_acf", "predicted", "measured"};
+            const double *cols[5] = {lag, tg, rho, pred, meas};
+            if ((st = write_table(tmp, "noiselab nonlin --design: covariances; input_acf is normalised",
+                                  verify ? 5 : 4, names, nl2, cols)))
+                cli_die_status(st);
+            if (out)
+                cli_out_commit(out);
+        }
+        free(lag), free(tg), free(pred), free(rho), free(meas);
+        nl_field_free(T), nl_field_free(S), nl_model_free(m), nl_dist_free(d);
+        return 0;
+    }
     nl_field *R = nl_field_alloc(1, &n, &h, &st), *Ry = R ? nl_field_alloc(1, &n, &h, &st) : NULL;
     nl_field *S = Ry ? nl_field_alloc(1, &n, &h, &st) : NULL, *Sy = S ? nl_field_alloc(1, &n, &h, &st) : NULL;
     if (!Sy)

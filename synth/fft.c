@@ -55,34 +55,15 @@ static int make_fftw_plans(synth_fft_plan *p)
     return st;
 }
 
-int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
-                         synth_fft_plan **out)
+static int plan_from_S(const char *name, nl_field *S, unsigned flags, synth_fft_plan **out)
 {
     synth_fft_plan *p;
-    nl_field *S;
     double cell = 1, neg = 0, lmin = INFINITY, lmax = -INFINITY, sum = 0;
-    int st;
-
-    *out = NULL;
-    /* the spectrum grid, a complex FFT buffer, the field and its transform */
-    if ((st = nl_size_check(dim, n, sizeof(double), 6, NULL)))
-        return st;
-    for (int a = 0; a < dim; a++)
-        if (n[a] > INT32_MAX)
-            return NL_ERROR(NL_ETOOBIG, "size: %zu samples along an axis is beyond FFTW's int sizes", n[a]);
-    S = nl_field_alloc(dim, n, h, &st);
-    if (!S)
-        return st;
-    if ((st = nl_wk_sample_spectrum(m, S))) {
-        nl_field_free(S);
-        return st;
-    }
+    int st = NL_OK;
     p = calloc(1, sizeof *p);
-    if (!p) {
-        nl_field_free(S);
+    if (!p)
         return NL_ERROR(NL_ENOMEM, "out of memory");
-    }
-    p->dim = dim;
+    p->dim = S->dim;
     p->count = S->count;
     for (int a = 0; a < 3; a++) {
         p->n[a] = S->n[a];
@@ -106,14 +87,14 @@ int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const doub
     p->info.max_lambda = lmax * cell;
     p->info.clamp_error = p->info.variance > 0 ? neg / (double)p->count / p->info.variance : INFINITY;
     if (!(p->info.variance > 0)) {
-        st = NL_ERROR(NL_ENOTPD, "%s: the sampled spectrum has no positive part on this grid", nl_model_spec(m));
+        st = NL_ERROR(NL_ENOTPD, "%s: the sampled spectrum has no positive part on this grid", name);
     } else if (p->info.clamp_error > SYNTH_FFT_CLAMP_TOL && !(flags & SYNTH_FFT_CLAMP)) {
         st = NL_ERROR(NL_ENOTPD,
                       "%s: not positive definite on this grid: min spectrum %.3g (max %.3g); zeroing the %zu "
                       "negative values would change the covariance by up to %.2g of R(0), above %.0e "
                       "(use --clamp to accept, or a larger grid if the model is truncated)",
-                      nl_model_spec(m), p->info.min_lambda, p->info.max_lambda, p->info.negatives,
-                      p->info.clamp_error, SYNTH_FFT_CLAMP_TOL);
+                      name, p->info.min_lambda, p->info.max_lambda, p->info.negatives, p->info.clamp_error,
+                      SYNTH_FFT_CLAMP_TOL);
     }
     if (!st) {
         p->amp = malloc(p->half * sizeof *p->amp);
@@ -129,13 +110,39 @@ int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const doub
             }
         st = make_fftw_plans(p);
     }
-    nl_field_free(S);
     if (st) {
         synth_fft_plan_free(p);
         return st;
     }
     *out = p;
     return NL_OK;
+}
+
+int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                         synth_fft_plan **out)
+{
+    nl_field *S;
+    int st;
+    *out = NULL;
+    /* the spectrum grid, a complex FFT buffer, the field and its transform */
+    if ((st = nl_size_check(dim, n, sizeof(double), 6, NULL)))
+        return st;
+    for (int a = 0; a < dim; a++)
+        if (n[a] > INT32_MAX)
+            return NL_ERROR(NL_ETOOBIG, "size: %zu samples along an axis is beyond FFTW's int sizes", n[a]);
+    S = nl_field_alloc(dim, n, h, &st);
+    if (!S)
+        return st;
+    if (!(st = nl_wk_sample_spectrum(m, S)))
+        st = plan_from_S(nl_model_spec(m), S, flags, out);
+    nl_field_free(S);
+    return st;
+}
+
+int synth_fft_plan_spectrum(const nl_field *S, unsigned flags, synth_fft_plan **out)
+{
+    *out = NULL;
+    return plan_from_S("spectrum", (nl_field *)S, flags, out);
 }
 
 void synth_fft_plan_info(const synth_fft_plan *p, synth_fft_info *info) { *info = p->info; }

@@ -45,6 +45,10 @@ typedef struct {
 int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
                          synth_fft_plan **out);
 
+/* The same from a spectrum already sampled on the grid (wrapped order,
+ * two-sided density, core/wk.h): S's dim, n and h define the grid. */
+int synth_fft_plan_spectrum(const nl_field *S, unsigned flags, synth_fft_plan **out);
+
 void synth_fft_plan_info(const synth_fft_plan *p, synth_fft_info *info);
 
 /* Synthesise the realization for `seed` into out (alloc'ed with the plan's
