@@ -50,12 +50,12 @@ Test(nonlin, odd_map_has_odd_terms_only)
     cr_expect_lt(fabs(h.truncation), 1e-6);
 }
 
-/* Design round trip: a Markov target after a Laplace shaping is reachable:
- * the designed input reproduces it after projection to rounding, and (issue
- * of synthesis) 16 shaped realizations of 65536 samples measure within 2%
- * of the output variance (the unbiased estimate at lags <= 128 of a
- * correlation length 8 series has sd ~ sqrt(2 * 16 / 65536) ~ 2% per
- * realization, /4 over 16). */
+/* Design: a Markov target after a Laplace shaping is reachable, and the
+ * designed input reproduces it after the projection to rounding; an
+ * oscillatory target through the one-sided chi2-1 map is not (its strong
+ * negative correlations are out of reach), and the design says so.  The
+ * round trip through synthesis and measurement is the experiment
+ * experiments/fig-design.sh. */
 Test(nonlin, design_round_trip)
 {
     nl_dist *d;
