@@ -13,7 +13,7 @@
 
 static const char help[] =
     "usage: noiselab acf IN [--max-lag L] [--axis x|y|z] [--radial] [--unbiased]\n"
-    "                    [--mean M] [--target SPEC] [--json] [-o OUT.tsv]\n\n"
+    "                    [--mean M] [--target SPEC] [--json] [-o OUT.tsv|OUT.exr]\n\n"
     "Estimates the autocorrelation of IN (EXR, PNG or 1D TSV) by FFT with zero\n"
     "padding.  Lags are in spacing units.  Biased estimate (divisor N) by default;\n"
     "--unbiased divides by the number of overlapping pairs.  The sample mean is\n"
@@ -26,7 +26,8 @@ static const char help[] =
     "  --bands       1D: a 95% band lo, hi from Bartlett's formula for the variance of the\n"
     "                (biased) estimate, with the estimate in place of R up to 4 max-lag\n"
     "  --json        {\"lag\": [...], \"acf\": [...], ...} on stdout\n"
-    "  -o            TSV with columns lag, acf[, target] (default: TSV on stdout)\n";
+    "  -o            TSV with columns lag, acf[, target] (default: TSV on stdout), or .exr:\n"
+    "                the whole 2D/3D estimate with lag 0 at the centre\n";
 
 /* R of the target model at distance lag[i] along `axis`. */
 static void target_values(const char *spec, const nl_field *x, int axis, const double *lag, size_t nl,
@@ -123,6 +124,33 @@ int cmd_acf(int argc, char **argv)
         tmp = cli_out_begin(out);
     if ((st = an_acf_full(x, mean, unbiased, &full)))
         cli_die_status(st);
+    if (out && cli_has_ext(out, ".exr")) {
+        /* the whole ACF, lag 0 at the centre (lags -(n-1) .. n-1 per axis) */
+        size_t cn[3] = {1, 1, 1};
+        for (int a = 0; a < x->dim; a++)
+            cn[a] = 2 * x->n[a] - 1;
+        nl_field *C = nl_field_alloc(x->dim, cn, x->h, &st);
+        nl_meta meta;
+        if (!C)
+            cli_die_status(st);
+        for (size_t k = 0; k < cn[2]; k++)
+            for (size_t j = 0; j < cn[1]; j++)
+                for (size_t i = 0; i < cn[0]; i++) {
+                    size_t idx[3] = {i, j, k}, src[3];
+                    for (int a = 0; a < 3; a++) {
+                        long l = a < x->dim ? (long)idx[a] - (long)(x->n[a] - 1) : 0;
+                        src[a] = (size_t)(l < 0 ? l + (long)full->n[a] : l);
+                    }
+                    C->data[(k * cn[1] + j) * cn[0] + i] = full->data[(src[2] * full->n[1] + src[1]) * full->n[0] + src[0]];
+                }
+        memset(&meta, 0, sizeof meta);
+        snprintf(meta.method, sizeof meta.method, "acf %s, lag 0 at the centre", unbiased ? "unbiased" : "biased");
+        if ((st = nl_exr_write(tmp, C, &meta)))
+            cli_die_status(st);
+        cli_out_commit(out);
+        nl_field_free(C), nl_field_free(full), nl_field_free(x);
+        return 0;
+    }
     lag = malloc(nl * sizeof *lag);
     val = malloc(nl * sizeof *val);
     cnt = malloc(nl * sizeof *cnt);

@@ -144,6 +144,37 @@ Test(cli, estimator_error_paths)
 }
 
 /* Text output to stdout keeps everything printed before the table. */
+/* acf -o .exr holds the whole estimate, lag 0 at the centre: it is even and
+ * its x row through the centre is the axis estimate printed as TSV. */
+Test(cli, acf_writes_the_whole_estimate)
+{
+    char path[512];
+    nl_field *c;
+    nl_meta meta;
+    double lag, v[4];
+    const char *p;
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=1 --size 32x16 --seed 3 -o f.exr", 0, 0, err, sizeof err),
+                 0, "%s", err);
+    cr_assert_eq(run_noiselab("acf f.exr -o c.exr", 0, 0, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(run_noiselab("acf f.exr --max-lag 3", out, sizeof out, err, sizeof err), 0, "%s", err);
+    snprintf(path, sizeof path, "%s/c.exr", scratch_dir());
+    cr_assert_eq(nl_exr_read(path, &c, &meta), 0);
+    cr_assert_eq(c->n[0], 63);
+    cr_assert_eq(c->n[1], 31);
+    p = strstr(out, "\n0\t") ? strstr(out, "\n0\t") + 1 : out;
+    for (int i = 0; i < 4; i++) {
+        cr_assert_eq(sscanf(p, "%lf %lf", &lag, &v[i]), 2, "%s", p);
+        p = strchr(p, '\n') + 1;
+    }
+    for (int i = 0; i < 4; i++)
+        cr_expect(fabs(c->data[15 * 63 + 31 + i] - v[i]) <= 1e-6 * fabs(v[0]), "lag %d: %g vs %g", i,
+                  c->data[15 * 63 + 31 + i], v[i]);
+    for (size_t j = 0; j < 31; j++)
+        for (size_t i = 0; i < 63; i++)
+            cr_expect_eq(c->data[j * 63 + i], c->data[(30 - j) * 63 + 62 - i], "not even at (%zu, %zu)", i, j);
+    nl_field_free(c);
+}
+
 Test(cli, hist_text_output_is_whole)
 {
     cr_assert_eq(run_noiselab("synth fft --acf markov --size 64 -o h.tsv", 0, 0, err, sizeof err), 0, "%s", err);
