@@ -1,5 +1,6 @@
 /* Energy folded by decimation without low-pass filtering. */
 #include "aliasing.h"
+#include "../core/fftw_plan.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 
@@ -25,8 +26,8 @@ int an_aliasing_measure(const nl_field *f, double *A)
     if (!lp)
         return st;
     c = fftw_alloc_complex(ny * h0);
-    fwd = c ? fftw_plan_dft_r2c(f->dim, f->dim == 2 ? dims : dims + 1, lp->data, c, FFTW_ESTIMATE) : NULL;
-    inv = c ? fftw_plan_dft_c2r(f->dim, f->dim == 2 ? dims : dims + 1, c, lp->data, FFTW_ESTIMATE) : NULL;
+    fwd = c ? fftw_plan_dft_r2c(f->dim, f->dim == 2 ? dims : dims + 1, lp->data, c, nl_fftw_flags(f->count)) : NULL;
+    inv = c ? fftw_plan_dft_c2r(f->dim, f->dim == 2 ? dims : dims + 1, c, lp->data, nl_fftw_flags(f->count)) : NULL;
     if (!fwd || !inv) {
         fftw_destroy_plan(fwd), fftw_destroy_plan(inv), fftw_free(c), nl_field_free(lp);
         return NL_ERROR(NL_ENOMEM, "aliasing: cannot plan the FFT");

@@ -1,5 +1,6 @@
 /* The periodogram, by one r2c FFT. */
 #include "psd.h"
+#include "../core/fftw_plan.h"
 #include "../core/autocorr.h"
 #include "../core/nl_error.h"
 
@@ -22,7 +23,7 @@ int an_psd_periodogram(const nl_field *x, double mean, nl_field **out)
     c = fftw_alloc_complex(rows * h0);
     for (int a = 0; a < x->dim; a++)
         dims[a] = (int)x->n[x->dim - 1 - a];
-    p = c ? fftw_plan_dft_r2c(x->dim, dims, P->data, c, FFTW_ESTIMATE) : NULL;
+    p = c ? fftw_plan_dft_r2c(x->dim, dims, P->data, c, nl_fftw_flags(x->count)) : NULL;
     if (!p) {
         fftw_free(c);
         nl_field_free(P);

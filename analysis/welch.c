@@ -1,5 +1,6 @@
 /* Welch averaging of windowed periodograms. */
 #include "welch.h"
+#include "../core/fftw_plan.h"
 #include "../core/autocorr.h"
 #include "../core/nl_error.h"
 
@@ -31,7 +32,7 @@ int an_psd_welch(const nl_field *x, size_t S, double mean, nl_field **out, size_
         U += w[i] * w[i] / (double)S;
     if (dim == 2)
         U *= U;
-    fftw_plan p = fftw_plan_dft_r2c(dim, dim == 2 ? dims : dims + 1, seg->data, c, FFTW_ESTIMATE);
+    fftw_plan p = fftw_plan_dft_r2c(dim, dim == 2 ? dims : dims + 1, seg->data, c, nl_fftw_flags(seg->count));
     for (size_t y0 = 0; y0 + (dim == 2 ? S : 1) <= ny; y0 += dim == 2 ? half : 1) {
         for (size_t x0 = 0; x0 + S <= x->n[0]; x0 += half) {
             for (size_t j = 0; j < rows; j++)

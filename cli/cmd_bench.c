@@ -1,5 +1,6 @@
 /* noiselab bench: speed of the methods against this machine's floor. */
 #include "cli.h"
+#include "../core/fftw_plan.h"
 #include "../analysis/acf.h"
 #include "../core/model.h"
 #include "../core/rng.h"
@@ -46,8 +47,8 @@ static double fft_floor(size_t n, int reps)
 {
     double *x = fftw_alloc_real(n * n), t[16];
     fftw_complex *c = fftw_alloc_complex(n * (n / 2 + 1));
-    fftw_plan f = fftw_plan_dft_r2c_2d((int)n, (int)n, x, c, FFTW_ESTIMATE);
-    fftw_plan b = fftw_plan_dft_c2r_2d((int)n, (int)n, c, x, FFTW_ESTIMATE);
+    fftw_plan f = fftw_plan_dft_r2c_2d((int)n, (int)n, x, c, nl_fftw_flags(n * n));
+    fftw_plan b = fftw_plan_dft_c2r_2d((int)n, (int)n, c, x, nl_fftw_flags(n * n));
     for (size_t i = 0; i < n * n; i++)
         x[i] = (double)(i % 7);
     for (int r = 0; r < reps; r++) {
@@ -176,7 +177,7 @@ int cmd_bench(int argc, char **argv)
                 cli_die_status(st);
             double *cf = malloc(2 * NN * sizeof *cf), *f = malloc(NN * sizeof *f), tr[16], tt[16];
             fftw_complex *b = fftw_alloc_complex(NN);
-            fftw_plan p = fftw_plan_dft(sd, dims, b, b, FFTW_BACKWARD, FFTW_ESTIMATE);
+            fftw_plan p = fftw_plan_dft(sd, dims, b, b, FFTW_BACKWARD, nl_fftw_flags(NN));
             for (int r = 0; r < reps; r++) {
                 double t0 = now();
                 for (size_t k = 0; k < NN; k++) {

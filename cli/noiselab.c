@@ -1,9 +1,11 @@
 /* noiselab: synthesise random fields with a prescribed autocorrelation or
  * spectrum, and measure what was produced. */
 #include "cli.h"
+#include "../core/fftw_plan.h"
 
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const struct {
@@ -57,8 +59,10 @@ int main(int argc, char **argv)
         return 0;
     }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
-        if (strcmp(argv[1], commands[i].name) == 0)
+        if (strcmp(argv[1], commands[i].name) == 0) {
+            atexit(nl_fftw_save); /* commands may exit() from deep inside */
             return commands[i].run(argc - 1, argv + 1);
+        }
     cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, cloud, lattice, ocean, card, render, detect, bench; see noiselab --help)",
             argv[1]);
 }

@@ -1,5 +1,6 @@
 /* FFT-based lag-product sums (Wiener-Khinchine on a zero-padded grid). */
 #include "autocorr.h"
+#include "fftw_plan.h"
 #include "nl_error.h"
 
 #include <complex.h>
@@ -38,8 +39,8 @@ int nl_autocorr_sums(const nl_field *x, double mean, nl_field **out)
     }
     for (int a = 0; a < x->dim; a++)  /* FFTW wants the slowest axis first */
         dims[a] = (int)m[x->dim - 1 - a];
-    fwd = fftw_plan_dft_r2c(x->dim, dims, c->data, spec, FFTW_ESTIMATE);
-    inv = fftw_plan_dft_c2r(x->dim, dims, spec, c->data, FFTW_ESTIMATE);
+    fwd = fftw_plan_dft_r2c(x->dim, dims, c->data, spec, nl_fftw_flags(c->count));
+    inv = fftw_plan_dft_c2r(x->dim, dims, spec, c->data, nl_fftw_flags(c->count));
     if (!fwd || !inv) {
         fftw_destroy_plan(fwd);
         fftw_destroy_plan(inv);

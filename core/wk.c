@@ -1,5 +1,6 @@
 /* Sampling models on wrapped grids; Wiener-Khinchine by FFT. */
 #include "wk.h"
+#include "fftw_plan.h"
 #include "nl_error.h"
 
 #include <complex.h>
@@ -29,7 +30,7 @@ static int dft_real(const nl_field *x, nl_field *y, int sign, double scale)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu complex samples", x->count);
     for (int a = 0; a < x->dim; a++)
         dims[a] = (int)x->n[x->dim - 1 - a];
-    p = fftw_plan_dft(x->dim, dims, buf, buf, sign, FFTW_ESTIMATE);
+    p = fftw_plan_dft(x->dim, dims, buf, buf, sign, nl_fftw_flags(x->count));
     if (!p) {
         fftw_free(buf);
         return NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", x->dim);

@@ -1,6 +1,7 @@
 /* Periodic FFT synthesis: filter white noise by the square root of the
  * spectrum (Lewis 1987, "Fourier synthesis"; Wiener-Khinchine, eq. (2)). */
 #include "fft.h"
+#include "../core/fftw_plan.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../core/wk.h"
@@ -45,8 +46,8 @@ static int make_fftw_plans(synth_fft_plan *p)
     if (!x || !c)
         st = NL_ERROR(NL_ENOMEM, "out of memory for the FFT plan");
     if (!st) {
-        p->fwd = fftw_plan_dft_r2c(p->dim, dims, x, c, FFTW_ESTIMATE);
-        p->inv = fftw_plan_dft_c2r(p->dim, dims, c, x, FFTW_ESTIMATE);
+        p->fwd = fftw_plan_dft_r2c(p->dim, dims, x, c, nl_fftw_flags(p->count));
+        p->inv = fftw_plan_dft_c2r(p->dim, dims, c, x, nl_fftw_flags(p->count));
         if (!p->fwd || !p->inv)
             st = NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", p->dim);
     }

@@ -1,5 +1,6 @@
 /* Tessendorf's ocean on rank-1 lattices and regular grids. */
 #include "ocean.h"
+#include "../core/fftw_plan.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
@@ -50,7 +51,7 @@ int ocean_grid(size_t M, const ocean_params *o, uint64_t seed, double t, double 
 {
     size_t N = M * M;
     fftw_complex *b = fftw_alloc_complex(N), *hk = fftw_alloc_complex(N);
-    fftw_plan p = b ? fftw_plan_dft_2d((int)M, (int)M, b, b, FFTW_BACKWARD, FFTW_ESTIMATE) : NULL;
+    fftw_plan p = b ? fftw_plan_dft_2d((int)M, (int)M, b, b, FFTW_BACKWARD, nl_fftw_flags(N)) : NULL;
     if (!p || !hk) {
         fftw_free(b), fftw_free(hk);
         return NL_ERROR(NL_ENOMEM, "cannot plan a %zu x %zu FFT", M, M);

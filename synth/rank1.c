@@ -1,5 +1,6 @@
 /* Rank-1 lattices: generators, wave vectors, one-FFT synthesis, Delaunay. */
 #include "rank1.h"
+#include "../core/fftw_plan.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
@@ -190,7 +191,7 @@ int rank1_synthesize(const rank1_lattice *L, const double *c, double extent, dou
 {
     size_t N = L->N;
     fftw_complex *b = fftw_alloc_complex(N);
-    fftw_plan p = b ? fftw_plan_dft_1d((int)N, b, b, FFTW_BACKWARD, FFTW_ESTIMATE) : NULL;
+    fftw_plan p = b ? fftw_plan_dft_1d((int)N, b, b, FFTW_BACKWARD, nl_fftw_flags(N)) : NULL;
     double im = 0;
     if (!p) {
         fftw_free(b);

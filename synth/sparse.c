@@ -1,5 +1,6 @@
 /* Sparse convolution on the lattice: kernels and gather evaluation. */
 #include "sparse.h"
+#include "../core/fftw_plan.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../core/wk.h"
@@ -117,7 +118,7 @@ int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int rad
     g = fftw_alloc_complex(M);
     for (int a = 0; a < dim; a++)
         dims[a] = (int)mm[dim - 1 - a];
-    fp = g ? fftw_plan_dft(dim, dims, g, g, FFTW_BACKWARD, FFTW_ESTIMATE) : NULL;
+    fp = g ? fftw_plan_dft(dim, dims, g, g, FFTW_BACKWARD, nl_fftw_flags(M)) : NULL;
     if (!fp) {
         fftw_free(g), nl_field_free(S);
         return NL_ERROR(NL_ENOMEM, "sparse: cannot plan the kernel FFT");

@@ -1,0 +1,79 @@
+/* FFTW planner flags, threads and the wisdom cache (see fftw_plan.h). */
+#include "fftw_plan.h"
+
+#include <fftw3.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static int ready, measured;
+static char cache[4096];
+
+/* $XDG_CACHE_HOME/noiselab (or $HOME/.cache/noiselab); "" when neither is set. */
+static void cache_path(void)
+{
+    const char *x = getenv("XDG_CACHE_HOME"), *h = getenv("HOME");
+    char dir[3072];
+    cache[0] = 0;
+    if (x && *x)
+        snprintf(dir, sizeof dir, "%s/noiselab", x);
+    else if (h && *h)
+        snprintf(dir, sizeof dir, "%s/.cache/noiselab", h);
+    else
+        return;
+    snprintf(cache, sizeof cache, "%s/fftw-wisdom", dir);
+}
+
+static void setup(void)
+{
+    ready = 1;
+    fftw_init_threads();
+    fftw_make_planner_thread_safe();
+    cache_path();
+    if (cache[0])
+        fftw_import_wisdom_from_filename(cache);
+}
+
+unsigned nl_fftw_flags(size_t count)
+{
+    const char *e = getenv("NOISELAB_FFTW");
+    int measure = count >= NL_FFTW_MEASURE_MIN;
+    if (!ready)
+        setup();
+    /* threads pay off only on large transforms; on small ones their start-up
+     * and, when processes share the cores, their spinning cost more */
+    fftw_plan_with_nthreads(count >= NL_FFTW_THREADS_MIN ? omp_get_max_threads() : 1);
+    if (e && strcmp(e, "estimate") == 0)
+        measure = 0;
+    else if (e && strcmp(e, "measure") == 0)
+        measure = 1;
+    measured |= measure;
+    return measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+}
+
+void nl_fftw_save(void)
+{
+    char dir[4096], tmp[4200], *slash;
+    if (!measured || !cache[0])
+        return;
+    snprintf(dir, sizeof dir, "%s", cache);
+    if ((slash = strrchr(dir, '/')))
+        *slash = 0;
+    /* create $XDG_CACHE_HOME and its noiselab folder if missing */
+    for (char *p = dir + 1; *p; p++)
+        if (*p == '/') {
+            *p = 0;
+            mkdir(dir, 0755);
+            *p = '/';
+        }
+    mkdir(dir, 0755);
+    snprintf(tmp, sizeof tmp, "%s.%ld", cache, (long)getpid());
+    if (fftw_export_wisdom_to_filename(tmp))
+        rename(tmp, cache);
+    else
+        unlink(tmp);
+    measured = 0;
+}
