@@ -53,8 +53,10 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # Unit, error-path, CLI and statistical tests (Criterion). Each test is a
 # fresh process, so measured FFTW plans would be paid for again and again:
 # tests plan with FFTW_ESTIMATE, except the one comparing the two planners.
-test: $(BIN) $(BUILD)/tests/run
+test: $(BIN) $(BUILD)/tests/run $(EXP_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
+	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
+	    sh experiments/quick.sh $(BUILD)/quick-figures
 
 # Every experiment writes its data, picture and verdict into paper-figures/.
 # Exemplar images from Debian's python3-skimage package data (not committed).
@@ -92,7 +94,10 @@ fuzz: $(DEPS_OK)
 
 # Speed against this machine's floor, measured in the same run (TSV).
 bench: $(BIN)
-	$(BIN) bench
+	@mkdir -p $(BUILD)/bench
+	$(BIN) bench | tee $(BUILD)/bench/bench.tsv
+	gnuplot -e "in='$(BUILD)/bench/bench.tsv'; out='$(BUILD)/bench/bench.png'" tools/bench-plot.gp
+	@echo "bench: $(BUILD)/bench/bench.tsv and bench.png"
 
 clean:
 	rm -rf $(BUILD) bin tests/work

@@ -1,19 +1,24 @@
-/* noiselab bench: speed of the methods against this machine's floor. */
+/* noiselab bench: speed of the methods against this machine's floor, both
+ * measured in the same run (medians of repeats). */
 #include "cli.h"
-#include "../core/fftw_plan.h"
 #include "../analysis/acf.h"
+#include "../analysis/krige.h"
+#include "../analysis/psd.h"
+#include "../core/fftw_plan.h"
 #include "../core/model.h"
 #include "../core/rng.h"
+#include "../synth/circulant.h"
 #include "../synth/fft.h"
 #include "../synth/rank1.h"
+#include "../synth/sparse.h"
 #include "../synth/subdiv.h"
-#include <complex.h>
-#include <math.h>
 
+#include <complex.h>
 #include <fftw3.h>
 #include <getopt.h>
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,12 +27,17 @@
 static const char help[] =
     "usage: noiselab bench [--quick] [--repeat R]\n\n"
     "Times each method and the floor it is measured against, in the same run, and\n"
-    "prints TSV: case, samples, median seconds, floor, floor median seconds, ratio\n"
-    "(ours / floor) and samples per second.  Medians of R runs (default 5; 3 with\n"
-    "--quick, which also uses 1024^2 fields instead of 4096^2).  Floors: for FFT\n"
-    "synthesis the bare FFTW r2c + c2r of the same size; for subdivision the\n"
-    "Gaussian random numbers it draws (one per new sample); for the ACF estimate\n"
-    "the FFTW r2c + c2r of the zero-padded size.\n";
+    "prints TSV: case, size (samples), seconds (median of R runs; default 5, 3 with\n"
+    "--quick), floor, floor_seconds, ratio (ours / floor), samples_per_s.  --quick\n"
+    "uses grids a quarter of the side.  Floors:\n"
+    "  fft, circulant  fill the c2r input with Gaussian numbers + FFTW c2r, of the\n"
+    "                  size the method transforms (circulant: its embedding)\n"
+    "  subdiv, sparse  draw one Gaussian number per sample + one pass over the field\n"
+    "  acf             FFTW r2c + c2r of the zero-padded field\n"
+    "  psd             FFTW r2c of the field\n"
+    "  krige           one covariance evaluation per (grid point, data point)\n"
+    "  rank1           the tensor-product FFT with the same number of points\n"
+    "FFTW plans are measured once and kept (see the README); planning is not timed.\n";
 
 static double now(void)
 {
@@ -42,8 +52,33 @@ static double median(double *v, int n)
     return gsl_stats_median_from_sorted_data(v, 1, (size_t)n);
 }
 
-/* Bare r2c + c2r of an n x n grid. */
-static double fft_floor(size_t n, int reps)
+static void row(const char *name, size_t samples, double t, const char *floor_name, double tf)
+{
+    printf("%s\t%zu\t%.4f\t%s\t%.4f\t%.2f\t%.3g\n", name, samples, t, floor_name, tf, t / tf, (double)samples / t);
+    fflush(stdout);
+}
+
+/* Gaussian numbers into the half spectrum, then c2r, on an n0 x n1 grid. */
+static double c2r_floor(size_t n0, size_t n1, int reps)
+{
+    size_t half = n1 * (n0 / 2 + 1);
+    double *x = fftw_alloc_real(n0 * n1), t[16];
+    fftw_complex *c = fftw_alloc_complex(half);
+    fftw_plan b = fftw_plan_dft_c2r_2d((int)n1, (int)n0, c, x, nl_fftw_flags(n0 * n1));
+    for (int r = 0; r < reps; r++) {
+        double t0 = now();
+#pragma omp parallel for schedule(static)
+        for (size_t i = 0; i < half; i++)
+            c[i] = nl_rng_gauss2(1, 0, i, 0) + I * nl_rng_gauss2(1, 0, i, 1);
+        fftw_execute(b);
+        t[r] = now() - t0;
+    }
+    fftw_destroy_plan(b), fftw_free(x), fftw_free(c);
+    return median(t, reps);
+}
+
+/* Bare r2c (+ c2r when both) of an n x n grid. */
+static double fft_floor(size_t n, int both, int reps)
 {
     double *x = fftw_alloc_real(n * n), t[16];
     fftw_complex *c = fftw_alloc_complex(n * (n / 2 + 1));
@@ -54,13 +89,15 @@ static double fft_floor(size_t n, int reps)
     for (int r = 0; r < reps; r++) {
         double t0 = now();
         fftw_execute(f);
-        fftw_execute(b);
+        if (both)
+            fftw_execute(b);
         t[r] = now() - t0;
     }
     fftw_destroy_plan(f), fftw_destroy_plan(b), fftw_free(x), fftw_free(c);
     return median(t, reps);
 }
 
+/* One Gaussian number per sample, written once. */
 static double rng_floor(size_t count, int reps)
 {
     double *x = malloc(count * sizeof *x), t[16];
@@ -75,10 +112,200 @@ static double rng_floor(size_t count, int reps)
     return median(t, reps);
 }
 
-static void row(const char *name, size_t samples, double t, const char *floor_name, double tf)
+static void bench_fft(const nl_model *m, size_t n, int reps)
 {
-    printf("%s\t%zu\t%.4f\t%s\t%.4f\t%.2f\t%.3g\n", name, samples, t, floor_name, tf, t / tf, (double)samples / t);
-    fflush(stdout);
+    size_t nn[2] = {n, n};
+    double t[16];
+    int st;
+    synth_fft_plan *p;
+    nl_field *f = nl_field_alloc(2, nn, NULL, &st);
+    if (!f || (st = synth_fft_plan_alloc(m, 2, nn, NULL, 0, &p)))
+        cli_die_status(st);
+    for (int r = 0; r < reps; r++) {
+        double t0 = now();
+        synth_fft_execute(p, (uint64_t)r + 1, f);
+        t[r] = now() - t0;
+    }
+    row("fft", n * n, median(t, reps), "gaussian fill + c2r", c2r_floor(n, n, reps));
+    synth_fft_plan_free(p), nl_field_free(f);
+}
+
+static void bench_circulant(const nl_model *m, size_t n, int reps)
+{
+    size_t nn[2] = {n, n};
+    double t[16];
+    int st;
+    synth_circulant_plan *p;
+    synth_circulant_info info;
+    nl_field *f = nl_field_alloc(2, nn, NULL, &st);
+    if (!f || (st = synth_circulant_plan_alloc(m, 2, nn, NULL, 0, 16, &p)))
+        cli_die_status(st);
+    synth_circulant_plan_info(p, &info);
+    for (int r = 0; r < reps; r++) {
+        double t0 = now();
+        synth_circulant_execute(p, (uint64_t)r + 1, f);
+        t[r] = now() - t0;
+    }
+    row("circulant", n * n, median(t, reps), "gaussian fill + c2r of the embedding",
+        c2r_floor(info.m[0], info.m[1], reps));
+    synth_circulant_plan_free(p), nl_field_free(f);
+}
+
+/* 4x4 neighbourhood, coarse grid 8x8, coefficients made once */
+static void bench_subdiv(const nl_model *m, size_t n, int reps)
+{
+    size_t nn[2] = {n, n};
+    double t[16];
+    int st, L = 0;
+    subdiv_coeffs *co;
+    while ((n >> (L + 1)) >= 8)
+        L++;
+    nl_field *f = nl_field_alloc(2, nn, NULL, &st);
+    if (!f || (st = subdiv_coeffs_alloc(m, 2, L, (double)(1 << L), 2, 1e-4, 6, &co)))
+        cli_die_status(st);
+    for (int r = 0; r < reps; r++) {
+        double t0 = now();
+        subdiv_synth_periodic(co, m, (uint64_t)r + 1, 0, f);
+        t[r] = now() - t0;
+    }
+    row("subdiv N=2", n * n, median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps));
+    subdiv_coeffs_free(co), nl_field_free(f);
+}
+
+static void bench_sparse(const nl_model *m, size_t n, int reps)
+{
+    size_t nn[2] = {n, n};
+    double t[16];
+    int st;
+    synth_sparse_plan *p;
+    nl_field *f = nl_field_alloc(2, nn, NULL, &st);
+    if (!f || (st = synth_sparse_plan_model(m, 2, NULL, 0, 0, 4, &p)))
+        cli_die_status(st);
+    for (int r = 0; r < reps; r++) {
+        double t0 = now();
+        synth_sparse_execute(p, (uint64_t)r + 1, 1, NULL, f);
+        t[r] = now() - t0;
+    }
+    row("sparse", n * n, median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps));
+    synth_sparse_plan_free(p), nl_field_free(f);
+}
+
+static void bench_estimators(size_t n, int reps)
+{
+    size_t nn[2] = {n, n};
+    double t[16];
+    int st;
+    nl_field *f = nl_field_alloc(2, nn, NULL, &st), *out;
+    if (!f)
+        cli_die_status(st);
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] = nl_rng_gauss(3, 0, i);
+    for (int r = 0; r < reps; r++) {
+        double t0 = now();
+        an_acf_full(f, 0.0, 0, &out);
+        t[r] = now() - t0;
+        nl_field_free(out);
+    }
+    row("acf", f->count, median(t, reps), "fftw r2c + c2r padded", fft_floor(2 * n, 1, reps));
+    for (int r = 0; r < reps; r++) {
+        double t0 = now();
+        an_psd_periodogram(f, NAN, &out);
+        t[r] = now() - t0;
+        nl_field_free(out);
+    }
+    row("psd", f->count, median(t, reps), "fftw r2c", fft_floor(n, 0, reps));
+    nl_field_free(f);
+}
+
+/* Ordinary kriging of np random points onto g x g (cell centres of the unit
+ * square), with and without the variance; the plan (Cholesky) is timed. */
+static void bench_krige(const nl_model *m, size_t np, size_t g, int reps)
+{
+    double *pts = malloc(2 * np * sizeof *pts), *val = malloc(np * sizeof *val), *est = malloc(g * g * sizeof *est);
+    double tk[2][16], tf[16];
+    int st;
+    if (!pts || !val || !est)
+        cli_die(1, "out of memory");
+    for (size_t i = 0; i < np; i++)
+        pts[2 * i] = nl_rng_uniform(5, 0, 2 * i), pts[2 * i + 1] = nl_rng_uniform(5, 0, 2 * i + 1),
+        val[i] = nl_rng_gauss(5, 1, i);
+    for (int var = 0; var < 2; var++)
+        for (int r = 0; r < reps; r++) {
+            double t0 = now();
+            krige_plan *p;
+            if ((st = krige_plan_alloc(m, 2, np, pts, val, 0, 0, 0, &p)))
+                cli_die_status(st);
+#pragma omp parallel for schedule(dynamic, 64)
+            for (size_t q = 0; q < g * g; q++) {
+                double x[2] = {((double)(q % g) + 0.5) / (double)g, ((double)(q / g) + 0.5) / (double)g}, v;
+                krige_eval(p, x, &est[q], var ? &v : NULL, NULL);
+            }
+            krige_plan_free(p);
+            tk[var][r] = now() - t0;
+        }
+    for (int r = 0; r < reps; r++) {
+        double t0 = now();
+#pragma omp parallel for schedule(static)
+        for (size_t q = 0; q < g * g; q++) {
+            double x[2] = {((double)(q % g) + 0.5) / (double)g, ((double)(q / g) + 0.5) / (double)g}, s = 0;
+            for (size_t i = 0; i < np; i++) {
+                double d[2] = {x[0] - pts[2 * i], x[1] - pts[2 * i + 1]};
+                s += nl_model_acf(m, 2, d);
+            }
+            est[q] = s;
+        }
+        tf[r] = now() - t0;
+    }
+    double fl = median(tf, reps);
+    char name[64];
+    snprintf(name, sizeof name, "krige %zu points", np);
+    row(name, g * g, median(tk[0], reps), "one covariance per (grid, data) pair", fl);
+    snprintf(name, sizeof name, "krige %zu points +variance", np);
+    row(name, g * g, median(tk[1], reps), "one covariance per (grid, data) pair", fl);
+    free(pts), free(val), free(est);
+}
+
+/* rank-1 lattice synthesis (Keller) against the tensor-product FFT with the
+ * same number of points, s = 2, 3, 4: both are one O(N log N) transform; the
+ * lattice does the whole field with a 1D FFT of length N */
+static void bench_rank1(int quick, int reps)
+{
+    static const int side[5] = {0, 0, 128, 32, 16};
+    int st;
+    for (int sd = 2; sd <= 4; sd++) {
+        size_t M = (size_t)(quick ? side[sd] / 2 : side[sd]), NN = 1;
+        int dims[4];
+        for (int a = 0; a < sd; a++)
+            NN *= M, dims[a] = (int)M;
+        rank1_lattice L;
+        if ((st = rank1_korobov(NN, sd, 0, &L)))
+            cli_die_status(st);
+        double *cf = malloc(2 * NN * sizeof *cf), *f = malloc(NN * sizeof *f), tr[16], tt[16];
+        fftw_complex *b = fftw_alloc_complex(NN);
+        fftw_plan p = fftw_plan_dft(sd, dims, b, b, FFTW_BACKWARD, nl_fftw_flags(NN));
+        for (int r = 0; r < reps; r++) {
+            double t0 = now();
+            for (size_t k = 0; k < NN; k++) {
+                double k2 = 0;
+                for (int a = 0; a < sd; a++)
+                    k2 += (double)(L.k[k * sd + a] * L.k[k * sd + a]);
+                cf[2 * k] = exp(-k2 / 64) * nl_rng_gauss2(1, 0, k, 0);
+                cf[2 * k + 1] = exp(-k2 / 64) * nl_rng_gauss2(1, 0, k, 1);
+            }
+            rank1_synthesize(&L, cf, 1, f, NULL, NULL);
+            tr[r] = now() - t0;
+            t0 = now();
+            for (size_t k = 0; k < NN; k++)
+                b[k] = exp(-(double)(k % 7) / 64) * (nl_rng_gauss2(1, 0, k, 0) + I * nl_rng_gauss2(1, 0, k, 1));
+            fftw_execute(p);
+            tt[r] = now() - t0;
+        }
+        char name[64], fl[64];
+        snprintf(name, sizeof name, "rank1 %dD", sd);
+        snprintf(fl, sizeof fl, "tensor FFT %dD %zu^%d", sd, M, sd);
+        row(name, NN, median(tr, reps), fl, median(tt, reps));
+        fftw_destroy_plan(p), fftw_free(b), free(cf), free(f), rank1_free(&L);
+    }
 }
 
 int cmd_bench(int argc, char **argv)
@@ -86,9 +313,8 @@ int cmd_bench(int argc, char **argv)
     static const struct option opts[] = {{"quick", no_argument, 0, 'q'}, {"repeat", required_argument, 0, 'r'},
                                          {"help", no_argument, 0, 'h'}, {0}};
     int c, quick = 0, reps = 0, st;
-    size_t n, nn[2];
-    double t[16];
-    nl_model *m;
+    size_t d;
+    nl_model *m, *me, *mk;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
         switch (c) {
@@ -106,102 +332,21 @@ int cmd_bench(int argc, char **argv)
         cli_die(2, "bench: unexpected argument \"%s\"", argv[optind]);
     if (!reps)
         reps = quick ? 3 : 5;
-    n = quick ? 1024 : 4096;
-    nn[0] = nn[1] = n;
-    if ((st = nl_model_parse("markaussian:alpha=1.4,scale=64", &m)))
+    d = quick ? 4 : 1;
+    if ((st = nl_model_parse("markaussian:alpha=1.4,scale=16", &m)) ||
+        (st = nl_model_parse("markov:scale=16", &me)) || (st = nl_model_parse("markov:scale=0.2", &mk)))
         cli_die_status(st);
-    printf("case\tsamples\tmedian_s\tfloor\tfloor_median_s\tratio\tsamples_per_s\n");
-
-    /* FFT synthesis: execute only (the plan is made once and reused) */
-    {
-        synth_fft_plan *p;
-        nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-        if (!f || (st = synth_fft_plan_alloc(m, 2, nn, NULL, 0, &p)))
-            cli_die_status(st);
-        for (int r = 0; r < reps; r++) {
-            double t0 = now();
-            synth_fft_execute(p, (uint64_t)r + 1, f);
-            t[r] = now() - t0;
-        }
-        row("synth fft 2D", n * n, median(t, reps), "fftw r2c+c2r", fft_floor(n, reps));
-        synth_fft_plan_free(p);
-        nl_field_free(f);
-    }
-    /* subdivision, 4x4 neighbourhood, coarse grid 8x8 (coefficients made once) */
-    {
-        int L = 0;
-        while ((n >> (L + 1)) >= 8)
-            L++;
-        subdiv_coeffs *co;
-        nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-        if (!f || (st = subdiv_coeffs_alloc(m, 2, L, (double)(1 << L), 2, 1e-4, 6, &co)))
-            cli_die_status(st);
-        for (int r = 0; r < reps; r++) {
-            double t0 = now();
-            subdiv_synth_periodic(co, m, (uint64_t)r + 1, 0, f);
-            t[r] = now() - t0;
-        }
-        row("synth subdiv 2D N=2", n * n, median(t, reps), "gaussian rng", rng_floor(n * n, reps));
-        subdiv_coeffs_free(co);
-        nl_field_free(f);
-    }
-    /* ACF estimate of a half-size field (its padded FFT is n x n) */
-    {
-        size_t h2[2] = {n / 2, n / 2};
-        nl_field *f = nl_field_alloc(2, h2, NULL, &st), *full;
-        if (!f)
-            cli_die_status(st);
-        for (size_t i = 0; i < f->count; i++)
-            f->data[i] = nl_rng_gauss(3, 0, i);
-        for (int r = 0; r < reps; r++) {
-            double t0 = now();
-            an_acf_full(f, 0.0, 0, &full);
-            t[r] = now() - t0;
-            nl_field_free(full);
-        }
-        row("acf 2D", f->count, median(t, reps), "fftw r2c+c2r padded", fft_floor(n, reps));
-        nl_field_free(f);
-    }
-    /* rank-1 lattice synthesis (Keller) against the tensor-product FFT with
-     * the same number of points, s = 2, 3, 4: both are one O(N log N)
-     * transform; the lattice does the whole field with a 1D FFT of length N */
-    {
-        static const int side[5] = {0, 0, 128, 32, 16};
-        for (int sd = 2; sd <= 4; sd++) {
-            size_t M = (size_t)(quick ? side[sd] / 2 : side[sd]), NN = 1;
-            int dims[4];
-            for (int a = 0; a < sd; a++)
-                NN *= M, dims[a] = (int)M;
-            rank1_lattice L;
-            if ((st = rank1_korobov(NN, sd, 0, &L)))
-                cli_die_status(st);
-            double *cf = malloc(2 * NN * sizeof *cf), *f = malloc(NN * sizeof *f), tr[16], tt[16];
-            fftw_complex *b = fftw_alloc_complex(NN);
-            fftw_plan p = fftw_plan_dft(sd, dims, b, b, FFTW_BACKWARD, nl_fftw_flags(NN));
-            for (int r = 0; r < reps; r++) {
-                double t0 = now();
-                for (size_t k = 0; k < NN; k++) {
-                    double k2 = 0;
-                    for (int a = 0; a < sd; a++)
-                        k2 += (double)(L.k[k * sd + a] * L.k[k * sd + a]);
-                    cf[2 * k] = exp(-k2 / 64) * nl_rng_gauss2(1, 0, k, 0);
-                    cf[2 * k + 1] = exp(-k2 / 64) * nl_rng_gauss2(1, 0, k, 1);
-                }
-                rank1_synthesize(&L, cf, 1, f, NULL, NULL);
-                tr[r] = now() - t0;
-                t0 = now();
-                for (size_t k = 0; k < NN; k++)
-                    b[k] = exp(-(double)(k % 7) / 64) * (nl_rng_gauss2(1, 0, k, 0) + I * nl_rng_gauss2(1, 0, k, 1));
-                fftw_execute(p);
-                tt[r] = now() - t0;
-            }
-            char name[64], fl[64];
-            snprintf(name, sizeof name, "rank1 %dD N=%zu", sd, NN);
-            snprintf(fl, sizeof fl, "tensor FFT %dD %zu^%d", sd, M, sd);
-            row(name, NN, median(tr, reps), fl, median(tt, reps));
-            fftw_destroy_plan(p), fftw_free(b), free(cf), free(f), rank1_free(&L);
-        }
-    }
-    nl_model_free(m);
+    printf("case\tsize\tseconds\tfloor\tfloor_seconds\tratio\tsamples_per_s\n");
+    for (size_t n = 1024; n <= 4096; n *= 2)
+        bench_fft(m, n / d, reps);
+    for (size_t n = 1024; n <= 2048; n *= 2)
+        bench_circulant(me, n / d, reps);
+    for (size_t n = 1024; n <= 4096; n *= 2)
+        bench_subdiv(m, n / d, reps);
+    bench_sparse(m, 1024 / d, reps);
+    bench_estimators(2048 / d, reps);
+    bench_krige(mk, 1000 / d, 256 / d, reps);
+    bench_rank1(quick, reps);
+    nl_model_free(m), nl_model_free(me), nl_model_free(mk);
     return 0;
 }

@@ -7,7 +7,7 @@
 set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
-nl=$top/bin/noiselab
+nl=${NOISELAB:-$top/bin/noiselab}
 d=$dir/data
 mkdir -p "$d"
 printf 'level\tosc\tosc_pred\tmarkov\tmarkov_pred\n' > "$d/aliasing.tsv"

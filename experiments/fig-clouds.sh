@@ -5,7 +5,7 @@
 set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
-nl=$top/bin/noiselab
+nl=${NOISELAB:-$top/bin/noiselab}
 d=$dir/data
 mkdir -p "$d"
 rows=""

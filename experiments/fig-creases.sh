@@ -5,7 +5,7 @@
 set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
-nl=$top/bin/noiselab
+nl=${NOISELAB:-$top/bin/noiselab}
 d=$dir/data
 mkdir -p "$d"
 "$nl" synth midpoint --H 0.8 --size 65536 --levels 12 --seed 5 -o "$d/crease-mp.tsv"

@@ -6,7 +6,7 @@
 set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
-nl=$top/bin/noiselab
+nl=${NOISELAB:-$top/bin/noiselab}
 d=$dir/data
 mkdir -p "$d"
 "$nl" nonlin --design --target markov:scale=8 --g laplace --size 65536 --verify 16 -o "$d/design-laplace.tsv"

@@ -6,7 +6,7 @@
 set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
-bin=$top/build/experiments/fft_acf
+bin=${NOISELAB_EXPERIMENTS:-$top/build/experiments}/fft_acf
 mkdir -p "$dir/data"
 md=$dir/data/90-fft-acf.md
 status=0

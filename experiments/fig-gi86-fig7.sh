@@ -6,7 +6,7 @@
 set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
-nl=$top/bin/noiselab
+nl=${NOISELAB:-$top/bin/noiselab}
 d=$dir/data
 mkdir -p "$d"
 spec="gauss-osc:omega=0.3141592653589793,scale=60"

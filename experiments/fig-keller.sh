@@ -5,7 +5,7 @@
 set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
-nl=$top/bin/noiselab
+nl=${NOISELAB:-$top/bin/noiselab}
 d=$dir/data
 mkdir -p "$d"
 awk 'BEGIN { print "x\ty"; for (j = 0; j < 8; j++) for (i = 0; i < 8; i++) printf "%g\t%g\n", i / 8, j / 8 }' > "$d/grid64.tsv"

@@ -5,4 +5,4 @@ set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$dir/data"
-"$top/build/experiments/lewis_tables" "$dir/data/10-lewis-tables.md"
+"${NOISELAB_EXPERIMENTS:-$top/build/experiments}/lewis_tables" "$dir/data/10-lewis-tables.md"

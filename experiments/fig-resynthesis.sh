@@ -6,7 +6,7 @@
 set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
-nl=$top/bin/noiselab
+nl=${NOISELAB:-$top/bin/noiselab}
 ex=$top/build/exemplars
 d=$dir/data
 mkdir -p "$d"

@@ -5,5 +5,5 @@ set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$dir/data"
-"$top/build/experiments/subdiv_exact" "$dir/data/25-subdiv-exact.md" "$dir/data/subdiv-exact.tsv"
+"${NOISELAB_EXPERIMENTS:-$top/build/experiments}/subdiv_exact" "$dir/data/25-subdiv-exact.md" "$dir/data/subdiv-exact.tsv"
 gnuplot -e "data='$dir/data/subdiv-exact.tsv'; out='$dir/subdiv-exact.png'" "$top/plots/subdiv_exact.gp"

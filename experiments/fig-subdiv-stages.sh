@@ -7,7 +7,7 @@
 set -eu
 dir=$1
 top=$(cd "$(dirname "$0")/.." && pwd)
-nl=$top/bin/noiselab
+nl=${NOISELAB:-$top/bin/noiselab}
 mkdir -p "$dir/data"
 spec="gauss-osc:omega=10"
 for k in 1 2 3 4 5 6 7; do

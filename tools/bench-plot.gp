@@ -1,0 +1,19 @@
+# Time against size, log-log, for each method of `noiselab bench` (solid)
+# beside its floor measured in the same run (dashed, same colour).
+# usage: gnuplot -e "in='bench.tsv'; out='bench.png'" tools/bench-plot.gp
+set datafile separator "\t"
+set terminal pngcairo size 900,640 font ",11"
+set output out
+set logscale xy
+set xlabel "samples"
+set ylabel "seconds (median)"
+set title "noiselab bench: methods (solid) and their floors (dashed)"
+set key outside right top
+set grid
+cases = "fft circulant subdiv sparse acf psd krige rank1"
+m(c) = c[1:strstrt(c." ", " ") - 1]
+plot for [i = 1:words(cases)] in using (m(strcol(1)) eq word(cases, i) && strstrt(strcol(1), "variance") == 0 ? $2 : NaN):3 \
+         with linespoints lw 2 pt 7 lc i title word(cases, i), \
+     for [i = 1:words(cases)] in using (m(strcol(1)) eq word(cases, i) && strstrt(strcol(1), "variance") == 0 ? $2 : NaN):5 \
+         with linespoints dt 2 pt 6 lc i notitle, \
+     in using (strstrt(strcol(1), "variance") ? $2 : NaN):3 with points pt 5 ps 1.5 lc 7 title "krige +variance"
