@@ -26,7 +26,9 @@ int an_psd_slope(const double *f, const double *psd, size_t n, double fmin, doub
     out->slope = c1;
     out->ci95 = gsl_cdf_tdist_Qinv(0.025, (double)(m - 2)) * sqrt(cov11);
     out->points = m;
-    out->fractal_dim = E + (3 + c1) / 2;
+    /* eq. (16) takes d of a 1D profile; the radial average of an E-D spectrum
+     * of an isotropic field falls as f^-(d + E - 1) (Voss 1985) */
+    out->fractal_dim = E + (3 - (-c1 - (E - 1))) / 2;
     free(x), free(y);
     return NL_OK;
 }

@@ -2,7 +2,10 @@
  * (GSL gsl_fit_linear), with the 95% confidence interval of the slope from
  * the fit's residual variance (Student's t, n - 2 degrees of freedom), and
  * the fractal dimension of Lewis 1987, eq. (16): D = E + (3 - d)/2 with
- * d = -slope and E the Euclidean dimension.  The residuals are treated as
+ * E the Euclidean dimension and d the exponent of a 1D profile's spectrum:
+ * d = -slope in 1D, and d = -slope - (E - 1) when the slope is that of the
+ * radial average of an E-D spectrum (an fBm surface, H = 0.8, has radial
+ * slope -3.6, profile d = 2.6 and D = 2.2).  The residuals are treated as
  * independent, which holds for periodogram ordinates at distinct Fourier
  * frequencies of a long record. */
 #ifndef AN_SLOPE_H

@@ -32,7 +32,8 @@ static const char help[] =
     "                sampled process, aliasing included)\n"
     "  --slope F1:F2 fit log psd = c + slope log f over F1 <= f <= F2: slope, its 95%\n"
     "                confidence interval, and the fractal dimension D = E + (3 - d)/2,\n"
-    "                d = -slope (Lewis 1987, eq. 16)\n"
+    "                d = -slope in 1D, -slope - (E - 1) for radial averages in E-D\n"
+    "                (Lewis 1987, eq. 16, which is stated for profiles)\n"
     "  --json        {\"freq\": [...], \"psd\": [...], \"sided\": \"two-sided\"} on stdout\n"
     "  -o            TSV with columns freq, psd[, target] (default: TSV on stdout)\n";
 

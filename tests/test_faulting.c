@@ -54,6 +54,9 @@ Test(faulting, spectrum_is_k_minus_3_in_2d)
     cr_assert_eq(an_psd_slope(r, acc, 129, 8 / 256.0, 0.1, 2, &sl), 0);
     cr_log_info("faulting 2D: radial slope %.3f +- %.3f", sl.slope, sl.ci95);
     cr_expect_leq(fabs(sl.slope + 3), sl.ci95, "slope %.4f +- %.4f excludes -3", sl.slope, sl.ci95);
+    /* a Brownian surface: D = 3 - H = 2.5; D moves by half the slope, so its
+     * interval is half the slope's */
+    cr_expect_leq(fabs(sl.fractal_dim - 2.5), sl.ci95 / 2, "D %.4f", sl.fractal_dim);
     nl_field_free(f);
 }
 
@@ -81,6 +84,7 @@ Test(slope, exact_power_law)
     cr_expect_float_eq(sl.slope, -2.385, 1e-10);
     cr_expect_lt(sl.ci95, 1e-8);
     cr_expect_eq(sl.points, 76);
-    cr_expect_float_eq(sl.fractal_dim, 2 + (3 - 2.385) / 2, 1e-10);
+    /* radial slope of a 2D spectrum: the profile exponent is 2.385 - 1 */
+    cr_expect_float_eq(sl.fractal_dim, 2 + (3 - 1.385) / 2, 1e-10);
     cr_expect_eq(an_psd_slope(f, p, 100, 0.5, 0.6, 2, &sl), NL_EINVAL);
 }
