@@ -19,6 +19,7 @@ struct krige_plan {
     gsl_matrix *pinv;   /* pseudo-inverse of C, or NULL */
     gsl_vector *a;      /* C^-1 (d - b 1) */
     gsl_vector *u;      /* C^-1 1 */
+    gsl_vector *w;      /* L^-1 1 (with L), for the blocked variance */
     double s;           /* 1^T C^-1 1 */
     krige_info info;
 };
@@ -28,7 +29,7 @@ void krige_plan_free(krige_plan *p)
     if (!p)
         return;
     gsl_matrix_free(p->L), gsl_matrix_free(p->pinv);
-    gsl_vector_free(p->a), gsl_vector_free(p->u);
+    gsl_vector_free(p->a), gsl_vector_free(p->u), gsl_vector_free(p->w);
     free(p->pts), free(p);
 }
 
@@ -151,6 +152,12 @@ int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, co
         for (size_t i = 0; i < n; i++)
             gsl_vector_set(d, i, val[i] - b);
         solve(p, d, p->a);
+        if (p->L && (p->w = gsl_vector_alloc(n))) {
+            gsl_vector_set_all(p->w, 1.0);
+            gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, p->L, p->w);
+        } else if (p->L) {
+            st = NL_ERROR(NL_ENOMEM, "out of memory");
+        }
     }
     gsl_matrix_free(C), gsl_vector_free(d), gsl_vector_free(one);
     if (st) {
@@ -198,5 +205,62 @@ int krige_eval(const krige_plan *p, const double *x, double *est, double *var, d
                 lambda[i] = gsl_vector_get(y, i) - mu * gsl_vector_get(p->u, i);
     }
     gsl_vector_free(c0), gsl_vector_free(y);
+    return NL_OK;
+}
+
+/* The variance of many points at once: with z = L^-1 c0, c0^T C^-1 c0 = |z|^2
+ * and 1^T C^-1 c0 = (L^-1 1) . z, so one forward substitution serves all
+ * KRIGE_BLOCK points of a block, streaming L once per block instead of once
+ * per point (the per-point solve is bound by memory bandwidth). */
+int krige_eval_block(const krige_plan *p, size_t count, const double *x, double *est, double *var)
+{
+    size_t n = p->n, B = KRIGE_BLOCK;
+    double *z;
+    if (!p->L || !var) {
+        for (size_t q = 0; q < count; q++) {
+            int st = krige_eval(p, x + q * (size_t)p->dim, &est[q], var ? &var[q] : NULL, NULL);
+            if (st)
+                return st;
+        }
+        return NL_OK;
+    }
+    if (!(z = malloc(n * B * sizeof *z)))
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    for (size_t q0 = 0; q0 < count; q0 += B) {
+        size_t nb = count - q0 < B ? count - q0 : B;
+        for (size_t b = 0; b < nb; b++)
+            est[q0 + b] = p->info.mean;
+        for (size_t i = 0; i < n; i++) {
+            double ai = gsl_vector_get(p->a, i);
+            for (size_t b = 0; b < nb; b++) {
+                double c = cov(p, x + (q0 + b) * (size_t)p->dim, p->pts + i * p->dim);
+                z[i * B + b] = c;
+                est[q0 + b] += c * ai;
+            }
+        }
+        if (nb < B)  /* a short last block: the unused columns stay 0 */
+            for (size_t i = 0; i < n; i++)
+                memset(z + i * B + nb, 0, (B - nb) * sizeof *z);
+        for (size_t i = 0; i < n; i++) {  /* z <- L^-1 z, row by row */
+            const double *Li = p->L->data + i * p->L->tda;
+            double *restrict zi = z + i * B;
+            for (size_t k = 0; k < i; k++) {
+                const double l = Li[k], *restrict zk = z + k * B;
+#pragma omp simd
+                for (size_t b = 0; b < KRIGE_BLOCK; b++)
+                    zi[b] -= l * zk[b];
+            }
+            for (size_t b = 0; b < nb; b++)
+                zi[b] /= Li[i];
+        }
+        for (size_t b = 0; b < nb; b++) {
+            double cc = 0, uc = 0, v;
+            for (size_t i = 0; i < n; i++)
+                cc += z[i * B + b] * z[i * B + b], uc += gsl_vector_get(p->w, i) * z[i * B + b];
+            v = p->r0 - cc + (p->simple ? 0 : (1 - uc) * (1 - uc) / p->s);
+            var[q0 + b] = v > 0 ? v : 0;
+        }
+    }
+    free(z);
     return NL_OK;
 }

@@ -235,10 +235,14 @@ static void bench_krige(const nl_model *m, size_t np, size_t g, int reps)
             krige_plan *p;
             if ((st = krige_plan_alloc(m, 2, np, pts, val, 0, 0, 0, &p)))
                 cli_die_status(st);
-#pragma omp parallel for schedule(dynamic, 64)
-            for (size_t q = 0; q < g * g; q++) {
-                double x[2] = {((double)(q % g) + 0.5) / (double)g, ((double)(q / g) + 0.5) / (double)g}, v;
-                krige_eval(p, x, &est[q], var ? &v : NULL, NULL);
+#pragma omp parallel for schedule(dynamic, 1)
+            for (size_t q0 = 0; q0 < g * g; q0 += KRIGE_BLOCK) {
+                size_t nq = g * g - q0 < KRIGE_BLOCK ? g * g - q0 : KRIGE_BLOCK;
+                double x[2 * KRIGE_BLOCK], v[KRIGE_BLOCK];
+                for (size_t q = q0; q < q0 + nq; q++)
+                    x[2 * (q - q0)] = ((double)(q % g) + 0.5) / (double)g,
+                                 x[2 * (q - q0) + 1] = ((double)(q / g) + 0.5) / (double)g;
+                krige_eval_block(p, nq, x, &est[q0], var ? v : NULL);
             }
             krige_plan_free(p);
             tk[var][r] = now() - t0;

@@ -152,13 +152,17 @@ int cmd_krige(int argc, char **argv)
     if (!f || (vout && !vf))
         cli_die_status(st);
     int parallel = nl_model_get_kind(m) != NL_MODEL_EXPR;
-#pragma omp parallel for schedule(dynamic, 64) if (parallel && f->count > 4096)
-    for (size_t q = 0; q < f->count; q++) {
-        size_t idx[3] = {q % g[0], (q / g[0]) % g[1], q / (g[0] * g[1])};
-        double x[3];
-        for (int a = 0; a < 3; a++)
-            x[a] = lo[a] + ((double)idx[a] + 0.5) * h[a];
-        krige_eval(p, x, &f->data[q], vf ? &vf->data[q] : NULL, NULL);
+    size_t nblk = (f->count + KRIGE_BLOCK - 1) / KRIGE_BLOCK;
+#pragma omp parallel for schedule(dynamic, 1) if (parallel && f->count > 4096)
+    for (size_t blk = 0; blk < nblk; blk++) {
+        size_t q0 = blk * KRIGE_BLOCK, nq = f->count - q0 < KRIGE_BLOCK ? f->count - q0 : KRIGE_BLOCK;
+        double x[KRIGE_BLOCK * 3];
+        for (size_t q = q0; q < q0 + nq; q++) {
+            size_t idx[3] = {q % g[0], (q / g[0]) % g[1], q / (g[0] * g[1])};
+            for (int a = 0; a < dim; a++)
+                x[(q - q0) * (size_t)dim + a] = lo[a] + ((double)idx[a] + 0.5) * h[a];
+        }
+        krige_eval_block(p, nq, x, &f->data[q0], vf ? &vf->data[q0] : NULL);
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);

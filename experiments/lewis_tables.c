@@ -74,6 +74,7 @@ int main(int argc, char **argv)
                 "`coeffs` flags as diagonal-bias (threshold 1%%).\n\n", d2, d2 <= 5e-6 ? "pass" : "FAIL", sum,
             100 * fabs(c2->level[0].cls[0].a[0]) / amax);
     fclose(fp);
+    subdiv_coeffs_free(c1), subdiv_coeffs_free(c2), nl_model_free(m1), nl_model_free(m2);
     printf("Table 1: max |da| %.2g, rel dvar %.2g; Table 2: max |da| %.2g\n", da, dv, d2);
     return da <= 1e-6 && dv <= 1e-5 && d2 <= 5e-6 ? 0 : 1;
 }

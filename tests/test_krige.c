@@ -175,3 +175,31 @@ Test(krige, calibration)
     cr_expect_float_eq(se / sv, 1.0, 0.2, "calibration ratio %.3f", se / sv);
     synth_fft_plan_free(fp), nl_field_free(f), nl_model_free(m);
 }
+
+/* The blocked evaluation gives krige_eval's estimates and variances to
+ * rounding (1e-10 absolute; both are O(1)), for ordinary and simple kriging,
+ * with a last block shorter than KRIGE_BLOCK. */
+Test(krige, blocked_evaluation_equals_pointwise)
+{
+    enum { N = 300, Q = 2 * KRIGE_BLOCK + 17 };
+    double *pts = malloc(2 * N * sizeof *pts), *val = malloc(N * sizeof *val), x[2 * Q], e[Q], v[Q];
+    nl_model *m = model("markov:scale=0.2,angle=30,ratio=0.5");
+    data(N, 2, 11, pts, val);
+    for (size_t q = 0; q < 2 * Q; q++)
+        x[q] = nl_rng_uniform(12, 0, q);
+    for (int simple = 0; simple < 2; simple++) {
+        krige_plan *p;
+        double dmax = 0;
+        cr_assert_eq(krige_plan_alloc(m, 2, N, pts, val, simple, 2.0, 1, &p), 0);
+        cr_assert_eq(krige_eval_block(p, Q, x, e, v), 0);
+        for (size_t q = 0; q < Q; q++) {
+            double e1, v1;
+            cr_assert_eq(krige_eval(p, x + 2 * q, &e1, &v1, NULL), 0);
+            dmax = fmax(dmax, fmax(fabs(e1 - e[q]), fabs(v1 - v[q])));
+            cr_expect(v[q] > 0.01, "variance %g at a point away from the data", v[q]);
+        }
+        cr_expect_leq(dmax, 1e-10, "simple %d: largest difference %g", simple, dmax);
+        krige_plan_free(p);
+    }
+    nl_model_free(m), free(pts), free(val);
+}
