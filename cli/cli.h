@@ -49,6 +49,11 @@ int cli_parse_spacing(const char *opt, const char *s, int dim, double *h);
 /* Does path end with ext (case-insensitive, ext with its dot)? */
 int cli_has_ext(const char *path, const char *ext);
 
+/* "noiselab WHAT: NN%" on stderr when it is a terminal and the work has run
+ * for over a second since the first call; cli_progress_done clears it. */
+void cli_progress(const char *what, double frac);
+void cli_progress_done(void);
+
 /* Outputs appear whole or not at all: cli_out_begin checks that a temporary
  * file beside `path` can be created (exit 2 naming the path if not) and
  * returns its name; cli_out_commit renames it to `path`.  Temporary files

@@ -24,17 +24,7 @@ static const char help[] =
     "   \"camera\": {\"position\": [..], \"look_at\": [..], \"fov\": degrees},\n"
     "   \"sun\": [x, y, z]}   (y is up)\n";
 
-static struct timespec t_start;
-static int show_progress;
-
-static void progress(double f)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    double el = (double)(t.tv_sec - t_start.tv_sec) + 1e-9 * (double)(t.tv_nsec - t_start.tv_nsec);
-    if (show_progress && el > 1)
-        fprintf(stderr, "\rnoiselab cloud: %3.0f%%", 100 * f);
-}
+static void progress(double f) { cli_progress("cloud", f); }
 
 static double num(json_t *o, const char *key, double def, double lo, double hi, const char *path)
 {
@@ -154,12 +144,10 @@ int cmd_cloud(int argc, char **argv)
     double *lum = exr ? malloc(s.width * s.height * sizeof *lum) : NULL;
     if (!rgb || (exr && !lum))
         cli_die(1, "out of memory");
-    show_progress = isatty(2);
-    clock_gettime(CLOCK_MONOTONIC, &t_start);
+    cli_progress("cloud", 0);
     if ((st = cloud_render(&s, rgb, lum, progress)))
         cli_die_status(st);
-    if (show_progress)
-        fprintf(stderr, "\r                        \r");
+    cli_progress_done();
     if ((st = nl_png_write_rgb8(tmp, s.width, s.height, rgb)))
         cli_die_status(st);
     if (exr) {

@@ -139,6 +139,7 @@ int cmd_validate(int argc, char **argv)
             nl_field *f = nl_field_alloc(dim, n, NULL, &st), *full;
             double s1[L] = {0}, s2[L] = {0};
             for (size_t s = 1; s <= M && !st; s++) {
+                cli_progress("validate", (meth + (double)(s - 1) / (double)M) / 4);
                 if ((st = fn(ctx, s, f)) || (st = an_acf_full(f, 0.0, AN_ACF_UNBIASED, &full)))
                     break;
                 for (int i = 0; i < L; i++)
@@ -158,6 +159,8 @@ int cmd_validate(int argc, char **argv)
             nl_field_free(f);
         }
         synth_fft_plan_free(pf), synth_circulant_plan_free(pc), synth_sparse_plan_free(ps), subdiv_coeffs_free(sc.c);
+        if (meth == 3)
+            cli_progress_done();
         st = NL_OK;
     }
     /* data, plot, report */
