@@ -8,7 +8,9 @@
 #include <criterion/criterion.h>
 #include <gsl/gsl_linalg.h>
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
+#include <string.h>
 
 static nl_model *model(const char *spec)
 {
@@ -202,4 +204,30 @@ Test(krige, blocked_evaluation_equals_pointwise)
         krige_plan_free(p);
     }
     nl_model_free(m), free(pts), free(val);
+}
+
+/* Kriging a grid gives the same bits with 1 and 2 OpenMP threads: each
+ * block's arithmetic does not depend on which thread runs it. */
+Test(krige, bit_reproducible_across_threads)
+{
+    enum { N = 200, Q = 4096 };
+    double *pts = malloc(2 * N * sizeof *pts), *val = malloc(N * sizeof *val), *x = malloc(2 * Q * sizeof *x);
+    double *e[2] = {malloc(Q * sizeof(double)), malloc(Q * sizeof(double))};
+    double *v[2] = {malloc(Q * sizeof(double)), malloc(Q * sizeof(double))};
+    nl_model *m = model("markov:scale=0.2");
+    krige_plan *p;
+    data(N, 2, 13, pts, val);
+    for (size_t q = 0; q < 2 * Q; q++)
+        x[q] = nl_rng_uniform(14, 0, q);
+    cr_assert_eq(krige_plan_alloc(m, 2, N, pts, val, 0, 0, 1, &p), 0);
+    for (int t = 0; t < 2; t++) {
+        omp_set_num_threads(t + 1);
+#pragma omp parallel for schedule(dynamic, 1)
+        for (size_t q0 = 0; q0 < Q; q0 += KRIGE_BLOCK)
+            krige_eval_block(p, KRIGE_BLOCK, x + 2 * q0, e[t] + q0, v[t] + q0);
+    }
+    cr_expect_eq(memcmp(e[0], e[1], Q * sizeof(double)), 0);
+    cr_expect_eq(memcmp(v[0], v[1], Q * sizeof(double)), 0);
+    krige_plan_free(p), nl_model_free(m);
+    free(pts), free(val), free(x), free(e[0]), free(e[1]), free(v[0]), free(v[1]);
 }

@@ -14,6 +14,7 @@
 #include <criterion/criterion.h>
 #include <gsl/gsl_cdf.h>
 #include <math.h>
+#include <omp.h>
 #include <string.h>
 
 static double r_matern(double x, double y)
@@ -128,4 +129,24 @@ Test(sparse, refusals)
     cr_expect(strstr(nl_errmsg(), "larger than the tile") != NULL, "%s", nl_errmsg());
     synth_sparse_plan_free(p);
     nl_field_free(f);
+}
+
+/* The same seed gives the same bits with 1 and 2 OpenMP threads (impulses
+ * come from the counter-based RNG by cell, whatever thread visits it). */
+Test(sparse, bit_reproducible_across_threads)
+{
+    size_t n[2] = {192, 160};
+    nl_model *m;
+    synth_sparse_plan *p;
+    nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
+    cr_assert_eq(nl_model_parse("matern:nu=1.5,scale=5", &m), 0);
+    cr_assert_eq(synth_sparse_plan_model(m, 2, NULL, 0, 0, 8, &p), 0, "%s", nl_errmsg());
+    omp_set_num_threads(1);
+    cr_assert_eq(synth_sparse_execute(p, 9, 1, NULL, a), 0);
+    omp_set_num_threads(2);
+    cr_assert_eq(synth_sparse_execute(p, 9, 1, NULL, b), 0);
+    cr_expect_eq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
+    cr_assert_eq(synth_sparse_execute(p, 10, 1, NULL, b), 0);
+    cr_expect_neq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
+    synth_sparse_plan_free(p), nl_model_free(m), nl_field_free(a), nl_field_free(b);
 }
