@@ -97,7 +97,8 @@ bench: $(BIN)
 	@mkdir -p $(BUILD)/bench
 	$(BIN) bench | tee $(BUILD)/bench/bench.tsv
 	gnuplot -e "in='$(BUILD)/bench/bench.tsv'; out='$(BUILD)/bench/bench.png'" tools/bench-plot.gp
-	@echo "bench: $(BUILD)/bench/bench.tsv and bench.png"
+	sh tools/bench-r.sh $(BIN) $(BUILD)/bench/r | tee $(BUILD)/bench/bench-r.tsv
+	@echo "bench: $(BUILD)/bench/bench.tsv, bench.png and (with R installed) bench-r.tsv"
 
 clean:
 	rm -rf $(BUILD) bin tests/work
