@@ -44,6 +44,8 @@ int cli_parse_size(const char *opt, const char *s, size_t *n, size_t min);   /* 
 uint64_t cli_parse_u64(const char *opt, const char *s);
 double cli_parse_double(const char *opt, const char *s);
 size_t cli_parse_count(const char *opt, const char *s, size_t min);
+/* --dim D with 1 <= D <= max (dies with exit 2 otherwise) */
+int cli_parse_dim(const char *s, int max);
 int cli_parse_spacing(const char *opt, const char *s, int dim, double *h);
 
 /* Does path end with ext (case-insensitive, ext with its dot)? */

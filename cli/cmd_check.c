@@ -31,11 +31,7 @@ int cmd_check(int argc, char **argv)
     while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
         switch (c) {
         case 'a': spec = optarg; break;
-        case 'd':
-            if (strlen(optarg) != 1 || optarg[0] < '1' || optarg[0] > '3')
-                cli_die(2, "--dim: expected 1, 2 or 3, got \"%s\"", optarg);
-            dim = optarg[0] - '0';
-            break;
+        case 'd': dim = cli_parse_dim(optarg, 3); break;
         case 'j': json = 1; break;
         case 'h': fputs(help, stdout); return 0;
         default: cli_bad_option("check", c, argv);

@@ -95,11 +95,7 @@ int cmd_coeffs(int argc, char **argv)
     while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
         switch (c) {
         case 'a': spec = optarg; break;
-        case 'd':
-            if (strcmp(optarg, "1") && strcmp(optarg, "2"))
-                cli_die(2, "--dim: expected 1 or 2, got \"%s\"", optarg);
-            dim = optarg[0] - '0';
-            break;
+        case 'd': dim = cli_parse_dim(optarg, 2); break;
         case 'N':
             N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
             break;

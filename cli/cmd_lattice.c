@@ -57,11 +57,7 @@ int cmd_lattice(int argc, char **argv)
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
         case 'n': N = cli_parse_count("--points", optarg, 2); break;
-        case 'd':
-            if (strlen(optarg) != 1 || optarg[0] < '1' || optarg[0] > '4')
-                cli_die(2, "--dim: expected 1 to 4, got \"%s\"", optarg);
-            s = optarg[0] - '0';
-            break;
+        case 'd': s = cli_parse_dim(optarg, 4); break;
         case 'g': gen = optarg; break;
         case 'a': spec = optarg; spectral = 0; break;
         case 'S': spec = optarg; spectral = 1; break;

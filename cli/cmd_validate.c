@@ -58,11 +58,7 @@ int cmd_validate(int argc, char **argv)
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
         case 'a': spec = optarg; break;
-        case 'd':
-            if (strcmp(optarg, "1") && strcmp(optarg, "2"))
-                cli_die(2, "--dim: expected 1 or 2, got \"%s\"", optarg);
-            dim = optarg[0] - '0';
-            break;
+        case 'd': dim = cli_parse_dim(optarg, 2); break;
         case 'o': dir = optarg; break;
         case 'n': N = cli_parse_count("--size", optarg, 64); break;
         case 'M': M = cli_parse_count("--realizations", optarg, 4); break;

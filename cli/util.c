@@ -110,6 +110,13 @@ size_t cli_parse_count(const char *opt, const char *s, size_t min)
     return (size_t)v;
 }
 
+int cli_parse_dim(const char *s, int max)
+{
+    if (strlen(s) != 1 || s[0] < '1' || s[0] > '0' + max)
+        cli_die(2, "--dim: expected 1 to %d, got \"%s\"", max, s);
+    return s[0] - '0';
+}
+
 int cli_parse_spacing(const char *opt, const char *s, int dim, double *h)
 {
     const char *p = s;

@@ -52,7 +52,8 @@ int nl_png_read(const char *path, nl_field **out)
     return NL_OK;
 }
 
-int nl_png_write_gray8(const char *path, size_t w, size_t h, const uint8_t *pix)
+/* 8-bit rows of w pixels in `format` (PNG_FORMAT_GRAY or _RGB), top row first. */
+static int write8(const char *path, size_t w, size_t h, const uint8_t *pix, png_uint_32 format)
 {
     png_image img;
     memset(&img, 0, sizeof img);
@@ -61,10 +62,15 @@ int nl_png_write_gray8(const char *path, size_t w, size_t h, const uint8_t *pix)
         return NL_ERROR(NL_ETOOBIG, "PNG: %zu x %zu is too large", w, h);
     img.width = (png_uint_32)w;
     img.height = (png_uint_32)h;
-    img.format = PNG_FORMAT_GRAY;
+    img.format = format;
     if (!png_image_write_to_file(&img, path, 0, pix, 0, NULL))
         return NL_ERROR(NL_EIO, "%s: cannot write PNG: %s", path, img.message);
     return NL_OK;
+}
+
+int nl_png_write_gray8(const char *path, size_t w, size_t h, const uint8_t *pix)
+{
+    return write8(path, w, h, pix, PNG_FORMAT_GRAY);
 }
 
 int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi)
@@ -88,15 +94,5 @@ int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi
 
 int nl_png_write_rgb8(const char *path, size_t w, size_t h, const uint8_t *rgb)
 {
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    if (w > 0x7fffffff || h > 0x7fffffff)
-        return NL_ERROR(NL_ETOOBIG, "PNG: %zu x %zu is too large", w, h);
-    img.width = (png_uint_32)w;
-    img.height = (png_uint_32)h;
-    img.format = PNG_FORMAT_RGB;
-    if (!png_image_write_to_file(&img, path, 0, rgb, 0, NULL))
-        return NL_ERROR(NL_EIO, "%s: cannot write PNG: %s", path, img.message);
-    return NL_OK;
+    return write8(path, w, h, rgb, PNG_FORMAT_RGB);
 }

@@ -4,12 +4,7 @@
 # 4096-sample field (seed 7) and the energy that changes when it is viewed
 # one level down, measured and predicted from the spectrum; the oscillatory
 # cos(10 t) exp(-t^2) against the monotone exp(-|t|).
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 printf 'level\tosc\tosc_pred\tmarkov\tmarkov_pred\n' > "$d/aliasing.tsv"
 fail=0
 for k in 2 3 4 5 6 7 8 9; do

@@ -2,12 +2,7 @@
 # Stam and Fiume 1991: clouds from a kriged global shape plus noise, three
 # example scenes (experiments/scenes/*.json), 512 pixels wide; the render
 # time of each is recorded.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 rows=""
 for s in cumulus stratus multipart; do
     t0=$(date +%s.%N)

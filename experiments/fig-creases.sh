@@ -2,12 +2,7 @@
 # Creases (Lewis 1987, "Creases"; GI '86 section 2): midpoint displacement of
 # a non-Markovian fractal noise against generalized subdivision to the same
 # target, measured by noiselab detect.  1D, 65536 samples, 12 levels, seed 5.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 "$nl" synth midpoint --H 0.8 --size 65536 --levels 12 --seed 5 -o "$d/crease-mp.tsv"
 "$nl" synth subdiv --spectrum power:d=2.6,fmin=0.0001 --size 65536 --levels 12 --seed 5 -o "$d/crease-gs.tsv"
 "$nl" detect "$d/crease-mp.tsv" --levels 12 --json > "$d/crease-mp.json"

@@ -3,12 +3,7 @@
 # Gaussian input whose output after a nonlinearity has a wanted ACF, and the
 # round trip through synthesis, shaping and measurement (16 realizations of
 # 65536 samples each).
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 "$nl" nonlin --design --target markov:scale=8 --g laplace --size 65536 --verify 16 -o "$d/design-laplace.tsv"
 "$nl" nonlin --design --target 'expr:cos(0.3*t)*exp(-abs(t)/20)' --g chi2-1 --size 65536 --verify 16 -o "$d/design-chi2.tsv"
 gnuplot -e "a='$d/design-laplace.tsv'; b='$d/design-chi2.tsv'; out='$dir/design-round-trip.png'" "$top/plots/design.gp"

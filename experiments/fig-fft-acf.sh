@@ -3,11 +3,8 @@
 # 256x256 realization and the ensemble ACF of 64 realizations (seeds 1..64)
 # along x and y, with its verdict (see experiments/fft_acf.c).  Data and the
 # index fragment go to DIR/data/, the figures to DIR/.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-bin=${NOISELAB_EXPERIMENTS:-$top/build/experiments}/fft_acf
-mkdir -p "$dir/data"
+. "$(dirname "$0")/lib.sh"
+bin=$xb/fft_acf
 md=$dir/data/90-fft-acf.md
 status=0
 {

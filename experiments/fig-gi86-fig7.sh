@@ -3,12 +3,7 @@
 # pair of nonlinearities that give a hyperbolic (sech) density; the odd
 # harmonics predicted by Beckmann's Hermite series against measurement.
 # Input: cos(2 pi 0.05 t) exp(-(t/60)^2), 65536 samples, seeds 1..8.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 spec="gauss-osc:omega=0.3141592653589793,scale=60"
 M=8
 rm -f "$d"/nl-psd-*.part

@@ -2,12 +2,7 @@
 # GI '86 Fig. 2 (Lewis 1987 Fig. 3): the planar quadrilateral mesh with a 4x4
 # neighbourhood, drawn with the coefficients noiselab computes for the
 # isotropic Markov model at spacing 1 (noiselab coeffs).
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 "$nl" coeffs --acf markov --dim 2 --levels 1 --spacing0 1 --json > "$d/mesh.json"
 # coefficients are row-major over r, c = -1..2 (r along y, c along x)
 for k in face edge-x; do

@@ -1,12 +1,7 @@
 #!/bin/sh
 # GI '86 Fig. 5: sky and terrain with a directional trend by generalized
 # subdivision, from ellipsoidal models (angle, ratio).  Seeds 5 and 6.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 terrain=markaussian:alpha=1.4,scale=48,angle=30,ratio=0.3
 sky=markaussian:alpha=1.8,scale=64,angle=-8,ratio=0.15
 "$nl" synth subdiv --acf "$terrain" --size 512x512 --seed 5 -o "$d/trend-terrain.exr"

@@ -3,26 +3,19 @@
 # obliquely illuminated height field, and a perspective view of a wave-like
 # texture.  Sparse convolution with a directional band-pass kernel
 # h = cos(0.3 x + 0.1 y) exp(-(x^2 + y^2)/200), 32 impulses per cell, seed 3.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 k='cos(0.3*x+0.1*y)*exp(-(x*x+y*y)/200)'
 "$nl" synth sparse --kernel "$k" --radius 32 --density 32 --size 512x512 --seed 3 --wrap -o "$d/waves.exr"
 "$nl" render "$d/waves.exr" --shade 315,35 --zscale 1.2 -o "$dir/gi86-fig6-rough-waves.png"
 "$nl" synth sparse --kernel "$k" --radius 32 --density 32 --size 256x256 --seed 4 --wrap -o "$d/waves-p.exr"
 "$nl" render "$d/waves-p.exr" --matrix "$d/waves.txt" --step 2
-var=$("$nl" hist "$d/waves-p.exr" | sed -n 's/^# variance //p')
-zs=$(awk -v v="$var" 'BEGIN { print 1.2 / sqrt(v) }')
+zs=$(per_sd "$d/waves-p.exr" 1.2)
 gnuplot -e "data='$d/waves.txt'; title_text='shaped impulse process, band-pass wave kernel'; water=1; out='$dir/gi86-fig6-waves-perspective.png'; zs=$zs" "$top/plots/terrain.gp"
 # verdict: the radial spectrum peaks at the kernel's frequency
 # f0 = |(0.3, 0.1)| / 2 pi; the kernel's spectrum is a Gaussian blob of
 # standard deviation 1 / (2 pi sqrt(100)) = 0.016 cycles per sample around it,
 # and we require the peak within half of that
-"$nl" psd "$d/waves.exr" --json > "$d/waves-psd.json"
-fpk=$(jq '[.freq, .psd] | transpose | max_by(.[1]) | .[0]' "$d/waves-psd.json")
+fpk=$(psd_peak "$d/waves.exr")
 f0=$(awk 'BEGIN { printf "%.4f", sqrt(0.09 + 0.01) / (8 * atan2(1, 1)) }')
 verdict=$(awk -v a="$fpk" -v b="$f0" 'BEGIN { print ((a - b) ^ 2 <= 0.008 ^ 2 ? "pass" : "FAIL") }')
 fpk=$(printf '%.4f' "$fpk")

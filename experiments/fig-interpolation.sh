@@ -4,13 +4,8 @@
 # 512 x 512 by generalized subdivision seeded with it (external
 # consistency), markaussian alpha 1.4, seed 1.  Verdict: every seed sample
 # is kept bit for bit.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
-"${NOISELAB_EXPERIMENTS:-$top/build/experiments}/block_average" "$top/build/exemplars/camera.png" 16 "$d/camera32.exr"
+. "$(dirname "$0")/lib.sh"
+"$xb/block_average" "$top/build/exemplars/camera.png" 16 "$d/camera32.exr"
 "$nl" synth subdiv --acf markaussian:alpha=1.4,scale=64,var=0.004 --size 512x512 --seed-image "$d/camera32.exr" \
     -o "$d/camera512.exr"
 "$nl" render "$d/camera32.exr" --range 0:1 -o "$d/camera32.png"
@@ -18,7 +13,7 @@ mkdir -p "$d"
 "$nl" render "$d/camera512.exr" --matrix "$d/camera512.txt" --step 4
 # the seed samples at every 16th sample of the result, compared exactly
 "$nl" hist "$d/camera32.exr" --json > "$d/c32.json"
-kept=$("${NOISELAB_EXPERIMENTS:-$top/build/experiments}/seed_kept" "$d/camera32.exr" "$d/camera512.exr" 16)
+kept=$("$xb/seed_kept" "$d/camera32.exr" "$d/camera512.exr" 16)
 gnuplot -e "f1='$d/camera32.png'; f2='$d/camera512.png'; t1='seed: 32 x 32 block average'; t2='stochastic interpolation to 512 x 512'; out='$dir/lewis87-fig5-interpolation.png'" "$top/plots/pair.gp"
 gnuplot -e "data='$d/camera512.txt'; title_text='the interpolated image as a height field'; out='$dir/lewis87-fig5-heightfield.png'; zs=120" "$top/plots/terrain.gp"
 verdict=FAIL

@@ -2,12 +2,7 @@
 # Keller 2001: Fig. 1 (grid and Fibonacci lattice), Fig. 2 (periodic
 # Delaunay triangulation, wave vector sets F10..F17), Fig. 3 (tiling of four
 # ocean patches), and the ocean beside its grid counterpart.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 awk 'BEGIN { print "x\ty"; for (j = 0; j < 8; j++) for (i = 0; i < 8; i++) printf "%g\t%g\n", i / 8, j / 8 }' > "$d/grid64.tsv"
 "$nl" lattice --points 55 --dim 2 -o "$d/fib55.tsv" --mesh "$d/fib55.obj"
 awk '/^v / { x[++n] = $2; y[n] = $3; if (n % 3 == 0) { for (k = n - 2; k <= n; k++) print x[k] "\t" y[k]; print x[n - 2] "\t" y[n - 2]; print "" } }' \

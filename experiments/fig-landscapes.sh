@@ -3,20 +3,14 @@
 # and without the power modification y <- y^2.5, fractal and non-fractal.
 # 512 x 512, 4x4 neighbourhoods, seed 7; the power law is applied to the
 # uniform rank of the heights (noiselab shape --to power:p=2.5 --empirical).
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 "$nl" synth subdiv --acf markaussian:alpha=1.4,scale=64 --size 512x512 --seed 7 -o "$d/ls-nonfractal.exr"
 "$nl" synth subdiv --spectrum power:d=3.6,fmin=0.001 --size 512x512 --seed 7 -o "$d/ls-fractal.exr"
 for k in nonfractal fractal; do
     "$nl" shape --to power:p=2.5 --empirical "$d/ls-$k.exr" -o "$d/ls-$k-pow.exr"
 done
 terrain() { # field, heights per standard deviation (in samples drawn), title, output
-    var=$("$nl" hist "$1" | sed -n 's/^# variance //p')
-    zs=$(awk -v v="$var" -v k="$2" 'BEGIN { print k / sqrt(v) }')
+    zs=$(per_sd "$1" "$2")
     "$nl" render "$1" --matrix "$d/ls.txt" --step 4
     gnuplot -e "data='$d/ls.txt'; title_text='$3'; out='$dir/$4'; zs=$zs" "$top/plots/terrain.gp"
 }

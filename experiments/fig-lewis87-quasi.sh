@@ -3,12 +3,7 @@
 # textures.  The quasi-periodic spectrum is ten Gaussian blobs at radius 0.06
 # cycles per sample, 36 degrees apart (five-fold, no period); FFT synthesis,
 # 512 x 512, seed 2.  Fig. 10: an oscillatory Markaussian, seed 3.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 S=$(awk 'BEGIN { s = "spectrum:"; pi = 4 * atan2(1, 1)
     for (i = 0; i < 10; i++) {
         fx = 0.06 * cos(i * pi / 5); fy = 0.06 * sin(i * pi / 5)
@@ -17,15 +12,12 @@ S=$(awk 'BEGIN { s = "spectrum:"; pi = 4 * atan2(1, 1)
     print s }')
 "$nl" synth fft --spectrum "$S" --size 512x512 --seed 2 -o "$d/quasi.exr"
 "$nl" render "$d/quasi.exr" -o "$dir/lewis87-fig8-quasi-periodic.png"
-var=$("$nl" hist "$d/quasi.exr" | sed -n 's/^# variance //p')
-zs=$(awk -v v="$var" 'BEGIN { print 1 / sqrt(v) }')
-"$nl" render "$d/quasi.exr" --shade 315,35 --zscale "$zs" -o "$dir/lewis87-fig9-illuminated.png"
+"$nl" render "$d/quasi.exr" --shade 315,35 --zscale "$(per_sd "$d/quasi.exr" 1)" -o "$dir/lewis87-fig9-illuminated.png"
 "$nl" synth subdiv --acf gauss-osc:omega=0.25,scale=20,sep --size 512x512 --seed 3 -o "$d/osc.exr"
 "$nl" render "$d/osc.exr" --shade 315,35 --zscale 1 -o "$dir/lewis87-fig10-illuminated.png"
 # verdict: the radial spectrum peaks at 0.06, within the blobs' standard
 # deviation sqrt(1e-5) = 0.0032 plus one radial bin (0.002): 0.005
-"$nl" psd "$d/quasi.exr" --json > "$d/quasi-psd.json"
-fpk=$(jq '[.freq, .psd] | transpose | max_by(.[1]) | .[0]' "$d/quasi-psd.json")
+fpk=$(psd_peak "$d/quasi.exr")
 verdict=$(awk -v a="$fpk" 'BEGIN { print ((a - 0.06) ^ 2 <= 0.005 ^ 2 ? "pass" : "FAIL") }')
 fpk=$(printf '%.4f' "$fpk")
 cat > "$d/27-quasi.md" <<MD

@@ -3,13 +3,8 @@
 # Hann-windowed central 128 x 128 window of an exemplar as the kernel
 # (density 16 per 64 x 64 cell, seed 1), on grass, gravel and brick from
 # Debian's python3-skimage data; radial periodograms compared.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
+. "$(dirname "$0")/lib.sh"
 ex=$top/build/exemplars
-d=$dir/data
-mkdir -p "$d"
 rows=""
 fail=0
 for t in grass gravel brick; do

@@ -2,12 +2,7 @@
 # The singular Gaussian case (Lewis 1987, "Singular processes"): the
 # subdivision matrix of exp(-t^2) loses rank in double precision as the
 # spacing shrinks, exp(-|t|) never does.  1D, N = 2, 12 levels from spacing 4.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 for k in gauss markov; do
     "$nl" coeffs --acf $k --dim 1 --levels 12 --spacing0 4 --json > "$d/singular-$k.json"
     jq -r '.levels[] | "\(.level)\t\(.spacing)\t\(.classes[0].condition)\t\(.classes[0].variance)\t\(.classes[0].flags | join(","))"' \

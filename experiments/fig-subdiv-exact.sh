@@ -1,9 +1,6 @@
 #!/bin/sh
 # The method's own error: exact covariance of subdivision fields against the
 # target, and the diagonal bias of the 2D mesh (experiments/subdiv_exact.c).
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-mkdir -p "$dir/data"
-"${NOISELAB_EXPERIMENTS:-$top/build/experiments}/subdiv_exact" "$dir/data/25-subdiv-exact.md" "$dir/data/subdiv-exact.tsv"
+. "$(dirname "$0")/lib.sh"
+"$xb/subdiv_exact" "$dir/data/25-subdiv-exact.md" "$dir/data/subdiv-exact.tsv"
 gnuplot -e "data='$dir/data/subdiv-exact.tsv'; out='$dir/subdiv-exact.png'" "$top/plots/subdiv_exact.gp"

@@ -4,11 +4,7 @@
 # stage is a non-periodic window t in [0, 16] with one more level from the
 # same coarse samples (spacing 2): the any-order property makes every stage
 # a refinement of the one above, which the verdict checks sample by sample.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-mkdir -p "$dir/data"
+. "$(dirname "$0")/lib.sh"
 spec="gauss-osc:omega=10"
 for k in 1 2 3 4 5 6 7; do
     n=$((8 * (1 << k) + 1))

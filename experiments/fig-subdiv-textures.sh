@@ -2,12 +2,7 @@
 # Lewis 1987 Fig. 4 / GI '86 Fig. 3 (textures by generalized subdivision) and
 # GI '86 Fig. 4 (a terrain with R = exp(-(x^2 + y^2)^0.7)).  256 x 256, 4x4
 # neighbourhoods, seed 2.
-set -eu
-dir=$1
-top=$(cd "$(dirname "$0")/.." && pwd)
-nl=${NOISELAB:-$top/bin/noiselab}
-d=$dir/data
-mkdir -p "$d"
+. "$(dirname "$0")/lib.sh"
 "$nl" synth subdiv --acf markov:scale=24 --size 256x256 --seed 2 -o "$d/tx-markov.exr"
 "$nl" render "$d/tx-markov.exr" -o "$d/tx-markov.png"
 "$nl" synth subdiv --acf oscillatory:omega=0.35,scale=24,sep --size 256x256 --seed 2 -o "$d/tx-osc.exr"
