@@ -1,7 +1,9 @@
 /* Field files: OpenEXR (through the OpenEXRCore C API), PNG, TSV.
  *
- * EXR: one FLOAT channel "Y", PIZ-compressed scanlines (OpenEXRCore 3.1.5
- * corrupts ZIP chunks that do not compress, see tests/test_io.c); a 1D field is one
+ * EXR: one FLOAT channel "Y", uncompressed scanlines: random fields do not
+ * compress (PIZ saved 0% on white-ish noise and 9% on a smooth Gaussian
+ * field, at half the run time of a 4096^2 synthesis), and OpenEXRCore 3.1.5
+ * corrupts ZIP chunks that do not compress (tests/test_io.c); a 1D field is one
  * row, a 3D field of n0 x n1 x n2 is stored as an image n0 wide and n1*n2
  * high (slice k is rows k*n1 .. k*n1+n1-1), with noiselab.size saying so.
  * String attributes record how the field was made (nl_meta).

@@ -68,7 +68,7 @@ int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta)
     }
     rv = exr_add_part(ctx, "main", EXR_STORAGE_SCANLINE, &part);
     if (!rv)
-        rv = exr_initialize_required_attr_simple(ctx, part, w, h, EXR_COMPRESSION_PIZ);
+        rv = exr_initialize_required_attr_simple(ctx, part, w, h, EXR_COMPRESSION_NONE);
     if (!rv)
         rv = exr_add_channel(ctx, part, "Y", EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR, 1, 1);
     for (int i = 0; meta && i < NATTR && !rv; i++) {

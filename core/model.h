@@ -61,6 +61,11 @@ const char *nl_model_spec(const nl_model *m);
 /* Is the model defined by its spectrum (power, spectrum:) rather than by R? */
 int nl_model_is_spectral(const nl_model *m);
 
+/* May nl_model_acf and nl_model_spectrum be called on this model from
+ * several threads at once?  True for every model but expressions
+ * (libmatheval keeps its variables in the expression tree). */
+int nl_model_is_reentrant(const nl_model *m);
+
 /* R at the lag vector lag[0..dim-1] (spacing units), for models defined by R,
  * and for power:, whose R is computed by quadrature (the Fourier or Hankel
  * transform of its band-limited spectrum, Lewis 1987 eq. (13)).  For

@@ -264,6 +264,8 @@ int nl_model_is_spectral(const nl_model *m)
     return m->kind == NL_MODEL_POWER || m->kind == NL_MODEL_SPECTRUM;
 }
 
+int nl_model_is_reentrant(const nl_model *m) { return m->kind != NL_MODEL_EXPR && m->kind != NL_MODEL_SPECTRUM; }
+
 int nl_model_check_dim(const nl_model *m, int dim)
 {
     if (dim < 1 || dim > 3)

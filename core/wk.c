@@ -6,6 +6,7 @@
 #include <complex.h>
 #include <fftw3.h>
 #include <math.h>
+#include <stdlib.h>
 
 static int same_grid(const nl_field *a, const nl_field *b)
 {
@@ -84,24 +85,46 @@ static double value_at(const nl_model *m, const nl_field *f, const size_t *idx, 
     return sum / combos;
 }
 
-/* Fill f with model values at the wrapped lags (freq = 0) or frequencies. */
-static int fill(const nl_model *m, nl_field *f, int freq)
+/* Model values at the wrapped lags or frequencies (i < ni, all j, k) of the
+ * grid g, into rows of `stride` doubles.  Reentrant models are sampled on
+ * all threads. */
+static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *dst, size_t stride, int freq)
 {
-    int st = nl_model_check_dim(m, f->dim);
+    size_t rows = g->n[1] * g->n[2], bad = rows;
+    int st = nl_model_check_dim(m, g->dim);
     if (st)
         return st;
-    for (size_t k = 0; k < f->n[2]; k++)
-        for (size_t j = 0; j < f->n[1]; j++)
-            for (size_t i = 0; i < f->n[0]; i++) {
-                size_t idx[3] = {i, j, k};
-                double y = value_at(m, f, idx, freq);
-                if (!isfinite(y))
-                    return NL_ERROR(NL_EINVAL, "%s: the model is not finite (%g) at %s index (%zu, %zu, %zu)",
-                                    nl_model_spec(m), y, freq ? "frequency" : "lag", i, j, k);
-                f->data[(k * f->n[1] + j) * f->n[0] + i] = y;
+#pragma omp parallel for schedule(dynamic, 16) if (nl_model_is_reentrant(m) && rows * ni > 65536)
+    for (size_t r = 0; r < rows; r++) {
+        size_t idx[3] = {0, r % g->n[1], r / g->n[1]};
+        for (size_t i = 0; i < ni; i++) {
+            double y;
+            idx[0] = i;
+            y = value_at(m, g, idx, freq);
+            if (!isfinite(y)) {
+#pragma omp critical(nl_wk_bad)
+                if (r < bad)
+                    bad = r;
+                break;
             }
+            dst[r * stride + i] = y;
+        }
+    }
+    if (bad < rows) {
+        size_t idx[3] = {0, bad % g->n[1], bad / g->n[1]};
+        for (size_t i = 0; i < ni; i++) {
+            double y;
+            idx[0] = i;
+            if (!isfinite(y = value_at(m, g, idx, freq)))
+                return NL_ERROR(NL_EINVAL, "%s: the model is not finite (%g) at %s index (%zu, %zu, %zu)",
+                                nl_model_spec(m), y, freq ? "frequency" : "lag", i, idx[1], idx[2]);
+        }
+    }
     return NL_OK;
 }
+
+/* Fill f with model values at the wrapped lags (freq = 0) or frequencies. */
+static int fill(const nl_model *m, nl_field *f, int freq) { return fill_rows(m, f, f->n[0], f->data, f->n[0], freq); }
 
 int nl_wk_sample_acf(const nl_model *m, nl_field *R)
 {
@@ -132,5 +155,60 @@ int nl_wk_sample_spectrum(const nl_model *m, nl_field *S)
     if (!st)
         st = nl_wk_acf_to_spectrum(R, S);
     nl_field_free(R);
+    return st;
+}
+
+int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, const double *h, double **out)
+{
+    nl_field g = {.dim = dim, .n = {1, 1, 1}, .h = {1, 1, 1}, .count = 1, .data = NULL};
+    size_t h0, rows, half;
+    double *S, *buf, cell = 1;
+    fftw_plan p;
+    int dims[3], st;
+    *out = NULL;
+    if (dim < 1 || dim > 3)
+        return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
+    for (int a = 0; a < dim; a++) {
+        g.n[a] = n[a];
+        g.h[a] = h ? h[a] : 1;
+        g.count *= n[a];
+        cell *= g.h[a];
+        dims[a] = (int)n[dim - 1 - a];
+    }
+    h0 = g.n[0] / 2 + 1;
+    rows = g.n[1] * g.n[2];
+    half = rows * h0;
+    S = malloc(half * sizeof *S);
+    if (!S)
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu spectrum samples", half);
+    if (nl_model_is_spectral(m)) {
+        if ((st = fill_rows(m, &g, h0, S, h0, 1))) {
+            free(S);
+            return st;
+        }
+        *out = S;
+        return NL_OK;
+    }
+    /* In-place r2c: rows padded to 2 h0 doubles; planned before filling,
+     * since a measured plan overwrites its arrays. */
+    buf = fftw_alloc_real(2 * half);
+    p = buf ? fftw_plan_dft_r2c(dim, dims, buf, (fftw_complex *)buf, nl_fftw_flags(g.count)) : NULL;
+    if (!p) {
+        fftw_free(buf);
+        free(S);
+        return buf ? NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", dim)
+                   : NL_ERROR(NL_ENOMEM, "out of memory for %zu samples", 2 * half);
+    }
+    if (!(st = fill_rows(m, &g, g.n[0], buf, 2 * h0, 0))) {
+        const fftw_complex *c = (const fftw_complex *)buf;
+        fftw_execute(p);
+        for (size_t k = 0; k < half; k++)
+            S[k] = cell * creal(c[k]);
+        *out = S;
+    } else {
+        free(S);
+    }
+    fftw_destroy_plan(p);
+    fftw_free(buf);
     return st;
 }

@@ -31,6 +31,13 @@ int nl_wk_sample_acf(const nl_model *m, nl_field *R);
  * conversion of the sampled autocorrelation. */
 int nl_wk_sample_spectrum(const nl_model *m, nl_field *S);
 
+/* The same on the half grid of a real-to-complex transform, in half the
+ * memory: *out receives a malloc'ed array of (n0/2 + 1) n1 n2 values, entry
+ * (k n1 + j) (n0/2 + 1) + i standing for the wrapped frequency (i, j, k);
+ * the rest of the grid follows from evenness, S(-f) = S(f).  n and h hold
+ * dim entries (h NULL: unit spacing). */
+int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, const double *h, double **out);
+
 /* Forward and inverse conversion of real, even (R_j = R_-j) fields; the
  * imaginary part, zero for even input up to rounding, is dropped. */
 int nl_wk_acf_to_spectrum(const nl_field *R, nl_field *S);

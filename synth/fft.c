@@ -18,7 +18,7 @@ struct synth_fft_plan {
     double h[3];        /* grid spacing */
     size_t count;       /* samples */
     size_t half;        /* r2c coefficients: count / n0 * (n0/2 + 1) */
-    double *amp;        /* sqrt(lambda_k) / count on the r2c half grid */
+    double *amp;        /* sqrt(lambda_k) / count on the r2c half grid (malloc'ed) */
     fftw_plan fwd, inv; /* r2c and c2r on fftw_malloc'ed arrays */
     synth_fft_info info;
 };
@@ -56,33 +56,45 @@ static int make_fftw_plans(synth_fft_plan *p)
     return st;
 }
 
-static int plan_from_S(const char *name, nl_field *S, unsigned flags, synth_fft_plan **out)
+/* Plan from the spectrum on the r2c half grid (core/wk.h), which the plan
+ * takes over as its amplitude array.  Statistics are over the full grid:
+ * columns 0 < i < n0/2 stand for i and n0 - i (evenness), so count twice. */
+static int plan_from_half(const char *name, int dim, const size_t *n, const double *h, double *S, unsigned flags,
+                          synth_fft_plan **out)
 {
     synth_fft_plan *p;
     double cell = 1, neg = 0, lmin = INFINITY, lmax = -INFINITY, sum = 0;
+    size_t h0, rows;
     int st = NL_OK;
     p = calloc(1, sizeof *p);
-    if (!p)
+    if (!p) {
+        free(S);
         return NL_ERROR(NL_ENOMEM, "out of memory");
-    p->dim = S->dim;
-    p->count = S->count;
+    }
+    p->dim = dim;
+    p->count = 1;
     for (int a = 0; a < 3; a++) {
-        p->n[a] = S->n[a];
-        p->h[a] = S->h[a];
-        cell *= S->h[a];
+        p->n[a] = a < dim ? n[a] : 1;
+        p->h[a] = a < dim && h ? h[a] : 1;
+        p->count *= p->n[a];
+        cell *= p->h[a];
     }
-    p->half = p->count / p->n[0] * (p->n[0] / 2 + 1);
-    for (size_t i = 0; i < p->count; i++) {
-        double l = S->data[i] / cell;
-        if (l < lmin) lmin = l;
-        if (l > lmax) lmax = l;
-        if (l < 0) {
-            neg -= l;
-            p->info.negatives++;
-        } else {
-            sum += l;
+    h0 = p->n[0] / 2 + 1;
+    rows = p->count / p->n[0];
+    p->half = rows * h0;
+    p->amp = S;
+    for (size_t r = 0; r < rows; r++)
+        for (size_t i = 0; i < h0; i++) {
+            double l = S[r * h0 + i] / cell, w = i == 0 || 2 * i == p->n[0] ? 1 : 2;
+            if (l < lmin) lmin = l;
+            if (l > lmax) lmax = l;
+            if (l < 0) {
+                neg -= w * l;
+                p->info.negatives += (size_t)w;
+            } else {
+                sum += w * l;
+            }
         }
-    }
     p->info.variance = sum / (double)p->count;
     p->info.min_lambda = lmin * cell;
     p->info.max_lambda = lmax * cell;
@@ -98,17 +110,10 @@ static int plan_from_S(const char *name, nl_field *S, unsigned flags, synth_fft_
                       SYNTH_FFT_CLAMP_TOL);
     }
     if (!st) {
-        p->amp = malloc(p->half * sizeof *p->amp);
-        if (!p->amp)
-            st = NL_ERROR(NL_ENOMEM, "out of memory");
-    }
-    if (!st) {
-        size_t h0 = p->n[0] / 2 + 1, rows = p->count / p->n[0];
-        for (size_t r = 0; r < rows; r++)
-            for (size_t i = 0; i < h0; i++) {
-                double l = S->data[r * p->n[0] + i] / cell;
-                p->amp[r * h0 + i] = l > 0 ? sqrt(l) / (double)p->count : 0.0;
-            }
+        for (size_t k = 0; k < p->half; k++) {
+            double l = S[k] / cell;
+            S[k] = l > 0 ? sqrt(l) / (double)p->count : 0.0;
+        }
         st = make_fftw_plans(p);
     }
     if (st) {
@@ -122,28 +127,30 @@ static int plan_from_S(const char *name, nl_field *S, unsigned flags, synth_fft_
 int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
                          synth_fft_plan **out)
 {
-    nl_field *S;
+    double *S;
     int st;
     *out = NULL;
-    /* the spectrum grid, a complex FFT buffer, the field and its transform */
-    if ((st = nl_size_check(dim, n, sizeof(double), 6, NULL)))
+    /* the half spectrum, the field, and a half complex buffer */
+    if ((st = nl_size_check(dim, n, sizeof(double), 3, NULL)))
         return st;
     for (int a = 0; a < dim; a++)
         if (n[a] > INT32_MAX)
             return NL_ERROR(NL_ETOOBIG, "size: %zu samples along an axis is beyond FFTW's int sizes", n[a]);
-    S = nl_field_alloc(dim, n, h, &st);
-    if (!S)
+    if ((st = nl_wk_sample_spectrum_half(m, dim, n, h, &S)))
         return st;
-    if (!(st = nl_wk_sample_spectrum(m, S)))
-        st = plan_from_S(nl_model_spec(m), S, flags, out);
-    nl_field_free(S);
-    return st;
+    return plan_from_half(nl_model_spec(m), dim, n, h, S, flags, out);
 }
 
 int synth_fft_plan_spectrum(const nl_field *S, unsigned flags, synth_fft_plan **out)
 {
+    size_t h0 = S->n[0] / 2 + 1, rows = S->count / S->n[0];
+    double *half = malloc(rows * h0 * sizeof *half);
     *out = NULL;
-    return plan_from_S("spectrum", (nl_field *)S, flags, out);
+    if (!half)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    for (size_t r = 0; r < rows; r++)
+        memcpy(half + r * h0, S->data + r * S->n[0], h0 * sizeof *half);
+    return plan_from_half("spectrum", S->dim, S->n, S->h, half, flags, out);
 }
 
 void synth_fft_plan_info(const synth_fft_plan *p, synth_fft_info *info) { *info = p->info; }
