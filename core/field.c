@@ -1,5 +1,6 @@
 /* Allocation of n-D fields with the size checks done before allocating. */
 #include "field.h"
+#include "mem.h"
 #include "nl_error.h"
 
 #include <stdio.h>
@@ -74,7 +75,7 @@ nl_field *nl_field_alloc(int dim, const size_t *n, const double *h, int *status)
         }
     nl_field *f = calloc(1, sizeof *f);
     if (f)
-        f->data = fftw_malloc(count * sizeof(double));
+        f->data = nl_alloc(count * sizeof(double));
     if (f && f->data)
         memset(f->data, 0, count * sizeof(double));
     if (!f || !f->data) {
@@ -98,6 +99,6 @@ void nl_field_free(nl_field *f)
 {
     if (!f)
         return;
-    fftw_free(f->data);
+    nl_free(f->data);
     free(f);
 }

@@ -1,6 +1,7 @@
 /* Sampling models on wrapped grids; Wiener-Khinchine by FFT. */
 #include "wk.h"
 #include "fftw_plan.h"
+#include "mem.h"
 #include "nl_error.h"
 
 #include <complex.h>
@@ -26,14 +27,14 @@ static int dft_real(const nl_field *x, nl_field *y, int sign, double scale)
     fftw_plan p;
     if (!same_grid(x, y))
         return NL_ERROR(NL_EINVAL, "Wiener-Khinchine: input and output grids differ");
-    buf = fftw_alloc_complex(x->count);
+    buf = nl_alloc(x->count * sizeof *buf);
     if (!buf)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu complex samples", x->count);
     for (int a = 0; a < x->dim; a++)
         dims[a] = (int)x->n[x->dim - 1 - a];
     p = fftw_plan_dft(x->dim, dims, buf, buf, sign, nl_fftw_flags(x->count));
     if (!p) {
-        fftw_free(buf);
+        nl_free(buf);
         return NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", x->dim);
     }
     for (size_t i = 0; i < x->count; i++)
@@ -42,7 +43,7 @@ static int dft_real(const nl_field *x, nl_field *y, int sign, double scale)
     for (size_t i = 0; i < x->count; i++)
         y->data[i] = scale * creal(buf[i]);
     fftw_destroy_plan(p);
-    fftw_free(buf);
+    nl_free(buf);
     return NL_OK;
 }
 
@@ -178,12 +179,12 @@ int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, cons
     h0 = g.n[0] / 2 + 1;
     rows = g.n[1] * g.n[2];
     half = rows * h0;
-    S = malloc(half * sizeof *S);
+    S = nl_alloc(half * sizeof *S);
     if (!S)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu spectrum samples", half);
     if (nl_model_is_spectral(m)) {
         if ((st = fill_rows(m, &g, h0, S, h0, 1))) {
-            free(S);
+            nl_free(S);
             return st;
         }
         *out = S;
@@ -191,11 +192,11 @@ int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, cons
     }
     /* In-place r2c: rows padded to 2 h0 doubles; planned before filling,
      * since a measured plan overwrites its arrays. */
-    buf = fftw_alloc_real(2 * half);
+    buf = nl_alloc(2 * half * sizeof *buf);
     p = buf ? fftw_plan_dft_r2c(dim, dims, buf, (fftw_complex *)buf, nl_fftw_flags(g.count)) : NULL;
     if (!p) {
-        fftw_free(buf);
-        free(S);
+        nl_free(buf);
+        nl_free(S);
         return buf ? NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", dim)
                    : NL_ERROR(NL_ENOMEM, "out of memory for %zu samples", 2 * half);
     }
@@ -206,9 +207,9 @@ int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, cons
             S[k] = cell * creal(c[k]);
         *out = S;
     } else {
-        free(S);
+        nl_free(S);
     }
     fftw_destroy_plan(p);
-    fftw_free(buf);
+    nl_free(buf);
     return st;
 }

@@ -33,7 +33,8 @@ int nl_wk_sample_spectrum(const nl_model *m, nl_field *S);
 
 /* The same on the half grid of a real-to-complex transform, in half the
  * memory: *out receives a malloc'ed array of (n0/2 + 1) n1 n2 values, entry
- * (k n1 + j) (n0/2 + 1) + i standing for the wrapped frequency (i, j, k);
+ * (k n1 + j) (n0/2 + 1) + i standing for the wrapped frequency (i, j, k)
+ * (free it with nl_free, core/mem.h);
  * the rest of the grid follows from evenness, S(-f) = S(f).  n and h hold
  * dim entries (h NULL: unit spacing). */
 int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, const double *h, double **out);

@@ -2,6 +2,7 @@
  * spectrum (Lewis 1987, "Fourier synthesis"; Wiener-Khinchine, eq. (2)). */
 #include "fft.h"
 #include "../core/fftw_plan.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../core/wk.h"
@@ -18,8 +19,8 @@ struct synth_fft_plan {
     double h[3];        /* grid spacing */
     size_t count;       /* samples */
     size_t half;        /* r2c coefficients: count / n0 * (n0/2 + 1) */
-    double *amp;        /* sqrt(lambda_k) / count on the r2c half grid (malloc'ed) */
-    fftw_plan fwd, inv; /* r2c and c2r on fftw_malloc'ed arrays */
+    double *amp;        /* sqrt(lambda_k) / count on the r2c half grid (nl_alloc) */
+    fftw_plan fwd, inv; /* r2c and c2r */
     synth_fft_info info;
 };
 
@@ -31,15 +32,15 @@ void synth_fft_plan_free(synth_fft_plan *p)
         fftw_destroy_plan(p->fwd);
     if (p->inv)
         fftw_destroy_plan(p->inv);
-    free(p->amp);
+    nl_free(p->amp);
     free(p);
 }
 
 static int make_fftw_plans(synth_fft_plan *p)
 {
     int dims[3];
-    double *x = fftw_alloc_real(p->count);
-    fftw_complex *c = fftw_alloc_complex(p->half);
+    double *x = nl_alloc(p->count * sizeof *x);
+    fftw_complex *c = nl_alloc(p->half * sizeof *c);
     int st = NL_OK;
     for (int a = 0; a < p->dim; a++)
         dims[a] = (int)p->n[p->dim - 1 - a];
@@ -51,8 +52,8 @@ static int make_fftw_plans(synth_fft_plan *p)
         if (!p->fwd || !p->inv)
             st = NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", p->dim);
     }
-    fftw_free(x);
-    fftw_free(c);
+    nl_free(x);
+    nl_free(c);
     return st;
 }
 
@@ -68,7 +69,7 @@ static int plan_from_half(const char *name, int dim, const size_t *n, const doub
     int st = NL_OK;
     p = calloc(1, sizeof *p);
     if (!p) {
-        free(S);
+        nl_free(S);
         return NL_ERROR(NL_ENOMEM, "out of memory");
     }
     p->dim = dim;
@@ -144,7 +145,7 @@ int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const doub
 int synth_fft_plan_spectrum(const nl_field *S, unsigned flags, synth_fft_plan **out)
 {
     size_t h0 = S->n[0] / 2 + 1, rows = S->count / S->n[0];
-    double *half = malloc(rows * h0 * sizeof *half);
+    double *half = nl_alloc(rows * h0 * sizeof *half);
     *out = NULL;
     if (!half)
         return NL_ERROR(NL_ENOMEM, "out of memory");
@@ -160,7 +161,7 @@ int synth_fft_execute(const synth_fft_plan *p, uint64_t seed, nl_field *out)
     fftw_complex *c;
     if (out->dim != p->dim || out->count != p->count || out->n[0] != p->n[0] || out->n[1] != p->n[1])
         return NL_ERROR(NL_EINVAL, "FFT synthesis: the output field does not match the plan's grid");
-    c = fftw_alloc_complex(p->half);
+    c = nl_alloc(p->half * sizeof *c);
     if (!c)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu complex samples", p->half);
 #pragma omp parallel for schedule(static) if (p->count > 65536)
@@ -171,6 +172,6 @@ int synth_fft_execute(const synth_fft_plan *p, uint64_t seed, nl_field *out)
     for (size_t k = 0; k < p->half; k++)
         c[k] *= p->amp[k];
     fftw_execute_dft_c2r(p->inv, c, out->data);
-    fftw_free(c);
+    nl_free(c);
     return NL_OK;
 }

@@ -3,6 +3,7 @@
  * unit length, lags in spacing units). */
 #include "../core/field.h"
 #include "../core/model.h"
+#include "../core/mem.h"
 #include "../core/wk.h"
 
 #include <criterion/criterion.h>
@@ -122,7 +123,7 @@ Test(wk, half_grid_matches_full)
             for (size_t i = 0; i < h0; i++)
                 cr_assert_float_eq(half[r * h0 + i], S->data[r * S->n[0] + i], 1e-12 * top, "%s at (%zu, %zu)",
                                    cases[c].spec, i, r);
-        free(half);
+        nl_free(half);
         nl_field_free(S), nl_model_free(m);
     }
 }
