@@ -5,6 +5,7 @@
 #include "../analysis/krige.h"
 #include "../analysis/psd.h"
 #include "../core/fftw_plan.h"
+#include "../core/mem.h"
 #include "../core/model.h"
 #include "../core/rng.h"
 #include "../synth/circulant.h"
@@ -62,26 +63,30 @@ static void row(const char *name, size_t samples, double t, const char *floor_na
 static double c2r_floor(size_t n0, size_t n1, int reps)
 {
     size_t half = n1 * (n0 / 2 + 1);
-    double *x = fftw_alloc_real(n0 * n1), t[16];
-    fftw_complex *c = fftw_alloc_complex(half);
+    double *x = nl_alloc(n0 * n1 * sizeof *x), t[16];
+    fftw_complex *c = nl_alloc(half * sizeof *c);
     fftw_plan b = fftw_plan_dft_c2r_2d((int)n1, (int)n0, c, x, nl_fftw_flags(n0 * n1));
     for (int r = 0; r < reps; r++) {
         double t0 = now();
 #pragma omp parallel for schedule(static)
         for (size_t i = 0; i < half; i++)
-            c[i] = nl_rng_gauss2(1, 0, i, 0) + I * nl_rng_gauss2(1, 0, i, 1);
+        {
+            double g[2];
+            nl_rng_gauss_pair(1, 0, i, g);
+            c[i] = g[0] + I * g[1];
+        }
         fftw_execute(b);
         t[r] = now() - t0;
     }
-    fftw_destroy_plan(b), fftw_free(x), fftw_free(c);
+    fftw_destroy_plan(b), nl_free(x), nl_free(c);
     return median(t, reps);
 }
 
 /* Bare r2c (+ c2r when both) of an n x n grid. */
 static double fft_floor(size_t n, int both, int reps)
 {
-    double *x = fftw_alloc_real(n * n), t[16];
-    fftw_complex *c = fftw_alloc_complex(n * (n / 2 + 1));
+    double *x = nl_alloc(n * n * sizeof *x), t[16];
+    fftw_complex *c = nl_alloc(n * (n / 2 + 1) * sizeof *c);
     fftw_plan f = fftw_plan_dft_r2c_2d((int)n, (int)n, x, c, nl_fftw_flags(n * n));
     fftw_plan b = fftw_plan_dft_c2r_2d((int)n, (int)n, c, x, nl_fftw_flags(n * n));
     for (size_t i = 0; i < n * n; i++)
@@ -93,22 +98,25 @@ static double fft_floor(size_t n, int both, int reps)
             fftw_execute(b);
         t[r] = now() - t0;
     }
-    fftw_destroy_plan(f), fftw_destroy_plan(b), fftw_free(x), fftw_free(c);
+    fftw_destroy_plan(f), fftw_destroy_plan(b), nl_free(x), nl_free(c);
     return median(t, reps);
 }
 
 /* One Gaussian number per sample, written once. */
 static double rng_floor(size_t count, int reps)
 {
-    double *x = malloc(count * sizeof *x), t[16];
+    double *x = nl_alloc(count * sizeof *x), t[16];
     for (int r = 0; r < reps; r++) {
         double t0 = now();
 #pragma omp parallel for schedule(static)
-        for (size_t i = 0; i < count; i++)
-            x[i] = nl_rng_gauss(1, 0, i);
+        for (size_t i = 0; i < count / 2; i++) {
+            double g[2];
+            nl_rng_gauss_pair(1, 0, i, g);
+            x[2 * i] = g[0], x[2 * i + 1] = g[1];
+        }
         t[r] = now() - t0;
     }
-    free(x);
+    nl_free(x);
     return median(t, reps);
 }
 

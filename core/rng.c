@@ -40,6 +40,17 @@ double nl_rng_gauss2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t su
     return sqrt(-2.0 * log(u1)) * cos(2.0 * M_PI * u2);
 }
 
+void nl_rng_gauss_pair(uint64_t seed, uint32_t stream, uint64_t index, double g[2])
+{
+    philox4x32_ctr_t r = block2(seed, stream, index, 0);
+    double u1 = u01fixedpt_open_open_64_double(join(r.v[0], r.v[1]));
+    double u2 = u01fixedpt_open_open_64_double(join(r.v[2], r.v[3]));
+    double rad = sqrt(-2.0 * log(u1)), s, c;
+    sincos(2.0 * M_PI * u2, &s, &c);
+    g[0] = rad * c;
+    g[1] = rad * s;
+}
+
 unsigned long nl_rng_poisson(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub, double mean)
 {
     double u = nl_rng_uniform2(seed, stream, index, sub);

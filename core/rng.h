@@ -8,9 +8,13 @@
  * branch).  No state is carried between calls, so any sample of any field
  * can be recomputed on its own, in any order and with any thread count.
  *
+ * nl_rng_gauss_pair returns both branches of one transform (cosine, sine):
+ * two independent normals for the price of one, the first equal to
+ * nl_rng_gauss of the same arguments.
+ *
  * Streams in use: NL_STREAM_WHITE is the white noise under FFT synthesis
- * (one number per grid sample, index = row-major sample index), so two
- * models synthesised with the same seed and size share it. */
+ * (samples 2k and 2k + 1 in row-major order are the pair of index k), so
+ * two models synthesised with the same seed and size share it. */
 #ifndef NL_RNG_H
 #define NL_RNG_H
 
@@ -28,6 +32,10 @@ double nl_rng_gauss(uint64_t seed, uint32_t stream, uint64_t index);
  * numbers indexed by two integers such as (cell, impulse). */
 double nl_rng_uniform2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub);
 double nl_rng_gauss2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub);
+
+/* Two independent N(0, 1): g[0] = nl_rng_gauss(seed, stream, index) and its
+ * sine branch g[1]. */
+void nl_rng_gauss_pair(uint64_t seed, uint32_t stream, uint64_t index, double g[2]);
 
 /* Poisson(mean) by inversion of its CDF (GSL) at nl_rng_uniform2(seed,
  * stream, index, sub); mean <= 1e8. */

@@ -165,8 +165,13 @@ int synth_fft_execute(const synth_fft_plan *p, uint64_t seed, nl_field *out)
     if (!c)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu complex samples", p->half);
 #pragma omp parallel for schedule(static) if (p->count > 65536)
-    for (size_t j = 0; j < p->count; j++)
-        out->data[j] = nl_rng_gauss(seed, NL_STREAM_WHITE, j);
+    for (size_t k = 0; k < (p->count + 1) / 2; k++) {
+        double g[2];
+        nl_rng_gauss_pair(seed, NL_STREAM_WHITE, k, g);
+        out->data[2 * k] = g[0];
+        if (2 * k + 1 < p->count)
+            out->data[2 * k + 1] = g[1];
+    }
     fftw_execute_dft_r2c(p->fwd, out->data, c);
 #pragma omp parallel for schedule(static) if (p->count > 65536)
     for (size_t k = 0; k < p->half; k++)

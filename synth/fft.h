@@ -4,8 +4,8 @@
  * and its covariance matrix, which is circulant, is diagonalised by the DFT:
  * eigenvalues lambda_k = S_k / (h_1 ... h_d).  A realization is
  *     x = (1/N) IDFT( sqrt(lambda) . DFT(w) ),
- * with w the white noise w_j = nl_rng_gauss(seed, NL_STREAM_WHITE, j) on the
- * N grid samples.  Its covariance is exactly the sampled, wrapped R: the field
+ * with w the white noise on the N grid samples in row-major order, w_2k and
+ * w_2k+1 the pair nl_rng_gauss_pair(seed, NL_STREAM_WHITE, k).  Its covariance is exactly the sampled, wrapped R: the field
  * is Gaussian, periodic, ensemble mean 0 and variance R(0) (for spectral
  * models, the Riemann sum of S over the grid frequencies).  The same seed and
  * size give the same w for every model (common random numbers).

@@ -43,6 +43,9 @@
  * solution's relative error bound eps * cond is then above 2e-6. */
 #define SUBDIV_COND_MAX 1e10
 
+/* Largest half-width N of a 2D neighbourhood (1D: 64). */
+#define SUBDIV_MAX_N 8
+
 /* diagonal-bias: a corner coefficient of the 2N x 2N block exceeds this
  * fraction of the largest coefficient. */
 #define SUBDIV_DIAG_BIAS_FRAC 0.01
@@ -128,8 +131,11 @@ int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const 
 /* Synthesis.  Random numbers: the displacement of the point with index
  * (i, j) on the grid of level k + 1 (and the seed values at level 0) is
  * nl_rng_gauss(seed, SUBDIV_STREAM + level, j * 2^32 + i) with the signed
- * indices taken modulo 2^32, so every number is a pure function of
- * (seed, level, integer position). */
+ * indices taken modulo 2^32, except on a 2D level with the standard
+ * neighbourhoods, where the draws come in pairs, nl_rng_gauss_pair(seed,
+ * SUBDIV_STREAM + level, j * 2^32 + k): on odd rows j points 2k and 2k + 1,
+ * on even rows (which draw at odd i only) points 4k + 1 and 4k + 3.  So
+ * every number is a pure function of (seed, level, integer position). */
 #define SUBDIV_STREAM 100u
 
 /* Periodic synthesis into f (dim 1 or 2, each n divisible by 2^levels and

@@ -238,7 +238,7 @@ int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0,
         return NL_ERROR(NL_EINVAL, "levels: expected 1 to 40, got %d", levels);
     if (!(spacing0 > 0) || !isfinite(spacing0))
         return NL_ERROR(NL_EINVAL, "spacing0: expected a positive number, got %g", spacing0);
-    if (N < 0 || N > (dim == 1 ? 64 : 8) || (N == 0 && (nmax < 1 || nmax > (dim == 1 ? 64 : 8))))
+    if (N < 0 || N > (dim == 1 ? 64 : SUBDIV_MAX_N) || (N == 0 && (nmax < 1 || nmax > (dim == 1 ? 64 : SUBDIV_MAX_N))))
         return NL_ERROR(NL_EINVAL, "neighborhood: expected a half-width from 1 to %d, got %d", dim == 1 ? 64 : 8,
                         N ? N : nmax);
     if (N == 0 && !(tol > 0))

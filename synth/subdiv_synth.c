@@ -3,9 +3,11 @@
  * window of an infinite, spatially consistent field. */
 #include "subdiv.h"
 #include "fft.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,11 +35,71 @@ static int grid_alloc(grid *g, long x0, long y0, long nx, long ny)
     if (st)
         return st;
     g->x0 = x0, g->y0 = y0, g->nx = nx, g->ny = ny;
-    g->v = malloc((size_t)nx * (size_t)ny * sizeof *g->v);
+    g->v = nl_alloc((size_t)nx * (size_t)ny * sizeof *g->v);
     return g->v ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory for a %ld x %ld level", nx, ny);
 }
 
 static inline double at(const grid *g, long i, long j) { return g->v[(j - g->y0) * g->nx + (i - g->x0)]; }
+
+/* One row J of a 2D level with the standard 2N x 2N neighbourhoods: the
+ * same arithmetic as the general loop in refine() (coefficients in the
+ * same order), with the class fixed by the parities of I and J and the
+ * source rows looked up once. */
+static void refine_row_2d(const subdiv_level *l, const grid *src, grid *dst, long J, uint64_t seed, unsigned lv)
+{
+    const int N = l->N, w = 2 * N;
+    const long j = fdiv2(J), oy = J - 2 * j;
+    const double *rows[2 * SUBDIV_MAX_N];
+    double *out = dst->v + (J - dst->y0) * dst->nx - dst->x0;
+    const subdiv_class *odd = &l->cls[oy ? 0 : 1], *even = &l->cls[2];
+    const double sd_odd = sqrt(odd->variance), sd_even = sqrt(even->variance);
+    for (int r = 0; r < w; r++)
+        rows[r] = src->v + (j + 1 - N + r - src->y0) * src->nx - src->x0 + 1 - N;
+    long cached = LONG_MIN;
+    double g[2] = {0, 0};
+    for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
+        long i = fdiv2(I);
+        const subdiv_class *cl;
+        double s = 0, z;
+        if (I == 2 * i) {
+            if (!oy) {
+                out[I] = rows[N - 1][i + N - 1];
+                continue;
+            }
+            cl = even;
+        } else {
+            cl = odd;
+        }
+        if (w == 4) {
+            /* the default N = 2, unrolled (same order of operations) */
+            const double *a = cl->a;
+            for (int r = 0; r < 4; r++, a += 4) {
+                const double *x = rows[r] + i;
+                s += a[0] * x[0];
+                s += a[1] * x[1];
+                s += a[2] * x[2];
+                s += a[3] * x[3];
+            }
+        } else {
+            for (int r = 0; r < w; r++) {
+                const double *a = cl->a + r * w, *x = rows[r] + i;
+                for (int q = 0; q < w; q++)
+                    s += a[q] * x[q];
+            }
+        }
+        {
+            /* odd rows draw at every I: samples 2i and 2i + 1 share a pair;
+             * even rows at odd I: samples 4k + 1 and 4k + 3 share one */
+            long key = oy ? i : fdiv2(i);
+            if (key != cached) {
+                nl_rng_gauss_pair(seed, SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
+                cached = key;
+            }
+            z = g[oy ? I - 2 * i : i - 2 * key];
+        }
+        out[I] = s + (cl == odd ? sd_odd : sd_even) * z;
+    }
+}
 
 /* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
  * the finer grid is old point I/2 when I is even, else the midpoint of old
@@ -45,9 +107,14 @@ static inline double at(const grid *g, long i, long j) { return g->v[(j - g->y0)
 static void refine(int dim, const subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv)
 {
     const int N = l->N, w = 2 * N;
+    const int standard = dim == 2 && !l->cls[0].nalt && !l->cls[1].nalt && !l->cls[2].nalt;
 #pragma omp parallel for schedule(static) if (dst->nx * dst->ny > 65536)
     for (long J = dst->y0; J < dst->y0 + dst->ny; J++) {
         double *row = dst->v + (J - dst->y0) * dst->nx;
+        if (standard) {
+            refine_row_2d(l, src, dst, J, seed, lv);
+            continue;
+        }
         for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
             long i = fdiv2(I), j = fdiv2(J);
             int ox = (int)(I - 2 * i), oy = dim == 2 ? (int)(J - 2 * j) : 0;
@@ -109,9 +176,16 @@ static int pad_periodic(int dim, const double *v, long nx, long ny, long pad, gr
     int st = grid_alloc(g, -pad, -py, nx + 2 * pad, ny + 2 * py);
     if (st)
         return st;
-    for (long j = -py; j < ny + py; j++)
-        for (long i = -pad; i < nx + pad; i++)
-            g->v[(j + py) * g->nx + (i + pad)] = v[(((j % ny) + ny) % ny) * nx + ((i % nx) + nx) % nx];
+#pragma omp parallel for schedule(static) if (nx * ny > 65536)
+    for (long j = -py; j < ny + py; j++) {
+        const double *s = v + ((j % ny) + ny) % ny * nx;
+        double *d = g->v + (j + py) * g->nx + pad;
+        memcpy(d, s, (size_t)nx * sizeof *d);
+        for (long i = 1; i <= pad; i++) {
+            d[-i] = s[((-i % nx) + nx) % nx];
+            d[nx - 1 + i] = s[(nx - 1 + i) % nx];
+        }
+    }
     return NL_OK;
 }
 
@@ -139,31 +213,33 @@ int subdiv_refine_periodic(const subdiv_coeffs *c, const nl_field *coarse, uint6
     }
     if ((st = check_levels(c, allow_not_pd)))
         return st;
-    cur = malloc(coarse->count * sizeof *cur);
-    if (!cur)
-        return NL_ERROR(NL_ENOMEM, "out of memory");
-    memcpy(cur, coarse->data, coarse->count * sizeof *cur);
+    /* cur: the current level (the coarse field, then each refined level;
+     * the last one is refined straight into f) */
+    cur = coarse->data;
     for (int k = 0; k < c->levels && !st; k++) {
-        grid src, dst;
+        grid src, dst = {f->data, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1};
         if ((st = pad_periodic(dim, cur, cx, cy, c->level[k].reach, &src)))
             break;
-        st = grid_alloc(&dst, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1);
+        if (k + 1 < c->levels)
+            st = grid_alloc(&dst, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1);
         if (!st) {
             refine(dim, &c->level[k], &src, &dst, seed, (unsigned)k);
-            free(cur);
+            if (cur != coarse->data)
+                nl_free(cur);
             cur = dst.v;
             cx *= 2;
             if (dim == 2)
                 cy *= 2;
         }
-        free(src.v);
+        nl_free(src.v);
     }
-    if (!st) {
-        memcpy(f->data, cur, f->count * sizeof *cur);
+    if (!st && c->levels == 0)
+        memcpy(f->data, coarse->data, f->count * sizeof *cur);
+    if (!st)
         for (int a = 0; a < dim; a++)
             f->h[a] = ldexp(c->spacing0, -c->levels);
-    }
-    free(cur);
+    if (cur != coarse->data && cur != f->data)
+        nl_free(cur);
     return st;
 }
 
@@ -243,7 +319,7 @@ int subdiv_synth_window(const subdiv_coeffs *c, uint64_t seed, const long *origi
                         ry[k + 1][1] - ry[k + 1][0] + 1);
         if (!st) {
             refine(dim, &c->level[k], &g, &dst, seed, (unsigned)k);
-            free(g.v);
+            nl_free(g.v);
             g = dst;
         }
     }
@@ -252,7 +328,7 @@ int subdiv_synth_window(const subdiv_coeffs *c, uint64_t seed, const long *origi
         for (int a = 0; a < dim; a++)
             f->h[a] = ldexp(c->spacing0, -L);
     }
-    free(g.v);
+    nl_free(g.v);
     free(rx);
     free(ry);
     return st;

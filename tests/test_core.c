@@ -93,3 +93,29 @@ Test(rng, gaussian_moments_and_independence)
     cr_expect_gt(umin, 0.0);
     cr_expect_lt(umax, 1.0);
 }
+
+/* The pair's first half is nl_rng_gauss of the same arguments, exactly; its
+ * second (sine) half is N(0, 1) and independent of the first.  n = 10^6
+ * pairs: mean and cross product (E = 0) have sd 1/sqrt(n) = 1e-3, the
+ * variance sd sqrt(2/n) = 1.41e-3, E[g0^2 g1^2] = 1 with sd
+ * sqrt((E g^4)^2 - 1)/sqrt(n) = sqrt(8/n) = 2.83e-3 (zero for independent
+ * halves, not for merely uncorrelated ones).  Five sd on each. */
+Test(rng, gaussian_pair_halves_are_independent_normals)
+{
+    const size_t n = 1000000;
+    double s1 = 0, s2 = 0, cross = 0, sq = 0;
+    for (size_t i = 0; i < n; i++) {
+        double g[2];
+        nl_rng_gauss_pair(99, 4, i, g);
+        if (i % 1000 == 0)
+            cr_assert_eq(g[0], nl_rng_gauss(99, 4, i), "i=%zu", i);
+        s1 += g[1];
+        s2 += g[1] * g[1];
+        cross += g[0] * g[1];
+        sq += g[0] * g[0] * g[1] * g[1];
+    }
+    cr_expect_leq(fabs(s1 / n), 5e-3);
+    cr_expect_leq(fabs(s2 / n - 1), 5 * 1.414e-3);
+    cr_expect_leq(fabs(cross / n), 5e-3);
+    cr_expect_leq(fabs(sq / n - 1), 5 * 2.83e-3);
+}
