@@ -86,18 +86,32 @@ static double value_at(const nl_model *m, const nl_field *f, const size_t *idx, 
     return sum / combos;
 }
 
+/* The row holding the negated (j, k) of row r. */
+static size_t mirror_row(const nl_field *g, size_t r)
+{
+    size_t j = r % g->n[1], k = r / g->n[1];
+    return (g->n[2] - k) % g->n[2] * g->n[1] + (g->n[1] - j) % g->n[1];
+}
+
 /* Model values at the wrapped lags or frequencies (i < ni, all j, k) of the
  * grid g, into rows of `stride` doubles.  Reentrant models are sampled on
- * all threads. */
+ * all threads, and, when whole rows are asked for, only on half of them:
+ * R(-x) = R(x) and S(-f) = S(f) hold exactly in floating point for them
+ * (negation is exact, and cos, |.| and the rotation commute with it), so
+ * the other half is copied reversed.  Expressions are evaluated everywhere:
+ * an odd expression must show up as such. */
 static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *dst, size_t stride, int freq)
 {
-    size_t rows = g->n[1] * g->n[2], bad = rows;
-    int st = nl_model_check_dim(m, g->dim);
+    size_t rows = g->n[1] * g->n[2], bad = rows, n0 = g->n[0];
+    int st = nl_model_check_dim(m, g->dim), reentrant = nl_model_is_reentrant(m);
+    int sym = reentrant && ni == n0 && rows > 1;
     if (st)
         return st;
-#pragma omp parallel for schedule(dynamic, 16) if (nl_model_is_reentrant(m) && rows * ni > 65536)
+#pragma omp parallel for schedule(dynamic, 16) if (reentrant && rows * ni > 65536)
     for (size_t r = 0; r < rows; r++) {
         size_t idx[3] = {0, r % g->n[1], r / g->n[1]};
+        if (sym && mirror_row(g, r) < r)
+            continue;
         for (size_t i = 0; i < ni; i++) {
             double y;
             idx[0] = i;
@@ -119,6 +133,17 @@ static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *ds
             if (!isfinite(y = value_at(m, g, idx, freq)))
                 return NL_ERROR(NL_EINVAL, "%s: the model is not finite (%g) at %s index (%zu, %zu, %zu)",
                                 nl_model_spec(m), y, freq ? "frequency" : "lag", i, idx[1], idx[2]);
+        }
+    }
+#pragma omp parallel for schedule(static) if (sym && rows * ni > 65536)
+    for (size_t r = 0; r < rows; r++) {
+        size_t mr = sym ? mirror_row(g, r) : r;
+        if (mr < r) {
+            const double *from = dst + mr * stride;
+            double *to = dst + r * stride;
+            to[0] = from[0];
+            for (size_t i = 1; i < n0; i++)
+                to[i] = from[n0 - i];
         }
     }
     return NL_OK;
