@@ -1,6 +1,7 @@
 /* Energy folded by decimation without low-pass filtering. */
 #include "aliasing.h"
 #include "../core/fftw_plan.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 
@@ -25,11 +26,11 @@ int an_aliasing_measure(const nl_field *f, double *A)
     lp = nl_field_alloc(f->dim, f->n, f->h, &st);
     if (!lp)
         return st;
-    c = fftw_alloc_complex(ny * h0);
+    c = nl_alloc(ny * h0 * sizeof(fftw_complex));
     fwd = c ? fftw_plan_dft_r2c(f->dim, f->dim == 2 ? dims : dims + 1, lp->data, c, nl_fftw_flags(f->count)) : NULL;
     inv = c ? fftw_plan_dft_c2r(f->dim, f->dim == 2 ? dims : dims + 1, c, lp->data, nl_fftw_flags(f->count)) : NULL;
     if (!fwd || !inv) {
-        fftw_destroy_plan(fwd), fftw_destroy_plan(inv), fftw_free(c), nl_field_free(lp);
+        fftw_destroy_plan(fwd), fftw_destroy_plan(inv), nl_free(c), nl_field_free(lp);
         return NL_ERROR(NL_ENOMEM, "aliasing: cannot plan the FFT");
     }
     for (size_t i = 0; i < f->count; i++)
@@ -46,7 +47,7 @@ int an_aliasing_measure(const nl_field *f, double *A)
             num += e * e;
             den += (x - mean) * (x - mean);
         }
-    fftw_destroy_plan(fwd), fftw_destroy_plan(inv), fftw_free(c), nl_field_free(lp);
+    fftw_destroy_plan(fwd), fftw_destroy_plan(inv), nl_free(c), nl_field_free(lp);
     *A = den > 0 ? num / den : 0;
     return NL_OK;
 }

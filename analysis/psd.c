@@ -2,6 +2,7 @@
 #include "psd.h"
 #include "../core/fftw_plan.h"
 #include "../core/autocorr.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 
 #include <complex.h>
@@ -20,12 +21,12 @@ int an_psd_periodogram(const nl_field *x, double mean, nl_field **out)
     *out = NULL;
     if (!P)
         return st;
-    c = fftw_alloc_complex(rows * h0);
+    c = nl_alloc(rows * h0 * sizeof(fftw_complex));
     for (int a = 0; a < x->dim; a++)
         dims[a] = (int)x->n[x->dim - 1 - a];
     p = c ? fftw_plan_dft_r2c(x->dim, dims, P->data, c, nl_fftw_flags(x->count)) : NULL;
     if (!p) {
-        fftw_free(c);
+        nl_free(c);
         nl_field_free(P);
         return NL_ERROR(NL_ENOMEM, "cannot plan the periodogram FFT");
     }
@@ -44,7 +45,7 @@ int an_psd_periodogram(const nl_field *x, double mean, nl_field **out)
         }
     }
     fftw_destroy_plan(p);
-    fftw_free(c);
+    nl_free(c);
     *out = P;
     return NL_OK;
 }

@@ -2,6 +2,7 @@
 #include "welch.h"
 #include "../core/fftw_plan.h"
 #include "../core/autocorr.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 
 #include <complex.h>
@@ -20,10 +21,10 @@ int an_psd_welch(const nl_field *x, size_t S, double mean, nl_field **out, size_
     if (S < 4 || S > x->n[0] || (dim == 2 && S > ny))
         return NL_ERROR(NL_EINVAL, "welch: expected a segment of 4 samples up to the field's size, got %zu", S);
     nl_field *P = nl_field_alloc(dim, n2, x->h, &st), *seg = nl_field_alloc(dim, n2, x->h, &st);
-    fftw_complex *c = fftw_alloc_complex(rows * H);
+    fftw_complex *c = nl_alloc(rows * H * sizeof(fftw_complex));
     w = malloc(S * sizeof *w);
     if (!P || !seg || !c || !w) {
-        nl_field_free(P), nl_field_free(seg), fftw_free(c), free(w);
+        nl_field_free(P), nl_field_free(seg), nl_free(c), free(w);
         return NL_ERROR(NL_ENOMEM, "out of memory");
     }
     for (size_t i = 0; i < S; i++)
@@ -58,7 +59,7 @@ int an_psd_welch(const nl_field *x, size_t S, double mean, nl_field **out, size_
     double norm = cell / (pow((double)S, dim) * U * (double)cnt);
     for (size_t i = 0; i < P->count; i++)
         P->data[i] *= norm;
-    fftw_destroy_plan(p), fftw_free(c), free(w), nl_field_free(seg);
+    fftw_destroy_plan(p), nl_free(c), free(w), nl_field_free(seg);
     *out = P;
     if (segments)
         *segments = cnt;

@@ -1,6 +1,7 @@
 /* FFT-based lag-product sums (Wiener-Khinchine on a zero-padded grid). */
 #include "autocorr.h"
 #include "fftw_plan.h"
+#include "mem.h"
 #include "nl_error.h"
 
 #include <complex.h>
@@ -32,7 +33,7 @@ int nl_autocorr_sums(const nl_field *x, double mean, nl_field **out)
     if (!c)
         return st;
     half = c->count / m[0] * (m[0] / 2 + 1);
-    spec = fftw_alloc_complex(half);
+    spec = nl_alloc(half * sizeof(fftw_complex));
     if (!spec) {
         nl_field_free(c);
         return NL_ERROR(NL_ENOMEM, "out of memory for the autocorrelation");
@@ -44,7 +45,7 @@ int nl_autocorr_sums(const nl_field *x, double mean, nl_field **out)
     if (!fwd || !inv) {
         fftw_destroy_plan(fwd);
         fftw_destroy_plan(inv);
-        fftw_free(spec);
+        nl_free(spec);
         nl_field_free(c);
         return NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", x->dim);
     }
@@ -61,7 +62,7 @@ int nl_autocorr_sums(const nl_field *x, double mean, nl_field **out)
         c->data[i] /= (double)c->count;
     fftw_destroy_plan(fwd);
     fftw_destroy_plan(inv);
-    fftw_free(spec);
+    nl_free(spec);
     *out = c;
     return NL_OK;
 }

@@ -1,6 +1,7 @@
 /* Tessendorf's ocean on rank-1 lattices and regular grids. */
 #include "ocean.h"
 #include "../core/fftw_plan.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
@@ -50,10 +51,10 @@ int ocean_lattice_coefficients(const rank1_lattice *L, const ocean_params *o, ui
 int ocean_grid(size_t M, const ocean_params *o, uint64_t seed, double t, double *h, double *gx, double *gy)
 {
     size_t N = M * M;
-    fftw_complex *b = fftw_alloc_complex(N), *hk = fftw_alloc_complex(N);
+    fftw_complex *b = nl_alloc(N * sizeof *b), *hk = nl_alloc(N * sizeof *hk);
     fftw_plan p = b ? fftw_plan_dft_2d((int)M, (int)M, b, b, FFTW_BACKWARD, nl_fftw_flags(N)) : NULL;
     if (!p || !hk) {
-        fftw_free(b), fftw_free(hk);
+        nl_free(b), nl_free(hk);
         return NL_ERROR(NL_ENOMEM, "cannot plan a %zu x %zu FFT", M, M);
     }
     for (size_t j = 0; j < M; j++)
@@ -82,6 +83,6 @@ int ocean_grid(size_t M, const ocean_params *o, uint64_t seed, double t, double 
         for (size_t n = 0; n < N; n++)
             out[n] = creal(b[n]);
     }
-    fftw_destroy_plan(p), fftw_free(b), fftw_free(hk);
+    fftw_destroy_plan(p), nl_free(b), nl_free(hk);
     return NL_OK;
 }

@@ -1,6 +1,7 @@
 /* Rank-1 lattices: generators, wave vectors, one-FFT synthesis, Delaunay. */
 #include "rank1.h"
 #include "../core/fftw_plan.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
@@ -190,11 +191,11 @@ int rank1_coefficients(const rank1_lattice *L, rank1_spectrum S, void *ctx, uint
 int rank1_synthesize(const rank1_lattice *L, const double *c, double extent, double *f, double *grad, double *imag)
 {
     size_t N = L->N;
-    fftw_complex *b = fftw_alloc_complex(N);
+    fftw_complex *b = nl_alloc(N * sizeof(fftw_complex));
     fftw_plan p = b ? fftw_plan_dft_1d((int)N, b, b, FFTW_BACKWARD, nl_fftw_flags(N)) : NULL;
     double im = 0;
     if (!p) {
-        fftw_free(b);
+        nl_free(b);
         return NL_ERROR(NL_ENOMEM, "cannot plan an FFT of %zu points", N);
     }
     for (int comp = -1; comp < (grad ? L->s : 0); comp++) {
@@ -217,7 +218,7 @@ int rank1_synthesize(const rank1_lattice *L, const double *c, double extent, dou
     if (imag)
         *imag = im;
     fftw_destroy_plan(p);
-    fftw_free(b);
+    nl_free(b);
     return NL_OK;
 }
 

@@ -1,6 +1,7 @@
 /* Sparse convolution on the lattice: kernels and gather evaluation. */
 #include "sparse.h"
 #include "../core/fftw_plan.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../core/wk.h"
@@ -115,12 +116,12 @@ int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int rad
         nl_field_free(S);
         return st;
     }
-    g = fftw_alloc_complex(M);
+    g = nl_alloc(M * sizeof(fftw_complex));
     for (int a = 0; a < dim; a++)
         dims[a] = (int)mm[dim - 1 - a];
     fp = g ? fftw_plan_dft(dim, dims, g, g, FFTW_BACKWARD, nl_fftw_flags(M)) : NULL;
     if (!fp) {
-        fftw_free(g), nl_field_free(S);
+        nl_free(g), nl_field_free(S);
         return NL_ERROR(NL_ENOMEM, "sparse: cannot plan the kernel FFT");
     }
     for (size_t i = 0; i < M; i++)
@@ -147,7 +148,7 @@ int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int rad
         }
     }
     if ((st = new_plan(dim, R, cell, density, out))) {
-        fftw_free(g);
+        nl_free(g);
         return st;
     }
     for (long j = dim == 2 ? -R : 0; j <= (dim == 2 ? R : 0); j++)
@@ -156,7 +157,7 @@ int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int rad
             (*out)->h[(size_t)(dim == 2 ? (j + R) * (2 * R + 1) : 0) + (size_t)(i + R)] = v;
             kept += v * v;
         }
-    fftw_free(g);
+    nl_free(g);
     (*out)->info.truncated = total > 0 ? 1 - kept / total : 0;
     /* h * h = R within the box: the variance R(0) less the truncated energy */
     st = finish(*out, nl_model_acf(m, dim, zero) * (1 - (*out)->info.truncated));
