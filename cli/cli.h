@@ -33,6 +33,14 @@ int cmd_bench(int argc, char **argv);
  * input, 1: failure while running).  Pending outputs are removed. */
 void cli_die(int code, const char *fmt, ...) __attribute__((noreturn, format(printf, 2, 3)));
 
+/* When set, cli_die calls it (after printing and removing pending outputs)
+ * instead of exit(); it must not return.  The command-line fuzz target sets
+ * it to longjmp back to its loop. */
+extern void (*cli_exit_hook)(int code);
+
+/* Run the command line argv[0] COMMAND ... (what main does). */
+int cli_main(int argc, char **argv);
+
 /* Exit with the library's last message for status `st` (exit 2 or 1). */
 void cli_die_status(int st) __attribute__((noreturn));
 

@@ -43,8 +43,9 @@ static void usage(FILE *fp)
     fprintf(fp, "\n`noiselab COMMAND --help` describes each; `noiselab --version` prints the version.\n");
 }
 
-int main(int argc, char **argv)
+int cli_main(int argc, char **argv)
 {
+    static int saving;
     gsl_set_error_handler_off();
     if (argc < 2) {
         usage(stderr);
@@ -60,7 +61,8 @@ int main(int argc, char **argv)
     }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0) {
-            atexit(nl_fftw_save); /* commands may exit() from deep inside */
+            if (!saving++)
+                atexit(nl_fftw_save); /* commands may exit() from deep inside */
             return commands[i].run(argc - 1, argv + 1);
         }
     cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, cloud, lattice, ocean, card, render, detect, bench; see noiselab --help)",

@@ -20,6 +20,8 @@ static struct {
 } outs[MAX_OUT];
 static int nouts;
 
+void (*cli_exit_hook)(int code);
+
 static void remove_pending(void)
 {
     for (int i = 0; i < nouts; i++)
@@ -37,6 +39,8 @@ void cli_die(int code, const char *fmt, ...)
     va_end(ap);
     fputc('\n', stderr);
     remove_pending();
+    if (cli_exit_hook)
+        cli_exit_hook(code);
     exit(code);
 }
 
