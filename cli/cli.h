@@ -62,6 +62,10 @@ int cli_has_ext(const char *path, const char *ext);
 /* "noiselab WHAT: NN%" on stderr when it is a terminal and the work has run
  * for over a second since the first call; cli_progress_done clears it. */
 void cli_progress(const char *what, double frac);
+/* Long work of unknown length: "noiselab WHAT: PHASE (N s)", refreshed
+ * from a helper thread, on a terminal only and after a second; a new call
+ * replaces the phase.  cli_progress_done ends it. */
+void cli_phase(const char *what, const char *phase);
 void cli_progress_done(void);
 
 /* Outputs appear whole or not at all: cli_out_begin checks that a temporary

@@ -147,7 +147,9 @@ int cmd_ocean(int argc, char **argv)
         if ((st = rank1_fibonacci(idx, &L)))
             cli_die_status(st);
     }
+    cli_progress("ocean", 0);
     for (int fr = 0; fr < frames; fr++) {
+        cli_progress("ocean", (double)fr / frames);
         double t = t0 + fr * dt, *img = malloc(W * W * sizeof *img), *gx = malloc(W * W * sizeof *gx),
                *gy = malloc(W * W * sizeof *gy);
         if (!img || !gx || !gy)
@@ -261,5 +263,6 @@ int cmd_ocean(int argc, char **argv)
         free(img), free(gx), free(gy);
     }
     rank1_free(&L);
+    cli_progress_done();
     return 0;
 }

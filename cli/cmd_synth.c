@@ -401,6 +401,7 @@ int cmd_synth(int argc, char **argv)
     f = nl_field_alloc(job.dim, job.n, job.h, &st);
     if (!f)
         cli_die_status(st);
+    cli_phase("synth", job.method);
     run(&job, f, &res);
 
     memset(&meta, 0, sizeof meta);
@@ -413,6 +414,7 @@ int cmd_synth(int argc, char **argv)
         k += snprintf(meta.spacing + k, sizeof meta.spacing - (size_t)k, "%s%.17g", a ? "," : "", f->h[a]);
         l += snprintf(meta.size + l, sizeof meta.size - (size_t)l, "%s%zu", a ? "x" : "", job.n[a]);
     }
+    cli_phase("synth", "writing");
     if (cli_has_ext(out, ".exr")) {
         if ((st = nl_exr_write(tmp, f, &meta)))
             cli_die_status(st);
@@ -421,6 +423,7 @@ int cmd_synth(int argc, char **argv)
     }
     if (preview && (st = nl_png_write_field(ptmp, f, res.offset - 3 * res.sd, res.offset + 3 * res.sd)))
         cli_die_status(st);
+    cli_progress_done();
     cli_out_commit(out);
     if (preview)
         cli_out_commit(preview);
