@@ -10,7 +10,7 @@ CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
 LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lgslcblas -lpng -ljansson -lmatheval -lm
 BUILD     := build
 
-LIB_SRC   := $(wildcard core/*.c synth/*.c analysis/*.c)
+LIB_SRC   := $(wildcard core/*.c synth/*.c analysis/*.c render/*.c)
 CLI_SRC   := $(wildcard cli/*.c)
 TEST_SRC  := $(wildcard tests/*.c)
 EXP_SRC   := $(wildcard experiments/*.c)

@@ -141,6 +141,14 @@ Test(cli, estimator_error_paths)
     fputs("t\tvalue\n0\t1\n1\tabc\n", fp);
     fclose(fp);
     bad("hist /tmp/noiselab-bad.tsv", "\"abc\"");
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 32x32 -o f2.exr", 0, 0, err, sizeof err), 0, "%s", err);
+    bad("render f2.exr --tile -o out.png", "--perspective");
+    bad("render f2.exr --perspective --camera 1,2 -o out.png", "\"1,2\"");
+    bad("render f2.exr --perspective --look 90,45 -o out.png", "pitch");
+    bad("render f2.exr --perspective --size 0x10 -o out.png", "\"0x10\"");
+    bad("render f2.exr --perspective --sun 10 -o out.png", "\"10\"");
+    bad("render f2.exr --perspective --matrix out.txt -o out.png", "--matrix");
+    bad("render f.tsv --perspective -o out.png", "2D");
 }
 
 /* Text output to stdout keeps everything printed before the table. */

@@ -1,0 +1,49 @@
+/* Perspective views of height fields: a small landscape renderer in the
+ * manner of the pictures in Lewis (1987) and Lewis (1986): a terrain lit
+ * by the sun with cast shadows, coloured by height and slope, seen from a
+ * camera above it, fading into distance haze under a sky gradient, with
+ * optional water below a level.
+ *
+ * Method: one ray per image column marched over the ground plane in steps
+ * that grow with distance (front to back, keeping the highest row drawn so
+ * far, so hidden terrain costs nothing); heights are bilinear between
+ * samples; 2 x 2 supersampling.  Pitch shifts the rows (the horizon
+ * moves by focal tan(pitch)) rather than rotating the camera: exact at
+ * pitch 0, close up to the 30 degrees allowed.  Shadows: a sample is in shadow when the
+ * terrain rises above the ray toward the sun within 256 samples.
+ *
+ * Units: positions and distances in samples of the field; heights are the
+ * field's values times zscale (samples per field unit). */
+#ifndef NL_RENDER_TERRAIN_H
+#define NL_RENDER_TERRAIN_H
+
+#include "../core/field.h"
+
+#include <stdint.h>
+
+typedef struct {
+    size_t width, height;  /* picture size in pixels */
+    double zscale;         /* heights in samples per unit of the field */
+    double cam[3];         /* camera x, y (samples) and height above the terrain under it
+                              (above the mean height when outside an untiled field) */
+    double azimuth;        /* viewing direction, degrees from +x toward +y */
+    double pitch;          /* degrees below the horizon, at most 30 either way */
+    double fov;            /* horizontal field of view, degrees */
+    double sun[2];         /* sun azimuth and elevation, degrees */
+    double haze;           /* distance (samples) at which haze covers 63% */
+    double water;          /* water level in field units; NAN: no water */
+    int tile;              /* repeat the field periodically beyond its edges */
+    int palette;           /* TERRAIN_LAND or TERRAIN_SEA */
+} terrain_view;
+
+enum { TERRAIN_LAND = 0, TERRAIN_SEA = 1 };
+
+/* Default view of field f: camera behind the middle of the lower (y = 0)
+ * edge, 0.15 n above the terrain there, looking along +y, 10 degrees down. */
+void terrain_view_default(const nl_field *f, terrain_view *v);
+
+/* Render f (2D) into rgb (width * height * 3 bytes, rows top to bottom).
+ * NL_EINVAL for a field that is not 2D or a view with bad numbers. */
+int terrain_render(const nl_field *f, const terrain_view *v, uint8_t *rgb);
+
+#endif

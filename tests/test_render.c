@@ -1,0 +1,122 @@
+/* The perspective renderer: projection, occlusion, shadows and refusals,
+ * checked on fields whose pictures are known. */
+#include "../core/field.h"
+#include "../render/terrain.h"
+
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdlib.h>
+
+static nl_field *flat(size_t n)
+{
+    size_t nn[2] = {n, n};
+    nl_field *f = nl_field_alloc(2, nn, NULL, NULL);
+    cr_assert_not_null(f);
+    return f;
+}
+
+static const uint8_t *px(const uint8_t *rgb, const terrain_view *v, size_t x, size_t y)
+{
+    return rgb + 3 * (y * v->width + x);
+}
+
+/* A flat plain seen level (pitch 0): the horizon is the middle row.  Rows
+ * clearly above it are sky (blue over red), rows clearly below are ground
+ * (green over blue); a ray at depression angle a meets the plain at
+ * distance H / tan(a), so every ground row is inside a 4096-sample tiled
+ * plain long before the haze limit. */
+Test(render, flat_plain_horizon_in_the_middle)
+{
+    nl_field *f = flat(64);
+    terrain_view v;
+    terrain_view_default(f, &v);
+    v.width = 64, v.height = 48, v.pitch = 0, v.cam[2] = 10, v.tile = 1, v.zscale = 1, v.haze = 1e6;
+    uint8_t *rgb = malloc(v.width * v.height * 3);
+    cr_assert_eq(terrain_render(f, &v, rgb), 0);
+    for (size_t x = 0; x < v.width; x += 7) {
+        for (size_t y = 0; y < 20; y++)
+            cr_expect_gt(px(rgb, &v, x, y)[2], px(rgb, &v, x, y)[0], "sky at (%zu, %zu)", x, y);
+        for (size_t y = 28; y < v.height; y++)
+            cr_expect_gt(px(rgb, &v, x, y)[1], px(rgb, &v, x, y)[2], "ground at (%zu, %zu)", x, y);
+    }
+    free(rgb), nl_field_free(f);
+}
+
+/* A wall across the field hides what lies behind it: with the wall, the
+ * rows just above the plain's horizon show the wall (ground, not sky). */
+Test(render, a_wall_occludes_the_sky_behind_it)
+{
+    nl_field *f = flat(64);
+    terrain_view v;
+    for (size_t i = 0; i < 64; i++)
+        for (size_t j = 30; j < 34; j++)
+            f->data[j * 64 + i] = 1;
+    terrain_view_default(f, &v);
+    v.width = 64, v.height = 48, v.pitch = 0, v.cam[0] = 32, v.cam[1] = 0, v.cam[2] = 5, v.zscale = 12, v.haze = 1e6;
+    uint8_t *rgb = malloc(v.width * v.height * 3);
+    cr_assert_eq(terrain_render(f, &v, rgb), 0);
+    /* the wall top is 7 samples above the camera at distance 30..34: 12-13
+     * degrees up, 0.21 focal = 12 pixels above the middle row (focal = 55
+     * pixels on a 64-pixel-wide, 60-degree view); row 16 (8 pixels above)
+     * is wall, row 2 (22 pixels above, 22 degrees) is sky */
+    cr_expect_gt(px(rgb, &v, 32, 16)[1], px(rgb, &v, 32, 16)[2], "wall at the middle column");
+    cr_expect_gt(px(rgb, &v, 32, 2)[2], px(rgb, &v, 32, 2)[0], "sky above the wall");
+    free(rgb), nl_field_free(f);
+}
+
+/* A ridge casts a shadow toward the side away from the sun: a ridge 30
+ * samples high at x = 40..43, sun 20 degrees high, shades the plain for
+ * 30 / tan(20) = 82 samples on its far side.  The camera, 10 samples above
+ * x = 20 behind the field, looking along +y and 10 degrees down, sees the
+ * plain x = 0..20 in the lower left quarter of the picture and the ridge on
+ * the right.  With the sun in +x the plain there is in shadow; with the sun
+ * in -x it is not (same terrain, same palette, same Lambert term on flat
+ * ground): the shadowed sum has only the ambient 0.32 of 0.32 + 0.78 sin 20
+ * = 0.59, a ratio of 0.54, so below 0.8 of the lit one. */
+Test(render, ridges_cast_shadows_away_from_the_sun)
+{
+    nl_field *f = flat(64);
+    terrain_view v;
+    uint8_t *lit, *shaded;
+    double a = 0, b = 0;
+    for (size_t j = 0; j < 64; j++)
+        for (size_t i = 40; i < 44; i++)
+            f->data[j * 64 + i] = 30;
+    terrain_view_default(f, &v);
+    v.width = 64, v.height = 48, v.pitch = 10, v.cam[0] = 20, v.cam[1] = -5, v.cam[2] = 10, v.zscale = 1;
+    v.sun[1] = 20, v.haze = 1e6, v.azimuth = 90, v.fov = 40;
+    lit = malloc(v.width * v.height * 3), shaded = malloc(v.width * v.height * 3);
+    v.sun[0] = 180;
+    cr_assert_eq(terrain_render(f, &v, lit), 0);
+    v.sun[0] = 0;
+    cr_assert_eq(terrain_render(f, &v, shaded), 0);
+    for (size_t y = 24; y < v.height; y++)
+        for (size_t x = 0; x < v.width / 4; x++)
+            for (int k = 0; k < 3; k++)
+                a += px(lit, &v, x, y)[k], b += px(shaded, &v, x, y)[k];
+    cr_expect_lt(b, 0.8 * a, "lower left: shadowed %g vs lit %g", b, a);
+    /* the ridge (x = 40..43, right of the camera) is on the right: high up
+     * at the right edge there is terrain, at the left edge sky */
+    cr_expect_lt(px(lit, &v, 62, 6)[2], 150, "ridge at the right");
+    cr_expect_gt(px(lit, &v, 1, 6)[2], px(lit, &v, 1, 6)[0], "sky at the left");
+    free(lit), free(shaded), nl_field_free(f);
+}
+
+Test(render, refuses_bad_views)
+{
+    nl_field *f = flat(16);
+    terrain_view v;
+    uint8_t rgb[3 * 4 * 4];
+    size_t n1[1] = {16};
+    nl_field *g = nl_field_alloc(1, n1, NULL, NULL);
+    terrain_view_default(f, &v);
+    v.width = v.height = 4;
+    v.fov = 175;
+    cr_expect_neq(terrain_render(f, &v, rgb), 0);
+    terrain_view_default(f, &v);
+    v.width = v.height = 4;
+    v.sun[1] = 0;
+    cr_expect_neq(terrain_render(f, &v, rgb), 0);
+    cr_expect_neq(terrain_render(g, &v, rgb), 0);
+    nl_field_free(f), nl_field_free(g);
+}
