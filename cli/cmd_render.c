@@ -33,7 +33,11 @@ static const char help[] =
     "  --haze D            distance in samples at which haze hides 63% (default 2.5 n)\n"
     "  --water LEVEL       water below this height (field units)\n"
     "  --tile              repeat the (periodic) field to the horizon\n"
-    "  --sea               a sea palette (blue by height) instead of the land one\n";
+    "  --sea               a sea palette (blue by height) instead of the land one\n"
+    "  --clouds FIELD      a 2D field as clouds on a plane above the camera, white\n"
+    "                      where it exceeds its mean by 0.5 to 2 sd (GI '86 Fig. 5)\n"
+    "  --cloud-plane Z,S   the plane's height above the camera and terrain samples per\n"
+    "                      cloud sample (default 200,4)\n";
 
 /* "A,B" with both finite, or exit 2 naming the option. */
 static void pair(const char *opt, const char *s, double *a, double *b)
@@ -66,8 +70,10 @@ int cmd_render(int argc, char **argv)
                                          {"fov", required_argument, 0, 'f'},    {"sun", required_argument, 0, 'u'},
                                          {"haze", required_argument, 0, 'H'},   {"water", required_argument, 0, 'w'},
                                          {"tile", no_argument, 0, 't'},         {"sea", no_argument, 0, 'e'},
+                                         {"clouds", required_argument, 0, 'C'}, {"cloud-plane", required_argument, 0, 'Z'},
                                          {"help", no_argument, 0, 'h'},         {0}};
-    const char *out = NULL, *tmp, *matrix = NULL, *size = NULL, *camera = NULL, *look = NULL;
+    const char *out = NULL, *tmp, *matrix = NULL, *size = NULL, *camera = NULL, *look = NULL, *clouds = NULL;
+    double plane[2] = {200, 4};
     size_t step = 1;
     double lo = NAN, hi = NAN, az = NAN, el = NAN, zs = 1, fov = NAN, sun[2] = {NAN, NAN}, haze = NAN, water = NAN;
     int persp = 0, tile = 0, sea = 0, given_zs = 0, view_opts = 0;
@@ -100,6 +106,12 @@ int cmd_render(int argc, char **argv)
         case 'w': water = cli_parse_double("--water", optarg), view_opts++; break;
         case 't': tile = 1, view_opts++; break;
         case 'e': sea = 1, view_opts++; break;
+        case 'C': clouds = optarg, view_opts++; break;
+        case 'Z':
+            pair("--cloud-plane", optarg, &plane[0], &plane[1]), view_opts++;
+            if (!(plane[0] > 0 && plane[1] > 0))
+                cli_die(2, "--cloud-plane: expected a positive height and scale, got \"%s\"", optarg);
+            break;
         case 'o': out = optarg; break;
         case 'm': matrix = optarg; break;
         case 'k': step = cli_parse_count("--step", optarg, 1); break;
@@ -114,8 +126,8 @@ int cmd_render(int argc, char **argv)
     if (out && !cli_has_ext(out, ".png"))
         cli_die(2, "render: -o: expected an output file ending in .png, got \"%s\"", out);
     if (view_opts && !persp)
-        cli_die(2, "render: --size, --camera, --look, --fov, --sun, --haze, --water, --tile and --sea need "
-                "--perspective");
+        cli_die(2, "render: --size, --camera, --look, --fov, --sun, --haze, --water, --tile, --sea and --clouds "
+                "need --perspective");
     if (persp && (matrix || !isnan(az) || !isnan(lo)))
         cli_die(2, "render: --perspective takes none of --matrix, --shade, --range");
     if (persp && !out)
@@ -151,10 +163,18 @@ int cmd_render(int argc, char **argv)
         v.water = water;
         v.tile = tile;
         v.palette = sea ? TERRAIN_SEA : TERRAIN_LAND;
+        nl_field *cf = NULL;
+        if (clouds) {
+            cf = cli_read_field(clouds, NULL);
+            if (cf->dim != 2)
+                cli_die(2, "--clouds: expected a 2D field, %s is %dD", clouds, cf->dim);
+            v.clouds = cf, v.cloud_height = plane[0], v.cloud_scale = plane[1];
+        }
         tmp = cli_out_begin(out);
         perspective(argv[optind], x, tmp, &v);
         cli_out_commit(out);
         nl_field_free(x);
+        nl_field_free(cf);
         return 0;
     }
     if (matrix) {

@@ -6,8 +6,10 @@ terrain=markaussian:alpha=1.4,scale=48,angle=30,ratio=0.3
 sky=markaussian:alpha=1.8,scale=64,angle=-8,ratio=0.15
 "$nl" synth subdiv --acf "$terrain" --size 512x512 --seed 5 -o "$d/trend-terrain.exr"
 "$nl" synth subdiv --acf "$sky" --size 512x256 --seed 6 -o "$d/trend-sky.exr"
-"$nl" render "$d/trend-terrain.exr" --matrix "$d/trend-terrain.txt" --step 4
-gnuplot -e "data='$d/trend-terrain.txt'; title_text='terrain, R = exp(-|r|^{1.4}) elongated 30 degrees (ratio 0.3)'; out='$dir/gi86-fig5-terrain.png'; zs=3" "$top/plots/terrain.gp"
+# the scene: the terrain tiled to the horizon under the sky field drawn as
+# clouds on a plane above the camera
+landscape "$d/trend-terrain.exr" "$dir/gi86-fig5-terrain.png" 4 --tile --camera 256,-40,25 --look 90,4 \
+    --clouds "$d/trend-sky.exr"
 "$nl" render "$d/trend-terrain.exr" --shade 315,30 --zscale 1.5 -o "$dir/gi86-fig5-terrain-relief.png"
 "$nl" render "$d/trend-sky.exr" --matrix "$d/trend-sky.txt" --step 2
 gnuplot -e "data='$d/trend-sky.txt'; title_text='sky, R = exp(-|r|^{1.8}) elongated -8 degrees (ratio 0.15)'; out='$dir/gi86-fig5-sky.png'" "$top/plots/sky.gp"
@@ -22,18 +24,21 @@ cat > "$d/26-trend.md" <<MD
 
 > Synthetic sky and terrain with directional trend produced with generalized subdivision.
 
-![terrain with a trend](gi86-fig5-terrain.png)
+![sky and terrain with a trend](gi86-fig5-terrain.png)
 
 ![the same terrain as shaded relief](gi86-fig5-terrain-relief.png)
 
 ![sky with a trend](gi86-fig5-sky.png)
 
-\`noiselab synth subdiv\` with ellipsoidal models: the terrain \`$terrain\` (512 x 512, every 4th
-sample in perspective, and as shaded relief), the sky \`$sky\` (512 x 256, white where the field is high). Verdict
+\`noiselab synth subdiv\` with ellipsoidal models: the terrain \`$terrain\` (512 x 512, tiled to the
+horizon by \`noiselab render --perspective\`, and as shaded relief), the sky \`$sky\` (512 x 256) as
+clouds on a plane above the camera (\`--clouds\`: white where the field is 0.5 to 2 sd above its
+mean) and flat below. Verdict
 **$verdict**: the terrain's spectrum is strongest in the 10-degree sector centred at $best degrees
 (across the 30-degree trend: 120 expected, bound one sector), anisotropy (max/min sector power)
 $aniso.
 
-What differs: the paper composes sky and terrain in one rendered picture; we show them apart.
+What differs: the paper's sky is a texture behind the terrain; ours lies on a plane above it, so
+its streaks converge toward the horizon. The heights (4 samples per standard deviation) are ours.
 MD
 [ "$verdict" = pass ]

@@ -8,9 +8,8 @@ k='cos(0.3*x+0.1*y)*exp(-(x*x+y*y)/200)'
 "$nl" synth sparse --kernel "$k" --radius 32 --density 32 --size 512x512 --seed 3 --wrap -o "$d/waves.exr"
 "$nl" render "$d/waves.exr" --shade 315,35 --zscale 1.2 -o "$dir/gi86-fig6-rough-waves.png"
 "$nl" synth sparse --kernel "$k" --radius 32 --density 32 --size 256x256 --seed 4 --wrap -o "$d/waves-p.exr"
-"$nl" render "$d/waves-p.exr" --matrix "$d/waves.txt" --step 2
-zs=$(per_sd "$d/waves-p.exr" 1.2)
-gnuplot -e "data='$d/waves.txt'; title_text='shaped impulse process, band-pass wave kernel'; water=1; out='$dir/gi86-fig6-waves-perspective.png'; zs=$zs" "$top/plots/terrain.gp"
+landscape "$d/waves-p.exr" "$dir/gi86-fig6-waves-perspective.png" 0.8 --sea --tile --camera 128,-20,10 --look 90,6 \
+    --sun 60,25 --haze 400
 # verdict: the radial spectrum peaks at the kernel's frequency
 # f0 = |(0.3, 0.1)| / 2 pi; the kernel's spectrum is a Gaussian blob of
 # standard deviation 1 / (2 pi sqrt(100)) = 0.016 cycles per sample around it,
@@ -32,7 +31,8 @@ cat > "$d/52-waves.md" <<MD
 
 \`noiselab synth sparse --kernel '$k' --radius 32 --density 32 --wrap\`: Poisson impulses
 convolved with a directional band-pass kernel (a plane wave under a Gaussian window), 512 x 512
-shaded from the north-west, and 256 x 256 in perspective (gnuplot pm3d, every 2nd sample).
+shaded from the north-west, and 256 x 256 in perspective (\`noiselab render --perspective --sea\`,
+tiled to the horizon, 0.8 samples of height per standard deviation).
 Verdict **$verdict**: the radial spectrum peaks at f = $fpk cycles per sample against the
 kernel's $f0 (bound: half the kernel's spectral width, 0.008).
 

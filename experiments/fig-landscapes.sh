@@ -9,15 +9,13 @@
 for k in nonfractal fractal; do
     "$nl" shape --to power:p=2.5 --empirical "$d/ls-$k.exr" -o "$d/ls-$k-pow.exr"
 done
-terrain() { # field, heights per standard deviation (in samples drawn), title, output
-    zs=$(per_sd "$1" "$2")
-    "$nl" render "$1" --matrix "$d/ls.txt" --step 4
-    gnuplot -e "data='$d/ls.txt'; title_text='$3'; out='$dir/$4'; zs=$zs" "$top/plots/terrain.gp"
-}
-terrain "$d/ls-nonfractal-pow.exr" 7 'Fig. 6a: exp(-r^{1.4}) heights, y <- y^{2.5}' lewis87-fig6a-landscape.png
-terrain "$d/ls-fractal.exr" 7 'Fig. 7: fractal surface f^{-3.6} (H = 0.8), no power modification' lewis87-fig7-fractal.png
-terrain "$d/ls-fractal-pow.exr" 7 'Fig. 11: fractal landscape, power-modified y <- y^{2.5}' lewis87-fig11-fractal-powered.png
-terrain "$d/ls-nonfractal.exr" 7 'Fig. 12: non-fractal landscape, exp(-r^{1.4})' lewis87-fig12-nonfractal.png
+# perspective views of the periodic fields tiled to the horizon, camera 40
+# samples behind the middle of an edge; heights in samples per sd
+view() { landscape "$1" "$dir/$2" "$3" --tile --camera 256,-40,"$4" --haze 700; }
+view "$d/ls-nonfractal-pow.exr" lewis87-fig6a-landscape.png 10 40
+view "$d/ls-fractal.exr" lewis87-fig7-fractal.png 10 30
+view "$d/ls-fractal-pow.exr" lewis87-fig11-fractal-powered.png 16 45
+view "$d/ls-nonfractal.exr" lewis87-fig12-nonfractal.png 7 25
 # verdicts: the fractal surface has its slope and eq. (16) dimension; the
 # modified heights have the density of U^2.5 (KS) and are skewed upward
 sl=$("$nl" psd "$d/ls-fractal.exr" --slope 0.01:0.2 | sed -n 's/^# slope \([-0-9.e+]*\) +- \([0-9.e+-]*\) .*dimension \([0-9.]*\)$/\1 \2 \3/p')
@@ -25,8 +23,20 @@ set -- $sl
 slope=$1 ci=$2 dim=$3
 ks=$("$nl" hist "$d/ls-fractal-pow.exr" --against power:p=2.5 | sed -n 's/.*KS D \([0-9.e+-]*\) p \([0-9.e+-]*\);.*/\2/p')
 skew=$("$nl" hist "$d/ls-fractal-pow.exr" | sed -n 's/^# skewness //p')
-verdict=$(awk -v s="$slope" -v c="$ci" -v k="$ks" -v g="$skew" \
-    'BEGIN { print ((s + 3.6 <= c && -(s + 3.6) <= c && k > 0.001 && g > 0) ? "pass" : "FAIL") }')
+# the slope over 8 realizations (seeds 7..14): the 95% interval printed for
+# one field is a regression interval that treats the radial bins as
+# independent with equal variance, which the low-frequency bins (few
+# periodogram ordinates) are not, so it under-covers; the verdict uses the
+# spread of the 8 slopes instead: a t-test of mean = -3.6, |t| <= 3.50 (t
+# with 7 degrees of freedom, two-sided 1%)
+ens=$(for s in 7 8 9 10 11 12 13 14; do
+    "$nl" synth subdiv --spectrum power:d=3.6,fmin=0.001 --size 512x512 --seed "$s" -o "$d/ls-seed.exr"
+    "$nl" psd "$d/ls-seed.exr" --slope 0.01:0.2 | sed -n 's/^# slope \([-0-9.e+]*\) .*/\1/p'
+done | awk '{ s += $1; q += $1 * $1; n++ } END { m = s / n; sd = sqrt((q - n * m * m) / (n - 1)); printf "%.4f %.4f %.2f", m, sd, (m + 3.6) / (sd / sqrt(n)) }')
+set -- $ens
+emean=$1 esd=$2 et=$3
+verdict=$(awk -v t="$et" -v k="$ks" -v g="$skew" \
+    'BEGIN { print ((t <= 3.50 && t >= -3.50 && k > 0.001 && g > 0) ? "pass" : "FAIL") }')
 cat > "$d/23-landscapes.md" <<MD
 ## Lewis 1987, Figs. 6, 7, 11, 12: landscapes
 
@@ -41,12 +51,17 @@ cat > "$d/23-landscapes.md" <<MD
 ![Fig. 11](lewis87-fig11-fractal-powered.png)
 ![Fig. 12](lewis87-fig12-nonfractal.png)
 
-\`noiselab synth subdiv\` at 512 x 512 (every 4th sample drawn, gnuplot pm3d): the non-fractal
+\`noiselab synth subdiv\` at 512 x 512, drawn by \`noiselab render --perspective --tile\` (the periodic
+field repeated to the horizon, sun from the left, cast shadows, haze): the non-fractal
 \`markaussian:alpha=1.4,scale=64\` (the paper's "Markaussian", which it used for most terrains)
 and the fractal \`power:d=3.6\` (fBm with H = 0.8 in 2D), each alone and after
 \`noiselab shape --to power:p=2.5 --empirical\` (y^2.5 of the uniform rank, so the heights lie
 in [0, 1]). Verdict **$verdict**: the fractal surface's radial spectral slope over
-f = 0.01..0.2 is $slope ± $ci (target -3.6), fractal dimension $dim by eq. (16) (3 - H = 2.2);
+f = 0.01..0.2 is $slope ± $ci (regression 95% interval; target -3.6), fractal dimension $dim by
+eq. (16) (3 - H = 2.2); over 8 realizations (seeds 7-14) the slope is $emean with standard
+deviation $esd, t = $et against -3.6 (bound 3.50, t(7) at 1%): the single-field interval is too
+narrow (it treats the radial bins as independent and equally noisy), and the ensemble mean sits
+slightly above -3.6, as subdivision's loss of fine-scale variance predicts;
 the power-modified heights against the density of U^2.5: KS p = $ks, skewness $skew (> 0: the
 peaks are exaggerated, the valleys flattened).
 

@@ -14,8 +14,7 @@
 gnuplot -e "f1='$d/tx-markov.png'; f2='$d/tx-osc.png'; f3='$d/tx-gauss.png'; f4='$d/tx-isoosc.png'; t1='Markovian exp(-r/24)'; t2='oscillatory Markovian (separable), shaded'; t3='Gaussian exp(-(r/10)^2)'; t4='isotropically oscillatory Markaussian'; out='$dir/lewis87-fig4-textures.png'" "$top/plots/textures.gp"
 # the terrain: markaussian alpha 1.4 is exp(-(x^2+y^2)^0.7)
 "$nl" synth subdiv --acf markaussian:alpha=1.4,scale=48 --size 512x512 --seed 5 -o "$d/terrain.exr"
-"$nl" render "$d/terrain.exr" --matrix "$d/terrain.txt" --step 4
-gnuplot -e "data='$d/terrain.txt'; title_text='R = exp(-(x^2+y^2)^{0.7}), generalized subdivision'; out='$dir/gi86-fig4-terrain.png'; zs=6" "$top/plots/terrain.gp"
+landscape "$d/terrain.exr" "$dir/gi86-fig4-terrain.png" 7 --tile --camera 256,-40,25
 "$nl" render "$d/terrain.exr" --shade 315,30 --zscale 8 -o "$dir/gi86-fig4-terrain-relief.png"
 checks=$("$nl" check --acf 'expr:cos(0.075*r)*exp(-(r/12)^1.4)' --dim 2 | head -1)
 cat > "$d/22-textures.md" <<MD
@@ -45,6 +44,7 @@ model whose 2D spectrum is non-negative (e.g. a ring spectrum through \`spectrum
 ![relief](gi86-fig4-terrain-relief.png)
 
 \`noiselab synth subdiv --acf markaussian:alpha=1.4,scale=48 --size 512x512\` (exp(-(r/s)^1.4) is
-exp(-((x²+y²)/s²)^0.7)), seen in perspective with gnuplot's pm3d lighting (every 4th sample) and
-as shaded relief. What differs: the paper's rendering and height scale are not known.
+exp(-((x²+y²)/s²)^0.7)), seen in perspective with \`noiselab render --perspective --tile\` (7
+samples of height per standard deviation, sun from the left, cast shadows, haze) and as shaded
+relief. What differs: the paper's rendering and height scale are not known.
 MD

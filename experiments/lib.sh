@@ -20,3 +20,12 @@ per_sd() {
 psd_peak() {
     "$nl" psd "$1" --json | jq '[.freq, .psd] | transpose | max_by(.[1]) | .[0]'
 }
+
+# landscape FIELD OUT K [render options]: FIELD in perspective (noiselab
+# render --perspective, 800 x 450) with heights of K samples per standard
+# deviation
+landscape() {
+    _f=$1 _o=$2 _k=$3
+    shift 3
+    "$nl" render "$_f" --perspective --size 800x450 --zscale "$(per_sd "$_f" "$_k")" "$@" -o "$_o"
+}

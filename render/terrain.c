@@ -128,6 +128,35 @@ static void sky(double elevation, double *c)
     mix(c, sky_zenith, t);
 }
 
+/* Mean and standard deviation of the cloud field, for its threshold. */
+static void cloud_stats(const nl_field *g, double *mean, double *sd)
+{
+    double s1 = 0, s2 = 0;
+    for (size_t i = 0; i < g->count; i++)
+        s1 += g->data[i], s2 += g->data[i] * g->data[i];
+    *mean = s1 / (double)g->count;
+    *sd = sqrt(fmax(0, s2 / (double)g->count - *mean * *mean));
+}
+
+/* Sky along the ray of horizontal direction (dx, dy) at this elevation,
+ * with the cloud plane's cover mixed in (fading with distance). */
+static void sky_at(const terrain_view *v, double cmean, double csd, double dx, double dy, double elevation, double *c)
+{
+    sky(elevation, c);
+    if (v->clouds && elevation > 0.01) {
+        const nl_field *g = v->clouds;
+        double dist = v->cloud_height / tan(elevation), x = (v->cam[0] + dist * dx) / v->cloud_scale,
+               y = (v->cam[1] + dist * dy) / v->cloud_scale;
+        long nx = (long)g->n[0], ny = (long)g->n[1], i = (long)floor(x), j = (long)floor(y);
+        double ax = x - (double)i, ay = y - (double)j, val, cover, white[3] = {0.97, 0.97, 0.98};
+        long i0 = wrap(i, nx, 1), i1 = wrap(i + 1, nx, 1), j0 = wrap(j, ny, 1), j1 = wrap(j + 1, ny, 1);
+        val = (1 - ay) * ((1 - ax) * g->data[j0 * nx + i0] + ax * g->data[j0 * nx + i1]) +
+              ay * ((1 - ax) * g->data[j1 * nx + i0] + ax * g->data[j1 * nx + i1]);
+        cover = fmin(1, fmax(0, ((val - cmean) / (csd > 0 ? csd : 1) - 0.5) / 1.5));
+        mix(c, white, cover * exp(-dist / (4 * v->haze)));
+    }
+}
+
 void terrain_view_default(const nl_field *f, terrain_view *v)
 {
     double lo = INFINITY, hi = -INFINITY;
@@ -153,11 +182,12 @@ int terrain_render(const nl_field *f, const terrain_view *v, uint8_t *rgb)
 {
     const size_t W = v->width * SS, H = v->height * SS;
     scene s = {f, v, NULL, INFINITY, -INFINITY};
-    double focal, horizon, camz, tmax, mean = 0, *img;
+    double focal, horizon, camz, tmax, mean = 0, cmean = 0, csd = 1, *img;
     if (f->dim != 2 || f->n[0] < 3 || f->n[1] < 3)
         return NL_ERROR(NL_EINVAL, "render: a perspective view needs a 2D field of at least 3 x 3 samples");
     if (!(v->fov > 0 && v->fov < 170) || !(v->zscale > 0) || !(v->haze > 0) || !(fabs(v->pitch) <= 30) ||
-        !(v->sun[1] > 0 && v->sun[1] <= 90) || v->width < 1 || v->height < 1)
+        !(v->sun[1] > 0 && v->sun[1] <= 90) || v->width < 1 || v->height < 1 ||
+        (v->clouds && (v->clouds->dim != 2 || !(v->cloud_height > 0) || !(v->cloud_scale > 0))))
         return NL_ERROR(NL_EINVAL, "render: a view needs 0 < fov < 170, zscale > 0, haze > 0, |pitch| <= 30 and "
                         "0 < sun elevation <= 90");
     for (size_t i = 0; i < f->count; i++) {
@@ -171,6 +201,8 @@ int terrain_render(const nl_field *f, const terrain_view *v, uint8_t *rgb)
         return NL_ERROR(NL_ENOMEM, "render: out of memory for a %zu x %zu picture", v->width, v->height);
     }
     light(&s);
+    if (v->clouds)
+        cloud_stats(v->clouds, &cmean, &csd);
     focal = 0.5 * (double)W / tan(rad(v->fov) / 2);
     horizon = 0.5 * (double)H - focal * tan(rad(v->pitch));
     camz = height(&s, v->cam[0], v->cam[1]);
@@ -214,7 +246,7 @@ int terrain_render(const nl_field *f, const terrain_view *v, uint8_t *rgb)
             dt = 0.2 + 0.004 * t;
         }
         for (long r = 0; r < top; r++) {
-            sky(atan((horizon - (double)r) / focal), c);
+            sky_at(v, cmean, csd, dx, dy, atan((horizon - (double)r) / focal), c);
             memcpy(img + 3 * ((size_t)r * W + x), c, sizeof c);
         }
     }

@@ -7,7 +7,9 @@
  * Method: one ray per image column marched over the ground plane in steps
  * that grow with distance (front to back, keeping the highest row drawn so
  * far, so hidden terrain costs nothing); heights are bilinear between
- * samples; 2 x 2 supersampling.  Pitch shifts the rows (the horizon
+ * samples; 2 x 2 supersampling.  Clouds: a second field on a horizontal
+ * plane above the camera, white where it exceeds its mean by more than
+ * half a standard deviation, fully so from two (GI '86, Fig. 5).  Pitch shifts the rows (the horizon
  * moves by focal tan(pitch)) rather than rotating the camera: exact at
  * pitch 0, close up to the 30 degrees allowed.  Shadows: a sample is in shadow when the
  * terrain rises above the ray toward the sun within 256 samples.
@@ -34,6 +36,11 @@ typedef struct {
     double water;          /* water level in field units; NAN: no water */
     int tile;              /* repeat the field periodically beyond its edges */
     int palette;           /* TERRAIN_LAND or TERRAIN_SEA */
+    const nl_field *clouds; /* NULL, or a 2D field drawn as clouds on a plane
+                               above the camera (tiled, one sample per
+                               cloud_scale samples of the terrain) */
+    double cloud_height;   /* the plane's height above the camera, samples */
+    double cloud_scale;    /* terrain samples per cloud sample */
 } terrain_view;
 
 enum { TERRAIN_LAND = 0, TERRAIN_SEA = 1 };
