@@ -59,8 +59,8 @@ test: $(BIN) $(BUILD)/tests/run $(EXP_BIN)
 	    sh experiments/quick.sh $(BUILD)/quick-figures
 
 # Every experiment writes its data, picture and verdict into paper-figures/.
-# Exemplar images from Debian's python3-skimage package data (not committed).
-EXEMPLARS := $(BUILD)/exemplars/grass.png
+# Exemplar images from Debian packages' data (python3-skimage, gimp-data; not committed).
+EXEMPLARS := $(BUILD)/exemplars/fibers.pat
 $(EXEMPLARS): tools/exemplars.sh | $(DEPS_OK)
 	@sh tools/exemplars.sh $(BUILD)/exemplars
 

@@ -1,12 +1,13 @@
 # Exemplars beside their sparse-convolution resyntheses, with radial spectra.
 # gnuplot -e "dir='D'; names='grass gravel brick'; out='O.png'" plots/resynthesis.gp
-set terminal pngcairo size 1050,1000 font "DejaVu Sans,10"
+set terminal pngcairo size 1050,(words(names) * 330 + 10) font "DejaVu Sans,10"
 set output out
-set multiplot layout 3,3
-do for [i = 1:3] {
+nrow = words(names)
+set multiplot layout nrow,3
+do for [i = 1:nrow] {
     n = word(names, i)
     unset key; unset tics; unset border; set size ratio -1
-    set title sprintf("%s: exemplar (512 x 512)", n)
+    set title sprintf("%s: exemplar", n)
     plot sprintf("%s/rs-%s-ex.png", dir, n) binary filetype=png with rgbimage
     set title sprintf("%s: resynthesis (sparse convolution)", n)
     plot sprintf("%s/rs-%s.png", dir, n) binary filetype=png with rgbimage
