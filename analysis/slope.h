@@ -11,6 +11,8 @@
 #ifndef AN_SLOPE_H
 #define AN_SLOPE_H
 
+#include "../core/field.h"
+
 #include <stddef.h>
 
 typedef struct {
@@ -22,5 +24,14 @@ typedef struct {
 
 /* Frequencies f[i] with fmin <= f <= fmax and psd > 0 are used. */
 int an_psd_slope(const double *f, const double *psd, size_t n, double fmin, double fmax, int E, an_slope *out);
+
+/* The same fitted to every ordinate of a 2D or 3D periodogram P (wrapped
+ * order, as an_psd_periodogram makes it) with fmin <= |f| <= fmax, each
+ * Hermitian pair once: log-periodogram regression.  The ordinates of a
+ * Gaussian field's periodogram are close to independent with a log of
+ * constant variance, so the least-squares interval holds; fitting the
+ * radial average instead gives too narrow an interval (its low-frequency
+ * rings hold few ordinates, over which a steep spectrum varies). */
+int an_psd_slope_grid(const nl_field *P, double fmin, double fmax, an_slope *out);
 
 #endif

@@ -32,8 +32,10 @@ static const char help[] =
     "                sampled process, aliasing included)\n"
     "  --slope F1:F2 fit log psd = c + slope log f over F1 <= f <= F2: slope, its 95%\n"
     "                confidence interval, and the fractal dimension D = E + (3 - d)/2,\n"
-    "                d = -slope in 1D, -slope - (E - 1) for radial averages in E-D\n"
-    "                (Lewis 1987, eq. 16, which is stated for profiles)\n"
+    "                d = -slope in 1D, -slope - (E - 1) in E-D (Lewis 1987, eq. 16, which\n"
+    "                is stated for profiles); in 2D/3D the fit is to every periodogram\n"
+    "                ordinate in the band (each Hermitian pair once), not to the radial\n"
+    "                average, whose interval would be too narrow\n"
     "  --json        {\"freq\": [...], \"psd\": [...], \"sided\": \"two-sided\"} on stdout\n"
     "  -o            TSV with columns freq, psd[, target] (default: TSV on stdout)\n";
 
@@ -190,7 +192,7 @@ int cmd_psd(int argc, char **argv)
         nl_model_free(m);
         nl_field_free(S);
     }
-    if (slope && (st = an_psd_slope(freq, val, nf, f1, f2, x->dim, &sl)))
+    if (slope && (st = x->dim == 1 ? an_psd_slope(freq, val, nf, f1, f2, 1, &sl) : an_psd_slope_grid(P, f1, f2, &sl)))
         cli_die_status(st);
     if (json) {
         json_t *o = json_pack("{s:o,s:o}", "freq", cli_json_array(freq, nf), "psd", cli_json_array(val, nf));

@@ -2,6 +2,10 @@
  * process; the direct sum of eq. (15) against the FFT; the coverage of
  * Bartlett's bands. */
 #include "../analysis/acf.h"
+#include "../analysis/psd.h"
+#include "../analysis/slope.h"
+#include "../core/model.h"
+#include "../synth/fft.h"
 #include "../analysis/welch.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -118,4 +122,39 @@ Test(estimators, bartlett_band_coverage)
         cr_log_info("Bartlett 95%% band coverage at lag %d: %.3f", k, hit[k] / 400.0);
         cr_expect_leq(fabs(hit[k] / 400.0 - 0.95), 4 * 0.0109, "lag %d coverage %.3f", k, hit[k] / 400.0);
     }
+}
+
+/* The slope's 95% interval on a 2D periodogram is honest: 40 FFT fields of
+ * S = k^-3.6 (128 x 128, seeds 1..40), slope over 0.02 <= |f| <= 0.25.
+ * Coverage of -3.6 by the 40 intervals is Binomial(40, 0.95) if they are
+ * right: P(X <= 32) = 7e-4, so at least 33 must cover.  Coverage cannot see
+ * intervals that are too wide, so the reported half-width / 1.96 is also
+ * compared with the spread of the 40 slopes: log(sd_hat / sd) has sd
+ * 1 / sqrt(2 * 39) = 0.113, and 3.3 of those (two-sided 1e-3) allow the
+ * ratio to lie in [0.69, 1.45].  (The radial-average fit this replaced gave
+ * a ratio of 0.36.) */
+Test(estimators, slope_interval_on_a_2d_periodogram_is_honest)
+{
+    nl_model *m;
+    synth_fft_plan *p;
+    size_t n[2] = {128, 128};
+    nl_field *x = nl_field_alloc(2, n, NULL, NULL), *P;
+    double s1 = 0, s2 = 0, se = 0;
+    int cover = 0;
+    const int M = 40;
+    cr_assert_eq(nl_model_parse("power:d=3.6,fmin=0.001", &m), 0);
+    cr_assert_eq(synth_fft_plan_alloc(m, 2, n, NULL, 0, &p), 0);
+    for (int s = 1; s <= M; s++) {
+        an_slope sl;
+        cr_assert_eq(synth_fft_execute(p, (uint64_t)s, x), 0);
+        cr_assert_eq(an_psd_periodogram(x, NAN, &P), 0);
+        cr_assert_eq(an_psd_slope_grid(P, 0.02, 0.25, &sl), 0);
+        s1 += sl.slope, s2 += sl.slope * sl.slope, se += sl.ci95 / 1.96 / M;
+        cover += fabs(sl.slope + 3.6) <= sl.ci95;
+        nl_field_free(P);
+    }
+    double mean = s1 / M, sd = sqrt((s2 - M * mean * mean) / (M - 1));
+    cr_expect_geq(cover, 33, "coverage %d of %d", cover, M);
+    cr_expect(se / sd >= 0.69 && se / sd <= 1.45, "reported se %g against the slopes' sd %g (mean %g)", se, sd, mean);
+    nl_field_free(x), synth_fft_plan_free(p), nl_model_free(m);
 }
