@@ -4,8 +4,9 @@
  *            long-running bench, validate, card and cloud
  *   5 krige  the input is the data file of `krige --data` (the TSV reader)
  *   6 cloud  the input is the scene file of `cloud` (the JSON reader);
- *            scenes asking for more than a 48 x 48 picture or a 24^3 grid
- *            are skipped, to keep each run short
+ *            scenes asking for more than a 48 x 48 picture or a 24^3 grid,
+ *            or leaving a grid at its default of 64, are skipped, to keep
+ *            each run short
  * Commands run in-process: cli_die's exit is replaced by a longjmp back
  * here (cli_exit_hook), so bad input costs no process.  Inputs naming
  * paths with '/' are skipped: outputs go to the working directory, which
@@ -100,9 +101,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 #else
     char *argv[] = {"noiselab", "cloud", "scene.json", "-o", "c.png", NULL};
     json_t *j = json_loadb((const char *)data, size, 0, NULL), *sz = json_object_get(j, "size");
+    json_t *g = json_object_get(j, "grid"), *ng = json_object_get(json_object_get(j, "noise"), "grid");
+    /* both grids default to 64 when absent: require them, and small */
     int small = j && json_integer_value(json_array_get(sz, 0)) <= 48 && json_integer_value(json_array_get(sz, 1)) <= 48 &&
-                json_number_value(json_object_get(j, "grid")) <= 24 &&
-                json_number_value(json_object_get(json_object_get(j, "noise"), "grid")) <= 24;
+                json_is_number(g) && json_number_value(g) <= 24 && json_is_number(ng) && json_number_value(ng) <= 24;
     json_decref(j);
     if (small && write_file("scene.json", data, size) == 0)
         run(5, argv);
