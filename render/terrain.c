@@ -159,13 +159,21 @@ static void sky_at(const terrain_view *v, double cmean, double csd, double dx, d
 
 void terrain_view_default(const nl_field *f, terrain_view *v)
 {
-    double lo = INFINITY, hi = -INFINITY;
-    for (size_t i = 0; i < f->count; i++)
-        lo = fmin(lo, f->data[i]), hi = fmax(hi, f->data[i]);
+    /* heights scaled so that the rms slope (differences between
+     * neighbouring samples, wrapped) is 0.5: hills, not needles, whatever
+     * the field's variance and correlation length */
+    double g2 = 0;
+    size_t nx = f->n[0], ny = f->dim > 1 ? f->n[1] : 1;
+    for (size_t j = 0; j < ny; j++)
+        for (size_t i = 0; i < nx; i++) {
+            double c = f->data[j * nx + i], dx = f->data[j * nx + (i + 1) % nx] - c,
+                   dy = f->data[((j + 1) % ny) * nx + i] - c;
+            g2 += (dx * dx + dy * dy) / 2 / (double)(nx * ny);
+        }
     memset(v, 0, sizeof *v);
     v->width = 960;
     v->height = 540;
-    v->zscale = hi > lo ? 0.15 * (double)f->n[0] / (hi - lo) : 1;
+    v->zscale = g2 > 0 ? 0.5 / sqrt(g2) : 1;
     v->cam[0] = 0.5 * (double)f->n[0];
     v->cam[1] = -0.05 * (double)f->n[1];
     v->cam[2] = 0.15 * (double)f->n[0];
@@ -190,6 +198,13 @@ int terrain_render(const nl_field *f, const terrain_view *v, uint8_t *rgb)
         (v->clouds && (v->clouds->dim != 2 || !(v->cloud_height > 0) || !(v->cloud_scale > 0))))
         return NL_ERROR(NL_EINVAL, "render: a view needs 0 < fov < 170, zscale > 0, haze > 0, |pitch| <= 30 and "
                         "0 < sun elevation <= 90");
+    {
+        /* the supersampled picture (3 doubles a pixel) and the lit colours */
+        size_t pic[2] = {3 * W, H}, col[2] = {3, f->count};
+        int st = nl_size_check(2, pic, sizeof(double), 1, NULL);
+        if (st || (st = nl_size_check(2, col, sizeof(double), 1, NULL)))
+            return st;
+    }
     for (size_t i = 0; i < f->count; i++) {
         s.hmin = fmin(s.hmin, v->zscale * f->data[i]), s.hmax = fmax(s.hmax, v->zscale * f->data[i]);
         mean += v->zscale * f->data[i] / (double)f->count;

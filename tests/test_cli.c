@@ -8,6 +8,7 @@
 #include <jansson.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static char out[1 << 16], err[1 << 12];
@@ -149,6 +150,10 @@ Test(cli, estimator_error_paths)
     bad("render f2.exr --perspective --sun 10 -o out.png", "\"10\"");
     bad("render f2.exr --perspective --matrix out.txt -o out.png", "--matrix");
     bad("render f.tsv --perspective -o out.png", "2D");
+    /* a picture larger than the memory allowed is refused before allocating */
+    setenv("NOISELAB_MEMORY_LIMIT", "100000000", 1);
+    bad("render f2.exr --perspective --size 8000x4000 -o out.png", "384000000");
+    unsetenv("NOISELAB_MEMORY_LIMIT");
 }
 
 /* Text output to stdout keeps everything printed before the table. */
