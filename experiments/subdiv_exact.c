@@ -119,7 +119,7 @@ int main(int argc, char **argv)
     if (argc != 4 || !(md = fopen(argv[1], "w")) || !(tsv = fopen(argv[2], "w")) || !(map = fopen(argv[3], "w")))
         return 2;
     fprintf(tsv, "model\tN\tlag\texact\ttarget\n");
-    fprintf(md, "## The method's own error: exact covariance of subdivision fields\n\n"
+    fprintf(md, "## The method's own error: exact covariance of subdivision fields, and the diagonal bias\n\n"
                 "Not a figure of the papers. Lewis's construction estimates each new point from earlier levels "
                 "only; new points of one level get independent displacements although their estimation errors "
                 "are correlated, so the field's covariance differs from R (eq. (5) holds only for lags to the "
