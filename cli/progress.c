@@ -1,11 +1,13 @@
 /* Progress of long work on stderr: only when stderr is a terminal, and only
- * once the work has taken more than a second (quick runs stay quiet).
+ * once the work has taken more than a second (quick runs stay quiet;
+ * NOISELAB_PROGRESS_AFTER sets another number of seconds).
  * Fractions are printed by the caller's thread; phases of unknown length
  * by a helper thread that refreshes the elapsed time four times a second. */
 #include "cli.h"
 
 #include <pthread.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -25,6 +27,15 @@ static double elapsed(void)
     return (double)(t.tv_sec - t0.tv_sec) + 1e-9 * (double)(t.tv_nsec - t0.tv_nsec);
 }
 
+/* Seconds of work before progress shows. */
+static double after(void)
+{
+    const char *e = getenv("NOISELAB_PROGRESS_AFTER");
+    char *end;
+    double a = e ? strtod(e, &end) : 1;
+    return e && end != e && a >= 0 ? a : 1;
+}
+
 static void start(void)
 {
     if (!started)
@@ -35,7 +46,7 @@ void cli_progress(const char *what, double frac)
 {
     int first = !started;
     start();
-    if (!first && elapsed() > 1 && isatty(2)) {
+    if (!first && elapsed() > after() && isatty(2)) {
         fprintf(stderr, "\rnoiselab %s: %3.0f%% ", what, 100 * frac);
         shown = 1;
     }
@@ -48,7 +59,7 @@ static void *tick(void *arg)
     while (!stop) {
         struct timespec t;
         double e = elapsed();
-        if (e > 1) {
+        if (e > after()) {
             fprintf(stderr, "\r%s (%.0f s)   ", line, e);
             shown = 1;
         }

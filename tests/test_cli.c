@@ -400,3 +400,25 @@ Test(cli, help_and_version)
     }
     cr_assert_eq(run_noiselab("", 0, 0, 0, 0), 2);
 }
+
+/* Progress goes to a terminal only: with progress due at once
+ * (NOISELAB_PROGRESS_AFTER=0), a synthesis and a cloud leave stderr empty
+ * when stderr is a pipe, as it is here. */
+Test(cli, no_progress_when_stderr_is_not_a_terminal)
+{
+    int rc;
+    setenv("NOISELAB_PROGRESS_AFTER", "0", 1);
+    rc = run_noiselab("synth subdiv --acf markov:scale=16 --size 1024x1024 --seed 1 -o big.exr", out, sizeof out, err,
+                      sizeof err);
+    cr_expect_eq(rc, 0, "%s", err);
+    cr_expect_eq(strlen(err), 0, "synth: stderr \"%s\"", err);
+    FILE *fp = fopen("/tmp/noiselab-scene-progress.json", "w");
+    fputs("{\"size\": [32, 24], \"box\": [[-1,-1,-1],[1,1,1]], \"points\": [[0,0,0,1]], \"acf\": \"gauss:scale=0.6\", "
+          "\"noise\": {\"acf\": \"markov:scale=0.1\", \"period\": 2}, \"grid\": 16, \"camera\": {\"position\": [0,0,-4], "
+          "\"look_at\": [0,0,0]}, \"sun\": [0.3,1,-0.5]}", fp);
+    fclose(fp);
+    rc = run_noiselab("cloud /tmp/noiselab-scene-progress.json -o c2.png", out, sizeof out, err, sizeof err);
+    cr_expect_eq(rc, 0, "%s", err);
+    cr_expect_eq(strlen(err), 0, "cloud: stderr \"%s\"", err);
+    unsetenv("NOISELAB_PROGRESS_AFTER");
+}
