@@ -22,6 +22,11 @@ done
 gnuplot -e "d='$d'; out1='$dir/keller-fig1-lattices.png'; out2='$dir/keller-fig2-delaunay-wavevectors.png'" "$top/plots/keller.gp"
 "$nl" ocean --lattice fibonacci --points 1597 --wind 20,30 --patch 1000 --amplitude 2e-7 --size 256 --tile "$dir/keller-fig3-tiling.png"
 "$nl" ocean --grid 40 --wind 20,30 --patch 1000 --amplitude 2e-7 --size 256 --image "$d/ocean-grid.png"
+# the same sea on a 256 x 256 grid (3.9 m a sample) in perspective at true
+# scale (0.256 samples of height per metre), the patch tiled to the horizon
+"$nl" ocean --grid 256 --wind 20,30 --patch 1000 --amplitude 2e-7 -o "$d/ocean-256.exr"
+"$nl" render "$d/ocean-256.exr" --perspective --sea --tile --size 800x450 --zscale 0.256 --camera 128,-20,4 \
+    --look 90,4 --sun 60,20 --haze 400 -o "$dir/keller-ocean-perspective.png"
 verdict=pass
 [ "$bad" -eq 0 ] || verdict=FAIL
 cat > "$d/70-keller.md" <<MD
@@ -53,7 +58,14 @@ Phillips spectrum, one FFT of length 1597 for the heights (two more for the grad
 lattice rasterised over its periodic Delaunay triangles and shaded; four copies tile without
 seams because the field and its gradient are periodic.
 
+![the ocean in perspective](keller-ocean-perspective.png)
+
+The same Phillips sea on a 256 x 256 grid over the 1000 m patch (3.9 m a sample), seen from 16 m
+above the mean level at true vertical scale, the periodic patch repeated to the horizon
+(\`noiselab render --perspective --sea --tile\`).
+
 What differs: the paper's images are rendered with lighting and colour we do not know; ours
-are grey shaded relief. The wave-vector plot shows the same nested, roughly circular sets.
+are grey shaded relief, and the perspective view is of the grid ocean (the lattice ocean is
+rasterised only into pictures). The wave-vector plot shows the same nested, roughly circular sets.
 MD
 [ "$bad" -eq 0 ]
