@@ -33,6 +33,7 @@ static void remove_pending(void)
 void cli_die(int code, const char *fmt, ...)
 {
     va_list ap;
+    cli_progress_done(); /* stop a progress line before the message */
     fputs("noiselab: ", stderr);
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);

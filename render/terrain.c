@@ -35,18 +35,41 @@ static long wrap(long i, long n, int tile)
     return i < 0 || i >= n ? -1 : i;
 }
 
+/* The cell of an nx x ny grid around (x, y) for bilinear interpolation:
+ * its corners' sample indices q (x0y0, x1y0, x0y1, x1y1) and the weights
+ * ax, ay; 0 when (x, y) is outside an untiled grid. */
+typedef struct {
+    size_t q[4];
+    double ax, ay;
+} cell;
+
+static int cell_at(long nx, long ny, int tile, double x, double y, cell *c)
+{
+    double fx = floor(x), fy = floor(y);
+    long i0 = wrap((long)fx, nx, tile), i1 = wrap((long)fx + 1, nx, tile);
+    long j0 = wrap((long)fy, ny, tile), j1 = wrap((long)fy + 1, ny, tile);
+    if (i0 < 0 || i1 < 0 || j0 < 0 || j1 < 0)
+        return 0;
+    c->q[0] = (size_t)(j0 * nx + i0), c->q[1] = (size_t)(j0 * nx + i1);
+    c->q[2] = (size_t)(j1 * nx + i0), c->q[3] = (size_t)(j1 * nx + i1);
+    c->ax = x - fx, c->ay = y - fy;
+    return 1;
+}
+
+/* Bilinear value of d (stride values a sample) over cell c. */
+static double lerp2(const double *d, size_t stride, const cell *c)
+{
+    return (1 - c->ay) * ((1 - c->ax) * d[stride * c->q[0]] + c->ax * d[stride * c->q[1]]) +
+           c->ay * ((1 - c->ax) * d[stride * c->q[2]] + c->ax * d[stride * c->q[3]]);
+}
+
 /* Bilinear height (zscale applied) at (x, y); NAN outside an untiled field. */
 static double height(const scene *s, double x, double y)
 {
-    long nx = (long)s->f->n[0], ny = (long)s->f->n[1];
-    double fx = floor(x), fy = floor(y), ax = x - fx, ay = y - fy;
-    long i0 = wrap((long)fx, nx, s->v->tile), i1 = wrap((long)fx + 1, nx, s->v->tile);
-    long j0 = wrap((long)fy, ny, s->v->tile), j1 = wrap((long)fy + 1, ny, s->v->tile);
-    const double *d = s->f->data;
-    if (i0 < 0 || i1 < 0 || j0 < 0 || j1 < 0)
+    cell c;
+    if (!cell_at((long)s->f->n[0], (long)s->f->n[1], s->v->tile, x, y, &c))
         return NAN;
-    return s->v->zscale * ((1 - ay) * ((1 - ax) * d[j0 * nx + i0] + ax * d[j0 * nx + i1]) +
-                           ay * ((1 - ax) * d[j1 * nx + i0] + ax * d[j1 * nx + i1]));
+    return s->v->zscale * lerp2(s->f->data, 1, &c);
 }
 
 /* Ground colour by normalised height u and slope (rise per sample). */
@@ -112,13 +135,10 @@ static void light(scene *s)
 
 static void colour_at(const scene *s, double x, double y, double *c)
 {
-    long nx = (long)s->f->n[0], ny = (long)s->f->n[1];
-    double fx = floor(x), fy = floor(y), ax = x - fx, ay = y - fy;
-    long i0 = wrap((long)fx, nx, 1), i1 = wrap((long)fx + 1, nx, 1), j0 = wrap((long)fy, ny, 1),
-         j1 = wrap((long)fy + 1, ny, 1);
+    cell q;
+    cell_at((long)s->f->n[0], (long)s->f->n[1], 1, x, y, &q);
     for (int k = 0; k < 3; k++)
-        c[k] = (1 - ay) * ((1 - ax) * s->rgb[3 * (j0 * nx + i0) + k] + ax * s->rgb[3 * (j0 * nx + i1) + k]) +
-               ay * ((1 - ax) * s->rgb[3 * (j1 * nx + i0) + k] + ax * s->rgb[3 * (j1 * nx + i1) + k]);
+        c[k] = lerp2(s->rgb + k, 3, &q);
 }
 
 static void sky(double elevation, double *c)
@@ -145,13 +165,11 @@ static void sky_at(const terrain_view *v, double cmean, double csd, double dx, d
     sky(elevation, c);
     if (v->clouds && elevation > 0.01) {
         const nl_field *g = v->clouds;
-        double dist = v->cloud_height / tan(elevation), x = (v->cam[0] + dist * dx) / v->cloud_scale,
-               y = (v->cam[1] + dist * dy) / v->cloud_scale;
-        long nx = (long)g->n[0], ny = (long)g->n[1], i = (long)floor(x), j = (long)floor(y);
-        double ax = x - (double)i, ay = y - (double)j, val, cover, white[3] = {0.97, 0.97, 0.98};
-        long i0 = wrap(i, nx, 1), i1 = wrap(i + 1, nx, 1), j0 = wrap(j, ny, 1), j1 = wrap(j + 1, ny, 1);
-        val = (1 - ay) * ((1 - ax) * g->data[j0 * nx + i0] + ax * g->data[j0 * nx + i1]) +
-              ay * ((1 - ax) * g->data[j1 * nx + i0] + ax * g->data[j1 * nx + i1]);
+        double dist = v->cloud_height / tan(elevation), val, cover, white[3] = {0.97, 0.97, 0.98};
+        cell q;
+        cell_at((long)g->n[0], (long)g->n[1], 1, (v->cam[0] + dist * dx) / v->cloud_scale,
+                (v->cam[1] + dist * dy) / v->cloud_scale, &q);
+        val = lerp2(g->data, 1, &q);
         cover = fmin(1, fmax(0, ((val - cmean) / (csd > 0 ? csd : 1) - 0.5) / 1.5));
         mix(c, white, cover * exp(-dist / (4 * v->haze)));
     }

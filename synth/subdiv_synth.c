@@ -105,22 +105,10 @@ static void refine_row_2d(const subdiv_level *l, const grid *src, grid *dst, lon
         } else {
             cl = odd;
         }
-        if (w == 4) {
-            /* the default N = 2, unrolled (same order of operations) */
-            const double *a = cl->a;
-            for (int r = 0; r < 4; r++, a += 4) {
-                const double *x = rows[r] + i;
-                s += a[0] * x[0];
-                s += a[1] * x[1];
-                s += a[2] * x[2];
-                s += a[3] * x[3];
-            }
-        } else {
-            for (int r = 0; r < w; r++) {
-                const double *a = cl->a + r * w, *x = rows[r] + i;
-                for (int q = 0; q < w; q++)
-                    s += a[q] * x[q];
-            }
+        for (int r = 0; r < w; r++) {
+            const double *a = cl->a + r * w, *x = rows[r] + i;
+            for (int q = 0; q < w; q++)
+                s += a[q] * x[q];
         }
         {
             /* odd rows draw at every I: samples 2i and 2i + 1 share a pair;
