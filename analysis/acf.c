@@ -7,7 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-int an_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out)
+int nl_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out)
 {
     nl_field *c;
     int st = nl_autocorr_sums(x, isnan(mean) ? nl_field_mean(x) : mean, &c);
@@ -28,7 +28,7 @@ int an_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out)
     return NL_OK;
 }
 
-int an_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, double *val)
+int nl_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, double *val)
 {
     size_t stride = 1;
     if (axis < 0 || axis >= full->dim)
@@ -44,7 +44,7 @@ int an_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, doub
     return NL_OK;
 }
 
-int an_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t maxlag, double *val)
+int nl_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t maxlag, double *val)
 {
     double m = isnan(mean) ? nl_field_mean(x) : mean;
     size_t stride = 1, n = x->n[axis];
@@ -68,7 +68,7 @@ int an_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t
     return NL_OK;
 }
 
-int an_acf_bartlett(const double *c, size_t nc, size_t N, size_t maxlag, double *var)
+int nl_acf_bartlett(const double *c, size_t nc, size_t N, size_t maxlag, double *var)
 {
     if (nc < 2 * maxlag + 1)
         return NL_ERROR(NL_EINVAL, "bartlett: expected the autocovariance to lag %zu at least", 2 * maxlag);

@@ -13,7 +13,7 @@
 /* Is wrapped frequency index k (of n) above half the Nyquist rate? */
 static int high(size_t k, size_t n) { return 4 * (size_t)labs(nl_wrap(k, n)) > n; }
 
-int an_aliasing_measure(const nl_field *f, double *A)
+int nl_aliasing_measure(const nl_field *f, double *A)
 {
     size_t nx = f->n[0], ny = f->dim == 2 ? f->n[1] : 1, h0 = nx / 2 + 1;
     int dims[2] = {(int)ny, (int)nx}, st;
@@ -52,7 +52,7 @@ int an_aliasing_measure(const nl_field *f, double *A)
     return NL_OK;
 }
 
-int an_aliasing_predict(const nl_model *m, const nl_field *f, double *A)
+int nl_aliasing_predict(const nl_model *m, const nl_field *f, double *A)
 {
     nl_field *S;
     double hi = 0, all = 0;

@@ -9,21 +9,21 @@
  *     measured  A = sum (x[2i] - lowpass(x)[2i])^2 / sum (x[2i] - mean)^2,
  *     predicted A = (spectrum mass above half Nyquist) / (total mass),
  * the prediction from the target's spectrum on the field's grid.
- * Flag: A > AN_ALIAS_MAX, a tenth of the variance changing between levels
+ * Flag: A > NL_ALIAS_MAX, a tenth of the variance changing between levels
  * (Lewis's Fig. 2, levels 3 to 4 of an oscillatory noise, is far above;
  * monotone spectra at fine levels are far below). */
-#ifndef AN_ALIASING_H
-#define AN_ALIASING_H
+#ifndef NL_ALIASING_H
+#define NL_ALIASING_H
 
 #include "../core/field.h"
 #include "../core/model.h"
 
-#define AN_ALIAS_MAX 0.1
+#define NL_ALIAS_MAX 0.1
 
 /* Measured A of a 1D or 2D field with even sizes (periodic). */
-int an_aliasing_measure(const nl_field *f, double *A);
+int nl_aliasing_measure(const nl_field *f, double *A);
 
 /* Predicted A for model m on the grid of f (its n and h). */
-int an_aliasing_predict(const nl_model *m, const nl_field *f, double *A);
+int nl_aliasing_predict(const nl_model *m, const nl_field *f, double *A);
 
 #endif

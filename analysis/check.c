@@ -16,7 +16,7 @@ static double acf_x(const nl_model *m, int dim, double t)
     return nl_model_acf(m, dim, lag);
 }
 
-static int spectrum_checks(const nl_model *m, int dim, an_check *c)
+static int spectrum_checks(const nl_model *m, int dim, nl_check *c)
 {
     size_t n = dim == 1 ? 4096 : dim == 2 ? 256 : 64, nn[3] = {n, n, n};
     double h = 8 * c->scale / (double)n, hh[3] = {h, h, h}, smax = 0, smin = INFINITY;
@@ -52,7 +52,7 @@ static int profile_decay(const nl_model *m, int dim, double L, double *b)
     size_t n = 65536, n1[1] = {n};
     double h = 8 * L / (double)n, *f = malloc(n / 2 * sizeof *f), peak = 0;
     nl_field *R = nl_field_alloc(1, n1, &h, NULL), *S = nl_field_alloc(1, n1, &h, NULL);
-    an_slope sl;
+    nl_slope sl;
     int st = NL_OK;
     if (!R || !S || !f) {
         nl_field_free(R), nl_field_free(S), free(f);
@@ -69,15 +69,15 @@ static int profile_decay(const nl_model *m, int dim, double L, double *b)
     if (S->data[128 * 8] < 1e-13 * peak) {
         /* below rounding: a power law would still show; a faster decay
          * steepens across the band */
-        an_slope lo, hi;
-        st = an_psd_slope(f, S->data, n / 2, 16 / L, 32 / L, 1, &lo);
-        if (!st && an_psd_slope(f, S->data, n / 2, 32 / L, 64 / L, 1, &hi) == NL_OK && S->data[64 * 8] > 1e-13 * peak &&
+        nl_slope lo, hi;
+        st = nl_psd_slope(f, S->data, n / 2, 16 / L, 32 / L, 1, &lo);
+        if (!st && nl_psd_slope(f, S->data, n / 2, 32 / L, 64 / L, 1, &hi) == NL_OK && S->data[64 * 8] > 1e-13 * peak &&
             hi.slope > 1.5 * lo.slope)
             *b = -hi.slope;
         else
             *b = INFINITY;
     } else {
-        st = an_psd_slope(f, S->data, n / 2, 16 / L, 128 / L, 1, &sl);
+        st = nl_psd_slope(f, S->data, n / 2, 16 / L, 128 / L, 1, &sl);
         *b = -sl.slope;
     }
 done:
@@ -85,7 +85,7 @@ done:
     return st;
 }
 
-static int eigen_check(const nl_model *m, int dim, an_check *c)
+static int eigen_check(const nl_model *m, int dim, nl_check *c)
 {
     size_t side = dim == 1 ? 64 : dim == 2 ? 16 : 6, N = dim == 1 ? side : dim == 2 ? side * side : side * side * side;
     double h = c->scale / 16, r0 = acf_x(m, dim, 0), lmin = INFINITY;
@@ -113,7 +113,7 @@ static int eigen_check(const nl_model *m, int dim, an_check *c)
     return st;
 }
 
-int an_check_model(const nl_model *m, int dim, an_check *c)
+int nl_check_model(const nl_model *m, int dim, nl_check *c)
 {
     double r0, zero[3] = {0, 0, 0};
     int st;
@@ -177,7 +177,7 @@ int an_check_model(const nl_model *m, int dim, an_check *c)
     /* subdivision singularity, 1D N = 2 along x */
     c->singular_below = 0;
     if (!isnan(r0) && dim == 1) {
-        subdiv_class cl;
+        nl_subdiv_class cl;
         double a[4], pts[4], tgt[1];
         cl.a = a;
         for (int k = 0; k <= 24; k++) {
@@ -185,9 +185,9 @@ int an_check_model(const nl_model *m, int dim, an_check *c)
             for (int i = 0; i < 4; i++)
                 pts[i] = (i - 1) * s;
             tgt[0] = 0.5 * s;
-            if (subdiv_solve(m, 1, 4, pts, tgt, NULL, &cl))
+            if (nl_subdiv_solve(m, 1, 4, pts, tgt, NULL, &cl))
                 break;
-            if (cl.flags & SUBDIV_SINGULAR) {
+            if (cl.flags & NL_SUBDIV_SINGULAR) {
                 c->singular_below = s;
                 break;
             }

@@ -21,12 +21,12 @@
  * symbolic second derivative for expressions, a finite difference
  * otherwise.  singular_below_spacing is the largest spacing s = L / 2^k,
  * k <= 24, at which the 1D N = 2 subdivision matrix has condition number
- * above SUBDIV_COND_MAX (0 when it never does): within 24 octaves below the
+ * above NL_SUBDIV_COND_MAX (0 when it never does): within 24 octaves below the
  * correlation length, smooth (singular) processes lose rank while rough
  * ones such as exp(-|t|) keep it (their matrices lose rank too, but only at
  * spacings near 1e-10 L, below any sampling that resolves them). */
-#ifndef AN_CHECK_H
-#define AN_CHECK_H
+#ifndef NL_CHECK_H
+#define NL_CHECK_H
 
 #include "../core/model.h"
 
@@ -44,8 +44,8 @@ typedef struct {
     int differentiable_order;/* m; -1 infinitely */
     double r2;               /* R''(0) (-INFINITY when it does not exist) */
     double singular_below;   /* spacing, or 0 */
-} an_check;
+} nl_check;
 
-int an_check_model(const nl_model *m, int dim, an_check *out);
+int nl_check_model(const nl_model *m, int dim, nl_check *out);
 
 #endif

@@ -18,7 +18,7 @@ static int tz(size_t i, int max)
     return t;
 }
 
-int an_creases_measure(const nl_field *f, int levels, an_creases *out)
+int nl_creases_measure(const nl_field *f, int levels, nl_creases *out)
 {
     size_t nx = f->n[0], ny = f->dim == 2 ? f->n[1] : 1;
     double sum[41] = {0}, use[40];
@@ -59,6 +59,6 @@ int an_creases_measure(const nl_field *f, int levels, an_creases *out)
                         "use a larger field or more levels");
     gsl_sort(use, 1, nuse);
     out->index = gsl_stats_median_from_sorted_data(use, 1, nuse);
-    out->flagged = out->index > AN_CREASE_MAX;
+    out->flagged = out->index > NL_CREASE_MAX;
     return NL_OK;
 }

@@ -12,31 +12,31 @@
  * is 1 in expectation for the target.  The crease index is the median of
  * r_k over the levels 1..L-1 that hold at least 64 samples.
  *
- * Flag: index > AN_CREASE_MAX.  Reference values (1D, 65536 samples, 12
+ * Flag: index > NL_CREASE_MAX.  Reference values (1D, 65536 samples, 12
  * levels): midpoint displacement H = 0.8 (f^-2.6) 1.8; generalized
  * subdivision N = 2 to power:d=2.6 1.2; exp(-|t|) 1.0.  A sampling error
  * of the index is about sqrt(2 / 64 + 2 / n_L) <= 0.18 for the smallest
  * level used, so 1.5 is beyond sampling error and beyond the residual
  * non-stationarity of generalized subdivision. */
-#ifndef AN_CREASES_H
-#define AN_CREASES_H
+#ifndef NL_CREASES_H
+#define NL_CREASES_H
 
 #include "../core/field.h"
 
 #include <stddef.h>
 
-#define AN_CREASE_MAX 1.5
+#define NL_CREASE_MAX 1.5
 
 typedef struct {
     int levels;        /* L */
     double ratio[41];  /* r_k for k = 0..L (NAN where fewer than 64 samples) */
     size_t count[41];  /* samples created at level k */
     double index;      /* median r_k over usable levels 1..L-1 */
-    int flagged;       /* index > AN_CREASE_MAX */
-} an_creases;
+    int flagged;       /* index > NL_CREASE_MAX */
+} nl_creases;
 
 /* f: 1D or 2D field made by `levels` levels of refinement (each size a
  * multiple of 2^levels). */
-int an_creases_measure(const nl_field *f, int levels, an_creases *out);
+int nl_creases_measure(const nl_field *f, int levels, nl_creases *out);
 
 #endif

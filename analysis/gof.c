@@ -25,7 +25,7 @@ static double q_ks(double l)
     return fmin(fmax(2 * s, 0), 1);
 }
 
-int an_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, an_gof *out)
+int nl_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl_gof *out)
 {
     double *s, D = 0, en;
     size_t *count;

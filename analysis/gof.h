@@ -7,8 +7,8 @@
  * X^2 = sum (O - E)^2 / E, p = Q_chi2(X^2; B - 1).
  * Both assume independent samples: for a correlated field, test a white
  * field or a decimation much sparser than the correlation length. */
-#ifndef AN_GOF_H
-#define AN_GOF_H
+#ifndef NL_GOF_H
+#define NL_GOF_H
 
 #include "../core/dist.h"
 
@@ -20,8 +20,8 @@ typedef struct {
     double chi2;     /* chi-square statistic */
     size_t bins;     /* chi-square bins */
     double p_chi2;   /* chi-square p-value */
-} an_gof;
+} nl_gof;
 
-int an_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, an_gof *out);
+int nl_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl_gof *out);
 
 #endif

@@ -6,7 +6,7 @@
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
 
-int an_moments_compute(const nl_field *x, an_moments *m)
+int nl_moments_compute(const nl_field *x, nl_moments *m)
 {
     if (x->count < 2)
         return NL_ERROR(NL_EINVAL, "moments: expected at least 2 samples, got %zu", x->count);
@@ -19,7 +19,7 @@ int an_moments_compute(const nl_field *x, an_moments *m)
     return NL_OK;
 }
 
-int an_hist(const nl_field *x, size_t bins, double *edges, double *counts)
+int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
 {
     double lo, hi;
     gsl_histogram *h;

@@ -1,6 +1,6 @@
 /* Histogram and moments of a field's samples (GSL statistics). */
-#ifndef AN_HIST_H
-#define AN_HIST_H
+#ifndef NL_HIST_H
+#define NL_HIST_H
 
 #include "../core/field.h"
 
@@ -13,12 +13,12 @@ typedef struct {
     double skewness;  /* third standardised moment (GSL: sample sd) */
     double kurtosis;  /* excess kurtosis: fourth standardised moment - 3 */
     double min, max;  /* range */
-} an_moments;
+} nl_moments;
 
-int an_moments_compute(const nl_field *x, an_moments *m);
+int nl_moments_compute(const nl_field *x, nl_moments *m);
 
 /* Histogram of `bins` equal bins over [min, max] of the samples (the maximum
  * falls in the last bin): edges[0..bins], counts[0..bins-1]. */
-int an_hist(const nl_field *x, size_t bins, double *edges, double *counts);
+int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
 
 #endif

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-struct krige_plan {
+struct nl_krige_plan {
     const nl_model *m;  /* the covariance (borrowed) */
     int dim;            /* 1..3 */
     size_t n;           /* points */
@@ -21,10 +21,10 @@ struct krige_plan {
     gsl_vector *u;      /* C^-1 1 */
     gsl_vector *w;      /* L^-1 1 (with L), for the blocked variance */
     double s;           /* 1^T C^-1 1 */
-    krige_info info;
+    nl_krige_info info;
 };
 
-void krige_plan_free(krige_plan *p)
+void nl_krige_plan_free(nl_krige_plan *p)
 {
     if (!p)
         return;
@@ -33,7 +33,7 @@ void krige_plan_free(krige_plan *p)
     free(p->pts), free(p);
 }
 
-static double cov(const krige_plan *p, const double *x, const double *y)
+static double cov(const nl_krige_plan *p, const double *x, const double *y)
 {
     double lag[3] = {0, 0, 0};
     for (int a = 0; a < p->dim; a++)
@@ -42,7 +42,7 @@ static double cov(const krige_plan *p, const double *x, const double *y)
 }
 
 /* y = C^-1 b */
-static void solve(const krige_plan *p, const gsl_vector *b, gsl_vector *y)
+static void solve(const nl_krige_plan *p, const gsl_vector *b, gsl_vector *y)
 {
     if (p->L)
         gsl_linalg_cholesky_solve(p->L, b, y);
@@ -50,7 +50,7 @@ static void solve(const krige_plan *p, const gsl_vector *b, gsl_vector *y)
         gsl_blas_dgemv(CblasNoTrans, 1.0, p->pinv, b, 0.0, y);
 }
 
-static int pseudo_inverse(krige_plan *p, const gsl_matrix *C)
+static int pseudo_inverse(nl_krige_plan *p, const gsl_matrix *C)
 {
     size_t n = p->n;
     gsl_matrix *U = gsl_matrix_alloc(n, n), *V = gsl_matrix_alloc(n, n);
@@ -69,7 +69,7 @@ static int pseudo_inverse(krige_plan *p, const gsl_matrix *C)
         for (size_t k = 0; k < n; k++) {
             double sk = gsl_vector_get(S, k);
             gsl_vector_view col = gsl_matrix_column(V, k);
-            gsl_vector_scale(&col.vector, sk > KRIGE_RCOND_MIN * smax ? 1 / sk : 0);
+            gsl_vector_scale(&col.vector, sk > NL_KRIGE_RCOND_MIN * smax ? 1 / sk : 0);
         }
         gsl_blas_dgemm(CblasNoTrans, CblasTrans, 1.0, V, U, 0.0, p->pinv);
     }
@@ -77,10 +77,10 @@ static int pseudo_inverse(krige_plan *p, const gsl_matrix *C)
     return st;
 }
 
-int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
-                     double mean, int strict, krige_plan **out)
+int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
+                     double mean, int strict, nl_krige_plan **out)
 {
-    krige_plan *p;
+    nl_krige_plan *p;
     gsl_matrix *C;
     gsl_vector *d, *one;
     double zero[3] = {0, 0, 0};
@@ -107,7 +107,7 @@ int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, co
     d = gsl_vector_alloc(n), one = gsl_vector_alloc(n);
     p->a = gsl_vector_alloc(n), p->u = gsl_vector_alloc(n);
     if (!C || !d || !one || !p->a || !p->u) {
-        gsl_matrix_free(C), gsl_vector_free(d), gsl_vector_free(one), krige_plan_free(p);
+        gsl_matrix_free(C), gsl_vector_free(d), gsl_vector_free(one), nl_krige_plan_free(p);
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu data points", n);
     }
     for (size_t i = 0; i < n; i++) {
@@ -125,7 +125,7 @@ int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, co
     } else {
         p->info.rcond = 0;
     }
-    if (p->info.rcond < KRIGE_RCOND_MIN) {
+    if (p->info.rcond < NL_KRIGE_RCOND_MIN) {
         gsl_matrix_free(p->L);
         p->L = NULL;
         if (strict)
@@ -161,16 +161,16 @@ int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, co
     }
     gsl_matrix_free(C), gsl_vector_free(d), gsl_vector_free(one);
     if (st) {
-        krige_plan_free(p);
+        nl_krige_plan_free(p);
         return st;
     }
     *out = p;
     return NL_OK;
 }
 
-void krige_plan_info(const krige_plan *p, krige_info *info) { *info = p->info; }
+void nl_krige_plan_info(const nl_krige_plan *p, nl_krige_info *info) { *info = p->info; }
 
-int krige_eval(const krige_plan *p, const double *x, double *est, double *var, double *lambda)
+int nl_krige_eval(const nl_krige_plan *p, const double *x, double *est, double *var, double *lambda)
 {
     size_t n = p->n;
     double e = p->info.mean;
@@ -208,7 +208,7 @@ int krige_eval(const krige_plan *p, const double *x, double *est, double *var, d
     return NL_OK;
 }
 
-/* z <- L^-1 z for the n x KRIGE_BLOCK matrix z (row-major), L lower
+/* z <- L^-1 z for the n x NL_KRIGE_BLOCK matrix z (row-major), L lower
  * triangular with row stride tda.  Rows are solved four at a time, so each
  * solved row of z is loaded once per four updates; every row's updates are
  * still subtracted in the order k = 0, 1, ..., i - 1, so the result is the
@@ -217,7 +217,7 @@ int krige_eval(const krige_plan *p, const double *x, double *est, double *var, d
 __attribute__((target_clones("avx512f", "avx2", "default"))) static void
 forward_block(const double *L, size_t tda, size_t n, double *restrict z)
 {
-    enum { B = KRIGE_BLOCK, R = 4 };
+    enum { B = NL_KRIGE_BLOCK, R = 4 };
     size_t i0 = 0;
     for (; i0 + R <= n; i0 += R) {
         double acc[R][B];
@@ -259,15 +259,15 @@ forward_block(const double *L, size_t tda, size_t n, double *restrict z)
 
 /* The variance of many points at once: with z = L^-1 c0, c0^T C^-1 c0 = |z|^2
  * and 1^T C^-1 c0 = (L^-1 1) . z, so one forward substitution serves all
- * KRIGE_BLOCK points of a block, streaming L once per block instead of once
+ * NL_KRIGE_BLOCK points of a block, streaming L once per block instead of once
  * per point (the per-point solve is bound by memory bandwidth). */
-int krige_eval_block(const krige_plan *p, size_t count, const double *x, double *est, double *var)
+int nl_krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var)
 {
-    size_t n = p->n, B = KRIGE_BLOCK;
+    size_t n = p->n, B = NL_KRIGE_BLOCK;
     double *z;
     if (!p->L || !var) {
         for (size_t q = 0; q < count; q++) {
-            int st = krige_eval(p, x + q * (size_t)p->dim, &est[q], var ? &var[q] : NULL, NULL);
+            int st = nl_krige_eval(p, x + q * (size_t)p->dim, &est[q], var ? &var[q] : NULL, NULL);
             if (st)
                 return st;
         }

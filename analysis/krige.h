@@ -14,47 +14,47 @@
  * a = C^-1 (d - b 1) stored, and each estimate costs O(n) (the variance
  * O(n^2), a triangular solve).  A singular C (duplicate points, a Gaussian
  * model with points closer than its scale resolves in double precision:
- * Cholesky fails or its reciprocal condition number is below KRIGE_RCOND_MIN)
+ * Cholesky fails or its reciprocal condition number is below NL_KRIGE_RCOND_MIN)
  * is solved by the SVD pseudo-inverse (singular values below
- * KRIGE_RCOND_MIN of the largest dropped) and flagged, or refused when the
+ * NL_KRIGE_RCOND_MIN of the largest dropped) and flagged, or refused when the
  * caller asks for strictness. */
-#ifndef AN_KRIGE_H
-#define AN_KRIGE_H
+#ifndef NL_KRIGE_H
+#define NL_KRIGE_H
 
 #include "../core/model.h"
 
 #include <stddef.h>
 
-#define KRIGE_RCOND_MIN 1e-12
+#define NL_KRIGE_RCOND_MIN 1e-12
 
-typedef struct krige_plan krige_plan;
+typedef struct nl_krige_plan nl_krige_plan;
 
 typedef struct {
     size_t n;           /* data points */
     double rcond;       /* reciprocal condition number of C (1-norm estimate) */
     int pseudo_inverse; /* C was singular: solved by the pseudo-inverse */
     double mean;        /* b (ordinary) or m (simple) */
-} krige_info;
+} nl_krige_info;
 
 /* pts: n points of dim coordinates; simple: use `mean` as the known mean.
  * strict: refuse a singular system (NL_EINVAL naming it) instead of the
  * pseudo-inverse. */
-int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
-                     double mean, int strict, krige_plan **out);
+int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
+                     double mean, int strict, nl_krige_plan **out);
 
 /* Estimate at x; *var (may be NULL) receives the kriging variance.  The
  * weights lambda (n doubles, may be NULL) are filled when asked (O(n^2)).
  * Thread-safe for models that are (not expr:). */
-int krige_eval(const krige_plan *p, const double *x, double *est, double *var, double *lambda);
+int nl_krige_eval(const nl_krige_plan *p, const double *x, double *est, double *var, double *lambda);
 
-/* krige_eval for `count` points x (count * dim coordinates) at once: the
+/* nl_krige_eval for `count` points x (count * dim coordinates) at once: the
  * same estimates and variances (to rounding), with the variances of
- * KRIGE_BLOCK points computed together (several times faster for large n).
- * var may be NULL.  Thread-safe like krige_eval; blocks may run in parallel. */
-#define KRIGE_BLOCK 64
-int krige_eval_block(const krige_plan *p, size_t count, const double *x, double *est, double *var);
+ * NL_KRIGE_BLOCK points computed together (several times faster for large n).
+ * var may be NULL.  Thread-safe like nl_krige_eval; blocks may run in parallel. */
+#define NL_KRIGE_BLOCK 64
+int nl_krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var);
 
-void krige_plan_info(const krige_plan *p, krige_info *info);
-void krige_plan_free(krige_plan *p);
+void nl_krige_plan_info(const nl_krige_plan *p, nl_krige_info *info);
+void nl_krige_plan_free(nl_krige_plan *p);
 
 #endif

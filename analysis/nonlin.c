@@ -11,13 +11,13 @@
 #include <math.h>
 #include <string.h>
 
-int an_hermite_expand(const nl_dist *to, int terms, an_hermite *h)
+int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h)
 {
     const size_t nodes = 400;
     gsl_integration_fixed_workspace *w;
-    double he[AN_HERMITE_MAX + 1], m1 = 0, m2 = 0;
-    if (terms < 2 || terms > AN_HERMITE_MAX)
-        return NL_ERROR(NL_EINVAL, "terms: expected 2 to %d Hermite terms, got %d", AN_HERMITE_MAX, terms);
+    double he[NL_HERMITE_MAX + 1], m1 = 0, m2 = 0;
+    if (terms < 2 || terms > NL_HERMITE_MAX)
+        return NL_ERROR(NL_EINVAL, "terms: expected 2 to %d Hermite terms, got %d", NL_HERMITE_MAX, terms);
     /* weight exp(-u^2); E[f(Z)] = pi^-1/2 int f(sqrt 2 u) exp(-u^2) du */
     w = gsl_integration_fixed_alloc(gsl_integration_fixed_hermite, nodes, 0, 1, 0, 0);
     if (!w)
@@ -48,7 +48,7 @@ int an_hermite_expand(const nl_dist *to, int terms, an_hermite *h)
     return NL_OK;
 }
 
-double an_hermite_cov(const an_hermite *h, double rho)
+double nl_hermite_cov(const nl_hermite *h, double rho)
 {
     double s = 0, p = 1;
     for (int n = 1; n < h->terms; n++) {
@@ -58,14 +58,14 @@ double an_hermite_cov(const an_hermite *h, double rho)
     return s;
 }
 
-double an_hermite_invert(const an_hermite *h, double cov)
+double nl_hermite_invert(const nl_hermite *h, double cov)
 {
     double lo = -1, hi = 1;
-    double flo = an_hermite_cov(h, lo), fhi = an_hermite_cov(h, hi);
+    double flo = nl_hermite_cov(h, lo), fhi = nl_hermite_cov(h, hi);
     if (cov < fmin(flo, fhi) || cov > fmax(flo, fhi))
         return NAN;
     for (int i = 0; i < 100; i++) {
-        double mid = 0.5 * (lo + hi), f = an_hermite_cov(h, mid);
+        double mid = 0.5 * (lo + hi), f = nl_hermite_cov(h, mid);
         if ((f < cov) == (fhi > flo))
             lo = mid;
         else
@@ -74,10 +74,10 @@ double an_hermite_invert(const an_hermite *h, double cov)
     return 0.5 * (lo + hi);
 }
 
-int an_nonlin_design(const an_hermite *h, const double *target, size_t n, double spacing, double *rho, double *S,
+int nl_nonlin_design(const nl_hermite *h, const double *target, size_t n, double spacing, double *rho, double *S,
                      double *err, size_t *unreachable)
 {
-    double var = an_hermite_cov(h, 1.0), scale, e = 0;
+    double var = nl_hermite_cov(h, 1.0), scale, e = 0;
     size_t bad = 0;
     int st;
     nl_field *R = nl_field_alloc(1, &n, &spacing, &st), *Sp = R ? nl_field_alloc(1, &n, &spacing, &st) : NULL;
@@ -91,7 +91,7 @@ int an_nonlin_design(const an_hermite *h, const double *target, size_t n, double
     }
     scale = var / target[0];
     for (size_t j = 0; j < n; j++) {
-        double r = an_hermite_invert(h, target[j] * scale);
+        double r = nl_hermite_invert(h, target[j] * scale);
         if (isnan(r)) {  /* beyond what g can produce: the nearest end */
             bad++;
             r = target[j] * scale > 0 ? 1 : -1;
@@ -111,7 +111,7 @@ int an_nonlin_design(const an_hermite *h, const double *target, size_t n, double
             Sp->data[k] /= r0;
         for (size_t j = 0; j < n; j++) {
             rho[j] = R->data[j] / r0;
-            e = fmax(e, fabs(an_hermite_cov(h, fmax(-1, fmin(1, rho[j]))) - target[j] * scale) / var);
+            e = fmax(e, fabs(nl_hermite_cov(h, fmax(-1, fmin(1, rho[j]))) - target[j] * scale) / var);
         }
         if (S)
             for (size_t k = 0; k < n; k++)

@@ -13,42 +13,42 @@
  * The c_n are computed by Gauss-Hermite quadrature (GSL fixed quadrature,
  * 400 nodes); the variance left out by K terms, Var(y) - sum_{n<K} c_n^2 n!,
  * is reported as the truncation error. */
-#ifndef AN_NONLIN_H
-#define AN_NONLIN_H
+#ifndef NL_NONLIN_H
+#define NL_NONLIN_H
 
 #include "../core/dist.h"
 
-#define AN_HERMITE_MAX 64
+#define NL_HERMITE_MAX 64
 
 typedef struct {
     int terms;                    /* K */
-    double c[AN_HERMITE_MAX];     /* c_0 .. c_{K-1} */
+    double c[NL_HERMITE_MAX];     /* c_0 .. c_{K-1} */
     double variance;              /* Var(y), by the same quadrature */
     double truncation;            /* Var(y) - sum_{1<=n<K} c_n^2 n! */
-} an_hermite;
+} nl_hermite;
 
-int an_hermite_expand(const nl_dist *to, int terms, an_hermite *h);
+int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h);
 
 /* Output covariance at input correlation rho (|rho| <= 1). */
-double an_hermite_cov(const an_hermite *h, double rho);
+double nl_hermite_cov(const nl_hermite *h, double rho);
 
 /* Inverse: the input correlation rho in [-1, 1] whose output covariance is
  * `cov` (bisection; the series is increasing in rho for rho >= 0); NAN when
  * cov is out of the attainable range. */
-double an_hermite_invert(const an_hermite *h, double cov);
+double nl_hermite_invert(const nl_hermite *h, double cov);
 
 /* Design (GI '86: "in theory it should be possible to design the spectrum
  * of the undistorted noise so that a desired spectrum is achieved after
  * distortion"): given the wanted output covariance `target` on a periodic
  * 1D grid (wrapped order, n samples; it is rescaled so that target[0] is
  * the output variance of g), find the input correlation lag by lag with
- * an_hermite_invert, then project onto valid spectra: the input's spectrum
+ * nl_hermite_invert, then project onto valid spectra: the input's spectrum
  * (core/wk.h, spacing h) with negative values set to 0 and its variance
  * back to 1.  rho[] (n) receives the designed input correlation, S[] (n,
  * may be NULL) its spectrum; *err the largest |predicted output - target|
  * relative to the output variance after projection; *unreachable the lags
  * whose target lies outside the output covariances g can produce. */
-int an_nonlin_design(const an_hermite *h, const double *target, size_t n, double spacing, double *rho, double *S,
+int nl_nonlin_design(const nl_hermite *h, const double *target, size_t n, double spacing, double *rho, double *S,
                      double *err, size_t *unreachable);
 
 #endif

@@ -9,7 +9,7 @@
 #include <fftw3.h>
 #include <math.h>
 
-int an_psd_periodogram(const nl_field *x, double mean, nl_field **out)
+int nl_psd_periodogram(const nl_field *x, double mean, nl_field **out)
 {
     size_t h0 = x->n[0] / 2 + 1, rows = x->count / x->n[0];
     double cell = x->h[0] * x->h[1] * x->h[2], m = isnan(mean) ? nl_field_mean(x) : mean;

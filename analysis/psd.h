@@ -6,11 +6,11 @@
  * unit length.  P is a TWO-SIDED density: Parseval holds as
  *     sum_k P_k / (n_1 h_1 ... n_d h_d) = (1/N) sum_j (x_j - m)^2,
  * and E[P_k] is the spectrum S(f_k) smoothed by the Fejer kernel. */
-#ifndef AN_PSD_H
-#define AN_PSD_H
+#ifndef NL_PSD_H
+#define NL_PSD_H
 
 #include "../core/field.h"
 
-int an_psd_periodogram(const nl_field *x, double mean, nl_field **out);
+int nl_psd_periodogram(const nl_field *x, double mean, nl_field **out);
 
 #endif

@@ -6,13 +6,13 @@
 #include <math.h>
 #include <stdlib.h>
 
-int an_radial(const nl_field *g, int kind, double step, size_t nbins, double *r, double *v, size_t *cnt)
+int nl_radial(const nl_field *g, int kind, double step, size_t nbins, double *r, double *v, size_t *cnt)
 {
     double unit[3] = {0, 0, 0};
     if (!(step > 0))
         return NL_ERROR(NL_EINVAL, "radial average: expected a positive bin width, got %g", step);
     for (int a = 0; a < g->dim; a++)
-        unit[a] = kind == AN_GRID_FREQ ? 1.0 / ((double)g->n[a] * g->h[a]) : g->h[a];
+        unit[a] = kind == NL_GRID_FREQ ? 1.0 / ((double)g->n[a] * g->h[a]) : g->h[a];
     for (size_t b = 0; b < nbins; b++)
         r[b] = v[b] = 0, cnt[b] = 0;
     for (size_t k = 0; k < g->n[2]; k++)

@@ -6,15 +6,15 @@
  * (b - 0.5) step <= d < (b + 0.5) step; r[b] is the mean distance of its
  * samples, v[b] their mean value and cnt[b] their number (r = v = NAN when
  * empty). */
-#ifndef AN_RADIAL_H
-#define AN_RADIAL_H
+#ifndef NL_RADIAL_H
+#define NL_RADIAL_H
 
 #include "../core/field.h"
 
 #include <stddef.h>
 
-enum { AN_GRID_LAG = 0, AN_GRID_FREQ = 1 };
+enum { NL_GRID_LAG = 0, NL_GRID_FREQ = 1 };
 
-int an_radial(const nl_field *g, int kind, double step, size_t nbins, double *r, double *v, size_t *cnt);
+int nl_radial(const nl_field *g, int kind, double step, size_t nbins, double *r, double *v, size_t *cnt);
 
 #endif

@@ -10,7 +10,7 @@
 
 /* Least squares of y on x (m points): slope, 95% interval from the
  * residuals, eq. (16). */
-static int fit(const double *x, const double *y, size_t m, int E, an_slope *out)
+static int fit(const double *x, const double *y, size_t m, int E, nl_slope *out)
 {
     double c0, c1, cov00, cov01, cov11, ss;
     if (m < 3)
@@ -25,7 +25,7 @@ static int fit(const double *x, const double *y, size_t m, int E, an_slope *out)
     return NL_OK;
 }
 
-int an_psd_slope_grid(const nl_field *P, double fmin, double fmax, an_slope *out)
+int nl_psd_slope_grid(const nl_field *P, double fmin, double fmax, nl_slope *out)
 {
     double *x = malloc(P->count * sizeof *x), *y = malloc(P->count * sizeof *y);
     size_t m = 0;
@@ -53,7 +53,7 @@ int an_psd_slope_grid(const nl_field *P, double fmin, double fmax, an_slope *out
     return st;
 }
 
-int an_psd_slope(const double *f, const double *psd, size_t n, double fmin, double fmax, int E, an_slope *out)
+int nl_psd_slope(const double *f, const double *psd, size_t n, double fmin, double fmax, int E, nl_slope *out)
 {
     double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y);
     size_t m = 0;

@@ -8,8 +8,8 @@
  * slope -3.6, profile d = 2.6 and D = 2.2).  The residuals are treated as
  * independent, which holds for periodogram ordinates at distinct Fourier
  * frequencies of a long record. */
-#ifndef AN_SLOPE_H
-#define AN_SLOPE_H
+#ifndef NL_SLOPE_H
+#define NL_SLOPE_H
 
 #include "../core/field.h"
 
@@ -20,18 +20,18 @@ typedef struct {
     double ci95;      /* half-width of the 95% confidence interval */
     size_t points;    /* frequencies used */
     double fractal_dim; /* eq. (16) */
-} an_slope;
+} nl_slope;
 
 /* Frequencies f[i] with fmin <= f <= fmax and psd > 0 are used. */
-int an_psd_slope(const double *f, const double *psd, size_t n, double fmin, double fmax, int E, an_slope *out);
+int nl_psd_slope(const double *f, const double *psd, size_t n, double fmin, double fmax, int E, nl_slope *out);
 
 /* The same fitted to every ordinate of a 2D or 3D periodogram P (wrapped
- * order, as an_psd_periodogram makes it) with fmin <= |f| <= fmax, each
+ * order, as nl_psd_periodogram makes it) with fmin <= |f| <= fmax, each
  * Hermitian pair once: log-periodogram regression.  The ordinates of a
  * Gaussian field's periodogram are close to independent with a log of
  * constant variance, so the least-squares interval holds; fitting the
  * radial average instead gives too narrow an interval (its low-frequency
  * rings hold few ordinates, over which a steep spectrum varies). */
-int an_psd_slope_grid(const nl_field *P, double fmin, double fmax, an_slope *out);
+int nl_psd_slope_grid(const nl_field *P, double fmin, double fmax, nl_slope *out);
 
 #endif

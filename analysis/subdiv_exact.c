@@ -17,11 +17,11 @@ typedef struct {
 
 static long wrap(long i, long n) { return ((i % n) + n) % n; }
 
-static void make_stencil(const subdiv_level *l, int dim, long cx, long cy, long I, long J, stencil *s)
+static void make_stencil(const nl_subdiv_level *l, int dim, long cx, long cy, long I, long J, stencil *s)
 {
     long i = I / 2, j = J / 2;
     int ox = (int)(I % 2), oy = (int)(J % 2), N = l->N, w = 2 * N;
-    const subdiv_class *cl;
+    const nl_subdiv_class *cl;
     s->n = 0;
     if (!ox && !oy) {
         s->n = 1, s->idx[0] = j * cx + i, s->w[0] = 1, s->var = 0;
@@ -40,7 +40,7 @@ static void make_stencil(const subdiv_level *l, int dim, long cx, long cy, long 
     s->var = cl->variance;
 }
 
-int an_subdiv_exact_acf(const subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,
+int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,
                         const long *lags, double *out)
 {
     const int dim = c->dim;

@@ -13,8 +13,8 @@
  * must match and which measures the method's own error against the target.
  * Memory is (n_x n_y)^2 doubles: meant for fields up to about 64 x 64
  * (4096 samples) or 4096 samples in 1D. */
-#ifndef AN_SUBDIV_EXACT_H
-#define AN_SUBDIV_EXACT_H
+#ifndef NL_SUBDIV_EXACT_H
+#define NL_SUBDIV_EXACT_H
 
 #include "../core/field.h"
 #include "../core/model.h"
@@ -24,7 +24,7 @@
  * mean of C(p, p + lag) over the positions p with p and p + lag inside the
  * nx x ny field (n = 1 in 1D), i.e. E of the unbiased estimate with known
  * mean 0.  m is the model the coefficients were made from. */
-int an_subdiv_exact_acf(const subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,
+int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,
                         const long *lags, double *out);
 
 #endif

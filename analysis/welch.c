@@ -10,7 +10,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-int an_psd_welch(const nl_field *x, size_t S, double mean, nl_field **out, size_t *segments)
+int nl_psd_welch(const nl_field *x, size_t S, double mean, nl_field **out, size_t *segments)
 {
     int dim = x->dim, dims[2] = {(int)S, (int)S}, st;
     size_t ny = dim == 2 ? x->n[1] : 1, n2[2] = {S, S}, half = S / 2, cnt = 0, H = S / 2 + 1, rows = dim == 2 ? S : 1;

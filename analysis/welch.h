@@ -8,14 +8,14 @@
  * frequency grid (wrapped order, core/wk.h), with about 1/(number of
  * segments) of a single periodogram's variance, at the price of the window's
  * resolution (a main lobe of 4/S cycles per sample). */
-#ifndef AN_WELCH_H
-#define AN_WELCH_H
+#ifndef NL_WELCH_H
+#define NL_WELCH_H
 
 #include "../core/field.h"
 
 #include <stddef.h>
 
 /* mean: NAN for the sample mean.  *segments receives the count averaged. */
-int an_psd_welch(const nl_field *x, size_t S, double mean, nl_field **out, size_t *segments);
+int nl_psd_welch(const nl_field *x, size_t S, double mean, nl_field **out, size_t *segments);
 
 #endif

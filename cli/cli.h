@@ -10,24 +10,24 @@
 #include <stdint.h>
 
 /* Subcommand entry points: argv[0] is the subcommand name. */
-int cmd_synth(int argc, char **argv);
-int cmd_acf(int argc, char **argv);
-int cmd_psd(int argc, char **argv);
-int cmd_hist(int argc, char **argv);
-int cmd_models(int argc, char **argv);
-int cmd_coeffs(int argc, char **argv);
-int cmd_check(int argc, char **argv);
-int cmd_validate(int argc, char **argv);
-int cmd_card(int argc, char **argv);
-int cmd_nonlin(int argc, char **argv);
-int cmd_lattice(int argc, char **argv);
-int cmd_ocean(int argc, char **argv);
-int cmd_krige(int argc, char **argv);
-int cmd_cloud(int argc, char **argv);
-int cmd_detect(int argc, char **argv);
-int cmd_shape(int argc, char **argv);
-int cmd_render(int argc, char **argv);
-int cmd_bench(int argc, char **argv);
+int cli_cmd_synth(int argc, char **argv);
+int cli_cmd_acf(int argc, char **argv);
+int cli_cmd_psd(int argc, char **argv);
+int cli_cmd_hist(int argc, char **argv);
+int cli_cmd_models(int argc, char **argv);
+int cli_cmd_coeffs(int argc, char **argv);
+int cli_cmd_check(int argc, char **argv);
+int cli_cmd_validate(int argc, char **argv);
+int cli_cmd_card(int argc, char **argv);
+int cli_cmd_nonlin(int argc, char **argv);
+int cli_cmd_lattice(int argc, char **argv);
+int cli_cmd_ocean(int argc, char **argv);
+int cli_cmd_krige(int argc, char **argv);
+int cli_cmd_cloud(int argc, char **argv);
+int cli_cmd_detect(int argc, char **argv);
+int cli_cmd_shape(int argc, char **argv);
+int cli_cmd_render(int argc, char **argv);
+int cli_cmd_bench(int argc, char **argv);
 
 /* Print "noiselab: MSG" on stderr and exit with `code` (2: bad usage or
  * input, 1: failure while running).  Pending outputs are removed. */
@@ -82,7 +82,7 @@ void cli_json_print(json_t *obj);
 json_t *cli_json_array(const double *v, size_t n);
 
 /* A TSV table to `path`, or to stdout when path is NULL. */
-int write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
+int cli_write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
                 const double *const *cols);
 
 /* Read a field (EXR, PNG or TSV), exiting on error. */

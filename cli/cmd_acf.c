@@ -65,7 +65,7 @@ static void target_values(const char *spec, const nl_field *x, int axis, const d
     nl_model_free(m);
 }
 
-int cmd_acf(int argc, char **argv)
+int cli_cmd_acf(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"max-lag", required_argument, 0, 'L'}, {"axis", required_argument, 0, 'a'},
@@ -122,7 +122,7 @@ int cmd_acf(int argc, char **argv)
     nl += 1;
     if (out)
         tmp = cli_out_begin(out);
-    if ((st = an_acf_full(x, mean, unbiased, &full)))
+    if ((st = nl_acf_full(x, mean, unbiased, &full)))
         cli_die_status(st);
     if (out && cli_has_ext(out, ".exr")) {
         /* the whole ACF, lag 0 at the centre (lags -(n-1) .. n-1 per axis) */
@@ -161,16 +161,16 @@ int cmd_acf(int argc, char **argv)
     if (bands && (x->dim != 1 || unbiased))
         cli_die(2, "acf: --bands is for the biased estimate of a 1D field");
     if (direct) {
-        st = an_acf_direct(x, mean, unbiased, axis, nl - 1, val);
+        st = nl_acf_direct(x, mean, unbiased, axis, nl - 1, val);
         for (size_t i = 0; i < nl; i++)
             lag[i] = (double)i * x->h[axis];
     } else if (radial) {
         double step = x->h[0];
         for (int a = 1; a < x->dim; a++)
             step = fmin(step, x->h[a]);
-        st = an_radial(full, AN_GRID_LAG, step, nl, lag, val, cnt);
+        st = nl_radial(full, NL_GRID_LAG, step, nl, lag, val, cnt);
     } else {
-        st = an_acf_axis(full, axis, nl - 1, lag, val);
+        st = nl_acf_axis(full, axis, nl - 1, lag, val);
     }
     if (st)
         cli_die_status(st);
@@ -184,7 +184,7 @@ int cmd_acf(int argc, char **argv)
             cv[i] = full->data[i];
         if (nc < 2 * (nl - 1) + 1)
             cli_die(2, "--bands: expected a field of at least %zu samples for --max-lag %zu", 2 * (nl - 1) + 1, nl - 1);
-        if ((st = an_acf_bartlett(cv, nc, x->count, nl - 1, var)))
+        if ((st = nl_acf_bartlett(cv, nc, x->count, nl - 1, var)))
             cli_die_status(st);
         for (size_t i = 0; i < nl; i++)
             blo[i] = val[i] - 1.959964 * sqrt(var[i]), bhi[i] = val[i] + 1.959964 * sqrt(var[i]);
@@ -219,7 +219,7 @@ int cmd_acf(int argc, char **argv)
         char comment[256];
         snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in spacing units",
                  unbiased ? "unbiased" : "biased", radial ? "radial average" : "along one axis");
-        st = write_table(out ? tmp : NULL, comment, ncol, names, nl, cols);
+        st = cli_write_table(out ? tmp : NULL, comment, ncol, names, nl, cols);
         if (st)
             cli_die_status(st);
     }

@@ -125,17 +125,17 @@ static void bench_fft(const nl_model *m, size_t n, int reps)
     size_t nn[2] = {n, n};
     double t[16];
     int st;
-    synth_fft_plan *p;
+    nl_synth_fft_plan *p;
     nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-    if (!f || (st = synth_fft_plan_alloc(m, 2, nn, NULL, 0, &p)))
+    if (!f || (st = nl_synth_fft_plan_alloc(m, 2, nn, NULL, 0, &p)))
         cli_die_status(st);
     for (int r = 0; r < reps; r++) {
         double t0 = now();
-        synth_fft_execute(p, (uint64_t)r + 1, f);
+        nl_synth_fft_execute(p, (uint64_t)r + 1, f);
         t[r] = now() - t0;
     }
     row("fft", n * n, median(t, reps), "gaussian fill + c2r", c2r_floor(n, n, reps));
-    synth_fft_plan_free(p), nl_field_free(f);
+    nl_synth_fft_plan_free(p), nl_field_free(f);
 }
 
 static void bench_circulant(const nl_model *m, size_t n, int reps)
@@ -143,20 +143,20 @@ static void bench_circulant(const nl_model *m, size_t n, int reps)
     size_t nn[2] = {n, n};
     double t[16];
     int st;
-    synth_circulant_plan *p;
-    synth_circulant_info info;
+    nl_synth_circulant_plan *p;
+    nl_synth_circulant_info info;
     nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-    if (!f || (st = synth_circulant_plan_alloc(m, 2, nn, NULL, 0, 16, &p)))
+    if (!f || (st = nl_synth_circulant_plan_alloc(m, 2, nn, NULL, 0, 16, &p)))
         cli_die_status(st);
-    synth_circulant_plan_info(p, &info);
+    nl_synth_circulant_plan_info(p, &info);
     for (int r = 0; r < reps; r++) {
         double t0 = now();
-        synth_circulant_execute(p, (uint64_t)r + 1, f);
+        nl_synth_circulant_execute(p, (uint64_t)r + 1, f);
         t[r] = now() - t0;
     }
     row("circulant", n * n, median(t, reps), "gaussian fill + c2r of the embedding",
         c2r_floor(info.m[0], info.m[1], reps));
-    synth_circulant_plan_free(p), nl_field_free(f);
+    nl_synth_circulant_plan_free(p), nl_field_free(f);
 }
 
 /* 4x4 neighbourhood, coarse grid 8x8, coefficients made once */
@@ -165,19 +165,19 @@ static void bench_subdiv(const nl_model *m, size_t n, int reps)
     size_t nn[2] = {n, n};
     double t[16];
     int st, L = 0;
-    subdiv_coeffs *co;
+    nl_subdiv_coeffs *co;
     while ((n >> (L + 1)) >= 8)
         L++;
     nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-    if (!f || (st = subdiv_coeffs_alloc(m, 2, L, (double)(1 << L), 2, 1e-4, 6, &co)))
+    if (!f || (st = nl_subdiv_coeffs_alloc(m, 2, L, (double)(1 << L), 2, 1e-4, 6, &co)))
         cli_die_status(st);
     for (int r = 0; r < reps; r++) {
         double t0 = now();
-        subdiv_synth_periodic(co, m, (uint64_t)r + 1, 0, f);
+        nl_subdiv_synth_periodic(co, m, (uint64_t)r + 1, 0, f);
         t[r] = now() - t0;
     }
     row("subdiv N=2", n * n, median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps));
-    subdiv_coeffs_free(co), nl_field_free(f);
+    nl_subdiv_coeffs_free(co), nl_field_free(f);
 }
 
 static void bench_sparse(const nl_model *m, size_t n, int reps)
@@ -185,17 +185,17 @@ static void bench_sparse(const nl_model *m, size_t n, int reps)
     size_t nn[2] = {n, n};
     double t[16];
     int st;
-    synth_sparse_plan *p;
+    nl_synth_sparse_plan *p;
     nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-    if (!f || (st = synth_sparse_plan_model(m, 2, NULL, 0, 0, 4, &p)))
+    if (!f || (st = nl_synth_sparse_plan_model(m, 2, NULL, 0, 0, 4, &p)))
         cli_die_status(st);
     for (int r = 0; r < reps; r++) {
         double t0 = now();
-        synth_sparse_execute(p, (uint64_t)r + 1, 1, NULL, f);
+        nl_synth_sparse_execute(p, (uint64_t)r + 1, 1, NULL, f);
         t[r] = now() - t0;
     }
     row("sparse", n * n, median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps));
-    synth_sparse_plan_free(p), nl_field_free(f);
+    nl_synth_sparse_plan_free(p), nl_field_free(f);
 }
 
 static void bench_estimators(size_t n, int reps)
@@ -210,14 +210,14 @@ static void bench_estimators(size_t n, int reps)
         f->data[i] = nl_rng_gauss(3, 0, i);
     for (int r = 0; r < reps; r++) {
         double t0 = now();
-        an_acf_full(f, 0.0, 0, &out);
+        nl_acf_full(f, 0.0, 0, &out);
         t[r] = now() - t0;
         nl_field_free(out);
     }
     row("acf", f->count, median(t, reps), "fftw r2c + c2r padded", fft_floor(2 * n, 1, reps));
     for (int r = 0; r < reps; r++) {
         double t0 = now();
-        an_psd_periodogram(f, NAN, &out);
+        nl_psd_periodogram(f, NAN, &out);
         t[r] = now() - t0;
         nl_field_free(out);
     }
@@ -240,19 +240,19 @@ static void bench_krige(const nl_model *m, size_t np, size_t g, int reps)
     for (int var = 0; var < 2; var++)
         for (int r = 0; r < reps; r++) {
             double t0 = now();
-            krige_plan *p;
-            if ((st = krige_plan_alloc(m, 2, np, pts, val, 0, 0, 0, &p)))
+            nl_krige_plan *p;
+            if ((st = nl_krige_plan_alloc(m, 2, np, pts, val, 0, 0, 0, &p)))
                 cli_die_status(st);
 #pragma omp parallel for schedule(dynamic, 1)
-            for (size_t q0 = 0; q0 < g * g; q0 += KRIGE_BLOCK) {
-                size_t nq = g * g - q0 < KRIGE_BLOCK ? g * g - q0 : KRIGE_BLOCK;
-                double x[2 * KRIGE_BLOCK], v[KRIGE_BLOCK];
+            for (size_t q0 = 0; q0 < g * g; q0 += NL_KRIGE_BLOCK) {
+                size_t nq = g * g - q0 < NL_KRIGE_BLOCK ? g * g - q0 : NL_KRIGE_BLOCK;
+                double x[2 * NL_KRIGE_BLOCK], v[NL_KRIGE_BLOCK];
                 for (size_t q = q0; q < q0 + nq; q++)
                     x[2 * (q - q0)] = ((double)(q % g) + 0.5) / (double)g,
                                  x[2 * (q - q0) + 1] = ((double)(q / g) + 0.5) / (double)g;
-                krige_eval_block(p, nq, x, &est[q0], var ? v : NULL);
+                nl_krige_eval_block(p, nq, x, &est[q0], var ? v : NULL);
             }
-            krige_plan_free(p);
+            nl_krige_plan_free(p);
             tk[var][r] = now() - t0;
         }
     for (int r = 0; r < reps; r++) {
@@ -289,8 +289,8 @@ static void bench_rank1(int quick, int reps)
         int dims[4];
         for (int a = 0; a < sd; a++)
             NN *= M, dims[a] = (int)M;
-        rank1_lattice L;
-        if ((st = rank1_korobov(NN, sd, 0, &L)))
+        nl_rank1_lattice L;
+        if ((st = nl_rank1_korobov(NN, sd, 0, &L)))
             cli_die_status(st);
         double *cf = malloc(2 * NN * sizeof *cf), *f = malloc(NN * sizeof *f), tr[16], tt[16];
         fftw_complex *b = fftw_alloc_complex(NN);
@@ -304,7 +304,7 @@ static void bench_rank1(int quick, int reps)
                 cf[2 * k] = exp(-k2 / 64) * nl_rng_gauss2(1, 0, k, 0);
                 cf[2 * k + 1] = exp(-k2 / 64) * nl_rng_gauss2(1, 0, k, 1);
             }
-            rank1_synthesize(&L, cf, 1, f, NULL, NULL);
+            nl_rank1_synthesize(&L, cf, 1, f, NULL, NULL);
             tr[r] = now() - t0;
             t0 = now();
             for (size_t k = 0; k < NN; k++)
@@ -316,11 +316,11 @@ static void bench_rank1(int quick, int reps)
         snprintf(name, sizeof name, "rank1 %dD", sd);
         snprintf(fl, sizeof fl, "tensor FFT %dD %zu^%d", sd, M, sd);
         row(name, NN, median(tr, reps), fl, median(tt, reps));
-        fftw_destroy_plan(p), fftw_free(b), free(cf), free(f), rank1_free(&L);
+        fftw_destroy_plan(p), fftw_free(b), free(cf), free(f), nl_rank1_free(&L);
     }
 }
 
-int cmd_bench(int argc, char **argv)
+int cli_cmd_bench(int argc, char **argv)
 {
     static const struct option opts[] = {{"quick", no_argument, 0, 'q'}, {"repeat", required_argument, 0, 'r'},
                                          {"help", no_argument, 0, 'h'}, {0}};

@@ -39,7 +39,7 @@ static nl_field *centred_log(const nl_field *P)
     return C;
 }
 
-int cmd_card(int argc, char **argv)
+int cli_cmd_card(int argc, char **argv)
 {
     static const struct option opts[] = {{"output", required_argument, 0, 'o'}, {"acf", required_argument, 0, 'a'},
                                          {"spectrum", required_argument, 0, 'a'}, {"help", no_argument, 0, 'h'},
@@ -69,10 +69,10 @@ int cmd_card(int argc, char **argv)
     char dir[] = "/tmp/noiselab-card-XXXXXX", path[4200];
     if (!mkdtemp(dir))
         cli_die(1, "card: cannot create a temporary directory");
-    an_moments mo;
+    nl_moments mo;
     size_t seg = (x->n[0] < x->n[1] ? x->n[0] : x->n[1]) / 4, nseg;
-    if ((st = an_moments_compute(x, &mo)) || (st = an_psd_periodogram(x, NAN, &P)) ||
-        (st = an_psd_welch(x, seg, NAN, &W, &nseg)))
+    if ((st = nl_moments_compute(x, &mo)) || (st = nl_psd_periodogram(x, NAN, &P)) ||
+        (st = nl_psd_welch(x, seg, NAN, &W, &nseg)))
         cli_die_status(st);
     snprintf(path, sizeof path, "%s/field.png", dir);
     double sd = sqrt(mo.variance);
@@ -92,14 +92,14 @@ int cmd_card(int argc, char **argv)
     /* radial spectra on the Welch grid */
     size_t nb = seg / 2 + 1, *cnt = malloc(nb * sizeof *cnt);
     double *r = malloc(nb * sizeof *r), *v = malloc(nb * sizeof *v), *t = malloc(nb * sizeof *t);
-    an_radial(W, AN_GRID_FREQ, 1.0 / ((double)seg * x->h[0]), nb, r, v, cnt);
+    nl_radial(W, NL_GRID_FREQ, 1.0 / ((double)seg * x->h[0]), nb, r, v, cnt);
     for (size_t b = 0; b < nb; b++)
         t[b] = NAN;
     if (m) {
         nl_field *S = nl_field_alloc(2, W->n, W->h, &st);
         double *rr = malloc(nb * sizeof *rr);
         if (S && nl_wk_sample_spectrum(m, S) == NL_OK)
-            an_radial(S, AN_GRID_FREQ, 1.0 / ((double)seg * x->h[0]), nb, rr, t, cnt);
+            nl_radial(S, NL_GRID_FREQ, 1.0 / ((double)seg * x->h[0]), nb, rr, t, cnt);
         nl_field_free(S), free(rr);
     }
     snprintf(path, sizeof path, "%s/radial.tsv", dir);
@@ -110,7 +110,7 @@ int cmd_card(int argc, char **argv)
     fclose(fp);
     /* histogram against the Gaussian */
     double edges[41], counts[40];
-    an_hist(x, 40, edges, counts);
+    nl_hist(x, 40, edges, counts);
     snprintf(path, sizeof path, "%s/hist.tsv", dir);
     fp = fopen(path, "w");
     fprintf(fp, "x\tdensity\tgauss\n");

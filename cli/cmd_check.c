@@ -18,7 +18,7 @@ static const char help[] =
     "differentiable_order (null: infinitely), r2, singular_below_spacing (null:\n"
     "never), scale, spectral_decay, flags.  Exit status 0 whatever the verdict.\n";
 
-int cmd_check(int argc, char **argv)
+int cli_cmd_check(int argc, char **argv)
 {
     static const struct option opts[] = {{"acf", required_argument, 0, 'a'}, {"spectrum", required_argument, 0, 'a'},
                                          {"dim", required_argument, 0, 'd'}, {"json", no_argument, 0, 'j'},
@@ -26,7 +26,7 @@ int cmd_check(int argc, char **argv)
     const char *spec = NULL;
     int c, dim = 0, json = 0, st;
     nl_model *m;
-    an_check k;
+    nl_check k;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
         switch (c) {
@@ -43,7 +43,7 @@ int cmd_check(int argc, char **argv)
         cli_die(2, "check: --acf: expected a model (see noiselab models)");
     if (!dim)
         cli_die(2, "check: --dim: expected 1, 2 or 3");
-    if ((st = nl_model_parse(spec, &m)) || (st = an_check_model(m, dim, &k)))
+    if ((st = nl_model_parse(spec, &m)) || (st = nl_check_model(m, dim, &k)))
         cli_die_status(st);
     json_t *fl = json_array();
     if (!k.positive_definite)

@@ -51,14 +51,14 @@ static void vec3(json_t *o, const char *key, double *v, const char *path)
     }
 }
 
-int cmd_cloud(int argc, char **argv)
+int cli_cmd_cloud(int argc, char **argv)
 {
     static const struct option opts[] = {{"output", required_argument, 0, 'o'}, {"exr", required_argument, 0, 'e'},
                                          {"help", no_argument, 0, 'h'},         {0}};
     const char *out = NULL, *exr = NULL, *path, *tmp, *etmp = NULL;
     int c, st;
     json_error_t je;
-    cloud_scene s;
+    nl_cloud_scene s;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
@@ -145,7 +145,7 @@ int cmd_cloud(int argc, char **argv)
     if (!rgb || (exr && !lum))
         cli_die(1, "out of memory");
     cli_progress("cloud", 0);
-    if ((st = cloud_render(&s, rgb, lum, progress)))
+    if ((st = nl_render_cloud(&s, rgb, lum, progress)))
         cli_die_status(st);
     cli_progress_done();
     if ((st = nl_png_write_rgb8(tmp, s.width, s.height, rgb)))

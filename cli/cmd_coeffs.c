@@ -31,7 +31,7 @@ static json_t *flags_json(unsigned f)
     json_t *a = json_array();
     for (unsigned b = 0; b < 6; b++)
         if (f & (1u << b))
-            json_array_append_new(a, json_string(subdiv_flag_name(b)));
+            json_array_append_new(a, json_string(nl_subdiv_flag_name(b)));
     return a;
 }
 
@@ -40,22 +40,22 @@ static void print_flags(unsigned f)
     int first = 1;
     for (unsigned b = 0; b < 6; b++)
         if (f & (1u << b)) {
-            printf("%s%s", first ? "" : ",", subdiv_flag_name(b));
+            printf("%s%s", first ? "" : ",", nl_subdiv_flag_name(b));
             first = 0;
         }
     if (first)
         printf("-");
 }
 
-static void print_text(const subdiv_coeffs *c, const char *spec)
+static void print_text(const nl_subdiv_coeffs *c, const char *spec)
 {
     printf("# %s, %dD, spacing0 %g, %d levels\n", spec, c->dim, c->spacing0, c->levels);
     for (int k = 0; k < c->levels; k++) {
-        const subdiv_level *l = &c->level[k];
+        const nl_subdiv_level *l = &c->level[k];
         for (int j = 0; j < l->nclass; j++) {
-            const subdiv_class *cl = &l->cls[j];
+            const nl_subdiv_class *cl = &l->cls[j];
             printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %-10.3g flags ", l->level,
-                   l->spacing, l->N, subdiv_class_name(cl->cls), cl->variance, cl->condition);
+                   l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cl->condition);
             print_flags(cl->flags);
             printf("\n");
             if (c->dim == 1) {
@@ -77,7 +77,7 @@ static void print_text(const subdiv_coeffs *c, const char *spec)
     }
 }
 
-int cmd_coeffs(int argc, char **argv)
+int cli_cmd_coeffs(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"acf", required_argument, 0, 'a'},      {"dim", required_argument, 0, 'd'},
@@ -89,7 +89,7 @@ int cmd_coeffs(int argc, char **argv)
     int c, dim = 0, N = 2, levels = 10, json = 0, st;
     double tol = 1e-4, s0 = 1;
     nl_model *m;
-    subdiv_coeffs *co;
+    nl_subdiv_coeffs *co;
 
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
@@ -127,17 +127,17 @@ int cmd_coeffs(int argc, char **argv)
         cli_die(2, "--neighborhood: expected at most %d in %dD, got %d", dim == 1 ? 64 : 8, dim, N);
     if ((st = nl_model_parse(spec, &m)))
         cli_die_status(st);
-    if ((st = subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co)))
+    if ((st = nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co)))
         cli_die_status(st);
     if (json) {
         json_t *lv = json_array();
         for (int k = 0; k < co->levels; k++) {
-            const subdiv_level *l = &co->level[k];
+            const nl_subdiv_level *l = &co->level[k];
             json_t *cls = json_array();
             for (int j = 0; j < l->nclass; j++) {
-                const subdiv_class *cl = &l->cls[j];
+                const nl_subdiv_class *cl = &l->cls[j];
                 json_array_append_new(
-                    cls, json_pack("{s:s,s:o,s:f,s:f,s:o,s:f,s:o}", "class", subdiv_class_name(cl->cls),
+                    cls, json_pack("{s:s,s:o,s:f,s:f,s:o,s:f,s:o}", "class", nl_subdiv_class_name(cl->cls),
                                    "coefficients", cli_json_array(cl->a, cl->n), "variance", cl->variance,
                                    "raw_variance", cl->raw_variance,
                                    "condition", isfinite(cl->condition) ? json_real(cl->condition) : json_null(),
@@ -151,7 +151,7 @@ int cmd_coeffs(int argc, char **argv)
     } else {
         print_text(co, spec);
     }
-    subdiv_coeffs_free(co);
+    nl_subdiv_coeffs_free(co);
     nl_model_free(m);
     return 0;
 }

@@ -22,7 +22,7 @@ static const char help[] =
     "            above 0.1; with a model, also the value its spectrum predicts\n"
     "Exit status 0 whatever is found; the flags are in the output.\n";
 
-int cmd_detect(int argc, char **argv)
+int cli_cmd_detect(int argc, char **argv)
 {
     static const struct option opts[] = {{"levels", required_argument, 0, 'L'}, {"acf", required_argument, 0, 'a'},
                                          {"spectrum", required_argument, 0, 'a'}, {"json", no_argument, 0, 'j'},         {"help", no_argument, 0, 'h'},
@@ -30,7 +30,7 @@ int cmd_detect(int argc, char **argv)
     const char *spec = NULL;
     int c, L = 0, json = 0, st;
     double A, P = NAN;
-    an_creases cr;
+    nl_creases cr;
     nl_field *x;
 
     opterr = 0;
@@ -50,11 +50,11 @@ int cmd_detect(int argc, char **argv)
     if (L > 40)
         cli_die(2, "--levels: expected at most 40, got %d", L);
     x = cli_read_field(argv[optind], NULL);
-    if ((st = an_creases_measure(x, L, &cr)) || (st = an_aliasing_measure(x, &A)))
+    if ((st = nl_creases_measure(x, L, &cr)) || (st = nl_aliasing_measure(x, &A)))
         cli_die_status(st);
     if (spec) {
         nl_model *m;
-        if ((st = nl_model_parse(spec, &m)) || (st = an_aliasing_predict(m, x, &P)))
+        if ((st = nl_model_parse(spec, &m)) || (st = nl_aliasing_predict(m, x, &P)))
             cli_die_status(st);
         nl_model_free(m);
     }
@@ -62,18 +62,18 @@ int cmd_detect(int argc, char **argv)
         json_t *fl = json_array();
         if (cr.flagged)
             json_array_append_new(fl, json_string("crease"));
-        if (A > AN_ALIAS_MAX)
+        if (A > NL_ALIAS_MAX)
             json_array_append_new(fl, json_string("aliasing"));
         cli_json_print(json_pack("{s:f,s:o,s:f,s:o,s:o}", "crease_index", cr.index, "crease_ratios",
                                  cli_json_array(cr.ratio, (size_t)L + 1), "aliasing", A, "aliasing_predicted",
                                  isnan(P) ? json_null() : json_real(P), "flags", fl));
     } else {
-        printf("crease index %.3f (threshold %.1f)%s\n", cr.index, AN_CREASE_MAX, cr.flagged ? "  crease" : "");
+        printf("crease index %.3f (threshold %.1f)%s\n", cr.index, NL_CREASE_MAX, cr.flagged ? "  crease" : "");
         printf("  curvature ratio by level:");
         for (int k = 0; k <= L; k++)
             if (!isnan(cr.ratio[k]))
                 printf(" %d:%.2f", k, cr.ratio[k]);
-        printf("\naliasing %.4f (threshold %.1f)%s", A, AN_ALIAS_MAX, A > AN_ALIAS_MAX ? "  aliasing" : "");
+        printf("\naliasing %.4f (threshold %.1f)%s", A, NL_ALIAS_MAX, A > NL_ALIAS_MAX ? "  aliasing" : "");
         if (!isnan(P))
             printf(", predicted %.4f", P);
         printf("\n");

@@ -17,7 +17,7 @@ static const char help[] =
     "(equal-probability bins) against it; DIST as in noiselab shape.  The tests\n"
     "assume independent samples: use them on white fields or sparse decimations.\n";
 
-int cmd_hist(int argc, char **argv)
+int cli_cmd_hist(int argc, char **argv)
 {
     static const struct option opts[] = {{"bins", required_argument, 0, 'b'}, {"json", no_argument, 0, 'j'},
                                          {"against", required_argument, 0, 'a'},
@@ -25,12 +25,12 @@ int cmd_hist(int argc, char **argv)
                                          {0}};
     const char *out = NULL, *tmp = NULL, *against = NULL;
     nl_dist *dist = NULL;
-    an_gof gof;
+    nl_gof gof;
     double *pdf = NULL;
     size_t bins = 50;
     int c, json = 0, st;
     double *edges, *counts;
-    an_moments mo;
+    nl_moments mo;
     nl_field *x;
 
     opterr = 0;
@@ -57,10 +57,10 @@ int cmd_hist(int argc, char **argv)
     counts = malloc(bins * sizeof *counts);
     if (!edges || !counts)
         cli_die(1, "out of memory");
-    if ((st = an_moments_compute(x, &mo)) || (st = an_hist(x, bins, edges, counts)))
+    if ((st = nl_moments_compute(x, &mo)) || (st = nl_hist(x, bins, edges, counts)))
         cli_die_status(st);
     if (dist) {
-        if ((st = an_gof_test(x->data, x->count, dist, bins < 2 ? 2 : bins, &gof)))
+        if ((st = nl_gof_test(x->data, x->count, dist, bins < 2 ? 2 : bins, &gof)))
             cli_die_status(st);
         pdf = malloc(bins * sizeof *pdf);
         if (!pdf)
@@ -90,7 +90,7 @@ int cmd_hist(int argc, char **argv)
     if (out || !json) {
         static const char *const names[] = {"lo", "hi", "count", "pdf"};
         const double *cols[] = {edges, edges + 1, counts, pdf};
-        if ((st = write_table(out ? tmp : NULL, NULL, pdf ? 4 : 3, names, bins, cols)))
+        if ((st = cli_write_table(out ? tmp : NULL, NULL, pdf ? 4 : 3, names, bins, cols)))
             cli_die_status(st);
     }
     if (out)

@@ -69,7 +69,7 @@ static double *read_points(const char *path, int *dim, size_t *n)
     return v;
 }
 
-int cmd_krige(int argc, char **argv)
+int cli_cmd_krige(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"data", required_argument, 0, 'd'}, {"acf", required_argument, 0, 'a'},    {"grid", required_argument, 0, 'g'},
@@ -133,8 +133,8 @@ int cmd_krige(int argc, char **argv)
         val[i] = raw[i * (dim + 1) + dim];
     }
     nl_model *m;
-    krige_plan *p;
-    krige_info info;
+    nl_krige_plan *p;
+    nl_krige_info info;
     if ((st = nl_model_parse(spec, &m)))
         cli_die_status(st);
     tmp = cli_out_begin(out);
@@ -142,9 +142,9 @@ int cmd_krige(int argc, char **argv)
         vtmp = cli_out_begin(vout);
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    if ((st = krige_plan_alloc(m, dim, n, pts, val, !isnan(mean), isnan(mean) ? 0 : mean, strict, &p)))
+    if ((st = nl_krige_plan_alloc(m, dim, n, pts, val, !isnan(mean), isnan(mean) ? 0 : mean, strict, &p)))
         cli_die_status(st);
-    krige_plan_info(p, &info);
+    nl_krige_plan_info(p, &info);
     double h[3];
     for (int a = 0; a < 3; a++)
         h[a] = (hi[a] - lo[a]) / (double)g[a];
@@ -152,17 +152,17 @@ int cmd_krige(int argc, char **argv)
     if (!f || (vout && !vf))
         cli_die_status(st);
     int parallel = nl_model_get_kind(m) != NL_MODEL_EXPR;
-    size_t nblk = (f->count + KRIGE_BLOCK - 1) / KRIGE_BLOCK;
+    size_t nblk = (f->count + NL_KRIGE_BLOCK - 1) / NL_KRIGE_BLOCK;
 #pragma omp parallel for schedule(dynamic, 1) if (parallel && f->count > 4096)
     for (size_t blk = 0; blk < nblk; blk++) {
-        size_t q0 = blk * KRIGE_BLOCK, nq = f->count - q0 < KRIGE_BLOCK ? f->count - q0 : KRIGE_BLOCK;
-        double x[KRIGE_BLOCK * 3];
+        size_t q0 = blk * NL_KRIGE_BLOCK, nq = f->count - q0 < NL_KRIGE_BLOCK ? f->count - q0 : NL_KRIGE_BLOCK;
+        double x[NL_KRIGE_BLOCK * 3];
         for (size_t q = q0; q < q0 + nq; q++) {
             size_t idx[3] = {q % g[0], (q / g[0]) % g[1], q / (g[0] * g[1])};
             for (int a = 0; a < dim; a++)
                 x[(q - q0) * (size_t)dim + a] = lo[a] + ((double)idx[a] + 0.5) * h[a];
         }
-        krige_eval_block(p, nq, x, &f->data[q0], vf ? &vf->data[q0] : NULL);
+        nl_krige_eval_block(p, nq, x, &f->data[q0], vf ? &vf->data[q0] : NULL);
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
@@ -198,7 +198,7 @@ int cmd_krige(int argc, char **argv)
     else if (info.pseudo_inverse)
         fprintf(stderr, "noiselab: krige: the system is singular (reciprocal condition %.2g); solved by the "
                 "pseudo-inverse (flagged in the output)\n", info.rcond);
-    krige_plan_free(p), nl_model_free(m), nl_field_free(f), nl_field_free(vf);
+    nl_krige_plan_free(p), nl_model_free(m), nl_field_free(f), nl_field_free(vf);
     free(raw), free(pts), free(val);
     return 0;
 }

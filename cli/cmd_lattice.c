@@ -37,7 +37,7 @@ static int fib_index(size_t N)
     return 0;
 }
 
-int cmd_lattice(int argc, char **argv)
+int cli_cmd_lattice(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"points", required_argument, 0, 'n'}, {"dim", required_argument, 0, 'd'},
@@ -52,7 +52,7 @@ int cmd_lattice(int argc, char **argv)
     int c, s = 0, wv = 0, json = 0, st, spectral = 0;
     double extent = 1;
     uint64_t seed = 1;
-    rank1_lattice L;
+    nl_rank1_lattice L;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
@@ -90,17 +90,17 @@ int cmd_lattice(int argc, char **argv)
     if (strcmp(gen, "fibonacci") == 0) {
         if (s != 2 || !fib_index(N))
             cli_die(2, "--generator fibonacci: expected --dim 2 and a Fibonacci number of points, got %zu in %dD", N, s);
-        st = rank1_fibonacci(fib_index(N), &L);
+        st = nl_rank1_fibonacci(fib_index(N), &L);
     } else if (strncmp(gen, "korobov", 7) == 0) {
         long a = 0;
         if (gen[7] == ':' && (a = atol(gen + 8)) <= 0)
             cli_die(2, "--generator: expected korobov:A with A > 0, got \"%s\"", gen);
-        st = rank1_korobov(N, s, a, &L);
+        st = nl_rank1_korobov(N, s, a, &L);
     } else {
-        long g[RANK1_MAX_DIM];
+        long g[NL_RANK1_MAX_DIM];
         char *p = (char *)gen, *end;
         int k = 0;
-        while (k < RANK1_MAX_DIM) {
+        while (k < NL_RANK1_MAX_DIM) {
             g[k++] = strtol(p, &end, 10);
             if (end == p)
                 break;
@@ -110,7 +110,7 @@ int cmd_lattice(int argc, char **argv)
         }
         if (k != s || *end || end == p)
             cli_die(2, "--generator: expected fibonacci, korobov[:A] or %d integers G1,...,G%d, got \"%s\"", s, s, gen);
-        st = rank1_generator(N, s, g, &L);
+        st = nl_rank1_generator(N, s, g, &L);
     }
     if (st)
         cli_die_status(st);
@@ -149,10 +149,10 @@ int cmd_lattice(int argc, char **argv)
         double *coef = malloc(2 * N * sizeof *coef), *f = malloc(N * sizeof *f), *grad = malloc(N * s * sizeof *grad);
         double imag;
         char sbuf[1100];
-        rank1_model_ctx ctx;
+        nl_rank1_model_ctx ctx;
         if (spectral && strncmp(spec, "power", 5) && strncmp(spec, "spectrum:", 9))
             snprintf(sbuf, sizeof sbuf, "spectrum:%s", spec), spec = sbuf;
-        if ((st = nl_model_parse(spec, &m)) || (st = rank1_model_check(m, s)))
+        if ((st = nl_model_parse(spec, &m)) || (st = cli_rank1_model_check(m, s)))
             cli_die_status(st);
         if (!coef || !f || !grad)
             cli_die(1, "out of memory");
@@ -161,8 +161,8 @@ int cmd_lattice(int argc, char **argv)
         if (mesh)
             mtmp = cli_out_begin(mesh);
         ctx.m = m, ctx.s = s, ctx.extent = extent;
-        if ((st = rank1_coefficients(&L, rank1_model_spectrum, &ctx, seed, coef)) ||
-            (st = rank1_synthesize(&L, coef, extent, f, grad, &imag)))
+        if ((st = nl_rank1_coefficients(&L, cli_rank1_model_spectrum, &ctx, seed, coef)) ||
+            (st = nl_rank1_synthesize(&L, coef, extent, f, grad, &imag)))
             cli_die_status(st);
         if (out || (!mesh && !wv)) {
             FILE *fp = out ? fopen(tmp, "w") : stdout;
@@ -177,8 +177,8 @@ int cmd_lattice(int argc, char **argv)
                 fprintf(fp, "\tgrad%d", a + 1);
             fprintf(fp, "\n");
             for (size_t n = 0; n < N; n++) {
-                double x[RANK1_MAX_DIM];
-                rank1_point(&L, n, x);
+                double x[NL_RANK1_MAX_DIM];
+                nl_rank1_point(&L, n, x);
                 for (int a = 0; a < s; a++)
                     fprintf(fp, "%.10g\t", x[a] * extent);
                 fprintf(fp, "%.10g", f[n]);
@@ -193,7 +193,7 @@ int cmd_lattice(int argc, char **argv)
             size_t n1, n2;
             double v1[2], v2[2];
             FILE *fp = fopen(mtmp, "w");
-            if ((st = rank1_delaunay(&L, &n1, &n2, v1, v2)))
+            if ((st = nl_rank1_delaunay(&L, &n1, &n2, v1, v2)))
                 cli_die_status(st);
             if (!fp)
                 cli_die(2, "--mesh: cannot write \"%s\"", mesh);
@@ -202,7 +202,7 @@ int cmd_lattice(int argc, char **argv)
             for (size_t n = 0; n < N; n++) {
                 double x[2];
                 size_t a = n, b = (n + n1) % N, c2 = (n + n2) % N, d = (n + n1 + n2) % N;
-                rank1_point(&L, n, x);
+                nl_rank1_point(&L, n, x);
                 double P[4][2] = {{x[0], x[1]}, {x[0] + v1[0], x[1] + v1[1]}, {x[0] + v2[0], x[1] + v2[1]},
                                   {x[0] + v1[0] + v2[0], x[1] + v1[1] + v2[1]}};
                 size_t id[4] = {a, b, c2, d};
@@ -234,8 +234,8 @@ int cmd_lattice(int argc, char **argv)
             for (int a = 0; a < s; a++)
                 fprintf(fp, "x%d%c", a + 1, a + 1 < s ? '\t' : '\n');
             for (size_t n = 0; n < N; n++) {
-                double x[RANK1_MAX_DIM];
-                rank1_point(&L, n, x);
+                double x[NL_RANK1_MAX_DIM];
+                nl_rank1_point(&L, n, x);
                 for (int a = 0; a < s; a++)
                     fprintf(fp, "%.10g%c", x[a] * extent, a + 1 < s ? '\t' : '\n');
             }
@@ -246,7 +246,7 @@ int cmd_lattice(int argc, char **argv)
         if (mesh) {
             size_t n1, n2;
             double v1[2], v2[2];
-            if ((st = rank1_delaunay(&L, &n1, &n2, v1, v2)))
+            if ((st = nl_rank1_delaunay(&L, &n1, &n2, v1, v2)))
                 cli_die_status(st);
             mtmp = cli_out_begin(mesh);
             FILE *fp = fopen(mtmp, "w");
@@ -254,7 +254,7 @@ int cmd_lattice(int argc, char **argv)
                 cli_die(2, "--mesh: cannot write \"%s\"", mesh);
             for (size_t n = 0; n < N; n++) {
                 double x[2];
-                rank1_point(&L, n, x);
+                nl_rank1_point(&L, n, x);
                 double P[4][2] = {{x[0], x[1]}, {x[0] + v1[0], x[1] + v1[1]}, {x[0] + v2[0], x[1] + v2[1]},
                                   {x[0] + v1[0] + v2[0], x[1] + v1[1] + v2[1]}};
                 static const int tri[2][3] = {{0, 1, 2}, {1, 3, 2}};
@@ -269,6 +269,6 @@ int cmd_lattice(int argc, char **argv)
             cli_out_commit(mesh);
         }
     }
-    rank1_free(&L);
+    nl_rank1_free(&L);
     return 0;
 }

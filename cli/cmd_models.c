@@ -19,7 +19,7 @@ static const char help[] =
     "Lags are in spacing units; frequencies in cycles per unit length; spectra\n"
     "are two-sided densities whose integral is the variance R(0).\n";
 
-int cmd_models(int argc, char **argv)
+int cli_cmd_models(int argc, char **argv)
 {
     static const struct option opts[] = {{"json", no_argument, 0, 'j'}, {"help", no_argument, 0, 'h'}, {0}};
     int c, json = 0;

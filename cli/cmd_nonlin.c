@@ -32,7 +32,7 @@ static const char help[] =
     "inputs (seeds 1..M) from the design, shapes them with g and measures the output\n"
     "ACF.  Output: lag, target, designed input_acf, predicted output, measured output.\n";
 
-int cmd_nonlin(int argc, char **argv)
+int cli_cmd_nonlin(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"acf", required_argument, 0, 'a'},   {"g", required_argument, 0, 'g'},   {"size", required_argument, 0, 'n'},
@@ -48,7 +48,7 @@ int cmd_nonlin(int argc, char **argv)
     size_t verify = 0;
     nl_model *m;
     nl_dist *d;
-    an_hermite he;
+    nl_hermite he;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
@@ -81,8 +81,8 @@ int cmd_nonlin(int argc, char **argv)
         cli_die(2, "nonlin: expected --acf SPEC and --g DIST");
     if (verify > 1000)
         cli_die(2, "--verify: expected at most 1000 realizations, got %zu", verify);
-    if (K > AN_HERMITE_MAX)
-        cli_die(2, "--terms: expected at most %d, got %d", AN_HERMITE_MAX, K);
+    if (K > NL_HERMITE_MAX)
+        cli_die(2, "--terms: expected at most %d, got %d", NL_HERMITE_MAX, K);
     if (n > (1u << 24))
         cli_die(2, "--size: expected at most 16777216, got %zu", n);
     if ((st = nl_model_parse(spec, &m)) || (st = nl_dist_parse(gspec, &d)))
@@ -91,28 +91,28 @@ int cmd_nonlin(int argc, char **argv)
         tmp = cli_out_begin(out);
     if (pout)
         ptmp = cli_out_begin(pout);
-    if ((st = an_hermite_expand(d, K, &he)))
+    if ((st = nl_hermite_expand(d, K, &he)))
         cli_die_status(st);
     if (design) {
         nl_field *T = nl_field_alloc(1, &n, &h, &st), *S = T ? nl_field_alloc(1, &n, &h, &st) : NULL;
-        double *rho = malloc(n * sizeof *rho), err, var = an_hermite_cov(&he, 1), *meas = NULL, merr = NAN;
+        double *rho = malloc(n * sizeof *rho), err, var = nl_hermite_cov(&he, 1), *meas = NULL, merr = NAN;
         size_t bad, nl2 = n / 2 + 1 < 129 ? n / 2 + 1 : 129;
         if (!S || !rho)
             cli_die(1, "out of memory");
         if ((st = nl_wk_sample_acf(m, T)))
             cli_die_status(st);
-        if ((st = an_nonlin_design(&he, T->data, n, h, rho, S->data, &err, &bad)))
+        if ((st = nl_nonlin_design(&he, T->data, n, h, rho, S->data, &err, &bad)))
             cli_die_status(st);
         double scale = var / T->data[0];
         if (verify) {
-            synth_fft_plan *p;
+            nl_synth_fft_plan *p;
             nl_field *x = nl_field_alloc(1, &n, &h, &st), *full;
             meas = calloc(nl2, sizeof *meas);
-            if ((st = synth_fft_plan_spectrum(S, SYNTH_FFT_CLAMP, &p)))
+            if ((st = nl_synth_fft_plan_spectrum(S, NL_SYNTH_FFT_CLAMP, &p)))
                 cli_die_status(st);
             for (size_t s = 1; s <= verify; s++) {
-                synth_fft_execute(p, s, x);
-                if ((st = synth_shape(x, d, 0)) || (st = an_acf_full(x, NAN, AN_ACF_UNBIASED, &full)))
+                nl_synth_fft_execute(p, s, x);
+                if ((st = nl_synth_shape(x, d, 0)) || (st = nl_acf_full(x, NAN, NL_ACF_UNBIASED, &full)))
                     cli_die_status(st);
                 for (size_t i = 0; i < nl2; i++)
                     meas[i] += full->data[i] / (double)verify;
@@ -121,13 +121,13 @@ int cmd_nonlin(int argc, char **argv)
             merr = 0;
             for (size_t i = 0; i < nl2; i++)
                 merr = fmax(merr, fabs(meas[i] - T->data[i] * scale) / var);
-            synth_fft_plan_free(p), nl_field_free(x);
+            nl_synth_fft_plan_free(p), nl_field_free(x);
         }
         double *lag = malloc(nl2 * sizeof *lag), *tg = malloc(nl2 * sizeof *tg), *pred = malloc(nl2 * sizeof *pred);
         for (size_t i = 0; i < nl2; i++) {
             lag[i] = (double)i * h;
             tg[i] = T->data[i] * scale;
-            pred[i] = an_hermite_cov(&he, fmax(-1, fmin(1, rho[i])));
+            pred[i] = nl_hermite_cov(&he, fmax(-1, fmin(1, rho[i])));
         }
         if (json) {
             json_t *o = json_pack("{s:s,s:s,s:o,s:o,s:o,s:o,s:f,s:I,s:o}", "target", tspec, "g", gspec, "lag",
@@ -149,7 +149,7 @@ int cmd_nonlin(int argc, char **argv)
         if (out || !json) {
             const char *names[5] = {"lag", "target", "input_acf", "predicted", "measured"};
             const double *cols[5] = {lag, tg, rho, pred, meas};
-            if ((st = write_table(tmp, "noiselab nonlin --design: covariances; input_acf is normalised",
+            if ((st = cli_write_table(tmp, "noiselab nonlin --design: covariances; input_acf is normalised",
                                   verify ? 5 : 4, names, nl2, cols)))
                 cli_die_status(st);
             if (out)
@@ -170,7 +170,7 @@ int cmd_nonlin(int argc, char **argv)
     if (!(r0 > 0))
         cli_die(2, "--acf: %s has R(0) = %g; expected a positive variance", spec, r0);
     for (size_t i = 0; i < n; i++)
-        Ry->data[i] = an_hermite_cov(&he, fmax(-1, fmin(1, R->data[i] / r0)));
+        Ry->data[i] = nl_hermite_cov(&he, fmax(-1, fmin(1, R->data[i] / r0)));
     if ((st = nl_wk_acf_to_spectrum(R, S)) || (st = nl_wk_acf_to_spectrum(Ry, Sy)))
         cli_die_status(st);
     size_t nl = n / 2 + 1;
@@ -197,13 +197,13 @@ int cmd_nonlin(int argc, char **argv)
     if (out || (!json && !pout)) {
         static const char *const names[] = {"lag", "input_acf", "output_acf"};
         const double *cols[] = {lag, R->data, Ry->data};
-        if ((st = write_table(tmp, "noiselab nonlin: predicted output autocovariance", 3, names, nl, cols)))
+        if ((st = cli_write_table(tmp, "noiselab nonlin: predicted output autocovariance", 3, names, nl, cols)))
             cli_die_status(st);
     }
     if (pout) {
         static const char *const names[] = {"freq", "input_psd", "output_psd"};
         const double *cols[] = {freq, S->data, Sy->data};
-        if ((st = write_table(ptmp, "noiselab nonlin: two-sided spectra, cycles per unit", 3, names, nl, cols)))
+        if ((st = cli_write_table(ptmp, "noiselab nonlin: two-sided spectra, cycles per unit", 3, names, nl, cols)))
             cli_die_status(st);
     }
     if (out)

@@ -65,7 +65,7 @@ static void write_png(const char *path, const double *img, size_t W, int tile)
     nl_field_free(f);
 }
 
-int cmd_ocean(int argc, char **argv)
+int cli_cmd_ocean(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"lattice", required_argument, 0, 'l'}, {"points", required_argument, 0, 'n'},
@@ -82,7 +82,7 @@ int cmd_ocean(int argc, char **argv)
     double t0 = 0, dt = 0, v = NAN, ang = 0;
     int c, frames = 1, st;
     uint64_t seed = 1;
-    ocean_params o = {0, 0, 100, 1e-4};
+    nl_ocean_params o = {0, 0, 100, 1e-4};
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
@@ -133,7 +133,7 @@ int cmd_ocean(int argc, char **argv)
     if (mesh && !lat)
         cli_die(2, "--mesh: expected --lattice");
     o.wind = v, o.angle = ang * M_PI / 180;
-    rank1_lattice L;
+    nl_rank1_lattice L;
     memset(&L, 0, sizeof L);
     if (lat) {
         unsigned long long a = 1, b = 1;
@@ -144,7 +144,7 @@ int cmd_ocean(int argc, char **argv)
         }
         if (b != N || idx < 3)
             cli_die(2, "--points: expected a Fibonacci number (e.g. 55, 1597, 10946), got %zu", N);
-        if ((st = rank1_fibonacci(idx, &L)))
+        if ((st = nl_rank1_fibonacci(idx, &L)))
             cli_die_status(st);
     }
     cli_progress("ocean", 0);
@@ -158,8 +158,8 @@ int cmd_ocean(int argc, char **argv)
             double *cf = malloc(2 * N * sizeof *cf), *h = malloc(N * sizeof *h), *g = malloc(2 * N * sizeof *g), imag;
             if (!cf || !h || !g)
                 cli_die(1, "out of memory");
-            if ((st = ocean_lattice_coefficients(&L, &o, seed, t, cf)) ||
-                (st = rank1_synthesize(&L, cf, o.patch, h, g, &imag)))
+            if ((st = nl_ocean_lattice_coefficients(&L, &o, seed, t, cf)) ||
+                (st = nl_rank1_synthesize(&L, cf, o.patch, h, g, &imag)))
                 cli_die_status(st);
             if (out) {
                 char *name = frame_name(out, fr, frames);
@@ -170,7 +170,7 @@ int cmd_ocean(int argc, char **argv)
                 fprintf(fp, "x\ty\th\tnx\tny\tnz\n");
                 for (size_t n = 0; n < N; n++) {
                     double x[2], nn = sqrt(g[2 * n] * g[2 * n] + g[2 * n + 1] * g[2 * n + 1] + 1);
-                    rank1_point(&L, n, x);
+                    nl_rank1_point(&L, n, x);
                     fprintf(fp, "%.8g\t%.8g\t%.8g\t%.8g\t%.8g\t%.8g\n", x[0] * o.patch, x[1] * o.patch, h[n],
                             -g[2 * n] / nn, -g[2 * n + 1] / nn, 1 / nn);
                 }
@@ -185,12 +185,12 @@ int cmd_ocean(int argc, char **argv)
                 char *name = frame_name(mesh, fr, frames);
                 const char *tmp = cli_out_begin(name);
                 FILE *fp = fopen(tmp, "w");
-                if ((st = rank1_delaunay(&L, &n1, &n2, v1, v2)))
+                if ((st = nl_rank1_delaunay(&L, &n1, &n2, v1, v2)))
                     cli_die_status(st);
                 for (size_t n = 0; n < N; n++) {
                     double x[2];
                     size_t id[4] = {n, (n + n1) % N, (n + n2) % N, (n + n1 + n2) % N};
-                    rank1_point(&L, n, x);
+                    nl_rank1_point(&L, n, x);
                     double P[4][2] = {{x[0], x[1]}, {x[0] + v1[0], x[1] + v1[1]}, {x[0] + v2[0], x[1] + v2[1]},
                                       {x[0] + v1[0] + v2[0], x[1] + v1[1] + v2[1]}};
                     static const int tri[2][3] = {{0, 1, 2}, {1, 3, 2}};
@@ -206,14 +206,14 @@ int cmd_ocean(int argc, char **argv)
                 cli_out_commit(name);
                 free(name);
             }
-            if ((image || tile) && (st = rank1_rasterize(&L, h, g, W, img, gx, gy)))
+            if ((image || tile) && (st = nl_rank1_rasterize(&L, h, g, W, img, gx, gy)))
                 cli_die_status(st);
             free(cf), free(h), free(g);
         } else {
             double *h = malloc(M * M * sizeof *h), *hx = malloc(M * M * sizeof *hx), *hy = malloc(M * M * sizeof *hy);
             if (!h || !hx || !hy)
                 cli_die(1, "out of memory");
-            if ((st = ocean_grid(M, &o, seed, t, h, hx, hy)))
+            if ((st = nl_ocean_grid(M, &o, seed, t, h, hx, hy)))
                 cli_die_status(st);
             if (out) {
                 size_t n[2] = {M, M};
@@ -262,7 +262,7 @@ int cmd_ocean(int argc, char **argv)
         }
         free(img), free(gx), free(gy);
     }
-    rank1_free(&L);
+    nl_rank1_free(&L);
     cli_progress_done();
     return 0;
 }

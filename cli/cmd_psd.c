@@ -58,13 +58,13 @@ static size_t profile(const nl_field *P, double *freq, double *val, size_t *cnt)
             fmax = fmin(fmax, 0.5 / P->h[a]);
         }
         nb = (size_t)floor(fmax / step) + 1;
-        if ((st = an_radial(P, AN_GRID_FREQ, step, nb, freq, val, cnt)))
+        if ((st = nl_radial(P, NL_GRID_FREQ, step, nb, freq, val, cnt)))
             cli_die_status(st);
         return nb;
     }
 }
 
-int cmd_psd(int argc, char **argv)
+int cli_cmd_psd(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"radial", no_argument, 0, 'r'},     {"mean", required_argument, 0, 'm'},
@@ -78,7 +78,7 @@ int cmd_psd(int argc, char **argv)
     size_t welch = 0, nseg = 1;
     const char *preview = NULL, *pvtmp = NULL;
     double f1 = 0, f2 = 0;
-    an_slope sl;
+    nl_slope sl;
     size_t nf, maxn, *cnt;
     nl_field *x, *P;
 
@@ -116,7 +116,7 @@ int cmd_psd(int argc, char **argv)
         tmp = cli_out_begin(out);
     if (preview)
         pvtmp = cli_out_begin(preview);
-    if ((st = welch ? an_psd_welch(x, welch, mean, &P, &nseg) : an_psd_periodogram(x, mean, &P)))
+    if ((st = welch ? nl_psd_welch(x, welch, mean, &P, &nseg) : nl_psd_periodogram(x, mean, &P)))
         cli_die_status(st);
     if ((out && cli_has_ext(out, ".exr")) || preview) {
         /* the 2D spectrum with zero frequency at the centre */
@@ -192,7 +192,7 @@ int cmd_psd(int argc, char **argv)
         nl_model_free(m);
         nl_field_free(S);
     }
-    if (slope && (st = x->dim == 1 ? an_psd_slope(freq, val, nf, f1, f2, 1, &sl) : an_psd_slope_grid(P, f1, f2, &sl)))
+    if (slope && (st = x->dim == 1 ? nl_psd_slope(freq, val, nf, f1, f2, 1, &sl) : nl_psd_slope_grid(P, f1, f2, &sl)))
         cli_die_status(st);
     if (json) {
         json_t *o = json_pack("{s:o,s:o}", "freq", cli_json_array(freq, nf), "psd", cli_json_array(val, nf));
@@ -224,7 +224,7 @@ int cmd_psd(int argc, char **argv)
     if (out || (!json && !angular && !preview)) {
         static const char *const names[] = {"freq", "psd", "target"};
         const double *cols[] = {freq, val, tgt};
-        st = write_table(out ? tmp : NULL, x->dim == 1 ? "noiselab psd: two-sided periodogram density, freq in cycles per unit"
+        st = cli_write_table(out ? tmp : NULL, x->dim == 1 ? "noiselab psd: two-sided periodogram density, freq in cycles per unit"
                                       : "noiselab psd: two-sided periodogram density, radial average, freq in "
                                         "cycles per unit",
                           tgt ? 3 : 2, names, nf, cols);

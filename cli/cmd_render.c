@@ -47,20 +47,20 @@ static void pair(const char *opt, const char *s, double *a, double *b)
         cli_die(2, "%s: expected two numbers A,B, got \"%s\"", opt, s);
 }
 
-static void perspective(const char *in, const nl_field *x, const char *tmp, terrain_view *v)
+static void perspective(const char *in, const nl_field *x, const char *tmp, nl_render_view *v)
 {
     uint8_t *rgb = malloc(v->width * v->height * 3);
     int st;
     if (!rgb)
         cli_die(1, "render: out of memory for a %zu x %zu picture", v->width, v->height);
     cli_phase("render", in);
-    if ((st = terrain_render(x, v, rgb)) || (st = nl_png_write_rgb8(tmp, v->width, v->height, rgb)))
+    if ((st = nl_render_terrain(x, v, rgb)) || (st = nl_png_write_rgb8(tmp, v->width, v->height, rgb)))
         cli_die_status(st);
     cli_progress_done();
     free(rgb);
 }
 
-int cmd_render(int argc, char **argv)
+int cli_cmd_render(int argc, char **argv)
 {
     static const struct option opts[] = {{"range", required_argument, 0, 'r'}, {"shade", required_argument, 0, 's'},
                                          {"zscale", required_argument, 0, 'z'}, {"output", required_argument, 0, 'o'},
@@ -136,8 +136,8 @@ int cmd_render(int argc, char **argv)
     if (x->dim != 2)
         cli_die(2, "render: expected a 2D field, %s is %dD", argv[optind], x->dim);
     if (persp) {
-        terrain_view v;
-        terrain_view_default(x, &v);
+        nl_render_view v;
+        nl_render_view_default(x, &v);
         if (size) {
             size_t n[3];
             if (cli_parse_size("--size", size, n, 1) != 2 || n[0] > 8192 || n[1] > 8192)
@@ -162,7 +162,7 @@ int cmd_render(int argc, char **argv)
             v.haze = haze;
         v.water = water;
         v.tile = tile;
-        v.palette = sea ? TERRAIN_SEA : TERRAIN_LAND;
+        v.palette = sea ? NL_RENDER_SEA : NL_RENDER_LAND;
         nl_field *cf = NULL;
         if (clouds) {
             cf = cli_read_field(clouds, NULL);
@@ -214,8 +214,8 @@ int cmd_render(int argc, char **argv)
         nl_field_free(s);
     } else {
         if (isnan(lo)) {
-            an_moments m;
-            if ((st = an_moments_compute(x, &m)))
+            nl_moments m;
+            if ((st = nl_moments_compute(x, &m)))
                 cli_die_status(st);
             lo = m.mean - 3 * sqrt(m.variance), hi = m.mean + 3 * sqrt(m.variance);
             if (!(hi > lo))

@@ -18,7 +18,7 @@ static const char help[] =
     "      lognormal[:zeta=,sigma=], chi2-1 (squared Gaussian), power:p=P (U^P, the\n"
     "      paper's y^2.5 terrains on the uniform rank), table:FILE (TSV columns u y)\n";
 
-int cmd_shape(int argc, char **argv)
+int cli_cmd_shape(int argc, char **argv)
 {
     static const struct option opts[] = {{"to", required_argument, 0, 't'}, {"empirical", no_argument, 0, 'e'},
                                          {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
@@ -52,7 +52,7 @@ int cmd_shape(int argc, char **argv)
     if (cli_has_ext(out, ".tsv") && x->dim != 1)
         cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", x->dim, out);
     tmp = cli_out_begin(out);
-    if ((st = synth_shape(x, d, empirical)))
+    if ((st = nl_synth_shape(x, d, empirical)))
         cli_die_status(st);
     size_t len = strlen(meta.method);
     snprintf(meta.method + len, sizeof meta.method - len, "%s shape:%s%s", len ? " +" : "", to,

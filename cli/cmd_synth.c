@@ -110,7 +110,7 @@ static void parse_origin(const char *s, long *o)
 
 /* Regenerate from a field's provenance: the method string "name:k=v,...|k=v|..."
  * written by the methods, the model, seed, size and spacing. */
-static void apply_from(const char *path, synth_job *job, const char **acf, const char **spec, const char **size,
+static void apply_from(const char *path, cli_synth_job *job, const char **acf, const char **spec, const char **size,
                        const char **spacing, char *mbuf, char *sizebuf, char *spbuf, char *methbuf)
 {
     nl_meta meta;
@@ -189,7 +189,7 @@ static void only_for(const char *opt, int given, const char *method, const char 
         cli_die(2, "synth %s: %s applies to %s only", method, opt, allowed);
 }
 
-int cmd_synth(int argc, char **argv)
+int cli_cmd_synth(int argc, char **argv)
 {
     static const struct option opts[] = {
         {"acf", required_argument, 0, 'a'},        {"spectrum", required_argument, 0, 'S'},
@@ -213,8 +213,8 @@ int cmd_synth(int argc, char **argv)
     static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
     char sbuf[1200];
     int c, json = 0, st, given_L = 0, given_N = 0, given_tol = 0, given_vs = 0, given_density = 0;
-    synth_job job;
-    synth_result res;
+    cli_synth_job job;
+    cli_synth_result res;
     nl_field *f;
     nl_meta meta;
 
@@ -320,12 +320,12 @@ int cmd_synth(int argc, char **argv)
     }
     static const struct {
         const char *name;
-        void (*run)(const synth_job *, nl_field *, synth_result *);
-    } methods[] = {{"fft", synth_fft_run},         {"subdiv", synth_subdiv_run},
-                   {"midpoint", synth_midpoint_run}, {"circulant", synth_circulant_run},
-                   {"cholesky", synth_cholesky_run}, {"faulting", synth_faulting_run},
-                   {"sparse", synth_sparse_run}, {"lattice", synth_lattice_run}};
-    void (*run)(const synth_job *, nl_field *, synth_result *) = NULL;
+        void (*run)(const cli_synth_job *, nl_field *, cli_synth_result *);
+    } methods[] = {{"fft", cli_synth_fft_run},         {"subdiv", cli_synth_subdiv_run},
+                   {"midpoint", cli_synth_midpoint_run}, {"circulant", cli_synth_circulant_run},
+                   {"cholesky", cli_synth_cholesky_run}, {"faulting", cli_synth_faulting_run},
+                   {"sparse", cli_synth_sparse_run}, {"lattice", cli_synth_lattice_run}};
+    void (*run)(const cli_synth_job *, nl_field *, cli_synth_result *) = NULL;
     for (size_t i = 0; i < sizeof methods / sizeof *methods; i++)
         if (strcmp(job.method, methods[i].name) == 0)
             run = methods[i].run;

@@ -30,22 +30,22 @@ static const char help[] =
     "approximate: its own exact expected ACF is shown beside the target.\n";
 
 typedef int (*run_fn)(void *ctx, uint64_t seed, nl_field *f);
-static int run_fft(void *c, uint64_t s, nl_field *f) { return synth_fft_execute(c, s, f); }
-static int run_circ(void *c, uint64_t s, nl_field *f) { return synth_circulant_execute(c, s, f); }
-static int run_sparse(void *c, uint64_t s, nl_field *f) { return synth_sparse_execute(c, s, 1, NULL, f); }
+static int run_fft(void *c, uint64_t s, nl_field *f) { return nl_synth_fft_execute(c, s, f); }
+static int run_circ(void *c, uint64_t s, nl_field *f) { return nl_synth_circulant_execute(c, s, f); }
+static int run_sparse(void *c, uint64_t s, nl_field *f) { return nl_synth_sparse_execute(c, s, 1, NULL, f); }
 typedef struct {
-    subdiv_coeffs *c;
+    nl_subdiv_coeffs *c;
     const nl_model *m;
 } sub_ctx;
 static int run_sub(void *c, uint64_t s, nl_field *f)
 {
     sub_ctx *x = c;
-    return subdiv_synth_periodic(x->c, x->m, s, 0, f);
+    return nl_subdiv_synth_periodic(x->c, x->m, s, 0, f);
 }
 
 #define L 33
 
-int cmd_validate(int argc, char **argv)
+int cli_cmd_validate(int argc, char **argv)
 {
     static const struct option opts[] = {{"acf", required_argument, 0, 'a'}, {"dim", required_argument, 0, 'd'},
                                          {"output", required_argument, 0, 'o'}, {"size", required_argument, 0, 'n'},
@@ -79,10 +79,10 @@ int cmd_validate(int argc, char **argv)
     if (mkdir(dir, 0755) && errno != EEXIST)
         cli_die(2, "-o: cannot create directory \"%s\": %s", dir, strerror(errno));
     nl_model *m;
-    an_check k;
+    nl_check k;
     if ((st = nl_model_parse(spec, &m)))
         cli_die_status(st);
-    if ((st = an_check_model(m, dim, &k)))
+    if ((st = nl_check_model(m, dim, &k)))
         cli_die_status(st);
     size_t n[2] = {N, dim == 2 ? N : 1};
     double h = 1, target[L], lag1[3] = {0, 0, 0};
@@ -104,29 +104,29 @@ int cmd_validate(int argc, char **argv)
     for (int meth = 0; meth < 4; meth++) {
         void *ctx = NULL;
         run_fn fn = NULL;
-        synth_fft_plan *pf = NULL;
-        synth_circulant_plan *pc = NULL;
-        synth_sparse_plan *ps = NULL;
+        nl_synth_fft_plan *pf = NULL;
+        nl_synth_circulant_plan *pc = NULL;
+        nl_synth_sparse_plan *ps = NULL;
         sub_ctx sc = {NULL, m};
         res[meth].name = names[meth];
-        if (meth == 0) st = synth_fft_plan_alloc(m, dim, n, NULL, 0, &pf), ctx = pf, fn = run_fft;
-        if (meth == 1) st = synth_circulant_plan_alloc(m, dim, n, NULL, 0, 16, &pc), ctx = pc, fn = run_circ;
+        if (meth == 0) st = nl_synth_fft_plan_alloc(m, dim, n, NULL, 0, &pf), ctx = pf, fn = run_fft;
+        if (meth == 1) st = nl_synth_circulant_plan_alloc(m, dim, n, NULL, 0, 16, &pc), ctx = pc, fn = run_circ;
         if (meth == 2) {
             int Lv = 0;
             while ((N >> (Lv + 1)) >= 16)
                 Lv++;
-            st = subdiv_coeffs_alloc(m, dim, Lv, ldexp(h, Lv), 2, 1e-4, 6, &sc.c);
-            if (!st && (sc.c->flags & SUBDIV_NOT_PD))
+            st = nl_subdiv_coeffs_alloc(m, dim, Lv, ldexp(h, Lv), 2, 1e-4, 6, &sc.c);
+            if (!st && (sc.c->flags & NL_SUBDIV_NOT_PD))
                 st = NL_ERROR(NL_ENOTPD, "not positive definite at some level");
             ctx = &sc, fn = run_sub;
             if (!st && N <= (dim == 1 ? 2048 : 64)) {
                 long lags[2 * L];
                 for (int i = 0; i < L; i++)
                     lags[2 * i] = i, lags[2 * i + 1] = 0;
-                have_exact = an_subdiv_exact_acf(sc.c, m, n[0], n[1], L, lags, exact) == 0;
+                have_exact = nl_subdiv_exact_acf(sc.c, m, n[0], n[1], L, lags, exact) == 0;
             }
         }
-        if (meth == 3) st = synth_sparse_plan_model(m, dim, NULL, 0, 0, 32, &ps), ctx = ps, fn = run_sparse;
+        if (meth == 3) st = nl_synth_sparse_plan_model(m, dim, NULL, 0, 0, 32, &ps), ctx = ps, fn = run_sparse;
         if (!k.positive_definite) {
             snprintf(res[meth].why, sizeof res[meth].why, "the model is not positive definite (see above)");
         } else if (st) {
@@ -136,7 +136,7 @@ int cmd_validate(int argc, char **argv)
             double s1[L] = {0}, s2[L] = {0};
             for (size_t s = 1; s <= M && !st; s++) {
                 cli_progress("validate", (meth + (double)(s - 1) / (double)M) / 4);
-                if ((st = fn(ctx, s, f)) || (st = an_acf_full(f, 0.0, AN_ACF_UNBIASED, &full)))
+                if ((st = fn(ctx, s, f)) || (st = nl_acf_full(f, 0.0, NL_ACF_UNBIASED, &full)))
                     break;
                 for (int i = 0; i < L; i++)
                     s1[i] += full->data[i], s2[i] += full->data[i] * full->data[i];
@@ -154,7 +154,7 @@ int cmd_validate(int argc, char **argv)
             }
             nl_field_free(f);
         }
-        synth_fft_plan_free(pf), synth_circulant_plan_free(pc), synth_sparse_plan_free(ps), subdiv_coeffs_free(sc.c);
+        nl_synth_fft_plan_free(pf), nl_synth_circulant_plan_free(pc), nl_synth_sparse_plan_free(ps), nl_subdiv_coeffs_free(sc.c);
         if (meth == 3)
             cli_progress_done();
         st = NL_OK;

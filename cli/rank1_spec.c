@@ -4,9 +4,9 @@
 
 #include <math.h>
 
-double rank1_model_spectrum(const long *k, int s, void *ctx)
+double cli_rank1_model_spectrum(const long *k, int s, void *ctx)
 {
-    const rank1_model_ctx *c = ctx;
+    const nl_rank1_model_ctx *c = ctx;
     double f[3] = {0, 0, 0}, f2 = 0;
     for (int a = 0; a < s; a++)
         f2 += ((double)k[a] / c->extent) * ((double)k[a] / c->extent);
@@ -19,7 +19,7 @@ double rank1_model_spectrum(const long *k, int s, void *ctx)
     return v / pow(c->extent, s);
 }
 
-int rank1_model_check(const nl_model *m, int s)
+int cli_rank1_model_check(const nl_model *m, int s)
 {
     if (nl_model_is_spectral(m)) {
         if (s > 3)

@@ -9,13 +9,13 @@ typedef struct {
     const nl_model *m;  /* the model */
     int s;              /* dimension */
     double extent;      /* torus side */
-} rank1_model_ctx;
+} nl_rank1_model_ctx;
 
 /* S(k / extent) / extent^s: the closed-form spectrum of spectral models
  * (s <= 3), or the Hankel transform (eq. 13) of isotropic R. */
-double rank1_model_spectrum(const long *k, int s, void *ctx);
+double cli_rank1_model_spectrum(const long *k, int s, void *ctx);
 
 /* NL_OK when the model can give a spectrum in s dimensions. */
-int rank1_model_check(const nl_model *m, int s);
+int cli_rank1_model_check(const nl_model *m, int s);
 
 #endif

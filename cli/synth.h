@@ -32,7 +32,7 @@ typedef struct {
     int wrap;              /* sparse: --wrap */
     int octaves;           /* lattice: --octaves, 0 = down to cell 2 */
     double cell0;          /* lattice: --cell (largest cell), 0 = size / 4 */
-} synth_job;
+} cli_synth_job;
 
 typedef struct {
     char method[256];      /* method and its parameters, for noiselab.method */
@@ -40,16 +40,16 @@ typedef struct {
     double sd;             /* standard deviation for the preview range */
     double offset;         /* centre of the preview range */
     json_t *report;        /* method-specific JSON report (owned) */
-} synth_result;
+} cli_synth_result;
 
 /* Each exits through cli_die on bad input; returns only on success. */
-void synth_fft_run(const synth_job *job, nl_field *f, synth_result *r);
-void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r);
-void synth_midpoint_run(const synth_job *job, nl_field *f, synth_result *r);
-void synth_circulant_run(const synth_job *job, nl_field *f, synth_result *r);
-void synth_cholesky_run(const synth_job *job, nl_field *f, synth_result *r);
-void synth_faulting_run(const synth_job *job, nl_field *f, synth_result *r);
-void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r);
-void synth_lattice_run(const synth_job *job, nl_field *f, synth_result *r);
+void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
+void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
+void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
+void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
+void cli_synth_cholesky_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
+void cli_synth_faulting_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
+void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
+void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
 
 #endif

@@ -14,19 +14,19 @@
 #include <stdio.h>
 #include <string.h>
 
-void synth_fft_run(const synth_job *job, nl_field *f, synth_result *r)
+void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
-    synth_fft_plan *p;
-    synth_fft_info info;
+    nl_synth_fft_plan *p;
+    nl_synth_fft_info info;
     int st;
-    if ((st = synth_fft_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? SYNTH_FFT_CLAMP : 0, &p)))
+    if ((st = nl_synth_fft_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, &p)))
         cli_die_status(st);
-    synth_fft_plan_info(p, &info);
-    if ((st = synth_fft_execute(p, job->seed, f)))
+    nl_synth_fft_plan_info(p, &info);
+    if ((st = nl_synth_fft_execute(p, job->seed, f)))
         cli_die_status(st);
-    synth_fft_plan_free(p);
+    nl_synth_fft_plan_free(p);
     snprintf(r->method, sizeof r->method, "fft");
-    if (info.clamp_error > SYNTH_FFT_CLAMP_TOL)
+    if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
         snprintf(r->flags, sizeof r->flags, "clamped");
     r->sd = sqrt(info.variance);
     r->report = json_pack("{s:f,s:f,s:f,s:I,s:f}", "variance", info.variance, "min_spectrum", info.min_lambda,
@@ -35,7 +35,7 @@ void synth_fft_run(const synth_job *job, nl_field *f, synth_result *r)
 }
 
 /* Largest L with every size divisible by 2^L and at least `min` coarse samples. */
-static int default_levels(const synth_job *job, long min)
+static int default_levels(const cli_synth_job *job, long min)
 {
     int L = 0;
     for (;;) {
@@ -55,14 +55,14 @@ static void flags_string(unsigned f, char *buf, size_t len)
     buf[0] = 0;
     for (unsigned b = 0; b < 6; b++)
         if (f & (1u << b))
-            k += (size_t)snprintf(buf + k, len - k, "%s%s", k ? "," : "", subdiv_flag_name(b));
+            k += (size_t)snprintf(buf + k, len - k, "%s%s", k ? "," : "", nl_subdiv_flag_name(b));
 }
 
-static json_t *levels_report(const subdiv_coeffs *c)
+static json_t *levels_report(const nl_subdiv_coeffs *c)
 {
     json_t *a = json_array();
     for (int k = 0; k < c->levels; k++) {
-        const subdiv_level *l = &c->level[k];
+        const nl_subdiv_level *l = &c->level[k];
         unsigned fl = 0;
         double v = 0;
         char buf[128];
@@ -75,7 +75,7 @@ static json_t *levels_report(const subdiv_coeffs *c)
     return a;
 }
 
-static nl_field *seed_image(const synth_job *job, double *mean)
+static nl_field *seed_image(const cli_synth_job *job, double *mean)
 {
     nl_field *img;
     int st = nl_field_read(job->seed_image, &img, NULL);
@@ -87,9 +87,9 @@ static nl_field *seed_image(const synth_job *job, double *mean)
     return img;
 }
 
-void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r)
+void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
-    subdiv_coeffs *c;
+    nl_subdiv_coeffs *c;
     nl_field *img = NULL;
     double mean = 0, s0, zero[2] = {0, 0}, coarse_corr = NAN;
     int L = job->levels, N = job->N < 0 ? 2 : job->N, st;
@@ -119,18 +119,18 @@ void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r)
         cli_die(2, "--size: expected a size divisible by 2 with at least 16 samples for subdivision, got %zu",
                 job->n[0]);
     s0 = ldexp(job->h[0], L);
-    if ((st = subdiv_coeffs_alloc(job->m, job->dim, L, s0, N, job->tol, job->dim == 1 ? 16 : 6, &c)))
+    if ((st = nl_subdiv_coeffs_alloc(job->m, job->dim, L, s0, N, job->tol, job->dim == 1 ? 16 : 6, &c)))
         cli_die_status(st);
     if (job->random_nb) {
         if (job->dim != 2)
             cli_die(2, "--random-neighborhoods: expected a 2D --size");
-        if ((st = subdiv_coeffs_randomize(c, job->m, job->random_nb, 1)))
+        if ((st = nl_subdiv_coeffs_randomize(c, job->m, job->random_nb, 1)))
             cli_die_status(st);
     }
     if (job->nonperiodic) {
         double lag[2] = {s0, 0};
         coarse_corr = nl_model_acf(job->m, job->dim, lag) / nl_model_acf(job->m, job->dim, zero);
-        st = subdiv_synth_window(c, job->seed, job->origin, f);
+        st = nl_subdiv_synth_window(c, job->seed, job->origin, f);
     } else if (img) {
         size_t step = (size_t)1 << L;
         nl_field *work = nl_field_alloc(img->dim, img->n, img->h, &st);
@@ -138,7 +138,7 @@ void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r)
             cli_die_status(st);
         for (size_t i = 0; i < img->count; i++)
             work->data[i] = img->data[i] - mean;
-        st = subdiv_refine_periodic(c, work, job->seed, job->clamp, f);
+        st = nl_subdiv_refine_periodic(c, work, job->seed, job->clamp, f);
         nl_field_free(work);
         for (size_t i = 0; !st && i < f->count; i++)
             f->data[i] += mean;
@@ -147,7 +147,7 @@ void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r)
             for (size_t i = 0; i < img->n[0]; i++)
                 f->data[(job->dim == 2 ? j * step * f->n[0] : 0) + i * step] = img->data[j * img->n[0] + i];
     } else {
-        st = subdiv_synth_periodic(c, job->m, job->seed, job->clamp, f);
+        st = nl_subdiv_synth_periodic(c, job->m, job->seed, job->clamp, f);
     }
     if (st)
         cli_die_status(st);
@@ -171,12 +171,12 @@ void synth_subdiv_run(const synth_job *job, nl_field *f, synth_result *r)
     if (job->nonperiodic)
         json_object_set_new(r->report, "coarse_correlation", json_real(coarse_corr));
     nl_field_free(img);
-    subdiv_coeffs_free(c);
+    nl_subdiv_coeffs_free(c);
 }
 
-void synth_midpoint_run(const synth_job *job, nl_field *f, synth_result *r)
+void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
-    subdiv_coeffs *c;
+    nl_subdiv_coeffs *c;
     double H = job->H;
     int L = job->levels, st;
     if (job->dim > 2)
@@ -194,30 +194,30 @@ void synth_midpoint_run(const synth_job *job, nl_field *f, synth_result *r)
     }
     if (!L)
         L = default_levels(job, 2);
-    if ((st = subdiv_coeffs_midpoint(job->dim, L, ldexp(job->h[0], L), H, 1.0, job->vscale, &c)))
+    if ((st = nl_subdiv_coeffs_midpoint(job->dim, L, ldexp(job->h[0], L), H, 1.0, job->vscale, &c)))
         cli_die_status(st);
-    if ((st = subdiv_synth_periodic(c, NULL, job->seed, 0, f)))
+    if ((st = nl_subdiv_synth_periodic(c, NULL, job->seed, 0, f)))
         cli_die_status(st);
     snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g", H, L, job->vscale);
     r->sd = sqrt(c->r0);
     r->report = json_pack("{s:f,s:i,s:f}", "H", H, "levels", L, "variance_scale", job->vscale);
-    subdiv_coeffs_free(c);
+    nl_subdiv_coeffs_free(c);
 }
 
-void synth_circulant_run(const synth_job *job, nl_field *f, synth_result *r)
+void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
-    synth_circulant_plan *p;
-    synth_circulant_info info;
+    nl_synth_circulant_plan *p;
+    nl_synth_circulant_info info;
     int st;
-    if ((st = synth_circulant_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? SYNTH_FFT_CLAMP : 0, 16,
+    if ((st = nl_synth_circulant_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, 16,
                                          &p)))
         cli_die_status(st);
-    synth_circulant_plan_info(p, &info);
-    if ((st = synth_circulant_execute(p, job->seed, f)))
+    nl_synth_circulant_plan_info(p, &info);
+    if ((st = nl_synth_circulant_execute(p, job->seed, f)))
         cli_die_status(st);
-    synth_circulant_plan_free(p);
+    nl_synth_circulant_plan_free(p);
     snprintf(r->method, sizeof r->method, "circulant:embedding=%zux%zux%zu", info.m[0], info.m[1], info.m[2]);
-    if (info.clamp_error > SYNTH_FFT_CLAMP_TOL)
+    if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
         snprintf(r->flags, sizeof r->flags, "clamped");
     double zero[3] = {0, 0, 0};
     r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
@@ -228,27 +228,27 @@ void synth_circulant_run(const synth_job *job, nl_field *f, synth_result *r)
                           info.max_eigenvalue, "clamp_error", info.clamp_error, "doublings", info.doublings);
 }
 
-void synth_cholesky_run(const synth_job *job, nl_field *f, synth_result *r)
+void cli_synth_cholesky_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
-    synth_cholesky_plan *p;
+    nl_synth_cholesky_plan *p;
     int st;
     double zero[3] = {0, 0, 0};
-    if ((st = synth_cholesky_plan_alloc(job->m, job->dim, job->n, job->h, &p)))
+    if ((st = nl_synth_cholesky_plan_alloc(job->m, job->dim, job->n, job->h, &p)))
         cli_die_status(st);
-    if ((st = synth_cholesky_execute(p, job->seed, f)))
+    if ((st = nl_synth_cholesky_execute(p, job->seed, f)))
         cli_die_status(st);
-    synth_cholesky_plan_free(p);
+    nl_synth_cholesky_plan_free(p);
     snprintf(r->method, sizeof r->method, "cholesky");
     r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
 }
 
-void synth_faulting_run(const synth_job *job, nl_field *f, synth_result *r)
+void cli_synth_faulting_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     size_t K;
     int st;
     if (job->dim > 2)
         cli_die(2, "synth faulting: expected a 1D or 2D --size, got %dD", job->dim);
-    if ((st = synth_faulting(job->seed, job->density, f, &K)))
+    if ((st = nl_synth_faulting(job->seed, job->density, f, &K)))
         cli_die_status(st);
     snprintf(r->method, sizeof r->method, "faulting:density=%.17g", job->density);
     double mean = 0, var = 0;
@@ -262,10 +262,10 @@ void synth_faulting_run(const synth_job *job, nl_field *f, synth_result *r)
     r->report = json_pack("{s:I,s:f}", "faults", (json_int_t)K, "density", job->density);
 }
 
-void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r)
+void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
-    synth_sparse_plan *p;
-    synth_sparse_info info;
+    nl_synth_sparse_plan *p;
+    nl_synth_sparse_info info;
     double mean = 0;
     int st, given = (job->m != NULL) + (job->kernel != NULL) + (job->exemplar != NULL);
     if (job->dim > 2)
@@ -273,9 +273,9 @@ void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r)
     if (given != 1)
         cli_die(2, "synth sparse: expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE");
     if (job->m)
-        st = synth_sparse_plan_model(job->m, job->dim, job->h, job->radius, job->cell, job->density, &p);
+        st = nl_synth_sparse_plan_model(job->m, job->dim, job->h, job->radius, job->cell, job->density, &p);
     else if (job->kernel)
-        st = synth_sparse_plan_expr(job->kernel, job->dim, job->radius ? job->radius : 16, job->cell, job->density,
+        st = nl_synth_sparse_plan_expr(job->kernel, job->dim, job->radius ? job->radius : 16, job->cell, job->density,
                                     &p);
     else {
         nl_field *img = cli_read_field(job->exemplar, NULL);
@@ -297,21 +297,21 @@ void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r)
             img = c;
         }
         mean = nl_field_mean(img);
-        st = synth_sparse_plan_image(img, job->cell, job->density, &p);
+        st = nl_synth_sparse_plan_image(img, job->cell, job->density, &p);
         nl_field_free(img);
     }
     if (st)
         cli_die_status(st);
-    if (job->angle && (st = synth_sparse_set_angle(p, job->angle)))
+    if (job->angle && (st = nl_synth_sparse_set_angle(p, job->angle)))
         cli_die_status(st);
-    synth_sparse_plan_info(p, &info);
+    nl_synth_sparse_plan_info(p, &info);
     if (job->wrap && job->nonperiodic)
         cli_die(2, "synth sparse: --wrap and --origin exclude each other");
-    if ((st = synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f)))
+    if ((st = nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f)))
         cli_die_status(st);
     for (size_t i = 0; mean != 0 && i < f->count; i++)
         f->data[i] += mean;
-    synth_sparse_plan_free(p);
+    nl_synth_sparse_plan_free(p);
     /* expression-valued keys follow '|', as they may hold commas */
     char org[64] = "";
     if (!job->wrap && (job->origin[0] || job->origin[1]))
@@ -327,18 +327,18 @@ void synth_sparse_run(const synth_job *job, nl_field *f, synth_result *r)
                           info.truncated);
 }
 
-void synth_lattice_run(const synth_job *job, nl_field *f, synth_result *r)
+void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
-    synth_lattice_plan p;
+    nl_synth_lattice_plan p;
     double c0 = job->cell ? job->cell : (double)f->n[0] / 4;
     int O = job->octaves, st;
     json_t *oct = json_array();
     if (job->dim > 2)
         cli_die(2, "synth lattice: expected a 1D or 2D --size, got %dD", job->dim);
     if (!O)
-        for (O = 1; c0 / pow(2, O) >= 2 && O < LATTICE_MAX_OCTAVES; O++)
+        for (O = 1; c0 / pow(2, O) >= 2 && O < NL_LATTICE_MAX_OCTAVES; O++)
             ;
-    if ((st = synth_lattice_plan_alloc(job->m, job->dim, c0, O, &p)) || (st = synth_lattice_execute(&p, job->seed, f)))
+    if ((st = nl_synth_lattice_plan_alloc(job->m, job->dim, c0, O, &p)) || (st = nl_synth_lattice_execute(&p, job->seed, f)))
         cli_die_status(st);
     double var = 0;
     for (int o = 0; o < p.octaves; o++) {

@@ -212,7 +212,7 @@ nl_field *cli_read_field(const char *path, nl_meta *meta)
     return f;
 }
 
-int write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
+int cli_write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
                 const double *const *cols)
 {
     if (path)

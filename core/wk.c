@@ -117,7 +117,7 @@ static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *ds
             idx[0] = i;
             y = value_at(m, g, idx, freq);
             if (!isfinite(y)) {
-#pragma omp critical(nl_wk_bad)
+#pragma omp critical
                 if (r < bad)
                     bad = r;
                 break;

@@ -27,7 +27,7 @@ int main(int argc, char **argv)
 {
     size_t n[2], M, L;
     nl_model *m;
-    synth_fft_plan *p;
+    nl_synth_fft_plan *p;
     nl_field *x, *full;
     double *s1, *s2, zmax = 0, zcrit, h[2] = {1, 1};
     char path[1024];
@@ -40,7 +40,7 @@ int main(int argc, char **argv)
     }
     M = strtoul(argv[3], NULL, 10);
     L = strtoul(argv[4], NULL, 10) + 1;
-    if ((st = nl_model_parse(argv[1], &m)) || (st = synth_fft_plan_alloc(m, 2, n, h, 0, &p))) {
+    if ((st = nl_model_parse(argv[1], &m)) || (st = nl_synth_fft_plan_alloc(m, 2, n, h, 0, &p))) {
         fprintf(stderr, "fft_acf: %s\n", nl_errmsg());
         return 2;
     }
@@ -48,7 +48,7 @@ int main(int argc, char **argv)
     s1 = calloc(2 * L, sizeof *s1);
     s2 = calloc(2 * L, sizeof *s2);
     for (size_t s = 1; s <= M; s++) {
-        synth_fft_execute(p, s, x);
+        nl_synth_fft_execute(p, s, x);
         if (s == 1) {
             snprintf(path, sizeof path, "%s-field.png", argv[5]);
             if ((st = nl_png_write_field(path, x, -3 * sqrt(nl_model_acf(m, 1, (double[]){0})),
@@ -57,7 +57,7 @@ int main(int argc, char **argv)
                 return 1;
             }
         }
-        an_acf_full(x, 0.0, AN_ACF_UNBIASED, &full);
+        nl_acf_full(x, 0.0, NL_ACF_UNBIASED, &full);
         for (size_t i = 0; i < L; i++) {
             double vx = full->data[i], vy = full->data[i * full->n[0]];
             s1[i] += vx, s2[i] += vx * vx;
@@ -96,7 +96,7 @@ int main(int argc, char **argv)
     printf("%s: max |z| = %.2f over %zu lags (threshold %.2f): %s\n", argv[1], zmax, 2 * L, zcrit,
            zmax <= zcrit ? "pass" : "FAIL");
     nl_field_free(x);
-    synth_fft_plan_free(p);
+    nl_synth_fft_plan_free(p);
     nl_model_free(m);
     free(s1);
     free(s2);

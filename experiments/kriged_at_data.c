@@ -20,7 +20,7 @@ int main(int argc, char **argv)
 {
     json_t *j, *pts;
     nl_model *m;
-    krige_plan *kp;
+    nl_krige_plan *kp;
     double *x, *v, err = 0, var = 0, top = 0, r0, zero[3] = {0, 0, 0};
     size_t n;
     if (argc != 2 || !(j = json_load_file(argv[1], 0, NULL)) || !json_is_array(pts = json_object_get(j, "points")) ||
@@ -35,16 +35,16 @@ int main(int argc, char **argv)
         v[i] = json_number_value(json_array_get(json_array_get(pts, i), 3));
         top = fmax(top, fabs(v[i]));
     }
-    if (krige_plan_alloc(m, 3, n, x, v, 1, 0, 0, &kp))
+    if (nl_krige_plan_alloc(m, 3, n, x, v, 1, 0, 0, &kp))
         return 2;
     r0 = nl_model_acf(m, 3, zero);
     for (size_t i = 0; i < n; i++) {
         double e, s;
-        krige_eval(kp, x + 3 * i, &e, &s, NULL);
+        nl_krige_eval(kp, x + 3 * i, &e, &s, NULL);
         err = fmax(err, fabs(e - v[i]));
         var = fmax(var, s);
     }
     printf("points %zu max_error %.2e max_variance %.2e\n", n, err, var);
-    krige_plan_free(kp), nl_model_free(m), json_decref(j), free(x), free(v);
+    nl_krige_plan_free(kp), nl_model_free(m), json_decref(j), free(x), free(v);
     return err <= 1e-9 * top && var <= 1e-9 * r0 ? 0 : 1;
 }

@@ -26,7 +26,7 @@ static const double t2[16] = {-0.006170, -0.003781, -0.003781, -0.006170, -0.003
 int main(int argc, char **argv)
 {
     nl_model *m1, *m2;
-    subdiv_coeffs *c1, *c2;
+    nl_subdiv_coeffs *c1, *c2;
     double da = 0, dv = 0, d2 = 0;
     FILE *fp;
     if (argc != 2 || !(fp = fopen(argv[1], "w"))) {
@@ -34,7 +34,7 @@ int main(int argc, char **argv)
         return 2;
     }
     if (nl_model_parse("expr:100*cos(10*t)*exp(-abs(t))", &m1) || nl_model_parse("markov", &m2) ||
-        subdiv_coeffs_alloc(m1, 1, 10, 15.0, 2, 0, 1, &c1) || subdiv_coeffs_alloc(m2, 2, 1, 1.0, 2, 0, 1, &c2))
+        nl_subdiv_coeffs_alloc(m1, 1, 10, 15.0, 2, 0, 1, &c1) || nl_subdiv_coeffs_alloc(m2, 2, 1, 1.0, 2, 0, 1, &c2))
         return 1;
     fprintf(fp, "## Lewis 1987, Table 1\n\n> Right-half neighborhood (N = 2) coefficients a_1, a_2 and computed "
                 "variance for 10 subdivision levels of the one-dimensional oscillatory noise defined by "
@@ -43,7 +43,7 @@ int main(int argc, char **argv)
                 "| level | spacing | a_1 (ours) | a_1 (paper) | a_2 (ours) | a_2 (paper) | variance (ours) | "
                 "variance (paper) |\n|---|---|---|---|---|---|---|---|\n");
     for (int k = 0; k < 10; k++) {
-        const subdiv_class *cl = &c1->level[k].cls[0];
+        const nl_subdiv_class *cl = &c1->level[k].cls[0];
         da = fmax(da, fmax(fabs(cl->a[2] - t1[k][0]), fabs(cl->a[3] - t1[k][1])));
         dv = fmax(dv, fabs(cl->variance - t1[k][2]) / t1[k][2]);
         fprintf(fp, "| %d | %g | %.6f | %.6f | %.6f | %.6f | %.6f | %.6f |\n", k, c1->level[k].spacing, cl->a[2],
@@ -74,7 +74,7 @@ int main(int argc, char **argv)
                 "`coeffs` flags as diagonal-bias (threshold 1%%).\n\n", d2, d2 <= 5e-6 ? "pass" : "FAIL", sum,
             100 * fabs(c2->level[0].cls[0].a[0]) / amax);
     fclose(fp);
-    subdiv_coeffs_free(c1), subdiv_coeffs_free(c2), nl_model_free(m1), nl_model_free(m2);
+    nl_subdiv_coeffs_free(c1), nl_subdiv_coeffs_free(c2), nl_model_free(m1), nl_model_free(m2);
     printf("Table 1: max |da| %.2g, rel dvar %.2g; Table 2: max |da| %.2g\n", da, dv, d2);
     return da <= 1e-6 && dv <= 1e-5 && d2 <= 5e-6 ? 0 : 1;
 }

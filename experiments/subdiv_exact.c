@@ -1,6 +1,6 @@
 /* Experiment: the exact covariance of subdivision fields against the target.
  *
- * usage: subdiv_exact OUT.md OUT.tsv MAP.tsv
+ * usage: nl_subdiv_exact OUT.md OUT.tsv MAP.tsv
  * For each model, the expected unbiased ACF (known mean 0) of a periodic
  * subdivision field, computed exactly by propagating the covariance through
  * the levels (analysis/subdiv_exact.h): the method's own error, free of
@@ -20,21 +20,21 @@
 static double err_1d(const char *spec, double h, int N, FILE *tsv)
 {
     nl_model *m;
-    subdiv_coeffs *c;
+    nl_subdiv_coeffs *c;
     long lags[2 * 65];
     double ex[65], e = 0;
     nl_model_parse(spec, &m);
-    subdiv_coeffs_alloc(m, 1, 6, ldexp(h, 6), N, 1e-4, 16, &c);
+    nl_subdiv_coeffs_alloc(m, 1, 6, ldexp(h, 6), N, 1e-4, 16, &c);
     for (int i = 0; i < 65; i++)
         lags[2 * i] = i, lags[2 * i + 1] = 0;
-    an_subdiv_exact_acf(c, m, 1024, 1, 65, lags, ex);
+    nl_subdiv_exact_acf(c, m, 1024, 1, 65, lags, ex);
     for (int i = 0; i < 65; i++) {
         double lag = i * h, r = nl_model_acf(m, 1, &lag);
         e = fmax(e, fabs(ex[i] - r) / c->r0);
         fprintf(tsv, "%s\t%d\t%g\t%.8g\t%.8g\n", spec, N, lag, ex[i] / c->r0, r / c->r0);
     }
     fprintf(tsv, "\n\n");
-    subdiv_coeffs_free(c);
+    nl_subdiv_coeffs_free(c);
     nl_model_free(m);
     return e;
 }
@@ -42,14 +42,14 @@ static double err_1d(const char *spec, double h, int N, FILE *tsv)
 static double diag_bias(int N, double *axis_err)
 {
     nl_model *m;
-    subdiv_coeffs *c;
+    nl_subdiv_coeffs *c;
     long lags[2 * 40];
     double ex[40], a = 0;
     nl_model_parse("markov:scale=12", &m);
-    subdiv_coeffs_alloc(m, 2, 4, 16.0, N, 1e-4, 8, &c);
+    nl_subdiv_coeffs_alloc(m, 2, 4, 16.0, N, 1e-4, 8, &c);
     for (int k = 0; k < 20; k++)
         lags[2 * k] = k, lags[2 * k + 1] = 0, lags[2 * (20 + k)] = k, lags[2 * (20 + k) + 1] = k;
-    an_subdiv_exact_acf(c, m, 64, 64, 40, lags, ex);
+    nl_subdiv_exact_acf(c, m, 64, 64, 40, lags, ex);
     *axis_err = 0;
     for (int k = 1; k < 12; k++) {
         double d = k * sqrt(2.0), f = d - floor(d), lag[2] = {k, 0};
@@ -59,7 +59,7 @@ static double diag_bias(int N, double *axis_err)
             a = ex[20 + k] - ax;
         *axis_err = fmax(*axis_err, fabs(ex[k] - nl_model_acf(m, 2, lag)));
     }
-    subdiv_coeffs_free(c);
+    nl_subdiv_coeffs_free(c);
     nl_model_free(m);
     return a;
 }
@@ -70,18 +70,18 @@ static double diag_map(FILE *out)
 {
     enum { L = 20, NL = (L + 1) * (2 * L + 1) };
     nl_model *m;
-    subdiv_coeffs *c;
+    nl_subdiv_coeffs *c;
     static long lags[2 * NL];
     static double ex[NL];
     double top = 0;
     nl_model_parse("markov:scale=12", &m);
-    subdiv_coeffs_alloc(m, 2, 4, 16.0, 2, 1e-4, 8, &c);
+    nl_subdiv_coeffs_alloc(m, 2, 4, 16.0, 2, 1e-4, 8, &c);
     for (int x = 0; x <= L; x++)
         for (int y = -L; y <= L; y++) {
             int k = x * (2 * L + 1) + (y + L);
             lags[2 * k] = x, lags[2 * k + 1] = y;
         }
-    an_subdiv_exact_acf(c, m, 64, 64, NL, lags, ex);
+    nl_subdiv_exact_acf(c, m, 64, 64, NL, lags, ex);
     fprintf(out, "# x\ty\texact\ttarget\tanisotropy\n");
     for (int x = -L; x <= L; x++) {
         for (int y = -L; y <= L; y++) {
@@ -100,7 +100,7 @@ static double diag_map(FILE *out)
         }
         fprintf(out, "\n");
     }
-    subdiv_coeffs_free(c);
+    nl_subdiv_coeffs_free(c);
     nl_model_free(m);
     return top;
 }

@@ -14,7 +14,7 @@ static const double water_rgb[3] = {0.10, 0.22, 0.33};
 
 typedef struct {
     const nl_field *f;
-    const terrain_view *v;
+    const nl_render_view *v;
     double *rgb;          /* lit colour per sample */
     double hmin, hmax;    /* heights after zscale */
 } scene;
@@ -79,15 +79,15 @@ static void ground(int palette, double u, double slope, double *c)
                                      {0.80, 0.52, 0.48, 0.43}, {0.88, 0.93, 0.93, 0.95}, {1.00, 0.97, 0.97, 0.99}};
     static const double sea[][4] = {{0.00, 0.04, 0.14, 0.28}, {0.60, 0.13, 0.33, 0.50}, {1.00, 0.62, 0.76, 0.86}};
     static const double rock[3] = {0.45, 0.41, 0.37};
-    const double(*p)[4] = palette == TERRAIN_SEA ? sea : land;
-    int n = palette == TERRAIN_SEA ? 3 : 6, k = 0;
+    const double(*p)[4] = palette == NL_RENDER_SEA ? sea : land;
+    int n = palette == NL_RENDER_SEA ? 3 : 6, k = 0;
     u = fmin(1, fmax(0, u));
     while (k + 2 < n && u > p[k + 1][0])
         k++;
     double t = (u - p[k][0]) / (p[k + 1][0] - p[k][0]);
     for (int q = 0; q < 3; q++)
         c[q] = p[k][q + 1] + t * (p[k + 1][q + 1] - p[k][q + 1]);
-    if (palette == TERRAIN_LAND) {
+    if (palette == NL_RENDER_LAND) {
         double r = fmin(1, fmax(0, (slope - 1.0) / 0.8));
         mix(c, rock, r * r * (3 - 2 * r));
     }
@@ -97,7 +97,7 @@ static void ground(int palette, double u, double slope, double *c)
  * the terrain toward the sun rises above the sun's ray. */
 static void light(scene *s)
 {
-    const terrain_view *v = s->v;
+    const nl_render_view *v = s->v;
     long nx = (long)s->f->n[0], ny = (long)s->f->n[1];
     double L[3] = {cos(rad(v->sun[1])) * cos(rad(v->sun[0])), cos(rad(v->sun[1])) * sin(rad(v->sun[0])),
                    sin(rad(v->sun[1]))};
@@ -160,7 +160,7 @@ static void cloud_stats(const nl_field *g, double *mean, double *sd)
 
 /* Sky along the ray of horizontal direction (dx, dy) at this elevation,
  * with the cloud plane's cover mixed in (fading with distance). */
-static void sky_at(const terrain_view *v, double cmean, double csd, double dx, double dy, double elevation, double *c)
+static void sky_at(const nl_render_view *v, double cmean, double csd, double dx, double dy, double elevation, double *c)
 {
     sky(elevation, c);
     if (v->clouds && elevation > 0.01) {
@@ -175,7 +175,7 @@ static void sky_at(const terrain_view *v, double cmean, double csd, double dx, d
     }
 }
 
-void terrain_view_default(const nl_field *f, terrain_view *v)
+void nl_render_view_default(const nl_field *f, nl_render_view *v)
 {
     /* heights scaled so that the rms slope (differences between
      * neighbouring samples, wrapped) is 0.5: hills, not needles, whatever
@@ -204,7 +204,7 @@ void terrain_view_default(const nl_field *f, terrain_view *v)
     v->water = NAN;
 }
 
-int terrain_render(const nl_field *f, const terrain_view *v, uint8_t *rgb)
+int nl_render_terrain(const nl_field *f, const nl_render_view *v, uint8_t *rgb)
 {
     const size_t W = v->width * SS, H = v->height * SS;
     scene s = {f, v, NULL, INFINITY, -INFINITY};

@@ -35,22 +35,22 @@ typedef struct {
     double haze;           /* distance (samples) at which haze covers 63% */
     double water;          /* water level in field units; NAN: no water */
     int tile;              /* repeat the field periodically beyond its edges */
-    int palette;           /* TERRAIN_LAND or TERRAIN_SEA */
+    int palette;           /* NL_RENDER_LAND or NL_RENDER_SEA */
     const nl_field *clouds; /* NULL, or a 2D field drawn as clouds on a plane
                                above the camera (tiled, one sample per
                                cloud_scale samples of the terrain) */
     double cloud_height;   /* the plane's height above the camera, samples */
     double cloud_scale;    /* terrain samples per cloud sample */
-} terrain_view;
+} nl_render_view;
 
-enum { TERRAIN_LAND = 0, TERRAIN_SEA = 1 };
+enum { NL_RENDER_LAND = 0, NL_RENDER_SEA = 1 };
 
 /* Default view of field f: camera behind the middle of the lower (y = 0)
  * edge, 0.15 n above the terrain there, looking along +y, 10 degrees down. */
-void terrain_view_default(const nl_field *f, terrain_view *v);
+void nl_render_view_default(const nl_field *f, nl_render_view *v);
 
 /* Render f (2D) into rgb (width * height * 3 bytes, rows top to bottom).
  * NL_EINVAL for a field that is not 2D or a view with bad numbers. */
-int terrain_render(const nl_field *f, const terrain_view *v, uint8_t *rgb);
+int nl_render_terrain(const nl_field *f, const nl_render_view *v, uint8_t *rgb);
 
 #endif

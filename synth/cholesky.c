@@ -6,14 +6,14 @@
 #include <gsl/gsl_linalg.h>
 #include <stdlib.h>
 
-struct synth_cholesky_plan {
+struct nl_synth_cholesky_plan {
     int dim;            /* 1..3 */
     size_t n[3];        /* grid */
     size_t count;       /* samples */
     gsl_matrix *L;      /* lower Cholesky factor (upper triangle unused) */
 };
 
-void synth_cholesky_plan_free(synth_cholesky_plan *p)
+void nl_synth_cholesky_plan_free(nl_synth_cholesky_plan *p)
 {
     if (!p)
         return;
@@ -21,19 +21,19 @@ void synth_cholesky_plan_free(synth_cholesky_plan *p)
     free(p);
 }
 
-int synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h,
-                              synth_cholesky_plan **out)
+int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h,
+                              nl_synth_cholesky_plan **out)
 {
-    synth_cholesky_plan *p;
+    nl_synth_cholesky_plan *p;
     size_t count, nn[2];
     double hh[3] = {1, 1, 1};
     int st;
     *out = NULL;
     if ((st = nl_size_check(dim, n, 1, 1, &count)))
         return st;
-    if (count > SYNTH_CHOLESKY_MAX)
+    if (count > NL_SYNTH_CHOLESKY_MAX)
         return NL_ERROR(NL_ETOOBIG, "cholesky: %zu samples need a %zu x %zu covariance matrix; expected at most "
-                        "%d samples (use circulant for larger grids)", count, count, count, SYNTH_CHOLESKY_MAX);
+                        "%d samples (use circulant for larger grids)", count, count, count, NL_SYNTH_CHOLESKY_MAX);
     nn[0] = nn[1] = count;
     if ((st = nl_size_check(2, nn, sizeof(double), 1, NULL)))
         return st;
@@ -63,7 +63,7 @@ int synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const
             gsl_matrix_set(p->L, j, i, r);
         }
     if (gsl_linalg_cholesky_decomp1(p->L) != 0) {
-        synth_cholesky_plan_free(p);
+        nl_synth_cholesky_plan_free(p);
         return NL_ERROR(NL_ENOTPD, "%s: the %zu x %zu covariance matrix is not positive definite (Cholesky "
                         "failed); the model is not valid on this grid, or it is singular at this spacing",
                         nl_model_spec(m), count, count);
@@ -72,7 +72,7 @@ int synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const
     return NL_OK;
 }
 
-int synth_cholesky_execute(const synth_cholesky_plan *p, uint64_t seed, nl_field *out)
+int nl_synth_cholesky_execute(const nl_synth_cholesky_plan *p, uint64_t seed, nl_field *out)
 {
     double *z;
     if (out->count != p->count)
@@ -81,7 +81,7 @@ int synth_cholesky_execute(const synth_cholesky_plan *p, uint64_t seed, nl_field
     if (!z)
         return NL_ERROR(NL_ENOMEM, "out of memory");
     for (size_t j = 0; j < p->count; j++)
-        z[j] = nl_rng_gauss(seed, SYNTH_CHOLESKY_STREAM, j);
+        z[j] = nl_rng_gauss(seed, NL_SYNTH_CHOLESKY_STREAM, j);
     for (size_t i = 0; i < p->count; i++) {
         double s = 0;
         for (size_t j = 0; j <= i; j++)

@@ -6,13 +6,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-struct synth_circulant_plan {
+struct nl_synth_circulant_plan {
     int dim;                 /* 1..3 */
     size_t n[3];             /* output grid */
     double h[3];             /* spacing */
-    synth_fft_plan *fft;     /* periodic synthesis on the embedding */
+    nl_synth_fft_plan *fft;     /* periodic synthesis on the embedding */
     nl_field *work;          /* embedding-size field; NOT shared between threads */
-    synth_circulant_info info;
+    nl_synth_circulant_info info;
 };
 
 /* Smallest even 2,3,5-smooth number >= x. */
@@ -28,19 +28,19 @@ static size_t smooth_even(size_t x)
     }
 }
 
-void synth_circulant_plan_free(synth_circulant_plan *p)
+void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p)
 {
     if (!p)
         return;
-    synth_fft_plan_free(p->fft);
+    nl_synth_fft_plan_free(p->fft);
     nl_field_free(p->work);
     free(p);
 }
 
-int synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
-                               int max_factor, synth_circulant_plan **out)
+int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                               int max_factor, nl_synth_circulant_plan **out)
 {
-    synth_circulant_plan *p;
+    nl_synth_circulant_plan *p;
     size_t mm[3] = {1, 1, 1};
     int st;
     *out = NULL;
@@ -57,23 +57,23 @@ int synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, cons
             mm[a] = smooth_even(2 * (n[a] > 1 ? n[a] - 1 : 1));
     }
     for (;;) {
-        synth_fft_info fi;
-        st = synth_fft_plan_alloc(m, dim, mm, p->h, SYNTH_FFT_CLAMP, &p->fft);
+        nl_synth_fft_info fi;
+        st = nl_synth_fft_plan_alloc(m, dim, mm, p->h, NL_SYNTH_FFT_CLAMP, &p->fft);
         if (st)
             break;
-        synth_fft_plan_info(p->fft, &fi);
+        nl_synth_fft_plan_info(p->fft, &fi);
         p->info.min_eigenvalue = fi.min_lambda / (p->h[0] * p->h[1] * p->h[2]);
         p->info.max_eigenvalue = fi.max_lambda / (p->h[0] * p->h[1] * p->h[2]);
         p->info.clamp_error = fi.clamp_error;
         memcpy(p->info.m, mm, sizeof mm);
-        if (fi.clamp_error <= SYNTH_FFT_CLAMP_TOL)
+        if (fi.clamp_error <= NL_SYNTH_FFT_CLAMP_TOL)
             break;
         int grow = 1;
         for (int a = 0; a < dim; a++)
             if (2 * mm[a] > (size_t)max_factor * p->n[a])
                 grow = 0;
         if (!grow) {
-            if (!(flags & SYNTH_FFT_CLAMP))
+            if (!(flags & NL_SYNTH_FFT_CLAMP))
                 st = NL_ERROR(NL_ENOTPD,
                               "%s: cannot be embedded: the smallest eigenvalue is %.3g (largest %.3g) at embedding "
                               "%zux%zux%zu after %d doublings; zeroing the negatives would change the covariance "
@@ -82,7 +82,7 @@ int synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, cons
                               p->info.doublings, fi.clamp_error);
             break;
         }
-        synth_fft_plan_free(p->fft);
+        nl_synth_fft_plan_free(p->fft);
         p->fft = NULL;
         for (int a = 0; a < dim; a++)
             mm[a] *= 2;
@@ -92,22 +92,22 @@ int synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, cons
         p->work = nl_field_alloc(dim, mm, p->h, &st);
     }
     if (st) {
-        synth_circulant_plan_free(p);
+        nl_synth_circulant_plan_free(p);
         return st;
     }
     *out = p;
     return NL_OK;
 }
 
-void synth_circulant_plan_info(const synth_circulant_plan *p, synth_circulant_info *info) { *info = p->info; }
+void nl_synth_circulant_plan_info(const nl_synth_circulant_plan *p, nl_synth_circulant_info *info) { *info = p->info; }
 
-int synth_circulant_execute(const synth_circulant_plan *p, uint64_t seed, nl_field *out)
+int nl_synth_circulant_execute(const nl_synth_circulant_plan *p, uint64_t seed, nl_field *out)
 {
     const nl_field *w = p->work;
     int st;
     if (out->dim != p->dim || out->n[0] != p->n[0] || out->n[1] != p->n[1] || out->n[2] != p->n[2])
         return NL_ERROR(NL_EINVAL, "circulant: the output field does not match the plan's grid");
-    if ((st = synth_fft_execute(p->fft, seed, p->work)))
+    if ((st = nl_synth_fft_execute(p->fft, seed, p->work)))
         return st;
     for (size_t k = 0; k < p->n[2]; k++)
         for (size_t j = 0; j < p->n[1]; j++)

@@ -10,8 +10,8 @@
  * eigenvalue beyond that rule doubles m (up to max_factor * n per axis);
  * a model whose embedding never becomes non-negative is refused
  * (NL_ENOTPD) unless clamping is accepted. */
-#ifndef SYNTH_CIRCULANT_H
-#define SYNTH_CIRCULANT_H
+#ifndef NL_SYNTH_CIRCULANT_H
+#define NL_SYNTH_CIRCULANT_H
 
 #include "fft.h"
 
@@ -21,15 +21,15 @@ typedef struct {
     double max_eigenvalue;/* largest */
     double clamp_error;   /* covariance change from zeroing negatives, / R(0) */
     int doublings;        /* times the embedding was doubled */
-} synth_circulant_info;
+} nl_synth_circulant_info;
 
-typedef struct synth_circulant_plan synth_circulant_plan;
+typedef struct nl_synth_circulant_plan nl_synth_circulant_plan;
 
-int synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
-                               int max_factor, synth_circulant_plan **out);
-void synth_circulant_plan_info(const synth_circulant_plan *p, synth_circulant_info *info);
+int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                               int max_factor, nl_synth_circulant_plan **out);
+void nl_synth_circulant_plan_info(const nl_synth_circulant_plan *p, nl_synth_circulant_info *info);
 /* Not thread-safe: the plan holds the embedding-size work field. */
-int synth_circulant_execute(const synth_circulant_plan *p, uint64_t seed, nl_field *out);
-void synth_circulant_plan_free(synth_circulant_plan *p);
+int nl_synth_circulant_execute(const nl_synth_circulant_plan *p, uint64_t seed, nl_field *out);
+void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p);
 
 #endif

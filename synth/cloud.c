@@ -42,13 +42,13 @@ static double vol_at(const vol *g, const double *p)
 }
 
 typedef struct {
-    const cloud_scene *s;
+    const nl_cloud_scene *s;
     vol shape, noise, light;
 } ctx;
 
 static double density(const ctx *c, const double *p)
 {
-    const cloud_scene *s = c->s;
+    const nl_cloud_scene *s = c->s;
     for (int a = 0; a < 3; a++)
         if (p[a] < s->lo[a] || p[a] > s->hi[a])
             return 0;
@@ -60,7 +60,7 @@ static double density(const ctx *c, const double *p)
 }
 
 /* ray-box intersection: [t0, t1] inside, or 0 */
-static int box_hit(const cloud_scene *s, const double *o, const double *d, double *t0, double *t1)
+static int box_hit(const nl_cloud_scene *s, const double *o, const double *d, double *t0, double *t1)
 {
     double a = 0, b = INFINITY;
     for (int k = 0; k < 3; k++) {
@@ -83,7 +83,7 @@ static void normalize(double *v)
         v[a] /= n;
 }
 
-int cloud_render(const cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double))
+int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double))
 {
     ctx c;
     size_t G = s->grid, g = s->noise_grid;
@@ -94,13 +94,13 @@ int cloud_render(const cloud_scene *s, unsigned char *rgb, double *lum, void (*p
     normalize(sun);
     /* the global shape: simple kriging (mean 0) on a G^3 grid */
     {
-        krige_plan *kp;
+        nl_krige_plan *kp;
         double *pts = malloc(s->npoints * 3 * sizeof *pts), *val = malloc(s->npoints * sizeof *val);
         if (!pts || !val)
             return NL_ERROR(NL_ENOMEM, "out of memory");
         for (size_t i = 0; i < s->npoints; i++)
             memcpy(pts + 3 * i, s->points + 4 * i, 3 * sizeof *pts), val[i] = s->points[4 * i + 3];
-        st = krige_plan_alloc(s->shape, 3, s->npoints, pts, val, 1, 0, 0, &kp);
+        st = nl_krige_plan_alloc(s->shape, 3, s->npoints, pts, val, 1, 0, 0, &kp);
         free(pts), free(val);
         if (st)
             return st;
@@ -110,28 +110,28 @@ int cloud_render(const cloud_scene *s, unsigned char *rgb, double *lum, void (*p
         }
         c.shape.v = malloc(G * G * G * sizeof(double));
         if (!c.shape.v) {
-            krige_plan_free(kp);
+            nl_krige_plan_free(kp);
             return NL_ERROR(NL_ENOMEM, "out of memory for the shape grid");
         }
         for (size_t q = 0; q < G * G * G; q++) {
             double p[3] = {s->lo[0] + (double)(q % G) * c.shape.d[0], s->lo[1] + (double)((q / G) % G) * c.shape.d[1],
                            s->lo[2] + (double)(q / (G * G)) * c.shape.d[2]};
-            krige_eval(kp, p, &c.shape.v[q], NULL, NULL);
+            nl_krige_eval(kp, p, &c.shape.v[q], NULL, NULL);
         }
-        krige_plan_free(kp);
+        nl_krige_plan_free(kp);
     }
     /* the small-scale noise: a periodic FFT field of unit variance */
     {
         size_t n[3] = {g, g, g};
         double h[3] = {s->period / (double)g, s->period / (double)g, s->period / (double)g}, zero[3] = {0, 0, 0};
-        synth_fft_plan *fp;
+        nl_synth_fft_plan *fp;
         nl_field *f = nl_field_alloc(3, n, h, &st);
-        if (!f || (st = synth_fft_plan_alloc(s->noise, 3, n, h, 0, &fp))) {
+        if (!f || (st = nl_synth_fft_plan_alloc(s->noise, 3, n, h, 0, &fp))) {
             nl_field_free(f), free(c.shape.v);
             return st;
         }
-        synth_fft_execute(fp, s->seed, f);
-        synth_fft_plan_free(fp);
+        nl_synth_fft_execute(fp, s->seed, f);
+        nl_synth_fft_plan_free(fp);
         double sd = sqrt(nl_model_acf(s->noise, 3, zero));
         for (size_t i = 0; i < f->count; i++)
             f->data[i] /= sd;

@@ -14,8 +14,8 @@
  * L += T sigma rho ds (sun T_sun(p) phase + ambient), T *= exp(-sigma rho ds),
  * with the Henyey-Greenstein phase (g = 0.3); the background is a vertical
  * sky gradient attenuated by T.  Single scattering only. */
-#ifndef SYNTH_CLOUD_H
-#define SYNTH_CLOUD_H
+#ifndef NL_SYNTH_CLOUD_H
+#define NL_SYNTH_CLOUD_H
 
 #include "../core/model.h"
 
@@ -39,11 +39,11 @@ typedef struct {
     double fov;               /* vertical field of view, degrees */
     double sun[3];            /* direction toward the sun */
     size_t grid;              /* G */
-} cloud_scene;
+} nl_cloud_scene;
 
 /* Render into rgb (width * height * 3 bytes) and luminance (may be NULL,
  * width * height doubles).  progress (may be NULL) is called with the
  * fraction done. */
-int cloud_render(const cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double));
+int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double));
 
 #endif

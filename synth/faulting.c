@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-int synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count)
+int nl_synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count)
 {
     size_t nx = f->n[0], ny = f->dim == 2 ? f->n[1] : 1, K;
     double mean;
@@ -18,15 +18,15 @@ int synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count)
     mean = density * (f->dim == 1 ? (double)nx : (double)(nx + ny));
     if (mean > 1e8)
         return NL_ERROR(NL_ETOOBIG, "density: %g faults are too many; expected at most 1e8", mean);
-    K = nl_rng_poisson(seed, SYNTH_FAULT_STREAM + 1, 0, 0, mean);
+    K = nl_rng_poisson(seed, NL_SYNTH_FAULT_STREAM + 1, 0, 0, mean);
     memset(f->data, 0, f->count * sizeof *f->data);
     if (f->dim == 1) {
         double *step = calloc(nx + 1, sizeof *step), s = 0;
         if (!step)
             return NL_ERROR(NL_ENOMEM, "out of memory");
         for (size_t k = 0; k < K; k++) {
-            double t = nl_rng_uniform(seed, SYNTH_FAULT_STREAM, 2 * k) * (double)nx;
-            step[(size_t)ceil(t) <= nx ? (size_t)ceil(t) : nx] += nl_rng_gauss(seed, SYNTH_FAULT_STREAM, 2 * k + 1);
+            double t = nl_rng_uniform(seed, NL_SYNTH_FAULT_STREAM, 2 * k) * (double)nx;
+            step[(size_t)ceil(t) <= nx ? (size_t)ceil(t) : nx] += nl_rng_gauss(seed, NL_SYNTH_FAULT_STREAM, 2 * k + 1);
         }
         for (size_t i = 0; i < nx; i++)
             f->data[i] = (s += step[i]);
@@ -37,9 +37,9 @@ int synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count)
         if (!diff)
             return NL_ERROR(NL_ENOMEM, "out of memory");
         for (size_t k = 0; k < K; k++) {
-            double th = M_PI * nl_rng_uniform(seed, SYNTH_FAULT_STREAM, 3 * k);
-            double rho = half * (2 * nl_rng_uniform(seed, SYNTH_FAULT_STREAM, 3 * k + 1) - 1);
-            double a = nl_rng_gauss(seed, SYNTH_FAULT_STREAM, 3 * k + 2), c = cos(th), s = sin(th);
+            double th = M_PI * nl_rng_uniform(seed, NL_SYNTH_FAULT_STREAM, 3 * k);
+            double rho = half * (2 * nl_rng_uniform(seed, NL_SYNTH_FAULT_STREAM, 3 * k + 1) - 1);
+            double a = nl_rng_gauss(seed, NL_SYNTH_FAULT_STREAM, 3 * k + 2), c = cos(th), s = sin(th);
             for (size_t j = 0; j < ny; j++) {
                 /* samples with (x - cx) c + (y - cy) s > rho get +a */
                 double *d = diff + j * (nx + 1), r = rho - ((double)j - cy) * s;

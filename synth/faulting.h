@@ -9,18 +9,18 @@
  * The surface is a Brownian (Levy) surface: radial spectrum k^-3, f^-2
  * along a transect.
  * Every fault is drawn from the counter-based RNG keyed by (seed,
- * SYNTH_FAULT_STREAM, fault index); the count by inversion of the Poisson
- * CDF with nl_rng_uniform(seed, SYNTH_FAULT_STREAM + 1, 0). */
-#ifndef SYNTH_FAULTING_H
-#define SYNTH_FAULTING_H
+ * NL_SYNTH_FAULT_STREAM, fault index); the count by inversion of the Poisson
+ * CDF with nl_rng_uniform(seed, NL_SYNTH_FAULT_STREAM + 1, 0). */
+#ifndef NL_SYNTH_FAULTING_H
+#define NL_SYNTH_FAULTING_H
 
 #include "../core/field.h"
 
 #include <stdint.h>
 
-#define SYNTH_FAULT_STREAM 300u
+#define NL_SYNTH_FAULT_STREAM 300u
 
 /* Fills f (1D or 2D); returns the number of faults in *count. */
-int synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count);
+int nl_synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count);
 
 #endif

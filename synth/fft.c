@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-struct synth_fft_plan {
+struct nl_synth_fft_plan {
     int dim;            /* 1..3 */
     size_t n[3];        /* grid size */
     double h[3];        /* grid spacing */
@@ -21,10 +21,10 @@ struct synth_fft_plan {
     size_t half;        /* r2c coefficients: count / n0 * (n0/2 + 1) */
     double *amp;        /* sqrt(lambda_k) / count on the r2c half grid (nl_alloc) */
     fftw_plan fwd, inv; /* r2c and c2r */
-    synth_fft_info info;
+    nl_synth_fft_info info;
 };
 
-void synth_fft_plan_free(synth_fft_plan *p)
+void nl_synth_fft_plan_free(nl_synth_fft_plan *p)
 {
     if (!p)
         return;
@@ -36,7 +36,7 @@ void synth_fft_plan_free(synth_fft_plan *p)
     free(p);
 }
 
-static int make_fftw_plans(synth_fft_plan *p)
+static int make_fftw_plans(nl_synth_fft_plan *p)
 {
     int dims[3];
     double *x = nl_alloc(p->count * sizeof *x);
@@ -61,9 +61,9 @@ static int make_fftw_plans(synth_fft_plan *p)
  * takes over as its amplitude array.  Statistics are over the full grid:
  * columns 0 < i < n0/2 stand for i and n0 - i (evenness), so count twice. */
 static int plan_from_half(const char *name, int dim, const size_t *n, const double *h, double *S, unsigned flags,
-                          synth_fft_plan **out)
+                          nl_synth_fft_plan **out)
 {
-    synth_fft_plan *p;
+    nl_synth_fft_plan *p;
     double cell = 1, neg = 0, lmin = INFINITY, lmax = -INFINITY, sum = 0;
     size_t h0, rows;
     int st = NL_OK;
@@ -102,13 +102,13 @@ static int plan_from_half(const char *name, int dim, const size_t *n, const doub
     p->info.clamp_error = p->info.variance > 0 ? neg / (double)p->count / p->info.variance : INFINITY;
     if (!(p->info.variance > 0)) {
         st = NL_ERROR(NL_ENOTPD, "%s: the sampled spectrum has no positive part on this grid", name);
-    } else if (p->info.clamp_error > SYNTH_FFT_CLAMP_TOL && !(flags & SYNTH_FFT_CLAMP)) {
+    } else if (p->info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL && !(flags & NL_SYNTH_FFT_CLAMP)) {
         st = NL_ERROR(NL_ENOTPD,
                       "%s: not positive definite on this grid: min spectrum %.3g (max %.3g); zeroing the %zu "
                       "negative values would change the covariance by up to %.2g of R(0), above %.0e "
                       "(use --clamp to accept, or a larger grid if the model is truncated)",
                       name, p->info.min_lambda, p->info.max_lambda, p->info.negatives, p->info.clamp_error,
-                      SYNTH_FFT_CLAMP_TOL);
+                      NL_SYNTH_FFT_CLAMP_TOL);
     }
     if (!st) {
         for (size_t k = 0; k < p->half; k++) {
@@ -118,15 +118,15 @@ static int plan_from_half(const char *name, int dim, const size_t *n, const doub
         st = make_fftw_plans(p);
     }
     if (st) {
-        synth_fft_plan_free(p);
+        nl_synth_fft_plan_free(p);
         return st;
     }
     *out = p;
     return NL_OK;
 }
 
-int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
-                         synth_fft_plan **out)
+int nl_synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                         nl_synth_fft_plan **out)
 {
     double *S;
     int st;
@@ -142,7 +142,7 @@ int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const doub
     return plan_from_half(nl_model_spec(m), dim, n, h, S, flags, out);
 }
 
-int synth_fft_plan_spectrum(const nl_field *S, unsigned flags, synth_fft_plan **out)
+int nl_synth_fft_plan_spectrum(const nl_field *S, unsigned flags, nl_synth_fft_plan **out)
 {
     size_t h0 = S->n[0] / 2 + 1, rows = S->count / S->n[0];
     double *half = nl_alloc(rows * h0 * sizeof *half);
@@ -154,9 +154,9 @@ int synth_fft_plan_spectrum(const nl_field *S, unsigned flags, synth_fft_plan **
     return plan_from_half("spectrum", S->dim, S->n, S->h, half, flags, out);
 }
 
-void synth_fft_plan_info(const synth_fft_plan *p, synth_fft_info *info) { *info = p->info; }
+void nl_synth_fft_plan_info(const nl_synth_fft_plan *p, nl_synth_fft_info *info) { *info = p->info; }
 
-int synth_fft_execute(const synth_fft_plan *p, uint64_t seed, nl_field *out)
+int nl_synth_fft_execute(const nl_synth_fft_plan *p, uint64_t seed, nl_field *out)
 {
     fftw_complex *c;
     if (out->dim != p->dim || out->count != p->count || out->n[0] != p->n[0] || out->n[1] != p->n[1])

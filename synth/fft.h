@@ -15,21 +15,21 @@
  * zero changes every covariance entry by at most E = sum|lambda_neg| / N;
  * when E <= 1e-6 R(0), a change no estimator on fewer than 1e12 samples can
  * resolve, they are set to zero silently; above that the plan is refused
- * (NL_ENOTPD) unless SYNTH_FFT_CLAMP is given. */
-#ifndef SYNTH_FFT_H
-#define SYNTH_FFT_H
+ * (NL_ENOTPD) unless NL_SYNTH_FFT_CLAMP is given. */
+#ifndef NL_SYNTH_FFT_H
+#define NL_SYNTH_FFT_H
 
 #include "../core/field.h"
 #include "../core/model.h"
 
 #include <stdint.h>
 
-enum { SYNTH_FFT_CLAMP = 1 };
+enum { NL_SYNTH_FFT_CLAMP = 1 };
 
 /* Relative covariance error below which negative eigenvalues are dropped. */
-#define SYNTH_FFT_CLAMP_TOL 1e-6
+#define NL_SYNTH_FFT_CLAMP_TOL 1e-6
 
-typedef struct synth_fft_plan synth_fft_plan;
+typedef struct nl_synth_fft_plan nl_synth_fft_plan;
 
 typedef struct {
     double variance;    /* R(0) of the synthesised field: mean of lambda after clamping */
@@ -37,24 +37,24 @@ typedef struct {
     double max_lambda;  /* largest eigenvalue, as a density S */
     size_t negatives;   /* eigenvalues set to zero */
     double clamp_error; /* bound on the covariance change from clamping, relative to R(0) */
-} synth_fft_info;
+} nl_synth_fft_info;
 
 /* Plan synthesis of model m on a dim-D grid of n[] samples, spacing h[]
  * (NULL: unit).  Returns NL_OK, or NL_EINVAL/NL_ETOOBIG/NL_ENOTPD with a
  * message. */
-int synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
-                         synth_fft_plan **out);
+int nl_synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                         nl_synth_fft_plan **out);
 
 /* The same from a spectrum already sampled on the grid (wrapped order,
  * two-sided density, core/wk.h): S's dim, n and h define the grid. */
-int synth_fft_plan_spectrum(const nl_field *S, unsigned flags, synth_fft_plan **out);
+int nl_synth_fft_plan_spectrum(const nl_field *S, unsigned flags, nl_synth_fft_plan **out);
 
-void synth_fft_plan_info(const synth_fft_plan *p, synth_fft_info *info);
+void nl_synth_fft_plan_info(const nl_synth_fft_plan *p, nl_synth_fft_info *info);
 
 /* Synthesise the realization for `seed` into out (alloc'ed with the plan's
  * dim, n and h).  Thread-safe: one plan may serve several threads. */
-int synth_fft_execute(const synth_fft_plan *p, uint64_t seed, nl_field *out);
+int nl_synth_fft_execute(const nl_synth_fft_plan *p, uint64_t seed, nl_field *out);
 
-void synth_fft_plan_free(synth_fft_plan *p);
+void nl_synth_fft_plan_free(nl_synth_fft_plan *p);
 
 #endif

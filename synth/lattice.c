@@ -57,14 +57,14 @@ static void measure_basis(int dim)
     for (uint64_t s = 1; s <= 8; s++) {
         for (size_t j = 0; j < nn[1]; j++)
             for (size_t i = 0; i < n; i++)
-                f->data[j * n + i] = gradient_noise(s, LATTICE_STREAM + 99, dim, 16, (double)i, (double)j,
+                f->data[j * n + i] = gradient_noise(s, NL_LATTICE_STREAM + 99, dim, 16, (double)i, (double)j,
                                                     (long)n / 16, dim == 2 ? (long)n / 16 : 0);
-        an_psd_periodogram(f, 0.0, &P);
+        nl_psd_periodogram(f, 0.0, &P);
         if (dim == 1)
             for (size_t k = 0; k < nb; k++)
                 acc[k] += P->data[k] / 8;
         else {
-            an_radial(P, AN_GRID_FREQ, 1.0 / (double)n, nb, r, v, cnt);
+            nl_radial(P, NL_GRID_FREQ, 1.0 / (double)n, nb, r, v, cnt);
             for (size_t k = 0; k < nb; k++)
                 acc[k] += (cnt[k] ? v[k] : 0) / 8;
         }
@@ -81,7 +81,7 @@ static void measure_basis(int dim)
     basis_ready[dim - 1] = 1;
 }
 
-double synth_lattice_basis_spectrum(int dim, double c, double f)
+double nl_synth_lattice_basis_spectrum(int dim, double c, double f)
 {
     double t, w;
     int k;
@@ -115,21 +115,21 @@ typedef struct {
 static double s_basis(const void *ctx, double f)
 {
     const sctx *x = ctx;
-    return synth_lattice_basis_spectrum(x->dim, x->c, f);
+    return nl_synth_lattice_basis_spectrum(x->dim, x->c, f);
 }
 
 /* Non-negative weights v_o (= w_o^2) minimising the relative error
  * sum_f ((sum_o v_o S_o(f) - S_t(f)) / S_t(f))^2 on log-spaced frequencies:
  * weighted least squares (GSL), dropping octaves whose weight comes out
  * negative and refitting the rest (an active-set iteration). */
-static int fit_weights(int dim, const nl_model *m, synth_lattice_plan *p, double flo)
+static int fit_weights(int dim, const nl_model *m, nl_synth_lattice_plan *p, double flo)
 {
     enum { NF = 96 };
-    int O = p->octaves, active[LATTICE_MAX_OCTAVES], st = NL_OK;
+    int O = p->octaves, active[NL_LATTICE_MAX_OCTAVES], st = NL_OK;
     for (int o = 0; o < O; o++)
         active[o] = 1;
     for (int iter = 0; iter < O; iter++) {
-        int k = 0, map[LATTICE_MAX_OCTAVES], neg = 0;
+        int k = 0, map[NL_LATTICE_MAX_OCTAVES], neg = 0;
         for (int o = 0; o < O; o++)
             if (active[o])
                 map[k++] = o;
@@ -146,7 +146,7 @@ static int fit_weights(int dim, const nl_model *m, synth_lattice_plan *p, double
                 double f = flo * pow(0.5 / flo, (i + 0.5) / NF), fv[2] = {f, 0};
                 double t = nl_model_spectrum(m, dim, fv);
                 for (int j = 0; j < k; j++)
-                    gsl_matrix_set(X, (size_t)i, (size_t)j, synth_lattice_basis_spectrum(dim, p->cell[map[j]], f));
+                    gsl_matrix_set(X, (size_t)i, (size_t)j, nl_synth_lattice_basis_spectrum(dim, p->cell[map[j]], f));
                 gsl_vector_set(y, (size_t)i, t);
                 gsl_vector_set(w, (size_t)i, t > 0 ? 1 / (t * t) : 0);
             }
@@ -170,13 +170,13 @@ static int fit_weights(int dim, const nl_model *m, synth_lattice_plan *p, double
     return st;
 }
 
-int synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, synth_lattice_plan *p)
+int nl_synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p)
 {
     double probe[2] = {0.1, 0};
     if (dim != 1 && dim != 2)
         return NL_ERROR(NL_EINVAL, "lattice: expected dimension 1 or 2, got %d", dim);
-    if (octaves < 1 || octaves > LATTICE_MAX_OCTAVES)
-        return NL_ERROR(NL_EINVAL, "octaves: expected 1 to %d, got %d", LATTICE_MAX_OCTAVES, octaves);
+    if (octaves < 1 || octaves > NL_LATTICE_MAX_OCTAVES)
+        return NL_ERROR(NL_EINVAL, "octaves: expected 1 to %d, got %d", NL_LATTICE_MAX_OCTAVES, octaves);
     if (!(cell0 >= 2) || cell0 / pow(2, octaves - 1) < 2)
         return NL_ERROR(NL_EINVAL, "octaves: %d octaves from cell %g reach cells below 2 samples", octaves, cell0);
     if (!isfinite(nl_model_spectrum(m, dim, probe)))
@@ -189,7 +189,7 @@ int synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octav
         double fpk = 0, spk = -1;
         /* peak of the basis spectrum at this cell */
         for (int k = 1; k < 2048; k++) {
-            double f = 0.5 * k / 2048.0, v = synth_lattice_basis_spectrum(dim, b.c, f);
+            double f = 0.5 * k / 2048.0, v = nl_synth_lattice_basis_spectrum(dim, b.c, f);
             if (v > spk)
                 spk = v, fpk = f;
         }
@@ -202,7 +202,7 @@ int synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octav
     return fit_weights(dim, m, p, p->peak[0] / 2);
 }
 
-int synth_lattice_execute(const synth_lattice_plan *p, uint64_t seed, nl_field *out)
+int nl_synth_lattice_execute(const nl_synth_lattice_plan *p, uint64_t seed, nl_field *out)
 {
     int dim = out->dim;
     size_t nx = out->n[0], ny = dim == 2 ? out->n[1] : 1;
@@ -216,7 +216,7 @@ int synth_lattice_execute(const synth_lattice_plan *p, uint64_t seed, nl_field *
 #pragma omp parallel for schedule(static) if (out->count > 65536)
         for (size_t j = 0; j < ny; j++)
             for (size_t i = 0; i < nx; i++)
-                out->data[j * nx + i] += p->weight[o] * gradient_noise(seed, LATTICE_STREAM + (uint32_t)o, dim, c,
+                out->data[j * nx + i] += p->weight[o] * gradient_noise(seed, NL_LATTICE_STREAM + (uint32_t)o, dim, c,
                                                                        (double)i, (double)j, px, py);
     }
     return NL_OK;

@@ -4,7 +4,7 @@
  *
  * Basis: gradient noise of cell c samples: at every lattice point a random
  * gradient (1D: uniform in [-1, 1]; 2D: a unit vector at a uniform angle),
- * from nl_rng_uniform(seed, LATTICE_STREAM + octave, lattice index); the
+ * from nl_rng_uniform(seed, NL_LATTICE_STREAM + octave, lattice index); the
  * value between lattice points blends the corners' linear ramps with the
  * quintic fade 6t^5 - 15t^4 + 10t^3 (Perlin 2002).  Any sample can be
  * computed alone.
@@ -21,34 +21,34 @@
  * Leakage (Lewis: "the low frequency power in the noise lattice is not
  * removed and cannot be removed in summation"): the fraction of each
  * octave's power below f_o / sqrt 2, reported per octave. */
-#ifndef SYNTH_LATTICE_H
-#define SYNTH_LATTICE_H
+#ifndef NL_SYNTH_LATTICE_H
+#define NL_SYNTH_LATTICE_H
 
 #include "../core/field.h"
 #include "../core/model.h"
 
 #include <stdint.h>
 
-#define LATTICE_STREAM 500u
-#define LATTICE_MAX_OCTAVES 16
+#define NL_LATTICE_STREAM 500u
+#define NL_LATTICE_MAX_OCTAVES 16
 
 typedef struct {
     int octaves;                          /* number of octaves */
-    double cell[LATTICE_MAX_OCTAVES];     /* cell size per octave, samples */
-    double weight[LATTICE_MAX_OCTAVES];   /* amplitude w_o */
-    double peak[LATTICE_MAX_OCTAVES];     /* f_o, cycles per sample */
-    double leakage[LATTICE_MAX_OCTAVES];  /* fraction of octave power below its band */
-} synth_lattice_plan;
+    double cell[NL_LATTICE_MAX_OCTAVES];     /* cell size per octave, samples */
+    double weight[NL_LATTICE_MAX_OCTAVES];   /* amplitude w_o */
+    double peak[NL_LATTICE_MAX_OCTAVES];     /* f_o, cycles per sample */
+    double leakage[NL_LATTICE_MAX_OCTAVES];  /* fraction of octave power below its band */
+} nl_synth_lattice_plan;
 
 /* Plan the octaves for model m on a dim-D grid (spacing 1 sample; the
  * model's lags in samples): c_0 = cell0, `octaves` octaves (cell >= 2). */
-int synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, synth_lattice_plan *p);
+int nl_synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);
 
 /* The basis spectrum at cell c and frequency f (cycles per sample). */
-double synth_lattice_basis_spectrum(int dim, double c, double f);
+double nl_synth_lattice_basis_spectrum(int dim, double c, double f);
 
 /* x = sum_o w_o noise_o into out (1D or 2D, periodic when every cell
  * divides the size, otherwise a window at the origin). */
-int synth_lattice_execute(const synth_lattice_plan *p, uint64_t seed, nl_field *out);
+int nl_synth_lattice_execute(const nl_synth_lattice_plan *p, uint64_t seed, nl_field *out);
 
 #endif

@@ -12,11 +12,11 @@ static double gam(double sigma2, double H, double dx, double dy)
     return 0.5 * sigma2 * pow(hypot(dx, dy), 2 * H);
 }
 
-int subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
-                           subdiv_coeffs **out)
+int nl_subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
+                           nl_subdiv_coeffs **out)
 {
-    static const int classes2[] = {SUBDIV_FACE, SUBDIV_EDGE_X, SUBDIV_EDGE_Y};
-    subdiv_coeffs *c;
+    static const int classes2[] = {NL_SUBDIV_FACE, NL_SUBDIV_EDGE_X, NL_SUBDIV_EDGE_Y};
+    nl_subdiv_coeffs *c;
     *out = NULL;
     if (dim != 1 && dim != 2)
         return NL_ERROR(NL_EINVAL, "midpoint: expected dimension 1 or 2, got %d", dim);
@@ -34,7 +34,7 @@ int subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, doubl
     c->spacing0 = spacing0;
     c->r0 = 0.5 * sigma2 * pow(spacing0, 2 * H);
     for (int k = 0; k < levels; k++) {
-        subdiv_level *l = &c->level[k];
+        nl_subdiv_level *l = &c->level[k];
         double s = ldexp(spacing0, -k);
         l->level = k;
         l->spacing = s;
@@ -42,28 +42,28 @@ int subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, doubl
         l->reach = 1;
         l->nclass = dim == 1 ? 1 : 3;
         for (int j = 0; j < l->nclass; j++) {
-            subdiv_class *cl = &l->cls[j];
+            nl_subdiv_class *cl = &l->cls[j];
             /* 2x2 block (r, c) in {0, 1}^2, or the pair k in {0, 1} */
             double px[4], py[4], tx, ty, v = 0;
-            int cls = dim == 1 ? SUBDIV_MID : classes2[j];
+            int cls = dim == 1 ? NL_SUBDIV_MID : classes2[j];
             cl->cls = cls;
             cl->n = dim == 1 ? 2 : 4;
             cl->a = calloc(cl->n, sizeof *cl->a);
             if (!cl->a) {
-                subdiv_coeffs_free(c);
+                nl_subdiv_coeffs_free(c);
                 return NL_ERROR(NL_ENOMEM, "out of memory");
             }
             for (size_t i = 0; i < cl->n; i++) {
                 px[i] = dim == 1 ? (double)i * s : (double)(i % 2) * s;
                 py[i] = dim == 1 ? 0 : (double)(i / 2) * s;
             }
-            tx = cls == SUBDIV_EDGE_Y ? 0 : 0.5 * s;
-            ty = dim == 1 || cls == SUBDIV_EDGE_X ? 0 : 0.5 * s;
-            if (cls == SUBDIV_MID)
+            tx = cls == NL_SUBDIV_EDGE_Y ? 0 : 0.5 * s;
+            ty = dim == 1 || cls == NL_SUBDIV_EDGE_X ? 0 : 0.5 * s;
+            if (cls == NL_SUBDIV_MID)
                 cl->a[0] = cl->a[1] = 0.5;
-            else if (cls == SUBDIV_FACE)
+            else if (cls == NL_SUBDIV_FACE)
                 cl->a[0] = cl->a[1] = cl->a[2] = cl->a[3] = 0.25;
-            else if (cls == SUBDIV_EDGE_X)
+            else if (cls == NL_SUBDIV_EDGE_X)
                 cl->a[0] = cl->a[1] = 0.5;
             else
                 cl->a[0] = cl->a[2] = 0.5;

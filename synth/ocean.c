@@ -10,28 +10,28 @@
 #include <math.h>
 #include <stdlib.h>
 
-double ocean_phillips(const ocean_params *o, double kx, double ky)
+double nl_ocean_phillips(const nl_ocean_params *o, double kx, double ky)
 {
     double Kx = 2 * M_PI * kx / o->patch, Ky = 2 * M_PI * ky / o->patch, K2 = Kx * Kx + Ky * Ky;
-    double L = o->wind * o->wind / OCEAN_G, l = L / 1000, c;
+    double L = o->wind * o->wind / NL_OCEAN_G, l = L / 1000, c;
     if (K2 == 0)
         return 0;
     c = (Kx * cos(o->angle) + Ky * sin(o->angle)) / sqrt(K2);
     return o->amplitude * exp(-1 / (K2 * L * L)) / (K2 * K2) * c * c * exp(-K2 * l * l);
 }
 
-static double complex h0(const ocean_params *o, uint64_t seed, uint64_t index, double kx, double ky)
+static double complex h0(const nl_ocean_params *o, uint64_t seed, uint64_t index, double kx, double ky)
 {
-    double p = ocean_phillips(o, kx, ky);
-    return sqrt(p / 2) * (nl_rng_gauss2(seed, OCEAN_STREAM, index, 0) + I * nl_rng_gauss2(seed, OCEAN_STREAM, index, 1));
+    double p = nl_ocean_phillips(o, kx, ky);
+    return sqrt(p / 2) * (nl_rng_gauss2(seed, NL_OCEAN_STREAM, index, 0) + I * nl_rng_gauss2(seed, NL_OCEAN_STREAM, index, 1));
 }
 
-static double omega(const ocean_params *o, double kx, double ky)
+static double omega(const nl_ocean_params *o, double kx, double ky)
 {
-    return sqrt(OCEAN_G * 2 * M_PI * hypot(kx, ky) / o->patch);
+    return sqrt(NL_OCEAN_G * 2 * M_PI * hypot(kx, ky) / o->patch);
 }
 
-int ocean_lattice_coefficients(const rank1_lattice *L, const ocean_params *o, uint64_t seed, double t, double *c)
+int nl_ocean_lattice_coefficients(const nl_rank1_lattice *L, const nl_ocean_params *o, uint64_t seed, double t, double *c)
 {
     size_t N = L->N;
     if (L->s != 2)
@@ -48,7 +48,7 @@ int ocean_lattice_coefficients(const rank1_lattice *L, const ocean_params *o, ui
     return NL_OK;
 }
 
-int ocean_grid(size_t M, const ocean_params *o, uint64_t seed, double t, double *h, double *gx, double *gy)
+int nl_ocean_grid(size_t M, const nl_ocean_params *o, uint64_t seed, double t, double *h, double *gx, double *gy)
 {
     size_t N = M * M;
     fftw_complex *b = nl_alloc(N * sizeof *b), *hk = nl_alloc(N * sizeof *hk);

@@ -11,13 +11,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-void rank1_free(rank1_lattice *L)
+void nl_rank1_free(nl_rank1_lattice *L)
 {
     free(L->k);
     L->k = NULL;
 }
 
-void rank1_point(const rank1_lattice *L, size_t n, double *x)
+void nl_rank1_point(const nl_rank1_lattice *L, size_t n, double *x)
 {
     for (int a = 0; a < L->s; a++)
         x[a] = (double)((unsigned long long)n * (unsigned long long)L->g[a] % L->N) / (double)L->N;
@@ -84,10 +84,10 @@ static void shell(search *q, long *k, int a, long r)
     }
 }
 
-static int wave_vectors(rank1_lattice *L)
+static int wave_vectors(nl_rank1_lattice *L)
 {
     search q = {L->N, L->s, L->g, malloc(L->N * sizeof(double)), malloc(L->N * (size_t)L->s * sizeof(long))};
-    long k[RANK1_MAX_DIM];
+    long k[NL_RANK1_MAX_DIM];
     if (!q.best || !q.k) {
         free(q.best), free(q.k);
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu wave vectors", L->N);
@@ -117,11 +117,11 @@ static int wave_vectors(rank1_lattice *L)
     return NL_OK;
 }
 
-int rank1_generator(size_t N, int s, const long *g, rank1_lattice *L)
+int nl_rank1_generator(size_t N, int s, const long *g, nl_rank1_lattice *L)
 {
     memset(L, 0, sizeof *L);
-    if (s < 1 || s > RANK1_MAX_DIM)
-        return NL_ERROR(NL_EINVAL, "dim: expected 1 to %d, got %d", RANK1_MAX_DIM, s);
+    if (s < 1 || s > NL_RANK1_MAX_DIM)
+        return NL_ERROR(NL_EINVAL, "dim: expected 1 to %d, got %d", NL_RANK1_MAX_DIM, s);
     if (N < 2 || N > (1u << 24))
         return NL_ERROR(NL_EINVAL, "points: expected 2 to 16777216, got %zu", N);
     if (g[0] != 1)
@@ -134,7 +134,7 @@ int rank1_generator(size_t N, int s, const long *g, rank1_lattice *L)
     return wave_vectors(L);
 }
 
-int rank1_fibonacci(int index, rank1_lattice *L)
+int nl_rank1_fibonacci(int index, nl_rank1_lattice *L)
 {
     unsigned long long f[64] = {0, 1, 1};
     long g[2];
@@ -143,12 +143,12 @@ int rank1_fibonacci(int index, rank1_lattice *L)
     for (int i = 3; i <= index; i++)
         f[i] = f[i - 1] + f[i - 2];
     g[0] = 1, g[1] = (long)f[index - 1];
-    return rank1_generator((size_t)f[index], 2, g, L);
+    return nl_rank1_generator((size_t)f[index], 2, g, L);
 }
 
-int rank1_korobov(size_t N, int s, long a, rank1_lattice *L)
+int nl_rank1_korobov(size_t N, int s, long a, nl_rank1_lattice *L)
 {
-    long g[RANK1_MAX_DIM];
+    long g[NL_RANK1_MAX_DIM];
     if (a <= 0) {
         double best = -1;
         size_t tries = N > 4096 ? 4096 : N;
@@ -167,17 +167,17 @@ int rank1_korobov(size_t N, int s, long a, rank1_lattice *L)
     g[0] = 1;
     for (int d = 1; d < s; d++)
         g[d] = (long)((unsigned long long)g[d - 1] * (unsigned long long)a % N);
-    return rank1_generator(N, s, g, L);
+    return nl_rank1_generator(N, s, g, L);
 }
 
-int rank1_coefficients(const rank1_lattice *L, rank1_spectrum S, void *ctx, uint64_t seed, double *c)
+int nl_rank1_coefficients(const nl_rank1_lattice *L, nl_rank1_spectrum S, void *ctx, uint64_t seed, double *c)
 {
     size_t N = L->N;
     for (size_t m = 0; m <= N / 2; m++) {
         double v = S(L->k + m * L->s, L->s, ctx);
         if (!(v >= 0) || !isfinite(v))
             return NL_ERROR(NL_EINVAL, "spectrum: expected a finite non-negative value, got %g at wave vector %zu", v, m);
-        double xi = nl_rng_gauss2(seed, RANK1_STREAM, m, 0), eta = nl_rng_gauss2(seed, RANK1_STREAM, m, 1);
+        double xi = nl_rng_gauss2(seed, NL_RANK1_STREAM, m, 0), eta = nl_rng_gauss2(seed, NL_RANK1_STREAM, m, 1);
         if (m == 0 || 2 * m == N) {
             c[2 * m] = sqrt(v) * xi, c[2 * m + 1] = 0;
         } else {
@@ -188,7 +188,7 @@ int rank1_coefficients(const rank1_lattice *L, rank1_spectrum S, void *ctx, uint
     return NL_OK;
 }
 
-int rank1_synthesize(const rank1_lattice *L, const double *c, double extent, double *f, double *grad, double *imag)
+int nl_rank1_synthesize(const nl_rank1_lattice *L, const double *c, double extent, double *f, double *grad, double *imag)
 {
     size_t N = L->N;
     fftw_complex *b = nl_alloc(N * sizeof(fftw_complex));
@@ -222,15 +222,15 @@ int rank1_synthesize(const rank1_lattice *L, const double *c, double extent, dou
     return NL_OK;
 }
 
-static void torus_vec(const rank1_lattice *L, size_t n, double *v)
+static void torus_vec(const nl_rank1_lattice *L, size_t n, double *v)
 {
-    rank1_point(L, n, v);
+    nl_rank1_point(L, n, v);
     for (int a = 0; a < 2; a++)
         if (v[a] >= 0.5)
             v[a] -= 1;
 }
 
-int rank1_delaunay(const rank1_lattice *L, size_t *n1, size_t *n2, double *v1, double *v2)
+int nl_rank1_delaunay(const nl_rank1_lattice *L, size_t *n1, size_t *n2, double *v1, double *v2)
 {
     double b1 = INFINITY, b2 = INFINITY, v[2];
     if (L->s != 2)
@@ -258,19 +258,19 @@ int rank1_delaunay(const rank1_lattice *L, size_t *n1, size_t *n2, double *v1, d
     return NL_OK;
 }
 
-int rank1_rasterize(const rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,
+int nl_rank1_rasterize(const nl_rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,
                     double *gx, double *gy)
 {
     size_t n1, n2, N = L->N;
     double v1[2], v2[2];
-    int st = rank1_delaunay(L, &n1, &n2, v1, v2);
+    int st = nl_rank1_delaunay(L, &n1, &n2, v1, v2);
     if (st)
         return st;
     for (size_t n = 0; n < N; n++) {
         double x[2];
         size_t id[4] = {n, (n + n1) % N, (n + n2) % N, (n + n1 + n2) % N};
         static const int tri[2][3] = {{0, 1, 2}, {1, 3, 2}};
-        rank1_point(L, n, x);
+        nl_rank1_point(L, n, x);
         double P[4][2] = {{x[0], x[1]}, {x[0] + v1[0], x[1] + v1[1]}, {x[0] + v2[0], x[1] + v2[1]},
                           {x[0] + v1[0] + v2[0], x[1] + v1[1] + v2[1]}};
         for (int t = 0; t < 2; t++) {

@@ -19,52 +19,52 @@
  *
  * Synthesis (one complex FFT of length N, FFTW): Fourier coefficients
  * c_m = sqrt(S(k_m) / 2) (xi + i eta) with independent standard normals
- * from (seed, RANK1_STREAM, m), c_{N-m} = conj(c_m), c_0 and c_{N/2} real
+ * from (seed, NL_RANK1_STREAM, m), c_{N-m} = conj(c_m), c_0 and c_{N/2} real
  * with variance S; then f(x_n) = sum_m c_m exp(2 pi i m n / N).  S(k) is
  * the variance carried by wave vector k (the spectral density times the
  * cell 1 / extent^s), so Var f = sum_m S(k_m).  The gradient uses the
  * coefficients i 2 pi k_m c_m / extent, one FFT per component. */
-#ifndef SYNTH_RANK1_H
-#define SYNTH_RANK1_H
+#ifndef NL_SYNTH_RANK1_H
+#define NL_SYNTH_RANK1_H
 
 #include <stddef.h>
 #include <stdint.h>
 
-#define RANK1_STREAM 600u
-#define RANK1_MAX_DIM 4
+#define NL_RANK1_STREAM 600u
+#define NL_RANK1_MAX_DIM 4
 
 typedef struct {
     int s;            /* dimension */
     size_t N;         /* points */
-    long g[RANK1_MAX_DIM];  /* generator */
+    long g[NL_RANK1_MAX_DIM];  /* generator */
     long *k;          /* N * s wave vectors, k_m at k[m * s] */
     double min_dist;  /* minimum distance between points (figure of merit) */
-} rank1_lattice;
+} nl_rank1_lattice;
 
 /* Fibonacci lattice at N = F_index (index >= 3). */
-int rank1_fibonacci(int index, rank1_lattice *L);
+int nl_rank1_fibonacci(int index, nl_rank1_lattice *L);
 
 /* Korobov lattice of N points in s dimensions, a searched (a = 0: search). */
-int rank1_korobov(size_t N, int s, long a, rank1_lattice *L);
+int nl_rank1_korobov(size_t N, int s, long a, nl_rank1_lattice *L);
 
 /* A lattice with a given generator (g[0] must be 1). */
-int rank1_generator(size_t N, int s, const long *g, rank1_lattice *L);
+int nl_rank1_generator(size_t N, int s, const long *g, nl_rank1_lattice *L);
 
-void rank1_free(rank1_lattice *L);
+void nl_rank1_free(nl_rank1_lattice *L);
 
 /* Point n in [0, 1)^s. */
-void rank1_point(const rank1_lattice *L, size_t n, double *x);
+void nl_rank1_point(const nl_rank1_lattice *L, size_t n, double *x);
 
 /* Variance per wave vector: S(k) for k in Z^s (the caller's spectrum). */
-typedef double (*rank1_spectrum)(const long *k, int s, void *ctx);
+typedef double (*nl_rank1_spectrum)(const long *k, int s, void *ctx);
 
 /* Draw the coefficients c_m (2N doubles, re/im interleaved). */
-int rank1_coefficients(const rank1_lattice *L, rank1_spectrum S, void *ctx, uint64_t seed, double *c);
+int nl_rank1_coefficients(const nl_rank1_lattice *L, nl_rank1_spectrum S, void *ctx, uint64_t seed, double *c);
 
 /* f(x_n) for n = 0..N-1 from coefficients c (re/im); *imag receives the
  * largest |imaginary part| (0 up to rounding for a real field). grad (may
  * be NULL): N * s values, the gradient on a torus of side `extent`. */
-int rank1_synthesize(const rank1_lattice *L, const double *c, double extent, double *f, double *grad,
+int nl_rank1_synthesize(const nl_rank1_lattice *L, const double *c, double extent, double *f, double *grad,
                      double *imag);
 
 /* Periodic Delaunay triangulation of a 2D lattice by an O(N) scan: the
@@ -74,12 +74,12 @@ int rank1_synthesize(const rank1_lattice *L, const double *c, double extent, dou
  * are (x_n, x_n + v1, x_n + v2) and (x_n + v1, x_n + v1 + v2, x_n + v2),
  * that is, point indices (n, n + n1, n + n2) and (n + n1, n + n1 + n2,
  * n + n2) mod N, unwrapped by the vectors v1, v2. */
-int rank1_delaunay(const rank1_lattice *L, size_t *n1, size_t *n2, double *v1, double *v2);
+int nl_rank1_delaunay(const nl_rank1_lattice *L, size_t *n1, size_t *n2, double *v1, double *v2);
 
 /* Linear interpolation of lattice values (and gradients, may be NULL) over
  * the periodic Delaunay triangles onto a W x W periodic image of the unit
  * square (pixel centres (i + 1/2)/W); outputs W*W doubles each. */
-int rank1_rasterize(const rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,
+int nl_rank1_rasterize(const nl_rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,
                     double *gx, double *gy);
 
 #endif

@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-int synth_shape(nl_field *f, const nl_dist *to, int empirical)
+int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical)
 {
     if (f->count < 2)
         return NL_ERROR(NL_EINVAL, "shape: expected at least 2 samples, got %zu", f->count);
@@ -23,25 +23,25 @@ int synth_shape(nl_field *f, const nl_dist *to, int empirical)
         return NL_OK;
     }
     double mean = gsl_stats_mean(f->data, 1, f->count), sd = gsl_stats_sd_m(f->data, 1, f->count, mean);
-    double *g = malloc((SHAPE_TABLE + 1) * sizeof *g), step = 2 * SHAPE_ZMAX / SHAPE_TABLE;
+    double *g = malloc((NL_SHAPE_TABLE + 1) * sizeof *g), step = 2 * NL_SHAPE_ZMAX / NL_SHAPE_TABLE;
     if (!g)
         return NL_ERROR(NL_ENOMEM, "out of memory");
     if (!(sd > 0)) {
         free(g);
         return NL_ERROR(NL_EINVAL, "shape: the field is constant; expected a random field");
     }
-    for (int i = 0; i <= SHAPE_TABLE; i++) {
-        double u = gsl_cdf_ugaussian_P(-SHAPE_ZMAX + i * step);
+    for (int i = 0; i <= NL_SHAPE_TABLE; i++) {
+        double u = gsl_cdf_ugaussian_P(-NL_SHAPE_ZMAX + i * step);
         /* keep u inside (0, 1) so that every quantile is finite */
         u = fmin(fmax(u, 1e-300), 1 - 1e-16);
         g[i] = nl_dist_quantile(to, u);
     }
     for (size_t i = 0; i < f->count; i++) {
-        double t = ((f->data[i] - mean) / sd + SHAPE_ZMAX) / step;
+        double t = ((f->data[i] - mean) / sd + NL_SHAPE_ZMAX) / step;
         if (t <= 0)
             f->data[i] = g[0];
-        else if (t >= SHAPE_TABLE)
-            f->data[i] = g[SHAPE_TABLE];
+        else if (t >= NL_SHAPE_TABLE)
+            f->data[i] = g[NL_SHAPE_TABLE];
         else {
             size_t k = (size_t)t;
             double w = t - (double)k;

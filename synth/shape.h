@@ -4,21 +4,21 @@
  *
  * F_x is either the Gaussian CDF with the field's measured mean and
  * standard deviation (default), applied through a lookup table of g over
- * z = (x - mean)/sd in [-SHAPE_ZMAX, SHAPE_ZMAX] with SHAPE_TABLE intervals
+ * z = (x - mean)/sd in [-NL_SHAPE_ZMAX, NL_SHAPE_ZMAX] with NL_SHAPE_TABLE intervals
  * and linear interpolation (z beyond the range takes the end value), or
  * the field's empirical CDF (the rank (r + 1/2) / N of each sample; ties
  * keep their order), which gives the target histogram exactly whatever the
  * input distribution. */
-#ifndef SYNTH_SHAPE_H
-#define SYNTH_SHAPE_H
+#ifndef NL_SYNTH_SHAPE_H
+#define NL_SYNTH_SHAPE_H
 
 #include "../core/dist.h"
 #include "../core/field.h"
 
-#define SHAPE_TABLE 65536
-#define SHAPE_ZMAX 8.5
+#define NL_SHAPE_TABLE 65536
+#define NL_SHAPE_ZMAX 8.5
 
 /* Shape f in place. */
-int synth_shape(nl_field *f, const nl_dist *to, int empirical);
+int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical);
 
 #endif

@@ -13,17 +13,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-struct synth_sparse_plan {
+struct nl_synth_sparse_plan {
     int dim;            /* 1 or 2 */
     int radius;         /* R: table covers offsets -R..R per axis */
     int cell;           /* C */
     double density;     /* impulses per cell */
     double *h;          /* (2R+1)^dim kernel table, x fastest */
     void *angle;        /* libmatheval theta(x, y) or NULL */
-    synth_sparse_info info;
+    nl_synth_sparse_info info;
 };
 
-void synth_sparse_plan_free(synth_sparse_plan *p)
+void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p)
 {
     if (!p)
         return;
@@ -36,7 +36,7 @@ void synth_sparse_plan_free(synth_sparse_plan *p)
 static size_t table_size(int dim, int R) { return dim == 1 ? (size_t)(2 * R + 1) : (size_t)(2 * R + 1) * (2 * R + 1); }
 
 /* Finish a plan: scale h so that the variance is `variance`, fill info. */
-static int finish(synth_sparse_plan *p, double variance)
+static int finish(nl_synth_sparse_plan *p, double variance)
 {
     size_t n = table_size(p->dim, p->radius);
     double s2 = 0, s4 = 0, lambda = p->density / pow(p->cell, p->dim), k;
@@ -60,9 +60,9 @@ static int finish(synth_sparse_plan *p, double variance)
     return NL_OK;
 }
 
-static int new_plan(int dim, int radius, int cell, double density, synth_sparse_plan **out)
+static int new_plan(int dim, int radius, int cell, double density, nl_synth_sparse_plan **out)
 {
-    synth_sparse_plan *p;
+    nl_synth_sparse_plan *p;
     *out = NULL;
     if (dim != 1 && dim != 2)
         return NL_ERROR(NL_EINVAL, "sparse: expected dimension 1 or 2, got %d", dim);
@@ -90,8 +90,8 @@ static int new_plan(int dim, int radius, int cell, double density, synth_sparse_
     return NL_OK;
 }
 
-int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
-                            synth_sparse_plan **out)
+int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
+                            nl_synth_sparse_plan **out)
 {
     size_t mm[2], M, span;
     double hh[2] = {h ? h[0] : 1, h && dim == 2 ? h[1] : 1}, cellh = hh[0] * (dim == 2 ? hh[1] : 1);
@@ -143,7 +143,7 @@ int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int rad
                     double v = creal(g[((j + (long)mm[1]) % (long)mm[1]) * mm[0] + (size_t)((i + (long)mm[0]) % (long)mm[0])]);
                     in += v * v;
                 }
-            if (in >= (1 - SPARSE_ENERGY_TOL) * total)
+            if (in >= (1 - NL_SPARSE_ENERGY_TOL) * total)
                 break;
         }
     }
@@ -164,14 +164,14 @@ int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int rad
     if (isnan(nl_model_acf(m, dim, zero)))
         st = finish(*out, total * (1 - (*out)->info.truncated));
     if (st) {
-        synth_sparse_plan_free(*out);
+        nl_synth_sparse_plan_free(*out);
         *out = NULL;
     }
     return st;
 }
 
-int synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
-                           synth_sparse_plan **out)
+int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
+                           nl_synth_sparse_plan **out)
 {
     static const char *const names[] = {"x", "y", "t", "r"};
     void *ev;
@@ -205,7 +205,7 @@ int synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, doub
             double y = evaluator_evaluate(ev, 4, (char **)names, v);
             if (!isfinite(y)) {
                 evaluator_destroy(ev);
-                synth_sparse_plan_free(*out);
+                nl_synth_sparse_plan_free(*out);
                 *out = NULL;
                 return NL_ERROR(NL_EINVAL, "kernel: \"%s\" is not finite at (%d, %d)", expr, i, j);
             }
@@ -213,13 +213,13 @@ int synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, doub
         }
     evaluator_destroy(ev);
     if ((st = finish(*out, 1.0))) {
-        synth_sparse_plan_free(*out);
+        nl_synth_sparse_plan_free(*out);
         *out = NULL;
     }
     return st;
 }
 
-int synth_sparse_plan_image(const nl_field *img, int cell, double density, synth_sparse_plan **out)
+int nl_synth_sparse_plan_image(const nl_field *img, int cell, double density, nl_synth_sparse_plan **out)
 {
     size_t w = img->n[0], hgt = img->dim == 2 ? img->n[1] : 1;
     int R = (int)((w > hgt ? w : hgt) / 2), st;
@@ -233,7 +233,7 @@ int synth_sparse_plan_image(const nl_field *img, int cell, double density, synth
     for (size_t i = 0; i < img->count; i++)
         var += (img->data[i] - mean) * (img->data[i] - mean) / (double)img->count;
     if (!(var > 0)) {
-        synth_sparse_plan_free(*out);
+        nl_synth_sparse_plan_free(*out);
         *out = NULL;
         return NL_ERROR(NL_EINVAL, "exemplar: the image is constant");
     }
@@ -246,13 +246,13 @@ int synth_sparse_plan_image(const nl_field *img, int cell, double density, synth
             (*out)->h[(size_t)tj * (size_t)(2 * R + 1) + (size_t)ti] = (img->data[j * w + i] - mean) * wx * wy;
         }
     if ((st = finish(*out, var))) {
-        synth_sparse_plan_free(*out);
+        nl_synth_sparse_plan_free(*out);
         *out = NULL;
     }
     return st;
 }
 
-int synth_sparse_set_angle(synth_sparse_plan *p, const char *expr)
+int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr)
 {
     char *copy, **vars;
     int nv;
@@ -274,7 +274,7 @@ int synth_sparse_set_angle(synth_sparse_plan *p, const char *expr)
     return NL_OK;
 }
 
-void synth_sparse_plan_info(const synth_sparse_plan *p, synth_sparse_info *info) { *info = p->info; }
+void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_info *info) { *info = p->info; }
 
 /* The impulses of the cells cx0..cx1 x cy0..cy1 (absolute cell indices). */
 typedef struct {
@@ -291,7 +291,7 @@ static void impulses_free(impulses *im)
 
 static uint64_t cell_id(long cx, long cy) { return ((uint64_t)(uint32_t)cy << 32) | (uint32_t)cx; }
 
-static int make_impulses(const synth_sparse_plan *p, uint64_t seed, long cx0, long cx1, long cy0, long cy1,
+static int make_impulses(const nl_synth_sparse_plan *p, uint64_t seed, long cx0, long cx1, long cy0, long cy1,
                          impulses *im)
 {
     static const char *const names[] = {"x", "y"};
@@ -310,7 +310,7 @@ static int make_impulses(const synth_sparse_plan *p, uint64_t seed, long cx0, lo
     for (long cy = cy0; cy <= cy1; cy++)
         for (long cx = cx0; cx <= cx1; cx++) {
             uint64_t id = cell_id(cx, p->dim == 2 ? cy : 0);
-            unsigned long k, K = nl_rng_poisson(seed, SPARSE_STREAM, id, 0, p->density);
+            unsigned long k, K = nl_rng_poisson(seed, NL_SPARSE_STREAM, id, 0, p->density);
             im->start[(cy - cy0) * im->ncx + (cx - cx0)] = total;
             for (k = 0; k < K; k++) {
                 if (total == cap) {
@@ -329,11 +329,11 @@ static int make_impulses(const synth_sparse_plan *p, uint64_t seed, long cx0, lo
                     }
                 }
                 im->px[total] = cx * p->cell +
-                                (long)(nl_rng_uniform2(seed, SPARSE_STREAM + 1, id, (uint32_t)k) * p->cell);
-                im->py[total] = p->dim == 2 ? cy * p->cell + (long)(nl_rng_uniform2(seed, SPARSE_STREAM + 2, id,
+                                (long)(nl_rng_uniform2(seed, NL_SPARSE_STREAM + 1, id, (uint32_t)k) * p->cell);
+                im->py[total] = p->dim == 2 ? cy * p->cell + (long)(nl_rng_uniform2(seed, NL_SPARSE_STREAM + 2, id,
                                                                                    (uint32_t)k) * p->cell)
                                             : 0;
-                im->a[total] = nl_rng_gauss2(seed, SPARSE_STREAM + 3, id, (uint32_t)k);
+                im->a[total] = nl_rng_gauss2(seed, NL_SPARSE_STREAM + 3, id, (uint32_t)k);
                 im->c[total] = 1, im->s[total] = 0;
                 if (p->angle) {
                     double v[2] = {(double)im->px[total], (double)im->py[total]};
@@ -348,7 +348,7 @@ static int make_impulses(const synth_sparse_plan *p, uint64_t seed, long cx0, lo
 }
 
 /* Bilinear lookup of the kernel at a non-integer offset; 0 outside. */
-static double kernel_at(const synth_sparse_plan *p, double u, double v)
+static double kernel_at(const nl_synth_sparse_plan *p, double u, double v)
 {
     int R = p->radius, w = 2 * R + 1;
     double fu = floor(u), fv = floor(v), au = u - fu, av = v - fv, s = 0;
@@ -364,7 +364,7 @@ static double kernel_at(const synth_sparse_plan *p, double u, double v)
 
 static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
-int synth_sparse_execute(const synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out)
+int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out)
 {
     const int dim = p->dim, R = p->radius, C = p->cell, w = 2 * R + 1;
     const long reach = p->angle ? (long)ceil(R * M_SQRT2) + 1 : R;

@@ -5,9 +5,9 @@
  * N(0, 1), and the kernel h tabulated on the same lattice within
  * |offset_a| <= radius samples.  The plane is split into cells of `cell`
  * samples per axis; cell c holds a Poisson(density) number of impulses
- * (count: nl_rng_uniform2(seed, SPARSE_STREAM, c, 0) by inversion; impulse
+ * (count: nl_rng_uniform2(seed, NL_SPARSE_STREAM, c, 0) by inversion; impulse
  * k: position and amplitude from nl_rng_uniform2 / nl_rng_gauss2(seed,
- * SPARSE_STREAM + 1..3, c, k)), c the cell index packed as in subdivision.
+ * NL_SPARSE_STREAM + 1..3, c, k)), c the cell index packed as in subdivision.
  * Any sample is a pure function of the seed and its position: it sums the
  * impulses of the cells within the radius, in cell order, so a sample
  * computed alone equals the same sample of any grid, bit for bit.
@@ -30,21 +30,21 @@
  * An optional angle expression theta(x, y) (radians, in grid samples)
  * rotates the kernel at each impulse: h(R(-theta(p_i)) (p - p_i)), bilinear
  * in the table, for non-stationary directional noise. */
-#ifndef SYNTH_SPARSE_H
-#define SYNTH_SPARSE_H
+#ifndef NL_SYNTH_SPARSE_H
+#define NL_SYNTH_SPARSE_H
 
 #include "../core/field.h"
 #include "../core/model.h"
 
 #include <stdint.h>
 
-#define SPARSE_STREAM 400u
+#define NL_SPARSE_STREAM 400u
 
 /* Automatic radius: the kernel energy left outside is below this fraction;
  * by Cauchy-Schwarz the ACF then changes by at most sqrt(1e-6) = 1e-3 R(0). */
-#define SPARSE_ENERGY_TOL 1e-6
+#define NL_SPARSE_ENERGY_TOL 1e-6
 
-typedef struct synth_sparse_plan synth_sparse_plan;
+typedef struct nl_synth_sparse_plan nl_synth_sparse_plan;
 
 typedef struct {
     int radius;             /* kernel half-width, samples */
@@ -54,27 +54,27 @@ typedef struct {
     double truncated;       /* model kernels: energy fraction beyond the radius */
     double kurtosis;        /* predicted excess kurtosis */
     double variance;        /* predicted variance */
-} synth_sparse_info;
+} nl_synth_sparse_info;
 
-/* radius <= 0: the smallest radius keeping all but SPARSE_ENERGY_TOL of the kernel's
+/* radius <= 0: the smallest radius keeping all but NL_SPARSE_ENERGY_TOL of the kernel's
  * energy (model kernels) or the image's half-size.  cell <= 0: the
  * smallest power of two >= max(4, radius). */
-int synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
-                            synth_sparse_plan **out);
-int synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
-                           synth_sparse_plan **out);
-int synth_sparse_plan_image(const nl_field *img, int cell, double density, synth_sparse_plan **out);
+int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
+                            nl_synth_sparse_plan **out);
+int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
+                           nl_synth_sparse_plan **out);
+int nl_synth_sparse_plan_image(const nl_field *img, int cell, double density, nl_synth_sparse_plan **out);
 
 /* Rotate the kernel by the angle expression theta(x, y). */
-int synth_sparse_set_angle(synth_sparse_plan *p, const char *expr);
+int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr);
 
-void synth_sparse_plan_info(const synth_sparse_plan *p, synth_sparse_info *info);
+void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_info *info);
 
 /* The window of samples origin[a] .. origin[a] + n[a] - 1 (NULL: 0).  With
  * wrap, the field is periodic with the grid's size (each a multiple of the
  * cell size) and origin must be NULL. */
-int synth_sparse_execute(const synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out);
+int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out);
 
-void synth_sparse_plan_free(synth_sparse_plan *p);
+void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p);
 
 #endif

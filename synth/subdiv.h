@@ -23,16 +23,16 @@
  *
  * Solving.  The symmetric matrix of eq. (4)/(10) is factorised by Cholesky
  * when it is positive definite and its condition number is at most
- * SUBDIV_COND_MAX.  Past that it is "singular": the solution is the SVD
- * pseudo-inverse with singular values below sigma_max / SUBDIV_COND_MAX
+ * NL_SUBDIV_COND_MAX.  Past that it is "singular": the solution is the SVD
+ * pseudo-inverse with singular values below sigma_max / NL_SUBDIV_COND_MAX
  * dropped, and a pseudo-inverse that comes out uniform (every a = 1/n to
  * within 1e-3/n, Lewis: "the generalized inverse sets the coefficients to
  * 1/2N") is reset to the equivalent nearest-neighbour interpolant before the
  * variance is computed.  A matrix with an eigenvalue below
  * -n eps lambda_max is "not positive definite" (solved by the pseudo-inverse
  * and flagged); a negative variance (7) is clamped to 0 and flagged. */
-#ifndef SYNTH_SUBDIV_H
-#define SYNTH_SUBDIV_H
+#ifndef NL_SYNTH_SUBDIV_H
+#define NL_SYNTH_SUBDIV_H
 
 #include "../core/field.h"
 #include "../core/model.h"
@@ -41,39 +41,39 @@
 
 /* Condition number past which the matrix is treated as singular: the
  * solution's relative error bound eps * cond is then above 2e-6. */
-#define SUBDIV_COND_MAX 1e10
+#define NL_SUBDIV_COND_MAX 1e10
 
 /* Largest half-width N of a 2D neighbourhood (1D: 64). */
-#define SUBDIV_MAX_N 8
+#define NL_SUBDIV_MAX_N 8
 
 /* diagonal-bias: a corner coefficient of the 2N x 2N block exceeds this
  * fraction of the largest coefficient. */
-#define SUBDIV_DIAG_BIAS_FRAC 0.01
+#define NL_SUBDIV_DIAG_BIAS_FRAC 0.01
 
-enum { SUBDIV_MID = 0, SUBDIV_FACE = 1, SUBDIV_EDGE_X = 2, SUBDIV_EDGE_Y = 3 };
+enum { NL_SUBDIV_MID = 0, NL_SUBDIV_FACE = 1, NL_SUBDIV_EDGE_X = 2, NL_SUBDIV_EDGE_Y = 3 };
 
 enum {
-    SUBDIV_SINGULAR = 1u << 0,  /* condition number > SUBDIV_COND_MAX */
-    SUBDIV_PINV = 1u << 1,      /* solved by the pseudo-inverse */
-    SUBDIV_NOT_PD = 1u << 2,    /* negative eigenvalue */
-    SUBDIV_NEG_VAR = 1u << 3,   /* eq. (7) came out negative; clamped to 0 */
-    SUBDIV_DIAG_BIAS = 1u << 4, /* corner coefficients not negligible */
-    SUBDIV_NN_RESET = 1u << 5   /* uniform pseudo-inverse reset to nearest neighbours */
+    NL_SUBDIV_SINGULAR = 1u << 0,  /* condition number > NL_SUBDIV_COND_MAX */
+    NL_SUBDIV_PINV = 1u << 1,      /* solved by the pseudo-inverse */
+    NL_SUBDIV_NOT_PD = 1u << 2,    /* negative eigenvalue */
+    NL_SUBDIV_NEG_VAR = 1u << 3,   /* eq. (7) came out negative; clamped to 0 */
+    NL_SUBDIV_DIAG_BIAS = 1u << 4, /* corner coefficients not negligible */
+    NL_SUBDIV_NN_RESET = 1u << 5   /* uniform pseudo-inverse reset to nearest neighbours */
 };
 
 /* Names of the flags, in bit order ("singular", "pseudo-inverse", ...). */
-const char *subdiv_flag_name(unsigned bit);
-const char *subdiv_class_name(int cls);
+const char *nl_subdiv_flag_name(unsigned bit);
+const char *nl_subdiv_class_name(int cls);
 
 typedef struct {
-    int cls;              /* SUBDIV_MID, _FACE, _EDGE_X, _EDGE_Y */
+    int cls;              /* NL_SUBDIV_MID, _FACE, _EDGE_X, _EDGE_Y */
     size_t n;             /* coefficients: 2N in 1D, (2N)^2 in 2D */
     double *a;            /* n coefficients in neighbourhood order */
     double variance;      /* displacement variance, eq. (7), clamped at 0 */
     double raw_variance;  /* eq. (7) as computed */
     double condition;     /* 2-norm condition number of the matrix */
     double min_eigenvalue;/* smallest eigenvalue of the matrix */
-    unsigned flags;       /* SUBDIV_* */
+    unsigned flags;       /* NL_SUBDIV_* */
     /* random quadrilateral neighbourhoods (2D, optional): nalt alternative
      * observation sets, each of n points at offsets (offx, offy) from the
      * anchor (i, j) of the new point, with their own coefficients and
@@ -82,7 +82,7 @@ typedef struct {
     int *offx, *offy;     /* nalt * n offsets, alternative-major */
     double *alt_a;        /* nalt * n coefficients */
     double *alt_var;      /* nalt variances (clamped at 0) */
-} subdiv_class;
+} nl_subdiv_class;
 
 typedef struct {
     int level;            /* 0 = coarsest */
@@ -90,8 +90,8 @@ typedef struct {
     int N;                /* neighbourhood half-width: 2N points per axis */
     int reach;            /* largest |offset| of an observation from the anchor */
     int nclass;           /* 1 in 1D; 3 in 2D (face, edge-x, edge-y) */
-    subdiv_class cls[3];
-} subdiv_level;
+    nl_subdiv_class cls[3];
+} nl_subdiv_level;
 
 typedef struct {
     int dim;              /* 1 or 2 */
@@ -99,17 +99,17 @@ typedef struct {
     double spacing0;      /* s_0 */
     double r0;            /* R(0) */
     unsigned flags;       /* union of all class flags */
-    subdiv_level *level;  /* levels entries */
-} subdiv_coeffs;
+    nl_subdiv_level *level;  /* levels entries */
+} nl_subdiv_coeffs;
 
 /* Compute the coefficients of `levels` levels.  N > 0 fixes the
  * half-width; N = 0 chooses it per level ("auto"): N grows from 1 until the
  * displacement variance (7) of the mid (1D) or face (2D) class improves by
  * less than tol * R(0), up to nmax.  Returns NL_OK, or NL_EINVAL/NL_EFAIL. */
-int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
-                        subdiv_coeffs **out);
+int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
+                        nl_subdiv_coeffs **out);
 
-void subdiv_coeffs_free(subdiv_coeffs *c);
+void nl_subdiv_coeffs_free(nl_subdiv_coeffs *c);
 
 /* Replace every 2D class's block by `k` random neighbourhoods of the same
  * size (Lewis 1987's remedy for diagonal bias): each grows from the nearest
@@ -118,25 +118,25 @@ void subdiv_coeffs_free(subdiv_coeffs *c);
  * set (an unbiased random walk of the frontier); eq. (12) is solved for
  * each.  The walk draws from nl_rng_uniform(plan_seed, level * 4 + class,
  * step).  During synthesis each new point uses alternative
- * nl_rng_uniform(seed, SUBDIV_STREAM + 64 + level, position) * k. */
-int subdiv_coeffs_randomize(subdiv_coeffs *c, const nl_model *m, int k, uint64_t plan_seed);
+ * nl_rng_uniform(seed, NL_SUBDIV_STREAM + 64 + level, position) * k. */
+int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, uint64_t plan_seed);
 
 /* Eq. (12) for any observation set: n points pts[i*dim..] and the target,
  * in lag units.  Fills cls (a must hold n doubles); `reset` gives the
  * nearest-neighbour coefficients to use when the pseudo-inverse is uniform
  * (NULL: no reset). */
-int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
-                 const double *reset, subdiv_class *cls);
+int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
+                 const double *reset, nl_subdiv_class *cls);
 
 /* Synthesis.  Random numbers: the displacement of the point with index
  * (i, j) on the grid of level k + 1 (and the seed values at level 0) is
- * nl_rng_gauss(seed, SUBDIV_STREAM + level, j * 2^32 + i) with the signed
+ * nl_rng_gauss(seed, NL_SUBDIV_STREAM + level, j * 2^32 + i) with the signed
  * indices taken modulo 2^32, except on a 2D level with the standard
  * neighbourhoods, where the draws come in pairs, nl_rng_gauss_pair(seed,
- * SUBDIV_STREAM + level, j * 2^32 + k): on odd rows j points 2k and 2k + 1,
+ * NL_SUBDIV_STREAM + level, j * 2^32 + k): on odd rows j points 2k and 2k + 1,
  * on even rows (which draw at odd i only) points 4k + 1 and 4k + 3.  So
  * every number is a pure function of (seed, level, integer position). */
-#define SUBDIV_STREAM 100u
+#define NL_SUBDIV_STREAM 100u
 
 /* Periodic synthesis into f (dim 1 or 2, each n divisible by 2^levels and
  * the coarse grid n / 2^levels at least 2): the coarse grid is synthesised
@@ -145,12 +145,12 @@ int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const 
  * variance c->r0; then it is refined with wrapped neighbourhoods.  f->h is
  * set to s_0 / 2^levels.  NL_ENOTPD when the coarse grid or any level is not
  * positive definite (unless allow_not_pd: negative variances are then 0). */
-int subdiv_synth_periodic(const subdiv_coeffs *c, const nl_model *m, uint64_t seed, int allow_not_pd,
+int nl_subdiv_synth_periodic(const nl_subdiv_coeffs *c, const nl_model *m, uint64_t seed, int allow_not_pd,
                           nl_field *f);
 
 /* Refine a given coarse level (kept exactly: external consistency, Lewis
  * 1987 Fig. 5) into f, whose size must be the coarse size times 2^levels. */
-int subdiv_refine_periodic(const subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
+int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
                            nl_field *f);
 
 /* Midpoint displacement (Fournier, Fussell and Carpenter 1982) as a
@@ -163,14 +163,14 @@ int subdiv_refine_periodic(const subdiv_coeffs *c, const nl_field *coarse, uint6
  * (vscale = 1: the fractal schedule; otherwise the altered variances of
  * Haruyama and Barsky).  r0 is set to sigma2 s_0^(2H) / 2, the variance of
  * the independent coarse values. */
-int subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
-                           subdiv_coeffs **out);
+int nl_subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
+                           nl_subdiv_coeffs **out);
 
 /* Non-periodic window: the samples of an infinite field at finest-grid
  * indices origin[a] .. origin[a] + n[a] - 1.  Level 0 is white noise of
  * variance R(0) at spacing s_0 (exact when R(s_0) is negligible; the
  * residual correlation R(s_0)/R(0) is the caller's to report).  Two windows
  * agree bit for bit where they overlap. */
-int subdiv_synth_window(const subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f);
+int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f);
 
 #endif

@@ -14,9 +14,9 @@
 static const char *const flag_names[] = {"singular", "pseudo-inverse", "not-positive-definite",
                                          "negative-variance", "diagonal-bias", "nearest-neighbour-reset"};
 
-const char *subdiv_flag_name(unsigned bit) { return bit < 6 ? flag_names[bit] : "?"; }
+const char *nl_subdiv_flag_name(unsigned bit) { return bit < 6 ? flag_names[bit] : "?"; }
 
-const char *subdiv_class_name(int cls)
+const char *nl_subdiv_class_name(int cls)
 {
     static const char *const names[] = {"mid", "face", "edge-x", "edge-y"};
     return cls >= 0 && cls < 4 ? names[cls] : "?";
@@ -52,7 +52,7 @@ static int eig_range(gsl_matrix *A, double *lmin, double *amax, double *amin)
 }
 
 /* Pseudo-inverse solution through the SVD, dropping singular values below
- * sigma_max / SUBDIV_COND_MAX. */
+ * sigma_max / NL_SUBDIV_COND_MAX. */
 static int pinv_solve(gsl_matrix *A, const gsl_vector *b, gsl_vector *x)
 {
     size_t n = A->size1;
@@ -62,7 +62,7 @@ static int pinv_solve(gsl_matrix *A, const gsl_vector *b, gsl_vector *x)
     if (!st) {
         double smax = gsl_vector_get(S, 0);
         for (size_t i = 0; i < n; i++)
-            if (gsl_vector_get(S, i) < smax / SUBDIV_COND_MAX)
+            if (gsl_vector_get(S, i) < smax / NL_SUBDIV_COND_MAX)
                 gsl_vector_set(S, i, 0.0);
         st = gsl_linalg_SV_solve(A, V, S, b, x);
     }
@@ -72,8 +72,8 @@ static int pinv_solve(gsl_matrix *A, const gsl_vector *b, gsl_vector *x)
     return st;
 }
 
-int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
-                 const double *reset, subdiv_class *cls)
+int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
+                 const double *reset, nl_subdiv_class *cls)
 {
     gsl_matrix *A = gsl_matrix_alloc(n, n), *F = gsl_matrix_alloc(n, n);
     gsl_vector *b = gsl_vector_alloc(n), *x = gsl_vector_alloc(n);
@@ -99,15 +99,15 @@ int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const 
     cls->min_eigenvalue = lmin;
     cls->condition = amin > 0 ? amax / amin : INFINITY;
     if (lmin < -(double)n * DBL_EPSILON * amax)
-        cls->flags |= SUBDIV_NOT_PD;
-    if (cls->condition > SUBDIV_COND_MAX)
-        cls->flags |= SUBDIV_SINGULAR;
+        cls->flags |= NL_SUBDIV_NOT_PD;
+    if (cls->condition > NL_SUBDIV_COND_MAX)
+        cls->flags |= NL_SUBDIV_SINGULAR;
     gsl_matrix_memcpy(F, A);
-    if (!(cls->flags & (SUBDIV_NOT_PD | SUBDIV_SINGULAR)) && gsl_linalg_cholesky_decomp1(F) == 0) {
+    if (!(cls->flags & (NL_SUBDIV_NOT_PD | NL_SUBDIV_SINGULAR)) && gsl_linalg_cholesky_decomp1(F) == 0) {
         gsl_linalg_cholesky_solve(F, b, x);
     } else {
         gsl_matrix_memcpy(F, A);
-        cls->flags |= SUBDIV_PINV;
+        cls->flags |= NL_SUBDIV_PINV;
         if (pinv_solve(F, b, x)) {
             st = NL_ERROR(NL_EFAIL, "the SVD of a %zu x %zu system failed", n, n);
             goto done;
@@ -118,9 +118,9 @@ int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const 
         if (fabs(cls->a[k] - 1.0 / (double)n) > 1e-3 / (double)n)
             uniform = 0;
     }
-    if ((cls->flags & SUBDIV_PINV) && uniform && reset && n > 1) {
+    if ((cls->flags & NL_SUBDIV_PINV) && uniform && reset && n > 1) {
         memcpy(cls->a, reset, n * sizeof *cls->a);
-        cls->flags |= SUBDIV_NN_RESET;
+        cls->flags |= NL_SUBDIV_NN_RESET;
     }
     /* eq. (7) */
     v = acf_at(m, dim, target, target);
@@ -129,7 +129,7 @@ int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const 
     cls->raw_variance = v;
     cls->variance = v > 0 ? v : 0.0;
     if (v < 0)
-        cls->flags |= SUBDIV_NEG_VAR;
+        cls->flags |= NL_SUBDIV_NEG_VAR;
 done:
     gsl_matrix_free(A);
     gsl_matrix_free(F);
@@ -142,7 +142,7 @@ done:
 static void geometry(int cls, int N, double s, double *pts, double *target, double *reset)
 {
     int w = 2 * N;
-    if (cls == SUBDIV_MID) {
+    if (cls == NL_SUBDIV_MID) {
         for (int i = 0; i < w; i++) {
             pts[i] = (i + 1 - N) * s;
             reset[i] = (i == N - 1 || i == N) ? 0.5 : 0.0;
@@ -150,20 +150,20 @@ static void geometry(int cls, int N, double s, double *pts, double *target, doub
         target[0] = 0.5 * s;
         return;
     }
-    target[0] = (cls == SUBDIV_EDGE_Y ? 0.0 : 0.5) * s;  /* x */
-    target[1] = (cls == SUBDIV_EDGE_X ? 0.0 : 0.5) * s;  /* y */
+    target[0] = (cls == NL_SUBDIV_EDGE_Y ? 0.0 : 0.5) * s;  /* x */
+    target[1] = (cls == NL_SUBDIV_EDGE_X ? 0.0 : 0.5) * s;  /* y */
     for (int r = 1 - N; r <= N; r++)
         for (int c = 1 - N; c <= N; c++) {
             int i = (r + N - 1) * w + (c + N - 1);
-            int near_r = cls == SUBDIV_EDGE_X ? r == 0 : (r == 0 || r == 1);
-            int near_c = cls == SUBDIV_EDGE_Y ? c == 0 : (c == 0 || c == 1);
+            int near_r = cls == NL_SUBDIV_EDGE_X ? r == 0 : (r == 0 || r == 1);
+            int near_c = cls == NL_SUBDIV_EDGE_Y ? c == 0 : (c == 0 || c == 1);
             pts[2 * i] = c * s;
             pts[2 * i + 1] = r * s;
-            reset[i] = near_r && near_c ? (cls == SUBDIV_FACE ? 0.25 : 0.5) : 0.0;
+            reset[i] = near_r && near_c ? (cls == NL_SUBDIV_FACE ? 0.25 : 0.5) : 0.0;
         }
 }
 
-static int solve_class(const nl_model *m, int dim, int cls, int N, double s, subdiv_class *out)
+static int solve_class(const nl_model *m, int dim, int cls, int N, double s, nl_subdiv_class *out)
 {
     size_t n = dim == 1 ? (size_t)(2 * N) : (size_t)(4 * N * N);
     double *pts = malloc(n * dim * sizeof *pts), *reset = malloc(n * sizeof *reset), target[2];
@@ -175,25 +175,25 @@ static int solve_class(const nl_model *m, int dim, int cls, int N, double s, sub
         return NL_ERROR(NL_ENOMEM, "out of memory");
     }
     geometry(cls, N, s, pts, target, reset);
-    st = subdiv_solve(m, dim, n, pts, target, reset, out);
+    st = nl_subdiv_solve(m, dim, n, pts, target, reset, out);
     if (!st && dim == 2) {
         double amax = 0;
         size_t w = (size_t)(2 * N), corner[4] = {0, w - 1, w * (w - 1), w * w - 1};
         for (size_t k = 0; k < n; k++)
             amax = fmax(amax, fabs(out->a[k]));
         for (int k = 0; k < 4 && N > 1; k++)
-            if (fabs(out->a[corner[k]]) > SUBDIV_DIAG_BIAS_FRAC * amax)
-                out->flags |= SUBDIV_DIAG_BIAS;
+            if (fabs(out->a[corner[k]]) > NL_SUBDIV_DIAG_BIAS_FRAC * amax)
+                out->flags |= NL_SUBDIV_DIAG_BIAS;
     }
     free(pts);
     free(reset);
     return st;
 }
 
-static void free_level(subdiv_level *l)
+static void free_level(nl_subdiv_level *l)
 {
     for (int c = 0; c < l->nclass; c++) {
-        subdiv_class *cl = &l->cls[c];
+        nl_subdiv_class *cl = &l->cls[c];
         free(cl->a), free(cl->offx), free(cl->offy), free(cl->alt_a), free(cl->alt_var);
         cl->a = cl->alt_a = cl->alt_var = NULL;
         cl->offx = cl->offy = NULL;
@@ -201,9 +201,9 @@ static void free_level(subdiv_level *l)
     }
 }
 
-static int solve_level(const nl_model *m, int dim, int N, double s, subdiv_level *l)
+static int solve_level(const nl_model *m, int dim, int N, double s, nl_subdiv_level *l)
 {
-    static const int classes2[] = {SUBDIV_FACE, SUBDIV_EDGE_X, SUBDIV_EDGE_Y};
+    static const int classes2[] = {NL_SUBDIV_FACE, NL_SUBDIV_EDGE_X, NL_SUBDIV_EDGE_Y};
     int st = NL_OK;
     l->N = N;
     l->reach = N;
@@ -211,11 +211,11 @@ static int solve_level(const nl_model *m, int dim, int N, double s, subdiv_level
     l->nclass = dim == 1 ? 1 : 3;
     memset(l->cls, 0, sizeof l->cls);
     for (int c = 0; c < l->nclass && !st; c++)
-        st = solve_class(m, dim, dim == 1 ? SUBDIV_MID : classes2[c], N, s, &l->cls[c]);
+        st = solve_class(m, dim, dim == 1 ? NL_SUBDIV_MID : classes2[c], N, s, &l->cls[c]);
     return st;
 }
 
-void subdiv_coeffs_free(subdiv_coeffs *c)
+void nl_subdiv_coeffs_free(nl_subdiv_coeffs *c)
 {
     if (!c)
         return;
@@ -225,10 +225,10 @@ void subdiv_coeffs_free(subdiv_coeffs *c)
     free(c);
 }
 
-int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
-                        subdiv_coeffs **out)
+int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
+                        nl_subdiv_coeffs **out)
 {
-    subdiv_coeffs *c;
+    nl_subdiv_coeffs *c;
     double zero[2] = {0, 0};
     int st;
     *out = NULL;
@@ -238,7 +238,7 @@ int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0,
         return NL_ERROR(NL_EINVAL, "levels: expected 1 to 40, got %d", levels);
     if (!(spacing0 > 0) || !isfinite(spacing0))
         return NL_ERROR(NL_EINVAL, "spacing0: expected a positive number, got %g", spacing0);
-    if (N < 0 || N > (dim == 1 ? 64 : SUBDIV_MAX_N) || (N == 0 && (nmax < 1 || nmax > (dim == 1 ? 64 : SUBDIV_MAX_N))))
+    if (N < 0 || N > (dim == 1 ? 64 : NL_SUBDIV_MAX_N) || (N == 0 && (nmax < 1 || nmax > (dim == 1 ? 64 : NL_SUBDIV_MAX_N))))
         return NL_ERROR(NL_EINVAL, "neighborhood: expected a half-width from 1 to %d, got %d", dim == 1 ? 64 : 8,
                         N ? N : nmax);
     if (N == 0 && !(tol > 0))
@@ -259,12 +259,12 @@ int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0,
     c->r0 = nl_model_acf(m, dim, zero);
     if (!(c->r0 > 0)) {
         double r0 = c->r0;
-        subdiv_coeffs_free(c);
+        nl_subdiv_coeffs_free(c);
         return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a positive variance", nl_model_spec(m), r0);
     }
     for (int k = 0; k < levels && !st; k++) {
         double s = ldexp(spacing0, -k);
-        subdiv_level *l = &c->level[k];
+        nl_subdiv_level *l = &c->level[k];
         l->level = k;
         if (N > 0) {
             st = solve_level(m, dim, N, s, l);
@@ -272,7 +272,7 @@ int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0,
             /* grow N until eq. (7) improves by less than tol R(0) */
             st = solve_level(m, dim, 1, s, l);
             for (int n = 2; !st && n <= nmax; n++) {
-                subdiv_level next;
+                nl_subdiv_level next;
                 next.level = k;
                 if ((st = solve_level(m, dim, n, s, &next))) {
                     free_level(&next);
@@ -290,7 +290,7 @@ int subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0,
             c->flags |= l->cls[j].flags;
     }
     if (st) {
-        subdiv_coeffs_free(c);
+        nl_subdiv_coeffs_free(c);
         return st;
     }
     *out = c;
@@ -308,11 +308,11 @@ static void random_set(int cls, size_t n, uint64_t seed, uint32_t stream, int *o
     uint64_t step = 0;
     /* nearest: face corners (0,0),(1,0),(0,1),(1,1); edge-x (0,0),(1,0); edge-y (0,0),(0,1) */
     ox[m] = 0, oy[m++] = 0;
-    if (cls != SUBDIV_EDGE_Y)
+    if (cls != NL_SUBDIV_EDGE_Y)
         ox[m] = 1, oy[m++] = 0;
-    if (cls != SUBDIV_EDGE_X)
+    if (cls != NL_SUBDIV_EDGE_X)
         ox[m] = 0, oy[m++] = 1;
-    if (cls == SUBDIV_FACE)
+    if (cls == NL_SUBDIV_FACE)
         ox[m] = 1, oy[m++] = 1;
     while (m < n) {
         /* the frontier: points 4-adjacent to the set, not in it, each once */
@@ -333,16 +333,16 @@ static void random_set(int cls, size_t n, uint64_t seed, uint32_t stream, int *o
     }
 }
 
-int subdiv_coeffs_randomize(subdiv_coeffs *c, const nl_model *m, int k, uint64_t plan_seed)
+int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, uint64_t plan_seed)
 {
     if (c->dim != 2)
         return NL_ERROR(NL_EINVAL, "random neighbourhoods: expected a 2D plan");
     if (k < 1 || k > 256)
         return NL_ERROR(NL_EINVAL, "random neighbourhoods: expected 1 to 256 alternatives, got %d", k);
     for (int lv = 0; lv < c->levels; lv++) {
-        subdiv_level *l = &c->level[lv];
+        nl_subdiv_level *l = &c->level[lv];
         for (int j = 0; j < l->nclass; j++) {
-            subdiv_class *cl = &l->cls[j], tmp;
+            nl_subdiv_class *cl = &l->cls[j], tmp;
             size_t n = cl->n;
             double *pts = malloc(2 * n * sizeof *pts), target[2];
             cl->offx = malloc((size_t)k * n * sizeof *cl->offx);
@@ -354,15 +354,15 @@ int subdiv_coeffs_randomize(subdiv_coeffs *c, const nl_model *m, int k, uint64_t
                 return NL_ERROR(NL_ENOMEM, "out of memory");
             }
             cl->nalt = k;
-            target[0] = (cl->cls == SUBDIV_EDGE_Y ? 0.0 : 0.5) * l->spacing;
-            target[1] = (cl->cls == SUBDIV_EDGE_X ? 0.0 : 0.5) * l->spacing;
+            target[0] = (cl->cls == NL_SUBDIV_EDGE_Y ? 0.0 : 0.5) * l->spacing;
+            target[1] = (cl->cls == NL_SUBDIV_EDGE_X ? 0.0 : 0.5) * l->spacing;
             for (int a = 0; a < k; a++) {
                 int *ox = cl->offx + (size_t)a * n, *oy = cl->offy + (size_t)a * n, st;
                 random_set(cl->cls, n, plan_seed, (uint32_t)(lv * 4 + cl->cls) * 256u + (uint32_t)a, ox, oy);
                 for (size_t p = 0; p < n; p++)
                     pts[2 * p] = ox[p] * l->spacing, pts[2 * p + 1] = oy[p] * l->spacing;
                 tmp.a = cl->alt_a + (size_t)a * n;
-                if ((st = subdiv_solve(m, 2, n, pts, target, NULL, &tmp))) {
+                if ((st = nl_subdiv_solve(m, 2, n, pts, target, NULL, &tmp))) {
                     free(pts);
                     return st;
                 }
@@ -372,14 +372,14 @@ int subdiv_coeffs_randomize(subdiv_coeffs *c, const nl_model *m, int k, uint64_t
                     if (r > l->reach)
                         l->reach = r;
                 }
-                cl->flags |= tmp.flags & ~SUBDIV_DIAG_BIAS;
+                cl->flags |= tmp.flags & ~NL_SUBDIV_DIAG_BIAS;
                 c->flags |= cl->flags;
             }
-            cl->flags &= ~SUBDIV_DIAG_BIAS;
+            cl->flags &= ~NL_SUBDIV_DIAG_BIAS;
             free(pts);
         }
     }
-    c->flags &= ~SUBDIV_DIAG_BIAS;
+    c->flags &= ~NL_SUBDIV_DIAG_BIAS;
     for (int lv = 0; lv < c->levels; lv++)
         for (int j = 0; j < c->level[lv].nclass; j++)
             c->flags |= c->level[lv].cls[j].flags;

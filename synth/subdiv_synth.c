@@ -45,13 +45,13 @@ static inline double at(const grid *g, long i, long j) { return g->v[(j - g->y0)
  * same arithmetic as the general loop in refine() (coefficients in the
  * same order), with the class fixed by the parities of I and J and the
  * source rows looked up once. */
-static void refine_row_2d(const subdiv_level *l, const grid *src, grid *dst, long J, uint64_t seed, unsigned lv)
+static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, long J, uint64_t seed, unsigned lv)
 {
     const int N = l->N, w = 2 * N;
     const long j = fdiv2(J), oy = J - 2 * j;
-    const double *rows[2 * SUBDIV_MAX_N];
+    const double *rows[2 * NL_SUBDIV_MAX_N];
     double *out = dst->v + (J - dst->y0) * dst->nx - dst->x0;
-    const subdiv_class *odd = &l->cls[oy ? 0 : 1], *even = &l->cls[2];
+    const nl_subdiv_class *odd = &l->cls[oy ? 0 : 1], *even = &l->cls[2];
     const double sd_odd = sqrt(odd->variance), sd_even = sqrt(even->variance);
     for (int r = 0; r < w; r++)
         rows[r] = src->v + (j + 1 - N + r - src->y0) * src->nx - src->x0 + 1 - N;
@@ -77,13 +77,13 @@ static void refine_row_2d(const subdiv_level *l, const grid *src, grid *dst, lon
                 so += po[3] * x[3];
             }
             if (oy) {
-                nl_rng_gauss_pair(seed, SUBDIV_STREAM + lv + 1, rng_index(2, i, J), g);
+                nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, i, J), g);
                 out[2 * i] = se + sd_even * g[0];
                 out[2 * i + 1] = so + sd_odd * g[1];
             } else {
                 long key = fdiv2(i);
                 if (key != cached) {
-                    nl_rng_gauss_pair(seed, SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
+                    nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
                     cached = key;
                 }
                 out[2 * i] = rows[N - 1][i + N - 1];
@@ -94,7 +94,7 @@ static void refine_row_2d(const subdiv_level *l, const grid *src, grid *dst, lon
     }
     for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
         long i = fdiv2(I);
-        const subdiv_class *cl;
+        const nl_subdiv_class *cl;
         double s = 0, z;
         if (I == 2 * i) {
             if (!oy) {
@@ -115,7 +115,7 @@ static void refine_row_2d(const subdiv_level *l, const grid *src, grid *dst, lon
              * even rows at odd I: samples 4k + 1 and 4k + 3 share one */
             long key = oy ? i : fdiv2(i);
             if (key != cached) {
-                nl_rng_gauss_pair(seed, SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
+                nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
                 cached = key;
             }
             z = g[oy ? I - 2 * i : i - 2 * key];
@@ -127,7 +127,7 @@ static void refine_row_2d(const subdiv_level *l, const grid *src, grid *dst, lon
 /* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
  * the finer grid is old point I/2 when I is even, else the midpoint of old
  * points (I-1)/2 and (I+1)/2.  Eq. (3) in 1D, eq. (9) in 2D. */
-static void refine(int dim, const subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv)
+static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv)
 {
     const int N = l->N, w = 2 * N;
     const int standard = dim == 2 && !l->cls[0].nalt && !l->cls[1].nalt && !l->cls[2].nalt;
@@ -141,7 +141,7 @@ static void refine(int dim, const subdiv_level *l, const grid *src, grid *dst, u
         for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
             long i = fdiv2(I), j = fdiv2(J);
             int ox = (int)(I - 2 * i), oy = dim == 2 ? (int)(J - 2 * j) : 0;
-            const subdiv_class *cl;
+            const nl_subdiv_class *cl;
             double s = 0;
             if (!ox && !oy) {
                 row[I - dst->x0] = at(src, i, dim == 2 ? j : src->y0);
@@ -156,13 +156,13 @@ static void refine(int dim, const subdiv_level *l, const grid *src, grid *dst, u
                 cl = &l->cls[c];
                 if (cl->nalt) {
                     /* a random quadrilateral neighbourhood */
-                    size_t n = cl->n, alt = (size_t)(nl_rng_uniform(seed, SUBDIV_STREAM + 64 + lv,
+                    size_t n = cl->n, alt = (size_t)(nl_rng_uniform(seed, NL_SUBDIV_STREAM + 64 + lv,
                                                                     rng_index(dim, I, J)) * cl->nalt);
                     const int *ofx = cl->offx + alt * n, *ofy = cl->offy + alt * n;
                     const double *a = cl->alt_a + alt * n;
                     for (size_t p = 0; p < n; p++)
                         s += a[p] * at(src, i + ofx[p], j + ofy[p]);
-                    s += sqrt(cl->alt_var[alt]) * nl_rng_gauss(seed, SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
+                    s += sqrt(cl->alt_var[alt]) * nl_rng_gauss(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
                     row[I - dst->x0] = s;
                     continue;
                 }
@@ -170,22 +170,22 @@ static void refine(int dim, const subdiv_level *l, const grid *src, grid *dst, u
                     for (int q = 0; q < w; q++)
                         s += cl->a[r * w + q] * at(src, i + 1 - N + q, j + 1 - N + r);
             }
-            s += sqrt(cl->variance) * nl_rng_gauss(seed, SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
+            s += sqrt(cl->variance) * nl_rng_gauss(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
             row[I - dst->x0] = s;
         }
     }
 }
 
-static int check_levels(const subdiv_coeffs *c, int allow_not_pd)
+static int check_levels(const nl_subdiv_coeffs *c, int allow_not_pd)
 {
-    if (!allow_not_pd && (c->flags & SUBDIV_NOT_PD)) {
+    if (!allow_not_pd && (c->flags & NL_SUBDIV_NOT_PD)) {
         for (int k = 0; k < c->levels; k++)
             for (int j = 0; j < c->level[k].nclass; j++)
-                if (c->level[k].cls[j].flags & SUBDIV_NOT_PD)
+                if (c->level[k].cls[j].flags & NL_SUBDIV_NOT_PD)
                     return NL_ERROR(NL_ENOTPD,
                                     "subdivision: the model is not positive definite at level %d (%s, spacing %g, "
                                     "min eigenvalue %.3g); use --clamp to synthesise it anyway",
-                                    k, subdiv_class_name(c->level[k].cls[j].cls), c->level[k].spacing,
+                                    k, nl_subdiv_class_name(c->level[k].cls[j].cls), c->level[k].spacing,
                                     c->level[k].cls[j].min_eigenvalue);
     }
     return NL_OK;
@@ -212,7 +212,7 @@ static int pad_periodic(int dim, const double *v, long nx, long ny, long pad, gr
     return NL_OK;
 }
 
-int subdiv_refine_periodic(const subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
+int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
                            nl_field *f)
 {
     const int dim = c->dim;
@@ -266,7 +266,7 @@ int subdiv_refine_periodic(const subdiv_coeffs *c, const nl_field *coarse, uint6
     return st;
 }
 
-int subdiv_synth_periodic(const subdiv_coeffs *c, const nl_model *m, uint64_t seed, int allow_not_pd,
+int nl_subdiv_synth_periodic(const nl_subdiv_coeffs *c, const nl_model *m, uint64_t seed, int allow_not_pd,
                           nl_field *f)
 {
     const int dim = c->dim;
@@ -289,24 +289,24 @@ int subdiv_synth_periodic(const subdiv_coeffs *c, const nl_model *m, uint64_t se
         return st;
     if (m) {
         /* level 0: exact periodic synthesis at spacing s0 */
-        synth_fft_plan *p;
-        st = synth_fft_plan_alloc(m, dim, cn, h, allow_not_pd ? SYNTH_FFT_CLAMP : 0, &p);
+        nl_synth_fft_plan *p;
+        st = nl_synth_fft_plan_alloc(m, dim, cn, h, allow_not_pd ? NL_SYNTH_FFT_CLAMP : 0, &p);
         if (!st)
-            st = synth_fft_execute(p, seed, coarse);
-        synth_fft_plan_free(p);
+            st = nl_synth_fft_execute(p, seed, coarse);
+        nl_synth_fft_plan_free(p);
     } else {
         for (size_t j = 0; j < cn[1]; j++)
             for (size_t i = 0; i < cn[0]; i++)
                 coarse->data[j * cn[0] + i] =
-                    sqrt(c->r0) * nl_rng_gauss(seed, SUBDIV_STREAM, rng_index(dim, (long)i, (long)j));
+                    sqrt(c->r0) * nl_rng_gauss(seed, NL_SUBDIV_STREAM, rng_index(dim, (long)i, (long)j));
     }
     if (!st)
-        st = subdiv_refine_periodic(c, coarse, seed, allow_not_pd, f);
+        st = nl_subdiv_refine_periodic(c, coarse, seed, allow_not_pd, f);
     nl_field_free(coarse);
     return st;
 }
 
-int subdiv_synth_window(const subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f)
+int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f)
 {
     const int dim = c->dim, L = c->levels;
     long (*rx)[2], (*ry)[2];
@@ -335,7 +335,7 @@ int subdiv_synth_window(const subdiv_coeffs *c, uint64_t seed, const long *origi
     st = grid_alloc(&g, rx[0][0], ry[0][0], rx[0][1] - rx[0][0] + 1, ry[0][1] - ry[0][0] + 1);
     for (long j = 0; !st && j < g.ny; j++)
         for (long i = 0; i < g.nx; i++)
-            g.v[j * g.nx + i] = sqrt(c->r0) * nl_rng_gauss(seed, SUBDIV_STREAM, rng_index(dim, g.x0 + i, g.y0 + j));
+            g.v[j * g.nx + i] = sqrt(c->r0) * nl_rng_gauss(seed, NL_SUBDIV_STREAM, rng_index(dim, g.x0 + i, g.y0 + j));
     for (int k = 0; k < L && !st; k++) {
         grid dst;
         st = grid_alloc(&dst, rx[k + 1][0], ry[k + 1][0], rx[k + 1][1] - rx[k + 1][0] + 1,

@@ -39,7 +39,7 @@ double stat_check_acf(const char *name, stat_synth fn, void *ctx, const size_t *
     size_t worst = 0;
     for (size_t s = 1; s <= M; s++) {
         cr_assert_eq(fn(ctx, s, x), 0, "%s: synthesis failed", name);
-        cr_assert_eq(an_acf_full(x, 0.0, AN_ACF_UNBIASED, &full), 0);
+        cr_assert_eq(nl_acf_full(x, 0.0, NL_ACF_UNBIASED, &full), 0);
         for (size_t i = 0; i < L; i++)
             sum[i] += full->data[(size_t)lags[i][1] * full->n[0] + (size_t)lags[i][0]];
         nl_field_free(full);

@@ -5,19 +5,19 @@
 #include <criterion/criterion.h>
 #include <math.h>
 
-static an_check run(const char *spec, int dim)
+static nl_check run(const char *spec, int dim)
 {
     nl_model *m;
-    an_check c;
+    nl_check c;
     cr_assert_eq(nl_model_parse(spec, &m), 0, "%s", spec);
-    cr_assert_eq(an_check_model(m, dim, &c), 0, "%s: %s", spec, nl_errmsg());
+    cr_assert_eq(nl_check_model(m, dim, &c), 0, "%s: %s", spec, nl_errmsg());
     nl_model_free(m);
     return c;
 }
 
 Test(check, not_positive_definite)
 {
-    an_check c = run("expr:cos(10*r)*exp(-r)", 2);  /* Lewis's example, below -1/2 */
+    nl_check c = run("expr:cos(10*r)*exp(-r)", 2);  /* Lewis's example, below -1/2 */
     cr_expect_not(c.positive_definite);
     cr_expect_not(c.isotropic_bound_ok);
     cr_expect_lt(c.min_spectrum, -0.1);
@@ -33,7 +33,7 @@ Test(check, positive_definite)
     const char *ok[] = {"markov", "gauss", "matern:nu=1.5", "markaussian:alpha=1.4"};
     for (int i = 0; i < 4; i++)
         for (int dim = 1; dim <= 3; dim++) {
-            an_check c = run(ok[i], dim);
+            nl_check c = run(ok[i], dim);
             cr_expect(c.positive_definite, "%s %dD: min spectrum %g, min eigenvalue %g", ok[i], dim, c.min_spectrum,
                       c.min_eigenvalue);
         }
@@ -55,7 +55,7 @@ Test(check, differentiability)
 
 Test(check, singular_below_a_spacing)
 {
-    an_check g = run("gauss", 1), m = run("markov", 1);
+    nl_check g = run("gauss", 1), m = run("markov", 1);
     cr_expect_gt(g.singular_below, 0.001, "gauss singular below %g", g.singular_below);
     cr_expect_lt(g.singular_below, 0.1);
     cr_expect_eq(m.singular_below, 0, "markov: %g", m.singular_below);

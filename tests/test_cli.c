@@ -35,7 +35,7 @@ static void bad(const char *args, const char *needle)
     cr_expect_eq(outputs_left(), 0, "%s: left an output file", args);
 }
 
-Test(cli, synth_error_paths)
+Test(cli, nl_synth_error_paths)
 {
     bad("synth fft --acf markov:scale=8 --size 0x5 -o out.exr", "\"0x5\"");
     bad("synth fft --acf markov --size 1 -o out.exr", "\"1\"");
@@ -197,7 +197,7 @@ Test(cli, hist_text_output_is_whole)
     cr_assert_eq(count_lines(out), 5 + 1 + 5);
 }
 
-Test(cli, synth_writes_exr_with_provenance)
+Test(cli, nl_synth_writes_exr_with_provenance)
 {
     char path[512];
     nl_field *f;
@@ -223,7 +223,7 @@ Test(cli, synth_writes_exr_with_provenance)
 }
 
 /* Subdivision reports its flags in the EXR and in --json. */
-Test(cli, subdiv_flags_reach_the_output)
+Test(cli, nl_subdiv_flags_reach_the_output)
 {
     char path[512];
     nl_field *f;
@@ -293,7 +293,7 @@ static int same_file(const char *a, const char *b)
 }
 
 /* A field's EXR records everything needed to regenerate it, bit for bit. */
-Test(cli, synth_from_regenerates)
+Test(cli, nl_synth_from_regenerates)
 {
     const char *cmds[] = {"synth fft --acf markov:scale=3 --size 64x48 --seed 5",
                           "synth subdiv --acf markaussian:alpha=1.4,scale=8 --size 128x128 --seed 3 --neighborhood auto",

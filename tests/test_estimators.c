@@ -39,7 +39,7 @@ static void compare(int dim, const size_t *n, int unbiased)
     double mean = 0, scale = 0;
     for (size_t i = 0; i < x->count; i++)
         mean += x->data[i] / (double)x->count;
-    cr_assert_eq(an_acf_full(x, NAN, unbiased, &full), 0);
+    cr_assert_eq(nl_acf_full(x, NAN, unbiased, &full), 0);
     for (long ly = dim == 2 ? -(long)n[1] + 1 : 0; ly < (dim == 2 ? (long)n[1] : 1); ly++)
         for (long lx = -(long)n[0] + 1; lx < (long)n[0]; lx++) {
             size_t i = (size_t)(lx < 0 ? lx + (long)full->n[0] : lx);
@@ -77,11 +77,11 @@ Test(acf, axis_profile_units)
     size_t n[2] = {40, 30};
     nl_field *x = noise(2, n, 0.5), *full;
     double lag[10], val[10];
-    cr_assert_eq(an_acf_full(x, NAN, 0, &full), 0);
-    cr_assert_eq(an_acf_axis(full, 1, 9, lag, val), 0);
+    cr_assert_eq(nl_acf_full(x, NAN, 0, &full), 0);
+    cr_assert_eq(nl_acf_axis(full, 1, 9, lag, val), 0);
     cr_assert_eq(lag[3], 3 * 0.75);
     cr_assert_eq(val[3], full->data[3 * full->n[0]]);
-    cr_assert_neq(an_acf_axis(full, 1, 30, lag, val), 0);
+    cr_assert_neq(nl_acf_axis(full, 1, 30, lag, val), 0);
     nl_field_free(full);
     nl_field_free(x);
 }
@@ -97,7 +97,7 @@ Test(psd, parseval)
             mean += x->data[i] / (double)x->count;
         for (size_t i = 0; i < x->count; i++)
             ms += (x->data[i] - mean) * (x->data[i] - mean) / (double)x->count;
-        cr_assert_eq(an_psd_periodogram(x, NAN, &P), 0);
+        cr_assert_eq(nl_psd_periodogram(x, NAN, &P), 0);
         for (int a = 0; a < dim; a++)
             cellf /= (double)x->n[a] * x->h[a];
         for (size_t k = 0; k < P->count; k++)
@@ -117,7 +117,7 @@ Test(psd, cosine_lands_in_its_bin)
     nl_field *x = nl_field_alloc(1, n, &h, NULL), *P;
     for (size_t j = 0; j < n[0]; j++)
         x->data[j] = A * cos(2 * M_PI * (double)(k0 * j) / (double)n[0]);
-    cr_assert_eq(an_psd_periodogram(x, 0.0, &P), 0);
+    cr_assert_eq(nl_psd_periodogram(x, 0.0, &P), 0);
     cr_assert_float_eq(P->data[k0], h * A * A * 256 / 4, 1e-9);
     cr_assert_float_eq(P->data[256 - k0], P->data[k0], 1e-9);
     cr_assert_lt(P->data[k0 + 1], 1e-20);
@@ -133,18 +133,18 @@ Test(hist, moments_and_counts)
     size_t n[1] = {5};
     double v[5] = {1, 2, 3, 4, 10}, sd = sqrt(12.5), s3 = 0, s4 = 0, edges[5], counts[4];
     nl_field *x = nl_field_alloc(1, n, NULL, NULL);
-    an_moments m;
+    nl_moments m;
     for (int i = 0; i < 5; i++) {
         x->data[i] = v[i];
         s3 += pow((v[i] - 4) / sd, 3) / 5;
         s4 += pow((v[i] - 4) / sd, 4) / 5;
     }
-    cr_assert_eq(an_moments_compute(x, &m), 0);
+    cr_assert_eq(nl_moments_compute(x, &m), 0);
     cr_assert_float_eq(m.mean, 4, 1e-15);
     cr_assert_float_eq(m.variance, 12.5, 1e-14);
     cr_assert_float_eq(m.skewness, s3, 1e-14);
     cr_assert_float_eq(m.kurtosis, s4 - 3, 1e-14);
-    cr_assert_eq(an_hist(x, 4, edges, counts), 0);
+    cr_assert_eq(nl_hist(x, 4, edges, counts), 0);
     cr_assert_float_eq(edges[0], 1, 1e-15);
     cr_assert_float_eq(edges[4], 10, 1e-12);
     /* bins of width 2.25: [1, 3.25) holds 1, 2, 3; [3.25, 5.5) holds 4; the
@@ -169,7 +169,7 @@ Test(radial, bins_by_distance)
             double x = (double)(i <= 8 ? (long)i : (long)i - 16), y = (double)(j <= 8 ? (long)j : (long)j - 16);
             g->data[j * 16 + i] = hypot(x, y);
         }
-    cr_assert_eq(an_radial(g, AN_GRID_LAG, 1.0, 6, r, v, cnt), 0);
+    cr_assert_eq(nl_radial(g, NL_GRID_LAG, 1.0, 6, r, v, cnt), 0);
     cr_assert_eq(cnt[0], 1);
     cr_assert_eq(cnt[1], 8);  /* 4 at distance 1 and 4 at sqrt(2) */
     for (int b = 0; b < 6; b++)

@@ -34,9 +34,9 @@ Test(estimators, direct_sum_equals_fft)
         x->data[i] = nl_rng_gauss(4, 1, i) + 0.1 * (double)(i % 7);
     for (int ub = 0; ub <= 1; ub++)
         for (int axis = 0; axis < 2; axis++) {
-            cr_assert_eq(an_acf_full(x, NAN, ub, &full), 0);
-            cr_assert_eq(an_acf_axis(full, axis, 19, lag, v), 0);
-            cr_assert_eq(an_acf_direct(x, NAN, ub, axis, 19, d), 0);
+            cr_assert_eq(nl_acf_full(x, NAN, ub, &full), 0);
+            cr_assert_eq(nl_acf_axis(full, axis, 19, lag, v), 0);
+            cr_assert_eq(nl_acf_direct(x, NAN, ub, axis, 19, d), 0);
             for (int k = 0; k < 20; k++)
                 cr_expect_float_eq(d[k], v[k], 1e-12 * fabs(v[0]), "unbiased %d axis %d lag %d", ub, axis, k);
             nl_field_free(full);
@@ -55,7 +55,7 @@ Test(estimators, welch_known_answers)
     nl_field *x = nl_field_alloc(1, &n, &h, NULL), *P;
     for (size_t i = 0; i < n; i++)
         x->data[i] = 1.7 * nl_rng_gauss(8, 2, i);
-    cr_assert_eq(an_psd_welch(x, 1024, 0.0, &P, &seg), 0);
+    cr_assert_eq(nl_psd_welch(x, 1024, 0.0, &P, &seg), 0);
     cr_expect_eq(seg, 127);
     double m = 0;
     for (size_t k = 1; k < 512; k++)
@@ -64,7 +64,7 @@ Test(estimators, welch_known_answers)
     nl_field_free(P);
     for (size_t i = 0; i < n; i++)
         x->data[i] = cos(2 * M_PI * 100.0 / 1024 * (double)i);
-    cr_assert_eq(an_psd_welch(x, 1024, 0.0, &P, &seg), 0);
+    cr_assert_eq(nl_psd_welch(x, 1024, 0.0, &P, &seg), 0);
     size_t best = 0;
     for (size_t k = 1; k < 512; k++)
         if (P->data[k] > P->data[best])
@@ -83,7 +83,7 @@ Test(estimators, ar1_spectrum)
     double phi = 0.8;
     size_t seg;
     nl_field *x = ar1(1 << 18, phi, 5), *P;
-    cr_assert_eq(an_psd_welch(x, 256, 0.0, &P, &seg), 0);
+    cr_assert_eq(nl_psd_welch(x, 256, 0.0, &P, &seg), 0);
     for (size_t lo = 2; lo < 128; lo *= 2) {
         double a = 0, b = 0;
         for (size_t k = lo; k < 2 * lo && k < 128; k++) {
@@ -108,10 +108,10 @@ Test(estimators, bartlett_band_coverage)
     for (uint64_t s = 1; s <= 400; s++) {
         nl_field *x = ar1(N, phi, 100 + s), *full;
         double c[41], var[6];
-        cr_assert_eq(an_acf_full(x, 0.0, 0, &full), 0);
+        cr_assert_eq(nl_acf_full(x, 0.0, 0, &full), 0);
         for (int i = 0; i < 41; i++)
             c[i] = full->data[i];
-        cr_assert_eq(an_acf_bartlett(c, 41, N, 5, var), 0);
+        cr_assert_eq(nl_acf_bartlett(c, 41, N, 5, var), 0);
         for (int k = 1; k <= 5; k++) {
             double truth = (1 - (double)k / (double)N) * r0 * pow(phi, k), half = 1.959964 * sqrt(var[k]);
             hit[k] += fabs(c[k] - truth) <= half;
@@ -136,19 +136,19 @@ Test(estimators, bartlett_band_coverage)
 Test(estimators, slope_interval_on_a_2d_periodogram_is_honest)
 {
     nl_model *m;
-    synth_fft_plan *p;
+    nl_synth_fft_plan *p;
     size_t n[2] = {128, 128};
     nl_field *x = nl_field_alloc(2, n, NULL, NULL), *P;
     double s1 = 0, s2 = 0, se = 0;
     int cover = 0;
     const int M = 40;
     cr_assert_eq(nl_model_parse("power:d=3.6,fmin=0.001", &m), 0);
-    cr_assert_eq(synth_fft_plan_alloc(m, 2, n, NULL, 0, &p), 0);
+    cr_assert_eq(nl_synth_fft_plan_alloc(m, 2, n, NULL, 0, &p), 0);
     for (int s = 1; s <= M; s++) {
-        an_slope sl;
-        cr_assert_eq(synth_fft_execute(p, (uint64_t)s, x), 0);
-        cr_assert_eq(an_psd_periodogram(x, NAN, &P), 0);
-        cr_assert_eq(an_psd_slope_grid(P, 0.02, 0.25, &sl), 0);
+        nl_slope sl;
+        cr_assert_eq(nl_synth_fft_execute(p, (uint64_t)s, x), 0);
+        cr_assert_eq(nl_psd_periodogram(x, NAN, &P), 0);
+        cr_assert_eq(nl_psd_slope_grid(P, 0.02, 0.25, &sl), 0);
         s1 += sl.slope, s2 += sl.slope * sl.slope, se += sl.ci95 / 1.96 / M;
         cover += fabs(sl.slope + 3.6) <= sl.ci95;
         nl_field_free(P);
@@ -156,5 +156,5 @@ Test(estimators, slope_interval_on_a_2d_periodogram_is_honest)
     double mean = s1 / M, sd = sqrt((s2 - M * mean * mean) / (M - 1));
     cr_expect_geq(cover, 33, "coverage %d of %d", cover, M);
     cr_expect(se / sd >= 0.69 && se / sd <= 1.45, "reported se %g against the slopes' sd %g (mean %g)", se, sd, mean);
-    nl_field_free(x), synth_fft_plan_free(p), nl_model_free(m);
+    nl_field_free(x), nl_synth_fft_plan_free(p), nl_model_free(m);
 }

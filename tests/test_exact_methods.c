@@ -31,8 +31,8 @@ static double r_matern(double x, double y)
     return (1 + u) * exp(-u);
 }
 
-static int run_circ(void *ctx, uint64_t seed, nl_field *out) { return synth_circulant_execute(ctx, seed, out); }
-static int run_chol(void *ctx, uint64_t seed, nl_field *out) { return synth_cholesky_execute(ctx, seed, out); }
+static int run_circ(void *ctx, uint64_t seed, nl_field *out) { return nl_synth_circulant_execute(ctx, seed, out); }
+static int run_chol(void *ctx, uint64_t seed, nl_field *out) { return nl_synth_cholesky_execute(ctx, seed, out); }
 
 static void check_circulant(const char *spec, stat_profile R, int dim)
 {
@@ -40,11 +40,11 @@ static void check_circulant(const char *spec, stat_profile R, int dim)
     long lags[64][2];
     size_t L = dim == 1 ? stat_lags_1d(lags) : stat_lags_2d(lags);
     nl_model *m;
-    synth_circulant_plan *p;
+    nl_synth_circulant_plan *p;
     cr_assert_eq(nl_model_parse(spec, &m), 0, "%s", spec);
-    cr_assert_eq(synth_circulant_plan_alloc(m, dim, n, NULL, 0, 16, &p), 0, "%s: %s", spec, nl_errmsg());
+    cr_assert_eq(nl_synth_circulant_plan_alloc(m, dim, n, NULL, 0, 16, &p), 0, "%s: %s", spec, nl_errmsg());
     stat_check_acf(spec, run_circ, p, n, R, 0, dim == 1 ? 200 : 64, (const long(*)[2])lags, L);
-    synth_circulant_plan_free(p);
+    nl_synth_circulant_plan_free(p);
     nl_model_free(m);
 }
 
@@ -61,11 +61,11 @@ Test(cholesky, matern_2d_acf)
     long lags[64][2];
     size_t L = stat_lags_2d(lags);
     nl_model *m;
-    synth_cholesky_plan *p;
+    nl_synth_cholesky_plan *p;
     cr_assert_eq(nl_model_parse("matern:nu=1.5,scale=5", &m), 0);
-    cr_assert_eq(synth_cholesky_plan_alloc(m, 2, n, NULL, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_cholesky_plan_alloc(m, 2, n, NULL, &p), 0, "%s", nl_errmsg());
     stat_check_acf("cholesky matern", run_chol, p, n, r_matern, 0, 400, (const long(*)[2])lags, L);
-    synth_cholesky_plan_free(p);
+    nl_synth_cholesky_plan_free(p);
     nl_model_free(m);
 }
 
@@ -96,15 +96,15 @@ Test(exact_methods, circulant_and_cholesky_have_the_model_covariance)
 {
     size_t n[1] = {12};
     nl_model *m;
-    synth_circulant_plan *pc;
-    synth_cholesky_plan *ph;
+    nl_synth_circulant_plan *pc;
+    nl_synth_cholesky_plan *ph;
     cr_assert_eq(nl_model_parse("gauss-osc:omega=0.4,scale=6", &m), 0);
-    cr_assert_eq(synth_circulant_plan_alloc(m, 1, n, NULL, 0, 16, &pc), 0, "%s", nl_errmsg());
-    cr_assert_eq(synth_cholesky_plan_alloc(m, 1, n, NULL, &ph), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_circulant_plan_alloc(m, 1, n, NULL, 0, 16, &pc), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_cholesky_plan_alloc(m, 1, n, NULL, &ph), 0, "%s", nl_errmsg());
     covariance_matches("circulant", run_circ, pc, 12, r_gosc1);
     covariance_matches("cholesky", run_chol, ph, 12, r_gosc1);
-    synth_circulant_plan_free(pc);
-    synth_cholesky_plan_free(ph);
+    nl_synth_circulant_plan_free(pc);
+    nl_synth_cholesky_plan_free(ph);
     nl_model_free(m);
 }
 
@@ -114,17 +114,17 @@ Test(exact_methods, refusals)
 {
     size_t n2[2] = {64, 64}, big[2] = {100, 100}, n1[1] = {200};
     nl_model *m;
-    synth_circulant_plan *pc;
-    synth_cholesky_plan *ph;
+    nl_synth_circulant_plan *pc;
+    nl_synth_cholesky_plan *ph;
     cr_assert_eq(nl_model_parse("gauss-osc:omega=2,scale=3", &m), 0);
-    cr_expect_eq(synth_circulant_plan_alloc(m, 2, n2, NULL, 0, 16, &pc), NL_ENOTPD);
+    cr_expect_eq(nl_synth_circulant_plan_alloc(m, 2, n2, NULL, 0, 16, &pc), NL_ENOTPD);
     cr_expect(strstr(nl_errmsg(), "cannot be embedded") != NULL, "%s", nl_errmsg());
-    cr_expect_eq(synth_circulant_plan_alloc(m, 2, n2, NULL, SYNTH_FFT_CLAMP, 2, &pc), NL_OK);
-    synth_circulant_plan_free(pc);
+    cr_expect_eq(nl_synth_circulant_plan_alloc(m, 2, n2, NULL, NL_SYNTH_FFT_CLAMP, 2, &pc), NL_OK);
+    nl_synth_circulant_plan_free(pc);
     nl_model_free(m);
     cr_assert_eq(nl_model_parse("markaussian:alpha=3,scale=4", &m), 0);
-    cr_expect_eq(synth_cholesky_plan_alloc(m, 1, n1, NULL, &ph), NL_ENOTPD);
-    cr_expect_eq(synth_cholesky_plan_alloc(m, 2, big, NULL, &ph), NL_ETOOBIG);
+    cr_expect_eq(nl_synth_cholesky_plan_alloc(m, 1, n1, NULL, &ph), NL_ENOTPD);
+    cr_expect_eq(nl_synth_cholesky_plan_alloc(m, 2, big, NULL, &ph), NL_ETOOBIG);
     cr_expect(strstr(nl_errmsg(), "10000") != NULL, "%s", nl_errmsg());
     nl_model_free(m);
 }

@@ -13,12 +13,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-static synth_fft_plan *plan(const char *spec, int dim, const size_t *n, unsigned flags, int *st)
+static nl_synth_fft_plan *plan(const char *spec, int dim, const size_t *n, unsigned flags, int *st)
 {
     nl_model *m;
-    synth_fft_plan *p = NULL;
+    nl_synth_fft_plan *p = NULL;
     cr_assert_eq(nl_model_parse(spec, &m), 0, "%s", spec);
-    *st = synth_fft_plan_alloc(m, dim, n, NULL, flags, &p);
+    *st = nl_synth_fft_plan_alloc(m, dim, n, NULL, flags, &p);
     nl_model_free(m);
     return p;
 }
@@ -28,16 +28,16 @@ Test(fft, bit_reproducible_across_runs_and_threads)
 {
     size_t n[2] = {96, 80};
     int st;
-    synth_fft_plan *p = plan("markov:scale=5", 2, n, 0, &st);
+    nl_synth_fft_plan *p = plan("markov:scale=5", 2, n, 0, &st);
     nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
     omp_set_num_threads(1);
-    cr_assert_eq(synth_fft_execute(p, 42, a), 0);
+    cr_assert_eq(nl_synth_fft_execute(p, 42, a), 0);
     omp_set_num_threads(2);
-    cr_assert_eq(synth_fft_execute(p, 42, b), 0);
+    cr_assert_eq(nl_synth_fft_execute(p, 42, b), 0);
     cr_assert_eq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
-    cr_assert_eq(synth_fft_execute(p, 43, b), 0);
+    cr_assert_eq(nl_synth_fft_execute(p, 43, b), 0);
     cr_assert_neq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
-    nl_field_free(a), nl_field_free(b), synth_fft_plan_free(p);
+    nl_field_free(a), nl_field_free(b), nl_synth_fft_plan_free(p);
 }
 
 /* Plans made with FFTW_ESTIMATE on one thread and FFTW_MEASURE on two give
@@ -52,7 +52,7 @@ Test(fft, any_plan_gives_the_same_field_to_rounding)
     double dmax = 0, vmax = 0;
     const char *was = getenv("NOISELAB_FFTW");
     char saved[32];
-    synth_fft_plan *p, *q;
+    nl_synth_fft_plan *p, *q;
     nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
     snprintf(saved, sizeof saved, "%s", was ? was : "");
     setenv("XDG_CACHE_HOME", scratch_dir(), 1); /* before the first plan of this process */
@@ -66,15 +66,15 @@ Test(fft, any_plan_gives_the_same_field_to_rounding)
         setenv("NOISELAB_FFTW", saved, 1);
     else
         unsetenv("NOISELAB_FFTW");
-    cr_assert_eq(synth_fft_execute(p, 42, a), 0);
-    cr_assert_eq(synth_fft_execute(q, 42, b), 0);
+    cr_assert_eq(nl_synth_fft_execute(p, 42, a), 0);
+    cr_assert_eq(nl_synth_fft_execute(q, 42, b), 0);
     for (size_t i = 0; i < a->count; i++) {
         dmax = fmax(dmax, fabs(a->data[i] - b->data[i]));
         vmax = fmax(vmax, fabs(a->data[i]));
     }
     cr_expect(dmax <= 1e-12 * vmax, "largest difference %g of largest value %g", dmax, vmax);
     cr_expect(vmax > 1, "the field is not empty");
-    nl_field_free(a), nl_field_free(b), synth_fft_plan_free(p), synth_fft_plan_free(q);
+    nl_field_free(a), nl_field_free(b), nl_synth_fft_plan_free(p), nl_synth_fft_plan_free(q);
 }
 
 /* A white spectrum S = 1 at unit spacing has lambda = 1: the field is the
@@ -86,27 +86,27 @@ Test(fft, white_spectrum_returns_the_white_noise)
 {
     size_t n[1] = {1024};
     int st;
-    synth_fft_plan *p = plan("spectrum:1", 1, n, 0, &st);
+    nl_synth_fft_plan *p = plan("spectrum:1", 1, n, 0, &st);
     nl_field *x = nl_field_alloc(1, n, NULL, NULL);
     cr_assert_eq(st, 0);
-    cr_assert_eq(synth_fft_execute(p, 2385, x), 0);
+    cr_assert_eq(nl_synth_fft_execute(p, 2385, x), 0);
     for (size_t j = 0; j < n[0]; j++) {
         double g[2];
         nl_rng_gauss_pair(2385, NL_STREAM_WHITE, j / 2, g);
         cr_assert_float_eq(x->data[j], g[j % 2], 1e-12, "j=%zu", j);
     }
-    nl_field_free(x), synth_fft_plan_free(p);
+    nl_field_free(x), nl_synth_fft_plan_free(p);
 }
 
 Test(fft, common_random_numbers_across_models)
 {
     size_t n[1] = {512};
     int st;
-    synth_fft_plan *pw = plan("spectrum:1", 1, n, 0, &st), *pm = plan("markov:scale=4", 1, n, 0, &st);
+    nl_synth_fft_plan *pw = plan("spectrum:1", 1, n, 0, &st), *pm = plan("markov:scale=4", 1, n, 0, &st);
     nl_field *w = nl_field_alloc(1, n, NULL, NULL), *x = nl_field_alloc(1, n, NULL, NULL);
     double q = exp(-0.25), re_w = 0, im_w = 0, re_x = 0, im_x = 0, k = 7;
-    cr_assert_eq(synth_fft_execute(pw, 9, w), 0);
-    cr_assert_eq(synth_fft_execute(pm, 9, x), 0);
+    cr_assert_eq(nl_synth_fft_execute(pw, 9, w), 0);
+    cr_assert_eq(nl_synth_fft_execute(pm, 9, x), 0);
     for (size_t j = 0; j < n[0]; j++) {
         double th = -2 * M_PI * k * (double)j / (double)n[0];
         re_w += w->data[j] * cos(th), im_w += w->data[j] * sin(th);
@@ -116,19 +116,19 @@ Test(fft, common_random_numbers_across_models)
     double th = 2 * M_PI * k / (double)n[0], g = sqrt((1 - q * q) / (1 - 2 * q * cos(th) + q * q));
     cr_assert_float_eq(re_x, g * re_w, 1e-9);
     cr_assert_float_eq(im_x, g * im_w, 1e-9);
-    nl_field_free(w), nl_field_free(x), synth_fft_plan_free(pw), synth_fft_plan_free(pm);
+    nl_field_free(w), nl_field_free(x), nl_synth_fft_plan_free(pw), nl_synth_fft_plan_free(pm);
 }
 
 Test(fft, reports_the_model_variance)
 {
     size_t n[2] = {64, 64};
     int st;
-    synth_fft_info info;
-    synth_fft_plan *p = plan("matern:nu=1.5,scale=3,var=2.385", 2, n, 0, &st);
-    synth_fft_plan_info(p, &info);
+    nl_synth_fft_info info;
+    nl_synth_fft_plan *p = plan("matern:nu=1.5,scale=3,var=2.385", 2, n, 0, &st);
+    nl_synth_fft_plan_info(p, &info);
     cr_assert_float_eq(info.variance, 2.385, 1e-12);
     cr_assert_eq(info.negatives, 0);
-    synth_fft_plan_free(p);
+    nl_synth_fft_plan_free(p);
 }
 
 /* Must raise: R = cos(omega r) exp(-r) in 2D violates the isotropic bound
@@ -138,21 +138,21 @@ Test(fft, refuses_models_that_are_not_positive_definite)
 {
     size_t n2[2] = {128, 128}, n1[1] = {256};
     int st;
-    synth_fft_plan *p = plan("oscillatory:omega=2,scale=10", 2, n2, 0, &st);
+    nl_synth_fft_plan *p = plan("oscillatory:omega=2,scale=10", 2, n2, 0, &st);
     cr_assert_null(p);
     cr_assert_eq(st, NL_ENOTPD);
     cr_assert(strstr(nl_errmsg(), "not positive definite") != NULL, "%s", nl_errmsg());
     p = plan("markaussian:alpha=3,scale=5", 1, n1, 0, &st);
     cr_assert_eq(st, NL_ENOTPD);
     /* with the clamp flag it is synthesised, and the clamping is reported */
-    p = plan("markaussian:alpha=3,scale=5", 1, n1, SYNTH_FFT_CLAMP, &st);
+    p = plan("markaussian:alpha=3,scale=5", 1, n1, NL_SYNTH_FFT_CLAMP, &st);
     cr_assert_eq(st, 0);
-    synth_fft_info info;
-    synth_fft_plan_info(p, &info);
+    nl_synth_fft_info info;
+    nl_synth_fft_plan_info(p, &info);
     cr_assert_gt(info.negatives, 0);
-    cr_assert_gt(info.clamp_error, SYNTH_FFT_CLAMP_TOL);
+    cr_assert_gt(info.clamp_error, NL_SYNTH_FFT_CLAMP_TOL);
     cr_assert_lt(info.min_lambda, 0);
-    synth_fft_plan_free(p);
+    nl_synth_fft_plan_free(p);
 }
 
 /* Must not raise: positive definite models, including a Gaussian whose grid
@@ -165,11 +165,11 @@ Test(fft, accepts_positive_definite_models)
                         "markaussian:alpha=1.4,scale=4", "matern:nu=2.5,scale=3", "markov:angle=40,ratio=0.2"};
     for (size_t i = 0; i < sizeof ok / sizeof *ok; i++) {
         int st;
-        synth_fft_info info;
-        synth_fft_plan *p = plan(ok[i], 2, n2, 0, &st);
+        nl_synth_fft_info info;
+        nl_synth_fft_plan *p = plan(ok[i], 2, n2, 0, &st);
         cr_assert_eq(st, 0, "%s: %s", ok[i], nl_errmsg());
-        synth_fft_plan_info(p, &info);
+        nl_synth_fft_plan_info(p, &info);
         cr_assert_leq(info.clamp_error, 1e-12, "%s", ok[i]);
-        synth_fft_plan_free(p);
+        nl_synth_fft_plan_free(p);
     }
 }

@@ -25,7 +25,7 @@ static double r_ellipse(double x, double y)
     return exp(-hypot(u, v) / 8);
 }
 
-static int run_fft(void *ctx, uint64_t seed, nl_field *out) { return synth_fft_execute(ctx, seed, out); }
+static int run_fft(void *ctx, uint64_t seed, nl_field *out) { return nl_synth_fft_execute(ctx, seed, out); }
 
 static void check(const char *spec, stat_profile R, int dim)
 {
@@ -33,11 +33,11 @@ static void check(const char *spec, stat_profile R, int dim)
     long lags[64][2];
     size_t L = dim == 1 ? stat_lags_1d(lags) : stat_lags_2d(lags);
     nl_model *m;
-    synth_fft_plan *p;
+    nl_synth_fft_plan *p;
     cr_assert_eq(nl_model_parse(spec, &m), 0, "%s", spec);
-    cr_assert_eq(synth_fft_plan_alloc(m, dim, n, NULL, 0, &p), 0, "%s", spec);
+    cr_assert_eq(nl_synth_fft_plan_alloc(m, dim, n, NULL, 0, &p), 0, "%s", spec);
     stat_check_acf(spec, run_fft, p, n, R, 1, dim == 1 ? 200 : 64, (const long(*)[2])lags, L);
-    synth_fft_plan_free(p);
+    nl_synth_fft_plan_free(p);
     nl_model_free(m);
 }
 

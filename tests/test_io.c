@@ -149,17 +149,17 @@ Test(io, exr_round_trip_of_synthesised_fields)
         for (int z = 0; z < 3; z++)
             for (uint64_t seed = 1; seed <= 3; seed++) {
                 nl_model *m;
-                synth_fft_plan *p;
+                nl_synth_fft_plan *p;
                 nl_field *f = nl_field_alloc(2, sizes[z], NULL, NULL), *g;
                 cr_assert_eq(nl_model_parse(specs[s], &m), 0);
-                cr_assert_eq(synth_fft_plan_alloc(m, 2, sizes[z], NULL, SYNTH_FFT_CLAMP, &p), 0, "%s", nl_errmsg());
-                cr_assert_eq(synth_fft_execute(p, seed, f), 0);
+                cr_assert_eq(nl_synth_fft_plan_alloc(m, 2, sizes[z], NULL, NL_SYNTH_FFT_CLAMP, &p), 0, "%s", nl_errmsg());
+                cr_assert_eq(nl_synth_fft_execute(p, seed, f), 0);
                 cr_assert_eq(nl_exr_write(path("s.exr"), f, NULL), 0);
                 cr_assert_eq(nl_exr_read(path("s.exr"), &g, NULL), 0);
                 for (size_t i = 0; i < f->count; i++)
                     cr_assert_eq(g->data[i], (double)(float)f->data[i], "%s %zux%zu seed %d: sample %zu", specs[s],
                                  sizes[z][0], sizes[z][1], (int)seed, i);
-                nl_field_free(f), nl_field_free(g), synth_fft_plan_free(p), nl_model_free(m);
+                nl_field_free(f), nl_field_free(g), nl_synth_fft_plan_free(p), nl_model_free(m);
             }
 }
 

@@ -11,39 +11,39 @@
 #include <criterion/criterion.h>
 #include <math.h>
 
-static an_hermite expand(const char *spec, int K)
+static nl_hermite expand(const char *spec, int K)
 {
     nl_dist *d;
-    an_hermite h;
+    nl_hermite h;
     cr_assert_eq(nl_dist_parse(spec, &d), 0);
-    cr_assert_eq(an_hermite_expand(d, K, &h), 0);
+    cr_assert_eq(nl_hermite_expand(d, K, &h), 0);
     nl_dist_free(d);
     return h;
 }
 
 Test(nonlin, identity)
 {
-    an_hermite h = expand("gauss", 12);
+    nl_hermite h = expand("gauss", 12);
     cr_expect_float_eq(h.c[1], 1.0, 1e-10);
     for (int n = 0; n < 12; n++)
         if (n != 1)
             cr_expect_lt(fabs(h.c[n]), 1e-10, "c_%d = %g", n, h.c[n]);
-    cr_expect_float_eq(an_hermite_cov(&h, 0.37), 0.37, 1e-10);
+    cr_expect_float_eq(nl_hermite_cov(&h, 0.37), 0.37, 1e-10);
 }
 
 Test(nonlin, uniform_closed_form)
 {
-    an_hermite h = expand("uniform", 40);
+    nl_hermite h = expand("uniform", 40);
     cr_expect_float_eq(h.c[0], 0.5, 1e-10);
     cr_expect_float_eq(h.variance, 1.0 / 12, 1e-9);
     for (double r = -0.9; r <= 0.9; r += 0.15)
-        cr_expect_float_eq(an_hermite_cov(&h, r), asin(r / 2) / (2 * M_PI), 1e-6, "rho = %g", r);
-    cr_expect_float_eq(an_hermite_invert(&h, asin(0.3) / (2 * M_PI)), 0.6, 1e-6);
+        cr_expect_float_eq(nl_hermite_cov(&h, r), asin(r / 2) / (2 * M_PI), 1e-6, "rho = %g", r);
+    cr_expect_float_eq(nl_hermite_invert(&h, asin(0.3) / (2 * M_PI)), 0.6, 1e-6);
 }
 
 Test(nonlin, odd_map_has_odd_terms_only)
 {
-    an_hermite h = expand("hyperbolic", 24);
+    nl_hermite h = expand("hyperbolic", 24);
     for (int n = 0; n < 24; n += 2)
         cr_expect_lt(fabs(h.c[n]), 1e-9, "c_%d = %g", n, h.c[n]);
     cr_expect_gt(fabs(h.c[3]), 0.01);
@@ -59,17 +59,17 @@ Test(nonlin, odd_map_has_odd_terms_only)
 Test(nonlin, design_round_trip)
 {
     nl_dist *d;
-    an_hermite h;
+    nl_hermite h;
     size_t n = 4096;
     double T[4096], rho[4096], err;
     size_t bad;
     cr_assert_eq(nl_dist_parse("laplace", &d), 0);
-    cr_assert_eq(an_hermite_expand(d, 32, &h), 0);
+    cr_assert_eq(nl_hermite_expand(d, 32, &h), 0);
     for (size_t j = 0; j < n; j++) {
         double t = (double)(j <= n / 2 ? j : n - j);
         T[j] = 2.0 * exp(-t / 8);
     }
-    cr_assert_eq(an_nonlin_design(&h, T, n, 1.0, rho, NULL, &err, &bad), 0);
+    cr_assert_eq(nl_nonlin_design(&h, T, n, 1.0, rho, NULL, &err, &bad), 0);
     cr_expect_eq(bad, 0);
     cr_expect_lt(err, 1e-9, "projection error %g", err);
     /* an unreachable target: negative correlation through a one-sided map */
@@ -79,8 +79,8 @@ Test(nonlin, design_round_trip)
     }
     nl_dist_free(d);
     cr_assert_eq(nl_dist_parse("chi2-1", &d), 0);
-    cr_assert_eq(an_hermite_expand(d, 32, &h), 0);
-    cr_assert_eq(an_nonlin_design(&h, T, n, 1.0, rho, NULL, &err, &bad), 0);
+    cr_assert_eq(nl_hermite_expand(d, 32, &h), 0);
+    cr_assert_eq(nl_nonlin_design(&h, T, n, 1.0, rho, NULL, &err, &bad), 0);
     cr_expect_gt(bad, 0, "chi2-1 cannot produce strongly negative correlations");
     cr_expect_gt(err, 0.05);
     nl_dist_free(d);

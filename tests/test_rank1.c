@@ -13,7 +13,7 @@
 #include <stdlib.h>
 
 /* Brute force: the least squared norm over the box |k_a| <= B per residue. */
-static void brute(const rank1_lattice *L, long B, double *best)
+static void brute(const nl_rank1_lattice *L, long B, double *best)
 {
     long k[4] = {0, 0, 0, 0};
     for (size_t m = 0; m < L->N; m++)
@@ -38,7 +38,7 @@ static void brute(const rank1_lattice *L, long B, double *best)
     }
 }
 
-static void check_vectors(rank1_lattice *L, long B)
+static void check_vectors(nl_rank1_lattice *L, long B)
 {
     double *best = malloc(L->N * sizeof *best);
     brute(L, B, best);
@@ -57,19 +57,19 @@ static void check_vectors(rank1_lattice *L, long B)
 
 Test(rank1, wave_vectors_are_minimal)
 {
-    rank1_lattice L;
-    cr_assert_eq(rank1_fibonacci(10, &L), 0);
+    nl_rank1_lattice L;
+    cr_assert_eq(nl_rank1_fibonacci(10, &L), 0);
     cr_assert_eq(L.N, 55);
     cr_assert_eq(L.g[1], 34);
-    check_vectors(&L, 30), rank1_free(&L);
-    cr_assert_eq(rank1_fibonacci(13, &L), 0);
-    check_vectors(&L, 60), rank1_free(&L);
-    cr_assert_eq(rank1_korobov(101, 2, 0, &L), 0);
-    check_vectors(&L, 60), rank1_free(&L);
-    cr_assert_eq(rank1_korobov(64, 3, 0, &L), 0);
-    check_vectors(&L, 12), rank1_free(&L);
-    cr_assert_eq(rank1_korobov(81, 4, 0, &L), 0);
-    check_vectors(&L, 6), rank1_free(&L);
+    check_vectors(&L, 30), nl_rank1_free(&L);
+    cr_assert_eq(nl_rank1_fibonacci(13, &L), 0);
+    check_vectors(&L, 60), nl_rank1_free(&L);
+    cr_assert_eq(nl_rank1_korobov(101, 2, 0, &L), 0);
+    check_vectors(&L, 60), nl_rank1_free(&L);
+    cr_assert_eq(nl_rank1_korobov(64, 3, 0, &L), 0);
+    check_vectors(&L, 12), nl_rank1_free(&L);
+    cr_assert_eq(nl_rank1_korobov(81, 4, 0, &L), 0);
+    check_vectors(&L, 6), nl_rank1_free(&L);
 }
 
 static double s_gauss(const long *k, int s, void *ctx)
@@ -83,13 +83,13 @@ static double s_gauss(const long *k, int s, void *ctx)
 
 Test(rank1, synthesis_inverts_and_is_real_and_periodic)
 {
-    rank1_lattice L;
+    nl_rank1_lattice L;
     double l = 0.12, *c, *f, *g, imag, cmax = 0;
-    cr_assert_eq(rank1_fibonacci(15, &L), 0);
+    cr_assert_eq(nl_rank1_fibonacci(15, &L), 0);
     size_t N = L.N;
     c = malloc(2 * N * sizeof *c), f = malloc(N * sizeof *f), g = malloc(2 * N * sizeof *g);
-    cr_assert_eq(rank1_coefficients(&L, s_gauss, &l, 3, c), 0);
-    cr_assert_eq(rank1_synthesize(&L, c, 1.0, f, g, &imag), 0);
+    cr_assert_eq(nl_rank1_coefficients(&L, s_gauss, &l, 3, c), 0);
+    cr_assert_eq(nl_rank1_synthesize(&L, c, 1.0, f, g, &imag), 0);
     for (size_t m = 0; m < 2 * N; m++)
         cmax = fmax(cmax, fabs(c[m]));
     cr_expect_lt(imag, 1e-12 * cmax * (double)N, "max |imag| %g", imag);
@@ -121,30 +121,30 @@ Test(rank1, synthesis_inverts_and_is_real_and_periodic)
     }
     for (size_t n = 0; n < N; n += 97) {
         double x[2], v = 0;
-        rank1_point(&L, n, x);
+        nl_rank1_point(&L, n, x);
         for (size_t m = 0; m < N; m++) {
             double ph = 2 * M_PI * ((double)L.k[2 * m] * x[0] + (double)L.k[2 * m + 1] * x[1]);
             v += c[2 * m] * cos(ph) - c[2 * m + 1] * sin(ph);
         }
         cr_expect_float_eq(v, f[n], 1e-9, "lattice point %zu", n);
     }
-    fftw_destroy_plan(p), fftw_free(b), free(c), free(f), free(g), rank1_free(&L);
+    fftw_destroy_plan(p), fftw_free(b), free(c), free(f), free(g), nl_rank1_free(&L);
 }
 
 /* The periodic Delaunay triangulation: 2N triangles of area 1/(2N) each,
  * tiling the unit square; the basis is reduced (acute, |v1| <= |v2|). */
 Test(rank1, delaunay)
 {
-    rank1_lattice L;
+    nl_rank1_lattice L;
     size_t n1, n2;
     double v1[2], v2[2];
-    cr_assert_eq(rank1_fibonacci(10, &L), 0);
-    cr_assert_eq(rank1_delaunay(&L, &n1, &n2, v1, v2), 0);
+    cr_assert_eq(nl_rank1_fibonacci(10, &L), 0);
+    cr_assert_eq(nl_rank1_delaunay(&L, &n1, &n2, v1, v2), 0);
     cr_expect_float_eq(fabs(v1[0] * v2[1] - v1[1] * v2[0]), 1.0 / 55, 1e-12);
     cr_expect_geq(v1[0] * v2[0] + v1[1] * v2[1], 0);
     cr_expect_leq(hypot(v1[0], v1[1]), hypot(v2[0], v2[1]) + 1e-15);
     cr_expect_float_eq(hypot(v1[0], v1[1]), L.min_dist, 1e-12);
-    rank1_free(&L);
+    nl_rank1_free(&L);
 }
 
 /* Covariance over lattice point pairs binned by torus distance (bins of
@@ -157,12 +157,12 @@ Test(rank1, delaunay)
  * sqrt(M)) is t(63); 15 bins at a family-wise 1e-3 (Bonferroni). */
 Test(rank1, realised_covariance_matches_target)
 {
-    rank1_lattice L;
+    nl_rank1_lattice L;
     double l = 0.1, *c, *f;
     enum { B = 15, M = 64 };
     double s1[B] = {0}, s2[B] = {0}, tgt[B] = {0}, zmax = 0, zcrit = gsl_cdf_tdist_Qinv(1e-3 / (2 * B), M - 1);
     long cnt[B] = {0};
-    cr_assert_eq(rank1_fibonacci(15, &L), 0);
+    cr_assert_eq(nl_rank1_fibonacci(15, &L), 0);
     size_t N = L.N;
     c = malloc(2 * N * sizeof *c), f = malloc(N * sizeof *f);
     /* pair bins and bin-averaged targets */
@@ -170,7 +170,7 @@ Test(rank1, realised_covariance_matches_target)
     for (size_t a = 0; a < N; a++)
         for (size_t b = 0; b < N; b++) {
             double xa[2], xb[2], d2 = 0;
-            rank1_point(&L, a, xa), rank1_point(&L, b, xb);
+            nl_rank1_point(&L, a, xa), nl_rank1_point(&L, b, xb);
             for (int q = 0; q < 2; q++) {
                 double d = fabs(xa[q] - xb[q]);
                 d = fmin(d, 1 - d);
@@ -185,8 +185,8 @@ Test(rank1, realised_covariance_matches_target)
         tgt[k] /= (double)cnt[k];
     for (uint64_t s = 1; s <= M; s++) {
         double acc[B] = {0}, imag;
-        cr_assert_eq(rank1_coefficients(&L, s_gauss, &l, s, c), 0);
-        cr_assert_eq(rank1_synthesize(&L, c, 1.0, f, NULL, &imag), 0);
+        cr_assert_eq(nl_rank1_coefficients(&L, s_gauss, &l, s, c), 0);
+        cr_assert_eq(nl_rank1_synthesize(&L, c, 1.0, f, NULL, &imag), 0);
         for (size_t a = 0; a < N; a++)
             for (size_t b = 0; b < N; b++)
                 if (bin[a * N + b] >= 0)
@@ -202,5 +202,5 @@ Test(rank1, realised_covariance_matches_target)
     }
     cr_log_info("rank-1 covariance: max |z| = %.2f over %d distance bins (threshold %.2f)", zmax, B, zcrit);
     cr_expect_leq(zmax, zcrit);
-    free(bin), free(c), free(f), rank1_free(&L);
+    free(bin), free(c), free(f), nl_rank1_free(&L);
 }

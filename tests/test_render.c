@@ -15,7 +15,7 @@ static nl_field *flat(size_t n)
     return f;
 }
 
-static const uint8_t *px(const uint8_t *rgb, const terrain_view *v, size_t x, size_t y)
+static const uint8_t *px(const uint8_t *rgb, const nl_render_view *v, size_t x, size_t y)
 {
     return rgb + 3 * (y * v->width + x);
 }
@@ -28,11 +28,11 @@ static const uint8_t *px(const uint8_t *rgb, const terrain_view *v, size_t x, si
 Test(render, flat_plain_horizon_in_the_middle)
 {
     nl_field *f = flat(64);
-    terrain_view v;
-    terrain_view_default(f, &v);
+    nl_render_view v;
+    nl_render_view_default(f, &v);
     v.width = 64, v.height = 48, v.pitch = 0, v.cam[2] = 10, v.tile = 1, v.zscale = 1, v.haze = 1e6;
     uint8_t *rgb = malloc(v.width * v.height * 3);
-    cr_assert_eq(terrain_render(f, &v, rgb), 0);
+    cr_assert_eq(nl_render_terrain(f, &v, rgb), 0);
     for (size_t x = 0; x < v.width; x += 7) {
         for (size_t y = 0; y < 20; y++)
             cr_expect_gt(px(rgb, &v, x, y)[2], px(rgb, &v, x, y)[0], "sky at (%zu, %zu)", x, y);
@@ -47,14 +47,14 @@ Test(render, flat_plain_horizon_in_the_middle)
 Test(render, a_wall_occludes_the_sky_behind_it)
 {
     nl_field *f = flat(64);
-    terrain_view v;
+    nl_render_view v;
     for (size_t i = 0; i < 64; i++)
         for (size_t j = 30; j < 34; j++)
             f->data[j * 64 + i] = 1;
-    terrain_view_default(f, &v);
+    nl_render_view_default(f, &v);
     v.width = 64, v.height = 48, v.pitch = 0, v.cam[0] = 32, v.cam[1] = 0, v.cam[2] = 5, v.zscale = 12, v.haze = 1e6;
     uint8_t *rgb = malloc(v.width * v.height * 3);
-    cr_assert_eq(terrain_render(f, &v, rgb), 0);
+    cr_assert_eq(nl_render_terrain(f, &v, rgb), 0);
     /* the wall top is 7 samples above the camera at distance 30..34: 12-13
      * degrees up, 0.21 focal = 12 pixels above the middle row (focal = 55
      * pixels on a 64-pixel-wide, 60-degree view); row 16 (8 pixels above)
@@ -76,20 +76,20 @@ Test(render, a_wall_occludes_the_sky_behind_it)
 Test(render, ridges_cast_shadows_away_from_the_sun)
 {
     nl_field *f = flat(64);
-    terrain_view v;
+    nl_render_view v;
     uint8_t *lit, *shaded;
     double a = 0, b = 0;
     for (size_t j = 0; j < 64; j++)
         for (size_t i = 40; i < 44; i++)
             f->data[j * 64 + i] = 30;
-    terrain_view_default(f, &v);
+    nl_render_view_default(f, &v);
     v.width = 64, v.height = 48, v.pitch = 10, v.cam[0] = 20, v.cam[1] = -5, v.cam[2] = 10, v.zscale = 1;
     v.sun[1] = 20, v.haze = 1e6, v.azimuth = 90, v.fov = 40;
     lit = malloc(v.width * v.height * 3), shaded = malloc(v.width * v.height * 3);
     v.sun[0] = 180;
-    cr_assert_eq(terrain_render(f, &v, lit), 0);
+    cr_assert_eq(nl_render_terrain(f, &v, lit), 0);
     v.sun[0] = 0;
-    cr_assert_eq(terrain_render(f, &v, shaded), 0);
+    cr_assert_eq(nl_render_terrain(f, &v, shaded), 0);
     for (size_t y = 24; y < v.height; y++)
         for (size_t x = 0; x < v.width / 4; x++)
             for (int k = 0; k < 3; k++)
@@ -105,18 +105,18 @@ Test(render, ridges_cast_shadows_away_from_the_sun)
 Test(render, refuses_bad_views)
 {
     nl_field *f = flat(16);
-    terrain_view v;
+    nl_render_view v;
     uint8_t rgb[3 * 4 * 4];
     size_t n1[1] = {16};
     nl_field *g = nl_field_alloc(1, n1, NULL, NULL);
-    terrain_view_default(f, &v);
+    nl_render_view_default(f, &v);
     v.width = v.height = 4;
     v.fov = 175;
-    cr_expect_neq(terrain_render(f, &v, rgb), 0);
-    terrain_view_default(f, &v);
+    cr_expect_neq(nl_render_terrain(f, &v, rgb), 0);
+    nl_render_view_default(f, &v);
     v.width = v.height = 4;
     v.sun[1] = 0;
-    cr_expect_neq(terrain_render(f, &v, rgb), 0);
-    cr_expect_neq(terrain_render(g, &v, rgb), 0);
+    cr_expect_neq(nl_render_terrain(f, &v, rgb), 0);
+    cr_expect_neq(nl_render_terrain(g, &v, rgb), 0);
     nl_field_free(f), nl_field_free(g);
 }

@@ -36,9 +36,9 @@ Test(shape, reaches_every_target_distribution)
         for (size_t i = 0; i < sizeof targets / sizeof *targets; i++) {
             nl_field *f = white(65536, 3 + i);
             nl_dist *d = dist(targets[i]);
-            an_gof g;
-            cr_assert_eq(synth_shape(f, d, emp), 0);
-            cr_assert_eq(an_gof_test(f->data, f->count, d, 40, &g), 0);
+            nl_gof g;
+            cr_assert_eq(nl_synth_shape(f, d, emp), 0);
+            cr_assert_eq(nl_gof_test(f->data, f->count, d, 40, &g), 0);
             cr_expect_gt(g.p_ks, 1e-3 / 16, "%s%s: KS D = %g, p = %g", targets[i], emp ? " (empirical)" : "", g.D,
                          g.p_ks);
             cr_expect_gt(g.p_chi2, 1e-3 / 16, "%s: chi2 = %g, p = %g", targets[i], g.chi2, g.p_chi2);
@@ -52,9 +52,9 @@ Test(shape, goodness_of_fit_rejects_the_wrong_distribution)
 {
     nl_field *f = white(65536, 1);
     nl_dist *l = dist("laplace"), *g = dist("gauss:mean=0,sd=1.4142135623730951");
-    an_gof r;
-    cr_assert_eq(synth_shape(f, l, 0), 0);
-    cr_assert_eq(an_gof_test(f->data, f->count, g, 40, &r), 0);
+    nl_gof r;
+    cr_assert_eq(nl_synth_shape(f, l, 0), 0);
+    cr_assert_eq(nl_gof_test(f->data, f->count, g, 40, &r), 0);
     cr_expect_lt(r.p_ks, 1e-6, "KS p = %g", r.p_ks);
     cr_expect_lt(r.p_chi2, 1e-6, "chi2 p = %g", r.p_chi2);
     nl_field_free(f);
@@ -71,10 +71,10 @@ Test(shape, squared_gaussian_density_is_the_papers)
         cr_expect_float_eq(nl_dist_pdf(d, y), exp(-y / 2) / sqrt(2 * M_PI * y), 1e-13, "y = %g", y);
     /* and squaring a standard Gaussian field follows it */
     nl_field *f = white(65536, 7);
-    an_gof r;
+    nl_gof r;
     for (size_t i = 0; i < f->count; i++)
         f->data[i] = pow((f->data[i] - 2.385) / 0.7, 2);
-    cr_assert_eq(an_gof_test(f->data, f->count, d, 40, &r), 0);
+    cr_assert_eq(nl_gof_test(f->data, f->count, d, 40, &r), 0);
     cr_expect_gt(r.p_ks, 1e-3, "KS p = %g", r.p_ks);
     nl_field_free(f);
     nl_dist_free(d);

@@ -31,15 +31,15 @@ static void check(const char *spec, double (*R)(double, double), int dim)
     long lags[33][2];
     double s1[33] = {0}, s2[33] = {0}, zmax = 0, zcrit;
     nl_model *m;
-    synth_sparse_plan *p;
+    nl_synth_sparse_plan *p;
     nl_field *f = nl_field_alloc(dim, n, NULL, NULL), *full;
     for (size_t i = 0; i < L; i++)
         lags[i][0] = dim == 1 ? (long)i : (long)(i <= 10 ? i : 0), lags[i][1] = dim == 1 ? 0 : (long)(i <= 10 ? 0 : i - 10);
     cr_assert_eq(nl_model_parse(spec, &m), 0);
-    cr_assert_eq(synth_sparse_plan_model(m, dim, NULL, 0, 0, 32, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_model(m, dim, NULL, 0, 0, 32, &p), 0, "%s", nl_errmsg());
     for (size_t s = 1; s <= M; s++) {
-        cr_assert_eq(synth_sparse_execute(p, s, 1, NULL, f), 0, "%s", nl_errmsg());
-        cr_assert_eq(an_acf_full(f, 0.0, AN_ACF_UNBIASED, &full), 0);
+        cr_assert_eq(nl_synth_sparse_execute(p, s, 1, NULL, f), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_acf_full(f, 0.0, NL_ACF_UNBIASED, &full), 0);
         for (size_t i = 0; i < L; i++) {
             double v = full->data[(size_t)lags[i][1] * full->n[0] + (size_t)lags[i][0]];
             s1[i] += v, s2[i] += v * v;
@@ -53,7 +53,7 @@ static void check(const char *spec, double (*R)(double, double), int dim)
     }
     cr_log_info("sparse %s %dD: max |z| = %.2f (threshold %.2f)", spec, dim, zmax, zcrit);
     cr_expect_leq(zmax, zcrit, "%s: ensemble ACF %.2f standard errors from the target", spec, zmax);
-    nl_field_free(f), synth_sparse_plan_free(p), nl_model_free(m);
+    nl_field_free(f), nl_synth_sparse_plan_free(p), nl_model_free(m);
 }
 
 Test(sparse, markov_1d) { check("markov:scale=6", r_markov, 1); }
@@ -77,15 +77,15 @@ Test(sparse, kurtosis_against_density)
     nl_field *f = nl_field_alloc(2, n, NULL, NULL);
     cr_assert_eq(nl_model_parse("matern:nu=1.5,scale=4", &m), 0);
     for (int d = 0; d < 4; d++) {
-        synth_sparse_plan *p;
-        synth_sparse_info info;
+        nl_synth_sparse_plan *p;
+        nl_synth_sparse_info info;
         double s1 = 0, s2 = 0;
-        cr_assert_eq(synth_sparse_plan_model(m, 2, NULL, 0, 16, dens[d], &p), 0, "%s", nl_errmsg());
-        synth_sparse_plan_info(p, &info);
+        cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 0, 16, dens[d], &p), 0, "%s", nl_errmsg());
+        nl_synth_sparse_plan_info(p, &info);
         for (uint64_t s = 1; s <= 16; s++) {
-            an_moments mo;
-            cr_assert_eq(synth_sparse_execute(p, s, 1, NULL, f), 0);
-            an_moments_compute(f, &mo);
+            nl_moments mo;
+            cr_assert_eq(nl_synth_sparse_execute(p, s, 1, NULL, f), 0);
+            nl_moments_compute(f, &mo);
             s1 += mo.kurtosis, s2 += mo.kurtosis * mo.kurtosis;
         }
         double mean = s1 / 16, se = sqrt((s2 - 16 * mean * mean) / 15 / 16);
@@ -95,7 +95,7 @@ Test(sparse, kurtosis_against_density)
                       dens[d], mean, info.kurtosis);
         cr_expect_lt(mean, last, "measured kurtosis does not fall with density");
         last = mean;
-        synth_sparse_plan_free(p);
+        nl_synth_sparse_plan_free(p);
     }
     nl_field_free(f), nl_model_free(m);
 }
@@ -103,31 +103,31 @@ Test(sparse, kurtosis_against_density)
 /* Any sample is a function of the seed and its position only. */
 Test(sparse, windows_agree)
 {
-    synth_sparse_plan *p;
+    nl_synth_sparse_plan *p;
     size_t n[2] = {50, 40};
     long o1[2] = {-13, 7}, o2[2] = {0, 0};
     nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
-    cr_assert_eq(synth_sparse_plan_expr("cos(0.5*x+0.3*y)*exp(-r/4)", 2, 12, 8, 3, &p), 0);
-    cr_assert_eq(synth_sparse_set_angle(p, "0.01*x"), 0);
-    cr_assert_eq(synth_sparse_execute(p, 4, 0, o1, a), 0);
-    cr_assert_eq(synth_sparse_execute(p, 4, 0, o2, b), 0);
+    cr_assert_eq(nl_synth_sparse_plan_expr("cos(0.5*x+0.3*y)*exp(-r/4)", 2, 12, 8, 3, &p), 0);
+    cr_assert_eq(nl_synth_sparse_set_angle(p, "0.01*x"), 0);
+    cr_assert_eq(nl_synth_sparse_execute(p, 4, 0, o1, a), 0);
+    cr_assert_eq(nl_synth_sparse_execute(p, 4, 0, o2, b), 0);
     for (long y = 7; y < 40; y++)
         for (long x = 0; x < 37; x++)
             cr_assert_eq(a->data[(y - 7) * 50 + (x + 13)], b->data[y * 50 + x], "(%ld, %ld)", x, y);
-    nl_field_free(a), nl_field_free(b), synth_sparse_plan_free(p);
+    nl_field_free(a), nl_field_free(b), nl_synth_sparse_plan_free(p);
 }
 
 Test(sparse, refusals)
 {
-    synth_sparse_plan *p;
+    nl_synth_sparse_plan *p;
     size_t n[2] = {40, 40};
     nl_field *f = nl_field_alloc(2, n, NULL, NULL);
-    cr_expect_eq(synth_sparse_plan_expr("exp(-r)", 2, 8, 8, -1, &p), NL_EINVAL);
-    cr_expect_eq(synth_sparse_plan_expr("exp(-q)", 2, 8, 8, 1, &p), NL_EINVAL);
-    cr_assert_eq(synth_sparse_plan_expr("exp(-r)", 2, 30, 8, 1, &p), 0);
-    cr_expect_eq(synth_sparse_execute(p, 1, 1, NULL, f), NL_EINVAL, "kernel larger than the tile");
+    cr_expect_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, 8, 8, -1, &p), NL_EINVAL);
+    cr_expect_eq(nl_synth_sparse_plan_expr("exp(-q)", 2, 8, 8, 1, &p), NL_EINVAL);
+    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, 30, 8, 1, &p), 0);
+    cr_expect_eq(nl_synth_sparse_execute(p, 1, 1, NULL, f), NL_EINVAL, "kernel larger than the tile");
     cr_expect(strstr(nl_errmsg(), "larger than the tile") != NULL, "%s", nl_errmsg());
-    synth_sparse_plan_free(p);
+    nl_synth_sparse_plan_free(p);
     nl_field_free(f);
 }
 
@@ -137,16 +137,16 @@ Test(sparse, bit_reproducible_across_threads)
 {
     size_t n[2] = {192, 160};
     nl_model *m;
-    synth_sparse_plan *p;
+    nl_synth_sparse_plan *p;
     nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
     cr_assert_eq(nl_model_parse("matern:nu=1.5,scale=5", &m), 0);
-    cr_assert_eq(synth_sparse_plan_model(m, 2, NULL, 0, 0, 8, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 0, 0, 8, &p), 0, "%s", nl_errmsg());
     omp_set_num_threads(1);
-    cr_assert_eq(synth_sparse_execute(p, 9, 1, NULL, a), 0);
+    cr_assert_eq(nl_synth_sparse_execute(p, 9, 1, NULL, a), 0);
     omp_set_num_threads(2);
-    cr_assert_eq(synth_sparse_execute(p, 9, 1, NULL, b), 0);
+    cr_assert_eq(nl_synth_sparse_execute(p, 9, 1, NULL, b), 0);
     cr_expect_eq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
-    cr_assert_eq(synth_sparse_execute(p, 10, 1, NULL, b), 0);
+    cr_assert_eq(nl_synth_sparse_execute(p, 10, 1, NULL, b), 0);
     cr_expect_neq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
-    synth_sparse_plan_free(p), nl_model_free(m), nl_field_free(a), nl_field_free(b);
+    nl_synth_sparse_plan_free(p), nl_model_free(m), nl_field_free(a), nl_field_free(b);
 }

@@ -10,12 +10,12 @@
 #include <omp.h>
 #include <string.h>
 
-static subdiv_coeffs *coeffs(const char *spec, int dim, int levels, double s0, int N)
+static nl_subdiv_coeffs *coeffs(const char *spec, int dim, int levels, double s0, int N)
 {
     nl_model *m;
-    subdiv_coeffs *c;
+    nl_subdiv_coeffs *c;
     cr_assert_eq(nl_model_parse(spec, &m), 0, "%s", spec);
-    cr_assert_eq(subdiv_coeffs_alloc(m, dim, levels, s0, N, 1e-4, 16, &c), 0, "%s: %s", spec, nl_errmsg());
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, 1e-4, 16, &c), 0, "%s: %s", spec, nl_errmsg());
     nl_model_free(m);
     return c;
 }
@@ -31,9 +31,9 @@ Test(subdiv, lewis_table_1)
         {-0.339373, 0.000223, 73.455498}, {-0.019945, 0.014377, 99.885315}, {-0.495669, 0.158384, 33.747765},
         {0.343860, -0.337269, 32.062786}, {0.566771, -0.112145, 7.430885},  {0.543814, -0.036580, 3.152761},
         {0.514256, -0.010190, 1.494914}};
-    subdiv_coeffs *c = coeffs("expr:100*cos(10*t)*exp(-abs(t))", 1, 10, 15.0, 2);
+    nl_subdiv_coeffs *c = coeffs("expr:100*cos(10*t)*exp(-abs(t))", 1, 10, 15.0, 2);
     for (int k = 0; k < 10; k++) {
-        const subdiv_class *cl = &c->level[k].cls[0];
+        const nl_subdiv_class *cl = &c->level[k].cls[0];
         /* order k = -1, 0, 1, 2: a_1 is index 2, a_2 index 3; symmetric */
         cr_expect_leq(fabs(cl->a[2] - table[k][0]), 1e-6, "level %d a_1 %.7f", k, cl->a[2]);
         cr_expect_leq(fabs(cl->a[3] - table[k][1]), 1e-6, "level %d a_2 %.7f", k, cl->a[3]);
@@ -43,7 +43,7 @@ Test(subdiv, lewis_table_1)
                       cl->variance);
         cr_expect_eq(cl->flags, 0);
     }
-    subdiv_coeffs_free(c);
+    nl_subdiv_coeffs_free(c);
 }
 
 /* Lewis 1987, Table 2: mid-face coefficients of exp(-sqrt(x^2 + y^2)) over
@@ -53,12 +53,12 @@ Test(subdiv, lewis_table_2)
     static const double t[16] = {-0.006170, -0.003781, -0.003781, -0.006170, -0.003781, 0.254035,
                                  0.254035,  -0.003781, -0.003781, 0.254035,  0.254035,  -0.003781,
                                  -0.006170, -0.003781, -0.003781, -0.006170};
-    subdiv_coeffs *c = coeffs("markov", 2, 1, 1.0, 2);
-    cr_assert_eq(c->level[0].cls[0].cls, SUBDIV_FACE);
+    nl_subdiv_coeffs *c = coeffs("markov", 2, 1, 1.0, 2);
+    cr_assert_eq(c->level[0].cls[0].cls, NL_SUBDIV_FACE);
     for (int i = 0; i < 16; i++)
         cr_expect_leq(fabs(c->level[0].cls[0].a[i] - t[i]), 5e-6, "coefficient %d: %.7f", i,
                       c->level[0].cls[0].a[i]);
-    subdiv_coeffs_free(c);
+    nl_subdiv_coeffs_free(c);
 }
 
 /* exp(-|t|) is Markovian: only the two immediate neighbours count, at every
@@ -66,7 +66,7 @@ Test(subdiv, lewis_table_2)
 Test(subdiv, markov_uses_immediate_neighbours_only)
 {
     for (int N = 2; N <= 4; N++) {
-        subdiv_coeffs *c = coeffs("markov:scale=1.3", 1, 8, 10.0, N);
+        nl_subdiv_coeffs *c = coeffs("markov:scale=1.3", 1, 8, 10.0, N);
         for (int k = 0; k < 8; k++)
             for (int i = 0; i < 2 * N; i++) {
                 double a = c->level[k].cls[0].a[i];
@@ -75,7 +75,7 @@ Test(subdiv, markov_uses_immediate_neighbours_only)
                 else
                     cr_expect_lt(fabs(a), 1e-12, "N=%d level %d: a[%d] = %g", N, k, i, a);
             }
-        subdiv_coeffs_free(c);
+        nl_subdiv_coeffs_free(c);
     }
 }
 
@@ -83,26 +83,26 @@ Test(subdiv, markov_uses_immediate_neighbours_only)
  * its two ends; every other coefficient vanishes. */
 Test(subdiv, separable_markov_uses_face_corners_and_edge_ends)
 {
-    subdiv_coeffs *c = coeffs("markov:scale=1.7,sep", 2, 6, 8.0, 2);
+    nl_subdiv_coeffs *c = coeffs("markov:scale=1.7,sep", 2, 6, 8.0, 2);
     for (int k = 0; k < 6; k++)
         for (int j = 0; j < 3; j++) {
-            const subdiv_class *cl = &c->level[k].cls[j];
+            const nl_subdiv_class *cl = &c->level[k].cls[j];
             for (int r = 0; r < 4; r++)
                 for (int q = 0; q < 4; q++) {
                     int rr = r - 1, cc = q - 1; /* offsets -1..2 */
-                    int used = cl->cls == SUBDIV_FACE   ? (rr == 0 || rr == 1) && (cc == 0 || cc == 1)
-                               : cl->cls == SUBDIV_EDGE_X ? rr == 0 && (cc == 0 || cc == 1)
+                    int used = cl->cls == NL_SUBDIV_FACE   ? (rr == 0 || rr == 1) && (cc == 0 || cc == 1)
+                               : cl->cls == NL_SUBDIV_EDGE_X ? rr == 0 && (cc == 0 || cc == 1)
                                                           : cc == 0 && (rr == 0 || rr == 1);
                     double a = cl->a[r * 4 + q];
                     if (used)
-                        cr_expect_gt(fabs(a), 1e-6, "level %d %s (%d,%d)", k, subdiv_class_name(cl->cls), rr, cc);
+                        cr_expect_gt(fabs(a), 1e-6, "level %d %s (%d,%d)", k, nl_subdiv_class_name(cl->cls), rr, cc);
                     else
-                        cr_expect_lt(fabs(a), 1e-12, "level %d %s (%d,%d) = %g", k, subdiv_class_name(cl->cls),
+                        cr_expect_lt(fabs(a), 1e-12, "level %d %s (%d,%d) = %g", k, nl_subdiv_class_name(cl->cls),
                                      rr, cc, a);
                 }
-            cr_expect_eq(cl->flags & SUBDIV_DIAG_BIAS, 0);
+            cr_expect_eq(cl->flags & NL_SUBDIV_DIAG_BIAS, 0);
         }
-    subdiv_coeffs_free(c);
+    nl_subdiv_coeffs_free(c);
 }
 
 /* Singular: exp(-t^2) at fine levels needs the pseudo-inverse, whose uniform
@@ -110,16 +110,16 @@ Test(subdiv, separable_markov_uses_face_corners_and_edge_ends)
  * Not singular: exp(-|t|) at the same spacings. */
 Test(subdiv, gauss_is_singular_at_fine_levels_markov_is_not)
 {
-    subdiv_coeffs *g = coeffs("gauss", 1, 14, 4.0, 2), *m = coeffs("markov", 1, 14, 4.0, 2);
+    nl_subdiv_coeffs *g = coeffs("gauss", 1, 14, 4.0, 2), *m = coeffs("markov", 1, 14, 4.0, 2);
     int singular = 0, reset = 0;
     for (int k = 0; k < 14; k++) {
-        const subdiv_class *cl = &g->level[k].cls[0];
+        const nl_subdiv_class *cl = &g->level[k].cls[0];
         cr_expect_geq(cl->variance, 0.0);
-        if (cl->flags & SUBDIV_SINGULAR) {
+        if (cl->flags & NL_SUBDIV_SINGULAR) {
             singular++;
-            cr_expect(cl->flags & SUBDIV_PINV, "level %d: singular but not solved by the pseudo-inverse", k);
+            cr_expect(cl->flags & NL_SUBDIV_PINV, "level %d: singular but not solved by the pseudo-inverse", k);
         }
-        if (cl->flags & SUBDIV_NN_RESET) {
+        if (cl->flags & NL_SUBDIV_NN_RESET) {
             reset++;
             cr_expect_eq(cl->a[0], 0.0);
             cr_expect_eq(cl->a[1], 0.5);
@@ -128,11 +128,11 @@ Test(subdiv, gauss_is_singular_at_fine_levels_markov_is_not)
         }
         cr_expect_eq(m->level[k].cls[0].flags, 0, "markov level %d flagged", k);
     }
-    cr_expect(!(g->level[0].cls[0].flags & SUBDIV_SINGULAR), "the coarsest gauss level is regular");
+    cr_expect(!(g->level[0].cls[0].flags & NL_SUBDIV_SINGULAR), "the coarsest gauss level is regular");
     cr_expect_geq(singular, 3);
     cr_expect_geq(reset, 1);
-    subdiv_coeffs_free(g);
-    subdiv_coeffs_free(m);
+    nl_subdiv_coeffs_free(g);
+    nl_subdiv_coeffs_free(m);
 }
 
 /* cos(10 r) exp(-r) in 2D breaks the -1/n bound: some levels have negative
@@ -140,25 +140,25 @@ Test(subdiv, gauss_is_singular_at_fine_levels_markov_is_not)
  * The isotropic Markovian exp(-r) never does. */
 Test(subdiv, isotropic_cosine_is_not_positive_definite)
 {
-    subdiv_coeffs *c = coeffs("expr:cos(10*r)*exp(-r)", 2, 8, 8.0, 2), *m = coeffs("markov", 2, 8, 8.0, 2);
-    cr_expect(c->flags & SUBDIV_NOT_PD);
-    cr_expect(!(m->flags & SUBDIV_NOT_PD));
+    nl_subdiv_coeffs *c = coeffs("expr:cos(10*r)*exp(-r)", 2, 8, 8.0, 2), *m = coeffs("markov", 2, 8, 8.0, 2);
+    cr_expect(c->flags & NL_SUBDIV_NOT_PD);
+    cr_expect(!(m->flags & NL_SUBDIV_NOT_PD));
     for (int k = 0; k < 8; k++)
         for (int j = 0; j < 3; j++)
             cr_expect_geq(c->level[k].cls[j].variance, 0.0);
-    subdiv_coeffs_free(c);
-    subdiv_coeffs_free(m);
+    nl_subdiv_coeffs_free(c);
+    nl_subdiv_coeffs_free(m);
 }
 
 /* Diagonal bias: the isotropic Markovian 4x4 neighbourhood has corner
  * coefficients of 2.4% of the largest (Table 2); the separable one none. */
 Test(subdiv, diagonal_bias_flag_both_ways)
 {
-    subdiv_coeffs *i = coeffs("markov", 2, 1, 1.0, 2), *s = coeffs("markov:sep", 2, 1, 1.0, 2);
-    cr_expect(i->level[0].cls[0].flags & SUBDIV_DIAG_BIAS);
-    cr_expect(!(s->flags & SUBDIV_DIAG_BIAS));
-    subdiv_coeffs_free(i);
-    subdiv_coeffs_free(s);
+    nl_subdiv_coeffs *i = coeffs("markov", 2, 1, 1.0, 2), *s = coeffs("markov:sep", 2, 1, 1.0, 2);
+    cr_expect(i->level[0].cls[0].flags & NL_SUBDIV_DIAG_BIAS);
+    cr_expect(!(s->flags & NL_SUBDIV_DIAG_BIAS));
+    nl_subdiv_coeffs_free(i);
+    nl_subdiv_coeffs_free(s);
 }
 
 /* auto: the error variance (7) decreases with N (a larger subspace), and N
@@ -166,13 +166,13 @@ Test(subdiv, diagonal_bias_flag_both_ways)
 Test(subdiv, auto_neighbourhood)
 {
     nl_model *m;
-    subdiv_coeffs *a, *n2;
+    nl_subdiv_coeffs *a, *n2;
     cr_assert_eq(nl_model_parse("expr:100*cos(10*t)*exp(-abs(t))", &m), 0);
-    cr_assert_eq(subdiv_coeffs_alloc(m, 1, 10, 15.0, 0, 1e-4, 16, &a), 0);
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 1, 10, 15.0, 0, 1e-4, 16, &a), 0);
     n2 = coeffs("expr:100*cos(10*t)*exp(-abs(t))", 1, 10, 15.0, 2);
     for (int k = 0; k < 10; k++) {
         int N = a->level[k].N;
-        subdiv_coeffs *more;
+        nl_subdiv_coeffs *more;
         /* auto stops at the first N whose successor improves by < tol R(0) */
         if (N >= 2)
             cr_expect_leq(a->level[k].cls[0].variance, n2->level[k].cls[0].variance + 1e-9, "level %d", k);
@@ -180,23 +180,23 @@ Test(subdiv, auto_neighbourhood)
             cr_expect_lt(a->level[k].cls[0].variance - n2->level[k].cls[0].variance, 1e-4 * 100, "level %d", k);
         if (N == 16)
             continue;
-        cr_assert_eq(subdiv_coeffs_alloc(m, 1, 10, 15.0, N + 1, 1e-4, 16, &more), 0);
+        cr_assert_eq(nl_subdiv_coeffs_alloc(m, 1, 10, 15.0, N + 1, 1e-4, 16, &more), 0);
         cr_expect_lt(a->level[k].cls[0].variance - more->level[k].cls[0].variance, 1e-4 * 100,
                      "level %d: N = %d stopped although N + 1 improves by more than tol", k, N);
-        subdiv_coeffs_free(more);
+        nl_subdiv_coeffs_free(more);
     }
     cr_expect_gt(a->level[5].N, 1, "the oscillatory levels need more than the nearest neighbours");
-    subdiv_coeffs_free(a);
-    subdiv_coeffs_free(n2);
+    nl_subdiv_coeffs_free(a);
+    nl_subdiv_coeffs_free(n2);
     nl_model_free(m);
 }
 
-static nl_field *window(const subdiv_coeffs *c, int dim, long ox, long oy, size_t nx, size_t ny)
+static nl_field *window(const nl_subdiv_coeffs *c, int dim, long ox, long oy, size_t nx, size_t ny)
 {
     size_t n[2] = {nx, ny};
     long o[2] = {ox, oy};
     nl_field *f = nl_field_alloc(dim, n, NULL, NULL);
-    cr_assert_eq(subdiv_synth_window(c, 77, o, f), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_subdiv_synth_window(c, 77, o, f), 0, "%s", nl_errmsg());
     return f;
 }
 
@@ -204,8 +204,8 @@ static nl_field *window(const subdiv_coeffs *c, int dim, long ox, long oy, size_
  * equals the same part of a larger one; in 1D and 2D, at negative origins. */
 Test(subdiv, windows_agree_on_overlaps)
 {
-    subdiv_coeffs *c1 = coeffs("markaussian:alpha=1.4,scale=6", 1, 6, 64.0, 2);
-    subdiv_coeffs *c2 = coeffs("markov:scale=6", 2, 5, 32.0, 2);
+    nl_subdiv_coeffs *c1 = coeffs("markaussian:alpha=1.4,scale=6", 1, 6, 64.0, 2);
+    nl_subdiv_coeffs *c2 = coeffs("markov:scale=6", 2, 5, 32.0, 2);
     nl_field *a = window(c1, 1, -37, 0, 200, 1), *b = window(c1, 1, 50, 0, 300, 1);
     for (long i = 50; i < 163; i++)
         cr_assert_eq(a->data[i + 37], b->data[i - 50], "1D sample %ld", i);
@@ -216,22 +216,22 @@ Test(subdiv, windows_agree_on_overlaps)
         for (long x = 10; x < 44; x++)
             cr_assert_eq(a->data[(y - 7) * 64 + (x + 20)], b->data[(y + 5) * 90 + (x - 10)], "2D (%ld, %ld)", x, y);
     nl_field_free(a), nl_field_free(b);
-    subdiv_coeffs_free(c1);
-    subdiv_coeffs_free(c2);
+    nl_subdiv_coeffs_free(c1);
+    nl_subdiv_coeffs_free(c2);
 }
 
 /* Any order, non-causal: one more level (same s_0 and seed) keeps every
  * existing sample; the new field at even indices is the old one. */
 Test(subdiv, refining_keeps_existing_samples)
 {
-    subdiv_coeffs *c5 = coeffs("markov:scale=6", 2, 5, 32.0, 2), *c6 = coeffs("markov:scale=6", 2, 6, 32.0, 2);
+    nl_subdiv_coeffs *c5 = coeffs("markov:scale=6", 2, 5, 32.0, 2), *c6 = coeffs("markov:scale=6", 2, 6, 32.0, 2);
     nl_field *a = window(c5, 2, -8, 3, 40, 30), *b = window(c6, 2, -16, 6, 80, 60);
     for (size_t y = 0; y < 30; y++)
         for (size_t x = 0; x < 40; x++)
             cr_assert_eq(a->data[y * 40 + x], b->data[(2 * y) * 80 + 2 * x], "(%zu, %zu)", x, y);
     nl_field_free(a), nl_field_free(b);
-    subdiv_coeffs_free(c5);
-    subdiv_coeffs_free(c6);
+    nl_subdiv_coeffs_free(c5);
+    nl_subdiv_coeffs_free(c6);
 }
 
 /* 512 x 256: the finest levels exceed the 65536 samples from which the
@@ -240,47 +240,47 @@ Test(subdiv, refining_keeps_existing_samples)
 Test(subdiv, periodic_is_bit_reproducible_across_threads)
 {
     nl_model *m;
-    subdiv_coeffs *c = coeffs("markov:scale=5", 2, 4, 16.0, 2);
+    nl_subdiv_coeffs *c = coeffs("markov:scale=5", 2, 4, 16.0, 2);
     size_t n[2] = {512, 256};
     nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
     cr_assert_eq(nl_model_parse("markov:scale=5", &m), 0);
     omp_set_num_threads(1);
-    cr_assert_eq(subdiv_synth_periodic(c, m, 5, 0, a), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_subdiv_synth_periodic(c, m, 5, 0, a), 0, "%s", nl_errmsg());
     omp_set_num_threads(2);
-    cr_assert_eq(subdiv_synth_periodic(c, m, 5, 0, b), 0);
+    cr_assert_eq(nl_subdiv_synth_periodic(c, m, 5, 0, b), 0);
     cr_assert_eq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
     cr_assert_eq(a->h[0], 1.0);
-    nl_field_free(a), nl_field_free(b), nl_model_free(m), subdiv_coeffs_free(c);
+    nl_field_free(a), nl_field_free(b), nl_model_free(m), nl_subdiv_coeffs_free(c);
 }
 
 /* External consistency: a given coarse level is kept exactly. */
 Test(subdiv, seed_level_is_kept)
 {
     nl_model *m;
-    subdiv_coeffs *c = coeffs("markaussian:alpha=1.4,scale=3", 2, 3, 8.0, 2);
+    nl_subdiv_coeffs *c = coeffs("markaussian:alpha=1.4,scale=3", 2, 3, 8.0, 2);
     size_t nc[2] = {8, 6}, n[2] = {64, 48};
     nl_field *coarse = nl_field_alloc(2, nc, NULL, NULL), *f = nl_field_alloc(2, n, NULL, NULL);
     for (size_t i = 0; i < coarse->count; i++)
         coarse->data[i] = sin(2.385 * (double)i);
     cr_assert_eq(nl_model_parse("markaussian:alpha=1.4,scale=3", &m), 0);
-    cr_assert_eq(subdiv_refine_periodic(c, coarse, 9, 0, f), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_subdiv_refine_periodic(c, coarse, 9, 0, f), 0, "%s", nl_errmsg());
     for (size_t y = 0; y < 6; y++)
         for (size_t x = 0; x < 8; x++)
             cr_assert_eq(f->data[8 * y * 64 + 8 * x], coarse->data[y * 8 + x]);
-    nl_field_free(coarse), nl_field_free(f), nl_model_free(m), subdiv_coeffs_free(c);
+    nl_field_free(coarse), nl_field_free(f), nl_model_free(m), nl_subdiv_coeffs_free(c);
 }
 
 /* Not positive definite models are refused by synthesis unless allowed. */
 Test(subdiv, synthesis_refuses_not_positive_definite)
 {
     nl_model *m;
-    subdiv_coeffs *c = coeffs("expr:cos(10*r)*exp(-r)", 2, 6, 8.0, 2);
+    nl_subdiv_coeffs *c = coeffs("expr:cos(10*r)*exp(-r)", 2, 6, 8.0, 2);
     size_t n[2] = {128, 128};
     nl_field *f = nl_field_alloc(2, n, NULL, NULL);
     cr_assert_eq(nl_model_parse("expr:cos(10*r)*exp(-r)", &m), 0);
-    cr_assert_eq(subdiv_synth_periodic(c, m, 1, 0, f), NL_ENOTPD);
+    cr_assert_eq(nl_subdiv_synth_periodic(c, m, 1, 0, f), NL_ENOTPD);
     cr_assert(strstr(nl_errmsg(), "not positive definite") != NULL, "%s", nl_errmsg());
-    nl_field_free(f), nl_model_free(m), subdiv_coeffs_free(c);
+    nl_field_free(f), nl_model_free(m), nl_subdiv_coeffs_free(c);
 }
 
 /* Random quadrilateral neighbourhoods: each alternative is solved exactly
@@ -290,14 +290,14 @@ Test(subdiv, synthesis_refuses_not_positive_definite)
 Test(subdiv, random_neighbourhoods)
 {
     nl_model *m;
-    subdiv_coeffs *c = coeffs("markov:scale=6", 2, 4, 32.0, 2), *nn = coeffs("markov:scale=6", 2, 4, 32.0, 1);
+    nl_subdiv_coeffs *c = coeffs("markov:scale=6", 2, 4, 32.0, 2), *nn = coeffs("markov:scale=6", 2, 4, 32.0, 1);
     cr_assert_eq(nl_model_parse("markov:scale=6", &m), 0);
-    cr_assert_eq(subdiv_coeffs_randomize(c, m, 8, 1), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_subdiv_coeffs_randomize(c, m, 8, 1), 0, "%s", nl_errmsg());
     for (int k = 0; k < 4; k++)
         for (int j = 0; j < 3; j++) {
-            const subdiv_class *cl = &c->level[k].cls[j];
+            const nl_subdiv_class *cl = &c->level[k].cls[j];
             cr_assert_eq(cl->nalt, 8);
-            for (int a = 0; a < 8 && cl->cls == SUBDIV_FACE; a++)
+            for (int a = 0; a < 8 && cl->cls == NL_SUBDIV_FACE; a++)
                 cr_expect_leq(cl->alt_var[a], nn->level[k].cls[j].variance + 1e-12, "level %d class %d alt %d", k,
                               j, a);
         }
@@ -307,5 +307,5 @@ Test(subdiv, random_neighbourhoods)
         for (long x = 1; x < 31; x++)
             cr_assert_eq(a->data[(y - 4) * 40 + (x + 9)], b->data[(y - 10) * 40 + (x - 1)], "(%ld, %ld)", x, y);
     nl_field_free(a), nl_field_free(b);
-    nl_model_free(m), subdiv_coeffs_free(c), subdiv_coeffs_free(nn);
+    nl_model_free(m), nl_subdiv_coeffs_free(c), nl_subdiv_coeffs_free(nn);
 }

@@ -30,19 +30,19 @@ static void check(const char *spec, int dim, size_t nx, size_t ny, int L, double
                   const long *lags, size_t nl, double *method_error)
 {
     nl_model *m;
-    subdiv_coeffs *c;
+    nl_subdiv_coeffs *c;
     size_t n[2] = {nx, ny};
     nl_field *f, *full;
     double *s1 = calloc(nl, sizeof *s1), *s2 = calloc(nl, sizeof *s2), *ex = calloc(nl, sizeof *ex);
     double zmax = 0, zcrit, err = 0;
     size_t worst = 0;
     cr_assert_eq(nl_model_parse(spec, &m), 0);
-    cr_assert_eq(subdiv_coeffs_alloc(m, dim, L, ldexp(h, L), N, 1e-4, 16, &c), 0, "%s", nl_errmsg());
-    cr_assert_eq(an_subdiv_exact_acf(c, m, nx, ny, nl, lags, ex), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, dim, L, ldexp(h, L), N, 1e-4, 16, &c), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_subdiv_exact_acf(c, m, nx, ny, nl, lags, ex), 0, "%s", nl_errmsg());
     f = nl_field_alloc(dim, n, NULL, NULL);
     for (size_t s = 1; s <= M; s++) {
-        cr_assert_eq(subdiv_synth_periodic(c, m, s, 0, f), 0, "%s", nl_errmsg());
-        cr_assert_eq(an_acf_full(f, 0.0, AN_ACF_UNBIASED, &full), 0);
+        cr_assert_eq(nl_subdiv_synth_periodic(c, m, s, 0, f), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_acf_full(f, 0.0, NL_ACF_UNBIASED, &full), 0);
         for (size_t i = 0; i < nl; i++) {
             long lx = lags[2 * i], ly = dim == 2 ? lags[2 * i + 1] : 0;
             double v = full->data[(size_t)ly * full->n[0] + (size_t)lx];
@@ -66,7 +66,7 @@ static void check(const char *spec, int dim, size_t nx, size_t ny, int L, double
                   "expectation (threshold %.2f)", spec, lags[2 * worst], lags[2 * worst + 1], zmax, zcrit);
     if (method_error)
         *method_error = err / c->r0;
-    nl_field_free(f), nl_model_free(m), subdiv_coeffs_free(c);
+    nl_field_free(f), nl_model_free(m), nl_subdiv_coeffs_free(c);
     free(s1), free(s2), free(ex);
 }
 
@@ -91,7 +91,7 @@ static void check_2d(const char *spec, int N, double *err)
     check(spec, 2, 64, 64, 4, 1.0, N, 64, lags, 27, err);
 }
 
-Test(subdiv_stat, markov_1d_is_exact)
+Test(nl_subdiv_stat, markov_1d_is_exact)
 {
     double err;
     check_1d("markov:scale=8", 1.0, &err);
@@ -100,8 +100,8 @@ Test(subdiv_stat, markov_1d_is_exact)
     cr_expect_lt(err, 1e-10, "markov method error %g", err);
 }
 
-Test(subdiv_stat, markaussian_1d) { check_1d("markaussian:alpha=1.4,scale=8", 1.0, NULL); }
-Test(subdiv_stat, lewis_table1_model_1d) { check_1d("expr:100*cos(10*t)*exp(-abs(t))", 15.0 / 1024, NULL); }
-Test(subdiv_stat, gauss_osc_1d) { check_1d("gauss-osc:omega=10", 0.01171875, NULL); }
-Test(subdiv_stat, isotropic_markaussian_2d) { check_2d("markaussian:alpha=1.4,scale=6", 2, NULL); }
-Test(subdiv_stat, separable_markov_2d) { check_2d("markov:scale=6,sep", 2, NULL); }
+Test(nl_subdiv_stat, markaussian_1d) { check_1d("markaussian:alpha=1.4,scale=8", 1.0, NULL); }
+Test(nl_subdiv_stat, lewis_table1_model_1d) { check_1d("expr:100*cos(10*t)*exp(-abs(t))", 15.0 / 1024, NULL); }
+Test(nl_subdiv_stat, gauss_osc_1d) { check_1d("gauss-osc:omega=10", 0.01171875, NULL); }
+Test(nl_subdiv_stat, isotropic_markaussian_2d) { check_2d("markaussian:alpha=1.4,scale=6", 2, NULL); }
+Test(nl_subdiv_stat, separable_markov_2d) { check_2d("markov:scale=6,sep", 2, NULL); }
