@@ -105,4 +105,10 @@ typedef struct {
 /* The catalogue; *count receives its length. */
 const nl_model_info *nl_model_catalogue(size_t *count);
 
+/* The value in effect of the parameter `name` (var, scale, alpha, omega, nu,
+ * d, fmin, fmax, ratio, zratio: defaults included, in the spec's units) into
+ * *value.  Returns NL_OK, or NL_EINVAL when the model's family has no such
+ * parameter (*value untouched).  Thread-safe (core/model_param.c). */
+int nl_model_param(const nl_model *m, const char *name, double *value);
+
 #endif

@@ -138,6 +138,119 @@ int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, con
  * every number is a pure function of (seed, level, integer position). */
 #define NL_SUBDIV_STREAM 100u
 
+/* Midpoint displacement (Fournier, Fussell and Carpenter 1982) as a
+ * subdivision plan: nearest-neighbour averages (1D: the two ends; 2D: the
+ * four face corners, the two edge ends) with the displacement variance
+ * that makes the increments those of fractional Brownian motion with
+ * variogram 2 gamma(h) = sigma2 |h|^(2H):
+ *     v = 2 sum_k a_k gamma(p - p_k) - sum_jk a_j a_k gamma(p_j - p_k),
+ * (1D: sigma2 s^(2H) (2^(-2H) - 1/4)), times vscale^k at level k
+ * (vscale = 1: the fractal schedule; otherwise the altered variances of
+ * Haruyama and Barsky).  r0 is set to sigma2 s_0^(2H) / 2, the variance of
+ * the independent coarse values. */
+int nl_subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
+                           nl_subdiv_coeffs **out);
+
+/* Plans: plan once, execute many seeds.  A plan owns its coefficients
+ * (nl_subdiv_coeffs) and, for periodic synthesis from a model, the FFT plan
+ * of its coarse level, so executing another seed re-plans nothing.
+ * nl_subdiv_plan_alloc and _alloc_midpoint plan FFTW and evaluate the model:
+ * not thread-safe.  The executes only read the plan: one plan may serve
+ * several threads at once; each call allocates its own level grids
+ * (NL_ENOMEM when they do not fit).  Free with nl_subdiv_plan_free. */
+typedef struct nl_subdiv_plan nl_subdiv_plan;
+
+typedef struct {
+    int levels;           /* levels of refinement; 0 = the default policy (see nl_subdiv_plan_alloc) */
+    int N;                /* neighbourhood half-width (2N points per axis); 0 = auto (see tol) */
+    double tol;           /* auto: grow N until eq. (7) improves by < tol R(0) */
+    int nmax;             /* auto: largest N; 0 = 16 in 1D, 6 in 2D */
+    int nonperiodic;      /* a window of the infinite field (nl_subdiv_plan_execute_window) */
+    int allow_not_pd;     /* --clamp: negative variances become 0 instead of NL_ENOTPD (periodic) */
+    int image;            /* the coarse level is given (nl_subdiv_plan_execute_image): no coarse FFT plan */
+    int random_nb;        /* 2D: random neighbourhoods per class (nl_subdiv_coeffs_randomize); 0 = none */
+    uint64_t random_seed; /* plan seed of the random neighbourhoods */
+} nl_subdiv_options;
+
+typedef struct {
+    int levels;           /* levels of refinement */
+    double spacing0;      /* s_0 = h 2^levels, the coarse spacing */
+    double variance;      /* R(0) (midpoint: variance of the independent coarse values) */
+    double coarse_correlation; /* nonperiodic: R(s_0)/R(0), the neglected correlation of level 0; else NAN */
+} nl_subdiv_info;
+
+/* The defaults: levels 0 (policy), N = 2, tol 1e-4, nmax 0, periodic, no
+ * clamp, no image, no random neighbourhoods, random_seed 1. */
+void nl_subdiv_options_default(nl_subdiv_options *o);
+
+/* The default number of levels for an output of n[0..dim-1] samples: the
+ * number of halvings k = 1, 2, ... (at most 30) for which every n[a] is a
+ * multiple of 2^k with n[a] / 2^k >= min; 0 when n[0] is odd or below
+ * 2 min.  Pure. */
+int nl_subdiv_default_levels(int dim, const size_t *n, long min);
+
+/* The levels a seed image of image_n samples needs to refine to n (both
+ * dim-D): image_n[a] 2^L = n[a].  `levels` is the caller's request (0 = none).
+ * Returns NL_OK with *out = L >= 1, or NL_EINVAL when n is not a
+ * power-of-two multiple of image_n, when levels is nonzero and differs
+ * from L, or when L = 0.  Pure. */
+int nl_subdiv_image_levels(int dim, const size_t *image_n, const size_t *n, int levels, int *out);
+
+/* Plan subdivision of model m (defined by R) to an output of n[0..dim-1]
+ * samples (dim 1 or 2) at spacing h on every axis (lag units of m).
+ * Levels: o->levels, or by default 6 with o->nonperiodic, else
+ * nl_subdiv_default_levels(dim, n, 8) (a coarse grid of >= 8 samples);
+ * s_0 = h 2^levels.  Periodic plans (neither nonperiodic nor image) check
+ * here that every n[a] is a multiple of 2^levels with >= 2 coarse samples,
+ * that every level is positive definite (unless allow_not_pd) and plan the
+ * coarse FFT synthesis (synth/fft.h).  o is read, not kept; m is not kept.
+ * Returns NL_OK and *out, or (*out = NULL)
+ *   NL_EINVAL  dim not 1 or 2, fewer than 1 level, bad N/tol, random_nb in
+ *              1D, sizes not refinable, a model without R;
+ *   NL_ENOTPD  a level or the coarse spectrum not positive definite;
+ *   NL_EFAIL   a solve failed; NL_ENOMEM, NL_ETOOBIG  out of memory. */
+int nl_subdiv_plan_alloc(const nl_model *m, int dim, const size_t *n, double h, const nl_subdiv_options *o,
+                         nl_subdiv_plan **out);
+
+/* Midpoint displacement as a plan (nl_subdiv_coeffs_midpoint below):
+ * `levels` (0 = nl_subdiv_default_levels(dim, n, 2)), s_0 = h 2^levels,
+ * independent coarse values of variance sigma2 s_0^(2H) / 2.  Returns NL_OK,
+ * NL_EINVAL (dim, H, levels, sizes) or NL_ENOMEM. */
+int nl_subdiv_plan_alloc_midpoint(int dim, const size_t *n, double h, int levels, double H, double sigma2,
+                                  double vscale, nl_subdiv_plan **out);
+
+/* The Hurst exponent of a power:d=D model for midpoint displacement:
+ * H = (d - dim) / 2 (the spectrum f^-d, d = 2H + E).  Returns NL_OK, or
+ * NL_EINVAL when m is not a power model or H is outside (0, 1). */
+int nl_subdiv_midpoint_hurst(const nl_model *m, int dim, double *H);
+
+/* The plan's coefficients (owned by the plan, valid until _free) and summary. */
+const nl_subdiv_coeffs *nl_subdiv_plan_coeffs(const nl_subdiv_plan *p);
+void nl_subdiv_plan_info(const nl_subdiv_plan *p, nl_subdiv_info *info);
+
+/* Synthesise the field for `seed` into f (allocated with the plan's dim and
+ * n): periodic plans as nl_subdiv_synth_periodic, nonperiodic ones as the
+ * window at origin 0.  f->h is set to s_0 / 2^levels.  Bit-identical for
+ * equal seeds.  NL_EINVAL (f does not match; an image plan; a level smaller
+ * than its neighbourhood), NL_ENOTPD (nonperiodic plans), NL_ENOMEM. */
+int nl_subdiv_plan_execute(const nl_subdiv_plan *p, uint64_t seed, nl_field *f);
+
+/* The window at finest-grid indices origin[a] .. origin[a] + n[a] - 1 of a
+ * nonperiodic plan (nl_subdiv_synth_window).  NL_EINVAL for a periodic
+ * plan or a mismatched f; NL_ENOTPD; NL_ENOMEM. */
+int nl_subdiv_plan_execute_window(const nl_subdiv_plan *p, uint64_t seed, const long *origin, nl_field *f);
+
+/* Refine a seed image (Lewis 1987 Fig. 5, external consistency): image has
+ * the plan's dim and n / 2^levels samples; its mean is subtracted, the
+ * rest refined (nl_subdiv_refine_periodic), the mean added back, and the
+ * image's samples restored bit for bit at every 2^levels-th point.  NL_EINVAL
+ * (nonperiodic plan, dims or sizes), NL_ENOTPD, NL_ENOMEM. */
+int nl_subdiv_plan_execute_image(const nl_subdiv_plan *p, const nl_field *image, uint64_t seed, nl_field *f);
+
+void nl_subdiv_plan_free(nl_subdiv_plan *p);
+
+/* One-shot forms, kept for callers holding their own coefficients. */
+
 /* Periodic synthesis into f (dim 1 or 2, each n divisible by 2^levels and
  * the coarse grid n / 2^levels at least 2): the coarse grid is synthesised
  * exactly by periodic FFT synthesis of m at spacing s_0 (its white noise is
@@ -152,19 +265,6 @@ int nl_subdiv_synth_periodic(const nl_subdiv_coeffs *c, const nl_model *m, uint6
  * 1987 Fig. 5) into f, whose size must be the coarse size times 2^levels. */
 int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
                            nl_field *f);
-
-/* Midpoint displacement (Fournier, Fussell and Carpenter 1982) as a
- * subdivision plan: nearest-neighbour averages (1D: the two ends; 2D: the
- * four face corners, the two edge ends) with the displacement variance
- * that makes the increments those of fractional Brownian motion with
- * variogram 2 gamma(h) = sigma2 |h|^(2H):
- *     v = 2 sum_k a_k gamma(p - p_k) - sum_jk a_j a_k gamma(p_j - p_k),
- * (1D: sigma2 s^(2H) (2^(-2H) - 1/4)), times vscale^k at level k
- * (vscale = 1: the fractal schedule; otherwise the altered variances of
- * Haruyama and Barsky).  r0 is set to sigma2 s_0^(2H) / 2, the variance of
- * the independent coarse values. */
-int nl_subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
-                           nl_subdiv_coeffs **out);
 
 /* Non-periodic window: the samples of an infinite field at finest-grid
  * indices origin[a] .. origin[a] + n[a] - 1.  Level 0 is white noise of

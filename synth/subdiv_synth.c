@@ -1,8 +1,7 @@
 /* Generalized stochastic subdivision: refinement of a grid level by level,
  * periodic (Lewis 1987, "Boundary Conditions": wrapped indices) or as a
  * window of an infinite, spatially consistent field. */
-#include "subdiv.h"
-#include "fft.h"
+#include "subdiv_internal.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -20,13 +19,6 @@ typedef struct {
 } grid;
 
 static long fdiv2(long a) { return a >= 0 ? a / 2 : -((-a + 1) / 2); }
-
-static uint64_t rng_index(int dim, long i, long j)
-{
-    if (dim == 1)
-        return (uint64_t)i;
-    return ((uint64_t)(uint32_t)j << 32) | (uint32_t)i;
-}
 
 static int grid_alloc(grid *g, long x0, long y0, long nx, long ny)
 {
@@ -176,7 +168,7 @@ static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst
     }
 }
 
-static int check_levels(const nl_subdiv_coeffs *c, int allow_not_pd)
+int nl_subdiv_check_levels(const nl_subdiv_coeffs *c, int allow_not_pd)
 {
     if (!allow_not_pd && (c->flags & NL_SUBDIV_NOT_PD)) {
         for (int k = 0; k < c->levels; k++)
@@ -234,7 +226,7 @@ int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse,
             return NL_ERROR(NL_EINVAL, "size: level %d has %ld samples per axis, fewer than its neighbourhood "
                             "of %d; use fewer --levels or a larger --size", k, nk, 2 * c->level[k].reach);
     }
-    if ((st = check_levels(c, allow_not_pd)))
+    if ((st = nl_subdiv_check_levels(c, allow_not_pd)))
         return st;
     /* cur: the current level (the coarse field, then each refined level;
      * the last one is refined straight into f) */
@@ -266,46 +258,6 @@ int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse,
     return st;
 }
 
-int nl_subdiv_synth_periodic(const nl_subdiv_coeffs *c, const nl_model *m, uint64_t seed, int allow_not_pd,
-                          nl_field *f)
-{
-    const int dim = c->dim;
-    size_t cn[2] = {f->n[0] >> c->levels, dim == 2 ? f->n[1] >> c->levels : 1};
-    double h[2] = {c->spacing0, c->spacing0};
-    nl_field *coarse;
-    int st;
-
-    if (f->dim != dim)
-        return NL_ERROR(NL_EINVAL, "subdivision: a %dD plan cannot fill a %dD field", dim, f->dim);
-    if ((cn[0] << c->levels) != f->n[0] || (dim == 2 && (cn[1] << c->levels) != f->n[1]) || cn[0] < 2 ||
-        (dim == 2 && cn[1] < 2))
-        return NL_ERROR(NL_EINVAL, "size: expected each size a multiple of 2^%d = %ld with at least 2 coarse "
-                        "samples, got %zu%s%.0zu", c->levels, 1L << c->levels, f->n[0], dim == 2 ? "x" : "",
-                        dim == 2 ? f->n[1] : (size_t)0);
-    if ((st = check_levels(c, allow_not_pd)))
-        return st;
-    coarse = nl_field_alloc(dim, cn, h, &st);
-    if (!coarse)
-        return st;
-    if (m) {
-        /* level 0: exact periodic synthesis at spacing s0 */
-        nl_synth_fft_plan *p;
-        st = nl_synth_fft_plan_alloc(m, dim, cn, h, allow_not_pd ? NL_SYNTH_FFT_CLAMP : 0, &p);
-        if (!st)
-            st = nl_synth_fft_execute(p, seed, coarse);
-        nl_synth_fft_plan_free(p);
-    } else {
-        for (size_t j = 0; j < cn[1]; j++)
-            for (size_t i = 0; i < cn[0]; i++)
-                coarse->data[j * cn[0] + i] =
-                    sqrt(c->r0) * nl_rng_gauss(seed, NL_SUBDIV_STREAM, rng_index(dim, (long)i, (long)j));
-    }
-    if (!st)
-        st = nl_subdiv_refine_periodic(c, coarse, seed, allow_not_pd, f);
-    nl_field_free(coarse);
-    return st;
-}
-
 int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f)
 {
     const int dim = c->dim, L = c->levels;
@@ -315,7 +267,7 @@ int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long 
 
     if (f->dim != dim)
         return NL_ERROR(NL_EINVAL, "subdivision: a %dD plan cannot fill a %dD field", dim, f->dim);
-    if ((st = check_levels(c, 0)))
+    if ((st = nl_subdiv_check_levels(c, 0)))
         return st;
     rx = malloc((size_t)(L + 1) * sizeof *rx);
     ry = malloc((size_t)(L + 1) * sizeof *ry);
