@@ -34,21 +34,6 @@ void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *
                           info.clamp_error);
 }
 
-/* Largest L with every size divisible by 2^L and at least `min` coarse samples. */
-static int default_levels(const cli_synth_job *job, long min)
-{
-    int L = 0;
-    for (;;) {
-        int ok = 1;
-        for (int a = 0; a < job->dim; a++)
-            if ((long)job->n[a] % (2L << L) != 0 || (long)job->n[a] / (2L << L) < min)
-                ok = 0;
-        if (!ok || L >= 30)
-            return L;
-        L++;
-    }
-}
-
 static void flags_string(unsigned f, char *buf, size_t len)
 {
     size_t k = 0;
@@ -75,7 +60,7 @@ static json_t *levels_report(const nl_subdiv_coeffs *c)
     return a;
 }
 
-static nl_field *seed_image(const cli_synth_job *job, double *mean)
+static nl_field *seed_image(const cli_synth_job *job)
 {
     nl_field *img;
     int st = nl_field_read(job->seed_image, &img, NULL);
@@ -83,125 +68,105 @@ static nl_field *seed_image(const cli_synth_job *job, double *mean)
         cli_die_status(st);
     if (img->dim != job->dim)
         cli_die(2, "--seed-image: %s is %dD, expected %dD like --size", job->seed_image, img->dim, job->dim);
-    *mean = nl_field_mean(img);
     return img;
 }
 
-void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
+/* The plan for the job's options; the seed image, if any, in *img. */
+static nl_subdiv_plan *subdiv_plan(const cli_synth_job *job, nl_field **img)
 {
-    nl_subdiv_coeffs *c;
-    nl_field *img = NULL;
-    double mean = 0, s0, zero[2] = {0, 0}, coarse_corr = NAN;
-    int L = job->levels, N = job->N < 0 ? 2 : job->N, st;
+    nl_subdiv_options o;
+    nl_subdiv_plan *p;
+    int st;
+    nl_subdiv_options_default(&o);
+    o.levels = job->levels;
+    o.N = job->N < 0 ? 2 : job->N;
+    o.tol = job->tol;
+    o.nonperiodic = job->nonperiodic;
+    o.allow_not_pd = job->clamp;
+    o.random_nb = job->random_nb;
+    *img = NULL;
     if (job->dim > 2)
         cli_die(2, "synth subdiv: expected a 1D or 2D --size, got %dD", job->dim);
     for (int a = 1; a < job->dim; a++)
         if (job->h[a] != job->h[0])
             cli_die(2, "--spacing: subdivision needs the same spacing on every axis");
     if (job->seed_image) {
-        int Li = 0;
-        img = seed_image(job, &mean);
-        while ((img->n[0] << Li) < job->n[0])
-            Li++;
-        if ((img->n[0] << Li) != job->n[0] || (job->dim == 2 && (img->n[1] << Li) != job->n[1]))
-            cli_die(2, "--seed-image: a %zu%s%.0zu image refines to a power-of-two multiple of its size, not to "
-                    "--size %zu%s%.0zu", img->n[0], job->dim == 2 ? "x" : "", job->dim == 2 ? img->n[1] : (size_t)0,
-                    job->n[0], job->dim == 2 ? "x" : "", job->dim == 2 ? job->n[1] : (size_t)0);
-        if (L && L != Li)
-            cli_die(2, "--levels: the seed image fixes %d levels, got %d", Li, L);
-        L = Li;
-        if (L < 1)
-            cli_die(2, "--seed-image: the image is already as large as --size");
-    }
-    if (!L)
-        L = job->nonperiodic ? 6 : default_levels(job, 8);
-    if (L < 1)
-        cli_die(2, "--size: expected a size divisible by 2 with at least 16 samples for subdivision, got %zu",
-                job->n[0]);
-    s0 = ldexp(job->h[0], L);
-    if ((st = nl_subdiv_coeffs_alloc(job->m, job->dim, L, s0, N, job->tol, job->dim == 1 ? 16 : 6, &c)))
-        cli_die_status(st);
-    if (job->random_nb) {
-        if (job->dim != 2)
-            cli_die(2, "--random-neighborhoods: expected a 2D --size");
-        if ((st = nl_subdiv_coeffs_randomize(c, job->m, job->random_nb, 1)))
+        *img = seed_image(job);
+        if ((st = nl_subdiv_image_levels(job->dim, (*img)->n, job->n, job->levels, &o.levels)))
             cli_die_status(st);
+        o.image = !job->nonperiodic;
     }
-    if (job->nonperiodic) {
-        double lag[2] = {s0, 0};
-        coarse_corr = nl_model_acf(job->m, job->dim, lag) / nl_model_acf(job->m, job->dim, zero);
-        st = nl_subdiv_synth_window(c, job->seed, job->origin, f);
-    } else if (img) {
-        size_t step = (size_t)1 << L;
-        nl_field *work = nl_field_alloc(img->dim, img->n, img->h, &st);
-        if (!work)
-            cli_die_status(st);
-        for (size_t i = 0; i < img->count; i++)
-            work->data[i] = img->data[i] - mean;
-        st = nl_subdiv_refine_periodic(c, work, job->seed, job->clamp, f);
-        nl_field_free(work);
-        for (size_t i = 0; !st && i < f->count; i++)
-            f->data[i] += mean;
-        /* the seed samples are the data, bit for bit (not (v - mean) + mean) */
-        for (size_t j = 0; !st && j < img->n[1]; j++)
-            for (size_t i = 0; i < img->n[0]; i++)
-                f->data[(job->dim == 2 ? j * step * f->n[0] : 0) + i * step] = img->data[j * img->n[0] + i];
-    } else {
-        st = nl_subdiv_synth_periodic(c, job->m, job->seed, job->clamp, f);
-    }
-    if (st)
+    if ((st = nl_subdiv_plan_alloc(job->m, job->dim, job->n, job->h[0], &o, &p)))
         cli_die_status(st);
+    return p;
+}
+
+static void subdiv_describe(const cli_synth_job *job, const nl_subdiv_plan *p, cli_synth_result *r)
+{
+    const nl_subdiv_coeffs *c = nl_subdiv_plan_coeffs(p);
+    nl_subdiv_info info;
     char nb[16] = "auto";
+    int N = job->N < 0 ? 2 : job->N;
+    size_t k;
+    nl_subdiv_plan_info(p, &info);
     if (N)
         snprintf(nb, sizeof nb, "%d", N);
-    snprintf(r->method, sizeof r->method, "subdiv:levels=%d,neighborhood=%s,tol=%g%s%s", L, nb, job->tol,
-             job->nonperiodic ? ",nonperiodic" : ",periodic", img ? ",seed-image" : "");
+    k = (size_t)snprintf(r->method, sizeof r->method, "subdiv:levels=%d,neighborhood=%s,tol=%g%s%s", info.levels,
+                         nb, job->tol, job->nonperiodic ? ",nonperiodic" : ",periodic",
+                         job->seed_image ? ",seed-image" : "");
     if (job->random_nb)
-        snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), ",random-neighborhoods=%d",
-                 job->random_nb);
+        k += (size_t)snprintf(r->method + k, sizeof r->method - k, ",random-neighborhoods=%d", job->random_nb);
     if (job->nonperiodic)
-        snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), ",origin=%ld:%ld",
-                 job->origin[0], job->origin[1]);
-    if (img)
-        snprintf(r->method + strlen(r->method), sizeof r->method - strlen(r->method), "|seed-image=%s",
-                 job->seed_image);
+        k += (size_t)snprintf(r->method + k, sizeof r->method - k, ",origin=%ld:%ld", job->origin[0],
+                              job->origin[1]);
+    if (job->seed_image)
+        snprintf(r->method + k, sizeof r->method - k, "|seed-image=%s", job->seed_image);
     flags_string(c->flags, r->flags, sizeof r->flags);
     r->sd = sqrt(c->r0);
-    r->report = json_pack("{s:f,s:f,s:o}", "spacing0", s0, "variance", c->r0, "levels", levels_report(c));
+    r->report = json_pack("{s:f,s:f,s:o}", "spacing0", info.spacing0, "variance", c->r0, "levels",
+                          levels_report(c));
     if (job->nonperiodic)
-        json_object_set_new(r->report, "coarse_correlation", json_real(coarse_corr));
+        json_object_set_new(r->report, "coarse_correlation", json_real(info.coarse_correlation));
+}
+
+void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
+{
+    nl_field *img;
+    nl_subdiv_plan *p = subdiv_plan(job, &img);
+    int st;
+    if (job->nonperiodic)
+        st = nl_subdiv_plan_execute_window(p, job->seed, job->origin, f);
+    else if (img)
+        st = nl_subdiv_plan_execute_image(p, img, job->seed, f);
+    else
+        st = nl_subdiv_plan_execute(p, job->seed, f);
+    if (st)
+        cli_die_status(st);
+    subdiv_describe(job, p, r);
     nl_field_free(img);
-    nl_subdiv_coeffs_free(c);
+    nl_subdiv_plan_free(p);
 }
 
 void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
-    nl_subdiv_coeffs *c;
+    nl_subdiv_plan *p;
+    nl_subdiv_info info;
     double H = job->H;
-    int L = job->levels, st;
+    int st;
     if (job->dim > 2)
         cli_die(2, "synth midpoint: expected a 1D or 2D --size, got %dD", job->dim);
-    if (isnan(H)) {
-        /* f^-d with d = 2H + E (E = 1 or 2) */
-        if (nl_model_get_kind(job->m) != NL_MODEL_POWER)
-            cli_die(2, "synth midpoint: expected --H or a power:d=D model, got \"%s\"", nl_model_spec(job->m));
-        double d = NAN;
-        sscanf(strstr(nl_model_spec(job->m), "d=") + 2, "%lf", &d);
-        H = (d - job->dim) / 2;
-        if (!(H > 0 && H < 1))
-            cli_die(2, "synth midpoint: power:d=%g gives H = %g in %dD; expected %d < d < %d", d, H, job->dim,
-                    job->dim, job->dim + 2);
-    }
-    if (!L)
-        L = default_levels(job, 2);
-    if ((st = nl_subdiv_coeffs_midpoint(job->dim, L, ldexp(job->h[0], L), H, 1.0, job->vscale, &c)))
+    if (isnan(H) && (st = nl_subdiv_midpoint_hurst(job->m, job->dim, &H)))
         cli_die_status(st);
-    if ((st = nl_subdiv_synth_periodic(c, NULL, job->seed, 0, f)))
+    if ((st = nl_subdiv_plan_alloc_midpoint(job->dim, job->n, job->h[0], job->levels, H, 1.0, job->vscale, &p)))
         cli_die_status(st);
-    snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g", H, L, job->vscale);
-    r->sd = sqrt(c->r0);
-    r->report = json_pack("{s:f,s:i,s:f}", "H", H, "levels", L, "variance_scale", job->vscale);
-    nl_subdiv_coeffs_free(c);
+    if ((st = nl_subdiv_plan_execute(p, job->seed, f)))
+        cli_die_status(st);
+    nl_subdiv_plan_info(p, &info);
+    snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g", H, info.levels,
+             job->vscale);
+    r->sd = sqrt(info.variance);
+    r->report = json_pack("{s:f,s:i,s:f}", "H", H, "levels", info.levels, "variance_scale", job->vscale);
+    nl_subdiv_plan_free(p);
 }
 
 void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
@@ -266,7 +231,6 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
 {
     nl_synth_sparse_plan *p;
     nl_synth_sparse_info info;
-    double mean = 0;
     int st, given = (job->m != NULL) + (job->kernel != NULL) + (job->exemplar != NULL);
     if (job->dim > 2)
         cli_die(2, "synth sparse: expected a 1D or 2D --size, got %dD", job->dim);
@@ -279,25 +243,9 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
                                     &p);
     else {
         nl_field *img = cli_read_field(job->exemplar, NULL);
-        if (job->dim != 2 || img->dim != 2)
+        if (job->dim != 2)
             cli_die(2, "--exemplar: expected a 2D image and a 2D --size");
-        if (job->radius) {
-            /* the central 2R x 2R window of the exemplar */
-            size_t w = 2 * (size_t)job->radius, crop[2] = {w, w};
-            if (w > img->n[0] || w > img->n[1])
-                cli_die(2, "--radius: %d needs a %zux%zu window, larger than the %zux%zu exemplar", job->radius, w, w,
-                        img->n[0], img->n[1]);
-            nl_field *c = nl_field_alloc(2, crop, NULL, &st);
-            if (!c)
-                cli_die_status(st);
-            for (size_t j = 0; j < w; j++)
-                for (size_t i = 0; i < w; i++)
-                    c->data[j * w + i] = img->data[(j + (img->n[1] - w) / 2) * img->n[0] + i + (img->n[0] - w) / 2];
-            nl_field_free(img);
-            img = c;
-        }
-        mean = nl_field_mean(img);
-        st = nl_synth_sparse_plan_image(img, job->cell, job->density, &p);
+        st = nl_synth_sparse_plan_exemplar(img, job->radius, job->cell, job->density, &p);
         nl_field_free(img);
     }
     if (st)
@@ -309,8 +257,6 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
         cli_die(2, "synth sparse: --wrap and --origin exclude each other");
     if ((st = nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f)))
         cli_die_status(st);
-    for (size_t i = 0; mean != 0 && i < f->count; i++)
-        f->data[i] += mean;
     nl_synth_sparse_plan_free(p);
     /* expression-valued keys follow '|', as they may hold commas */
     char org[64] = "";
@@ -321,7 +267,7 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
              job->kernel ? job->kernel : "", job->exemplar ? "|exemplar=" : "", job->exemplar ? job->exemplar : "",
              job->angle ? "|angle=" : "", job->angle ? job->angle : "");
     r->sd = sqrt(info.variance);
-    r->offset = mean;
+    r->offset = info.mean;
     r->report = json_pack("{s:i,s:i,s:f,s:f,s:f,s:f}", "radius", info.radius, "cell", info.cell, "density",
                           info.density, "variance", info.variance, "excess_kurtosis", info.kurtosis, "truncated_energy",
                           info.truncated);

@@ -1,5 +1,6 @@
 /* Sparse convolution on the lattice: kernels and gather evaluation. */
 #include "sparse.h"
+#include "../core/autocorr.h"
 #include "../core/fftw_plan.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
@@ -276,6 +277,36 @@ int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr)
 
 void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_info *info) { *info = p->info; }
 
+int nl_synth_sparse_plan_exemplar(const nl_field *img, int radius, int cell, double density,
+                                  nl_synth_sparse_plan **out)
+{
+    nl_field *crop = NULL;
+    double mean;
+    int st;
+    *out = NULL;
+    if (img->dim != 2)
+        return NL_ERROR(NL_EINVAL, "--exemplar: expected a 2D image and a 2D --size");
+    if (radius) {
+        /* the central 2R x 2R window of the exemplar */
+        size_t w = 2 * (size_t)radius, n[2] = {w, w};
+        if (w > img->n[0] || w > img->n[1])
+            return NL_ERROR(NL_EINVAL, "--radius: %d needs a %zux%zu window, larger than the %zux%zu exemplar",
+                            radius, w, w, img->n[0], img->n[1]);
+        if (!(crop = nl_field_alloc(2, n, NULL, &st)))
+            return st;
+        for (size_t j = 0; j < w; j++)
+            for (size_t i = 0; i < w; i++)
+                crop->data[j * w + i] = img->data[(j + (img->n[1] - w) / 2) * img->n[0] + i + (img->n[0] - w) / 2];
+        img = crop;
+    }
+    mean = nl_field_mean(img);
+    st = nl_synth_sparse_plan_image(img, cell, density, out);
+    nl_field_free(crop);
+    if (!st)
+        (*out)->info.mean = mean;
+    return st;
+}
+
 /* The impulses of the cells cx0..cx1 x cy0..cy1 (absolute cell indices). */
 typedef struct {
     long cx0, cy0, ncx, ncy;  /* cell range */
@@ -427,5 +458,7 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
             out->data[j * nx + i] = s;
         }
     impulses_free(&im);
+    for (size_t i = 0; p->info.mean != 0 && i < out->count; i++)
+        out->data[i] += p->info.mean;
     return NL_OK;
 }

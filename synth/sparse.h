@@ -54,6 +54,7 @@ typedef struct {
     double truncated;       /* model kernels: energy fraction beyond the radius */
     double kurtosis;        /* predicted excess kurtosis */
     double variance;        /* predicted variance */
+    double mean;            /* added to every sample: the exemplar's mean (plan_exemplar), else 0 */
 } nl_synth_sparse_info;
 
 /* radius <= 0: the smallest radius keeping all but NL_SPARSE_ENERGY_TOL of the kernel's
@@ -64,6 +65,14 @@ int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int 
 int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
                            nl_synth_sparse_plan **out);
 int nl_synth_sparse_plan_image(const nl_field *img, int cell, double density, nl_synth_sparse_plan **out);
+
+/* Texture resynthesis from an exemplar: with radius > 0 the central
+ * 2 radius x 2 radius window of img (2D) is the exemplar, else all of it;
+ * planned as nl_synth_sparse_plan_image, and the exemplar's mean (info.mean)
+ * is added to every sample the plan synthesises.  NL_EINVAL (img not 2D,
+ * window larger than img, constant exemplar, cell/density), NL_ENOMEM. */
+int nl_synth_sparse_plan_exemplar(const nl_field *img, int radius, int cell, double density,
+                                  nl_synth_sparse_plan **out);
 
 /* Rotate the kernel by the angle expression theta(x, y). */
 int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr);
