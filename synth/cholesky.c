@@ -11,6 +11,7 @@ struct nl_synth_cholesky_plan {
     size_t n[3];        /* grid */
     size_t count;       /* samples */
     gsl_matrix *L;      /* lower Cholesky factor (upper triangle unused) */
+    double *z;          /* count white-noise samples: the execute workspace */
 };
 
 void nl_synth_cholesky_plan_free(nl_synth_cholesky_plan *p)
@@ -18,6 +19,7 @@ void nl_synth_cholesky_plan_free(nl_synth_cholesky_plan *p)
     if (!p)
         return;
     gsl_matrix_free(p->L);
+    free(p->z);
     free(p);
 }
 
@@ -40,7 +42,9 @@ int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, co
     if ((st = nl_model_check_dim(m, dim)))
         return st;
     p = calloc(1, sizeof *p);
-    if (!p || !(p->L = gsl_matrix_alloc(count, count))) {
+    if (!p || !(p->z = malloc(count * sizeof *p->z)) || !(p->L = gsl_matrix_alloc(count, count))) {
+        if (p)
+            free(p->z);
         free(p);
         return NL_ERROR(NL_ENOMEM, "out of memory for the covariance matrix");
     }
@@ -72,14 +76,11 @@ int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, co
     return NL_OK;
 }
 
-int nl_synth_cholesky_execute(const nl_synth_cholesky_plan *p, uint64_t seed, nl_field *out)
+int nl_synth_cholesky_execute(nl_synth_cholesky_plan *p, uint64_t seed, nl_field *out)
 {
-    double *z;
+    double *z = p->z;
     if (out->count != p->count)
         return NL_ERROR(NL_EINVAL, "cholesky: the output field does not match the plan's grid");
-    z = malloc(p->count * sizeof *z);
-    if (!z)
-        return NL_ERROR(NL_ENOMEM, "out of memory");
     for (size_t j = 0; j < p->count; j++)
         z[j] = nl_rng_gauss(seed, NL_SYNTH_CHOLESKY_STREAM, j);
     for (size_t i = 0; i < p->count; i++) {
@@ -88,6 +89,5 @@ int nl_synth_cholesky_execute(const nl_synth_cholesky_plan *p, uint64_t seed, nl
             s += gsl_matrix_get(p->L, i, j) * z[j];
         out->data[i] = s;
     }
-    free(z);
     return NL_OK;
 }

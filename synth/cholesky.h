@@ -20,9 +20,27 @@
 
 typedef struct nl_synth_cholesky_plan nl_synth_cholesky_plan;
 
+/* Plan for model m on a dim-D grid (1..3) of n[] samples at spacing h[]
+ * (NULL: unit; lag units of m), row-major with x fastest: C is count x
+ * count, count = n[0] ... n[dim-1] <= NL_SYNTH_CHOLESKY_MAX.  The plan owns
+ * the factor and a count-sample workspace; free with
+ * nl_synth_cholesky_plan_free.  Not thread-safe (evaluates the model; GSL's
+ * error handler).  Returns NL_OK and *out, or (*out = NULL)
+ *   NL_EINVAL  dim outside 1..3, a zero size, a model unusable in dim;
+ *   NL_ETOOBIG more than NL_SYNTH_CHOLESKY_MAX samples, or sizes overflow;
+ *   NL_ENOTPD  the Cholesky factorisation fails;
+ *   NL_ENOMEM  out of memory. */
 int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h,
                               nl_synth_cholesky_plan **out);
-int nl_synth_cholesky_execute(const nl_synth_cholesky_plan *p, uint64_t seed, nl_field *out);
+
+/* x = L z for `seed` into out (count samples, the plan's layout; out->n is
+ * not checked beyond its count).  Bit-identical for equal seeds.  Does not
+ * allocate: z lives in the plan, so one plan serves ONE thread at a time
+ * (give each thread its own plan).  NL_OK, or NL_EINVAL when out's count
+ * differs from the plan's. */
+int nl_synth_cholesky_execute(nl_synth_cholesky_plan *p, uint64_t seed, nl_field *out);
+
+/* Frees the plan (NULL: no-op). */
 void nl_synth_cholesky_plan_free(nl_synth_cholesky_plan *p);
 
 #endif

@@ -11,7 +11,7 @@ struct nl_synth_circulant_plan {
     size_t n[3];             /* output grid */
     double h[3];             /* spacing */
     nl_synth_fft_plan *fft;     /* periodic synthesis on the embedding */
-    nl_field *work;          /* embedding-size field; NOT shared between threads */
+    size_t m[3];             /* embedding size */
     nl_synth_circulant_info info;
 };
 
@@ -33,7 +33,6 @@ void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p)
     if (!p)
         return;
     nl_synth_fft_plan_free(p->fft);
-    nl_field_free(p->work);
     free(p);
 }
 
@@ -88,9 +87,7 @@ int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, c
             mm[a] *= 2;
         p->info.doublings++;
     }
-    if (!st) {
-        p->work = nl_field_alloc(dim, mm, p->h, &st);
-    }
+    memcpy(p->m, mm, sizeof mm);
     if (st) {
         nl_synth_circulant_plan_free(p);
         return st;
@@ -103,15 +100,21 @@ void nl_synth_circulant_plan_info(const nl_synth_circulant_plan *p, nl_synth_cir
 
 int nl_synth_circulant_execute(const nl_synth_circulant_plan *p, uint64_t seed, nl_field *out)
 {
-    const nl_field *w = p->work;
+    nl_field *w;
     int st;
     if (out->dim != p->dim || out->n[0] != p->n[0] || out->n[1] != p->n[1] || out->n[2] != p->n[2])
         return NL_ERROR(NL_EINVAL, "circulant: the output field does not match the plan's grid");
-    if ((st = nl_synth_fft_execute(p->fft, seed, p->work)))
+    /* this call's own embedding-size workspace: the plan is only read */
+    if (!(w = nl_field_alloc(p->dim, p->m, p->h, &st)))
         return st;
+    if ((st = nl_synth_fft_execute(p->fft, seed, w))) {
+        nl_field_free(w);
+        return st;
+    }
     for (size_t k = 0; k < p->n[2]; k++)
         for (size_t j = 0; j < p->n[1]; j++)
             memcpy(out->data + (k * p->n[1] + j) * p->n[0], w->data + (k * w->n[1] + j) * w->n[0],
                    p->n[0] * sizeof *out->data);
+    nl_field_free(w);
     return NL_OK;
 }

@@ -25,11 +25,31 @@ typedef struct {
 
 typedef struct nl_synth_circulant_plan nl_synth_circulant_plan;
 
+/* Plan for model m on a dim-D grid (1..3) of n[] samples at spacing h[]
+ * (NULL: unit), flags 0 or NL_SYNTH_FFT_CLAMP (accept a clamped embedding
+ * at max_factor), max_factor >= 2 the largest embedding per axis in units
+ * of n.  The plan owns its FFT plan (synth/fft.h); free with
+ * nl_synth_circulant_plan_free.  Plans FFTW and evaluates the model: not
+ * thread-safe.  Returns NL_OK and *out, or (*out = NULL)
+ *   NL_EINVAL  dim outside 1..3, a zero size, a model unusable in dim;
+ *   NL_ETOOBIG the embedding does not fit in memory or FFTW's int sizes;
+ *   NL_ENOTPD  the embedding is not non-negative at max_factor (no clamp);
+ *   NL_ENOMEM, NL_EFAIL  out of memory, FFTW could not plan. */
 int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
                                int max_factor, nl_synth_circulant_plan **out);
+
+/* The embedding and its eigenvalue range (eigenvalues of the covariance
+ * matrix, i.e. spectrum densities over the cell volume). */
 void nl_synth_circulant_plan_info(const nl_synth_circulant_plan *p, nl_synth_circulant_info *info);
-/* Not thread-safe: the plan holds the embedding-size work field. */
+
+/* The field for `seed` into out (the plan's dim and n, row-major, x
+ * fastest): the first n_a samples per axis of the periodic synthesis on the
+ * embedding.  Each call allocates its own embedding-size workspace and only
+ * reads the plan, so one plan may serve several threads.  Bit-identical for
+ * equal seeds.  NL_OK, NL_EINVAL (out does not match), NL_ENOMEM. */
 int nl_synth_circulant_execute(const nl_synth_circulant_plan *p, uint64_t seed, nl_field *out);
+
+/* Frees the plan (NULL: no-op). */
 void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p);
 
 #endif
