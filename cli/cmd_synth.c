@@ -189,7 +189,78 @@ static void only_for(const char *opt, int given, const char *method, const char 
         cli_die(2, "synth %s: %s applies to %s only", method, opt, allowed);
 }
 
-int cli_cmd_synth(int argc, char **argv)
+/* What the command line gave, beyond the job itself. */
+typedef struct {
+    const char *acf, *spec, *size, *spacing, *out, *preview, *origin, *from; /* option values or NULL */
+    int json;                                        /* --json */
+    int given_L, given_N, given_tol, given_vs, given_density; /* explicitly given */
+} cli_synth_args;
+
+static void job_defaults(cli_synth_job *job)
+{
+    memset(job, 0, sizeof *job);
+    job->seed = 1;
+    job->N = -1;
+    job->tol = 1e-4;
+    job->H = NAN;
+    job->vscale = 1;
+    job->density = 1;
+    for (int a = 0; a < 3; a++)
+        job->n[a] = 1, job->h[a] = 1;
+}
+
+/* The options with a numeric range of their own. */
+static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
+{
+    switch (c) {
+    case 'L':
+        job->levels = (int)cli_parse_count("--levels", optarg, 1);
+        if (job->levels > 30)
+            cli_die(2, "--levels: expected 1 to 30, got \"%s\"", optarg);
+        g->given_L = 1;
+        break;
+    case 'N':
+        job->N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
+        g->given_N = 1;
+        break;
+    case 't':
+        job->tol = cli_parse_double("--tol", optarg);
+        if (!(job->tol > 0))
+            cli_die(2, "--tol: expected a positive number, got \"%s\"", optarg);
+        g->given_tol = 1;
+        break;
+    case 'R':
+        job->random_nb = (int)cli_parse_count("--random-neighborhoods", optarg, 1);
+        if (job->random_nb > 256)
+            cli_die(2, "--random-neighborhoods: expected 1 to 256, got \"%s\"", optarg);
+        break;
+    case 'u':
+        job->H = cli_parse_double("--H", optarg);
+        if (!(job->H > 0 && job->H < 1))
+            cli_die(2, "--H: expected a Hurst exponent between 0 and 1, got \"%s\"", optarg);
+        break;
+    case 'v':
+        job->vscale = cli_parse_double("--variance-scale", optarg);
+        if (!(job->vscale > 0))
+            cli_die(2, "--variance-scale: expected a positive factor, got \"%s\"", optarg);
+        g->given_vs = 1;
+        break;
+    case 'D':
+        job->density = cli_parse_double("--density", optarg);
+        if (!(job->density > 0))
+            cli_die(2, "--density: expected a positive number, got \"%s\"", optarg);
+        g->given_density = 1;
+        break;
+    case 'V':
+        job->octaves = (int)cli_parse_count("--octaves", optarg, 1);
+        if (job->octaves > 16)
+            cli_die(2, "--octaves: expected 1 to 16, got \"%s\"", optarg);
+        break;
+    }
+}
+
+/* getopt over argv into job and g; returns 1 when --help was printed. */
+static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
 {
     static const struct option opts[] = {
         {"acf", required_argument, 0, 'a'},        {"spectrum", required_argument, 0, 'S'},
@@ -208,240 +279,241 @@ int cli_cmd_synth(int argc, char **argv)
         {"from", required_argument, 0, 'F'},
         {"octaves", required_argument, 0, 'V'},
         {0}};
-    const char *acf = NULL, *spec = NULL, *size = NULL, *spacing = NULL, *out = NULL, *preview = NULL;
-    const char *tmp, *ptmp = NULL, *origin = NULL, *from = NULL;
-    static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
-    char sbuf[1200];
-    int c, json = 0, st, given_L = 0, given_N = 0, given_tol = 0, given_vs = 0, given_density = 0;
-    cli_synth_job job;
-    cli_synth_result res;
-    nl_field *f;
-    nl_meta meta;
-
-    memset(&job, 0, sizeof job);
-    memset(&res, 0, sizeof res);
-    job.seed = 1;
-    job.N = -1;
-    job.tol = 1e-4;
-    job.H = NAN;
-    job.vscale = 1;
-    job.density = 1;
-    for (int a = 0; a < 3; a++)
-        job.n[a] = 1, job.h[a] = 1;
+    int c;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
-        case 'a': acf = optarg; break;
-        case 'S': spec = optarg; break;
-        case 'n': size = optarg; break;
-        case 's': job.seed = cli_parse_u64("--seed", optarg); break;
-        case 'H': spacing = optarg; break;
-        case 'c': job.clamp = 1; break;
-        case 'p': preview = optarg; break;
-        case 'j': json = 1; break;
-        case 'o': out = optarg; break;
-        case 'L':
-            job.levels = (int)cli_parse_count("--levels", optarg, 1);
-            if (job.levels > 30)
-                cli_die(2, "--levels: expected 1 to 30, got \"%s\"", optarg);
-            given_L = 1;
+        case 'a': g->acf = optarg; break;
+        case 'S': g->spec = optarg; break;
+        case 'n': g->size = optarg; break;
+        case 's': job->seed = cli_parse_u64("--seed", optarg); break;
+        case 'H': g->spacing = optarg; break;
+        case 'c': job->clamp = 1; break;
+        case 'p': g->preview = optarg; break;
+        case 'j': g->json = 1; break;
+        case 'o': g->out = optarg; break;
+        case 'L': case 'N': case 't': case 'R': case 'u': case 'v': case 'D': case 'V':
+            parse_numeric(c, job, g);
             break;
-        case 'N':
-            job.N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
-            given_N = 1;
-            break;
-        case 't':
-            job.tol = cli_parse_double("--tol", optarg);
-            if (!(job.tol > 0))
-                cli_die(2, "--tol: expected a positive number, got \"%s\"", optarg);
-            given_tol = 1;
-            break;
-        case 'P': job.nonperiodic = 1; break;
-        case 'O': origin = optarg; break;
-        case 'I': job.seed_image = optarg; break;
-        case 'R':
-            job.random_nb = (int)cli_parse_count("--random-neighborhoods", optarg, 1);
-            if (job.random_nb > 256)
-                cli_die(2, "--random-neighborhoods: expected 1 to 256, got \"%s\"", optarg);
-            break;
-        case 'u':
-            job.H = cli_parse_double("--H", optarg);
-            if (!(job.H > 0 && job.H < 1))
-                cli_die(2, "--H: expected a Hurst exponent between 0 and 1, got \"%s\"", optarg);
-            break;
-        case 'v':
-            job.vscale = cli_parse_double("--variance-scale", optarg);
-            if (!(job.vscale > 0))
-                cli_die(2, "--variance-scale: expected a positive factor, got \"%s\"", optarg);
-            given_vs = 1;
-            break;
-        case 'D':
-            job.density = cli_parse_double("--density", optarg);
-            if (!(job.density > 0))
-                cli_die(2, "--density: expected a positive number, got \"%s\"", optarg);
-            given_density = 1;
-            break;
-        case 'K': job.kernel = optarg; break;
-        case 'E': job.exemplar = optarg; break;
-        case 'A': job.angle = optarg; break;
-        case 'r': job.radius = (int)cli_parse_count("--radius", optarg, 1); break;
-        case 'C': job.cell = (int)cli_parse_count("--cell", optarg, 1); break;
-        case 'W': job.wrap = 1; break;
-        case 'F': from = optarg; break;
-        case 'V':
-            job.octaves = (int)cli_parse_count("--octaves", optarg, 1);
-            if (job.octaves > 16)
-                cli_die(2, "--octaves: expected 1 to 16, got \"%s\"", optarg);
-            break;
-        case 'h': fputs(help, stdout); return 0;
+        case 'P': job->nonperiodic = 1; break;
+        case 'O': g->origin = optarg; break;
+        case 'I': job->seed_image = optarg; break;
+        case 'K': job->kernel = optarg; break;
+        case 'E': job->exemplar = optarg; break;
+        case 'A': job->angle = optarg; break;
+        case 'r': job->radius = (int)cli_parse_count("--radius", optarg, 1); break;
+        case 'C': job->cell = (int)cli_parse_count("--cell", optarg, 1); break;
+        case 'W': job->wrap = 1; break;
+        case 'F': g->from = optarg; break;
+        case 'h': fputs(help, stdout); return 1;
         default: cli_bad_option("synth", c, argv);
         }
     }
-    if (from) {
-        if (optind < argc || acf || spec || size || spacing || given_L || given_N || given_tol || given_vs ||
-            given_density || origin || job.nonperiodic || job.kernel || job.exemplar || job.angle || job.radius ||
-            job.cell || job.wrap || job.octaves || job.seed_image || job.random_nb || !isnan(job.H))
+    return 0;
+}
+
+/* The method and its options from --from FILE or from the command line. */
+static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
+{
+    static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
+    if (g->from) {
+        if (optind < argc || g->acf || g->spec || g->size || g->spacing || g->given_L || g->given_N ||
+            g->given_tol || g->given_vs || g->given_density || g->origin || job->nonperiodic || job->kernel ||
+            job->exemplar || job->angle || job->radius || job->cell || job->wrap || job->octaves ||
+            job->seed_image || job->random_nb || !isnan(job->H))
             cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
                     "and --json");
-        apply_from(from, &job, &acf, &spec, &size, &spacing, mbuf, sizebuf, spbuf, methbuf);
-        given_L = job.levels != 0;
-        given_density = strcmp(job.method, "faulting") == 0 || strcmp(job.method, "sparse") == 0;
-        given_N = strcmp(job.method, "subdiv") == 0;
-        given_tol = given_N;
-        given_vs = strcmp(job.method, "midpoint") == 0;
-        if (job.nonperiodic && (job.origin[0] || job.origin[1]))
-            origin = "recorded";
-    } else if (optind >= argc)
-        cli_die(2, "synth: expected a METHOD (fft, subdiv, midpoint, circulant, cholesky), see noiselab synth --help");
-    if (!from) {
-        job.method = argv[optind];
-        if (optind + 1 < argc)
-            cli_die(2, "synth: unexpected argument \"%s\"", argv[optind + 1]);
+        apply_from(g->from, job, &g->acf, &g->spec, &g->size, &g->spacing, mbuf, sizebuf, spbuf, methbuf);
+        g->given_L = job->levels != 0;
+        g->given_density = strcmp(job->method, "faulting") == 0 || strcmp(job->method, "sparse") == 0;
+        g->given_N = strcmp(job->method, "subdiv") == 0;
+        g->given_tol = g->given_N;
+        g->given_vs = strcmp(job->method, "midpoint") == 0;
+        if (job->nonperiodic && (job->origin[0] || job->origin[1]))
+            g->origin = "recorded";
+        return;
     }
+    if (optind >= argc)
+        cli_die(2, "synth: expected a METHOD (fft, subdiv, midpoint, circulant, cholesky), see noiselab synth --help");
+    job->method = argv[optind];
+    if (optind + 1 < argc)
+        cli_die(2, "synth: unexpected argument \"%s\"", argv[optind + 1]);
+}
+
+typedef void (*cli_synth_run_fn)(const cli_synth_job *, nl_field *, cli_synth_result *);
+
+static cli_synth_run_fn find_method(const char *method)
+{
     static const struct {
         const char *name;
-        void (*run)(const cli_synth_job *, nl_field *, cli_synth_result *);
+        cli_synth_run_fn run;
     } methods[] = {{"fft", cli_synth_fft_run},         {"subdiv", cli_synth_subdiv_run},
                    {"midpoint", cli_synth_midpoint_run}, {"circulant", cli_synth_circulant_run},
                    {"cholesky", cli_synth_cholesky_run}, {"faulting", cli_synth_faulting_run},
                    {"sparse", cli_synth_sparse_run}, {"lattice", cli_synth_lattice_run}};
-    void (*run)(const cli_synth_job *, nl_field *, cli_synth_result *) = NULL;
+    static const char *const planned[] = {"rank1"};
     for (size_t i = 0; i < sizeof methods / sizeof *methods; i++)
-        if (strcmp(job.method, methods[i].name) == 0)
-            run = methods[i].run;
-    if (!run) {
-        static const char *const planned[] = {"rank1"};
-        for (size_t i = 0; i < sizeof planned / sizeof *planned; i++)
-            if (strcmp(job.method, planned[i]) == 0)
-                cli_die(2, "synth: method \"%s\" is not available in this version (available: fft, subdiv, "
-                        "midpoint, circulant, cholesky, faulting, sparse, lattice)", job.method);
-        cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant, cholesky, faulting, "
-                "sparse or lattice)",
-                job.method);
-    }
-    only_for("--levels", given_L, job.method, "subdiv midpoint");
-    only_for("--neighborhood", given_N, job.method, "subdiv");
-    only_for("--tol", given_tol, job.method, "subdiv");
-    only_for("--nonperiodic", job.nonperiodic, job.method, "subdiv");
-    only_for("--origin", origin != NULL, job.method, "subdiv sparse");
-    only_for("--kernel", job.kernel != NULL, job.method, "sparse");
-    only_for("--exemplar", job.exemplar != NULL, job.method, "sparse");
-    only_for("--angle", job.angle != NULL, job.method, "sparse");
-    only_for("--radius", job.radius != 0, job.method, "sparse");
-    only_for("--cell", job.cell != 0, job.method, "sparse lattice");
-    only_for("--octaves", job.octaves != 0, job.method, "lattice");
-    only_for("--wrap", job.wrap, job.method, "sparse");
-    only_for("--seed-image", job.seed_image != NULL, job.method, "subdiv");
-    only_for("--random-neighborhoods", job.random_nb != 0, job.method, "subdiv");
-    only_for("--H", !isnan(job.H), job.method, "midpoint");
-    only_for("--variance-scale", given_vs, job.method, "midpoint");
-    only_for("--density", given_density, job.method, "faulting sparse");
-    if (origin && !job.nonperiodic && strcmp(job.method, "subdiv") == 0)
+        if (strcmp(method, methods[i].name) == 0)
+            return methods[i].run;
+    for (size_t i = 0; i < sizeof planned / sizeof *planned; i++)
+        if (strcmp(method, planned[i]) == 0)
+            cli_die(2, "synth: method \"%s\" is not available in this version (available: fft, subdiv, "
+                    "midpoint, circulant, cholesky, faulting, sparse, lattice)", method);
+    cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant, cholesky, faulting, "
+            "sparse or lattice)",
+            method);
+    return NULL;
+}
+
+/* Each method-specific option against the method it was given with. */
+static void check_method_options(const cli_synth_job *job, const cli_synth_args *g)
+{
+    only_for("--levels", g->given_L, job->method, "subdiv midpoint");
+    only_for("--neighborhood", g->given_N, job->method, "subdiv");
+    only_for("--tol", g->given_tol, job->method, "subdiv");
+    only_for("--nonperiodic", job->nonperiodic, job->method, "subdiv");
+    only_for("--origin", g->origin != NULL, job->method, "subdiv sparse");
+    only_for("--kernel", job->kernel != NULL, job->method, "sparse");
+    only_for("--exemplar", job->exemplar != NULL, job->method, "sparse");
+    only_for("--angle", job->angle != NULL, job->method, "sparse");
+    only_for("--radius", job->radius != 0, job->method, "sparse");
+    only_for("--cell", job->cell != 0, job->method, "sparse lattice");
+    only_for("--octaves", job->octaves != 0, job->method, "lattice");
+    only_for("--wrap", job->wrap, job->method, "sparse");
+    only_for("--seed-image", job->seed_image != NULL, job->method, "subdiv");
+    only_for("--random-neighborhoods", job->random_nb != 0, job->method, "subdiv");
+    only_for("--H", !isnan(job->H), job->method, "midpoint");
+    only_for("--variance-scale", g->given_vs, job->method, "midpoint");
+    only_for("--density", g->given_density, job->method, "faulting sparse");
+    if (g->origin && !job->nonperiodic && strcmp(job->method, "subdiv") == 0)
         cli_die(2, "synth subdiv: --origin needs --nonperiodic (a periodic field has no origin)");
-    if (origin && !from)
-        parse_origin(origin, job.origin);
-    if (strcmp(job.method, "midpoint") == 0 && !isnan(job.H) && (acf || spec))
+}
+
+/* Which methods need a model, and whether exactly one was given. */
+static void check_model_given(const cli_synth_job *job, const cli_synth_args *g)
+{
+    if (strcmp(job->method, "midpoint") == 0 && !isnan(job->H) && (g->acf || g->spec))
         cli_die(2, "synth midpoint: give either --H or a power-law model, not both");
-    int needs_model = !(strcmp(job.method, "midpoint") == 0 && !isnan(job.H)) && strcmp(job.method, "faulting") &&
-                      !(strcmp(job.method, "sparse") == 0 && (job.kernel || job.exemplar));
-    if (!needs_model && (acf || spec) && strcmp(job.method, "faulting") == 0)
+    int needs_model = !(strcmp(job->method, "midpoint") == 0 && !isnan(job->H)) && strcmp(job->method, "faulting") &&
+                      !(strcmp(job->method, "sparse") == 0 && (job->kernel || job->exemplar));
+    if (!needs_model && (g->acf || g->spec) && strcmp(job->method, "faulting") == 0)
         cli_die(2, "synth faulting: takes no model (its spectrum is f^-2); got --acf/--spectrum");
-    if (needs_model && !acf == !spec) {
-        if (strcmp(job.method, "sparse") == 0)
+    if (needs_model && !g->acf == !g->spec) {
+        if (strcmp(job->method, "sparse") == 0)
             cli_die(2, "synth sparse: expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or "
                     "--exemplar FILE");
         cli_die(2, "synth: expected exactly one of --acf SPEC or --spectrum SPEC");
     }
-    if (!size)
+}
+
+/* Size, spacing, output names and the model. */
+static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
+{
+    char sbuf[1200];
+    int st;
+    if (!g->size)
         cli_die(2, "synth: --size: expected N, NxM or NxMxK");
-    if (!out)
+    if (!g->out)
         cli_die(2, "synth: -o: expected an output file (.exr or .tsv)");
-    job.dim = cli_parse_size("--size", size, job.n, 2);
-    if (spacing)
-        cli_parse_spacing("--spacing", spacing, job.dim, job.h);
-    if (!cli_has_ext(out, ".exr") && !cli_has_ext(out, ".tsv"))
-        cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", out);
-    if (cli_has_ext(out, ".tsv") && job.dim != 1)
-        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", job.dim, out);
-    if (preview && job.dim == 1)
-        cli_die(2, "--preview: expected a 2D or 3D field, got --size \"%s\"", size);
-    if (preview && !cli_has_ext(preview, ".png"))
-        cli_die(2, "--preview: expected a file name ending in .png, got \"%s\"", preview);
-    if (acf || spec) {
-        if ((st = nl_model_parse(acf ? acf : spectrum_spec(spec, sbuf, sizeof sbuf), &job.m)))
+    job->dim = cli_parse_size("--size", g->size, job->n, 2);
+    if (g->spacing)
+        cli_parse_spacing("--spacing", g->spacing, job->dim, job->h);
+    if (!cli_has_ext(g->out, ".exr") && !cli_has_ext(g->out, ".tsv"))
+        cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", g->out);
+    if (cli_has_ext(g->out, ".tsv") && job->dim != 1)
+        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", job->dim, g->out);
+    if (g->preview && job->dim == 1)
+        cli_die(2, "--preview: expected a 2D or 3D field, got --size \"%s\"", g->size);
+    if (g->preview && !cli_has_ext(g->preview, ".png"))
+        cli_die(2, "--preview: expected a file name ending in .png, got \"%s\"", g->preview);
+    if (g->acf || g->spec) {
+        if ((st = nl_model_parse(g->acf ? g->acf : spectrum_spec(g->spec, sbuf, sizeof sbuf), &job->m)))
             cli_die_status(st);
-        if (acf && nl_model_is_spectral(job.m))
-            cli_die(2, "--acf: \"%s\" is a spectrum model; pass it with --spectrum", acf);
-        if (spec && !nl_model_is_spectral(job.m))
-            cli_die(2, "--spectrum: \"%s\" is an autocorrelation model; pass it with --acf", spec);
+        if (g->acf && nl_model_is_spectral(job->m))
+            cli_die(2, "--acf: \"%s\" is a spectrum model; pass it with --spectrum", g->acf);
+        if (g->spec && !nl_model_is_spectral(job->m))
+            cli_die(2, "--spectrum: \"%s\" is an autocorrelation model; pass it with --acf", g->spec);
     }
-    tmp = cli_out_begin(out);
-    if (preview)
-        ptmp = cli_out_begin(preview);
+}
+
+static void fill_meta(const cli_synth_job *job, const nl_field *f, const cli_synth_result *res, nl_meta *meta)
+{
+    memset(meta, 0, sizeof *meta);
+    snprintf(meta->model, sizeof meta->model, "%s", job->m ? nl_model_spec(job->m) : "");
+    snprintf(meta->method, sizeof meta->method, "%s", res->method);
+    snprintf(meta->flags, sizeof meta->flags, "%s", res->flags);
+    snprintf(meta->seed, sizeof meta->seed, "%" PRIu64, job->seed);
+    snprintf(meta->version, sizeof meta->version, "%s", NL_VERSION);
+    for (int a = 0, k = 0, l = 0; a < job->dim; a++) {
+        k += snprintf(meta->spacing + k, sizeof meta->spacing - (size_t)k, "%s%.17g", a ? "," : "", f->h[a]);
+        l += snprintf(meta->size + l, sizeof meta->size - (size_t)l, "%s%zu", a ? "x" : "", job->n[a]);
+    }
+}
+
+static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res)
+{
+    json_t *o = json_pack("{s:s,s:s,s:I,s:s,s:s}", "model", meta->model, "method", meta->method, "seed",
+                          (json_int_t)job->seed, "size", meta->size, "spacing", meta->spacing);
+    json_t *fl = json_array();
+    const char *p = res->flags;
+    while (*p) {
+        size_t l = strcspn(p, ",");
+        json_array_append_new(fl, json_stringn(p, l));
+        p += l + (p[l] == ',');
+    }
+    json_object_set_new(o, "flags", fl);
+    if (res->report)
+        json_object_update(o, res->report);
+    cli_json_print(o);
+}
+
+int cli_cmd_synth(int argc, char **argv)
+{
+    const char *tmp, *ptmp = NULL;
+    int st;
+    cli_synth_job job;
+    cli_synth_args g;
+    cli_synth_result res;
+    cli_synth_run_fn run;
+    nl_field *f;
+    nl_meta meta;
+
+    job_defaults(&job);
+    memset(&g, 0, sizeof g);
+    memset(&res, 0, sizeof res);
+    if (parse_options(argc, argv, &job, &g))
+        return 0;
+    method_source(argc, argv, &job, &g);
+    run = find_method(job.method);
+    check_method_options(&job, &g);
+    if (g.origin && !g.from)
+        parse_origin(g.origin, job.origin);
+    check_model_given(&job, &g);
+    check_outputs_and_model(&job, &g);
+    tmp = cli_out_begin(g.out);
+    if (g.preview)
+        ptmp = cli_out_begin(g.preview);
     f = nl_field_alloc(job.dim, job.n, job.h, &st);
     if (!f)
         cli_die_status(st);
     cli_phase("synth", job.method);
     run(&job, f, &res);
-
-    memset(&meta, 0, sizeof meta);
-    snprintf(meta.model, sizeof meta.model, "%s", job.m ? nl_model_spec(job.m) : "");
-    snprintf(meta.method, sizeof meta.method, "%s", res.method);
-    snprintf(meta.flags, sizeof meta.flags, "%s", res.flags);
-    snprintf(meta.seed, sizeof meta.seed, "%" PRIu64, job.seed);
-    snprintf(meta.version, sizeof meta.version, "%s", NL_VERSION);
-    for (int a = 0, k = 0, l = 0; a < job.dim; a++) {
-        k += snprintf(meta.spacing + k, sizeof meta.spacing - (size_t)k, "%s%.17g", a ? "," : "", f->h[a]);
-        l += snprintf(meta.size + l, sizeof meta.size - (size_t)l, "%s%zu", a ? "x" : "", job.n[a]);
-    }
+    fill_meta(&job, f, &res, &meta);
     cli_phase("synth", "writing");
-    if (cli_has_ext(out, ".exr")) {
+    if (cli_has_ext(g.out, ".exr")) {
         if ((st = nl_exr_write(tmp, f, &meta)))
             cli_die_status(st);
     } else {
         write_tsv(tmp, f);
     }
-    if (preview && (st = nl_png_write_field(ptmp, f, res.offset - 3 * res.sd, res.offset + 3 * res.sd)))
+    if (g.preview && (st = nl_png_write_field(ptmp, f, res.offset - 3 * res.sd, res.offset + 3 * res.sd)))
         cli_die_status(st);
     cli_progress_done();
-    cli_out_commit(out);
-    if (preview)
-        cli_out_commit(preview);
-    if (json) {
-        json_t *o = json_pack("{s:s,s:s,s:I,s:s,s:s}", "model", meta.model, "method", meta.method, "seed",
-                              (json_int_t)job.seed, "size", meta.size, "spacing", meta.spacing);
-        json_t *fl = json_array();
-        char *p = res.flags;
-        while (*p) {
-            size_t l = strcspn(p, ",");
-            json_array_append_new(fl, json_stringn(p, l));
-            p += l + (p[l] == ',');
-        }
-        json_object_set_new(o, "flags", fl);
-        if (res.report)
-            json_object_update(o, res.report);
-        cli_json_print(o);
-    }
+    cli_out_commit(g.out);
+    if (g.preview)
+        cli_out_commit(g.preview);
+    if (g.json)
+        print_json(&job, &meta, &res);
     json_decref(res.report);
     nl_field_free(f);
     nl_model_free(job.m);
