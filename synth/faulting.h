@@ -20,7 +20,13 @@
 
 #define NL_SYNTH_FAULT_STREAM 300u
 
-/* Fills f (1D or 2D); returns the number of faults in *count. */
+/* Fills f (1D or 2D, f->n and f->h as allocated; samples in units of the
+ * N(0, 1) fault heights) and writes the number of faults to *count.  Pure
+ * in (seed, density, f's size): bit-identical for equal arguments;
+ * thread-safe (uses no shared state).  Returns NL_OK, or
+ *   NL_EINVAL  f not 1D or 2D, density not positive;
+ *   NL_ETOOBIG more than 1e8 faults expected;
+ *   NL_ENOMEM  out of memory for the faults. */
 int nl_synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count);
 
 #endif

@@ -39,22 +39,39 @@ typedef struct {
     double clamp_error; /* bound on the covariance change from clamping, relative to R(0) */
 } nl_synth_fft_info;
 
-/* Plan synthesis of model m on a dim-D grid of n[] samples, spacing h[]
- * (NULL: unit).  Returns NL_OK, or NL_EINVAL/NL_ETOOBIG/NL_ENOTPD with a
- * message. */
+/* Plan synthesis of model m on a dim-D grid (1..3) of n[] samples, spacing
+ * h[] (NULL: unit; the model's lag units).  The plan owns the amplitudes
+ * sqrt(lambda_k) / N on the r2c half grid and two FFTW plans; free it with
+ * nl_synth_fft_plan_free.  Plans FFTW and evaluates the model: NOT
+ * thread-safe (call from one thread).  Returns NL_OK and *out, or
+ * (*out = NULL)
+ *   NL_EINVAL  a model that cannot be sampled in dim (nl_model_check_dim),
+ *              or a size the spectrum sampling refuses;
+ *   NL_ETOOBIG sizes overflow, exceed memory or FFTW's int sizes;
+ *   NL_ENOTPD  negative eigenvalues beyond NL_SYNTH_FFT_CLAMP_TOL without
+ *              NL_SYNTH_FFT_CLAMP, or no positive eigenvalue at all;
+ *   NL_ENOMEM, NL_EFAIL  out of memory, FFTW could not plan. */
 int nl_synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
                          nl_synth_fft_plan **out);
 
 /* The same from a spectrum already sampled on the grid (wrapped order,
- * two-sided density, core/wk.h): S's dim, n and h define the grid. */
+ * two-sided density, core/wk.h): S's dim, n and h define the grid; S is
+ * read, not kept.  NL_ENOTPD, NL_ENOMEM, NL_EFAIL as above; not
+ * thread-safe. */
 int nl_synth_fft_plan_spectrum(const nl_field *S, unsigned flags, nl_synth_fft_plan **out);
 
+/* Eigenvalue statistics of the plan (see nl_synth_fft_info). */
 void nl_synth_fft_plan_info(const nl_synth_fft_plan *p, nl_synth_fft_info *info);
 
 /* Synthesise the realization for `seed` into out (alloc'ed with the plan's
- * dim, n and h).  Thread-safe: one plan may serve several threads. */
+ * dim, n and h; row-major, x fastest; out->h is not changed).  Each call
+ * allocates its own half-grid complex buffer and only reads the plan
+ * (FFTW's new-array execute), so one plan may serve several threads.
+ * Bit-identical for equal seeds.  NL_OK, NL_EINVAL (out does not match the
+ * plan's grid), NL_ENOMEM. */
 int nl_synth_fft_execute(const nl_synth_fft_plan *p, uint64_t seed, nl_field *out);
 
+/* Frees the plan and its FFTW plans (NULL: no-op); not thread-safe (FFTW). */
 void nl_synth_fft_plan_free(nl_synth_fft_plan *p);
 
 #endif

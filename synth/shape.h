@@ -18,7 +18,11 @@
 #define NL_SHAPE_TABLE 65536
 #define NL_SHAPE_ZMAX 8.5
 
-/* Shape f in place. */
+/* Shape f in place (every sample replaced; f->n, f->h unchanged) onto the
+ * distribution `to` (core/dist.h), by the Gaussian table or, when
+ * `empirical`, by ranks.  Thread-safe for distinct fields.  Returns NL_OK,
+ * or NL_EINVAL (fewer than 2 samples; Gaussian mode: a constant field),
+ * NL_ENOMEM (f is then unchanged). */
 int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical);
 
 #endif

@@ -57,9 +57,21 @@ typedef struct {
     double mean;            /* added to every sample: the exemplar's mean (plan_exemplar), else 0 */
 } nl_synth_sparse_info;
 
-/* radius <= 0: the smallest radius keeping all but NL_SPARSE_ENERGY_TOL of the kernel's
+/* Plans own their kernel table (and angle expression); free with
+ * nl_synth_sparse_plan_free.  Making a plan evaluates the model or a
+ * libmatheval expression and plans FFTW (model kernels): NOT thread-safe.
+ * Radius and cell are in grid samples; h[] (NULL: unit) is the spacing in
+ * the model's lag units.
+ * radius <= 0: the smallest radius keeping all but NL_SPARSE_ENERGY_TOL of the kernel's
  * energy (model kernels) or the image's half-size.  cell <= 0: the
- * smallest power of two >= max(4, radius). */
+ * smallest power of two >= max(4, radius).
+ * Each returns NL_OK and *out, or (*out = NULL)
+ *   NL_EINVAL  dim not 1 or 2, density outside (0, 1e6], radius or cell
+ *              above 4096, a zero kernel, a malformed expression or one
+ *              with unknown variables or non-finite values, an image not 2D
+ *              or constant, a model unusable in dim or not positive definite;
+ *   NL_ETOOBIG the kernel FFT grid does not fit;
+ *   NL_ENOMEM  out of memory. */
 int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
                             nl_synth_sparse_plan **out);
 int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
@@ -74,16 +86,24 @@ int nl_synth_sparse_plan_image(const nl_field *img, int cell, double density, nl
 int nl_synth_sparse_plan_exemplar(const nl_field *img, int radius, int cell, double density,
                                   nl_synth_sparse_plan **out);
 
-/* Rotate the kernel by the angle expression theta(x, y). */
+/* Rotate the kernel by the angle expression theta(x, y) (radians, x and y
+ * in grid samples); the plan keeps the compiled expression.  NL_EINVAL (a 1D
+ * plan, a malformed expression or unknown variables), NL_ENOMEM. */
 int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr);
 
 void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_info *info);
 
-/* The window of samples origin[a] .. origin[a] + n[a] - 1 (NULL: 0).  With
- * wrap, the field is periodic with the grid's size (each a multiple of the
- * cell size) and origin must be NULL. */
+/* The window of samples origin[a] .. origin[a] + n[a] - 1 (NULL: 0) into
+ * out (the plan's dim, row-major, x fastest).  With wrap, the field is
+ * periodic with the grid's size (each a multiple of the cell size) and
+ * origin must be NULL.  Bit-identical for equal arguments; a plan without
+ * an angle is only read (thread-safe); with an angle the libmatheval
+ * expression is evaluated, so one such plan serves one thread at a time.
+ * NL_OK, or NL_EINVAL (dims differ, wrap with an origin, a tile not a
+ * multiple of the cell or smaller than the kernel), NL_ENOMEM. */
 int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out);
 
+/* Frees the plan (NULL: no-op). */
 void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p);
 
 #endif

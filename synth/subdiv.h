@@ -105,10 +105,18 @@ typedef struct {
 /* Compute the coefficients of `levels` levels.  N > 0 fixes the
  * half-width; N = 0 chooses it per level ("auto"): N grows from 1 until the
  * displacement variance (7) of the mid (1D) or face (2D) class improves by
- * less than tol * R(0), up to nmax.  Returns NL_OK, or NL_EINVAL/NL_EFAIL. */
+ * less than tol * R(0), up to nmax.  spacing0 in the model's lag units.
+ * *out is owned by the caller: free with nl_subdiv_coeffs_free.  Evaluates
+ * the model (not thread-safe for expression models).  Returns NL_OK, or
+ * (*out = NULL) NL_EINVAL (dim not 1 or 2, levels outside 1..40, spacing0
+ * or tol not positive, N outside 0..64 (1D) / 0..8 (2D), a spectral model
+ * without R, R(0) <= 0), NL_EFAIL (an eigenvalue or SVD solve did not
+ * converge), NL_ENOMEM.  Non-positive-definite levels are not errors here:
+ * they are flagged (NL_SUBDIV_NOT_PD) and refused by synthesis. */
 int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
                         nl_subdiv_coeffs **out);
 
+/* Frees the coefficients (NULL: no-op). */
 void nl_subdiv_coeffs_free(nl_subdiv_coeffs *c);
 
 /* Replace every 2D class's block by `k` random neighbourhoods of the same
@@ -118,13 +126,15 @@ void nl_subdiv_coeffs_free(nl_subdiv_coeffs *c);
  * set (an unbiased random walk of the frontier); eq. (12) is solved for
  * each.  The walk draws from nl_rng_uniform(plan_seed, level * 4 + class,
  * step).  During synthesis each new point uses alternative
- * nl_rng_uniform(seed, NL_SUBDIV_STREAM + 64 + level, position) * k. */
+ * nl_rng_uniform(seed, NL_SUBDIV_STREAM + 64 + level, position) * k.
+ * The alternatives are owned by c.  NL_OK, or NL_EINVAL (c not 2D, k
+ * outside 1..256), NL_EFAIL, NL_ENOMEM (c is then still valid and freeable). */
 int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, uint64_t plan_seed);
 
 /* Eq. (12) for any observation set: n points pts[i*dim..] and the target,
  * in lag units.  Fills cls (a must hold n doubles); `reset` gives the
  * nearest-neighbour coefficients to use when the pseudo-inverse is uniform
- * (NULL: no reset). */
+ * (NULL: no reset).  NL_OK, NL_EFAIL (solver), NL_ENOMEM. */
 int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
                  const double *reset, nl_subdiv_class *cls);
 
@@ -147,7 +157,9 @@ int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, con
  * (1D: sigma2 s^(2H) (2^(-2H) - 1/4)), times vscale^k at level k
  * (vscale = 1: the fractal schedule; otherwise the altered variances of
  * Haruyama and Barsky).  r0 is set to sigma2 s_0^(2H) / 2, the variance of
- * the independent coarse values. */
+ * the independent coarse values.  Caller frees *out with
+ * nl_subdiv_coeffs_free.  NL_EINVAL (dim, H outside (0, 1), levels outside
+ * 1..40, spacing0, sigma2 or vscale not positive), NL_ENOMEM.  Pure. */
 int nl_subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
                            nl_subdiv_coeffs **out);
 
@@ -257,12 +269,19 @@ void nl_subdiv_plan_free(nl_subdiv_plan *p);
  * the FFT stream of `seed`), or, when m is NULL, as independent values of
  * variance c->r0; then it is refined with wrapped neighbourhoods.  f->h is
  * set to s_0 / 2^levels.  NL_ENOTPD when the coarse grid or any level is not
- * positive definite (unless allow_not_pd: negative variances are then 0). */
+ * positive definite (unless allow_not_pd: negative variances are then 0).
+ * Equivalent to a plan borrowing c, executed once (nl_subdiv_plan_execute
+ * gives the same field bit for bit): it re-plans the coarse FFT on every
+ * call, so prefer a plan for several seeds.  NL_EINVAL (dims or sizes),
+ * NL_ENOTPD, NL_ETOOBIG, NL_ENOMEM, NL_EFAIL.  Not thread-safe (plans FFTW). */
 int nl_subdiv_synth_periodic(const nl_subdiv_coeffs *c, const nl_model *m, uint64_t seed, int allow_not_pd,
                           nl_field *f);
 
 /* Refine a given coarse level (kept exactly: external consistency, Lewis
- * 1987 Fig. 5) into f, whose size must be the coarse size times 2^levels. */
+ * 1987 Fig. 5) into f, whose size must be the coarse size times 2^levels;
+ * coarse is read, not kept (f->h set to s_0 / 2^levels).  NL_EINVAL (dims,
+ * sizes, a level smaller than its neighbourhood), NL_ENOTPD, NL_ENOMEM.
+ * Thread-safe: c and coarse are only read. */
 int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
                            nl_field *f);
 
@@ -270,7 +289,9 @@ int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse,
  * indices origin[a] .. origin[a] + n[a] - 1.  Level 0 is white noise of
  * variance R(0) at spacing s_0 (exact when R(s_0) is negligible; the
  * residual correlation R(s_0)/R(0) is the caller's to report).  Two windows
- * agree bit for bit where they overlap. */
+ * agree bit for bit where they overlap.  f->h is set to s_0 / 2^levels.
+ * NL_EINVAL (f's dim), NL_ENOTPD (a level not positive definite: windows
+ * never clamp), NL_ENOMEM.  Thread-safe: c is only read. */
 int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f);
 
 #endif
