@@ -101,6 +101,7 @@ int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int 
     fftw_complex *g;
     fftw_plan fp;
     int dims[2], st, R = radius;
+    *out = NULL;
     if (dim != 1 && dim != 2)
         return NL_ERROR(NL_EINVAL, "sparse: expected dimension 1 or 2, got %d", dim);
     /* periodic grid for h = IDFT(sqrt(lambda)) / N: large enough that the
@@ -178,6 +179,7 @@ int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, d
     void *ev;
     char *copy = strdup(expr);
     int st;
+    *out = NULL;
     if (!copy)
         return NL_ERROR(NL_ENOMEM, "out of memory");
     ev = evaluator_create(copy);
@@ -225,6 +227,7 @@ int nl_synth_sparse_plan_image(const nl_field *img, int cell, double density, nl
     size_t w = img->n[0], hgt = img->dim == 2 ? img->n[1] : 1;
     int R = (int)((w > hgt ? w : hgt) / 2), st;
     double mean = 0, var = 0;
+    *out = NULL;
     if (img->dim != 2)
         return NL_ERROR(NL_EINVAL, "exemplar: expected a 2D image, got %dD", img->dim);
     if ((st = new_plan(2, R, cell, density, out)))
