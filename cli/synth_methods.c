@@ -276,22 +276,18 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
 void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     nl_synth_lattice_plan p;
-    double c0 = job->cell ? job->cell : (double)f->n[0] / 4;
+    double c0 = job->cell ? job->cell : nl_synth_lattice_default_cell(f->n);
     int O = job->octaves, st;
     json_t *oct = json_array();
     if (job->dim > 2)
         cli_die(2, "synth lattice: expected a 1D or 2D --size, got %dD", job->dim);
     if (!O)
-        for (O = 1; c0 / pow(2, O) >= 2 && O < NL_LATTICE_MAX_OCTAVES; O++)
-            ;
+        O = nl_synth_lattice_default_octaves(c0);
     if ((st = nl_synth_lattice_plan_alloc(job->m, job->dim, c0, O, &p)) || (st = nl_synth_lattice_execute(&p, job->seed, f)))
         cli_die_status(st);
-    double var = 0;
-    for (int o = 0; o < p.octaves; o++) {
+    for (int o = 0; o < p.octaves; o++)
         json_array_append_new(oct, json_pack("{s:f,s:f,s:f,s:f}", "cell", p.cell[o], "weight", p.weight[o], "peak",
                                              p.peak[o], "leakage", p.leakage[o]));
-        var += p.weight[o] * p.weight[o];
-    }
     snprintf(r->method, sizeof r->method, "lattice:cell=%.17g,octaves=%d", c0, O);
     for (size_t i = 0; i < f->count; i++)
         r->sd += f->data[i] * f->data[i] / (double)f->count;

@@ -51,4 +51,10 @@ double nl_synth_lattice_basis_spectrum(int dim, double c, double f);
  * divides the size, otherwise a window at the origin). */
 int nl_synth_lattice_execute(const nl_synth_lattice_plan *p, uint64_t seed, nl_field *out);
 
+/* Defaults (synth/lattice_octaves.c; pure): the largest cell, n[0] / 4
+ * samples, and the octaves from cell0 down to a cell of 2 samples or more
+ * (the O with cell0 / 2^O < 2, at least 1, at most NL_LATTICE_MAX_OCTAVES). */
+double nl_synth_lattice_default_cell(const size_t *n);
+int nl_synth_lattice_default_octaves(double cell0);
+
 #endif
