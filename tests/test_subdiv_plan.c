@@ -208,3 +208,52 @@ Test(subdiv_plan, model_param)
     cr_assert_eq(v, -1, "untouched on failure");
     nl_model_free(pw), nl_model_free(m);
 }
+
+/* Every NL_E* code of the coefficient and one-shot functions (NL_EFAIL and
+ * NL_ENOMEM need a failing solver or allocator: not triggered). */
+Test(subdiv_plan, one_shot_error_paths)
+{
+    nl_model *m = model("markov:scale=4"), *flat = model("expr:0*t"), *bad = model("expr:cos(10*r)*exp(-r)");
+    nl_subdiv_coeffs *c = (nl_subdiv_coeffs *)1, *c1, *c2;
+    nl_field *f2 = field(2, 64, 64), *f1 = field(1, 64, 1), *coarse = field(2, 16, 16), *small = field(2, 8, 8),
+             *odd = field(2, 18, 16);
+    long origin[2] = {0, 0};
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 3, 2, 4.0, 2, 1e-4, 6, &c), NL_EINVAL, "dim");
+    cr_assert_null(c);
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 2, 0, 4.0, 2, 1e-4, 6, &c), NL_EINVAL, "levels 0");
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 2, 41, 4.0, 2, 1e-4, 6, &c), NL_EINVAL, "levels 41");
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 2, 2, 0.0, 2, 1e-4, 6, &c), NL_EINVAL, "spacing0");
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 2, 2, 4.0, 9, 1e-4, 6, &c), NL_EINVAL, "N = 9 in 2D");
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 2, 2, 4.0, 0, 0.0, 6, &c), NL_EINVAL, "tol");
+    cr_assert_eq(nl_subdiv_coeffs_alloc(flat, 1, 2, 4.0, 2, 1e-4, 16, &c), NL_EINVAL, "R(0) = 0: %s", nl_errmsg());
+
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 1, 2, 4.0, 2, 1e-4, 16, &c1), 0);
+    cr_assert_eq(nl_subdiv_coeffs_randomize(c1, m, 4, 1), NL_EINVAL, "1D");
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 2, 2, 16.0, 2, 1e-4, 6, &c2), 0);
+    cr_assert_eq(nl_subdiv_coeffs_randomize(c2, m, 0, 1), NL_EINVAL, "k = 0");
+    cr_assert_eq(nl_subdiv_coeffs_randomize(c2, m, 257, 1), NL_EINVAL, "k = 257");
+
+    cr_assert_eq(nl_subdiv_synth_periodic(c2, m, 1, 0, f1), NL_EINVAL, "1D field, 2D coefficients");
+    cr_assert_eq(nl_subdiv_synth_periodic(c2, m, 1, 0, odd), NL_EINVAL, "18 is not a multiple of 4");
+    cr_assert_eq(nl_subdiv_refine_periodic(c2, small, 1, 0, f2), NL_EINVAL, "8 x 8 refined twice is 32 x 32");
+    cr_assert_eq(nl_subdiv_refine_periodic(c2, coarse, 1, 0, f1), NL_EINVAL, "dims");
+    cr_assert_eq(nl_subdiv_synth_window(c2, 1, origin, f1), NL_EINVAL, "dims");
+    nl_subdiv_coeffs_free(c2);
+    /* a 4 x 4 coarse grid cannot hold a 6 x 6 neighbourhood */
+    nl_field *c4 = field(2, 4, 4), *f16 = field(2, 16, 16);
+    cr_assert_eq(nl_subdiv_coeffs_alloc(m, 2, 2, 16.0, 3, 1e-4, 6, &c2), 0);
+    cr_assert_eq(nl_subdiv_refine_periodic(c2, c4, 1, 0, f16), NL_EINVAL, "%s", nl_errmsg());
+    cr_assert(strstr(nl_errmsg(), "neighbourhood"), "%s", nl_errmsg());
+    nl_subdiv_coeffs_free(c2);
+    cr_assert_eq(nl_subdiv_coeffs_alloc(bad, 2, 6, 8.0, 2, 1e-4, 6, &c2), 0);
+    cr_assert_eq(nl_subdiv_synth_window(c2, 1, origin, f2), NL_ENOTPD);
+    cr_assert_eq(nl_subdiv_refine_periodic(c2, coarse, 1, 0, f2), NL_EINVAL, "16 x 64 = 1024, not 64");
+    nl_subdiv_coeffs_free(c2);
+    cr_assert_eq(nl_subdiv_coeffs_alloc(bad, 2, 2, 2.0, 2, 1e-4, 6, &c2), 0);
+    cr_assert_eq(nl_subdiv_refine_periodic(c2, coarse, 1, 0, f2), NL_ENOTPD, "%s", nl_errmsg());
+    nl_subdiv_coeffs_free(c2);
+    nl_subdiv_coeffs_free(c1);
+    nl_model_free(m), nl_model_free(flat), nl_model_free(bad);
+    nl_field_free(f1), nl_field_free(f2), nl_field_free(coarse), nl_field_free(small), nl_field_free(odd);
+    nl_field_free(c4), nl_field_free(f16);
+}
