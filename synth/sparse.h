@@ -70,8 +70,9 @@ typedef struct {
  *              above 4096, a zero kernel, a malformed expression or one
  *              with unknown variables or non-finite values, an image not 2D
  *              or constant, a model unusable in dim or not positive definite;
- *   NL_ETOOBIG the kernel FFT grid does not fit;
- *   NL_ENOMEM  out of memory. */
+ *   NL_ENOMEM  out of memory (NL_ETOOBIG when a model kernel's FFT grid,
+ *              up to 4 radius + 4 samples per axis, exceeds this machine's
+ *              memory). */
 int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
                             nl_synth_sparse_plan **out);
 int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,

@@ -165,6 +165,10 @@ Test(subdiv_plan, error_paths)
     cr_assert_eq(nl_subdiv_plan_alloc(bad, 2, nb, 0.25, &o, &p), NL_ENOTPD, "windows never clamp");
 
     nl_subdiv_options_default(&o);
+    o.levels = 1;
+    size_t huge[2] = {(size_t)1 << 33, (size_t)1 << 33};
+    cr_assert_eq(nl_subdiv_plan_alloc(m, 2, huge, 1.0, &o, &p), NL_ETOOBIG, "a 2^32 x 2^32 coarse FFT");
+    o.levels = 0;
     cr_assert_eq(nl_subdiv_plan_alloc(m, 2, n, 1.0, &o, &p), 0);
     cr_assert_eq(nl_subdiv_plan_execute(p, 1, f1), NL_EINVAL, "1D field, 2D plan");
     cr_assert_eq(nl_subdiv_plan_execute(p, 1, g), NL_EINVAL, "size differs from the plan");
