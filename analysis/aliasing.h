@@ -28,8 +28,8 @@ int nl_aliasing_measure(const nl_field *f, double *A);
 /* Predicted A in [0, 1] for model m on the grid of f (its n and h; the
  * data are not read), negative spectrum values counted as 0.  Errors: those
  * of nl_wk_sample_spectrum (core/wk.h): NL_EINVAL for a model that is not
- * finite on the grid or cannot be evaluated in f's dimension, NL_ENOMEM,
- * NL_EFAIL; not thread-safe (it plans FFTW). */
+ * finite on the grid or cannot be evaluated in f's dimension, NL_ENOMEM;
+ * not thread-safe (it plans FFTW). */
 int nl_aliasing_predict(const nl_model *m, const nl_field *f, double *A);
 
 #endif

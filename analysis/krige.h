@@ -50,8 +50,8 @@ typedef struct {
  * Errors: NL_EINVAL for n = 0, dim outside 1..3, a model that cannot be
  * evaluated in dim dimensions or has no R(lag) (spectrum:), or a singular
  * system with strict, or a coordinate or value that is not finite;
- * NL_EFAIL when GSL's SVD of a singular system fails to converge (a guard:
- * no finite input is known to cause it); NL_ENOMEM. */
+ * NL_ENOMEM.  (A singular system whose SVD failed to converge would give
+ * NL_EFAIL; GSL's SVD of a finite symmetric matrix does not fail.) */
 int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
                      double mean, int strict, nl_krige_plan **out);
 

@@ -50,9 +50,9 @@ typedef struct {
  * Errors: NL_EINVAL for a scene without pixels, data points or models, a
  * grid or noise grid below 2 samples, an empty box, a threshold outside
  * [0, 1), a period <= 0, a fov outside (0, 180) degrees, or a zero sun
- * direction; NL_ENOTPD (or NL_EINVAL, NL_EFAIL) from the kriging plan of the
- * shape covariance (analysis/krige.h) and from the noise plan
- * (synth/fft.h); NL_ENOMEM.
+ * direction, and those of the kriging plan of the shape covariance
+ * (analysis/krige.h); NL_ENOTPD for a noise model that is not positive
+ * definite on its grid (synth/fft.h); NL_ENOMEM.
  * Thread safety: reentrant for models that are thread-safe (not expr:);
  * runs its own OpenMP loops. */
 int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double));
