@@ -1,10 +1,9 @@
 /* noiselab lattice: rank-1 lattices, their wave vectors, and random fields
  * synthesised on them with one FFT (Keller 2001). */
 #include "cli.h"
-#include "rank1_spec.h"
 #include "../core/nl_error.h"
 #include "../core/io_obj.h"
-#include "../synth/rank1.h"
+#include "../synth/rank1_model.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -218,25 +217,20 @@ static void write_outputs(const opts_t *a, const nl_rank1_lattice *L, const doub
 /* The field of --acf/--spectrum on the lattice, and its outputs. */
 static void field(opts_t *a, const nl_rank1_lattice *L)
 {
-    size_t N = a->N;
     nl_model *m;
-    double *coef = malloc(2 * N * sizeof *coef), *f = malloc(N * sizeof *f), *grad = malloc(N * a->s * sizeof *grad);
-    double imag;
+    double *f = malloc(a->N * sizeof *f), *grad = malloc(a->N * a->s * sizeof *grad), imag;
     char sbuf[1100];
-    nl_rank1_model_ctx ctx;
     int st;
     if (a->spectral && strncmp(a->spec, "power", 5) && strncmp(a->spec, "spectrum:", 9))
         snprintf(sbuf, sizeof sbuf, "spectrum:%s", a->spec), a->spec = sbuf;
-    if ((st = nl_model_parse(a->spec, &m)) || (st = cli_rank1_model_check(m, a->s)))
+    if ((st = nl_model_parse(a->spec, &m)) || (st = nl_rank1_model_check(m, a->s)))
         cli_die_status(st);
-    if (!coef || !f || !grad)
+    if (!f || !grad)
         cli_die(1, "out of memory");
-    ctx.m = m, ctx.s = a->s, ctx.extent = a->extent;
-    if ((st = nl_rank1_coefficients(L, cli_rank1_model_spectrum, &ctx, a->seed, coef)) ||
-        (st = nl_rank1_synthesize(L, coef, a->extent, f, grad, &imag)))
+    if ((st = nl_rank1_model_synthesize(L, m, a->extent, a->seed, f, grad, &imag)))
         cli_die_status(st);
     write_outputs(a, L, f, grad, imag);
-    free(coef), free(f), free(grad);
+    free(f), free(grad);
     nl_model_free(m);
 }
 

@@ -15,7 +15,7 @@
 #include "../render/terrain.h"
 #include "../synth/lattice.h"
 #include "../synth/ocean.h"
-#include "../synth/rank1.h"
+#include "../synth/rank1_model.h"
 
 #include <criterion/criterion.h>
 #include <gsl/gsl_errno.h>
@@ -129,6 +129,34 @@ Test(trap_rank1, enomem_synthesize)
     EXPECT_ENOMEM(nl_rank1_synthesize(&L, c, 1, f, NULL, NULL));
     free(c), free(f);
     nl_rank1_free(&L);
+}
+
+Test(trap_rank1, model)
+{
+    nl_rank1_lattice L2, L4;
+    long g[4] = {1, 5, 25, 125};
+    nl_model *sp = model("power:d=2.6,fmin=0.5,fmax=40"), *aniso = model("gauss:scale=0.2,ratio=2"),
+             *iso = model("markov:scale=0.1");
+    double f[89];
+    cr_assert_eq(nl_rank1_fibonacci(11, &L2), NL_OK);
+    cr_assert_eq(nl_rank1_generator(89, 4, g, &L4), NL_OK);
+    cr_assert_eq(nl_rank1_model_check(sp, 4), NL_EINVAL, "spectra reach 3 dimensions");
+    cr_assert_eq(nl_rank1_model_check(aniso, 2), NL_EINVAL, "an anisotropic R");
+    cr_assert_eq(nl_rank1_model_synthesize(&L4, sp, 1, 1, f, NULL, NULL), NL_EINVAL);
+    cr_assert_eq(nl_rank1_model_synthesize(&L2, iso, 0, 1, f, NULL, NULL), NL_EINVAL, "extent 0");
+    cr_assert_eq(nl_rank1_model_synthesize(&L2, iso, 1, 1, f, NULL, NULL), NL_OK, "%s", nl_errmsg());
+    nl_rank1_free(&L2), nl_rank1_free(&L4);
+    nl_model_free(sp), nl_model_free(aniso), nl_model_free(iso);
+}
+
+Test(trap_rank1, model_enomem)
+{
+    nl_rank1_lattice L;
+    nl_model *iso = model("markov:scale=0.1");
+    cr_assert_eq(nl_rank1_fibonacci(25, &L), NL_OK);
+    double *f = malloc(L.N * sizeof *f);
+    EXPECT_ENOMEM(nl_rank1_model_synthesize(&L, iso, 1, 1, f, NULL, NULL));
+    free(f), nl_rank1_free(&L), nl_model_free(iso);
 }
 
 static const nl_ocean_params sea = {12.3, 0.4, 100, 1e-4};
