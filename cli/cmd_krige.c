@@ -1,9 +1,10 @@
 /* noiselab krige: ordinary or simple kriging of scattered data onto a grid. */
 #include "cli.h"
 #include "../analysis/krige.h"
+#include "../core/io_points.h"
 #include "../core/model.h"
+#include "../core/nl_error.h"
 
-#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -20,54 +21,6 @@ static const char help[] =
     "(duplicate points, a smooth model with close points) is solved by the pseudo-\n"
     "inverse and flagged, or refused with --strict.  --variance writes the kriging\n"
     "variance (O(n^2) per cell).\n";
-
-static double *read_points(const char *path, int *dim, size_t *n)
-{
-    FILE *fp = fopen(path, "r");
-    char line[4096];
-    size_t cap = 256, lineno = 0, cols = 0;
-    double *v = NULL;
-    *n = 0;
-    if (!fp)
-        cli_die(2, "--data: cannot open \"%s\": %s", path, strerror(errno));
-    while (fgets(line, sizeof line, fp)) {
-        lineno++;
-        if (line[0] == '#' || line[0] == '\n')
-            continue;
-        if (!cols) {  /* header */
-            char *p = line;
-            cols = 1;
-            while ((p = strchr(p, '\t')))
-                cols++, p++;
-            if (cols < 2 || cols > 4)
-                cli_die(2, "--data: %s:%zu: expected a header of 2 to 4 columns (x [y [z]] value), got %zu", path,
-                        lineno, cols);
-            v = malloc(cap * cols * sizeof *v);
-            continue;
-        }
-        if (*n == cap) {
-            cap *= 2;
-            v = realloc(v, cap * cols * sizeof *v);
-        }
-        if (!v)
-            cli_die(1, "out of memory");
-        char *p = line, *end;
-        for (size_t c = 0; c < cols; c++) {
-            double x = strtod(p, &end);
-            if (end == p || !isfinite(x) || (c + 1 < cols && *end != '\t') ||
-                (c + 1 == cols && *end && *end != '\n' && *end != '\r'))
-                cli_die(2, "--data: %s:%zu: expected %zu tab-separated finite numbers", path, lineno, cols);
-            v[*n * cols + c] = x;
-            p = end + 1;
-        }
-        (*n)++;
-    }
-    fclose(fp);
-    if (!*n)
-        cli_die(2, "--data: %s: expected at least one data row", path);
-    *dim = (int)cols - 1;
-    return v;
-}
 
 /* The command's options. */
 typedef struct {
@@ -181,20 +134,15 @@ int cli_cmd_krige(int argc, char **argv)
 {
     opts_t a = {.mean = NAN, .lo = {0, 0, 0}, .hi = {1, 1, 1}, .g = {1, 1, 1}};
     const char *tmp, *vtmp = NULL;
-    int st, dim;
+    int st;
     size_t n;
     parse(argc, argv, &a);
-    double *raw = read_points(a.data, &dim, &n);
-    if (dim != a.gdim)
-        cli_die(2, "--data: %s has %d coordinates per point, the grid %d", a.data, dim, a.gdim);
-    double *pts = malloc(n * (size_t)dim * sizeof *pts), *val = malloc(n * sizeof *val);
-    if (!pts || !val)
-        cli_die(1, "out of memory");
-    for (size_t i = 0; i < n; i++) {
-        for (int d = 0; d < dim; d++)
-            pts[i * dim + d] = raw[i * (dim + 1) + d];
-        val[i] = raw[i * (dim + 1) + dim];
-    }
+    nl_points *pt;
+    if ((st = nl_points_read(a.data, &pt)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--data: %s", nl_errmsg());
+    if (pt->dim != a.gdim)
+        cli_die(2, "--data: %s has %d coordinates per point, the grid %d", a.data, pt->dim, a.gdim);
+    n = pt->n;
     nl_model *m;
     nl_krige_plan *p;
     nl_krige_info info;
@@ -205,7 +153,7 @@ int cli_cmd_krige(int argc, char **argv)
         vtmp = cli_out_begin(a.vout);
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    if ((st = nl_krige_plan_alloc(m, dim, n, pts, val, !isnan(a.mean), isnan(a.mean) ? 0 : a.mean, a.strict, &p)))
+    if ((st = nl_krige_plan_alloc(m, pt->dim, n, pt->pts, pt->val, !isnan(a.mean), isnan(a.mean) ? 0 : a.mean, a.strict, &p)))
         cli_die_status(st);
     nl_krige_plan_info(p, &info);
     double h[3];
@@ -219,6 +167,6 @@ int cli_cmd_krige(int argc, char **argv)
     write_outputs(&a, f, vf, &info, n, tmp, vtmp);
     report(&a, &info, n, secs);
     nl_krige_plan_free(p), nl_model_free(m), nl_field_free(f), nl_field_free(vf);
-    free(raw), free(pts), free(val);
+    nl_points_free(pt);
     return 0;
 }
