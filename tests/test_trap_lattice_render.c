@@ -8,6 +8,7 @@
 #include "../analysis/krige.h"
 #include "../analysis/nonlin.h"
 #include "../core/io_obj.h"
+#include "../core/io_points.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
 #include "../render/cloud.h"
@@ -22,6 +23,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static nl_model *model(const char *spec)
 {
@@ -436,4 +438,56 @@ Test(trap_render, cloud)
     cr_assert_eq(nl_render_cloud(&s, rgb, lum, NULL), NL_ENOTPD, "a noise model that is not positive definite");
     EXPECT_ENOMEM(nl_render_cloud(&s, rgb, lum, NULL));
     nl_model_free(s.shape), nl_model_free(s.noise);
+}
+
+static const char *write_tmp(const char *name, const char *text)
+{
+    static char path[256];
+    snprintf(path, sizeof path, "/tmp/noiselab-trap-%ld-%s", (long)getpid(), name);
+    FILE *fp = fopen(path, "w");
+    cr_assert_not_null(fp);
+    fputs(text, fp);
+    fclose(fp);
+    return path;
+}
+
+Test(trap_points, einput_and_enomem)
+{
+    static const char *bad[] = {"", "# nothing\n", "x\n1\n", "a\tb\tc\td\te\n1\t2\t3\t4\t5\n", "x\tvalue\n",
+                                "x\tvalue\n1\t2\n3\tnan\n", "x\ty\tvalue\n1\t2\n", "x\tvalue\n1\t2\t3\n"};
+    nl_points *p = (nl_points *)1;
+    cr_assert_eq(nl_points_read("/nonexistent-dir/p.tsv", &p), NL_EINPUT);
+    cr_assert_null(p);
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        const char *path = write_tmp("bad.tsv", bad[i]);
+        cr_assert_eq(nl_points_read(path, &p), NL_EINPUT, "case %zu: %s", i, nl_errmsg());
+        unlink(path);
+    }
+    const char *path = write_tmp("ok.tsv", "x\ty\tvalue\n0.1\t0.2\t1.5\n");
+    EXPECT_ENOMEM(nl_points_read(path, &p));
+    unlink(path);
+}
+
+/* Rows read back exactly, comments and blank lines skipped, past the
+ * first growth of the row buffer (256 rows). */
+Test(trap_points, reads_back)
+{
+    char *text = malloc(300 * 64 + 64), *q = text;
+    q += sprintf(q, "# made by hand\nx\ty\tz\tvalue\n\n");
+    for (int i = 0; i < 300; i++)
+        q += sprintf(q, "%d.25\t-%d.5\t2.385\t%d\n%s", i, i, 3 * i, i == 7 ? "# skipped\n" : "");
+    const char *path = write_tmp("pts.tsv", text);
+    nl_points *p;
+    cr_assert_eq(nl_points_read(path, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(p->dim, 3);
+    cr_assert_eq(p->n, 300);
+    for (size_t i = 0; i < 300; i++) {
+        cr_assert_eq(p->pts[3 * i], (double)i + 0.25);
+        cr_assert_eq(p->pts[3 * i + 1], -((double)i + 0.5));
+        cr_assert_eq(p->pts[3 * i + 2], 2.385);
+        cr_assert_eq(p->val[i], 3.0 * (double)i);
+    }
+    nl_points_free(p);
+    unlink(path);
+    free(text);
 }
