@@ -20,10 +20,16 @@
 
 #define NL_ALIAS_MAX 0.1
 
-/* Measured A of a 1D or 2D field with even sizes (periodic). */
+/* Measured A (dimensionless, >= 0; 0 for a constant field) of a 1D or 2D
+ * field with even sizes (periodic).  NL_EINVAL: 3D, or an odd size;
+ * NL_ENOMEM.  Plans FFTW: not thread-safe (core/fftw_plan.h). */
 int nl_aliasing_measure(const nl_field *f, double *A);
 
-/* Predicted A for model m on the grid of f (its n and h). */
+/* Predicted A in [0, 1] for model m on the grid of f (its n and h; the
+ * data are not read), negative spectrum values counted as 0.  Errors: those
+ * of nl_wk_sample_spectrum (core/wk.h): NL_EINVAL for a model that is not
+ * finite on the grid or cannot be evaluated in f's dimension, NL_ENOMEM;
+ * not thread-safe (it plans FFTW). */
 int nl_aliasing_predict(const nl_model *m, const nl_field *f, double *A);
 
 #endif

@@ -77,6 +77,39 @@ static int pseudo_inverse(nl_krige_plan *p, const gsl_matrix *C)
     return st;
 }
 
+/* C by Cholesky, or by the pseudo-inverse when it is singular (refused
+ * when strict). */
+static int factorize(nl_krige_plan *p, const gsl_matrix *C, int strict)
+{
+    size_t n = p->n;
+    int st = NL_OK;
+    if (!(p->L = gsl_matrix_alloc(n, n)))
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu data points", n);
+    gsl_matrix_memcpy(p->L, C);
+    if (gsl_linalg_cholesky_decomp1(p->L) == 0) {
+        gsl_vector *work = gsl_vector_alloc(3 * n);
+        if (!work)
+            return NL_ERROR(NL_ENOMEM, "out of memory for %zu data points", n);
+        gsl_linalg_cholesky_rcond(p->L, &p->info.rcond, work);
+        gsl_vector_free(work);
+    } else {
+        p->info.rcond = 0;
+    }
+    if (p->info.rcond < NL_KRIGE_RCOND_MIN) {
+        gsl_matrix_free(p->L);
+        p->L = NULL;
+        if (strict)
+            st = NL_ERROR(NL_EINVAL, "kriging: the %zu x %zu covariance matrix is singular (reciprocal condition "
+                          "%.2g): duplicate data points, or points closer than %s resolves",
+                          n, n, p->info.rcond, nl_model_spec(p->m));
+        else {
+            st = pseudo_inverse(p, C);
+            p->info.pseudo_inverse = 1;
+        }
+    }
+    return st;
+}
+
 int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
                      double mean, int strict, nl_krige_plan **out)
 {
@@ -94,6 +127,13 @@ int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts,
         return st;
     if (nl_model_is_spectral(m) && nl_model_get_kind(m) == NL_MODEL_SPECTRUM)
         return NL_ERROR(NL_EINVAL, "%s: kriging needs R(lag)", nl_model_spec(m));
+    for (size_t i = 0; i < n; i++) {
+        int ok = isfinite(val[i]);
+        for (int a = 0; a < dim; a++)
+            ok = ok && isfinite(pts[i * dim + a]);
+        if (!ok)
+            return NL_ERROR(NL_EINVAL, "kriging: expected finite coordinates and values, point %zu is not", i);
+    }
     p = calloc(1, sizeof *p);
     if (!p || !(p->pts = malloc(n * (size_t)dim * sizeof *p->pts))) {
         free(p);
@@ -116,27 +156,7 @@ int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts,
         gsl_vector_set(d, i, val[i]);
         gsl_vector_set(one, i, 1.0);
     }
-    p->L = gsl_matrix_alloc(n, n);
-    gsl_matrix_memcpy(p->L, C);
-    if (gsl_linalg_cholesky_decomp1(p->L) == 0) {
-        gsl_vector *work = gsl_vector_alloc(3 * n);
-        gsl_linalg_cholesky_rcond(p->L, &p->info.rcond, work);
-        gsl_vector_free(work);
-    } else {
-        p->info.rcond = 0;
-    }
-    if (p->info.rcond < NL_KRIGE_RCOND_MIN) {
-        gsl_matrix_free(p->L);
-        p->L = NULL;
-        if (strict)
-            st = NL_ERROR(NL_EINVAL, "kriging: the %zu x %zu covariance matrix is singular (reciprocal condition "
-                          "%.2g): duplicate data points, or points closer than %s resolves",
-                          n, n, p->info.rcond, nl_model_spec(m));
-        else {
-            st = pseudo_inverse(p, C);
-            p->info.pseudo_inverse = 1;
-        }
-    }
+    st = factorize(p, C, strict);
     if (!st) {
         double b;
         solve(p, one, p->u);
@@ -301,4 +321,29 @@ int nl_krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, d
     }
     free(z);
     return NL_OK;
+}
+
+int nl_krige_eval_grid(const nl_krige_plan *p, const double *lo, const nl_field *est, nl_field *var)
+{
+    const nl_field *f = est;
+    int dim = p->dim, parallel = nl_model_get_kind(p->m) != NL_MODEL_EXPR, status = NL_OK;
+    if (f->dim != dim || (var && (var->dim != dim || var->count != f->count)))
+        return NL_ERROR(NL_EINVAL, "kriging grid: expected %dD grids of one size, got %dD", dim, f->dim);
+    size_t nblk = (f->count + NL_KRIGE_BLOCK - 1) / NL_KRIGE_BLOCK, g[3] = {f->n[0], f->n[1], f->n[2]};
+#pragma omp parallel for schedule(dynamic, 1) if (parallel && f->count > 4096)
+    for (size_t blk = 0; blk < nblk; blk++) {
+        size_t q0 = blk * NL_KRIGE_BLOCK, nq = f->count - q0 < NL_KRIGE_BLOCK ? f->count - q0 : NL_KRIGE_BLOCK;
+        double x[NL_KRIGE_BLOCK * 3];
+        for (size_t q = q0; q < q0 + nq; q++) {
+            size_t idx[3] = {q % g[0], (q / g[0]) % g[1], q / (g[0] * g[1])};
+            for (int a = 0; a < dim; a++)
+                x[(q - q0) * (size_t)dim + a] = lo[a] + ((double)idx[a] + 0.5) * f->h[a];
+        }
+        int st = nl_krige_eval_block(p, nq, x, &f->data[q0], var ? &var->data[q0] : NULL);
+        if (st) {
+#pragma omp critical
+            status = st;
+        }
+    }
+    return status;
 }

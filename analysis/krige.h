@@ -21,6 +21,7 @@
 #ifndef NL_KRIGE_H
 #define NL_KRIGE_H
 
+#include "../core/field.h"
 #include "../core/model.h"
 
 #include <stddef.h>
@@ -36,24 +37,46 @@ typedef struct {
     double mean;        /* b (ordinary) or m (simple) */
 } nl_krige_info;
 
-/* pts: n points of dim coordinates; simple: use `mean` as the known mean.
- * strict: refuse a singular system (NL_EINVAL naming it) instead of the
- * pseudo-inverse. */
+/* Ownership and threads: nl_krige_plan_alloc copies pts and val; the
+ * plan borrows m, which must outlive it; nl_krige_plan_free releases the
+ * plan (NULL is a no-op).  A plan is read-only after it is made: the
+ * evaluations may run concurrently on one plan for models that are
+ * thread-safe (every kind but expr:). */
+
+/* pts: n points of dim coordinates (row-major, n * dim), val: n values;
+ * simple: use `mean` as the known mean.  strict: refuse a singular system
+ * (NL_EINVAL naming it) instead of the pseudo-inverse.  *out is NULL on
+ * failure.
+ * Errors: NL_EINVAL for n = 0, dim outside 1..3, a model that cannot be
+ * evaluated in dim dimensions or has no R(lag) (spectrum:), or a singular
+ * system with strict, or a coordinate or value that is not finite;
+ * NL_ENOMEM.  (A singular system whose SVD failed to converge would give
+ * NL_EFAIL; GSL's SVD of a finite symmetric matrix does not fail.) */
 int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
                      double mean, int strict, nl_krige_plan **out);
 
-/* Estimate at x; *var (may be NULL) receives the kriging variance.  The
- * weights lambda (n doubles, may be NULL) are filled when asked (O(n^2)).
- * Thread-safe for models that are (not expr:). */
+/* Estimate at x (dim coordinates); *var (may be NULL) receives the kriging
+ * variance (in the units of R, >= 0).  The weights lambda (n doubles, may
+ * be NULL) are filled when asked (O(n^2)).  Errors: NL_ENOMEM. */
 int nl_krige_eval(const nl_krige_plan *p, const double *x, double *est, double *var, double *lambda);
 
 /* nl_krige_eval for `count` points x (count * dim coordinates) at once: the
  * same estimates and variances (to rounding), with the variances of
  * NL_KRIGE_BLOCK points computed together (several times faster for large n).
- * var may be NULL.  Thread-safe like nl_krige_eval; blocks may run in parallel. */
+ * var may be NULL.  Errors: NL_ENOMEM.  Blocks may run in parallel. */
 #define NL_KRIGE_BLOCK 64
 int nl_krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var);
 
+/* Evaluate on the cell centres of a grid: sample i of axis a sits at
+ * lo[a] + (i + 0.5) est->h[a] (est's n and h set the grid; its dim must be
+ * the plan's); est->data receives the estimates, var->data (var may be
+ * NULL, else a field of the same size) the variances.  Blocks of
+ * NL_KRIGE_BLOCK samples run in parallel (OpenMP) above 4096 samples
+ * unless the model is expr:.  Errors: NL_EINVAL for grids of another
+ * dimension or size; NL_ENOMEM. */
+int nl_krige_eval_grid(const nl_krige_plan *p, const double *lo, const nl_field *est, nl_field *var);
+
+/* Copy the plan's figures into *info. */
 void nl_krige_plan_info(const nl_krige_plan *p, nl_krige_info *info);
 void nl_krige_plan_free(nl_krige_plan *p);
 

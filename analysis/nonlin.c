@@ -1,7 +1,10 @@
 /* Hermite coefficients by Gauss-Hermite quadrature (GSL). */
 #include "nonlin.h"
+#include "acf.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
+#include "../synth/fft.h"
+#include "../synth/shape.h"
 
 #include <stdlib.h>
 
@@ -122,4 +125,46 @@ int nl_nonlin_design(const nl_hermite *h, const double *target, size_t n, double
     if (unreachable)
         *unreachable = bad;
     return st;
+}
+
+void nl_nonlin_output_acf(const nl_hermite *h, const double *acf, size_t n, double r0, double *out)
+{
+    for (size_t i = 0; i < n; i++)
+        out[i] = nl_hermite_cov(h, fmax(-1, fmin(1, acf[i] / r0)));
+}
+
+int nl_nonlin_verify(const nl_field *S, const nl_dist *d, size_t realizations, size_t nlags, double *meas)
+{
+    nl_synth_fft_plan *p;
+    nl_field *x, *full;
+    int st;
+    if (S->dim != 1 || !realizations || nlags > S->n[0])
+        return NL_ERROR(NL_EINVAL, "verify: expected a 1D spectrum, at least one realization and at most %zu lags, "
+                        "got %dD, %zu, %zu", S->n[0], S->dim, realizations, nlags);
+    if (!(x = nl_field_alloc(1, S->n, S->h, &st)))
+        return st;
+    if ((st = nl_synth_fft_plan_spectrum(S, NL_SYNTH_FFT_CLAMP, &p))) {
+        nl_field_free(x);
+        return st;
+    }
+    for (size_t i = 0; i < nlags; i++)
+        meas[i] = 0;
+    for (size_t s = 1; s <= realizations && !st; s++) {
+        nl_synth_fft_execute(p, s, x);
+        if ((st = nl_synth_shape(x, d, 0)) || (st = nl_acf_full(x, NAN, NL_ACF_UNBIASED, &full)))
+            break;
+        for (size_t i = 0; i < nlags; i++)
+            meas[i] += full->data[i] / (double)realizations;
+        nl_field_free(full);
+    }
+    nl_synth_fft_plan_free(p), nl_field_free(x);
+    return st;
+}
+
+double nl_nonlin_max_deviation(const double *meas, const double *target, size_t n, double scale, double var)
+{
+    double e = 0;
+    for (size_t i = 0; i < n; i++)
+        e = fmax(e, fabs(meas[i] - target[i] * scale) / var);
+    return e;
 }

@@ -17,6 +17,9 @@
 #define NL_NONLIN_H
 
 #include "../core/dist.h"
+#include "../core/field.h"
+
+#include <stddef.h>
 
 #define NL_HERMITE_MAX 64
 
@@ -27,6 +30,12 @@ typedef struct {
     double truncation;            /* Var(y) - sum_{1<=n<K} c_n^2 n! */
 } nl_hermite;
 
+/* Every function here is reentrant (the caller owns every array; inputs
+ * are only read) except nl_nonlin_verify, which plans FFTW (not
+ * thread-safe, core/fftw_plan.h).  Nothing returned needs freeing. */
+
+/* The first `terms` coefficients c_n of g = F_to^-1 o Phi into *h.
+ * NL_EINVAL: terms outside 2..NL_HERMITE_MAX; NL_ENOMEM. */
 int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h);
 
 /* Output covariance at input correlation rho (|rho| <= 1). */
@@ -50,5 +59,25 @@ double nl_hermite_invert(const nl_hermite *h, double cov);
  * whose target lies outside the output covariances g can produce. */
 int nl_nonlin_design(const nl_hermite *h, const double *target, size_t n, double spacing, double *rho, double *S,
                      double *err, size_t *unreachable);
+/* Errors of nl_nonlin_design: NL_EINVAL for target[0] <= 0 or n = 0 or a
+ * spacing that is not positive; NL_ENOMEM. */
+
+/* The predicted output covariance (Beckmann's series) at every lag of an
+ * input covariance: out[i] = nl_hermite_cov(h, clamp(acf[i] / r0, -1, 1)),
+ * i < n (r0 the input variance; 1 for a correlation). */
+void nl_nonlin_output_acf(const nl_hermite *h, const double *acf, size_t n, double r0, double *out);
+
+/* Check a design by simulation: `realizations` Gaussian fields from the 1D
+ * spectrum S (nl_synth_fft_plan_spectrum, negative values clamped, seeds
+ * 1..realizations), each shaped by d (nl_synth_shape) and its unbiased ACF
+ * about the sample mean measured (nl_acf_full); meas[i] (nlags doubles,
+ * i < nlags <= S->n[0]) receives the mean over the realizations at lag i.
+ * Errors: NL_EINVAL for S not 1D, no realization or too many lags; those
+ * of the synthesis, shaping and ACF (NL_ENOMEM, NL_EINVAL). */
+int nl_nonlin_verify(const nl_field *S, const nl_dist *d, size_t realizations, size_t nlags, double *meas);
+
+/* max_i |meas[i] - target[i] scale| / var over i < n (0 for n = 0): the
+ * measured error relative to the output variance. */
+double nl_nonlin_max_deviation(const double *meas, const double *target, size_t n, double scale, double var);
 
 #endif

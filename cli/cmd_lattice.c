@@ -1,9 +1,9 @@
 /* noiselab lattice: rank-1 lattices, their wave vectors, and random fields
  * synthesised on them with one FFT (Keller 2001). */
 #include "cli.h"
-#include "rank1_spec.h"
 #include "../core/nl_error.h"
-#include "../synth/rank1.h"
+#include "../core/io_obj.h"
+#include "../synth/rank1_model.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -25,19 +25,16 @@ static const char help[] =
     "  of side E (default 1): TSV columns x1..xS value grad1..gradS\n"
     "  --mesh OBJ      (2D) the periodic Delaunay triangulation of the height field\n";
 
-static int fib_index(size_t N)
-{
-    unsigned long long a = 1, b = 1;
-    for (int i = 2; i < 80 && b <= N; i++) {
-        if (b == N && i >= 3)
-            return i;
-        unsigned long long c = a + b;
-        a = b, b = c;
-    }
-    return 0;
-}
+/* The command's options. */
+typedef struct {
+    const char *gen, *spec, *out, *mesh;  /* as given, or NULL */
+    size_t N;                             /* --points */
+    int s, wv, json, spectral;            /* --dim, --wave-vectors, --json, --spectrum given */
+    double extent;                        /* --extent */
+    uint64_t seed;                        /* --seed */
+} opts_t;
 
-int cli_cmd_lattice(int argc, char **argv)
+static void parse(int argc, char **argv, opts_t *a)
 {
     static const struct option opts[] = {
         {"points", required_argument, 0, 'n'}, {"dim", required_argument, 0, 'd'},
@@ -47,55 +44,59 @@ int cli_cmd_lattice(int argc, char **argv)
         {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
         {"mesh", required_argument, 0, 'M'},    {"help", no_argument, 0, 'h'},
         {0}};
-    const char *gen = NULL, *spec = NULL, *out = NULL, *mesh = NULL, *tmp = NULL, *mtmp = NULL;
-    size_t N = 0;
-    int c, s = 0, wv = 0, json = 0, st, spectral = 0;
-    double extent = 1;
-    uint64_t seed = 1;
-    nl_rank1_lattice L;
+    int c;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
-        case 'n': N = cli_parse_count("--points", optarg, 2); break;
-        case 'd': s = cli_parse_dim(optarg, 4); break;
-        case 'g': gen = optarg; break;
-        case 'a': spec = optarg; spectral = 0; break;
-        case 'S': spec = optarg; spectral = 1; break;
+        case 'n': a->N = cli_parse_count("--points", optarg, 2); break;
+        case 'd': a->s = cli_parse_dim(optarg, 4); break;
+        case 'g': a->gen = optarg; break;
+        case 'a': a->spec = optarg; a->spectral = 0; break;
+        case 'S': a->spec = optarg; a->spectral = 1; break;
         case 'E':
-            extent = cli_parse_double("--extent", optarg);
-            if (!(extent > 0))
+            a->extent = cli_parse_double("--extent", optarg);
+            if (!(a->extent > 0))
                 cli_die(2, "--extent: expected a positive length, got \"%s\"", optarg);
             break;
-        case 's': seed = cli_parse_u64("--seed", optarg); break;
-        case 'w': wv = 1; break;
-        case 'j': json = 1; break;
-        case 'o': out = optarg; break;
-        case 'M': mesh = optarg; break;
-        case 'h': fputs(help, stdout); return 0;
+        case 's': a->seed = cli_parse_u64("--seed", optarg); break;
+        case 'w': a->wv = 1; break;
+        case 'j': a->json = 1; break;
+        case 'o': a->out = optarg; break;
+        case 'M': a->mesh = optarg; break;
+        case 'h': fputs(help, stdout); exit(0);
         default: cli_bad_option("lattice", c, argv);
         }
     }
     if (optind < argc)
         cli_die(2, "lattice: unexpected argument \"%s\"", argv[optind]);
-    if (!N)
+    if (!a->N)
         cli_die(2, "lattice: --points: expected the number of lattice points");
-    if (!s)
+    if (!a->s)
         cli_die(2, "lattice: --dim: expected 1 to 4");
-    if (N > (1u << 24))
-        cli_die(2, "--points: expected at most 16777216, got %zu", N);
-    if (mesh && s != 2)
-        cli_die(2, "--mesh: expected --dim 2, got %d", s);
-    if (!gen)
-        gen = s == 2 && fib_index(N) ? "fibonacci" : "korobov";
+    if (a->N > (1u << 24))
+        cli_die(2, "--points: expected at most 16777216, got %zu", a->N);
+    if (a->mesh && a->s != 2)
+        cli_die(2, "--mesh: expected --dim 2, got %d", a->s);
+}
+
+/* The lattice of --generator (default: fibonacci in 2D when N is a
+ * Fibonacci number, korobov otherwise). */
+static void make_lattice(opts_t *a, nl_rank1_lattice *L)
+{
+    size_t N = a->N;
+    int s = a->s, st;
+    if (!a->gen)
+        a->gen = s == 2 && nl_rank1_fibonacci_index(N) ? "fibonacci" : "korobov";
+    const char *gen = a->gen;
     if (strcmp(gen, "fibonacci") == 0) {
-        if (s != 2 || !fib_index(N))
+        if (s != 2 || !nl_rank1_fibonacci_index(N))
             cli_die(2, "--generator fibonacci: expected --dim 2 and a Fibonacci number of points, got %zu in %dD", N, s);
-        st = nl_rank1_fibonacci(fib_index(N), &L);
+        st = nl_rank1_fibonacci(nl_rank1_fibonacci_index(N), L);
     } else if (strncmp(gen, "korobov", 7) == 0) {
-        long a = 0;
-        if (gen[7] == ':' && (a = atol(gen + 8)) <= 0)
+        long k = 0;
+        if (gen[7] == ':' && (k = atol(gen + 8)) <= 0)
             cli_die(2, "--generator: expected korobov:A with A > 0, got \"%s\"", gen);
-        st = nl_rank1_korobov(N, s, a, &L);
+        st = nl_rank1_korobov(N, s, k, L);
     } else {
         long g[NL_RANK1_MAX_DIM];
         char *p = (char *)gen, *end;
@@ -110,165 +111,142 @@ int cli_cmd_lattice(int argc, char **argv)
         }
         if (k != s || *end || end == p)
             cli_die(2, "--generator: expected fibonacci, korobov[:A] or %d integers G1,...,G%d, got \"%s\"", s, s, gen);
-        st = nl_rank1_generator(N, s, g, &L);
+        st = nl_rank1_generator(N, s, g, L);
     }
     if (st)
         cli_die_status(st);
-    if (wv) {
-        if (json) {
-            json_t *o = json_pack("{s:I,s:[],s:[]}", "N", (json_int_t)N, "generator", "wave_vectors");
-            json_t *ga = json_object_get(o, "generator"), *wa = json_object_get(o, "wave_vectors");
-            for (int a = 0; a < s; a++)
-                json_array_append_new(ga, json_integer(L.g[a]));
-            for (size_t m = 0; m < N; m++) {
-                json_t *k = json_array();
-                for (int a = 0; a < s; a++)
-                    json_array_append_new(k, json_integer(L.k[m * s + a]));
-                json_array_append_new(wa, k);
-            }
-            cli_json_print(o);
-        } else {
-            printf("# N %zu, generator", N);
-            for (int a = 0; a < s; a++)
-                printf(" %ld", L.g[a]);
-            printf(", minimum distance %.6g\nm", L.min_dist);
-            for (int a = 0; a < s; a++)
-                printf("\tk%d", a + 1);
-            printf("\tnorm\n");
-            for (size_t m = 0; m < N; m++) {
-                double n2 = 0;
-                printf("%zu", m);
-                for (int a = 0; a < s; a++)
-                    printf("\t%ld", L.k[m * s + a]), n2 += (double)L.k[m * s + a] * L.k[m * s + a];
-                printf("\t%.6g\n", sqrt(n2));
-            }
+}
+
+static void print_wave_vectors(const opts_t *a, const nl_rank1_lattice *L)
+{
+    size_t N = a->N;
+    int s = a->s;
+    if (a->json) {
+        json_t *o = json_pack("{s:I,s:[],s:[]}", "N", (json_int_t)N, "generator", "wave_vectors");
+        json_t *ga = json_object_get(o, "generator"), *wa = json_object_get(o, "wave_vectors");
+        for (int d = 0; d < s; d++)
+            json_array_append_new(ga, json_integer(L->g[d]));
+        for (size_t m = 0; m < N; m++) {
+            json_t *k = json_array();
+            for (int d = 0; d < s; d++)
+                json_array_append_new(k, json_integer(L->k[m * s + d]));
+            json_array_append_new(wa, k);
         }
+        cli_json_print(o);
+        return;
     }
-    if (spec) {
-        nl_model *m;
-        double *coef = malloc(2 * N * sizeof *coef), *f = malloc(N * sizeof *f), *grad = malloc(N * s * sizeof *grad);
-        double imag;
-        char sbuf[1100];
-        nl_rank1_model_ctx ctx;
-        if (spectral && strncmp(spec, "power", 5) && strncmp(spec, "spectrum:", 9))
-            snprintf(sbuf, sizeof sbuf, "spectrum:%s", spec), spec = sbuf;
-        if ((st = nl_model_parse(spec, &m)) || (st = cli_rank1_model_check(m, s)))
-            cli_die_status(st);
-        if (!coef || !f || !grad)
-            cli_die(1, "out of memory");
-        if (out)
-            tmp = cli_out_begin(out);
-        if (mesh)
-            mtmp = cli_out_begin(mesh);
-        ctx.m = m, ctx.s = s, ctx.extent = extent;
-        if ((st = nl_rank1_coefficients(&L, cli_rank1_model_spectrum, &ctx, seed, coef)) ||
-            (st = nl_rank1_synthesize(&L, coef, extent, f, grad, &imag)))
-            cli_die_status(st);
-        if (out || (!mesh && !wv)) {
-            FILE *fp = out ? fopen(tmp, "w") : stdout;
-            if (!fp)
-                cli_die(2, "-o: cannot write \"%s\"", out);
-            fprintf(fp, "# noiselab lattice: N %zu, dim %d, %s, seed %llu, extent %g, max |imag| %.3g\n", N, s, spec,
-                    (unsigned long long)seed, extent, imag);
-            for (int a = 0; a < s; a++)
-                fprintf(fp, "x%d\t", a + 1);
-            fprintf(fp, "value");
-            for (int a = 0; a < s; a++)
-                fprintf(fp, "\tgrad%d", a + 1);
-            fprintf(fp, "\n");
-            for (size_t n = 0; n < N; n++) {
-                double x[NL_RANK1_MAX_DIM];
-                nl_rank1_point(&L, n, x);
-                for (int a = 0; a < s; a++)
-                    fprintf(fp, "%.10g\t", x[a] * extent);
-                fprintf(fp, "%.10g", f[n]);
-                for (int a = 0; a < s; a++)
-                    fprintf(fp, "\t%.10g", grad[n * s + a]);
-                fprintf(fp, "\n");
-            }
-            if (out && fclose(fp))
-                cli_die(1, "-o: write failed");
-        }
-        if (mesh) {
-            size_t n1, n2;
-            double v1[2], v2[2];
-            FILE *fp = fopen(mtmp, "w");
-            if ((st = nl_rank1_delaunay(&L, &n1, &n2, v1, v2)))
-                cli_die_status(st);
-            if (!fp)
-                cli_die(2, "--mesh: cannot write \"%s\"", mesh);
-            fprintf(fp, "# noiselab lattice: periodic Delaunay triangulation, N %zu, %s\n", N, spec);
-            /* each triangle with its own unwrapped vertices: 6N vertices, 2N faces */
-            for (size_t n = 0; n < N; n++) {
-                double x[2];
-                size_t a = n, b = (n + n1) % N, c2 = (n + n2) % N, d = (n + n1 + n2) % N;
-                nl_rank1_point(&L, n, x);
-                double P[4][2] = {{x[0], x[1]}, {x[0] + v1[0], x[1] + v1[1]}, {x[0] + v2[0], x[1] + v2[1]},
-                                  {x[0] + v1[0] + v2[0], x[1] + v1[1] + v2[1]}};
-                size_t id[4] = {a, b, c2, d};
-                int tri[2][3] = {{0, 1, 2}, {1, 3, 2}};
-                for (int t = 0; t < 2; t++)
-                    for (int v = 0; v < 3; v++)
-                        fprintf(fp, "v %.8g %.8g %.8g\n", P[tri[t][v]][0] * extent, P[tri[t][v]][1] * extent,
-                                f[id[tri[t][v]]]);
-            }
-            for (size_t t = 0; t < 2 * N; t++)
-                fprintf(fp, "f %zu %zu %zu\n", 3 * t + 1, 3 * t + 2, 3 * t + 3);
-            if (fclose(fp))
-                cli_die(1, "--mesh: write failed");
-        }
-        if (out)
-            cli_out_commit(out);
-        if (mesh)
-            cli_out_commit(mesh);
-        free(coef), free(f), free(grad);
-        nl_model_free(m);
+    printf("# N %zu, generator", N);
+    for (int d = 0; d < s; d++)
+        printf(" %ld", L->g[d]);
+    printf(", minimum distance %.6g\nm", L->min_dist);
+    for (int d = 0; d < s; d++)
+        printf("\tk%d", d + 1);
+    printf("\tnorm\n");
+    for (size_t m = 0; m < N; m++) {
+        printf("%zu", m);
+        for (int d = 0; d < s; d++)
+            printf("\t%ld", L->k[m * s + d]);
+        printf("\t%.6g\n", nl_rank1_wave_norm(L, m));
     }
-    if (!spec && (out || mesh)) {
+}
+
+/* The points (scaled by extent) and, with f, the field and its gradient. */
+static void write_points(FILE *fp, const opts_t *a, const nl_rank1_lattice *L, const double *f, const double *grad,
+                         double imag)
+{
+    int s = a->s;
+    if (f) {
+        fprintf(fp, "# noiselab lattice: N %zu, dim %d, %s, seed %llu, extent %g, max |imag| %.3g\n", a->N, s,
+                a->spec, (unsigned long long)a->seed, a->extent, imag);
+        for (int d = 0; d < s; d++)
+            fprintf(fp, "x%d\t", d + 1);
+        fprintf(fp, "value");
+        for (int d = 0; d < s; d++)
+            fprintf(fp, "\tgrad%d", d + 1);
+        fprintf(fp, "\n");
+    } else
+        for (int d = 0; d < s; d++)
+            fprintf(fp, "x%d%c", d + 1, d + 1 < s ? '\t' : '\n');
+    for (size_t n = 0; n < a->N; n++) {
+        double x[NL_RANK1_MAX_DIM];
+        nl_rank1_point(L, n, x);
+        if (!f) {
+            for (int d = 0; d < s; d++)
+                fprintf(fp, "%.10g%c", x[d] * a->extent, d + 1 < s ? '\t' : '\n');
+            continue;
+        }
+        for (int d = 0; d < s; d++)
+            fprintf(fp, "%.10g\t", x[d] * a->extent);
+        fprintf(fp, "%.10g", f[n]);
+        for (int d = 0; d < s; d++)
+            fprintf(fp, "\t%.10g", grad[n * s + d]);
+        fprintf(fp, "\n");
+    }
+}
+
+/* -o (stdout when there is no other output) and --mesh. */
+static void write_outputs(const opts_t *a, const nl_rank1_lattice *L, const double *f, const double *grad,
+                          double imag)
+{
+    char comment[1200];
+    nl_rank1_mesh me;
+    int st;
+    if (a->out) {
+        FILE *fp = fopen(cli_out_begin(a->out), "w");
+        if (!fp)
+            cli_die(2, "-o: cannot write \"%s\"", a->out);
+        write_points(fp, a, L, f, grad, imag);
+        if (fclose(fp))
+            cli_die(1, "-o: write failed");
+    } else if (f && !a->mesh && !a->wv)
+        write_points(stdout, a, L, f, grad, imag);
+    if (a->mesh) {
+        snprintf(comment, sizeof comment, "noiselab lattice: periodic Delaunay triangulation, N %zu, %s", a->N,
+                 a->spec ? a->spec : "");
+        if ((st = nl_rank1_mesh_init(L, a->extent, f, &me)) ||
+            (st = nl_obj_write_triangles(cli_out_begin(a->mesh), f ? comment : NULL, 2 * a->N,
+                                         nl_rank1_mesh_triangle, &me)))
+            cli_die_status(st);
+    }
+    if (a->out)
+        cli_out_commit(a->out);
+    if (a->mesh)
+        cli_out_commit(a->mesh);
+}
+
+/* The field of --acf/--spectrum on the lattice, and its outputs. */
+static void field(opts_t *a, const nl_rank1_lattice *L)
+{
+    nl_model *m;
+    double *f = malloc(a->N * sizeof *f), *grad = malloc(a->N * a->s * sizeof *grad), imag;
+    char sbuf[1100];
+    int st;
+    if (a->spectral && strncmp(a->spec, "power", 5) && strncmp(a->spec, "spectrum:", 9))
+        snprintf(sbuf, sizeof sbuf, "spectrum:%s", a->spec), a->spec = sbuf;
+    if ((st = nl_model_parse(a->spec, &m)) || (st = nl_rank1_model_check(m, a->s)))
+        cli_die_status(st);
+    if (!f || !grad)
+        cli_die(1, "out of memory");
+    if ((st = nl_rank1_model_synthesize(L, m, a->extent, a->seed, f, grad, &imag)))
+        cli_die_status(st);
+    write_outputs(a, L, f, grad, imag);
+    free(f), free(grad);
+    nl_model_free(m);
+}
+
+int cli_cmd_lattice(int argc, char **argv)
+{
+    opts_t a = {.extent = 1, .seed = 1};
+    nl_rank1_lattice L;
+    parse(argc, argv, &a);
+    make_lattice(&a, &L);
+    if (a.wv)
+        print_wave_vectors(&a, &L);
+    if (a.spec)
+        field(&a, &L);
+    else if (a.out || a.mesh)
         /* the points alone (-o) and the triangulation at height 0 (--mesh) */
-        if (out) {
-            tmp = cli_out_begin(out);
-            FILE *fp = fopen(tmp, "w");
-            if (!fp)
-                cli_die(2, "-o: cannot write \"%s\"", out);
-            for (int a = 0; a < s; a++)
-                fprintf(fp, "x%d%c", a + 1, a + 1 < s ? '\t' : '\n');
-            for (size_t n = 0; n < N; n++) {
-                double x[NL_RANK1_MAX_DIM];
-                nl_rank1_point(&L, n, x);
-                for (int a = 0; a < s; a++)
-                    fprintf(fp, "%.10g%c", x[a] * extent, a + 1 < s ? '\t' : '\n');
-            }
-            if (fclose(fp))
-                cli_die(1, "-o: write failed");
-            cli_out_commit(out);
-        }
-        if (mesh) {
-            size_t n1, n2;
-            double v1[2], v2[2];
-            if ((st = nl_rank1_delaunay(&L, &n1, &n2, v1, v2)))
-                cli_die_status(st);
-            mtmp = cli_out_begin(mesh);
-            FILE *fp = fopen(mtmp, "w");
-            if (!fp)
-                cli_die(2, "--mesh: cannot write \"%s\"", mesh);
-            for (size_t n = 0; n < N; n++) {
-                double x[2];
-                nl_rank1_point(&L, n, x);
-                double P[4][2] = {{x[0], x[1]}, {x[0] + v1[0], x[1] + v1[1]}, {x[0] + v2[0], x[1] + v2[1]},
-                                  {x[0] + v1[0] + v2[0], x[1] + v1[1] + v2[1]}};
-                static const int tri[2][3] = {{0, 1, 2}, {1, 3, 2}};
-                for (int t = 0; t < 2; t++)
-                    for (int v = 0; v < 3; v++)
-                        fprintf(fp, "v %.8g %.8g 0\n", P[tri[t][v]][0] * extent, P[tri[t][v]][1] * extent);
-            }
-            for (size_t t = 0; t < 2 * N; t++)
-                fprintf(fp, "f %zu %zu %zu\n", 3 * t + 1, 3 * t + 2, 3 * t + 3);
-            if (fclose(fp))
-                cli_die(1, "--mesh: write failed");
-            cli_out_commit(mesh);
-        }
-    }
+        write_outputs(&a, &L, NULL, NULL, 0);
     nl_rank1_free(&L);
     return 0;
 }

@@ -1,6 +1,6 @@
 /* noiselab render: a 2D field as an 8-bit picture, grey levels or shaded relief. */
 #include "cli.h"
-#include "../analysis/hist.h"
+#include "../render/shade.h"
 #include "../render/terrain.h"
 
 #include <getopt.h>
@@ -60,7 +60,16 @@ static void perspective(const char *in, const nl_field *x, const char *tmp, nl_r
     free(rgb);
 }
 
-int cli_cmd_render(int argc, char **argv)
+/* The command's options. */
+typedef struct {
+    const char *out, *matrix, *size, *camera, *look, *clouds;  /* as given, or NULL */
+    double plane[2];                                           /* --cloud-plane */
+    size_t step;                                               /* --step */
+    double lo, hi, az, el, zs, fov, sun[2], haze, water;       /* NAN: not given */
+    int persp, tile, sea, given_zs, view_opts;                 /* flags; view options given */
+} opts_t;
+
+static void parse(int argc, char **argv, opts_t *a)
 {
     static const struct option opts[] = {{"range", required_argument, 0, 'r'}, {"shade", required_argument, 0, 's'},
                                          {"zscale", required_argument, 0, 'z'}, {"output", required_argument, 0, 'o'},
@@ -72,160 +81,163 @@ int cli_cmd_render(int argc, char **argv)
                                          {"tile", no_argument, 0, 't'},         {"sea", no_argument, 0, 'e'},
                                          {"clouds", required_argument, 0, 'C'}, {"cloud-plane", required_argument, 0, 'Z'},
                                          {"help", no_argument, 0, 'h'},         {0}};
-    const char *out = NULL, *tmp, *matrix = NULL, *size = NULL, *camera = NULL, *look = NULL, *clouds = NULL;
-    double plane[2] = {200, 4};
-    size_t step = 1;
-    double lo = NAN, hi = NAN, az = NAN, el = NAN, zs = 1, fov = NAN, sun[2] = {NAN, NAN}, haze = NAN, water = NAN;
-    int persp = 0, tile = 0, sea = 0, given_zs = 0, view_opts = 0;
-    int c, st;
-    nl_field *x;
+    int c;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
         case 'r':
-            if (sscanf(optarg, "%lf:%lf", &lo, &hi) != 2 || !(hi > lo) || !isfinite(lo) || !isfinite(hi))
+            if (sscanf(optarg, "%lf:%lf", &a->lo, &a->hi) != 2 || !(a->hi > a->lo) || !isfinite(a->lo) ||
+                !isfinite(a->hi))
                 cli_die(2, "--range: expected LO:HI with LO < HI, got \"%s\"", optarg);
             break;
         case 's':
-            if (sscanf(optarg, "%lf,%lf", &az, &el) != 2 || !(el > 0 && el <= 90))
+            if (sscanf(optarg, "%lf,%lf", &a->az, &a->el) != 2 || !(a->el > 0 && a->el <= 90))
                 cli_die(2, "--shade: expected AZ,EL in degrees with 0 < EL <= 90, got \"%s\"", optarg);
             break;
         case 'z':
-            zs = cli_parse_double("--zscale", optarg);
-            if (!(zs > 0))
+            a->zs = cli_parse_double("--zscale", optarg);
+            if (!(a->zs > 0))
                 cli_die(2, "--zscale: expected a positive factor, got \"%s\"", optarg);
-            given_zs = 1;
+            a->given_zs = 1;
             break;
-        case 'P': persp = 1; break;
-        case 'S': size = optarg, view_opts++; break;
-        case 'c': camera = optarg, view_opts++; break;
-        case 'l': look = optarg, view_opts++; break;
-        case 'f': fov = cli_parse_double("--fov", optarg), view_opts++; break;
-        case 'u': pair("--sun", optarg, &sun[0], &sun[1]), view_opts++; break;
-        case 'H': haze = cli_parse_double("--haze", optarg), view_opts++; break;
-        case 'w': water = cli_parse_double("--water", optarg), view_opts++; break;
-        case 't': tile = 1, view_opts++; break;
-        case 'e': sea = 1, view_opts++; break;
-        case 'C': clouds = optarg, view_opts++; break;
+        case 'P': a->persp = 1; break;
+        case 'S': a->size = optarg, a->view_opts++; break;
+        case 'c': a->camera = optarg, a->view_opts++; break;
+        case 'l': a->look = optarg, a->view_opts++; break;
+        case 'f': a->fov = cli_parse_double("--fov", optarg), a->view_opts++; break;
+        case 'u': pair("--sun", optarg, &a->sun[0], &a->sun[1]), a->view_opts++; break;
+        case 'H': a->haze = cli_parse_double("--haze", optarg), a->view_opts++; break;
+        case 'w': a->water = cli_parse_double("--water", optarg), a->view_opts++; break;
+        case 't': a->tile = 1, a->view_opts++; break;
+        case 'e': a->sea = 1, a->view_opts++; break;
+        case 'C': a->clouds = optarg, a->view_opts++; break;
         case 'Z':
-            pair("--cloud-plane", optarg, &plane[0], &plane[1]), view_opts++;
-            if (!(plane[0] > 0 && plane[1] > 0))
+            pair("--cloud-plane", optarg, &a->plane[0], &a->plane[1]), a->view_opts++;
+            if (!(a->plane[0] > 0 && a->plane[1] > 0))
                 cli_die(2, "--cloud-plane: expected a positive height and scale, got \"%s\"", optarg);
             break;
-        case 'o': out = optarg; break;
-        case 'm': matrix = optarg; break;
-        case 'k': step = cli_parse_count("--step", optarg, 1); break;
-        case 'h': fputs(help, stdout); return 0;
+        case 'o': a->out = optarg; break;
+        case 'm': a->matrix = optarg; break;
+        case 'k': a->step = cli_parse_count("--step", optarg, 1); break;
+        case 'h': fputs(help, stdout); exit(0);
         default: cli_bad_option("render", c, argv);
         }
     }
+}
+
+static void check(int argc, const opts_t *a)
+{
     if (optind + 1 != argc)
         cli_die(2, "render: expected one input file, got %d", argc - optind);
-    if (!out && !matrix)
+    if (!a->out && !a->matrix)
         cli_die(2, "render: expected -o OUT.png or --matrix OUT.txt");
-    if (out && !cli_has_ext(out, ".png"))
-        cli_die(2, "render: -o: expected an output file ending in .png, got \"%s\"", out);
-    if (view_opts && !persp)
+    if (a->out && !cli_has_ext(a->out, ".png"))
+        cli_die(2, "render: -o: expected an output file ending in .png, got \"%s\"", a->out);
+    if (a->view_opts && !a->persp)
         cli_die(2, "render: --size, --camera, --look, --fov, --sun, --haze, --water, --tile, --sea and --clouds "
                 "need --perspective");
-    if (persp && (matrix || !isnan(az) || !isnan(lo)))
+    if (a->persp && (a->matrix || !isnan(a->az) || !isnan(a->lo)))
         cli_die(2, "render: --perspective takes none of --matrix, --shade, --range");
-    if (persp && !out)
+    if (a->persp && !a->out)
         cli_die(2, "render: --perspective: expected -o OUT.png");
-    x = cli_read_field(argv[optind], NULL);
-    if (x->dim != 2)
-        cli_die(2, "render: expected a 2D field, %s is %dD", argv[optind], x->dim);
-    if (persp) {
-        nl_render_view v;
-        nl_render_view_default(x, &v);
-        if (size) {
-            size_t n[3];
-            if (cli_parse_size("--size", size, n, 1) != 2 || n[0] > 8192 || n[1] > 8192)
-                cli_die(2, "--size: expected WxH of at most 8192x8192 pixels, got \"%s\"", size);
-            v.width = n[0], v.height = n[1];
-        }
-        if (given_zs)
-            v.zscale = zs;
-        if (camera) {
-            char c;
-            if (sscanf(camera, "%lf,%lf,%lf%c", &v.cam[0], &v.cam[1], &v.cam[2], &c) != 3 || !isfinite(v.cam[0]) ||
-                !isfinite(v.cam[1]) || !(v.cam[2] > 0))
-                cli_die(2, "--camera: expected X,Y,H with H > 0, got \"%s\"", camera);
-        }
-        if (look)
-            pair("--look", look, &v.azimuth, &v.pitch);
-        if (!isnan(fov))
-            v.fov = fov;
-        if (!isnan(sun[0]))
-            v.sun[0] = sun[0], v.sun[1] = sun[1];
-        if (!isnan(haze))
-            v.haze = haze;
-        v.water = water;
-        v.tile = tile;
-        v.palette = sea ? NL_RENDER_SEA : NL_RENDER_LAND;
-        nl_field *cf = NULL;
-        if (clouds) {
-            cf = cli_read_field(clouds, NULL);
-            if (cf->dim != 2)
-                cli_die(2, "--clouds: expected a 2D field, %s is %dD", clouds, cf->dim);
-            v.clouds = cf, v.cloud_height = plane[0], v.cloud_scale = plane[1];
-        }
-        tmp = cli_out_begin(out);
-        perspective(argv[optind], x, tmp, &v);
-        cli_out_commit(out);
-        nl_field_free(x);
-        nl_field_free(cf);
-        return 0;
+}
+
+/* The view of the options over the defaults for x. */
+static void view(const opts_t *a, const nl_field *x, nl_render_view *v)
+{
+    nl_render_view_default(x, v);
+    if (a->size) {
+        size_t n[3];
+        if (cli_parse_size("--size", a->size, n, 1) != 2 || n[0] > 8192 || n[1] > 8192)
+            cli_die(2, "--size: expected WxH of at most 8192x8192 pixels, got \"%s\"", a->size);
+        v->width = n[0], v->height = n[1];
     }
-    if (matrix) {
-        const char *mt = cli_out_begin(matrix);
-        FILE *fp = fopen(mt, "w");
-        if (!fp)
-            cli_die(2, "--matrix: cannot write \"%s\"", matrix);
-        for (size_t j = 0; j < x->n[1]; j += step)
-            for (size_t i = 0; i < x->n[0]; i += step)
-                fprintf(fp, "%.6g%c", x->data[j * x->n[0] + i], i + step < x->n[0] ? ' ' : '\n');
-        if (fclose(fp))
-            cli_die(1, "--matrix: write failed");
-        cli_out_commit(matrix);
-        if (!out) {
-            nl_field_free(x);
-            return 0;
-        }
+    if (a->given_zs)
+        v->zscale = a->zs;
+    if (a->camera) {
+        char c;
+        if (sscanf(a->camera, "%lf,%lf,%lf%c", &v->cam[0], &v->cam[1], &v->cam[2], &c) != 3 || !isfinite(v->cam[0]) ||
+            !isfinite(v->cam[1]) || !(v->cam[2] > 0))
+            cli_die(2, "--camera: expected X,Y,H with H > 0, got \"%s\"", a->camera);
     }
-    tmp = cli_out_begin(out);
-    if (!isnan(az)) {
-        size_t nx = x->n[0], ny = x->n[1];
+    if (a->look)
+        pair("--look", a->look, &v->azimuth, &v->pitch);
+    if (!isnan(a->fov))
+        v->fov = a->fov;
+    if (!isnan(a->sun[0]))
+        v->sun[0] = a->sun[0], v->sun[1] = a->sun[1];
+    if (!isnan(a->haze))
+        v->haze = a->haze;
+    v->water = a->water;
+    v->tile = a->tile;
+    v->palette = a->sea ? NL_RENDER_SEA : NL_RENDER_LAND;
+}
+
+static void write_matrix(const char *matrix, const nl_field *x, size_t step)
+{
+    const char *mt = cli_out_begin(matrix);
+    FILE *fp = fopen(mt, "w");
+    if (!fp)
+        cli_die(2, "--matrix: cannot write \"%s\"", matrix);
+    for (size_t j = 0; j < x->n[1]; j += step)
+        for (size_t i = 0; i < x->n[0]; i += step)
+            fprintf(fp, "%.6g%c", x->data[j * x->n[0] + i], i + step < x->n[0] ? ' ' : '\n');
+    if (fclose(fp))
+        cli_die(1, "--matrix: write failed");
+    cli_out_commit(matrix);
+}
+
+/* Grey levels or, with --shade, the relief. */
+static void write_picture(const opts_t *a, const nl_field *x)
+{
+    const char *tmp = cli_out_begin(a->out);
+    double lo = a->lo, hi = a->hi;
+    int st;
+    if (!isnan(a->az)) {
         nl_field *s = nl_field_alloc(2, x->n, x->h, &st);
-        double l[3] = {cos(el * M_PI / 180) * cos(az * M_PI / 180), cos(el * M_PI / 180) * sin(az * M_PI / 180),
-                       sin(el * M_PI / 180)};
-        if (!s)
+        if (!s || (st = nl_render_relief(x, a->az, a->el, a->zs, s)))
             cli_die_status(st);
-        for (size_t j = 0; j < ny; j++)
-            for (size_t i = 0; i < nx; i++) {
-                /* central differences, one-sided at the edges */
-                size_t i0 = i ? i - 1 : i, i1 = i + 1 < nx ? i + 1 : i, j0 = j ? j - 1 : j, j1 = j + 1 < ny ? j + 1 : j;
-                double gx = zs * (x->data[j * nx + i1] - x->data[j * nx + i0]) / ((double)(i1 - i0) * x->h[0]);
-                double gy = zs * (x->data[j1 * nx + i] - x->data[j0 * nx + i]) / ((double)(j1 - j0) * x->h[1]);
-                double n = sqrt(gx * gx + gy * gy + 1);
-                s->data[j * nx + i] = fmax(0, (-gx * l[0] - gy * l[1] + l[2]) / n);
-            }
         st = nl_png_write_field(tmp, s, 0, 1);
         nl_field_free(s);
     } else {
-        if (isnan(lo)) {
-            nl_moments m;
-            if ((st = nl_moments_compute(x, &m)))
-                cli_die_status(st);
-            lo = m.mean - 3 * sqrt(m.variance), hi = m.mean + 3 * sqrt(m.variance);
-            if (!(hi > lo))
-                hi = lo + 1;
-        }
+        if (isnan(lo) && (st = nl_render_grey_range(x, &lo, &hi)))
+            cli_die_status(st);
         st = nl_png_write_field(tmp, x, lo, hi);
     }
     if (st)
         cli_die_status(st);
-    cli_out_commit(out);
+    cli_out_commit(a->out);
+}
+
+int cli_cmd_render(int argc, char **argv)
+{
+    opts_t a = {.plane = {200, 4}, .step = 1, .lo = NAN, .hi = NAN, .az = NAN, .el = NAN, .zs = 1, .fov = NAN,
+                .sun = {NAN, NAN}, .haze = NAN, .water = NAN};
+    nl_field *x;
+    parse(argc, argv, &a);
+    check(argc, &a);
+    x = cli_read_field(argv[optind], NULL);
+    if (x->dim != 2)
+        cli_die(2, "render: expected a 2D field, %s is %dD", argv[optind], x->dim);
+    if (a.persp) {
+        nl_render_view v;
+        nl_field *cf = NULL;
+        view(&a, x, &v);
+        if (a.clouds) {
+            cf = cli_read_field(a.clouds, NULL);
+            if (cf->dim != 2)
+                cli_die(2, "--clouds: expected a 2D field, %s is %dD", a.clouds, cf->dim);
+            v.clouds = cf, v.cloud_height = a.plane[0], v.cloud_scale = a.plane[1];
+        }
+        perspective(argv[optind], x, cli_out_begin(a.out), &v);
+        cli_out_commit(a.out);
+        nl_field_free(cf);
+    } else {
+        if (a.matrix)
+            write_matrix(a.matrix, x, a.step);
+        if (a.out)
+            write_picture(&a, x);
+    }
     nl_field_free(x);
     return 0;
 }

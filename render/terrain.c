@@ -204,11 +204,10 @@ void nl_render_view_default(const nl_field *f, nl_render_view *v)
     v->water = NAN;
 }
 
-int nl_render_terrain(const nl_field *f, const nl_render_view *v, uint8_t *rgb)
+/* The field and the view can be rendered, and the work arrays sized. */
+static int check(const nl_field *f, const nl_render_view *v)
 {
     const size_t W = v->width * SS, H = v->height * SS;
-    scene s = {f, v, NULL, INFINITY, -INFINITY};
-    double focal, horizon, camz, tmax, mean = 0, cmean = 0, csd = 1, *img;
     if (f->dim != 2 || f->n[0] < 3 || f->n[1] < 3)
         return NL_ERROR(NL_EINVAL, "render: a perspective view needs a 2D field of at least 3 x 3 samples");
     if (!(v->fov > 0 && v->fov < 170) || !(v->zscale > 0) || !(v->haze > 0) || !(fabs(v->pitch) <= 30) ||
@@ -216,13 +215,37 @@ int nl_render_terrain(const nl_field *f, const nl_render_view *v, uint8_t *rgb)
         (v->clouds && (v->clouds->dim != 2 || !(v->cloud_height > 0) || !(v->cloud_scale > 0))))
         return NL_ERROR(NL_EINVAL, "render: a view needs 0 < fov < 170, zscale > 0, haze > 0, |pitch| <= 30 and "
                         "0 < sun elevation <= 90");
-    {
-        /* the supersampled picture (3 doubles a pixel) and the lit colours */
-        size_t pic[2] = {3 * W, H}, col[2] = {3, f->count};
-        int st = nl_size_check(2, pic, sizeof(double), 1, NULL);
-        if (st || (st = nl_size_check(2, col, sizeof(double), 1, NULL)))
-            return st;
-    }
+    /* the supersampled picture (3 doubles a pixel) and the lit colours */
+    size_t pic[2] = {3 * W, H}, col[2] = {3, f->count};
+    int st = nl_size_check(2, pic, sizeof(double), 1, NULL);
+    if (st || (st = nl_size_check(2, col, sizeof(double), 1, NULL)))
+        return st;
+    return NL_OK;
+}
+
+/* The SS x SS supersampled picture averaged into 8-bit pixels. */
+static void downsample(const nl_render_view *v, const double *img, uint8_t *rgb)
+{
+    const size_t W = v->width * SS;
+    for (size_t y = 0; y < v->height; y++)
+        for (size_t x = 0; x < v->width; x++)
+            for (int k = 0; k < 3; k++) {
+                double sum = 0;
+                for (int q = 0; q < SS; q++)
+                    for (int p = 0; p < SS; p++)
+                        sum += img[3 * ((y * SS + q) * W + x * SS + p) + k];
+                rgb[3 * (y * v->width + x) + k] = (uint8_t)lround(255 * fmin(1, fmax(0, sum / (SS * SS))));
+            }
+}
+
+int nl_render_terrain(const nl_field *f, const nl_render_view *v, uint8_t *rgb)
+{
+    const size_t W = v->width * SS, H = v->height * SS;
+    scene s = {f, v, NULL, INFINITY, -INFINITY};
+    double focal, horizon, camz, tmax, mean = 0, cmean = 0, csd = 1, *img;
+    int st = check(f, v);
+    if (st)
+        return st;
     for (size_t i = 0; i < f->count; i++) {
         s.hmin = fmin(s.hmin, v->zscale * f->data[i]), s.hmax = fmax(s.hmax, v->zscale * f->data[i]);
         mean += v->zscale * f->data[i] / (double)f->count;
@@ -283,15 +306,7 @@ int nl_render_terrain(const nl_field *f, const nl_render_view *v, uint8_t *rgb)
             memcpy(img + 3 * ((size_t)r * W + x), c, sizeof c);
         }
     }
-    for (size_t y = 0; y < v->height; y++)
-        for (size_t x = 0; x < v->width; x++)
-            for (int k = 0; k < 3; k++) {
-                double sum = 0;
-                for (int q = 0; q < SS; q++)
-                    for (int p = 0; p < SS; p++)
-                        sum += img[3 * ((y * SS + q) * W + x * SS + p) + k];
-                rgb[3 * (y * v->width + x) + k] = (uint8_t)lround(255 * fmin(1, fmax(0, sum / (SS * SS))));
-            }
+    downsample(v, img, rgb);
     free(s.rgb), free(img);
     return NL_OK;
 }

@@ -46,11 +46,18 @@ typedef struct {
 enum { NL_RENDER_LAND = 0, NL_RENDER_SEA = 1 };
 
 /* Default view of field f: camera behind the middle of the lower (y = 0)
- * edge, 0.15 n above the terrain there, looking along +y, 10 degrees down. */
+ * edge, 0.15 n above the terrain there, looking along +y, 10 degrees down.
+ * Fills every member of *v (no clouds, no water); thread-safe. */
 void nl_render_view_default(const nl_field *f, nl_render_view *v);
 
-/* Render f (2D) into rgb (width * height * 3 bytes, rows top to bottom).
- * NL_EINVAL for a field that is not 2D or a view with bad numbers. */
+/* Render f (2D) into rgb (width * height * 3 bytes, rows top to bottom,
+ * R G B per pixel; the caller's buffer).  f and v (and v->clouds) are only
+ * read.  Errors: NL_EINVAL for a field that is not 2D or smaller than 3 x 3,
+ * or a view with bad numbers (fov outside (0, 170), zscale or haze <= 0,
+ * |pitch| > 30, sun elevation outside (0, 90], an empty picture, clouds
+ * that are not 2D or a cloud plane that is not positive); NL_ETOOBIG for a
+ * picture or field whose work arrays overflow; NL_ENOMEM.  Reentrant; runs
+ * its own OpenMP loops. */
 int nl_render_terrain(const nl_field *f, const nl_render_view *v, uint8_t *rgb);
 
 #endif

@@ -1,11 +1,13 @@
 /* Gradient noise and its octave sum. */
 #include "lattice.h"
-#include "../analysis/psd.h"
-#include "../analysis/radial.h"
+#include "../core/fftw_plan.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../core/wk.h"
 
+#include <complex.h>
+#include <fftw3.h>
 #include <gsl/gsl_multifit.h>
 #include <math.h>
 #include <stdlib.h>
@@ -49,28 +51,69 @@ static double gradient_noise(uint64_t seed, uint32_t stream, int dim, double c, 
 static double basis16[2][2049];
 static int basis_ready[2];
 
-static void measure_basis(int dim)
+/* Periodogram of x (n samples per axis, dim axes, unit spacing, mean 0),
+ * P_k = |sum_j x_j exp(-2 pi i j.k / n)|^2 / N at the wrapped frequencies
+ * (the two-sided density of analysis/psd.h), accumulated into acc[k] / 8
+ * for k < n/2 + 1: in 1D P_k itself, in 2D its mean over the ring of
+ * radius k / n (bins as analysis/radial.h).  P is scratch of N doubles, c
+ * of N complex values. */
+static int accumulate_periodogram(int dim, size_t n, const double *x, double *P, fftw_complex *c, double *acc)
 {
-    size_t n = dim == 1 ? 4096 : 256, nn[2] = {n, dim == 2 ? n : 1}, nb = n / 2 + 1, cnt[2049];
-    double acc[2049] = {0}, r[2049], v[2049];
-    nl_field *f = nl_field_alloc(dim, nn, NULL, NULL), *P;
-    for (uint64_t s = 1; s <= 8; s++) {
-        for (size_t j = 0; j < nn[1]; j++)
-            for (size_t i = 0; i < n; i++)
-                f->data[j * n + i] = gradient_noise(s, NL_LATTICE_STREAM + 99, dim, 16, (double)i, (double)j,
-                                                    (long)n / 16, dim == 2 ? (long)n / 16 : 0);
-        nl_psd_periodogram(f, 0.0, &P);
-        if (dim == 1)
-            for (size_t k = 0; k < nb; k++)
-                acc[k] += P->data[k] / 8;
-        else {
-            nl_radial(P, NL_GRID_FREQ, 1.0 / (double)n, nb, r, v, cnt);
-            for (size_t k = 0; k < nb; k++)
-                acc[k] += (cnt[k] ? v[k] : 0) / 8;
+    size_t count = dim == 2 ? n * n : n, h0 = n / 2 + 1, rows = count / n, nb = n / 2 + 1, cnt[2049];
+    int dims[2] = {(int)n, (int)n};
+    double v[2049], unit = 1.0 / (double)n, step = 1.0 / (double)n;
+    fftw_plan p = fftw_plan_dft_r2c(dim, dims, P, c, nl_fftw_flags(count));
+    if (!p)
+        return NL_ERROR(NL_ENOMEM, "cannot plan the basis periodogram FFT");
+    for (size_t i = 0; i < count; i++)
+        P[i] = x[i] - 0.0;
+    fftw_execute(p);
+    fftw_destroy_plan(p);
+    for (size_t r = 0; r < rows; r++) {
+        size_t rneg = (rows - r) % rows;
+        for (size_t i = 0; i < h0; i++) {
+            double w = 1.0 / (double)count * (creal(c[r * h0 + i]) * creal(c[r * h0 + i]) +
+                                              cimag(c[r * h0 + i]) * cimag(c[r * h0 + i]));
+            P[r * n + i] = w;
+            P[rneg * n + (n - i) % n] = w;
         }
-        nl_field_free(P);
     }
-    nl_field_free(f);
+    if (dim == 1) {
+        for (size_t k = 0; k < nb; k++)
+            acc[k] += P[k] / 8;
+        return NL_OK;
+    }
+    for (size_t b = 0; b < nb; b++)
+        v[b] = 0, cnt[b] = 0;
+    for (size_t j = 0; j < n; j++)
+        for (size_t i = 0; i < n; i++) {
+            double ci = nl_wrap(i, n) * unit, cj = nl_wrap(j, n) * unit, d = sqrt(ci * ci + cj * cj);
+            size_t b = (size_t)floor(d / step + 0.5);
+            if (b < nb)
+                v[b] += P[j * n + i], cnt[b]++;
+        }
+    for (size_t k = 0; k < nb; k++)
+        acc[k] += (cnt[k] ? v[k] / (double)cnt[k] : 0) / 8;
+    return NL_OK;
+}
+
+static int measure_basis(int dim)
+{
+    size_t n = dim == 1 ? 4096 : 256, ny = dim == 2 ? n : 1, count = n * ny, nb = n / 2 + 1;
+    double acc[2049] = {0};
+    double *x = nl_alloc(count * sizeof *x), *P = nl_alloc(count * sizeof *P);
+    fftw_complex *c = nl_alloc(ny * nb * sizeof *c);
+    int st = x && P && c ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory for the basis spectrum");
+    for (uint64_t s = 1; s <= 8 && !st; s++) {
+        for (size_t j = 0; j < ny; j++)
+            for (size_t i = 0; i < n; i++)
+                x[j * n + i] = gradient_noise(s, NL_LATTICE_STREAM + 99, dim, 16, (double)i, (double)j, (long)n / 16,
+                                              dim == 2 ? (long)n / 16 : 0);
+        st = accumulate_periodogram(dim, n, x, P, c, acc);
+    }
+    nl_free(x), nl_free(P), nl_free(c);
+    if (st)
+        return st;
     /* store on a grid of 2048 steps in f * 16 from 0 to 8 (f from 0 to 0.5) */
     for (int k = 0; k <= 2048; k++) {
         double ff = 0.5 * k / 2048.0, t = ff * (double)n;
@@ -79,6 +122,7 @@ static void measure_basis(int dim)
         basis16[dim - 1][k] = i + 1 < nb ? (1 - w) * acc[i] + w * acc[i + 1] : acc[nb - 1];
     }
     basis_ready[dim - 1] = 1;
+    return NL_OK;
 }
 
 double nl_synth_lattice_basis_spectrum(int dim, double c, double f)
@@ -173,6 +217,7 @@ static int fit_weights(int dim, const nl_model *m, nl_synth_lattice_plan *p, dou
 int nl_synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p)
 {
     double probe[2] = {0.1, 0};
+    int st;
     if (dim != 1 && dim != 2)
         return NL_ERROR(NL_EINVAL, "lattice: expected dimension 1 or 2, got %d", dim);
     if (octaves < 1 || octaves > NL_LATTICE_MAX_OCTAVES)
@@ -182,6 +227,8 @@ int nl_synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int oc
     if (!isfinite(nl_model_spectrum(m, dim, probe)))
         return NL_ERROR(NL_EINVAL, "%s: the lattice method needs the model's spectrum in closed form in %dD "
                         "(power:, spectrum:, or a 1D markov, gauss, oscillatory, gauss-osc)", nl_model_spec(m), dim);
+    if (!basis_ready[dim - 1] && (st = measure_basis(dim)))
+        return st;
     memset(p, 0, sizeof *p);
     p->octaves = octaves;
     for (int o = 0; o < octaves; o++) {

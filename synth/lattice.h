@@ -40,15 +40,33 @@ typedef struct {
     double leakage[NL_LATTICE_MAX_OCTAVES];  /* fraction of octave power below its band */
 } nl_synth_lattice_plan;
 
+/* The plan is a plain struct the caller owns: nothing to free (the
+ * _alloc name follows the other plans; it allocates nothing that outlives
+ * the call).
+ * Thread safety: the basis spectrum of each dimension is measured once per
+ * process into static tables, on the first plan of that dimension; make the
+ * first plan of each dimension from one thread.  After that, plans are
+ * reentrant, and executing one plan concurrently into distinct fields is
+ * safe (execute itself runs OpenMP loops above 65536 samples). */
+
 /* Plan the octaves for model m on a dim-D grid (spacing 1 sample; the
- * model's lags in samples): c_0 = cell0, `octaves` octaves (cell >= 2). */
+ * model's lags in samples): c_0 = cell0, `octaves` octaves (cell >= 2).
+ * Errors: NL_EINVAL for dim not 1 or 2, octaves outside
+ * 1..NL_LATTICE_MAX_OCTAVES, cells below 2 samples, or a model without a
+ * closed-form spectrum in dim dimensions; NL_ENOMEM.  (GSL's weighted
+ * least squares, an SVD of finite values, does not fail; it would give
+ * NL_EFAIL.) */
 int nl_synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);
 
-/* The basis spectrum at cell c and frequency f (cycles per sample). */
+/* The basis spectrum at cell c (samples) and frequency f (cycles per
+ * sample), dim 1 or 2, per (cycles per sample)^dim; 0 from 8 / c up.  0
+ * everywhere when the measurement could not run (out of memory);
+ * nl_synth_lattice_plan_alloc reports that case. */
 double nl_synth_lattice_basis_spectrum(int dim, double c, double f);
 
 /* x = sum_o w_o noise_o into out (1D or 2D, periodic when every cell
- * divides the size, otherwise a window at the origin). */
+ * divides the size, otherwise a window at the origin).  NL_EINVAL: out
+ * 3D. */
 int nl_synth_lattice_execute(const nl_synth_lattice_plan *p, uint64_t seed, nl_field *out);
 
 /* Defaults (synth/lattice_octaves.c; pure): the largest cell, n[0] / 4

@@ -31,11 +31,22 @@ static double omega(const nl_ocean_params *o, double kx, double ky)
     return sqrt(NL_OCEAN_G * 2 * M_PI * hypot(kx, ky) / o->patch);
 }
 
+static int check(const nl_ocean_params *o, double t)
+{
+    if (!(o->wind > 0) || !(o->patch > 0) || !(o->amplitude > 0) || !isfinite(o->wind) || !isfinite(o->patch) ||
+        !isfinite(o->amplitude) || !isfinite(o->angle) || !isfinite(t))
+        return NL_ERROR(NL_EINVAL, "ocean: expected a positive wind, patch and amplitude and a finite angle and "
+                        "time, got %g, %g, %g, %g, %g", o->wind, o->patch, o->amplitude, o->angle, t);
+    return NL_OK;
+}
+
 int nl_ocean_lattice_coefficients(const nl_rank1_lattice *L, const nl_ocean_params *o, uint64_t seed, double t, double *c)
 {
     size_t N = L->N;
     if (L->s != 2)
         return NL_ERROR(NL_EINVAL, "ocean: expected a 2D lattice");
+    if (check(o, t))
+        return NL_EINVAL;
     for (size_t m = 0; m < N; m++) {
         size_t mn = (N - m) % N;
         double kx = (double)L->k[2 * m], ky = (double)L->k[2 * m + 1], w = omega(o, kx, ky);
@@ -51,6 +62,10 @@ int nl_ocean_lattice_coefficients(const nl_rank1_lattice *L, const nl_ocean_para
 int nl_ocean_grid(size_t M, const nl_ocean_params *o, uint64_t seed, double t, double *h, double *gx, double *gy)
 {
     size_t N = M * M;
+    if (M < 2 || M > 65536)
+        return NL_ERROR(NL_EINVAL, "ocean: expected a grid of 2 to 65536 samples per side, got %zu", M);
+    if (check(o, t))
+        return NL_EINVAL;
     fftw_complex *b = nl_alloc(N * sizeof *b), *hk = nl_alloc(N * sizeof *hk);
     fftw_plan p = b ? fftw_plan_dft_2d((int)M, (int)M, b, b, FFTW_BACKWARD, nl_fftw_flags(N)) : NULL;
     if (!p || !hk) {
@@ -85,4 +100,25 @@ int nl_ocean_grid(size_t M, const nl_ocean_params *o, uint64_t seed, double t, d
     }
     fftw_destroy_plan(p), nl_free(b), nl_free(hk);
     return NL_OK;
+}
+
+int nl_ocean_lattice_frame(const nl_rank1_lattice *L, const nl_ocean_params *o, uint64_t seed, double t, double *h,
+                           double *grad)
+{
+    double *cf = malloc(2 * L->N * sizeof *cf), imag;
+    int st;
+    if (!cf)
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu coefficients", L->N);
+    if (!(st = nl_ocean_lattice_coefficients(L, o, seed, t, cf)))
+        st = nl_rank1_synthesize(L, cf, o->patch, h, grad, &imag);
+    free(cf);
+    return st;
+}
+
+void nl_ocean_normals(size_t count, const double *grad, double *nrm)
+{
+    for (size_t n = 0; n < count; n++) {
+        double nn = sqrt(grad[2 * n] * grad[2 * n] + grad[2 * n + 1] * grad[2 * n + 1] + 1);
+        nrm[3 * n] = -grad[2 * n] / nn, nrm[3 * n + 1] = -grad[2 * n + 1] / nn, nrm[3 * n + 2] = 1 / nn;
+    }
 }

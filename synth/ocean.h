@@ -26,15 +26,34 @@ typedef struct {
     double amplitude; /* A */
 } nl_ocean_params;
 
-/* Phillips spectrum at integer wave vector k (2D). */
+/* Every function is reentrant: parameters and lattices are only read and
+ * the caller owns every array.  The FFT functions plan FFTW, which is not
+ * thread-safe (core/fftw_plan.h).  Parameters are checked where a status
+ * is returned: NL_EINVAL unless wind, patch and amplitude are positive and
+ * finite and the angle and time finite. */
+
+/* Phillips spectrum P(K) at integer wave vector (kx, ky) (2D), K = 2 pi k /
+ * patch; 0 at k = 0. */
 double nl_ocean_phillips(const nl_ocean_params *o, double kx, double ky);
 
-/* Lattice: coefficients c (2N, re/im) at time t; heights and gradients
- * (per metre) by nl_rank1_synthesize with extent = patch. */
+/* Lattice: coefficients c (2N doubles, re/im) at time t seconds; heights
+ * and gradients (per metre) by nl_rank1_synthesize with extent = patch.
+ * NL_EINVAL: a lattice that is not 2D, or bad parameters. */
 int nl_ocean_lattice_coefficients(const nl_rank1_lattice *L, const nl_ocean_params *o, uint64_t seed, double t, double *c);
 
-/* Grid M x M (x fastest): heights h and gradients gx, gy (may be NULL) at
- * time t by 2D FFTs. */
+/* One frame on the lattice: heights h (N) and gradients grad (2N: dh/dx,
+ * dh/dy per point, per metre; may be NULL) at time t.  Errors: those of
+ * nl_ocean_lattice_coefficients and nl_rank1_synthesize, NL_ENOMEM. */
+int nl_ocean_lattice_frame(const nl_rank1_lattice *L, const nl_ocean_params *o, uint64_t seed, double t, double *h,
+                           double *grad);
+
+/* Unit upward normals (3 per point: nx ny nz) of a height field from its
+ * gradients (2 per point), n = (-gx, -gy, 1) / sqrt(gx^2 + gy^2 + 1). */
+void nl_ocean_normals(size_t count, const double *grad, double *nrm);
+
+/* Grid M x M (x fastest, spacing patch / M): heights h and gradients gx,
+ * gy (per metre; each may be NULL), M * M doubles each, at time t by 2D
+ * FFTs.  NL_EINVAL: M outside 2..65536 or bad parameters; NL_ENOMEM. */
 int nl_ocean_grid(size_t M, const nl_ocean_params *o, uint64_t seed, double t, double *h, double *gx, double *gy);
 
 #endif

@@ -258,6 +258,23 @@ int nl_rank1_delaunay(const nl_rank1_lattice *L, size_t *n1, size_t *n2, double 
     return NL_OK;
 }
 
+/* The Delaunay cell of point n: the parallelogram's corners P (unwrapped)
+ * and their point indices id; triangles tri[0] and tri[1] of it. */
+static const int tri[2][3] = {{0, 1, 2}, {1, 3, 2}};
+
+static void cell(const nl_rank1_lattice *L, size_t n, size_t n1, size_t n2, const double *v1, const double *v2,
+                 size_t id[4], double P[4][2])
+{
+    size_t N = L->N;
+    double x[2];
+    id[0] = n, id[1] = (n + n1) % N, id[2] = (n + n2) % N, id[3] = (n + n1 + n2) % N;
+    nl_rank1_point(L, n, x);
+    P[0][0] = x[0], P[0][1] = x[1];
+    P[1][0] = x[0] + v1[0], P[1][1] = x[1] + v1[1];
+    P[2][0] = x[0] + v2[0], P[2][1] = x[1] + v2[1];
+    P[3][0] = x[0] + v1[0] + v2[0], P[3][1] = x[1] + v1[1] + v2[1];
+}
+
 int nl_rank1_rasterize(const nl_rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,
                     double *gx, double *gy)
 {
@@ -266,13 +283,12 @@ int nl_rank1_rasterize(const nl_rank1_lattice *L, const double *f, const double 
     int st = nl_rank1_delaunay(L, &n1, &n2, v1, v2);
     if (st)
         return st;
+    if (W < 1 || !f || !img)
+        return NL_ERROR(NL_EINVAL, "rasterize: expected values and an image of at least 1 x 1 pixels");
     for (size_t n = 0; n < N; n++) {
-        double x[2];
-        size_t id[4] = {n, (n + n1) % N, (n + n2) % N, (n + n1 + n2) % N};
-        static const int tri[2][3] = {{0, 1, 2}, {1, 3, 2}};
-        nl_rank1_point(L, n, x);
-        double P[4][2] = {{x[0], x[1]}, {x[0] + v1[0], x[1] + v1[1]}, {x[0] + v2[0], x[1] + v2[1]},
-                          {x[0] + v1[0] + v2[0], x[1] + v1[1] + v2[1]}};
+        size_t id[4];
+        double P[4][2];
+        cell(L, n, n1, n2, v1, v2, id, P);
         for (int t = 0; t < 2; t++) {
             const double *a = P[tri[t][0]], *b = P[tri[t][1]], *c = P[tri[t][2]];
             double det = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
@@ -301,4 +317,45 @@ int nl_rank1_rasterize(const nl_rank1_lattice *L, const double *f, const double 
         }
     }
     return NL_OK;
+}
+
+int nl_rank1_mesh_init(const nl_rank1_lattice *L, double extent, const double *f, nl_rank1_mesh *m)
+{
+    if (!(extent > 0) || !isfinite(extent))
+        return NL_ERROR(NL_EINVAL, "mesh: expected a positive finite extent, got %g", extent);
+    m->L = L, m->extent = extent, m->f = f;
+    return nl_rank1_delaunay(L, &m->n1, &m->n2, m->v1, m->v2);
+}
+
+void nl_rank1_mesh_triangle(const void *mesh, size_t t, double xyz[9])
+{
+    const nl_rank1_mesh *m = mesh;
+    size_t id[4];
+    double P[4][2];
+    cell(m->L, t / 2, m->n1, m->n2, m->v1, m->v2, id, P);
+    for (int v = 0; v < 3; v++) {
+        int c = tri[t % 2][v];
+        xyz[3 * v] = P[c][0] * m->extent, xyz[3 * v + 1] = P[c][1] * m->extent;
+        xyz[3 * v + 2] = m->f ? m->f[id[c]] : 0;
+    }
+}
+
+int nl_rank1_fibonacci_index(size_t N)
+{
+    unsigned long long a = 1, b = 1;
+    for (int i = 2; i < 80 && b <= N; i++) {
+        if (b == N && i >= 3)
+            return i;
+        unsigned long long c = a + b;
+        a = b, b = c;
+    }
+    return 0;
+}
+
+double nl_rank1_wave_norm(const nl_rank1_lattice *L, size_t m)
+{
+    double n2 = 0;
+    for (int a = 0; a < L->s; a++)
+        n2 += (double)L->k[m * L->s + a] * L->k[m * L->s + a];
+    return sqrt(n2);
 }

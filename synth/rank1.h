@@ -37,33 +37,58 @@ typedef struct {
     int s;            /* dimension */
     size_t N;         /* points */
     long g[NL_RANK1_MAX_DIM];  /* generator */
-    long *k;          /* N * s wave vectors, k_m at k[m * s] */
+    long *k;          /* N * s wave vectors, k_m at k[m * s] (owned; nl_rank1_free) */
     double min_dist;  /* minimum distance between points (figure of merit) */
 } nl_rank1_lattice;
 
-/* Fibonacci lattice at N = F_index (index >= 3). */
+/* Conventions for every function below.  A lattice is filled by one of the
+ * three constructors and released by nl_rank1_free (it owns L->k; the struct
+ * itself is the caller's).  A constructor that fails leaves L->k NULL, so
+ * nl_rank1_free is safe either way.  Lattices are read-only after
+ * construction: every other function may run concurrently on one lattice.
+ * Positions are in [0, 1)^s (times `extent` where a function takes one);
+ * arrays are caller-allocated. */
+
+/* Fibonacci lattice at N = F_index (F_1 = F_2 = 1), g = (1, F_{index-1}).
+ * NL_EINVAL: index outside 3..34. */
 int nl_rank1_fibonacci(int index, nl_rank1_lattice *L);
 
-/* Korobov lattice of N points in s dimensions, a searched (a = 0: search). */
+/* k with F_k = N (k >= 3), or 0 when N is not a Fibonacci number >= 2.
+ * Pure; thread-safe. */
+int nl_rank1_fibonacci_index(size_t N);
+
+/* Korobov lattice of N points in s dimensions, g = (1, a, a^2, ...) mod N;
+ * a <= 0: searched over 2 <= a < min(N, 4096) for the largest minimum
+ * distance (ties: smallest a).  Errors as nl_rank1_generator. */
 int nl_rank1_korobov(size_t N, int s, long a, nl_rank1_lattice *L);
 
-/* A lattice with a given generator (g[0] must be 1). */
+/* A lattice with a given generator (s values, g[0] must be 1; reduced mod N).
+ * NL_EINVAL: s outside 1..NL_RANK1_MAX_DIM, N outside 2..2^24, g[0] != 1;
+ * NL_ENOMEM. */
 int nl_rank1_generator(size_t N, int s, const long *g, nl_rank1_lattice *L);
 
+/* Frees L->k and sets it to NULL. */
 void nl_rank1_free(nl_rank1_lattice *L);
 
-/* Point n in [0, 1)^s. */
+/* Point n (0 <= n < N) in [0, 1)^s into x (s doubles). */
 void nl_rank1_point(const nl_rank1_lattice *L, size_t n, double *x);
+
+/* Euclidean norm |k_m| of the wave vector of residue m (0 <= m < N). */
+double nl_rank1_wave_norm(const nl_rank1_lattice *L, size_t m);
 
 /* Variance per wave vector: S(k) for k in Z^s (the caller's spectrum). */
 typedef double (*nl_rank1_spectrum)(const long *k, int s, void *ctx);
 
-/* Draw the coefficients c_m (2N doubles, re/im interleaved). */
+/* Draw the coefficients c_m (2N doubles, re/im interleaved), calling S for
+ * m = 0..N/2 in order (S need not be thread-safe).  NL_EINVAL: S returned a
+ * negative, NAN or infinite value (c is then partly written). */
 int nl_rank1_coefficients(const nl_rank1_lattice *L, nl_rank1_spectrum S, void *ctx, uint64_t seed, double *c);
 
-/* f(x_n) for n = 0..N-1 from coefficients c (re/im); *imag receives the
- * largest |imaginary part| (0 up to rounding for a real field). grad (may
- * be NULL): N * s values, the gradient on a torus of side `extent`. */
+/* f(x_n) for n = 0..N-1 from coefficients c (re/im); *imag (may be NULL)
+ * receives the largest |imaginary part| (0 up to rounding for a real
+ * field).  grad (may be NULL): N * s values, grad[n * s + a] = df/dx_a on a
+ * torus of side `extent` (per unit of extent).  NL_ENOMEM (the FFT could
+ * not be planned).  Plans FFTW: not thread-safe (core/fftw_plan.h). */
 int nl_rank1_synthesize(const nl_rank1_lattice *L, const double *c, double extent, double *f, double *grad,
                      double *imag);
 
@@ -73,12 +98,38 @@ int nl_rank1_synthesize(const nl_rank1_lattice *L, const double *c, double exten
  * so that the parallelogram's short diagonal is v2 - v1.  The 2N triangles
  * are (x_n, x_n + v1, x_n + v2) and (x_n + v1, x_n + v1 + v2, x_n + v2),
  * that is, point indices (n, n + n1, n + n2) and (n + n1, n + n1 + n2,
- * n + n2) mod N, unwrapped by the vectors v1, v2. */
+ * n + n2) mod N, unwrapped by the vectors v1, v2.
+ * NL_EINVAL: not 2D, or N < 3; NL_EFAIL: no basis found (not expected for
+ * a lattice; kept as a guard). */
 int nl_rank1_delaunay(const nl_rank1_lattice *L, size_t *n1, size_t *n2, double *v1, double *v2);
+
+/* The Delaunay triangulation as 2N separate triangles (each with its own
+ * unwrapped vertices, so the mesh tiles the torus without seams): triangle
+ * t (0 <= t < 2N) is triangle t % 2 of point t / 2 above.  The struct
+ * borrows L and f, which must outlive it; nothing to free. */
+typedef struct {
+    const nl_rank1_lattice *L;  /* the lattice (borrowed) */
+    size_t n1, n2;              /* basis point indices (nl_rank1_delaunay) */
+    double v1[2], v2[2];        /* basis vectors */
+    double extent;              /* positions are multiplied by it */
+    const double *f;            /* N heights (borrowed), or NULL: height 0 */
+} nl_rank1_mesh;
+
+/* Errors: NL_EINVAL for an extent that is not positive and finite, and
+ * those of nl_rank1_delaunay. */
+int nl_rank1_mesh_init(const nl_rank1_lattice *L, double extent, const double *f, nl_rank1_mesh *m);
+
+/* Triangle t of mesh (an nl_rank1_mesh *): xyz receives its three vertices
+ * x y z, positions times extent and z the height.  The signature is that of
+ * nl_obj_triangle (core/io_obj.h).  Thread-safe. */
+void nl_rank1_mesh_triangle(const void *mesh, size_t t, double xyz[9]);
 
 /* Linear interpolation of lattice values (and gradients, may be NULL) over
  * the periodic Delaunay triangles onto a W x W periodic image of the unit
- * square (pixel centres (i + 1/2)/W); outputs W*W doubles each. */
+ * square (pixel centres (i + 1/2)/W, row-major, x fastest); outputs W*W
+ * doubles each (gx, gy may be NULL; both needed for gradients).  Pixels no
+ * triangle covers keep their values.  NL_EINVAL: W = 0, f or img NULL, and
+ * those of nl_rank1_delaunay.  Thread-safe for distinct outputs. */
 int nl_rank1_rasterize(const nl_rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,
                     double *gx, double *gy);
 

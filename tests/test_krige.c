@@ -231,3 +231,35 @@ Test(krige, bit_reproducible_across_threads)
     nl_krige_plan_free(p), nl_model_free(m);
     free(pts), free(val), free(x), free(e[0]), free(e[1]), free(v[0]), free(v[1]);
 }
+
+/* nl_krige_eval_grid evaluates at the cell centres lo + (i + 1/2) h: it
+ * equals nl_krige_eval_block on those points bit for bit (the same code
+ * path), and nl_krige_eval to rounding (1e-12 of R(0)). */
+Test(krige, eval_grid_at_cell_centres)
+{
+    nl_model *m;
+    nl_krige_plan *p;
+    double pts[8] = {0.11, 0.23, 0.71, 0.35, 0.42, 0.87, 0.93, 0.94}, val[4] = {1.5, -0.5, 0.25, 2.385};
+    double lo[2] = {-0.2, 0.1};
+    size_t n[2] = {13, 9};
+    double h[2] = {1.4 / 13, 0.9 / 9};
+    cr_assert_eq(nl_model_parse("gauss:scale=0.3", &m), NL_OK);
+    cr_assert_eq(nl_krige_plan_alloc(m, 2, 4, pts, val, 0, 0, 0, &p), NL_OK);
+    nl_field *e = nl_field_alloc(2, n, h, NULL), *v = nl_field_alloc(2, n, h, NULL);
+    cr_assert_eq(nl_krige_eval_grid(p, lo, e, v), NL_OK);
+    double *x = malloc(2 * e->count * sizeof *x), *be = malloc(e->count * sizeof *be), *bv = malloc(e->count * sizeof *bv);
+    for (size_t q = 0; q < e->count; q++)
+        x[2 * q] = lo[0] + ((double)(q % 13) + 0.5) * e->h[0], x[2 * q + 1] = lo[1] + ((double)(q / 13) + 0.5) * e->h[1];
+    cr_assert_eq(nl_krige_eval_block(p, e->count, x, be, bv), NL_OK);
+    cr_assert_arr_eq(be, e->data, e->count * sizeof *be);
+    cr_assert_arr_eq(bv, v->data, e->count * sizeof *bv);
+    for (size_t q = 0; q < e->count; q++) {
+        double est, var;
+        cr_assert_eq(nl_krige_eval(p, x + 2 * q, &est, &var, NULL), NL_OK);
+        cr_assert_float_eq(e->data[q], est, 1e-12);
+        cr_assert_float_eq(v->data[q], var, 1e-12);
+    }
+    free(x), free(be), free(bv);
+    nl_field_free(e), nl_field_free(v);
+    nl_krige_plan_free(p), nl_model_free(m);
+}

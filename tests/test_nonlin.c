@@ -85,3 +85,54 @@ Test(nonlin, design_round_trip)
     cr_expect_gt(err, 0.05);
     nl_dist_free(d);
 }
+
+/* The predicted output ACF scales with r0: acf = r0 rho gives the
+ * covariance at rho (to rounding of the division), and the identity (a
+ * standard normal target: g(x) = x for unit input variance, c_1 = 1 and
+ * every other c_n ~ 0) passes rho through to 1e-9 (the quadrature's
+ * error). */
+Test(nonlin, output_acf)
+{
+    nl_dist *d;
+    nl_hermite he;
+    double rho[5] = {1, 0.7, 0.2385, -0.4, 0}, acf[5], out[5], id[5];
+    cr_assert_eq(nl_dist_parse("laplace", &d), 0);
+    cr_assert_eq(nl_hermite_expand(d, 24, &he), 0);
+    for (int i = 0; i < 5; i++)
+        acf[i] = 3.7 * rho[i];
+    nl_nonlin_output_acf(&he, acf, 5, 3.7, out);
+    for (int i = 0; i < 5; i++)
+        cr_assert_float_eq(out[i], nl_hermite_cov(&he, rho[i]), 1e-14);
+    nl_dist_free(d);
+    cr_assert_eq(nl_dist_parse("gauss", &d), 0);
+    cr_assert_eq(nl_hermite_expand(d, 8, &he), 0);
+    nl_nonlin_output_acf(&he, rho, 5, 1, id);
+    for (int i = 0; i < 5; i++)
+        cr_assert_float_eq(id[i], rho[i], 1e-9);
+    nl_dist_free(d);
+}
+
+/* nl_nonlin_verify through the identity shaping measures the input's own
+ * ACF: exp(-|t|/8) on 4096 samples, 16 realizations.  A realization has
+ * about 4096 / 16 independent stretches, so an ACF value has a standard
+ * error near sqrt(2 / 256) / sqrt(16) = 0.022; 0.1 is 4.5 of them. */
+Test(nonlin, verify_identity)
+{
+    nl_dist *d;
+    size_t n = 4096;
+    nl_field *S = nl_field_alloc(1, &n, NULL, NULL);
+    double meas[17], target[17];
+    for (size_t k = 0; k < n; k++) {
+        double f = (double)(k <= n / 2 ? k : n - k) / (double)n;
+        S->data[k] = 2 * 8.0 / (1 + 4 * M_PI * M_PI * 64 * f * f);  /* the Markov spectrum, scale 8 */
+    }
+    cr_assert_eq(nl_dist_parse("gauss", &d), 0);
+    cr_assert_eq(nl_nonlin_verify(S, d, 16, 17, meas), 0);
+    for (int i = 0; i < 17; i++) {
+        target[i] = exp(-i / 8.0);
+        cr_assert(fabs(meas[i] - target[i]) < 0.1, "lag %d: %g against %g", i, meas[i], target[i]);
+    }
+    cr_assert_eq(nl_nonlin_max_deviation(meas, target, 17, 1, 1) < 0.1, 1);
+    cr_assert_eq(nl_nonlin_max_deviation(target, target, 17, 1, 1), 0);
+    nl_field_free(S), nl_dist_free(d);
+}

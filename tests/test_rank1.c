@@ -204,3 +204,73 @@ Test(rank1, realised_covariance_matches_target)
     cr_expect_leq(zmax, zcrit);
     free(bin), free(c), free(f), nl_rank1_free(&L);
 }
+
+/* nl_rank1_fibonacci_index inverts F_k exactly for every index the 64-bit
+ * recurrence reaches below the loop bound, and refuses the neighbours. */
+Test(rank1, fibonacci_index)
+{
+    unsigned long long a = 1, b = 2;  /* F_2, F_3 */
+    for (int k = 3; k < 60; k++) {
+        cr_assert_eq(nl_rank1_fibonacci_index((size_t)b), k, "F_%d = %llu", k, b);
+        if (k >= 5)
+            cr_assert_eq(nl_rank1_fibonacci_index((size_t)b + 1), 0, "F_%d + 1", k);
+        unsigned long long c = a + b;
+        a = b, b = c;
+    }
+    cr_assert_eq(nl_rank1_fibonacci_index(0), 0);
+    cr_assert_eq(nl_rank1_fibonacci_index(1), 0, "1 = F_1 = F_2 is below the smallest lattice");
+    cr_assert_eq(nl_rank1_fibonacci_index(4), 0);
+}
+
+/* The mesh's 2N triangles tile the torus: each has area extent^2 / (2N)
+ * with one orientation (so together they cover the side-extent square
+ * once), and every vertex, wrapped, is a lattice point carrying its
+ * height.  Tolerances: a few ulps of the coordinates, which are products
+ * of two roundings. */
+Test(rank1, mesh_tiles_the_torus)
+{
+    nl_rank1_lattice L;
+    nl_rank1_mesh me;
+    const double E = 2.385;
+    cr_assert_eq(nl_rank1_fibonacci(11, &L), NL_OK);  /* N = 89 */
+    size_t N = L.N;
+    double *f = malloc(N * sizeof *f);
+    for (size_t n = 0; n < N; n++)
+        f[n] = 0.5 + (double)n;
+    cr_assert_eq(nl_rank1_mesh_init(&L, E, f, &me), NL_OK);
+    for (size_t t = 0; t < 2 * N; t++) {
+        double v[9];
+        nl_rank1_mesh_triangle(&me, t, v);
+        double area = 0.5 * ((v[3] - v[0]) * (v[7] - v[1]) - (v[6] - v[0]) * (v[4] - v[1]));
+        cr_assert_float_eq(area, E * E / (double)(2 * N), 1e-12, "triangle %zu: area %g", t, area);
+        for (int k = 0; k < 3; k++) {
+            size_t id = (size_t)(v[3 * k + 2] - 0.5 + 0.25);
+            double x[2];
+            cr_assert(id < N);
+            nl_rank1_point(&L, id, x);
+            for (int a = 0; a < 2; a++) {
+                double w = fmod(v[3 * k + a], E);
+                if (w < 0)
+                    w += E;
+                double d = fabs(w - x[a] * E);
+                cr_assert(d < 1e-12 || fabs(d - E) < 1e-12, "triangle %zu vertex %d axis %d: %g vs %g", t, k, a, w,
+                          x[a] * E);
+            }
+        }
+    }
+    free(f);
+    nl_rank1_free(&L);
+}
+
+/* |k_m| from the stored wave vectors. */
+Test(rank1, wave_norm)
+{
+    nl_rank1_lattice L;
+    long g[3] = {1, 7, 49};
+    cr_assert_eq(nl_rank1_generator(101, 3, g, &L), NL_OK);
+    for (size_t m = 0; m < L.N; m++) {
+        const long *k = L.k + 3 * m;
+        cr_assert_eq(nl_rank1_wave_norm(&L, m), sqrt((double)(k[0] * k[0] + k[1] * k[1] + k[2] * k[2])));
+    }
+    nl_rank1_free(&L);
+}

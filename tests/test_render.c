@@ -1,6 +1,7 @@
 /* The perspective renderer: projection, occlusion, shadows and refusals,
  * checked on fields whose pictures are known. */
 #include "../core/field.h"
+#include "../render/shade.h"
 #include "../render/terrain.h"
 
 #include <criterion/criterion.h>
@@ -119,4 +120,64 @@ Test(render, refuses_bad_views)
     cr_expect_neq(nl_render_terrain(f, &v, rgb), 0);
     cr_expect_neq(nl_render_terrain(g, &v, rgb), 0);
     nl_field_free(f), nl_field_free(g);
+}
+
+/* Lambert's law on gradients: a level surface returns ambient plus the
+ * light's cosine to the vertical; a face turned toward the light returns
+ * 1 and one turned away returns the ambient.  Exact up to a few ulps. */
+Test(render, shade_gradients_lambert)
+{
+    const double l[3] = {-0.74, -0.43, 0.5}, ln = sqrt(0.74 * 0.74 + 0.43 * 0.43 + 0.25);
+    /* the gradient whose normal is l / |l|: (-l0 / l2, -l1 / l2) */
+    double gx[3] = {0, -l[0] / l[2], l[0] / l[2] * 40}, gy[3] = {0, -l[1] / l[2], l[1] / l[2] * 40}, out[3];
+    nl_render_shade_gradients(3, gx, gy, l, 0.1, out);
+    cr_assert_float_eq(out[0], 0.1 + 0.9 * l[2] / ln, 1e-15);
+    cr_assert_float_eq(out[1], 1, 1e-15);
+    cr_assert_eq(out[2], 0.1);
+}
+
+/* Relief of the tilted plane z = a x: central and one-sided differences
+ * both give the gradient a zscale / h exactly, so every sample is
+ * max(0, (-g cos el cos az + sin el) / sqrt(g^2 + 1)); to 1e-15. */
+Test(render, relief_of_a_plane)
+{
+    size_t n[2] = {7, 5};
+    double h[2] = {0.5, 2}, a = 0.3, zs = 1.7, az = 20, el = 35;
+    nl_field *x = nl_field_alloc(2, n, h, NULL), *s = nl_field_alloc(2, n, h, NULL);
+    for (size_t j = 0; j < 5; j++)
+        for (size_t i = 0; i < 7; i++)
+            x->data[j * 7 + i] = a * (double)i * h[0];
+    cr_assert_eq(nl_render_relief(x, az, el, zs, s), 0);
+    double g = a * zs, r = M_PI / 180;
+    double want = fmax(0, (-g * cos(el * r) * cos(az * r) + sin(el * r)) / sqrt(g * g + 1));
+    for (size_t q = 0; q < 35; q++)
+        cr_assert_float_eq(s->data[q], want, 1e-15, "sample %zu", q);
+    nl_field_free(x), nl_field_free(s);
+}
+
+/* Nearest-sample resampling to twice the size repeats every sample in a
+ * 2 x 2 block; to the same size it copies. */
+Test(render, nearest_resampling)
+{
+    double src[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9}, dst[36], same[9];
+    nl_render_nearest(3, src, 6, dst);
+    for (size_t y = 0; y < 6; y++)
+        for (size_t x = 0; x < 6; x++)
+            cr_assert_eq(dst[y * 6 + x], src[(y / 2) * 3 + x / 2]);
+    nl_render_nearest(3, src, 3, same);
+    cr_assert_arr_eq(same, src, sizeof src);
+}
+
+/* The default grey range is the mean -+ 3 sd, the sample sd (divisor
+ * n - 1): for the samples -1, 1, 1, -1 that is -+ 3 sqrt(4/3). */
+Test(render, grey_range)
+{
+    size_t n[2] = {2, 2};
+    nl_field *x = nl_field_alloc(2, n, NULL, NULL);
+    double lo, hi;
+    x->data[0] = x->data[3] = -1, x->data[1] = x->data[2] = 1;
+    cr_assert_eq(nl_render_grey_range(x, &lo, &hi), 0);
+    cr_assert_float_eq(hi - lo, 6 * sqrt(4.0 / 3.0), 1e-12, "%g", hi - lo);
+    cr_assert_float_eq(lo + hi, 0, 1e-15);
+    nl_field_free(x);
 }

@@ -1,10 +1,11 @@
-/* Model spectra at integer wave vectors. */
-#include "rank1_spec.h"
+/* Model spectra at integer wave vectors (Keller 2001, eq. 13). */
+#include "rank1_model.h"
 #include "../core/nl_error.h"
 
 #include <math.h>
+#include <stdlib.h>
 
-double cli_rank1_model_spectrum(const long *k, int s, void *ctx)
+double nl_rank1_model_spectrum(const long *k, int s, void *ctx)
 {
     const nl_rank1_model_ctx *c = ctx;
     double f[3] = {0, 0, 0}, f2 = 0;
@@ -19,7 +20,7 @@ double cli_rank1_model_spectrum(const long *k, int s, void *ctx)
     return v / pow(c->extent, s);
 }
 
-int cli_rank1_model_check(const nl_model *m, int s)
+int nl_rank1_model_check(const nl_model *m, int s)
 {
     if (nl_model_is_spectral(m)) {
         if (s > 3)
@@ -31,4 +32,22 @@ int cli_rank1_model_check(const nl_model *m, int s)
         return NL_ERROR(NL_EINVAL, "%s: rank-1 lattice synthesis needs a spectrum or an isotropic R (its Hankel "
                         "transform, eq. 13)", nl_model_spec(m));
     return NL_OK;
+}
+
+int nl_rank1_model_synthesize(const nl_rank1_lattice *L, const nl_model *m, double extent, uint64_t seed, double *f,
+                              double *grad, double *imag)
+{
+    nl_rank1_model_ctx ctx = {m, L->s, extent};
+    double *coef;
+    int st;
+    if ((st = nl_rank1_model_check(m, L->s)))
+        return st;
+    if (!(extent > 0) || !isfinite(extent))
+        return NL_ERROR(NL_EINVAL, "extent: expected a positive finite length, got %g", extent);
+    if (!(coef = malloc(2 * L->N * sizeof *coef)))
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu coefficients", L->N);
+    if (!(st = nl_rank1_coefficients(L, nl_rank1_model_spectrum, &ctx, seed, coef)))
+        st = nl_rank1_synthesize(L, coef, extent, f, grad, imag);
+    free(coef);
+    return st;
 }

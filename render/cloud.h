@@ -14,8 +14,8 @@
  * L += T sigma rho ds (sun T_sun(p) phase + ambient), T *= exp(-sigma rho ds),
  * with the Henyey-Greenstein phase (g = 0.3); the background is a vertical
  * sky gradient attenuated by T.  Single scattering only. */
-#ifndef NL_SYNTH_CLOUD_H
-#define NL_SYNTH_CLOUD_H
+#ifndef NL_RENDER_CLOUD_H
+#define NL_RENDER_CLOUD_H
 
 #include "../core/model.h"
 
@@ -41,9 +41,20 @@ typedef struct {
     size_t grid;              /* G */
 } nl_cloud_scene;
 
-/* Render into rgb (width * height * 3 bytes) and luminance (may be NULL,
- * width * height doubles).  progress (may be NULL) is called with the
- * fraction done. */
+/* Render scene s into rgb (width * height * 3 bytes, rows top to bottom,
+ * R G B per pixel) and lum (may be NULL: width * height doubles, the mean of
+ * the tone-mapped R, G, B before quantisation, in [0, 1.6)).  Both buffers
+ * are the caller's.  progress (may be NULL) is called with the fraction of
+ * rows done, from inside an OpenMP critical section (one call at a time, in
+ * any thread).  s, its points and models are only read.
+ * Errors: NL_EINVAL for a scene without pixels, data points or models, a
+ * grid or noise grid below 2 samples, an empty box, a threshold outside
+ * [0, 1), a period <= 0, a fov outside (0, 180) degrees, or a zero sun
+ * direction, and those of the kriging plan of the shape covariance
+ * (analysis/krige.h); NL_ENOTPD for a noise model that is not positive
+ * definite on its grid (synth/fft.h); NL_ENOMEM.
+ * Thread safety: reentrant for models that are thread-safe (not expr:);
+ * runs its own OpenMP loops. */
 int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double));
 
 #endif

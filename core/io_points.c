@@ -1,0 +1,123 @@
+/* Scattered data points from TSV. */
+#include "io_points.h"
+#include "nl_error.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void nl_points_free(nl_points *p)
+{
+    if (!p)
+        return;
+    free(p->pts), free(p->val), free(p);
+}
+
+/* Columns of the header line (tabs + 1). */
+static size_t columns(const char *line)
+{
+    size_t cols = 1;
+    while ((line = strchr(line, '\t')))
+        cols++, line++;
+    return cols;
+}
+
+/* One row of cols numbers into v; 0 when it is not that. */
+static int row(const char *line, size_t cols, double *v)
+{
+    const char *p = line;
+    char *end;
+    for (size_t c = 0; c < cols; c++) {
+        double x = strtod(p, &end);
+        if (end == p || !isfinite(x) || (c + 1 < cols && *end != '\t') ||
+            (c + 1 == cols && *end && *end != '\n' && *end != '\r'))
+            return 0;
+        v[c] = x;
+        p = end + 1;
+    }
+    return 1;
+}
+
+/* The rows of fp after the header: *raw (n * cols) and *n. */
+static int read_rows(FILE *fp, const char *path, size_t cols, size_t lineno, double **raw, size_t *n)
+{
+    char line[4096];
+    size_t cap = 256;
+    double *v = malloc(cap * cols * sizeof *v);
+    int full = 0;
+    *n = 0;
+    while (v && !full && fgets(line, sizeof line, fp)) {
+        lineno++;
+        if (line[0] == '#' || line[0] == '\n')
+            continue;
+        if (*n == cap) {
+            double *w = realloc(v, 2 * cap * cols * sizeof *v);
+            if (!w) {
+                full = 1;
+                break;
+            }
+            v = w, cap *= 2;
+        }
+        if (!row(line, cols, v + *n * cols)) {
+            free(v);
+            return NL_ERROR(NL_EINPUT, "%s:%zu: expected %zu tab-separated finite numbers", path, lineno, cols);
+        }
+        (*n)++;
+    }
+    if (!v || full || ferror(fp)) {
+        free(v);
+        return ferror(fp) ? NL_ERROR(NL_EINPUT, "%s: read error", path) : NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    *raw = v;
+    return NL_OK;
+}
+
+/* Split rows x [y [z]] value into coordinates and values. */
+static int split(double *raw, size_t n, size_t cols, nl_points **out)
+{
+    nl_points *p = calloc(1, sizeof *p);
+    int dim = (int)cols - 1;
+    if (!p || !(p->pts = malloc(n * (size_t)dim * sizeof *p->pts)) || !(p->val = malloc(n * sizeof *p->val))) {
+        nl_points_free(p);
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu points", n);
+    }
+    p->dim = dim, p->n = n;
+    for (size_t i = 0; i < n; i++) {
+        for (int a = 0; a < dim; a++)
+            p->pts[i * dim + a] = raw[i * cols + a];
+        p->val[i] = raw[i * cols + dim];
+    }
+    *out = p;
+    return NL_OK;
+}
+
+int nl_points_read(const char *path, nl_points **out)
+{
+    FILE *fp = fopen(path, "r");
+    char line[4096];
+    size_t lineno = 0, cols = 0, n;
+    double *raw = NULL;
+    int st;
+    *out = NULL;
+    if (!fp)
+        return NL_ERROR(NL_EINPUT, "cannot open \"%s\": %s", path, strerror(errno));
+    while (!cols && fgets(line, sizeof line, fp)) {
+        lineno++;
+        if (line[0] != '#' && line[0] != '\n')
+            cols = columns(line);
+    }
+    if (!cols)
+        st = NL_ERROR(NL_EINPUT, "%s: expected at least one data row", path);
+    else if (cols < 2 || cols > 4)
+        st = NL_ERROR(NL_EINPUT, "%s:%zu: expected a header of 2 to 4 columns (x [y [z]] value), got %zu", path,
+                      lineno, cols);
+    else if (!(st = read_rows(fp, path, cols, lineno, &raw, &n)) && !n)
+        st = NL_ERROR(NL_EINPUT, "%s: expected at least one data row", path);
+    fclose(fp);
+    if (!st)
+        st = split(raw, n, cols, out);
+    free(raw);
+    return st;
+}

@@ -1,0 +1,27 @@
+/* Scattered data points from a TSV file: a header line of 2 to 4
+ * tab-separated column names (x [y [z]] value), then one row of as many
+ * tab-separated finite numbers per point; lines starting with '#' and
+ * empty lines are skipped (lines are read up to 4095 characters). */
+#ifndef NL_IO_POINTS_H
+#define NL_IO_POINTS_H
+
+#include <stddef.h>
+
+typedef struct {
+    int dim;      /* coordinates per point, 1 to 3 */
+    size_t n;     /* points, >= 1 */
+    double *pts;  /* n * dim coordinates, point i at pts[i * dim] */
+    double *val;  /* n values */
+} nl_points;
+
+/* Read path into a new nl_points (*out; NULL on failure), released by
+ * nl_points_free.  Errors: NL_EINPUT when the file cannot be opened, the
+ * header has fewer than 2 or more than 4 columns, a row is not that many
+ * finite numbers, or there is no row (the message names file and line);
+ * NL_ENOMEM.  Thread-safe. */
+int nl_points_read(const char *path, nl_points **out);
+
+/* Free p and its arrays (NULL is a no-op). */
+void nl_points_free(nl_points *p);
+
+#endif

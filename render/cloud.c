@@ -1,0 +1,285 @@
+/* Clouds (Stam and Fiume 1991): kriged shape + noise density, light volume,
+ * ray marching. */
+#include "cloud.h"
+#include "../analysis/krige.h"
+#include "../core/nl_error.h"
+#include "../synth/fft.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    size_t n[3];       /* samples per axis */
+    double lo[3], d[3];/* origin and step */
+    double *v;         /* values, x fastest */
+    int periodic;      /* wrap instead of clamp */
+} vol;
+
+static double vol_at(const vol *g, const double *p)
+{
+    double s = 0, t[3];
+    long i0[3];
+    for (int a = 0; a < 3; a++) {
+        double u = (p[a] - g->lo[a]) / g->d[a];
+        if (!g->periodic)
+            u = fmin(fmax(u, 0), (double)g->n[a] - 1.000001);
+        i0[a] = (long)floor(u);
+        t[a] = u - (double)i0[a];
+    }
+    for (int c = 0; c < 8; c++) {
+        double w = 1;
+        size_t idx[3];
+        for (int a = 0; a < 3; a++) {
+            long i = i0[a] + ((c >> a) & 1);
+            if (g->periodic)
+                i = ((i % (long)g->n[a]) + (long)g->n[a]) % (long)g->n[a];
+            idx[a] = (size_t)i;
+            w *= (c >> a) & 1 ? t[a] : 1 - t[a];
+        }
+        s += w * g->v[(idx[2] * g->n[1] + idx[1]) * g->n[0] + idx[0]];
+    }
+    return s;
+}
+
+typedef struct {
+    const nl_cloud_scene *s;
+    vol shape, noise, light;
+} ctx;
+
+static double density(const ctx *c, const double *p)
+{
+    const nl_cloud_scene *s = c->s;
+    for (int a = 0; a < 3; a++)
+        if (p[a] < s->lo[a] || p[a] > s->hi[a])
+            return 0;
+    double k = vol_at(&c->shape, p);
+    if (k <= 0)
+        return 0;
+    double v = k * (1 + s->amplitude * vol_at(&c->noise, p)) - s->threshold;
+    return v > 0 ? v / (1 - s->threshold) : 0;
+}
+
+/* ray-box intersection: [t0, t1] inside, or 0 */
+static int box_hit(const nl_cloud_scene *s, const double *o, const double *d, double *t0, double *t1)
+{
+    double a = 0, b = INFINITY;
+    for (int k = 0; k < 3; k++) {
+        if (fabs(d[k]) < 1e-15) {
+            if (o[k] < s->lo[k] || o[k] > s->hi[k])
+                return 0;
+            continue;
+        }
+        double u = (s->lo[k] - o[k]) / d[k], v = (s->hi[k] - o[k]) / d[k];
+        a = fmax(a, fmin(u, v)), b = fmin(b, fmax(u, v));
+    }
+    *t0 = a, *t1 = b;
+    return b > a;
+}
+
+static void normalize(double *v)
+{
+    double n = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int a = 0; a < 3; a++)
+        v[a] /= n;
+}
+
+/* The global shape: simple kriging (mean 0) of the scene's points on a G^3
+ * grid over the box; *step receives the smallest grid step. */
+static int shape_volume(const nl_cloud_scene *s, vol *v, double *step)
+{
+    nl_krige_plan *kp;
+    size_t G = s->grid;
+    double *pts = malloc(s->npoints * 3 * sizeof *pts), *val = malloc(s->npoints * sizeof *val);
+    int st;
+    if (!pts || !val) {
+        free(pts), free(val);
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    for (size_t i = 0; i < s->npoints; i++)
+        memcpy(pts + 3 * i, s->points + 4 * i, 3 * sizeof *pts), val[i] = s->points[4 * i + 3];
+    st = nl_krige_plan_alloc(s->shape, 3, s->npoints, pts, val, 1, 0, 0, &kp);
+    free(pts), free(val);
+    if (st)
+        return st;
+    *step = 1e300;
+    for (int a = 0; a < 3; a++) {
+        v->n[a] = G, v->lo[a] = s->lo[a], v->d[a] = (s->hi[a] - s->lo[a]) / (double)(G - 1);
+        *step = fmin(*step, v->d[a]);
+    }
+    v->v = malloc(G * G * G * sizeof(double));
+    if (!v->v) {
+        nl_krige_plan_free(kp);
+        return NL_ERROR(NL_ENOMEM, "out of memory for the shape grid");
+    }
+    for (size_t q = 0; q < G * G * G; q++) {
+        double p[3] = {s->lo[0] + (double)(q % G) * v->d[0], s->lo[1] + (double)((q / G) % G) * v->d[1],
+                       s->lo[2] + (double)(q / (G * G)) * v->d[2]};
+        nl_krige_eval(kp, p, &v->v[q], NULL, NULL);
+    }
+    nl_krige_plan_free(kp);
+    return NL_OK;
+}
+
+/* The small-scale noise: a periodic FFT field of unit variance, g^3 samples
+ * over one period. */
+static int noise_volume(const nl_cloud_scene *s, vol *v)
+{
+    size_t g = s->noise_grid, n[3] = {g, g, g};
+    double h[3] = {s->period / (double)g, s->period / (double)g, s->period / (double)g}, zero[3] = {0, 0, 0};
+    nl_synth_fft_plan *fp;
+    int st;
+    nl_field *f = nl_field_alloc(3, n, h, &st);
+    if (!f || (st = nl_synth_fft_plan_alloc(s->noise, 3, n, h, 0, &fp))) {
+        nl_field_free(f);
+        return st;
+    }
+    nl_synth_fft_execute(fp, s->seed, f);
+    nl_synth_fft_plan_free(fp);
+    double sd = sqrt(nl_model_acf(s->noise, 3, zero));
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] /= sd;
+    for (int a = 0; a < 3; a++)
+        v->n[a] = g, v->lo[a] = 0, v->d[a] = h[a];
+    v->periodic = 1;
+    v->v = malloc(f->count * sizeof(double));
+    if (!v->v) {
+        nl_field_free(f);
+        return NL_ERROR(NL_ENOMEM, "out of memory for the noise volume");
+    }
+    memcpy(v->v, f->data, f->count * sizeof(double));
+    nl_field_free(f);
+    return NL_OK;
+}
+
+/* The light volume: transmittance toward the sun from every shape grid
+ * point, marched with `step`. */
+static int light_volume(ctx *c, const double *sun, double step)
+{
+    const nl_cloud_scene *s = c->s;
+    size_t G = s->grid;
+    c->light = c->shape;
+    c->light.v = malloc(G * G * G * sizeof(double));
+    if (!c->light.v)
+        return NL_ERROR(NL_ENOMEM, "out of memory for the light volume");
+#pragma omp parallel for schedule(dynamic, 16)
+    for (size_t q = 0; q < G * G * G; q++) {
+        double p[3] = {s->lo[0] + (double)(q % G) * c->shape.d[0], s->lo[1] + (double)((q / G) % G) * c->shape.d[1],
+                       s->lo[2] + (double)(q / (G * G)) * c->shape.d[2]}, t0, t1, tau = 0;
+        if (box_hit(s, p, sun, &t0, &t1))
+            for (double t = step * 0.5; t < t1; t += step) {
+                double x[3] = {p[0] + t * sun[0], p[1] + t * sun[1], p[2] + t * sun[2]};
+                tau += density(c, x) * step;
+            }
+        c->light.v[q] = exp(-s->extinction * tau);
+    }
+    return NL_OK;
+}
+
+typedef struct {
+    double f[3], r[3], u[3];  /* forward, right, up (unit) */
+    double tanh_, aspect;     /* tan(fov / 2), width / height */
+    double sun[3];            /* unit direction toward the sun */
+    double step;              /* march step */
+} camera;
+
+/* One pixel: march the view ray, add single scattering, then the sky;
+ * rgb[3] bytes, *lu the luminance. */
+static void pixel(const ctx *c, const camera *cm, size_t x, size_t y, unsigned char *rgb, double *lu)
+{
+    const nl_cloud_scene *s = c->s;
+    const double g_hg = 0.3, sunc[3] = {1.0, 0.96, 0.88}, amb[3] = {0.35, 0.42, 0.55}, step = cm->step;
+    const double *f = cm->f, *r = cm->r, *u = cm->u, *sun = cm->sun;
+    double sx = (2 * ((double)x + 0.5) / (double)s->width - 1) * cm->tanh_ * cm->aspect;
+    double sy = (1 - 2 * ((double)y + 0.5) / (double)s->height) * cm->tanh_, d[3], t0, t1, T = 1, L[3] = {0, 0, 0};
+    for (int a = 0; a < 3; a++)
+        d[a] = f[a] + sx * r[a] + sy * u[a];
+    normalize(d);
+    double mu = d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2];
+    double phase = (1 - g_hg * g_hg) / pow(1 + g_hg * g_hg - 2 * g_hg * mu, 1.5);
+    if (box_hit(s, s->cam, d, &t0, &t1))
+        for (double t = t0 + step * 0.5; t < t1 && T > 1e-3; t += step) {
+            double p[3] = {s->cam[0] + t * d[0], s->cam[1] + t * d[1], s->cam[2] + t * d[2]};
+            double rho = density(c, p);
+            if (rho <= 0)
+                continue;
+            double a = s->extinction * rho * step, ls = vol_at(&c->light, p);
+            for (int k = 0; k < 3; k++)
+                L[k] += T * a * (sunc[k] * ls * phase * 1.4 + amb[k]);
+            T *= exp(-a);
+        }
+    /* sky: deeper blue upward */
+    double h = fmax(0, fmin(1, 0.5 + d[1]));
+    double sky[3] = {0.55 - 0.3 * h, 0.7 - 0.25 * h, 0.95 - 0.1 * h};
+    *lu = 0;
+    for (int k = 0; k < 3; k++) {
+        double v = L[k] + T * sky[k];
+        v = v / (1 + v) * 1.6;  /* soft tone map */
+        rgb[k] = (unsigned char)lrint(255 * fmin(1, fmax(0, v)));
+        *lu += v / 3;
+    }
+}
+
+static void camera_setup(const nl_cloud_scene *s, camera *cm)
+{
+    double *f = cm->f, *r = cm->r, *u = cm->u;
+    f[0] = s->look[0] - s->cam[0], f[1] = s->look[1] - s->cam[1], f[2] = s->look[2] - s->cam[2];
+    normalize(f);
+    r[0] = -f[2], r[1] = 0, r[2] = f[0];  /* forward x (0, 1, 0) */
+    normalize(r);
+    u[0] = r[1] * f[2] - r[2] * f[1], u[1] = r[2] * f[0] - r[0] * f[2], u[2] = r[0] * f[1] - r[1] * f[0];
+    cm->tanh_ = tan(s->fov * M_PI / 360), cm->aspect = (double)s->width / (double)s->height;
+}
+
+static int check_scene(const nl_cloud_scene *s)
+{
+    if (!s->width || !s->height || s->grid < 2 || s->noise_grid < 2 || !s->npoints || !s->points || !s->shape ||
+        !s->noise)
+        return NL_ERROR(NL_EINVAL, "cloud: expected a picture, grids of at least 2 samples, data points and two "
+                        "models");
+    for (int a = 0; a < 3; a++)
+        if (!(s->hi[a] > s->lo[a]))
+            return NL_ERROR(NL_EINVAL, "cloud: expected each lower box corner coordinate below the upper");
+    if (!(s->threshold >= 0 && s->threshold < 1) || !(s->period > 0) || !(s->fov > 0 && s->fov < 180) ||
+        (s->sun[0] == 0 && s->sun[1] == 0 && s->sun[2] == 0))
+        return NL_ERROR(NL_EINVAL, "cloud: expected 0 <= threshold < 1, a positive period, 0 < fov < 180 and a "
+                        "non-zero sun direction");
+    return NL_OK;
+}
+
+int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double))
+{
+    ctx c;
+    camera cm;
+    int st;
+    if ((st = check_scene(s)))
+        return st;
+    memset(&c, 0, sizeof c);
+    c.s = s;
+    memcpy(cm.sun, s->sun, sizeof cm.sun);
+    normalize(cm.sun);
+    if ((st = shape_volume(s, &c.shape, &cm.step)) || (st = noise_volume(s, &c.noise)) ||
+        (cm.step *= 0.5, st = light_volume(&c, cm.sun, cm.step))) {
+        free(c.shape.v), free(c.noise.v);
+        return st;
+    }
+    camera_setup(s, &cm);
+    size_t done = 0;
+#pragma omp parallel for schedule(dynamic, 4)
+    for (size_t y = 0; y < s->height; y++) {
+        for (size_t x = 0; x < s->width; x++) {
+            double lu;
+            pixel(&c, &cm, x, y, rgb + 3 * (y * s->width + x), &lu);
+            if (lum)
+                lum[y * s->width + x] = lu;
+        }
+        if (progress) {
+#pragma omp atomic
+            done++;
+#pragma omp critical
+            progress((double)done / (double)s->height);
+        }
+    }
+    free(c.shape.v), free(c.noise.v), free(c.light.v);
+    return NL_OK;
+}
