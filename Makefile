@@ -61,7 +61,7 @@ $(LIB_OBJ): CFLAGS += -fPIC -fno-semantic-interposition
 $(LIB_OBJ): Makefile
 
 $(LIB): $(LIB_OBJ)
-	$(AR) rcs $@ $^
+	rm -f $@ && $(AR) rcs $@ $^
 
 # The shared library records its dependencies (DT_NEEDED), so a program
 # links it with -lnoiselab alone.
