@@ -93,7 +93,7 @@ test: all $(BUILD)/tests/run $(EXP_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
-	CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) sh tools/test-install.sh
+	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) sh tools/test-install.sh
 
 # DESTDIR, PREFIX, LIBDIR, INCLUDEDIR, MANDIR, DOCDIR, PCDIR as usual, and
 # INSTALL_BINDIR (BINDIR is where the build puts the program).

@@ -111,7 +111,7 @@ check "installed headers include only installed headers" includes_installed
 check "noiselab.h includes every installed header" front_door_complete
 check "each installed header compiles on its own" self_contained
 check "noiselab.h compiles as C++ (extern \"C\")" sh -c "printf '#include <noiselab.h>\nint main() { return nl_version() == 0; }\n' | \
-    ${CXX:-g++} -Wall -Werror -x c++ - $cflags -o '$tmp/cxx' \$(pkg-config --libs noiselab) && LD_LIBRARY_PATH='$libdir' '$tmp/cxx'"
+    ${CXX:-g++} $EXAMPLE_CFLAGS -Wall -Werror -x c++ - $cflags -o '$tmp/cxx' \$(pkg-config --libs noiselab) && LD_LIBRARY_PATH='$libdir' '$tmp/cxx'"
 check "man -l renders noiselab(1) without warnings" sh -c "MANWIDTH=80 man --warnings -l '$root$prefix/share/man/man1/noiselab.1' \
     2>'$tmp/man.err' | grep -q 'noiselab bench' && ! test -s '$tmp/man.err' || { cat '$tmp/man.err'; false; }"
 check "man noiselab finds it with MANPATH" sh -c "test \"\$(MANPATH='$root$prefix/share/man' man -w noiselab)\" = '$root$prefix/share/man/man1/noiselab.1'"
