@@ -38,6 +38,9 @@ INCLUDEDIR ?= $(PREFIX)/include
 MANDIR    ?= $(PREFIX)/share/man
 DOCDIR    ?= $(PREFIX)/share/doc/noiselab
 PCDIR     ?= $(LIBDIR)/pkgconfig
+# noiselab.pc names the folders under PREFIX relative to it (${prefix}/lib).
+PC_LIBDIR  = $(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))
+PC_INCLUDEDIR = $(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))
 # Public headers: every module header but the *_internal.h ones.
 PUB_HDR   := $(filter-out %_internal.h,$(wildcard core/*.h synth/*.h analysis/*.h render/*.h))
 
@@ -109,7 +112,7 @@ install: all
 	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libnoiselab.so
 	install -m 644 include/noiselab.h $(DESTDIR)$(INCLUDEDIR)/noiselab.h
 	for h in $(PUB_HDR); do install -m 644 $$h $(DESTDIR)$(INCLUDEDIR)/noiselab/$$h || exit 1; done
-	sed -e 's|@PREFIX@|$(PREFIX)|; s|@LIBDIR@|$(LIBDIR)|; s|@INCLUDEDIR@|$(INCLUDEDIR)|' \
+	sed -e 's|@PREFIX@|$(PREFIX)|; s|@LIBDIR@|$(PC_LIBDIR)|; s|@INCLUDEDIR@|$(PC_INCLUDEDIR)|' \
 	    -e 's|@VERSION@|$(VERSION)|; s|@LIBS_PRIVATE@|-fopenmp $(LDLIBS)|' noiselab.pc.in > $(DESTDIR)$(PCDIR)/noiselab.pc
 	install -m 644 $(MAN) $(DESTDIR)$(MANDIR)/man1/noiselab.1
 	install -m 644 examples/*.c $(DESTDIR)$(DOCDIR)/examples/
