@@ -125,8 +125,8 @@ uninstall:
 	    $(DESTDIR)$(MANDIR)/man1/noiselab.1 $(DESTDIR)$(INCLUDEDIR)/noiselab.h \
 	    $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,$(PUB_HDR)) \
 	    $(addprefix $(DESTDIR)$(DOCDIR)/examples/,$(notdir $(wildcard examples/*.c)))
-	-rmdir $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render) $(DESTDIR)$(INCLUDEDIR)/noiselab \
-	    $(DESTDIR)$(DOCDIR)/examples $(DESTDIR)$(DOCDIR) 2>/dev/null
+	rmdir $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render) $(DESTDIR)$(INCLUDEDIR)/noiselab \
+	    $(DESTDIR)$(DOCDIR)/examples $(DESTDIR)$(DOCDIR) 2>/dev/null || true
 
 # Every experiment writes its data, picture and verdict into paper-figures/.
 # Exemplar images from Debian packages' data (python3-skimage, gimp-data; not committed).
