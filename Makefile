@@ -1,8 +1,11 @@
-# noiselab: `make` builds bin/noiselab and build/libnoiselab.a; `make test`
-# runs the tests; `make figures` reproduces the paper figures.  Every target
-# first installs the missing Debian packages of deps.txt.
+# noiselab: `make` builds bin/noiselab, build/libnoiselab.a and the shared
+# library; `make test` runs the tests; `make figures` reproduces the paper
+# figures; `make install` installs.  Every target first installs the missing
+# Debian packages of deps.txt.
 
-VERSION   := 0.1.0
+# The version is written once, in core/version.h.
+VERSION   := $(shell sed -n 's/^\#define NL_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\)$$/\2/p' core/version.h | paste -sd.)
+MAJOR     := $(firstword $(subst ., ,$(VERSION)))
 CC        ?= gcc
 OPT       ?= -O2 -g
 CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
@@ -12,20 +15,38 @@ BUILD     := build
 
 LIB_SRC   := $(wildcard core/*.c synth/*.c analysis/*.c render/*.c)
 CLI_SRC   := $(wildcard cli/*.c)
+BENCH_SRC := $(wildcard bench/*.c)
 TEST_SRC  := $(wildcard tests/*.c)
 EXP_SRC   := $(wildcard experiments/*.c)
 EXP_BIN   := $(EXP_SRC:%.c=$(BUILD)/%)
 LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
-CLI_OBJ   := $(CLI_SRC:%.c=$(BUILD)/%.o)
+CLI_OBJ   := $(CLI_SRC:%.c=$(BUILD)/%.o) $(BENCH_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ  := $(TEST_SRC:%.c=$(BUILD)/%.o)
 LIB       := $(BUILD)/libnoiselab.a
+SONAME    := libnoiselab.so.$(MAJOR)
+SOLIB     := $(BUILD)/libnoiselab.so.$(VERSION)
+MAN       := $(BUILD)/noiselab.1
 BINDIR    ?= bin
 BIN       := $(BINDIR)/noiselab
 DEPS_OK   := $(BUILD)/.deps-ok
 
-.PHONY: all deps test figures experiments bench asan fuzz clean
+# Where `make install` puts things (DESTDIR is prepended to each).
+PREFIX    ?= /usr/local
+INSTALL_BINDIR ?= $(PREFIX)/bin
+LIBDIR    ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+MANDIR    ?= $(PREFIX)/share/man
+DOCDIR    ?= $(PREFIX)/share/doc/noiselab
+PCDIR     ?= $(LIBDIR)/pkgconfig
+# noiselab.pc names the folders under PREFIX relative to it (${prefix}/lib).
+PC_LIBDIR  = $(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))
+PC_INCLUDEDIR = $(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))
+# Public headers: every module header but the *_internal.h ones.
+PUB_HDR   := $(filter-out %_internal.h,$(wildcard core/*.h synth/*.h analysis/*.h render/*.h))
+
+.PHONY: all deps test figures experiments bench asan fuzz clean install uninstall
 .SECONDARY:
-all: $(BIN) $(LIB)
+all: $(BIN) $(LIB) $(SOLIB) $(MAN)
 
 # One list of packages, in deps.txt; the stamp is redone when it changes.
 $(DEPS_OK): deps.txt tools/deps.sh
@@ -37,8 +58,24 @@ $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c $< -o $@
 
+# Library objects serve both the static and the shared library (and are
+# rebuilt when the Makefile, and so maybe their flags, changes).
+$(LIB_OBJ): CFLAGS += -fPIC -fno-semantic-interposition
+$(LIB_OBJ): Makefile
+
 $(LIB): $(LIB_OBJ)
-	$(AR) rcs $@ $^
+	rm -f $@ && $(AR) rcs $@ $^
+
+# The shared library records its dependencies (DT_NEEDED), so a program
+# links it with -lnoiselab alone.
+$(SOLIB): $(LIB_OBJ)
+	$(CC) $(CFLAGS) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined -o $@ $^ -Wl,--no-as-needed $(LDLIBS)
+	ln -sf $(notdir $@) $(BUILD)/$(SONAME)
+	ln -sf $(SONAME) $(BUILD)/libnoiselab.so
+
+# noiselab(1), from the help texts of the command and its subcommands.
+$(MAN): $(BIN) tools/manpage.sh
+	sh tools/manpage.sh $(BIN) $(VERSION) > $@.tmp && mv $@.tmp $@
 
 $(BIN): $(CLI_OBJ) $(LIB)
 	@mkdir -p $(BINDIR)
@@ -53,10 +90,43 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # Unit, error-path, CLI and statistical tests (Criterion). Each test is a
 # fresh process, so measured FFTW plans would be paid for again and again:
 # tests plan with FFTW_ESTIMATE, except the one comparing the two planners.
-test: $(BIN) $(BUILD)/tests/run $(EXP_BIN)
+# Then tools/test-install.sh installs into a scratch DESTDIR and builds the
+# examples and the README's example against it with pkg-config alone.
+test: all $(BUILD)/tests/run $(EXP_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
+	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) sh tools/test-install.sh
+
+# DESTDIR, PREFIX, LIBDIR, INCLUDEDIR, MANDIR, DOCDIR, PCDIR as usual, and
+# INSTALL_BINDIR (BINDIR is where the build puts the program).
+# Headers go to INCLUDEDIR/noiselab/{core,synth,analysis,render}/ (the tree's
+# layout, so their relative includes hold) and noiselab.h to INCLUDEDIR.
+install: all
+	install -d $(DESTDIR)$(INSTALL_BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PCDIR) $(DESTDIR)$(MANDIR)/man1 \
+	    $(DESTDIR)$(DOCDIR)/examples $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render)
+	install -m 755 $(BIN) $(DESTDIR)$(INSTALL_BINDIR)/noiselab
+	install -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libnoiselab.a
+	install -m 755 $(SOLIB) $(DESTDIR)$(LIBDIR)/
+	ln -sf $(notdir $(SOLIB)) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libnoiselab.so
+	install -m 644 include/noiselab.h $(DESTDIR)$(INCLUDEDIR)/noiselab.h
+	for h in $(PUB_HDR); do install -m 644 $$h $(DESTDIR)$(INCLUDEDIR)/noiselab/$$h || exit 1; done
+	sed -e 's|@PREFIX@|$(PREFIX)|; s|@LIBDIR@|$(PC_LIBDIR)|; s|@INCLUDEDIR@|$(PC_INCLUDEDIR)|' \
+	    -e 's|@VERSION@|$(VERSION)|; s|@LIBS_PRIVATE@|-fopenmp $(LDLIBS)|' noiselab.pc.in > $(DESTDIR)$(PCDIR)/noiselab.pc
+	install -m 644 $(MAN) $(DESTDIR)$(MANDIR)/man1/noiselab.1
+	install -m 644 examples/*.c $(DESTDIR)$(DOCDIR)/examples/
+	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ]; then ldconfig || true; fi
+
+# Removes exactly what install put there, then the folders it left empty.
+uninstall:
+	rm -f $(DESTDIR)$(INSTALL_BINDIR)/noiselab $(DESTDIR)$(LIBDIR)/libnoiselab.a $(DESTDIR)$(LIBDIR)/libnoiselab.so \
+	    $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/$(notdir $(SOLIB)) $(DESTDIR)$(PCDIR)/noiselab.pc \
+	    $(DESTDIR)$(MANDIR)/man1/noiselab.1 $(DESTDIR)$(INCLUDEDIR)/noiselab.h \
+	    $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,$(PUB_HDR)) \
+	    $(addprefix $(DESTDIR)$(DOCDIR)/examples/,$(notdir $(wildcard examples/*.c)))
+	rmdir $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render) $(DESTDIR)$(INCLUDEDIR)/noiselab \
+	    $(DESTDIR)$(DOCDIR)/examples $(DESTDIR)$(DOCDIR) 2>/dev/null || true
 
 # Every experiment writes its data, picture and verdict into paper-figures/.
 # Exemplar images from Debian packages' data (python3-skimage, gimp-data; not committed).
@@ -83,7 +153,7 @@ FUZZ_SECONDS ?= 30
 # Targets 1-3 read one input with a library parser (tests/fuzz/fuzz_parse.c),
 # 4-6 run the command line in-process (tests/fuzz/fuzz_cli.c).
 FUZZ_TARGETS := model dist field cli krige cloud
-FUZZ_CLI_SRC := $(filter-out cli/main.c,$(CLI_SRC))
+FUZZ_CLI_SRC := $(filter-out cli/main.c,$(CLI_SRC)) $(BENCH_SRC)
 fuzz: $(DEPS_OK)
 	@mkdir -p $(BUILD)/fuzz
 	@n=1; for t in $(FUZZ_TARGETS); do \

@@ -1,6 +1,9 @@
 /* noiselab bench: speed of the methods against this machine's floor, both
- * measured in the same run (medians of repeats). */
-#include "cli.h"
+ * measured in the same run (medians of repeats).  The floors call FFTW and
+ * run OpenMP loops directly, so this harness lives outside the library and
+ * the CLI; it is linked into bin/noiselab as the `bench` subcommand and uses
+ * the CLI's option and error helpers (cli/cli.h). */
+#include "../cli/cli.h"
 #include "../analysis/acf.h"
 #include "../analysis/krige.h"
 #include "../analysis/psd.h"

@@ -1,0 +1,140 @@
+#!/bin/sh
+# The library as a user gets it: `make install` into a scratch DESTDIR, then
+# every program of examples/ and the README's C example ("Using the library")
+# built with pkg-config alone, against the shared and against the static
+# library, and run; the installed headers, man page and symbols checked; the
+# include layering of the source folders checked; `make uninstall` leaves no
+# file behind.  Called by `make test` with CC, EXAMPLE_CFLAGS (the build's
+# optimisation and sanitizer flags), MAKE and VERSION in the environment.
+set -u
+top=$(cd "$(dirname "$0")/.." && pwd)
+cd "$top"
+CC=${CC:-cc}
+MAKE=${MAKE:-make}
+EXAMPLE_CFLAGS=${EXAMPLE_CFLAGS:--O2}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT INT TERM
+root=$tmp/root
+prefix=/usr/local
+libdir=$root$prefix/lib
+pass=0
+fail=0
+
+# check NAME COMMAND...: run it, count it, show its output when it fails.
+check() {
+    name=$1
+    shift
+    if "$@" >"$tmp/log" 2>&1; then
+        pass=$((pass + 1))
+    else
+        fail=$((fail + 1))
+        echo "install: FAILED $name" >&2
+        sed 's/^/    /' "$tmp/log" >&2
+    fi
+}
+
+# Only nl_ and NL_ names exported (nm output on stdin, name in the last field).
+only_nl() { awk 'NF >= 2 && $NF !~ /^(nl_|NL_)/ { print "not in the nl_ namespace: " $NF; bad = 1 } END { exit bad }'; }
+
+# An #include "..." of an installed header that is not installed itself.
+includes_installed() {
+    bad=0
+    for h in $(find "$root$prefix/include" -name '*.h'); do
+        for inc in $(sed -n 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*"\([^"]*\)".*/\1/p' "$h"); do
+            [ -f "$(dirname "$h")/$inc" ] || { echo "${h#$root}: includes \"$inc\", which is not installed"; bad=1; }
+        done
+    done
+    return $bad
+}
+
+# Every installed module header is reachable from noiselab.h.
+front_door_complete() {
+    bad=0
+    for h in $(cd "$root$prefix/include" && find noiselab -name '*.h' | sort); do
+        grep -q "^#include \"$h\"" "$root$prefix/include/noiselab.h" || { echo "noiselab.h does not include $h"; bad=1; }
+    done
+    return $bad
+}
+
+# Each installed header compiles on its own.
+self_contained() {
+    bad=0
+    for h in $(cd "$root$prefix/include" && find noiselab -name '*.h' | sort); do
+        printf '#include <%s>\n' "$h" | $CC -std=c11 -Wall -Wextra -Werror -fsyntax-only $cflags -x c - || { echo "$h is not self-contained"; bad=1; }
+    done
+    return $bad
+}
+
+# No folder includes one above it: core <- synth, analysis, render <- cli
+# (analysis may use synth; render may use synth and analysis).
+layering() {
+    bad=0
+    for rule in "core:synth|analysis|render|cli|bench" "synth:analysis|render|cli|bench" \
+        "analysis:render|cli|bench" "render:cli|bench"; do
+        dir=${rule%%:*}
+        grep -nE "^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)?(${rule#*:})/" "$dir"/*.c "$dir"/*.h 2>/dev/null &&
+            { echo "  ^ $dir/ may not include these"; bad=1; }
+    done
+    return $bad
+}
+
+no_file_left() {
+    left=$(find "$root" ! -type d)
+    [ -z "$left" ] || { echo "left after uninstall:"; echo "$left"; return 1; }
+}
+
+# build_run NAME SRC: the program against the shared library, then the static one.
+build_run() {
+    exe=$tmp/$1
+    check "$1: build against libnoiselab.so" $CC $EXAMPLE_CFLAGS -o "$exe" "$2" $(pkg-config --cflags --libs noiselab)
+    check "$1: run against the installed libnoiselab.so" env LD_LIBRARY_PATH="$libdir" "$exe"
+    static=$(pkg-config --static --cflags --libs noiselab | sed 's/-lnoiselab/-Wl,-Bstatic -lnoiselab -Wl,-Bdynamic/')
+    check "$1: build against libnoiselab.a" $CC $EXAMPLE_CFLAGS -o "$exe-static" "$2" $static
+    check "$1: libnoiselab.a linked in, not the .so" sh -c "! readelf -d '$exe-static' | grep -q 'NEEDED.*libnoiselab'"
+    check "$1: run, linked statically" "$exe-static"
+}
+
+check "make install DESTDIR=..." $MAKE --no-print-directory install DESTDIR="$root" PREFIX=$prefix
+export PKG_CONFIG_PATH="$libdir/pkgconfig" PKG_CONFIG_SYSROOT_DIR="$root"
+export NOISELAB_FFTW=estimate # as in the other tests: no measured plans
+cflags=$(pkg-config --cflags noiselab)
+
+for f in bin/noiselab lib/libnoiselab.a lib/libnoiselab.so lib/libnoiselab.so.${VERSION%%.*} \
+    lib/libnoiselab.so.$VERSION include/noiselab.h lib/pkgconfig/noiselab.pc share/man/man1/noiselab.1; do
+    check "$f installed" test -e "$root$prefix/$f"
+done
+check "soname libnoiselab.so.${VERSION%%.*}" sh -c "readelf -d '$libdir/libnoiselab.so.$VERSION' | grep -q 'SONAME.*\\[libnoiselab.so.${VERSION%%.*}\\]'"
+check "examples installed" sh -c "ls '$root$prefix/share/doc/noiselab/examples/'*.c"
+check "pkg-config --modversion is $VERSION" test "$(pkg-config --modversion noiselab)" = "$VERSION"
+check "noiselab --version is $VERSION" test "$("$root$prefix/bin/noiselab" --version)" = "noiselab $VERSION"
+check "installed headers include only installed headers" includes_installed
+check "noiselab.h includes every installed header" front_door_complete
+check "each installed header compiles on its own" self_contained
+check "noiselab.h compiles as C++ (extern \"C\")" sh -c "printf '#include <noiselab.h>\nint main() { return nl_version() == 0; }\n' | \
+    ${CXX:-g++} $EXAMPLE_CFLAGS -Wall -Werror -x c++ - $cflags -o '$tmp/cxx' \$(pkg-config --libs noiselab) && LD_LIBRARY_PATH='$libdir' '$tmp/cxx'"
+check "man -l renders noiselab(1) without warnings" sh -c "MANWIDTH=80 man --warnings -l '$root$prefix/share/man/man1/noiselab.1' \
+    2>'$tmp/man.err' | grep -q 'noiselab bench' && ! test -s '$tmp/man.err' || { cat '$tmp/man.err'; false; }"
+check "man noiselab finds it with MANPATH" sh -c "test \"\$(MANPATH='$root$prefix/share/man' man -w noiselab)\" = '$root$prefix/share/man/man1/noiselab.1'"
+nm -D --defined-only "$libdir/libnoiselab.so" >"$tmp/nm-so" 2>&1
+check "nm -D libnoiselab.so: nl_/NL_ names only" only_nl <"$tmp/nm-so"
+nm -g --defined-only "$libdir/libnoiselab.a" 2>/dev/null | grep -v ':$' >"$tmp/nm-a"
+check "nm -g libnoiselab.a: nl_/NL_ names only" only_nl <"$tmp/nm-a"
+check "include layering core <- synth, analysis, render <- cli" layering
+
+# The version macros, the library's nl_version() and pkg-config agree.
+printf '#include <noiselab.h>\n#include <stdio.h>\n#include <string.h>\nint main(void)\n{\n    printf("%%d.%%d.%%d\\n", NL_VERSION_MAJOR, NL_VERSION_MINOR, NL_VERSION_PATCH);\n    return strcmp(NL_VERSION_STRING, nl_version()) || strcmp(NL_VERSION_STRING, "%s");\n}\n' "$VERSION" >"$tmp/version.c"
+build_run version "$tmp/version.c"
+
+for src in examples/*.c; do
+    build_run "$(basename "$src" .c)" "$src"
+done
+awk '/^## Using the library/ { in_sec = 1; next } /^## / { in_sec = 0 }
+     in_sec && /^```c$/ { code = 1; next } code && /^```$/ { exit } code { print }' README.md >"$tmp/readme.c"
+check "README: a \`\`\`c block under \"Using the library\"" test -s "$tmp/readme.c"
+[ -s "$tmp/readme.c" ] && build_run readme "$tmp/readme.c"
+
+check "make uninstall" $MAKE --no-print-directory uninstall DESTDIR="$root" PREFIX=$prefix
+check "make uninstall leaves no file" no_file_left
+
+echo "install: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
