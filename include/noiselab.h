@@ -39,6 +39,8 @@ extern "C" {
 #include "noiselab/core/autocorr.h"
 #include "noiselab/core/fftw_plan.h"
 #include "noiselab/core/io.h"
+#include "noiselab/core/io_obj.h"
+#include "noiselab/core/io_points.h"
 
 #include "noiselab/synth/fft.h"
 #include "noiselab/synth/circulant.h"
@@ -50,7 +52,7 @@ extern "C" {
 #include "noiselab/synth/shape.h"
 #include "noiselab/synth/rank1.h"
 #include "noiselab/synth/ocean.h"
-#include "noiselab/synth/cloud.h"
+#include "noiselab/synth/rank1_model.h"
 
 #include "noiselab/analysis/acf.h"
 #include "noiselab/analysis/psd.h"
@@ -67,6 +69,8 @@ extern "C" {
 #include "noiselab/analysis/subdiv_exact.h"
 
 #include "noiselab/render/terrain.h"
+#include "noiselab/render/shade.h"
+#include "noiselab/render/cloud.h"
 
 #ifdef __cplusplus
 }
