@@ -7,27 +7,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-int nl_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out)
-{
-    nl_field *c;
-    int st = nl_autocorr_sums(x, isnan(mean) ? nl_field_mean(x) : mean, &c);
-    if (st)
-        return st;
-    for (size_t k = 0; k < c->n[2]; k++)
-        for (size_t j = 0; j < c->n[1]; j++)
-            for (size_t i = 0; i < c->n[0]; i++) {
-                size_t idx[3] = {i, j, k};
-                double w = unbiased ? 1.0 : (double)x->count;
-                for (int a = 0; unbiased && a < x->dim; a++) {
-                    long l = nl_wrap(idx[a], c->n[a]);
-                    w *= (double)x->n[a] - fabs((double)l);
-                }
-                c->data[(k * c->n[1] + j) * c->n[0] + i] /= w > 0 ? w : 1.0;
-            }
-    *out = c;
-    return NL_OK;
-}
-
 int nl_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, double *val)
 {
     size_t stride = 1;
