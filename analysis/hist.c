@@ -26,6 +26,8 @@ int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
     if (bins < 1)
         return NL_ERROR(NL_EINVAL, "bins: expected at least 1, got %zu", bins);
     gsl_stats_minmax(&lo, &hi, x->data, 1, x->count);
+    if (!isfinite(lo) || !isfinite(hi))
+        return NL_ERROR(NL_EINVAL, "histogram: expected finite samples, got range [%g, %g]", lo, hi);
     if (!(hi > lo))
         hi = lo + 1;
     h = gsl_histogram_alloc(bins);

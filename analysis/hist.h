@@ -24,7 +24,7 @@ int nl_moments_compute(const nl_field *x, nl_moments *m);
 /* Histogram of `bins` equal bins over [min, max] of the samples (the maximum
  * falls in the last bin; a constant field spans [v, v + 1]): the caller's
  * edges[0..bins] and counts[0..bins-1] (counts as doubles).  Returns NL_OK,
- * NL_EINVAL (bins = 0) or NL_ENOMEM. */
+ * NL_EINVAL (bins = 0, or a sample is infinite or NaN) or NL_ENOMEM. */
 int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
 
 #endif

@@ -26,8 +26,8 @@
  * mean 0.  m is the model the coefficients were made from.  out holds
  * nlags values (variance units of the model).  The subdivision must be
  * periodic with nx = cx 2^levels (and ny = cy 2^levels in 2D), cx, cy >= 2.
- * Returns NL_OK, NL_EINVAL (neighbourhoods too large: more than 16x16 in
- * 2D or 256 in 1D; random neighbourhoods; a size that is not the coarse
+ * Returns NL_OK, NL_EINVAL (neighbourhood half-widths above 4 in 2D or
+ * 128 in 1D; random neighbourhoods; a size that is not the coarse
  * size times 2^levels), NL_ETOOBIG (nx ny > 4096), NL_ENOMEM, or the codes
  * of nl_wk_sample_acf.  Reentrant (c and m are only read; as thread-safe as
  * the model). */
