@@ -25,10 +25,11 @@ int nl_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, doub
 
 int nl_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t maxlag, double *val)
 {
-    double m = isnan(mean) ? nl_field_mean(x) : mean;
-    size_t stride = 1, n = x->n[axis];
+    double m;
+    size_t stride = 1, n;
     if (axis < 0 || axis >= x->dim)
         return NL_ERROR(NL_EINVAL, "axis: expected an axis of the %d-D field, got %d", x->dim, axis);
+    m = isnan(mean) ? nl_field_mean(x) : mean, n = x->n[axis];
     if (maxlag >= n)
         return NL_ERROR(NL_EINVAL, "max-lag: expected at most %zu samples, got %zu", n - 1, maxlag);
     for (int a = 0; a < axis; a++)
