@@ -145,9 +145,11 @@ Test(analysis_errors, psd_welch)
     TRAP(NL_EINVAL, nl_welch_plan_execute(w, x, NAN, P, NULL));
     TRAP(NL_EINVAL, nl_welch_plan_execute(w, x3, NAN, W, NULL));
     nl_welch_plan_free(w);
+    nl_field *W16 = field(2, 16, 16);
     cr_assert_eq(nl_welch_plan_alloc(2, 16, &w), 0);
-    TRAP(NL_EINVAL, nl_welch_plan_execute(w, x, NAN, field(2, 16, 16), NULL)); /* x has 12 rows < 16 */
+    TRAP(NL_EINVAL, nl_welch_plan_execute(w, x, NAN, W16, NULL)); /* x has 12 rows < 16 */
     nl_welch_plan_free(w);
+    nl_field_free(W16);
     nl_welch_plan_free(NULL);
     nl_field *f3 = nl_field_alloc(3, (size_t[]){8, 8, 8}, NULL, NULL);
     TRAP(NL_EINVAL, nl_psd_welch(f3, 4, NAN, &o, NULL));
@@ -180,8 +182,12 @@ Test(analysis_errors, out_of_memory)
     cr_assert_eq(nl_model_parse("markov:scale=3", &m), 0);
     nl_subdiv_coeffs *sc;
     cr_assert_eq(nl_subdiv_coeffs_alloc(m, 1, 2, 4.0, 2, 1e-4, 6, &sc), 0);
-    if (!limit_memory((size_t)16 << 20))
+    nl_field *bigfull = nl_field_alloc(1, (size_t[]){(size_t)1 << 20}, NULL, NULL), *sq = field(2, 8, 8);
+    if (!limit_memory((size_t)16 << 20)) {
+        nl_field_free(big), nl_field_free(bigfull), nl_field_free(sq);
+        nl_subdiv_coeffs_free(sc), nl_model_free(m), nl_dist_free(d);
         cr_skip_test("no address-space limit here");
+    }
     TRAP(NL_ENOMEM, nl_autocorr_plan_alloc(1, big->n, &c));
     TRAP(NL_ENOMEM, nl_acf_plan_alloc(1, big->n, &a));
     TRAP(NL_ENOMEM, nl_psd_plan_alloc(1, (size_t[]){(size_t)1 << 23}, &p));
@@ -189,13 +195,13 @@ Test(analysis_errors, out_of_memory)
     TRAP(NL_ENOMEM, nl_verdict_alloc(1, big->n, 1, (const long (*)[2])lag, &v));
     TRAP(NL_ENOMEM, nl_fftshift_alloc(big, &o));
     TRAP(NL_ENOMEM, nl_psd_model_profile(m, 1, big->n, NULL, s, &(size_t){0}));
-    TRAP(NL_ENOMEM, nl_psd_sectors(field(2, 8, 8), (size_t)1 << 28, 0, 0.5, s, &an));
+    TRAP(NL_ENOMEM, nl_psd_sectors(sq, (size_t)1 << 28, 0, 0.5, s, &an));
     TRAP(NL_ENOMEM, nl_gof_test(big->data, (size_t)1 << 27, d, 4, &g));
     TRAP(NL_ENOMEM, nl_psd_slope(big->data, big->data, (size_t)1 << 27, 1, 2, 1, &sl));
     TRAP(NL_ENOMEM, nl_subdiv_exact_acf(sc, m, 4096, 1, 1, (long[]){0, 0}, s));
-    nl_field *bigfull = nl_field_alloc(1, (size_t[]){(size_t)1 << 20}, NULL, NULL);
-    cr_assert_not_null(bigfull);
     TRAP(NL_ENOMEM, nl_acf_centred_alloc(bigfull, &o));
+    nl_field_free(big), nl_field_free(bigfull), nl_field_free(sq);
+    nl_subdiv_coeffs_free(sc), nl_model_free(m), nl_dist_free(d);
 }
 
 Test(analysis_errors, verdict)
@@ -258,6 +264,7 @@ Test(analysis_errors, centred_and_spectral)
     TRAP(NL_ETOOBIG, nl_fftshift_alloc(big, &o));
     TRAP(NL_ETOOBIG, nl_acf_centred_alloc(bigfull, &o));
     nl_model_free(m);
+    nl_field_free(odd), nl_field_free(P), nl_field_free(f1), nl_field_free(big), nl_field_free(bigfull);
 }
 
 Test(analysis_errors, radial_hist_gof_slope)
@@ -284,8 +291,10 @@ Test(analysis_errors, radial_hist_gof_slope)
     TRAP(NL_EINVAL, nl_gof_bin_density(d, e, 2, c));
     double f[4] = {1, 2, 3, 4}, p[4] = {1, 1, 1, 1};
     TRAP(NL_EINVAL, nl_psd_slope(f, p, 4, 1.5, 2.5, 1, &sl));
-    TRAP(NL_EINVAL, nl_psd_slope_grid(field(2, 4, 4), 100, 200, &sl));
+    nl_field *g4 = field(2, 4, 4);
+    TRAP(NL_EINVAL, nl_psd_slope_grid(g4, 100, 200, &sl));
     nl_dist_free(d);
+    nl_field_free(x), nl_field_free(one), nl_field_free(g4);
 }
 
 Test(analysis_errors, check_and_subdiv_exact)
