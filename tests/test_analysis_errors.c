@@ -182,7 +182,7 @@ Test(analysis_errors, out_of_memory)
     cr_assert_eq(nl_model_parse("markov:scale=3", &m), 0);
     nl_subdiv_coeffs *sc;
     cr_assert_eq(nl_subdiv_coeffs_alloc(m, 1, 2, 4.0, 2, 1e-4, 6, &sc), 0);
-    nl_field *bigfull = nl_field_alloc(1, (size_t[]){(size_t)1 << 20}, NULL, NULL), *sq = field(2, 8, 8);
+    nl_field *bigfull = nl_field_alloc(1, (size_t[]){(size_t)1 << 22}, NULL, NULL), *sq = field(2, 8, 8);
     if (!limit_memory((size_t)16 << 20)) {
         nl_field_free(big), nl_field_free(bigfull), nl_field_free(sq);
         nl_subdiv_coeffs_free(sc), nl_model_free(m), nl_dist_free(d);
