@@ -1,5 +1,6 @@
 /* Autocorrelation estimates from the FFT lag sums (Lewis 1987, eq. (15)). */
 #include "acf.h"
+#include "radial.h"
 #include "../core/autocorr.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
@@ -21,6 +22,14 @@ int nl_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, doub
         val[i] = full->data[i * stride];
     }
     return NL_OK;
+}
+
+int nl_acf_radial(const nl_field *full, size_t nbins, double *lag, double *val, size_t *cnt)
+{
+    double step = full->h[0];
+    for (int a = 1; a < full->dim; a++)
+        step = fmin(step, full->h[a]);
+    return nl_radial(full, NL_GRID_LAG, step, nbins, lag, val, cnt);
 }
 
 int nl_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t maxlag, double *val)

@@ -69,6 +69,12 @@ int nl_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out);
  * maxlag >= n_axis, i.e. half the full grid). */
 int nl_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, double *val);
 
+/* The radial average of a full estimate (analysis/radial.h, NL_GRID_LAG) in
+ * nbins bins one sample spacing wide (the smallest h_a): lag = mean
+ * distance of the bin in length units, val = mean estimate, cnt = lags
+ * averaged (NAN and 0 when empty); nbins entries each.  Returns NL_OK. */
+int nl_acf_radial(const nl_field *full, size_t nbins, double *lag, double *val, size_t *cnt);
+
 /* The direct sum of eq. (15) for lags 0..maxlag (in samples) along `axis`
  * (O(N maxlag)), with the same divisors and mean as nl_acf_full; agrees with
  * the FFT estimate to rounding.  val holds maxlag + 1 entries.  Returns

@@ -27,4 +27,11 @@ int nl_moments_compute(const nl_field *x, nl_moments *m);
  * NL_EINVAL (bins = 0, or a sample is infinite or NaN) or NL_ENOMEM. */
 int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
 
+/* The histogram of nl_hist as a density against the Gaussian of the
+ * moments mo (from nl_moments_compute): for each of the bins, its midpoint,
+ * count / (N width) and the Gaussian density of mean mo->mean and variance
+ * mo->variance at the midpoint (the caller's arrays of bins entries).
+ * Returns the codes of nl_hist, or NL_ENOMEM. */
+int nl_hist_density(const nl_field *x, const nl_moments *mo, size_t bins, double *mid, double *density, double *gauss);
+
 #endif

@@ -2,7 +2,6 @@
 #include "cli.h"
 #include "../analysis/acf.h"
 #include "../analysis/fftshift.h"
-#include "../analysis/radial.h"
 #include "../core/model.h"
 
 #include <getopt.h>
@@ -122,10 +121,7 @@ static void estimate(const acf_opts *o, const nl_field *x, const nl_field *full,
         for (size_t i = 0; i < nl; i++)
             lag[i] = (double)i * x->h[o->axis];
     } else if (o->radial) {
-        double step = x->h[0];
-        for (int a = 1; a < x->dim; a++)
-            step = fmin(step, x->h[a]);
-        st = nl_radial(full, NL_GRID_LAG, step, nl, lag, val, cnt);
+        st = nl_acf_radial(full, nl, lag, val, cnt);
     } else {
         st = nl_acf_axis(full, o->axis, nl - 1, lag, val);
     }

@@ -67,16 +67,13 @@ static void write_radial(const char *path, const nl_field *W, const nl_model *m,
 /* The histogram as a density against the Gaussian of the same moments. */
 static void write_hist(const char *path, const nl_field *x, const nl_moments *mo)
 {
-    double edges[41], counts[40];
+    double mid[40], dens[40], gauss[40];
     FILE *fp;
-    nl_hist(x, 40, edges, counts);
+    nl_hist_density(x, mo, 40, mid, dens, gauss);
     fp = fopen(path, "w");
     fprintf(fp, "x\tdensity\tgauss\n");
-    for (int b = 0; b < 40; b++) {
-        double mid = 0.5 * (edges[b] + edges[b + 1]), w = edges[b + 1] - edges[b];
-        fprintf(fp, "%.8g\t%.8g\t%.8g\n", mid, counts[b] / ((double)x->count * w),
-                exp(-0.5 * (mid - mo->mean) * (mid - mo->mean) / mo->variance) / sqrt(2 * M_PI * mo->variance));
-    }
+    for (int b = 0; b < 40; b++)
+        fprintf(fp, "%.8g\t%.8g\t%.8g\n", mid[b], dens[b], gauss[b]);
     fclose(fp);
 }
 

@@ -280,6 +280,8 @@ Test(analysis_errors, radial_hist_gof_slope)
     TRAP(NL_EINVAL, nl_radial(x, NL_GRID_FREQ, NAN, 8, r, v, cnt));
     TRAP(NL_EINVAL, nl_moments_compute(one, &mo));
     TRAP(NL_EINVAL, nl_hist(x, 0, e, c));
+    nl_moments m2 = {0};
+    TRAP(NL_EINVAL, nl_hist_density(x, &m2, 0, e, c, r));
     x->data[3] = NAN;
     TRAP(NL_EINVAL, nl_hist(x, 8, e, c));
     x->data[3] = INFINITY;

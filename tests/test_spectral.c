@@ -4,6 +4,7 @@
 #include "../analysis/acf.h"
 #include "../analysis/fftshift.h"
 #include "../analysis/gof.h"
+#include "../analysis/hist.h"
 #include "../analysis/psd.h"
 #include "../analysis/spectral.h"
 #include "../core/dist.h"
@@ -179,4 +180,42 @@ Test(spectral, gof_bin_density)
     cr_assert_float_eq(pdf[0], 0, 1e-15); cr_assert_float_eq(pdf[1], 1, 1e-15);
     cr_assert_float_eq(pdf[2], 1, 1e-15); cr_assert_float_eq(pdf[3], 0, 1e-15);
     nl_dist_free(d);
+}
+
+/* The density integrates to 1 over the bins (widths times densities), and
+ * the Gaussian column is the normal density at each midpoint. */
+Test(spectral, hist_density)
+{
+    nl_field *x = nl_field_alloc(1, (size_t[]){500}, NULL, NULL);
+    double mid[20], dens[20], g[20], total = 0, w;
+    nl_moments mo;
+    for (size_t i = 0; i < 500; i++)
+        x->data[i] = nl_rng_gauss(8, 2, i);
+    cr_assert_eq(nl_moments_compute(x, &mo), 0);
+    cr_assert_eq(nl_hist_density(x, &mo, 20, mid, dens, g), 0);
+    w = mid[1] - mid[0];
+    for (int b = 0; b < 20; b++) {
+        total += dens[b] * w;
+        cr_assert_float_eq(g[b], exp(-0.5 * pow(mid[b] - mo.mean, 2) / mo.variance) / sqrt(2 * M_PI * mo.variance),
+                           1e-14);
+    }
+    cr_assert_float_eq(total, 1, 1e-9);
+    nl_field_free(x);
+}
+
+/* Bin 0 of the radial ACF holds lag 0 alone; bins are one spacing wide. */
+Test(spectral, acf_radial)
+{
+    double h[2] = {0.5, 0.75}, lag[4], val[4];
+    size_t cnt[4];
+    nl_field *x = nl_field_alloc(2, (size_t[]){12, 10}, h, NULL), *full;
+    for (size_t i = 0; i < x->count; i++)
+        x->data[i] = nl_rng_gauss(9, 1, i);
+    cr_assert_eq(nl_acf_full(x, NAN, 0, &full), 0);
+    cr_assert_eq(nl_acf_radial(full, 4, lag, val, cnt), 0);
+    cr_assert_eq(cnt[0], 1);
+    cr_assert_eq(lag[0], 0);
+    cr_assert_eq(val[0], full->data[0]);
+    cr_assert_eq(cnt[1], 2); /* (+-0.5, 0) */
+    nl_field_free(x), nl_field_free(full);
 }
