@@ -139,3 +139,42 @@ Test(plans, periodogram_spacing_taken_from_the_field)
     nl_field_free(ref), nl_field_free(P), nl_field_free(x);
     nl_psd_plan_free(p);
 }
+
+/* The headers' thread-safety claim: plans made one after the other, then
+ * executed at once from several threads (one plan each), give the one-shot
+ * bits.  (Run under a thread sanitizer to check for races beyond results.) */
+Test(plans, distinct_plans_execute_concurrently)
+{
+    enum { T = 4 };
+    size_t n[2] = {48, 40};
+    nl_field *x[T], *ra[T], *rp[T], *rw[T], *oa[T], *op[T], *ow[T];
+    nl_acf_plan *pa[T];
+    nl_psd_plan *pp[T];
+    nl_welch_plan *pw[T];
+    int st[T];
+    for (int t = 0; t < T; t++) {
+        x[t] = noise(2, n, (uint64_t)t + 10);
+        cr_assert_eq(nl_acf_full(x[t], NAN, 1, &ra[t]), 0);
+        cr_assert_eq(nl_psd_periodogram(x[t], NAN, &rp[t]), 0);
+        cr_assert_eq(nl_psd_welch(x[t], 16, NAN, &rw[t], NULL), 0);
+        cr_assert_eq(nl_acf_plan_alloc(2, n, &pa[t]), 0);
+        cr_assert_eq(nl_psd_plan_alloc(2, n, &pp[t]), 0);
+        cr_assert_eq(nl_welch_plan_alloc(2, 16, &pw[t]), 0);
+        oa[t] = nl_acf_plan_output_alloc(pa[t], NULL, NULL);
+        op[t] = nl_field_alloc(2, n, NULL, NULL);
+        ow[t] = nl_field_alloc(2, (size_t[]){16, 16}, NULL, NULL);
+    }
+#pragma omp parallel for num_threads(T)
+    for (int t = 0; t < T; t++)
+        st[t] = nl_acf_plan_execute(pa[t], x[t], NAN, 1, oa[t]) | nl_psd_plan_execute(pp[t], x[t], NAN, op[t]) |
+                nl_welch_plan_execute(pw[t], x[t], NAN, ow[t], NULL);
+    for (int t = 0; t < T; t++) {
+        cr_assert_eq(st[t], 0);
+        same(ra[t], oa[t], "acf plan in a thread");
+        same(rp[t], op[t], "periodogram plan in a thread");
+        same(rw[t], ow[t], "welch plan in a thread");
+        nl_acf_plan_free(pa[t]), nl_psd_plan_free(pp[t]), nl_welch_plan_free(pw[t]);
+        nl_field_free(x[t]), nl_field_free(ra[t]), nl_field_free(rp[t]), nl_field_free(rw[t]);
+        nl_field_free(oa[t]), nl_field_free(op[t]), nl_field_free(ow[t]);
+    }
+}
