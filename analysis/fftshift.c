@@ -49,7 +49,7 @@ int nl_acf_centred_alloc(const nl_field *full, nl_field **out)
     return NL_OK;
 }
 
-double nl_field_log10_floor(nl_field *f, double rel)
+double nl_fftshift_log10_floor(nl_field *f, double rel)
 {
     double mx = 0;
     for (size_t q = 0; q < f->count; q++)

@@ -26,6 +26,6 @@ int nl_acf_centred_alloc(const nl_field *full, nl_field **out);
 /* In place: v <- log10(max(v, rel * vmax)) with vmax the largest value of f
  * before the call, which is returned (the floor keeps log10 finite for a
  * zero ordinate; rel > 0, e.g. 1e-12).  For log-scale pictures of spectra. */
-double nl_field_log10_floor(nl_field *f, double rel);
+double nl_fftshift_log10_floor(nl_field *f, double rel);
 
 #endif

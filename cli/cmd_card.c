@@ -32,7 +32,7 @@ static void write_log_picture(const char *path, const nl_field *P)
     int st;
     if ((st = nl_fftshift_alloc(P, &C)))
         cli_die_status(st);
-    mx = log10(nl_field_log10_floor(C, 1e-8));
+    mx = log10(nl_fftshift_log10_floor(C, 1e-8));
     nl_png_write_field(path, C, mx - 7, mx);
     nl_field_free(C);
 }

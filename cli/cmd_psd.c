@@ -103,7 +103,7 @@ static void write_centred(psd_opts *o, const nl_field *P)
             cli_die_status(st);
     }
     if (o->preview) {
-        double mx = nl_field_log10_floor(C, 1e-12);
+        double mx = nl_fftshift_log10_floor(C, 1e-12);
         if ((st = nl_png_write_field(o->pvtmp, C, log10(mx) - 8, log10(mx))))
             cli_die_status(st);
         cli_out_commit(o->preview);

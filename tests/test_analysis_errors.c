@@ -91,6 +91,7 @@ Test(analysis_errors, acf)
     TRAP(NL_EINVAL, st == 0 ? nl_acf_plan_execute(p, y, NAN, 0, o) : st);
     TRAP(NL_EINVAL, nl_acf_plan_execute(p, x, NAN, 0, x));
     nl_acf_plan_free(p);
+    nl_field_free(o);
     nl_acf_plan_free(NULL);
     cr_assert_eq(nl_acf_full(x, NAN, 0, &full), 0);
     TRAP(NL_EINVAL, nl_acf_axis(full, 1, 3, a, b));

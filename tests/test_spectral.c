@@ -56,7 +56,7 @@ Test(spectral, log10_floor)
 {
     nl_field *f = nl_field_alloc(1, (size_t[]){3}, NULL, NULL);
     f->data[0] = 0, f->data[1] = 1, f->data[2] = 100;
-    cr_assert_eq(nl_field_log10_floor(f, 1e-4), 100);
+    cr_assert_eq(nl_fftshift_log10_floor(f, 1e-4), 100);
     cr_assert_float_eq(f->data[0], -2, 1e-15);
     cr_assert_eq(f->data[1], 0); cr_assert_eq(f->data[2], 2);
     nl_field_free(f);
