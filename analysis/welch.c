@@ -6,6 +6,7 @@
 #include "../core/nl_error.h"
 
 #include <complex.h>
+#include <limits.h>
 #include <fftw3.h>
 #include <math.h>
 #include <stdlib.h>
@@ -38,7 +39,7 @@ int nl_welch_plan_alloc(int dim, size_t S, nl_welch_plan **out)
     *out = NULL;
     if (dim < 1 || dim > 2)
         return NL_ERROR(NL_EINVAL, "welch: expected a 1D or 2D field, got %dD", dim);
-    if (S < 4 || S > ((size_t)1 << 24))
+    if (S < 4 || S > (size_t)INT_MAX)
         return NL_ERROR(NL_EINVAL, "welch: expected a segment of 4 samples up to the field's size, got %zu", S);
     if (!(p = calloc(1, sizeof *p)))
         return NL_ERROR(NL_ENOMEM, "out of memory");

@@ -25,7 +25,7 @@
 /* The window, the segment scratch and the FFTW plan for segments of S. */
 typedef struct nl_welch_plan nl_welch_plan;
 
-/* Plan for dim (1 or 2) and segments of S (4 <= S <= 2^24) samples per
+/* Plan for dim (1 or 2) and segments of S (4 <= S <= INT_MAX) samples per
  * axis; *out is released by nl_welch_plan_free (NULL on failure).  Returns
  * NL_OK, NL_EINVAL (dim or S out of range), NL_ENOMEM, NL_EFAIL (FFTW could
  * not plan). */
