@@ -46,7 +46,6 @@ static int run_sub(void *c, uint64_t s, nl_field *f)
 
 /* One method's ensemble against the target. */
 typedef struct {
-    const char *name;       /* method */
     double mean[L], se[L];  /* ensemble mean ACF and its standard error */
     double zmax;            /* max |z| over the lags */
     int ran;                /* 0: refused, see why */
@@ -158,7 +157,6 @@ static void run_method(vctx *v, int meth)
     nl_synth_sparse_plan *ps = NULL;
     sub_ctx sc = {NULL, v->m};
     int st = NL_OK;
-    v->res[meth].name = names[meth];
     if (meth == 0) st = nl_synth_fft_plan_alloc(v->m, v->dim, v->n, NULL, 0, &pf), ctx = pf, fn = run_fft;
     if (meth == 1) st = nl_synth_circulant_plan_alloc(v->m, v->dim, v->n, NULL, 0, 16, &pc), ctx = pc, fn = run_circ;
     if (meth == 2) st = plan_subdiv(v, &sc), ctx = &sc, fn = run_sub;
