@@ -1,32 +1,12 @@
 /* Autocorrelation estimates from the FFT lag sums (Lewis 1987, eq. (15)). */
 #include "acf.h"
+#include "radial.h"
 #include "../core/autocorr.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 
 #include <math.h>
 #include <stdlib.h>
-
-int nl_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out)
-{
-    nl_field *c;
-    int st = nl_autocorr_sums(x, isnan(mean) ? nl_field_mean(x) : mean, &c);
-    if (st)
-        return st;
-    for (size_t k = 0; k < c->n[2]; k++)
-        for (size_t j = 0; j < c->n[1]; j++)
-            for (size_t i = 0; i < c->n[0]; i++) {
-                size_t idx[3] = {i, j, k};
-                double w = unbiased ? 1.0 : (double)x->count;
-                for (int a = 0; unbiased && a < x->dim; a++) {
-                    long l = nl_wrap(idx[a], c->n[a]);
-                    w *= (double)x->n[a] - fabs((double)l);
-                }
-                c->data[(k * c->n[1] + j) * c->n[0] + i] /= w > 0 ? w : 1.0;
-            }
-    *out = c;
-    return NL_OK;
-}
 
 int nl_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, double *val)
 {
@@ -44,12 +24,21 @@ int nl_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, doub
     return NL_OK;
 }
 
+int nl_acf_radial(const nl_field *full, size_t nbins, double *lag, double *val, size_t *cnt)
+{
+    double step = full->h[0];
+    for (int a = 1; a < full->dim; a++)
+        step = fmin(step, full->h[a]);
+    return nl_radial(full, NL_GRID_LAG, step, nbins, lag, val, cnt);
+}
+
 int nl_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t maxlag, double *val)
 {
-    double m = isnan(mean) ? nl_field_mean(x) : mean;
-    size_t stride = 1, n = x->n[axis];
+    double m;
+    size_t stride = 1, n;
     if (axis < 0 || axis >= x->dim)
         return NL_ERROR(NL_EINVAL, "axis: expected an axis of the %d-D field, got %d", x->dim, axis);
+    m = isnan(mean) ? nl_field_mean(x) : mean, n = x->n[axis];
     if (maxlag >= n)
         return NL_ERROR(NL_EINVAL, "max-lag: expected at most %zu samples, got %zu", n - 1, maxlag);
     for (int a = 0; a < axis; a++)

@@ -113,6 +113,26 @@ static int eigen_check(const nl_model *m, int dim, nl_check *c)
     return st;
 }
 
+/* Subdivision singularity, 1D N = 2 along x: the largest spacing L / 2^k,
+ * k <= 24, whose matrix is flagged singular (0: none). */
+static double singular_spacing(const nl_model *m, double L)
+{
+    nl_subdiv_class cl;
+    double a[4], pts[4], tgt[1];
+    cl.a = a;
+    for (int k = 0; k <= 24; k++) {
+        double s = ldexp(L, -k);
+        for (int i = 0; i < 4; i++)
+            pts[i] = (i - 1) * s;
+        tgt[0] = 0.5 * s;
+        if (nl_subdiv_solve(m, 1, 4, pts, tgt, NULL, &cl))
+            break;
+        if (cl.flags & NL_SUBDIV_SINGULAR)
+            return s;
+    }
+    return 0;
+}
+
 int nl_check_model(const nl_model *m, int dim, nl_check *c)
 {
     double r0, zero[3] = {0, 0, 0};
@@ -174,24 +194,7 @@ int nl_check_model(const nl_model *m, int dim, nl_check *c)
         if (c->differentiable_order == 0)
             c->r2 = -INFINITY;
     }
-    /* subdivision singularity, 1D N = 2 along x */
-    c->singular_below = 0;
-    if (!isnan(r0) && dim == 1) {
-        nl_subdiv_class cl;
-        double a[4], pts[4], tgt[1];
-        cl.a = a;
-        for (int k = 0; k <= 24; k++) {
-            double s = ldexp(c->scale, -k);
-            for (int i = 0; i < 4; i++)
-                pts[i] = (i - 1) * s;
-            tgt[0] = 0.5 * s;
-            if (nl_subdiv_solve(m, 1, 4, pts, tgt, NULL, &cl))
-                break;
-            if (cl.flags & NL_SUBDIV_SINGULAR) {
-                c->singular_below = s;
-                break;
-            }
-        }
-    }
+    if (!isnan(r0) && dim == 1)
+        c->singular_below = singular_spacing(m, c->scale);
     return NL_OK;
 }

@@ -46,6 +46,14 @@ typedef struct {
     double singular_below;   /* spacing, or 0 */
 } nl_check;
 
+/* All checks of m in dim (1..3) dimensions into *out (zeroed first).
+ * Returns NL_OK, NL_EINVAL (m not defined in dim, nl_model_check_dim, or
+ * R(0) not a positive finite variance), NL_ENOMEM, NL_EFAIL (the
+ * eigenvalues did not converge), or the codes of nl_wk_sample_spectrum and
+ * nl_wk_acf_to_spectrum (core/wk.h).  "Not positive definite" is a result
+ * (out->positive_definite = 0), not an error.  Thread safety: as the model
+ * (core/model.h: expression models are not thread-safe); the FFTs it runs
+ * plan FFTW, so not concurrently with other planning. */
 int nl_check_model(const nl_model *m, int dim, nl_check *out);
 
 #endif

@@ -59,3 +59,15 @@ int nl_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl_gof
     free(count);
     return NL_OK;
 }
+
+int nl_gof_bin_density(const nl_dist *d, const double *edges, size_t bins, double *pdf)
+{
+    for (size_t b = 0; b < bins; b++)
+        if (!(edges[b + 1] > edges[b]))
+            return NL_ERROR(NL_EINVAL, "bin density: expected increasing edges, got %g then %g at bin %zu", edges[b],
+                            edges[b + 1], b);
+    /* probability mass over the bin width */
+    for (size_t b = 0; b < bins; b++)
+        pdf[b] = (nl_dist_cdf(d, edges[b + 1]) - nl_dist_cdf(d, edges[b])) / (edges[b + 1] - edges[b]);
+    return NL_OK;
+}

@@ -6,7 +6,9 @@
  * Chi-square: B bins of equal probability under F (edges F^-1(k/B)),
  * X^2 = sum (O - E)^2 / E, p = Q_chi2(X^2; B - 1).
  * Both assume independent samples: for a correlated field, test a white
- * field or a decimation much sparser than the correlation length. */
+ * field or a decimation much sparser than the correlation length.
+ * Thread safety: reentrant as long as d is not shared with a thread that
+ * frees it (core/dist.h). */
 #ifndef NL_GOF_H
 #define NL_GOF_H
 
@@ -22,6 +24,15 @@ typedef struct {
     double p_chi2;   /* chi-square p-value */
 } nl_gof;
 
+/* Both tests of the n samples x against d, chi-square on `bins` bins.
+ * Returns NL_OK, NL_EINVAL (n < 2 or bins < 2) or NL_ENOMEM; *out is
+ * untouched on failure.  x is not modified (a sorted copy is made). */
 int nl_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl_gof *out);
+
+/* The density d predicts per histogram bin, as the probability mass over
+ * the bin width: pdf[b] = (F(edges[b+1]) - F(edges[b])) / (edges[b+1] -
+ * edges[b]) for b < bins (edges holds bins + 1 entries, as nl_hist makes
+ * them).  Returns NL_OK or NL_EINVAL (edges not increasing). */
+int nl_gof_bin_density(const nl_dist *d, const double *edges, size_t bins, double *pdf);
 
 #endif

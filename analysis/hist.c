@@ -5,6 +5,7 @@
 #include <gsl/gsl_histogram.h>
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
+#include <stdlib.h>
 
 int nl_moments_compute(const nl_field *x, nl_moments *m)
 {
@@ -26,6 +27,8 @@ int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
     if (bins < 1)
         return NL_ERROR(NL_EINVAL, "bins: expected at least 1, got %zu", bins);
     gsl_stats_minmax(&lo, &hi, x->data, 1, x->count);
+    if (!isfinite(lo) || !isfinite(hi))
+        return NL_ERROR(NL_EINVAL, "histogram: expected finite samples, got range [%g, %g]", lo, hi);
     if (!(hi > lo))
         hi = lo + 1;
     h = gsl_histogram_alloc(bins);
@@ -41,4 +44,22 @@ int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
         counts[b] = h->bin[b];
     gsl_histogram_free(h);
     return NL_OK;
+}
+
+int nl_hist_density(const nl_field *x, const nl_moments *mo, size_t bins, double *mid, double *density, double *gauss)
+{
+    double *edges = malloc((bins + 1) * sizeof *edges), *counts = malloc((bins ? bins : 1) * sizeof *counts);
+    int st;
+    if (!edges || !counts)
+        st = NL_ERROR(NL_ENOMEM, "out of memory for %zu bins", bins);
+    else if (!(st = nl_hist(x, bins, edges, counts)))
+        for (size_t b = 0; b < bins; b++) {
+            double w = edges[b + 1] - edges[b];
+            mid[b] = 0.5 * (edges[b] + edges[b + 1]);
+            density[b] = counts[b] / ((double)x->count * w);
+            gauss[b] = exp(-0.5 * (mid[b] - mo->mean) * (mid[b] - mo->mean) / mo->variance) /
+                       sqrt(2 * M_PI * mo->variance);
+        }
+    free(edges), free(counts);
+    return st;
 }

@@ -1,4 +1,5 @@
-/* Histogram and moments of a field's samples (GSL statistics). */
+/* Histogram and moments of a field's samples (GSL statistics).
+ * Thread safety: reentrant (no shared state); the caller owns every array. */
 #ifndef NL_HIST_H
 #define NL_HIST_H
 
@@ -15,10 +16,22 @@ typedef struct {
     double min, max;  /* range */
 } nl_moments;
 
+/* Moments and range of every sample of x (any dim; units of the samples).
+ * Returns NL_OK or NL_EINVAL (fewer than 2 samples); *m is untouched on
+ * failure.  Use this, not loops by hand, for a field's mean and variance. */
 int nl_moments_compute(const nl_field *x, nl_moments *m);
 
 /* Histogram of `bins` equal bins over [min, max] of the samples (the maximum
- * falls in the last bin): edges[0..bins], counts[0..bins-1]. */
+ * falls in the last bin; a constant field spans [v, v + 1]): the caller's
+ * edges[0..bins] and counts[0..bins-1] (counts as doubles).  Returns NL_OK,
+ * NL_EINVAL (bins = 0, or a sample is infinite or NaN) or NL_ENOMEM. */
 int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
+
+/* The histogram of nl_hist as a density against the Gaussian of the
+ * moments mo (from nl_moments_compute): for each of the bins, its midpoint,
+ * count / (N width) and the Gaussian density of mean mo->mean and variance
+ * mo->variance at the midpoint (the caller's arrays of bins entries).
+ * Returns the codes of nl_hist, or NL_ENOMEM. */
+int nl_hist_density(const nl_field *x, const nl_moments *mo, size_t bins, double *mid, double *density, double *gauss);
 
 #endif

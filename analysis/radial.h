@@ -15,6 +15,11 @@
 
 enum { NL_GRID_LAG = 0, NL_GRID_FREQ = 1 };
 
+/* kind: NL_GRID_LAG (g an ACF estimate, core/autocorr.h: distances in
+ * length units) or NL_GRID_FREQ (g a spectrum, core/wk.h: distances in
+ * cycles per unit length); step in the same units.  r, v and cnt are the
+ * caller's arrays of nbins entries.  Returns NL_OK or NL_EINVAL (step not
+ * positive).  Reentrant. */
 int nl_radial(const nl_field *g, int kind, double step, size_t nbins, double *r, double *v, size_t *cnt);
 
 #endif

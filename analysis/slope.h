@@ -22,7 +22,10 @@ typedef struct {
     double fractal_dim; /* eq. (16) */
 } nl_slope;
 
-/* Frequencies f[i] with fmin <= f <= fmax and psd > 0 are used. */
+/* Frequencies f[i] (cycles per unit length, any positive unit) with
+ * fmin <= f <= fmax and psd > 0 are used; E is the Euclidean dimension for
+ * eq. (16).  Returns NL_OK, NL_EINVAL (fewer than 3 frequencies in the
+ * band) or NL_ENOMEM; *out is untouched on failure.  Reentrant. */
 int nl_psd_slope(const double *f, const double *psd, size_t n, double fmin, double fmax, int E, nl_slope *out);
 
 /* The same fitted to every ordinate of a 2D or 3D periodogram P (wrapped
@@ -31,7 +34,8 @@ int nl_psd_slope(const double *f, const double *psd, size_t n, double fmin, doub
  * Gaussian field's periodogram are close to independent with a log of
  * constant variance, so the least-squares interval holds; fitting the
  * radial average instead gives too narrow an interval (its low-frequency
- * rings hold few ordinates, over which a steep spectrum varies). */
+ * rings hold few ordinates, over which a steep spectrum varies).  Returns
+ * the codes of nl_psd_slope. */
 int nl_psd_slope_grid(const nl_field *P, double fmin, double fmax, nl_slope *out);
 
 #endif

@@ -23,7 +23,14 @@
 /* For each lag (lags[2i], lags[2i+1]) in samples (y ignored in 1D), the
  * mean of C(p, p + lag) over the positions p with p and p + lag inside the
  * nx x ny field (n = 1 in 1D), i.e. E of the unbiased estimate with known
- * mean 0.  m is the model the coefficients were made from. */
+ * mean 0.  m is the model the coefficients were made from.  out holds
+ * nlags values (variance units of the model).  The subdivision must be
+ * periodic with nx = cx 2^levels (and ny = cy 2^levels in 2D), cx, cy >= 2.
+ * Returns NL_OK, NL_EINVAL (neighbourhood half-widths above 4 in 2D or
+ * 128 in 1D; random neighbourhoods; a size that is not the coarse
+ * size times 2^levels), NL_ETOOBIG (nx ny > 4096), NL_ENOMEM, or the codes
+ * of nl_wk_sample_acf.  Reentrant (c and m are only read; as thread-safe as
+ * the model). */
 int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,
                         const long *lags, double *out);
 

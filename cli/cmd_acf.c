@@ -1,9 +1,8 @@
 /* noiselab acf: estimate the autocorrelation of a field. */
 #include "cli.h"
 #include "../analysis/acf.h"
-#include "../analysis/radial.h"
+#include "../analysis/fftshift.h"
 #include "../core/model.h"
-#include "../core/wk.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -29,43 +28,15 @@ static const char help[] =
     "  -o            TSV with columns lag, acf[, target] (default: TSV on stdout), or .exr:\n"
     "                the whole 2D/3D estimate with lag 0 at the centre\n";
 
-/* R of the target model at distance lag[i] along `axis`. */
-static void target_values(const char *spec, const nl_field *x, int axis, const double *lag, size_t nl,
-                          double *out)
-{
-    nl_model *m;
-    int st = nl_model_parse(spec, &m);
-    if (st)
-        cli_die_status(st);
-    if ((st = nl_model_check_dim(m, x->dim)))
-        cli_die_status(st);
-    if (nl_model_is_spectral(m)) {
-        /* R of a spectral model: the inverse transform on a grid twice the data's */
-        size_t n2[3];
-        nl_field *R;
-        for (int a = 0; a < 3; a++)
-            n2[a] = a < x->dim ? 2 * x->n[a] : 1;
-        R = nl_field_alloc(x->dim, n2, x->h, &st);
-        if (!R || (st = nl_wk_sample_acf(m, R)))
-            cli_die_status(st);
-        for (size_t i = 0; i < nl; i++) {
-            size_t idx = (size_t)lrint(lag[i] / x->h[axis]), stride = 1;
-            for (int a = 0; a < axis; a++)
-                stride *= R->n[a];
-            out[i] = idx < n2[axis] / 2 ? R->data[idx * stride] : NAN;
-        }
-        nl_field_free(R);
-    } else {
-        for (size_t i = 0; i < nl; i++) {
-            double v[3] = {0, 0, 0};
-            v[axis] = lag[i];
-            out[i] = isfinite(lag[i]) ? nl_model_acf(m, x->dim, v) : NAN;
-        }
-    }
-    nl_model_free(m);
-}
+/* Options of noiselab acf. */
+typedef struct {
+    const char *in, *out, *tmp, *target; /* input, output (and its temporary), model */
+    double maxlag, mean;                 /* NAN: default */
+    int axis, radial, unbiased, json, direct, bands;
+    size_t nl;                           /* lags 0 .. nl - 1 */
+} acf_opts;
 
-int cli_cmd_acf(int argc, char **argv)
+static void parse(int argc, char **argv, acf_opts *o)
 {
     static const struct option opts[] = {
         {"max-lag", required_argument, 0, 'L'}, {"axis", required_argument, 0, 'a'},
@@ -74,161 +45,177 @@ int cli_cmd_acf(int argc, char **argv)
         {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
         {"help", no_argument, 0, 'h'},          {"direct", no_argument, 0, 'D'},
         {"bands", no_argument, 0, 'B'},          {0}};
-    const char *out = NULL, *tmp = NULL, *target = NULL, *in;
-    double maxlag = NAN, mean = NAN, *lag, *val, *tgt = NULL;
-    int c, axis = 0, radial = 0, unbiased = 0, json = 0, st, direct = 0, bands = 0;
-    double *blo = NULL, *bhi = NULL;
-    size_t nl, *cnt = NULL;
-    nl_field *x, *full;
-
+    int c;
+    o->maxlag = o->mean = NAN;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
         case 'L':
-            maxlag = cli_parse_double("--max-lag", optarg);
-            if (!(maxlag >= 0))
+            o->maxlag = cli_parse_double("--max-lag", optarg);
+            if (!(o->maxlag >= 0))
                 cli_die(2, "--max-lag: expected a non-negative lag, got \"%s\"", optarg);
             break;
         case 'a':
             if (strlen(optarg) != 1 || !strchr("xyz", optarg[0]))
                 cli_die(2, "--axis: expected x, y or z, got \"%s\"", optarg);
-            axis = optarg[0] - 'x';
+            o->axis = optarg[0] - 'x';
             break;
-        case 'r': radial = 1; break;
-        case 'u': unbiased = 1; break;
-        case 'm': mean = cli_parse_double("--mean", optarg); break;
-        case 't': target = optarg; break;
-        case 'j': json = 1; break;
-        case 'D': direct = 1; break;
-        case 'B': bands = 1; break;
-        case 'o': out = optarg; break;
-        case 'h': fputs(help, stdout); return 0;
+        case 'r': o->radial = 1; break;
+        case 'u': o->unbiased = 1; break;
+        case 'm': o->mean = cli_parse_double("--mean", optarg); break;
+        case 't': o->target = optarg; break;
+        case 'j': o->json = 1; break;
+        case 'D': o->direct = 1; break;
+        case 'B': o->bands = 1; break;
+        case 'o': o->out = optarg; break;
+        case 'h': fputs(help, stdout); exit(0);
         default: cli_bad_option("acf", c, argv);
         }
     }
     if (optind + 1 != argc)
         cli_die(2, "acf: expected one input file, got %d", argc - optind);
-    in = argv[optind];
-    x = cli_read_field(in, NULL);
-    if (axis >= x->dim)
-        cli_die(2, "--axis: the field is %dD, got axis \"%c\"", x->dim, 'x' + axis);
-    if (radial && x->dim == 1)
-        cli_die(2, "--radial: expected a 2D or 3D field, %s is 1D", in);
-    if (isnan(maxlag))
-        nl = x->n[axis] / 4;
-    else if ((nl = (size_t)floor(maxlag / x->h[axis] + 1e-9)) >= x->n[axis])
-        cli_die(2, "--max-lag: expected at most %g for %zu samples, got %g", (double)(x->n[axis] - 1) * x->h[axis],
-                x->n[axis], maxlag);
-    nl += 1;
-    if (out)
-        tmp = cli_out_begin(out);
-    if ((st = nl_acf_full(x, mean, unbiased, &full)))
+    o->in = argv[optind];
+}
+
+/* Checks that need the field; sets the number of lags. */
+static void check_field(acf_opts *o, const nl_field *x)
+{
+    if (o->axis >= x->dim)
+        cli_die(2, "--axis: the field is %dD, got axis \"%c\"", x->dim, 'x' + o->axis);
+    if (o->radial && x->dim == 1)
+        cli_die(2, "--radial: expected a 2D or 3D field, %s is 1D", o->in);
+    if (isnan(o->maxlag))
+        o->nl = x->n[o->axis] / 4;
+    else if ((o->nl = (size_t)floor(o->maxlag / x->h[o->axis] + 1e-9)) >= x->n[o->axis])
+        cli_die(2, "--max-lag: expected at most %g for %zu samples, got %g",
+                (double)(x->n[o->axis] - 1) * x->h[o->axis], x->n[o->axis], o->maxlag);
+    o->nl += 1;
+}
+
+/* The whole estimate, lag 0 at the centre, to EXR. */
+static void write_centred(const acf_opts *o, const nl_field *full)
+{
+    nl_field *C;
+    nl_meta meta;
+    int st;
+    if ((st = nl_acf_centred_alloc(full, &C)))
         cli_die_status(st);
-    if (out && cli_has_ext(out, ".exr")) {
-        /* the whole ACF, lag 0 at the centre (lags -(n-1) .. n-1 per axis) */
-        size_t cn[3] = {1, 1, 1};
-        for (int a = 0; a < x->dim; a++)
-            cn[a] = 2 * x->n[a] - 1;
-        nl_field *C = nl_field_alloc(x->dim, cn, x->h, &st);
-        nl_meta meta;
-        if (!C)
-            cli_die_status(st);
-        for (size_t k = 0; k < cn[2]; k++)
-            for (size_t j = 0; j < cn[1]; j++)
-                for (size_t i = 0; i < cn[0]; i++) {
-                    size_t idx[3] = {i, j, k}, src[3];
-                    for (int a = 0; a < 3; a++) {
-                        long l = a < x->dim ? (long)idx[a] - (long)(x->n[a] - 1) : 0;
-                        src[a] = (size_t)(l < 0 ? l + (long)full->n[a] : l);
-                    }
-                    C->data[(k * cn[1] + j) * cn[0] + i] = full->data[(src[2] * full->n[1] + src[1]) * full->n[0] + src[0]];
-                }
-        memset(&meta, 0, sizeof meta);
-        snprintf(meta.method, sizeof meta.method, "acf %s, lag 0 at the centre", unbiased ? "unbiased" : "biased");
-        if ((st = nl_exr_write(tmp, C, &meta)))
-            cli_die_status(st);
-        cli_out_commit(out);
-        nl_field_free(C), nl_field_free(full), nl_field_free(x);
-        return 0;
-    }
-    lag = malloc(nl * sizeof *lag);
-    val = malloc(nl * sizeof *val);
-    cnt = malloc(nl * sizeof *cnt);
-    if (!lag || !val || !cnt)
+    memset(&meta, 0, sizeof meta);
+    snprintf(meta.method, sizeof meta.method, "acf %s, lag 0 at the centre", o->unbiased ? "unbiased" : "biased");
+    if ((st = nl_exr_write(o->tmp, C, &meta)))
+        cli_die_status(st);
+    cli_out_commit(o->out);
+    nl_field_free(C);
+}
+
+/* Lags and estimates (and the band) along the axis or radially. */
+static void estimate(const acf_opts *o, const nl_field *x, const nl_field *full, double *lag, double *val,
+                     double *blo, double *bhi)
+{
+    size_t nl = o->nl, *cnt = malloc(nl * sizeof *cnt);
+    int st;
+    if (!cnt)
         cli_die(1, "out of memory");
-    if ((direct || bands) && radial)
-        cli_die(2, "acf: --direct and --bands go with an axis, not --radial");
-    if (bands && (x->dim != 1 || unbiased))
-        cli_die(2, "acf: --bands is for the biased estimate of a 1D field");
-    if (direct) {
-        st = nl_acf_direct(x, mean, unbiased, axis, nl - 1, val);
+    if (o->direct) {
+        st = nl_acf_direct(x, o->mean, o->unbiased, o->axis, nl - 1, val);
         for (size_t i = 0; i < nl; i++)
-            lag[i] = (double)i * x->h[axis];
-    } else if (radial) {
-        double step = x->h[0];
-        for (int a = 1; a < x->dim; a++)
-            step = fmin(step, x->h[a]);
-        st = nl_radial(full, NL_GRID_LAG, step, nl, lag, val, cnt);
+            lag[i] = (double)i * x->h[o->axis];
+    } else if (o->radial) {
+        st = nl_acf_radial(full, nl, lag, val, cnt);
     } else {
-        st = nl_acf_axis(full, axis, nl - 1, lag, val);
+        st = nl_acf_axis(full, o->axis, nl - 1, lag, val);
     }
     if (st)
         cli_die_status(st);
-    if (bands) {
-        size_t nc = 4 * (nl - 1) + 1 < x->n[0] ? 4 * (nl - 1) + 1 : x->n[0];
-        double *cv = malloc(nc * sizeof *cv), *var = malloc(nl * sizeof *var);
-        blo = malloc(nl * sizeof *blo), bhi = malloc(nl * sizeof *bhi);
-        if (!cv || !var || !blo || !bhi)
-            cli_die(1, "out of memory");
-        for (size_t i = 0; i < nc; i++)
-            cv[i] = full->data[i];
-        if (nc < 2 * (nl - 1) + 1)
+    if (o->bands) {
+        if ((x->n[0] < 4 * (nl - 1) + 1 ? x->n[0] : 4 * (nl - 1) + 1) < 2 * (nl - 1) + 1)
             cli_die(2, "--bands: expected a field of at least %zu samples for --max-lag %zu", 2 * (nl - 1) + 1, nl - 1);
-        if ((st = nl_acf_bartlett(cv, nc, x->count, nl - 1, var)))
+        if ((st = nl_acf_bartlett_band(full, x->count, nl - 1, val, blo, bhi)))
             cli_die_status(st);
-        for (size_t i = 0; i < nl; i++)
-            blo[i] = val[i] - 1.959964 * sqrt(var[i]), bhi[i] = val[i] + 1.959964 * sqrt(var[i]);
-        free(cv), free(var);
     }
-    if (target) {
-        tgt = malloc(nl * sizeof *tgt);
-        if (!tgt)
-            cli_die(1, "out of memory");
-        target_values(target, x, radial ? 0 : axis, lag, nl, tgt);
-    }
-    if (json) {
-        json_t *o = json_pack("{s:o,s:o}", "lag", cli_json_array(lag, nl), "acf", cli_json_array(val, nl));
+    free(cnt);
+}
+
+static void target_values(const acf_opts *o, const nl_field *x, const double *lag, double *tgt)
+{
+    nl_model *m;
+    int st;
+    if ((st = nl_model_parse(o->target, &m)) ||
+        (st = nl_acf_model_values(m, x->dim, x->n, x->h, o->radial ? 0 : o->axis, lag, o->nl, tgt)))
+        cli_die_status(st);
+    nl_model_free(m);
+}
+
+static void output(const acf_opts *o, const double *lag, const double *val, const double *tgt, const double *blo,
+                   const double *bhi)
+{
+    size_t nl = o->nl;
+    int st;
+    if (o->json) {
+        json_t *j = json_pack("{s:o,s:o}", "lag", cli_json_array(lag, nl), "acf", cli_json_array(val, nl));
         if (tgt)
-            json_object_set_new(o, "target", cli_json_array(tgt, nl));
-        if (bands) {
-            json_object_set_new(o, "band_lo", cli_json_array(blo, nl));
-            json_object_set_new(o, "band_hi", cli_json_array(bhi, nl));
+            json_object_set_new(j, "target", cli_json_array(tgt, nl));
+        if (o->bands) {
+            json_object_set_new(j, "band_lo", cli_json_array(blo, nl));
+            json_object_set_new(j, "band_hi", cli_json_array(bhi, nl));
         }
-        json_object_set_new(o, "estimator", json_string(unbiased ? "unbiased" : "biased"));
-        json_object_set_new(o, "direction", json_string(radial ? "radial" : (const char *[]){"x", "y", "z"}[axis]));
-        cli_json_print(o);
+        json_object_set_new(j, "estimator", json_string(o->unbiased ? "unbiased" : "biased"));
+        json_object_set_new(j, "direction", json_string(o->radial ? "radial" : (const char *[]){"x", "y", "z"}[o->axis]));
+        cli_json_print(j);
     }
-    if (out || !json) {
+    if (o->out || !o->json) {
         const char *names[5] = {"lag", "acf"};
         const double *cols[5] = {lag, val};
         int ncol = 2;
+        char comment[256];
         if (tgt)
             names[ncol] = "target", cols[ncol++] = tgt;
-        if (bands)
+        if (o->bands)
             names[ncol] = "lo", cols[ncol++] = blo, names[ncol] = "hi", cols[ncol++] = bhi;
-        char comment[256];
         snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in spacing units",
-                 unbiased ? "unbiased" : "biased", radial ? "radial average" : "along one axis");
-        st = cli_write_table(out ? tmp : NULL, comment, ncol, names, nl, cols);
-        if (st)
+                 o->unbiased ? "unbiased" : "biased", o->radial ? "radial average" : "along one axis");
+        if ((st = cli_write_table(o->out ? o->tmp : NULL, comment, ncol, names, nl, cols)))
             cli_die_status(st);
     }
-    if (out)
-        cli_out_commit(out);
-    free(lag);
-    free(val);
-    free(cnt);
-    free(tgt), free(blo), free(bhi);
+    if (o->out)
+        cli_out_commit(o->out);
+}
+
+int cli_cmd_acf(int argc, char **argv)
+{
+    acf_opts o = {0};
+    double *lag, *val, *tgt = NULL, *blo = NULL, *bhi = NULL;
+    nl_field *x, *full;
+    int st;
+
+    parse(argc, argv, &o);
+    x = cli_read_field(o.in, NULL);
+    check_field(&o, x);
+    if (o.out)
+        o.tmp = cli_out_begin(o.out);
+    if ((st = nl_acf_full(x, o.mean, o.unbiased, &full)))
+        cli_die_status(st);
+    if (o.out && cli_has_ext(o.out, ".exr")) {
+        write_centred(&o, full);
+        nl_field_free(full), nl_field_free(x);
+        return 0;
+    }
+    if ((o.direct || o.bands) && o.radial)
+        cli_die(2, "acf: --direct and --bands go with an axis, not --radial");
+    if (o.bands && (x->dim != 1 || o.unbiased))
+        cli_die(2, "acf: --bands is for the biased estimate of a 1D field");
+    lag = malloc(o.nl * sizeof *lag), val = malloc(o.nl * sizeof *val);
+    if (o.bands)
+        blo = malloc(o.nl * sizeof *blo), bhi = malloc(o.nl * sizeof *bhi);
+    if (o.target)
+        tgt = malloc(o.nl * sizeof *tgt);
+    if (!lag || !val || (o.bands && (!blo || !bhi)) || (o.target && !tgt))
+        cli_die(1, "out of memory");
+    estimate(&o, x, full, lag, val, blo, bhi);
+    if (o.target)
+        target_values(&o, x, lag, tgt);
+    output(&o, lag, val, tgt, blo, bhi);
+    free(lag), free(val), free(tgt), free(blo), free(bhi);
     nl_field_free(full);
     nl_field_free(x);
     return 0;

@@ -1,6 +1,7 @@
 /* noiselab card: one picture of a 2D field in the manner of Lagae et al.'s
  * survey of procedural noise. */
 #include "cli.h"
+#include "../analysis/fftshift.h"
 #include "../analysis/hist.h"
 #include "../analysis/psd.h"
 #include "../analysis/radial.h"
@@ -23,35 +24,92 @@ static const char help[] =
     "radial spectrum against the model's (when given); the histogram against the\n"
     "Gaussian of the same mean and variance.  Drawn by gnuplot.\n";
 
-static nl_field *centred_log(const nl_field *P)
+/* A spectrum, centred, as a log-scale picture spanning 7 decades. */
+static void write_log_picture(const char *path, const nl_field *P)
 {
+    nl_field *C;
+    double mx;
     int st;
-    nl_field *C = nl_field_alloc(2, P->n, P->h, &st);
-    double mx = 0;
-    if (!C)
+    if ((st = nl_fftshift_alloc(P, &C)))
         cli_die_status(st);
-    for (size_t q = 0; q < P->count; q++)
-        mx = fmax(mx, P->data[q]);
-    for (size_t j = 0; j < P->n[1]; j++)
-        for (size_t i = 0; i < P->n[0]; i++)
-            C->data[((j + P->n[1] / 2) % P->n[1]) * P->n[0] + (i + P->n[0] / 2) % P->n[0]] =
-                log10(fmax(P->data[j * P->n[0] + i], mx * 1e-8));
-    return C;
+    mx = log10(nl_fftshift_log10_floor(C, 1e-8));
+    nl_png_write_field(path, C, mx - 7, mx);
+    nl_field_free(C);
 }
 
-int cli_cmd_card(int argc, char **argv)
+/* Radial spectra on the Welch grid: measured and (with a model) the model's. */
+static void write_radial(const char *path, const nl_field *W, const nl_model *m, size_t seg)
+{
+    size_t nb = seg / 2 + 1, *cnt = malloc(nb * sizeof *cnt);
+    double *r = malloc(nb * sizeof *r), *v = malloc(nb * sizeof *v), *t = malloc(nb * sizeof *t);
+    double step = 1.0 / ((double)seg * W->h[0]);
+    int st;
+    if (!cnt || !r || !v || !t)
+        cli_die(1, "out of memory");
+    nl_radial(W, NL_GRID_FREQ, step, nb, r, v, cnt);
+    for (size_t b = 0; b < nb; b++)
+        t[b] = NAN;
+    if (m) {
+        nl_field *S = nl_field_alloc(2, W->n, W->h, &st);
+        double *rr = malloc(nb * sizeof *rr);
+        if (S && nl_wk_sample_spectrum(m, S) == NL_OK)
+            nl_radial(S, NL_GRID_FREQ, step, nb, rr, t, cnt);
+        nl_field_free(S), free(rr);
+    }
+    FILE *fp = fopen(path, "w");
+    fprintf(fp, "f\twelch\ttarget\n");
+    for (size_t b = 1; b < nb; b++)
+        fprintf(fp, "%.8g\t%.8g\t%.8g\n", r[b], v[b], t[b]);
+    fclose(fp);
+    free(cnt), free(r), free(v), free(t);
+}
+
+/* The histogram as a density against the Gaussian of the same moments. */
+static void write_hist(const char *path, const nl_field *x, const nl_moments *mo)
+{
+    double mid[40], dens[40], gauss[40];
+    FILE *fp;
+    nl_hist_density(x, mo, 40, mid, dens, gauss);
+    fp = fopen(path, "w");
+    fprintf(fp, "x\tdensity\tgauss\n");
+    for (int b = 0; b < 40; b++)
+        fprintf(fp, "%.8g\t%.8g\t%.8g\n", mid[b], dens[b], gauss[b]);
+    fclose(fp);
+}
+
+static void write_script(const char *path, const char *dir, const char *tmp, const char *name, const char *spec,
+                         size_t nseg)
+{
+    FILE *fp = fopen(path, "w");
+    fprintf(fp, "set terminal pngcairo size 1500,360 font 'DejaVu Sans,10'\nset output '%s'\n"
+                "set multiplot layout 1,5 title '%s%s%s'\nunset key\nunset tics\nunset border\nset size ratio -1\n"
+                "set title 'field'\nplot '%s/field.png' binary filetype=png with rgbimage\n"
+                "set title 'periodogram (log)'\nplot '%s/periodogram.png' binary filetype=png with rgbimage\n"
+                "set title 'Welch, %zu segments (log)'\nplot '%s/welch.png' binary filetype=png with rgbimage\n"
+                "set size noratio\nset border\nset tics\nset key bottom left\nset logscale xy\nset format y '10^{%%L}'\n"
+                "set title 'radial spectrum'\nset xlabel 'cycles per unit'\n"
+                "plot '%s/radial.tsv' using 1:2 with lines lw 2 lc rgb '#1f4e99' title 'measured'%s\n"
+                "unset logscale\nset format y '%%g'\nset xlabel 'value'\nset key top right\n"
+                "set title 'histogram'\nplot '%s/hist.tsv' using 1:2 with boxes lc rgb '#9fb6cd' title 'field', "
+                "'' using 1:3 with lines lw 2 lc rgb 'black' title 'Gaussian'\nunset multiplot\n",
+            tmp, name, spec ? " against " : "", spec ? spec : "", dir, dir, nseg, dir, dir,
+            spec ? ", '' using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'model'" : "", dir);
+    fclose(fp);
+}
+
+static const char *parse(int argc, char **argv, const char **spec)
 {
     static const struct option opts[] = {{"output", required_argument, 0, 'o'}, {"acf", required_argument, 0, 'a'},
                                          {"spectrum", required_argument, 0, 'a'}, {"help", no_argument, 0, 'h'},
                                          {0}};
-    const char *out = NULL, *spec = NULL;
-    int c, st;
+    const char *out = NULL;
+    int c;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
         case 'o': out = optarg; break;
-        case 'a': spec = optarg; break;
-        case 'h': fputs(help, stdout); return 0;
+        case 'a': *spec = optarg; break;
+        case 'h': fputs(help, stdout); exit(0);
         default: cli_bad_option("card", c, argv);
         }
     }
@@ -59,6 +117,13 @@ int cli_cmd_card(int argc, char **argv)
         cli_die(2, "card: expected one field file, got %d", argc - optind);
     if (!out || !cli_has_ext(out, ".png"))
         cli_die(2, "card: -o: expected an output file ending in .png");
+    return out;
+}
+
+int cli_cmd_card(int argc, char **argv)
+{
+    const char *spec = NULL, *out = parse(argc, argv, &spec);
+    int st;
     nl_field *x = cli_read_field(argv[optind], NULL), *P, *W;
     if (x->dim != 2 || x->n[0] < 32 || x->n[1] < 32)
         cli_die(2, "card: expected a 2D field of at least 32 x 32, %s is not", argv[optind]);
@@ -78,64 +143,16 @@ int cli_cmd_card(int argc, char **argv)
     double sd = sqrt(mo.variance);
     if ((st = nl_png_write_field(path, x, mo.mean - 3 * sd, mo.mean + 3 * sd)))
         cli_die_status(st);
-    nl_field *C = centred_log(P), *D = centred_log(W);
-    double mx = -INFINITY;
-    for (size_t q = 0; q < C->count; q++)
-        mx = fmax(mx, C->data[q]);
     snprintf(path, sizeof path, "%s/periodogram.png", dir);
-    nl_png_write_field(path, C, mx - 7, mx);
-    mx = -INFINITY;
-    for (size_t q = 0; q < D->count; q++)
-        mx = fmax(mx, D->data[q]);
+    write_log_picture(path, P);
     snprintf(path, sizeof path, "%s/welch.png", dir);
-    nl_png_write_field(path, D, mx - 7, mx);
-    /* radial spectra on the Welch grid */
-    size_t nb = seg / 2 + 1, *cnt = malloc(nb * sizeof *cnt);
-    double *r = malloc(nb * sizeof *r), *v = malloc(nb * sizeof *v), *t = malloc(nb * sizeof *t);
-    nl_radial(W, NL_GRID_FREQ, 1.0 / ((double)seg * x->h[0]), nb, r, v, cnt);
-    for (size_t b = 0; b < nb; b++)
-        t[b] = NAN;
-    if (m) {
-        nl_field *S = nl_field_alloc(2, W->n, W->h, &st);
-        double *rr = malloc(nb * sizeof *rr);
-        if (S && nl_wk_sample_spectrum(m, S) == NL_OK)
-            nl_radial(S, NL_GRID_FREQ, 1.0 / ((double)seg * x->h[0]), nb, rr, t, cnt);
-        nl_field_free(S), free(rr);
-    }
+    write_log_picture(path, W);
     snprintf(path, sizeof path, "%s/radial.tsv", dir);
-    FILE *fp = fopen(path, "w");
-    fprintf(fp, "f\twelch\ttarget\n");
-    for (size_t b = 1; b < nb; b++)
-        fprintf(fp, "%.8g\t%.8g\t%.8g\n", r[b], v[b], t[b]);
-    fclose(fp);
-    /* histogram against the Gaussian */
-    double edges[41], counts[40];
-    nl_hist(x, 40, edges, counts);
+    write_radial(path, W, m, seg);
     snprintf(path, sizeof path, "%s/hist.tsv", dir);
-    fp = fopen(path, "w");
-    fprintf(fp, "x\tdensity\tgauss\n");
-    for (int b = 0; b < 40; b++) {
-        double mid = 0.5 * (edges[b] + edges[b + 1]), w = edges[b + 1] - edges[b];
-        fprintf(fp, "%.8g\t%.8g\t%.8g\n", mid, counts[b] / ((double)x->count * w),
-                exp(-0.5 * (mid - mo.mean) * (mid - mo.mean) / mo.variance) / sqrt(2 * M_PI * mo.variance));
-    }
-    fclose(fp);
+    write_hist(path, x, &mo);
     snprintf(path, sizeof path, "%s/card.gp", dir);
-    fp = fopen(path, "w");
-    fprintf(fp, "set terminal pngcairo size 1500,360 font 'DejaVu Sans,10'\nset output '%s'\n"
-                "set multiplot layout 1,5 title '%s%s%s'\nunset key\nunset tics\nunset border\nset size ratio -1\n"
-                "set title 'field'\nplot '%s/field.png' binary filetype=png with rgbimage\n"
-                "set title 'periodogram (log)'\nplot '%s/periodogram.png' binary filetype=png with rgbimage\n"
-                "set title 'Welch, %zu segments (log)'\nplot '%s/welch.png' binary filetype=png with rgbimage\n"
-                "set size noratio\nset border\nset tics\nset key bottom left\nset logscale xy\nset format y '10^{%%L}'\n"
-                "set title 'radial spectrum'\nset xlabel 'cycles per unit'\n"
-                "plot '%s/radial.tsv' using 1:2 with lines lw 2 lc rgb '#1f4e99' title 'measured'%s\n"
-                "unset logscale\nset format y '%%g'\nset xlabel 'value'\nset key top right\n"
-                "set title 'histogram'\nplot '%s/hist.tsv' using 1:2 with boxes lc rgb '#9fb6cd' title 'field', "
-                "'' using 1:3 with lines lw 2 lc rgb 'black' title 'Gaussian'\nunset multiplot\n",
-            tmp, argv[optind], m ? " against " : "", m ? spec : "", dir, dir, nseg, dir, dir,
-            m ? ", '' using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'model'" : "", dir);
-    fclose(fp);
+    write_script(path, dir, tmp, argv[optind], m ? spec : NULL, nseg);
     snprintf(path, sizeof path, "gnuplot '%s/card.gp' 2>&1", dir);
     if (system(path) != 0)
         cli_die(1, "card: gnuplot failed");
@@ -143,7 +160,6 @@ int cli_cmd_card(int argc, char **argv)
     if (system(path) != 0)
         cli_die(1, "card: cannot remove %s", dir);
     cli_out_commit(out);
-    free(cnt), free(r), free(v), free(t);
-    nl_field_free(C), nl_field_free(D), nl_field_free(P), nl_field_free(W), nl_field_free(x), nl_model_free(m);
+    nl_field_free(P), nl_field_free(W), nl_field_free(x), nl_model_free(m);
     return 0;
 }

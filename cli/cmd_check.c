@@ -18,6 +18,52 @@ static const char help[] =
     "differentiable_order (null: infinitely), r2, singular_below_spacing (null:\n"
     "never), scale, spectral_decay, flags.  Exit status 0 whatever the verdict.\n";
 
+static void print_json(const char *spec, int dim, const nl_check *k)
+{
+    json_t *fl = json_array();
+    if (!k->positive_definite)
+        json_array_append_new(fl, json_string("not-positive-definite"));
+    if (k->singular_below > 0)
+        json_array_append_new(fl, json_string("singular"));
+    if (!k->isotropic_bound_ok)
+        json_array_append_new(fl, json_string("isotropic-bound"));
+    if (!k->monotone_3d)
+        json_array_append_new(fl, json_string("not-monotone-3d"));
+    json_t *o = json_pack("{s:s,s:i,s:b,s:f,s:o,s:b,s:b,s:f,s:o,s:o,s:o,s:f,s:o,s:o}", "model", spec, "dim", dim,
+                          "positive_definite", k->positive_definite, "min_spectrum", k->min_spectrum,
+                          "min_eigenvalue", isfinite(k->min_eigenvalue) ? json_real(k->min_eigenvalue) : json_null(),
+                          "isotropic_bound_ok", k->isotropic_bound_ok, "isotropic", k->isotropic, "min_r", k->min_r,
+                          "differentiable_order",
+                          k->differentiable_order < 0 ? json_null() : json_integer(k->differentiable_order), "r2",
+                          isfinite(k->r2) ? json_real(k->r2) : json_null(), "singular_below_spacing",
+                          k->singular_below > 0 ? json_real(k->singular_below) : json_null(), "scale", k->scale,
+                          "spectral_decay", isfinite(k->spectral_decay) ? json_real(k->spectral_decay) : json_null(),
+                          "flags", fl);
+    cli_json_print(o);
+}
+
+static void print_text(const char *spec, int dim, const nl_check *k)
+{
+    printf("%s in %dD: %s\n", spec, dim, k->positive_definite ? "positive definite" : "NOT positive definite");
+    printf("  min spectrum / max     %.3g\n", k->min_spectrum);
+    printf("  min eigenvalue / R(0)  %.3g\n", k->min_eigenvalue);
+    if (k->isotropic)
+        printf("  min R / R(0)           %.4f (isotropic bound -1/%d: %s)\n", k->min_r, dim,
+               k->isotropic_bound_ok ? "ok" : "violated");
+    if (dim == 3 && k->isotropic)
+        printf("  3D spectrum monotone   %s\n", k->monotone_3d ? "yes" : "no");
+    if (k->differentiable_order < 0)
+        printf("  differentiable         infinitely (spectrum decays faster than any power)\n");
+    else
+        printf("  differentiable         %d times (spectrum ~ f^-%.2f)\n", k->differentiable_order,
+               k->spectral_decay);
+    printf("  R''(0)                 %.6g\n", k->r2);
+    if (k->singular_below > 0)
+        printf("  numerically singular below spacing %.3g (subdivision, N = 2)\n", k->singular_below);
+    else
+        printf("  never numerically singular (down to spacing %.3g)\n", ldexp(k->scale, -24));
+}
+
 int cli_cmd_check(int argc, char **argv)
 {
     static const struct option opts[] = {{"acf", required_argument, 0, 'a'}, {"spectrum", required_argument, 0, 'a'},
@@ -45,48 +91,10 @@ int cli_cmd_check(int argc, char **argv)
         cli_die(2, "check: --dim: expected 1, 2 or 3");
     if ((st = nl_model_parse(spec, &m)) || (st = nl_check_model(m, dim, &k)))
         cli_die_status(st);
-    json_t *fl = json_array();
-    if (!k.positive_definite)
-        json_array_append_new(fl, json_string("not-positive-definite"));
-    if (k.singular_below > 0)
-        json_array_append_new(fl, json_string("singular"));
-    if (!k.isotropic_bound_ok)
-        json_array_append_new(fl, json_string("isotropic-bound"));
-    if (!k.monotone_3d)
-        json_array_append_new(fl, json_string("not-monotone-3d"));
-    if (json) {
-        json_t *o = json_pack("{s:s,s:i,s:b,s:f,s:o,s:b,s:b,s:f,s:o,s:o,s:o,s:f,s:o,s:o}", "model", spec, "dim", dim,
-                              "positive_definite", k.positive_definite, "min_spectrum", k.min_spectrum,
-                              "min_eigenvalue", isfinite(k.min_eigenvalue) ? json_real(k.min_eigenvalue) : json_null(),
-                              "isotropic_bound_ok", k.isotropic_bound_ok, "isotropic", k.isotropic, "min_r", k.min_r,
-                              "differentiable_order",
-                              k.differentiable_order < 0 ? json_null() : json_integer(k.differentiable_order), "r2",
-                              isfinite(k.r2) ? json_real(k.r2) : json_null(), "singular_below_spacing",
-                              k.singular_below > 0 ? json_real(k.singular_below) : json_null(), "scale", k.scale,
-                              "spectral_decay", isfinite(k.spectral_decay) ? json_real(k.spectral_decay) : json_null(),
-                              "flags", fl);
-        cli_json_print(o);
-    } else {
-        printf("%s in %dD: %s\n", spec, dim, k.positive_definite ? "positive definite" : "NOT positive definite");
-        printf("  min spectrum / max     %.3g\n", k.min_spectrum);
-        printf("  min eigenvalue / R(0)  %.3g\n", k.min_eigenvalue);
-        if (k.isotropic)
-            printf("  min R / R(0)           %.4f (isotropic bound -1/%d: %s)\n", k.min_r, dim,
-                   k.isotropic_bound_ok ? "ok" : "violated");
-        if (dim == 3 && k.isotropic)
-            printf("  3D spectrum monotone   %s\n", k.monotone_3d ? "yes" : "no");
-        if (k.differentiable_order < 0)
-            printf("  differentiable         infinitely (spectrum decays faster than any power)\n");
-        else
-            printf("  differentiable         %d times (spectrum ~ f^-%.2f)\n", k.differentiable_order,
-                   k.spectral_decay);
-        printf("  R''(0)                 %.6g\n", k.r2);
-        if (k.singular_below > 0)
-            printf("  numerically singular below spacing %.3g (subdivision, N = 2)\n", k.singular_below);
-        else
-            printf("  never numerically singular (down to spacing %.3g)\n", ldexp(k.scale, -24));
-        json_decref(fl);
-    }
+    if (json)
+        print_json(spec, dim, &k);
+    else
+        print_text(spec, dim, &k);
     nl_model_free(m);
     return 0;
 }

@@ -17,87 +17,104 @@ static const char help[] =
     "(equal-probability bins) against it; DIST as in noiselab shape.  The tests\n"
     "assume independent samples: use them on white fields or sparse decimations.\n";
 
-int cli_cmd_hist(int argc, char **argv)
+/* Options of noiselab hist. */
+typedef struct {
+    const char *in, *out, *tmp, *against; /* input, output (and its temporary), distribution spec */
+    size_t bins;                          /* equal bins over [min, max] */
+    int json;
+} hist_opts;
+
+static void parse(int argc, char **argv, hist_opts *o)
 {
     static const struct option opts[] = {{"bins", required_argument, 0, 'b'}, {"json", no_argument, 0, 'j'},
                                          {"against", required_argument, 0, 'a'},
                                          {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
                                          {0}};
-    const char *out = NULL, *tmp = NULL, *against = NULL;
-    nl_dist *dist = NULL;
-    nl_gof gof;
-    double *pdf = NULL;
-    size_t bins = 50;
-    int c, json = 0, st;
-    double *edges, *counts;
-    nl_moments mo;
-    nl_field *x;
-
+    int c;
+    o->bins = 50;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
-        case 'b': bins = cli_parse_count("--bins", optarg, 1); break;
-        case 'a': against = optarg; break;
-        case 'j': json = 1; break;
-        case 'o': out = optarg; break;
-        case 'h': fputs(help, stdout); return 0;
+        case 'b': o->bins = cli_parse_count("--bins", optarg, 1); break;
+        case 'a': o->against = optarg; break;
+        case 'j': o->json = 1; break;
+        case 'o': o->out = optarg; break;
+        case 'h': fputs(help, stdout); exit(0);
         default: cli_bad_option("hist", c, argv);
         }
     }
     if (optind + 1 != argc)
         cli_die(2, "hist: expected one input file, got %d", argc - optind);
-    if (bins > 10000000)
-        cli_die(2, "--bins: expected at most 10000000, got %zu", bins);
-    if (against && (st = nl_dist_parse(against, &dist)))
-        cli_die_status(st);
-    x = cli_read_field(argv[optind], NULL);
-    if (out)
-        tmp = cli_out_begin(out);
-    edges = malloc((bins + 1) * sizeof *edges);
-    counts = malloc(bins * sizeof *counts);
-    if (!edges || !counts)
-        cli_die(1, "out of memory");
-    if ((st = nl_moments_compute(x, &mo)) || (st = nl_hist(x, bins, edges, counts)))
-        cli_die_status(st);
-    if (dist) {
-        if ((st = nl_gof_test(x->data, x->count, dist, bins < 2 ? 2 : bins, &gof)))
-            cli_die_status(st);
-        pdf = malloc(bins * sizeof *pdf);
-        if (!pdf)
-            cli_die(1, "out of memory");
-        /* expected density per bin: probability mass over the bin width */
-        for (size_t b = 0; b < bins; b++)
-            pdf[b] = (nl_dist_cdf(dist, edges[b + 1]) - nl_dist_cdf(dist, edges[b])) / (edges[b + 1] - edges[b]);
-    }
-    if (json) {
-        json_t *o = json_pack("{s:I,s:f,s:f,s:f,s:f,s:f,s:f,s:o,s:o}", "n", (json_int_t)mo.n, "mean", mo.mean,
-                              "variance", mo.variance, "skewness", mo.skewness, "kurtosis", mo.kurtosis, "min",
-                              mo.min, "max", mo.max, "edges", cli_json_array(edges, bins + 1), "counts",
+    if (o->bins > 10000000)
+        cli_die(2, "--bins: expected at most 10000000, got %zu", o->bins);
+    o->in = argv[optind];
+}
+
+static void output(const hist_opts *o, const nl_moments *mo, const double *edges, const double *counts,
+                   const nl_gof *gof, const double *pdf)
+{
+    size_t bins = o->bins;
+    int st;
+    if (o->json) {
+        json_t *j = json_pack("{s:I,s:f,s:f,s:f,s:f,s:f,s:f,s:o,s:o}", "n", (json_int_t)mo->n, "mean", mo->mean,
+                              "variance", mo->variance, "skewness", mo->skewness, "kurtosis", mo->kurtosis, "min",
+                              mo->min, "max", mo->max, "edges", cli_json_array(edges, bins + 1), "counts",
                               cli_json_array(counts, bins));
-        if (dist)
-            json_object_set_new(o, "against", json_pack("{s:s,s:f,s:f,s:f,s:I,s:f,s:o}", "distribution", against,
-                                                        "ks_statistic", gof.D, "ks_p", gof.p_ks, "chi2", gof.chi2,
-                                                        "chi2_bins", (json_int_t)gof.bins, "chi2_p", gof.p_chi2,
+        if (pdf)
+            json_object_set_new(j, "against", json_pack("{s:s,s:f,s:f,s:f,s:I,s:f,s:o}", "distribution", o->against,
+                                                        "ks_statistic", gof->D, "ks_p", gof->p_ks, "chi2", gof->chi2,
+                                                        "chi2_bins", (json_int_t)gof->bins, "chi2_p", gof->p_chi2,
                                                         "pdf", cli_json_array(pdf, bins)));
-        cli_json_print(o);
-    } else if (!out) {
-        printf("# n %zu\n# mean %.10g\n# variance %.10g\n# skewness %.10g\n# kurtosis %.10g (excess)\n", mo.n,
-               mo.mean, mo.variance, mo.skewness, mo.kurtosis);
-        if (dist)
+        cli_json_print(j);
+    } else if (!o->out) {
+        printf("# n %zu\n# mean %.10g\n# variance %.10g\n# skewness %.10g\n# kurtosis %.10g (excess)\n", mo->n,
+               mo->mean, mo->variance, mo->skewness, mo->kurtosis);
+        if (pdf)
             printf("# against %s: KS D %.6g p %.4g; chi-square %.6g on %zu equal-probability bins, p %.4g\n",
-                   against, gof.D, gof.p_ks, gof.chi2, gof.bins - 1, gof.p_chi2);
+                   o->against, gof->D, gof->p_ks, gof->chi2, gof->bins - 1, gof->p_chi2);
     }
-    if (out || !json) {
+    if (o->out || !o->json) {
         static const char *const names[] = {"lo", "hi", "count", "pdf"};
         const double *cols[] = {edges, edges + 1, counts, pdf};
-        if ((st = cli_write_table(out ? tmp : NULL, NULL, pdf ? 4 : 3, names, bins, cols)))
+        if ((st = cli_write_table(o->out ? o->tmp : NULL, NULL, pdf ? 4 : 3, names, bins, cols)))
             cli_die_status(st);
     }
-    if (out)
-        cli_out_commit(out);
-    free(edges);
-    free(counts);
-    free(pdf);
+    if (o->out)
+        cli_out_commit(o->out);
+}
+
+int cli_cmd_hist(int argc, char **argv)
+{
+    hist_opts o = {0};
+    nl_dist *dist = NULL;
+    nl_gof gof;
+    double *edges, *counts, *pdf = NULL;
+    nl_moments mo;
+    nl_field *x;
+    int st;
+
+    parse(argc, argv, &o);
+    if (o.against && (st = nl_dist_parse(o.against, &dist)))
+        cli_die_status(st);
+    x = cli_read_field(o.in, NULL);
+    if (o.out)
+        o.tmp = cli_out_begin(o.out);
+    edges = malloc((o.bins + 1) * sizeof *edges);
+    counts = malloc(o.bins * sizeof *counts);
+    if (!edges || !counts)
+        cli_die(1, "out of memory");
+    if ((st = nl_moments_compute(x, &mo)) || (st = nl_hist(x, o.bins, edges, counts)))
+        cli_die_status(st);
+    if (dist) {
+        if ((st = nl_gof_test(x->data, x->count, dist, o.bins < 2 ? 2 : o.bins, &gof)))
+            cli_die_status(st);
+        if (!(pdf = malloc(o.bins * sizeof *pdf)))
+            cli_die(1, "out of memory");
+        if ((st = nl_gof_bin_density(dist, edges, o.bins, pdf)))
+            cli_die_status(st);
+    }
+    output(&o, &mo, edges, counts, dist ? &gof : NULL, pdf);
+    free(edges), free(counts), free(pdf);
     nl_dist_free(dist);
     nl_field_free(x);
     return 0;

@@ -1,11 +1,11 @@
 /* noiselab psd: estimate the power spectral density of a field. */
 #include "cli.h"
+#include "../analysis/fftshift.h"
 #include "../analysis/psd.h"
-#include "../analysis/radial.h"
 #include "../analysis/slope.h"
+#include "../analysis/spectral.h"
 #include "../analysis/welch.h"
 #include "../core/model.h"
-#include "../core/wk.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -39,32 +39,18 @@ static const char help[] =
     "  --json        {\"freq\": [...], \"psd\": [...], \"sided\": \"two-sided\"} on stdout\n"
     "  -o            TSV with columns freq, psd[, target] (default: TSV on stdout)\n";
 
-/* 1D: f = 0..n/2; nD: radial bins.  Fills freq and val from grid P. */
-static size_t profile(const nl_field *P, double *freq, double *val, size_t *cnt)
-{
-    if (P->dim == 1) {
-        size_t nf = P->n[0] / 2 + 1;
-        for (size_t i = 0; i < nf; i++) {
-            freq[i] = (double)i / ((double)P->n[0] * P->h[0]);
-            val[i] = P->data[i];
-        }
-        return nf;
-    } else {
-        double step = INFINITY, fmax = INFINITY;
-        size_t nb;
-        int st;
-        for (int a = 0; a < P->dim; a++) {
-            step = fmin(step, 1.0 / ((double)P->n[a] * P->h[a]));
-            fmax = fmin(fmax, 0.5 / P->h[a]);
-        }
-        nb = (size_t)floor(fmax / step) + 1;
-        if ((st = nl_radial(P, NL_GRID_FREQ, step, nb, freq, val, cnt)))
-            cli_die_status(st);
-        return nb;
-    }
-}
+/* Options of noiselab psd and what it found. */
+typedef struct {
+    const char *in, *out, *tmp, *target;   /* input, output (and its temporary), model */
+    const char *preview, *pvtmp;           /* picture (and its temporary) */
+    double mean, f1, f2;                   /* known mean (NAN: sample), slope band */
+    int json, slope, angular;
+    size_t welch, nseg;                    /* segment side (0: periodogram), segments */
+    double sector[18], aniso;              /* angular sectors */
+    nl_slope sl;                           /* slope fit */
+} psd_opts;
 
-int cli_cmd_psd(int argc, char **argv)
+static void parse(int argc, char **argv, psd_opts *o)
 {
     static const struct option opts[] = {
         {"radial", no_argument, 0, 'r'},     {"mean", required_argument, 0, 'm'},
@@ -72,171 +58,161 @@ int cli_cmd_psd(int argc, char **argv)
         {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
         {"slope", required_argument, 0, 's'},  {"welch", required_argument, 0, 'W'},
         {"angular", no_argument, 0, 'A'},      {"preview", required_argument, 0, 'p'}, {0}};
-    const char *out = NULL, *tmp = NULL, *target = NULL;
-    double mean = NAN, *freq, *val, *tgt = NULL;
-    int c, json = 0, st, slope = 0, angular = 0;
-    size_t welch = 0, nseg = 1;
-    const char *preview = NULL, *pvtmp = NULL;
-    double f1 = 0, f2 = 0;
-    nl_slope sl;
-    size_t nf, maxn, *cnt;
-    nl_field *x, *P;
-
+    int c;
+    char *end;
+    o->mean = NAN, o->nseg = 1, o->aniso = NAN;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
         switch (c) {
         case 'r': break; /* nD output is always radial; accepted for clarity */
-        case 'm': mean = cli_parse_double("--mean", optarg); break;
-        case 't': target = optarg; break;
-        case 'W': welch = cli_parse_count("--welch", optarg, 4); break;
-        case 'A': angular = 1; break;
-        case 'p': preview = optarg; break;
-        case 's': {
-            char *end;
-            f1 = strtod(optarg, &end);
-            if (end == optarg || *end != ':' || (f2 = strtod(end + 1, &end), *end) || !(f1 > 0) || !(f2 > f1))
+        case 'm': o->mean = cli_parse_double("--mean", optarg); break;
+        case 't': o->target = optarg; break;
+        case 'W': o->welch = cli_parse_count("--welch", optarg, 4); break;
+        case 'A': o->angular = 1; break;
+        case 'p': o->preview = optarg; break;
+        case 's':
+            o->f1 = strtod(optarg, &end);
+            if (end == optarg || *end != ':' || (o->f2 = strtod(end + 1, &end), *end) || !(o->f1 > 0) || !(o->f2 > o->f1))
                 cli_die(2, "--slope: expected F1:F2 with 0 < F1 < F2, got \"%s\"", optarg);
-            slope = 1;
+            o->slope = 1;
             break;
-        }
-        case 'j': json = 1; break;
-        case 'o': out = optarg; break;
-        case 'h': fputs(help, stdout); return 0;
+        case 'j': o->json = 1; break;
+        case 'o': o->out = optarg; break;
+        case 'h': fputs(help, stdout); exit(0);
         default: cli_bad_option("psd", c, argv);
         }
     }
     if (optind + 1 != argc)
         cli_die(2, "psd: expected one input file, got %d", argc - optind);
-    x = cli_read_field(argv[optind], NULL);
-    if ((angular || preview || (out && cli_has_ext(out, ".exr"))) && x->dim != 2)
-        cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", argv[optind], x->dim);
-    if (preview && !cli_has_ext(preview, ".png"))
-        cli_die(2, "--preview: expected a .png file, got \"%s\"", preview);
-    if (out)
-        tmp = cli_out_begin(out);
-    if (preview)
-        pvtmp = cli_out_begin(preview);
-    if ((st = welch ? nl_psd_welch(x, welch, mean, &P, &nseg) : nl_psd_periodogram(x, mean, &P)))
+    o->in = argv[optind];
+}
+
+/* The 2D spectrum with zero frequency at the centre: EXR and/or picture. */
+static void write_centred(psd_opts *o, const nl_field *P)
+{
+    nl_field *C;
+    int st;
+    if ((st = nl_fftshift_alloc(P, &C)))
         cli_die_status(st);
-    if ((out && cli_has_ext(out, ".exr")) || preview) {
-        /* the 2D spectrum with zero frequency at the centre */
-        nl_field *C = nl_field_alloc(2, P->n, P->h, &st);
-        if (!C)
+    if (o->out && cli_has_ext(o->out, ".exr")) {
+        nl_meta meta;
+        memset(&meta, 0, sizeof meta);
+        snprintf(meta.method, sizeof meta.method, "psd%s, zero frequency at (%zu, %zu)", o->welch ? " welch" : "",
+                 P->n[0] / 2, P->n[1] / 2);
+        if ((st = nl_exr_write(o->tmp, C, &meta)))
             cli_die_status(st);
-        size_t W = P->n[0], Hh = P->n[1];
-        double mx = 0;
-        for (size_t j = 0; j < Hh; j++)
-            for (size_t i = 0; i < W; i++) {
-                C->data[((j + Hh / 2) % Hh) * W + (i + W / 2) % W] = P->data[j * W + i];
-                mx = fmax(mx, P->data[j * W + i]);
-            }
-        if (out && cli_has_ext(out, ".exr")) {
-            nl_meta meta;
-            memset(&meta, 0, sizeof meta);
-            snprintf(meta.method, sizeof meta.method, "psd%s, zero frequency at (%zu, %zu)", welch ? " welch" : "",
-                     W / 2, Hh / 2);
-            if ((st = nl_exr_write(tmp, C, &meta)))
-                cli_die_status(st);
-        }
-        if (preview) {
-            for (size_t q = 0; q < C->count; q++)
-                C->data[q] = log10(fmax(C->data[q], mx * 1e-12));
-            if ((st = nl_png_write_field(pvtmp, C, log10(mx) - 8, log10(mx))))
-                cli_die_status(st);
-            cli_out_commit(preview);
-        }
-        nl_field_free(C);
-        if (out && cli_has_ext(out, ".exr")) {
-            cli_out_commit(out);
-            out = NULL;
-        }
     }
-    double sector[18] = {0}, aniso = NAN;
-    if (angular) {
-        size_t sc[18] = {0};
-        for (size_t j = 0; j < P->n[1]; j++)
-            for (size_t i = 0; i < P->n[0]; i++) {
-                double fx = (double)nl_wrap(i, P->n[0]) / (double)P->n[0], fy = (double)nl_wrap(j, P->n[1]) / (double)P->n[1];
-                double r = hypot(fx, fy), a = atan2(fy, fx);
-                if (r < 0.05 || r > 0.45)
-                    continue;
-                if (a < 0)
-                    a += M_PI;
-                int b = (int)(a / M_PI * 18) % 18;
-                sector[b] += P->data[j * P->n[0] + i], sc[b]++;
-            }
-        double mn = INFINITY, mx = 0;
-        for (int b = 0; b < 18; b++) {
-            sector[b] = sc[b] ? sector[b] / (double)sc[b] : NAN;
-            mn = fmin(mn, sector[b]), mx = fmax(mx, sector[b]);
-        }
-        aniso = mx / mn;
-    }
-    maxn = x->n[0] + x->n[1] + x->n[2];
-    freq = malloc(maxn * sizeof *freq);
-    val = malloc(maxn * sizeof *val);
-    cnt = malloc(maxn * sizeof *cnt);
-    if (!freq || !val || !cnt)
-        cli_die(1, "out of memory");
-    nf = profile(P, freq, val, cnt);
-    if (target) {
-        nl_model *m;
-        nl_field *S = nl_field_alloc(x->dim, x->n, x->h, &st);
-        tgt = malloc(maxn * sizeof *tgt);
-        if (!S || !tgt)
-            cli_die(1, "out of memory");
-        if ((st = nl_model_parse(target, &m)) || (st = nl_wk_sample_spectrum(m, S)))
+    if (o->preview) {
+        double mx = nl_fftshift_log10_floor(C, 1e-12);
+        if ((st = nl_png_write_field(o->pvtmp, C, log10(mx) - 8, log10(mx))))
             cli_die_status(st);
-        profile(S, freq + 0, tgt, cnt);
-        nf = profile(P, freq, val, cnt);
-        nl_model_free(m);
-        nl_field_free(S);
+        cli_out_commit(o->preview);
     }
-    if (slope && (st = x->dim == 1 ? nl_psd_slope(freq, val, nf, f1, f2, 1, &sl) : nl_psd_slope_grid(P, f1, f2, &sl)))
-        cli_die_status(st);
-    if (json) {
-        json_t *o = json_pack("{s:o,s:o}", "freq", cli_json_array(freq, nf), "psd", cli_json_array(val, nf));
-        if (tgt)
-            json_object_set_new(o, "target", cli_json_array(tgt, nf));
-        json_object_set_new(o, "sided", json_string("two-sided"));
-        json_object_set_new(o, "average", json_string(x->dim == 1 ? "none" : "radial"));
-        if (angular) {
-            json_object_set_new(o, "sectors", cli_json_array(sector, 18));
-            json_object_set_new(o, "anisotropy", json_real(aniso));
-        }
-        if (welch)
-            json_object_set_new(o, "welch_segments", json_integer((json_int_t)nseg));
-        if (slope)
-            json_object_set_new(o, "slope", json_pack("{s:f,s:f,s:I,s:f,s:[f,f]}", "slope", sl.slope, "ci95", sl.ci95,
-                                                      "points", (json_int_t)sl.points, "fractal_dimension",
-                                                      sl.fractal_dim, "band", f1, f2));
-        cli_json_print(o);
+    nl_field_free(C);
+    if (o->out && cli_has_ext(o->out, ".exr")) {
+        cli_out_commit(o->out);
+        o->out = NULL;
     }
-    if (angular && !json) {
+}
+
+static void print_json(const psd_opts *o, int dim, const double *freq, const double *val, const double *tgt, size_t nf)
+{
+    json_t *j = json_pack("{s:o,s:o}", "freq", cli_json_array(freq, nf), "psd", cli_json_array(val, nf));
+    if (tgt)
+        json_object_set_new(j, "target", cli_json_array(tgt, nf));
+    json_object_set_new(j, "sided", json_string("two-sided"));
+    json_object_set_new(j, "average", json_string(dim == 1 ? "none" : "radial"));
+    if (o->angular) {
+        json_object_set_new(j, "sectors", cli_json_array(o->sector, 18));
+        json_object_set_new(j, "anisotropy", json_real(o->aniso));
+    }
+    if (o->welch)
+        json_object_set_new(j, "welch_segments", json_integer((json_int_t)o->nseg));
+    if (o->slope)
+        json_object_set_new(j, "slope", json_pack("{s:f,s:f,s:I,s:f,s:[f,f]}", "slope", o->sl.slope, "ci95",
+                                                  o->sl.ci95, "points", (json_int_t)o->sl.points,
+                                                  "fractal_dimension", o->sl.fractal_dim, "band", o->f1, o->f2));
+    cli_json_print(j);
+}
+
+static void output(const psd_opts *o, int dim, const double *freq, const double *val, const double *tgt, size_t nf)
+{
+    int st;
+    if (o->json)
+        print_json(o, dim, freq, val, tgt, nf);
+    if (o->angular && !o->json) {
         printf("# sector power (0.05..0.45 cycles/sample), 10-degree sectors from +x:");
         for (int b = 0; b < 18; b++)
-            printf(" %.4g", sector[b]);
-        printf("\n# anisotropy (max/min sector power) %.4f\n", aniso);
+            printf(" %.4g", o->sector[b]);
+        printf("\n# anisotropy (max/min sector power) %.4f\n", o->aniso);
     }
-    if (slope && !json)
+    if (o->slope && !o->json)
         printf("# slope %.4f +- %.4f (95%%, %zu frequencies in [%g, %g]); fractal dimension "
-                "%.4f\n", sl.slope, sl.ci95, sl.points, f1, f2, sl.fractal_dim);
-    if (out || (!json && !angular && !preview)) {
+                "%.4f\n", o->sl.slope, o->sl.ci95, o->sl.points, o->f1, o->f2, o->sl.fractal_dim);
+    if (o->out || (!o->json && !o->angular && !o->preview)) {
         static const char *const names[] = {"freq", "psd", "target"};
         const double *cols[] = {freq, val, tgt};
-        st = cli_write_table(out ? tmp : NULL, x->dim == 1 ? "noiselab psd: two-sided periodogram density, freq in cycles per unit"
+        st = cli_write_table(o->out ? o->tmp : NULL, dim == 1 ? "noiselab psd: two-sided periodogram density, freq in cycles per unit"
                                       : "noiselab psd: two-sided periodogram density, radial average, freq in "
                                         "cycles per unit",
                           tgt ? 3 : 2, names, nf, cols);
         if (st)
             cli_die_status(st);
     }
-    if (out)
-        cli_out_commit(out);
-    free(freq);
-    free(val);
-    free(cnt);
-    free(tgt);
+    if (o->out)
+        cli_out_commit(o->out);
+}
+
+/* The model's profile on the field's grid. */
+static void target_profile(const psd_opts *o, const nl_field *x, double *tgt)
+{
+    nl_model *m;
+    size_t nt;
+    int st;
+    if ((st = nl_model_parse(o->target, &m)) || (st = nl_psd_model_profile(m, x->dim, x->n, x->h, tgt, &nt)))
+        cli_die_status(st);
+    nl_model_free(m);
+}
+
+int cli_cmd_psd(int argc, char **argv)
+{
+    psd_opts o = {0};
+    double *freq, *val, *tgt = NULL;
+    size_t nf, maxn, *cnt;
+    nl_field *x, *P;
+    int st;
+
+    parse(argc, argv, &o);
+    x = cli_read_field(o.in, NULL);
+    if ((o.angular || o.preview || (o.out && cli_has_ext(o.out, ".exr"))) && x->dim != 2)
+        cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o.in, x->dim);
+    if (o.preview && !cli_has_ext(o.preview, ".png"))
+        cli_die(2, "--preview: expected a .png file, got \"%s\"", o.preview);
+    if (o.out)
+        o.tmp = cli_out_begin(o.out);
+    if (o.preview)
+        o.pvtmp = cli_out_begin(o.preview);
+    if ((st = o.welch ? nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg) : nl_psd_periodogram(x, o.mean, &P)))
+        cli_die_status(st);
+    if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
+        write_centred(&o, P);
+    if (o.angular && (st = nl_psd_sectors(P, 18, 0.05, 0.45, o.sector, &o.aniso)))
+        cli_die_status(st);
+    maxn = x->n[0] + x->n[1] + x->n[2];
+    freq = malloc(maxn * sizeof *freq), val = malloc(maxn * sizeof *val), cnt = malloc(maxn * sizeof *cnt);
+    if (o.target)
+        tgt = malloc(maxn * sizeof *tgt);
+    if (!freq || !val || !cnt || (o.target && !tgt))
+        cli_die(1, "out of memory");
+    if (o.target)
+        target_profile(&o, x, tgt);
+    if ((st = nl_psd_profile(P, freq, val, cnt, &nf)))
+        cli_die_status(st);
+    if (o.slope && (st = x->dim == 1 ? nl_psd_slope(freq, val, nf, o.f1, o.f2, 1, &o.sl)
+                                     : nl_psd_slope_grid(P, o.f1, o.f2, &o.sl)))
+        cli_die_status(st);
+    output(&o, x->dim, freq, val, tgt, nf);
+    free(freq), free(val), free(cnt), free(tgt);
     nl_field_free(P);
     nl_field_free(x);
     return 0;

@@ -1,4 +1,5 @@
-/* Ensemble ACF check shared by the statistical tests of exact methods.
+/* Ensemble ACF check shared by the statistical tests of exact methods
+ * (the numbers: analysis/verdict.h).
  *
  * Property: a zero-mean Gaussian field with covariance C has unbiased
  * lag-product estimates r(l) = (1/P) sum_j x_j x_{j+l} (known mean 0, P
