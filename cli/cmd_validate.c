@@ -1,14 +1,8 @@
 /* noiselab validate: the whole pairing for one model, with a verdict. */
 #include "cli.h"
 #include "../analysis/check.h"
-#include "../analysis/subdiv_exact.h"
-#include "../analysis/verdict.h"
+#include "../analysis/validate.h"
 #include "../core/model.h"
-#include "../core/nl_error.h"
-#include "../synth/circulant.h"
-#include "../synth/fft.h"
-#include "../synth/sparse.h"
-#include "../synth/subdiv.h"
 
 #include <errno.h>
 #include <getopt.h>
@@ -28,45 +22,18 @@ static const char help[] =
     "plots), DIR/verdict.json, DIR/acf.tsv and DIR/acf.png (gnuplot).  Subdivision is\n"
     "approximate: its own exact expected ACF is shown beside the target.\n";
 
-typedef int (*run_fn)(void *ctx, uint64_t seed, nl_field *f);
-static int run_fft(void *c, uint64_t s, nl_field *f) { return nl_synth_fft_execute(c, s, f); }
-static int run_circ(void *c, uint64_t s, nl_field *f) { return nl_synth_circulant_execute(c, s, f); }
-static int run_sparse(void *c, uint64_t s, nl_field *f) { return nl_synth_sparse_execute(c, s, 1, NULL, f); }
-typedef struct {
-    nl_subdiv_coeffs *c;
-    const nl_model *m;
-} sub_ctx;
-static int run_sub(void *c, uint64_t s, nl_field *f)
-{
-    sub_ctx *x = c;
-    return nl_subdiv_synth_periodic(x->c, x->m, s, 0, f);
-}
-
-#define L 33
-
-/* One method's ensemble against the target. */
-typedef struct {
-    double mean[L], se[L];  /* ensemble mean ACF and its standard error */
-    double zmax;            /* max |z| over the lags */
-    int ran;                /* 0: refused, see why */
-    char why[256];          /* the refusal */
-} method_result;
-
 /* What validate works on and what it found. */
 typedef struct {
     const char *spec, *dir;  /* model, output directory */
     int dim;                 /* 1 or 2 */
-    size_t N, M, n[2];       /* side, realizations, grid */
+    size_t N, M;             /* side, realizations */
     nl_model *m;             /* the parsed model */
     nl_check k;              /* its check */
-    double target[L];        /* R at lags 0..L-1 along x */
-    double exact[L];         /* subdivision's exact expected ACF */
-    int have_exact;          /* exact[] is set */
-    double zcrit;            /* Bonferroni threshold */
-    method_result res[4];    /* fft, circulant, subdiv, sparse */
+    nl_validate_result r;    /* target, threshold, exact ACF and the methods' verdicts */
 } vctx;
 
-static const char *const names[4] = {"fft", "circulant", "subdiv", "sparse"};
+#define L NL_VALIDATE_LAGS
+#define NM NL_VALIDATE_METHODS
 
 static void parse(int argc, char **argv, vctx *v)
 {
@@ -102,75 +69,6 @@ static void parse(int argc, char **argv, vctx *v)
         cli_die(2, "-o: cannot create directory \"%s\": %s", v->dir, strerror(errno));
 }
 
-/* M realizations of one method into its ensemble verdict. */
-static void run_ensemble(vctx *v, int meth, run_fn fn, void *ctx)
-{
-    method_result *r = &v->res[meth];
-    nl_field *f = nl_field_alloc(v->dim, v->n, NULL, NULL);
-    long lags[L][2];
-    nl_verdict *vd = NULL;
-    int st;
-    for (int i = 0; i < L; i++)
-        lags[i][0] = i, lags[i][1] = 0;
-    st = f ? nl_verdict_alloc(v->dim, v->n, L, (const long (*)[2])lags, &vd) : NL_ENOMEM;
-    for (size_t s = 1; s <= v->M && !st; s++) {
-        cli_progress("validate", (meth + (double)(s - 1) / (double)v->M) / 4);
-        if ((st = fn(ctx, s, f)) || (st = nl_verdict_add(vd, f)))
-            break;
-    }
-    if (!st)
-        st = nl_verdict_stats(vd, r->mean, r->se);
-    if (st)
-        snprintf(r->why, sizeof r->why, "%s", nl_errmsg());
-    else {
-        r->ran = 1;
-        r->zmax = nl_verdict_zmax(L, r->mean, r->se, v->target, NULL);
-    }
-    nl_verdict_free(vd);
-    nl_field_free(f);
-}
-
-/* Subdivision's coefficients, and its exact expected ACF on small grids. */
-static int plan_subdiv(vctx *v, sub_ctx *sc)
-{
-    int Lv = 0, st;
-    while ((v->N >> (Lv + 1)) >= 16)
-        Lv++;
-    st = nl_subdiv_coeffs_alloc(v->m, v->dim, Lv, ldexp(1.0, Lv), 2, 1e-4, 6, &sc->c);
-    if (!st && (sc->c->flags & NL_SUBDIV_NOT_PD))
-        st = NL_ERROR(NL_ENOTPD, "not positive definite at some level");
-    if (!st && v->N <= (v->dim == 1 ? 2048 : 64)) {
-        long lags[2 * L];
-        for (int i = 0; i < L; i++)
-            lags[2 * i] = i, lags[2 * i + 1] = 0;
-        v->have_exact = nl_subdiv_exact_acf(sc->c, v->m, v->n[0], v->n[1], L, lags, v->exact) == 0;
-    }
-    return st;
-}
-
-static void run_method(vctx *v, int meth)
-{
-    void *ctx = NULL;
-    run_fn fn = NULL;
-    nl_synth_fft_plan *pf = NULL;
-    nl_synth_circulant_plan *pc = NULL;
-    nl_synth_sparse_plan *ps = NULL;
-    sub_ctx sc = {NULL, v->m};
-    int st = NL_OK;
-    if (meth == 0) st = nl_synth_fft_plan_alloc(v->m, v->dim, v->n, NULL, 0, &pf), ctx = pf, fn = run_fft;
-    if (meth == 1) st = nl_synth_circulant_plan_alloc(v->m, v->dim, v->n, NULL, 0, 16, &pc), ctx = pc, fn = run_circ;
-    if (meth == 2) st = plan_subdiv(v, &sc), ctx = &sc, fn = run_sub;
-    if (meth == 3) st = nl_synth_sparse_plan_model(v->m, v->dim, NULL, 0, 0, 32, &ps), ctx = ps, fn = run_sparse;
-    if (!v->k.positive_definite)
-        snprintf(v->res[meth].why, sizeof v->res[meth].why, "the model is not positive definite (see above)");
-    else if (st)
-        snprintf(v->res[meth].why, sizeof v->res[meth].why, "%s", nl_errmsg());
-    else
-        run_ensemble(v, meth, fn, ctx);
-    nl_synth_fft_plan_free(pf), nl_synth_circulant_plan_free(pc), nl_synth_sparse_plan_free(ps);
-    nl_subdiv_coeffs_free(sc.c);
-}
-
 static FILE *open_in(const vctx *v, const char *name)
 {
     char path[4096];
@@ -182,19 +80,20 @@ static FILE *open_in(const vctx *v, const char *name)
 static int write_data(const vctx *v)
 {
     char cmd[4200];
-    const char *col[4] = {"#1f4e99", "#2e8b57", "#b22222", "#8b6914"};
+    const char *col[NM] = {"#1f4e99", "#2e8b57", "#b22222", "#8b6914"};
+    const nl_validate_result *r = &v->r;
     FILE *fp = open_in(v, "acf.tsv");
     if (!fp)
         cli_die(2, "-o: cannot write in \"%s\"", v->dir);
     fprintf(fp, "lag\ttarget\tsubdiv_exact");
-    for (int meth = 0; meth < 4; meth++)
-        fprintf(fp, "\t%s\t%s_se", names[meth], names[meth]);
+    for (int meth = 0; meth < NM; meth++)
+        fprintf(fp, "\t%s\t%s_se", nl_validate_method_name(meth), nl_validate_method_name(meth));
     fprintf(fp, "\n");
     for (int i = 0; i < L; i++) {
-        fprintf(fp, "%d\t%.8g\t%.8g", i, v->target[i], v->have_exact ? v->exact[i] : NAN);
-        for (int meth = 0; meth < 4; meth++)
-            fprintf(fp, "\t%.8g\t%.8g", v->res[meth].ran ? v->res[meth].mean[i] : NAN,
-                    v->res[meth].ran ? v->res[meth].se[i] : NAN);
+        fprintf(fp, "%d\t%.8g\t%.8g", i, r->target[i], r->have_exact ? r->exact[i] : NAN);
+        for (int meth = 0; meth < NM; meth++)
+            fprintf(fp, "\t%.8g\t%.8g", r->method[meth].ran ? r->method[meth].mean[i] : NAN,
+                    r->method[meth].ran ? r->method[meth].se[i] : NAN);
         fprintf(fp, "\n");
     }
     fclose(fp);
@@ -204,11 +103,11 @@ static int write_data(const vctx *v)
                 "set grid\nset key top right\nset datafile missing 'nan'\n"
                 "plot '%s/acf.tsv' using 1:2 with lines lw 3 lc rgb 'black' title 'target'",
             v->dir, v->spec, v->dim, v->M, v->dir);
-    for (int meth = 0; meth < 4; meth++)
-        if (v->res[meth].ran)
+    for (int meth = 0; meth < NM; meth++)
+        if (r->method[meth].ran)
             fprintf(fp, ", '' using 1:%d:%d with yerrorlines pt 7 ps 0.5 lc rgb '%s' title '%s'", 4 + 2 * meth,
-                    5 + 2 * meth, col[meth], names[meth]);
-    if (v->have_exact)
+                    5 + 2 * meth, col[meth], nl_validate_method_name(meth));
+    if (r->have_exact)
         fprintf(fp, ", '' using 1:3 with lines dt 2 lw 2 lc rgb '#b22222' title 'subdiv exact'");
     fprintf(fp, "\n");
     fclose(fp);
@@ -216,9 +115,11 @@ static int write_data(const vctx *v)
     return system(cmd) == 0;
 }
 
-static const char *verdict_word(const method_result *r, double zcrit)
+/* Why a method was refused; a model that is not positive definite is
+ * described in the report's first section. */
+static const char *refusal(const vctx *v, int meth)
 {
-    return !r->ran ? "refused" : r->zmax <= zcrit ? "reproduces the target" : "does NOT reproduce the target";
+    return v->k.positive_definite ? v->r.method[meth].why : "the model is not positive definite (see above)";
 }
 
 static void write_model_md(FILE *fp, const vctx *v)
@@ -239,29 +140,33 @@ static void write_model_md(FILE *fp, const vctx *v)
 /* DIR/index.md and DIR/verdict.json. */
 static void write_report(const vctx *v, int plotted)
 {
+    const nl_validate_result *res = &v->r;
     char path[4096];
     FILE *fp = open_in(v, "index.md");
     write_model_md(fp, v);
     fprintf(fp, "## The methods\n\n%zu realizations of %zu%s%zu samples (seeds 1..%zu); the unbiased ACF with "
                 "known mean 0 along x at lags 0..32; max |z| = |mean - R| / se against %.2f (Student's t(%zu), "
                 "Bonferroni over 33 lags, family-wise 1e-3).\n\n| method | max \\|z\\| | verdict |\n|---|---|---|\n",
-            v->M, v->n[0], v->dim == 2 ? " x " : "", v->dim == 2 ? v->n[1] : (size_t)0, v->M, v->zcrit, v->M - 1);
+            v->M, res->n[0], v->dim == 2 ? " x " : "", v->dim == 2 ? res->n[1] : (size_t)0, v->M, res->threshold,
+            v->M - 1);
     json_t *vj = json_pack("{s:s,s:i,s:b,s:f,s:o}", "model", v->spec, "dim", v->dim, "positive_definite",
-                           v->k.positive_definite, "threshold", v->zcrit, "methods", json_object());
-    for (int meth = 0; meth < 4; meth++) {
-        const method_result *r = &v->res[meth];
+                           v->k.positive_definite, "threshold", res->threshold, "methods", json_object());
+    for (int meth = 0; meth < NM; meth++) {
+        const nl_validate_method_result *r = &res->method[meth];
+        const char *name = nl_validate_method_name(meth);
         if (r->ran)
-            fprintf(fp, "| %s | %.2f | %s |\n", names[meth], r->zmax, verdict_word(r, v->zcrit));
+            fprintf(fp, "| %s | %.2f | %s |\n", name, r->zmax,
+                    r->pass ? "reproduces the target" : "does NOT reproduce the target");
         else
-            fprintf(fp, "| %s | - | refused: %s |\n", names[meth], r->why);
-        json_object_set_new(json_object_get(vj, "methods"), names[meth],
-                            r->ran ? json_pack("{s:f,s:b}", "max_abs_z", r->zmax, "pass", r->zmax <= v->zcrit)
-                                   : json_pack("{s:s}", "refused", r->why));
+            fprintf(fp, "| %s | - | refused: %s |\n", name, refusal(v, meth));
+        json_object_set_new(json_object_get(vj, "methods"), name,
+                            r->ran ? json_pack("{s:f,s:b}", "max_abs_z", r->zmax, "pass", r->pass)
+                                   : json_pack("{s:s}", "refused", refusal(v, meth)));
     }
     fprintf(fp, "\n%s\n\nSubdivision estimates new points from earlier levels only, so its covariance differs "
                 "from R except for Markovian models in 1D; %s\n",
             plotted ? "![acf](acf.png)" : "(gnuplot failed: no plot)",
-            v->have_exact ? "its exact expected ACF (dashed) shows how far by construction." : "its exact ACF is computed for grids up to 64x64 (2D) or 2048 (1D).");
+            res->have_exact ? "its exact expected ACF (dashed) shows how far by construction." : "its exact ACF is computed for grids up to 64x64 (2D) or 2048 (1D).");
     fclose(fp);
     snprintf(path, sizeof path, "%s/verdict.json", v->dir);
     if (json_dump_file(vj, path, JSON_INDENT(2) | JSON_PRESERVE_ORDER))
@@ -269,27 +174,33 @@ static void write_report(const vctx *v, int plotted)
     json_decref(vj);
 }
 
+/* Progress of the whole run: four methods of M realizations each. */
+static void progress(void *ctx, int meth, size_t done, size_t total)
+{
+    (void)ctx;
+    cli_progress("validate", (meth + (double)done / (double)total) / NM);
+}
+
 int cli_cmd_validate(int argc, char **argv)
 {
     static vctx v;
+    nl_validate_options o;
+    size_t n[2];
     int st;
     memset(&v, 0, sizeof v);
     parse(argc, argv, &v);
     if ((st = nl_model_parse(v.spec, &v.m)) || (st = nl_check_model(v.m, v.dim, &v.k)))
         cli_die_status(st);
-    v.n[0] = v.N, v.n[1] = v.dim == 2 ? v.N : 1;
-    for (int i = 0; i < L; i++) {
-        double lag1[3] = {i * 1.0, 0, 0};
-        v.target[i] = nl_model_acf(v.m, v.dim, lag1);
-    }
-    v.zcrit = nl_verdict_threshold(1e-3, L, v.M - 1);
-    for (int meth = 0; meth < 4; meth++)
-        run_method(&v, meth);
+    n[0] = n[1] = v.N;
+    nl_validate_options_default(&o);
+    o.realizations = v.M, o.progress = progress;
+    if ((st = nl_validate_model(v.m, v.dim, n, v.k.positive_definite, &o, &v.r)))
+        cli_die_status(st);
     cli_progress_done();
     write_report(&v, write_data(&v));
     printf("%s %dD: %s;", v.spec, v.dim, v.k.positive_definite ? "positive definite" : "NOT positive definite");
-    for (int meth = 0; meth < 4; meth++)
-        printf(" %s %s", names[meth], !v.res[meth].ran ? "refused" : v.res[meth].zmax <= v.zcrit ? "ok" : "off");
+    for (int meth = 0; meth < NM; meth++)
+        printf(" %s %s", nl_validate_method_name(meth), !v.r.method[meth].ran ? "refused" : v.r.method[meth].pass ? "ok" : "off");
     printf(" (report in %s/index.md)\n", v.dir);
     nl_model_free(v.m);
     return 0;

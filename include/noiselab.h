@@ -62,6 +62,7 @@ extern "C" {
 #include "noiselab/analysis/fftshift.h"
 #include "noiselab/analysis/spectral.h"
 #include "noiselab/analysis/verdict.h"
+#include "noiselab/analysis/validate.h"
 #include "noiselab/analysis/slope.h"
 #include "noiselab/analysis/hist.h"
 #include "noiselab/analysis/gof.h"
