@@ -10,6 +10,12 @@
  * threshold of Student's t(M - 1) for a family-wise false-alarm rate alpha
  * over the NL_VALIDATE_LAGS lags (nl_verdict_threshold).
  *
+ * The plans: FFT (synth/fft.h) and circulant embedding up to 16 n per axis
+ * (synth/circulant.h) without clamping; subdivision (synth/subdiv.h) with
+ * N = 2 and nl_subdiv_default_levels(dim, n, 16) levels (a coarse grid of at
+ * least 16 samples per axis); sparse convolution (synth/sparse.h) of the
+ * model's kernel at its default radius and cell, density 32, wrapped.
+ *
  * Subdivision (Lewis 1987) estimates new points from earlier levels only, so
  * its covariance differs from R except for Markovian models in 1D; on small
  * grids (1D up to 2048 samples, 2D up to 64 x 64) the result also holds its
@@ -87,7 +93,8 @@ int nl_validate_init(const nl_model *m, int dim, const size_t *n, int positive_d
 
 /* Plan `method` for m (the model given to nl_validate_init), synthesise the
  * ensemble and fill out->method[method] (subdivision also sets have_exact
- * and exact).  o must give the realizations given to nl_validate_init
+ * and exact).  The verdict is against out->target, which the caller may
+ * replace after nl_validate_init (e.g. to judge against another model).  o must give the realizations given to nl_validate_init
  * (its alpha is not read here).  Returns NL_OK (ran or refused: see ran and status), or
  * NL_EINVAL (method out of range, realizations differing from out's; out
  * untouched). */
