@@ -174,6 +174,7 @@ int nl_validate_init(const nl_model *m, int dim, const size_t *n, int positive_d
     }
     v->threshold = nl_verdict_threshold(o->alpha, L, o->realizations - 1);
     for (int meth = 0; meth < NL_VALIDATE_METHODS; meth++) {
+        v->method[meth].name = names[meth];
         snprintf(v->method[meth].why, sizeof v->method[meth].why, "not run");
     }
     return NL_OK;

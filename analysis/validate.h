@@ -59,6 +59,7 @@ void nl_validate_options_default(nl_validate_options *o);
 
 /* One method's ensemble against the target. */
 typedef struct {
+    const char *name;               /* nl_validate_method_name (static storage) */
     int ran;                        /* 1: the ensemble ran and the numbers below are set; 0: refused */
     int status;                     /* the NL_E* code of a refusal; NL_OK when ran or not run yet */
     char why[256];                  /* the refusal's one-line message ("" when ran, "not run" before) */

@@ -153,7 +153,7 @@ static void write_report(const vctx *v, int plotted)
                            v->k.positive_definite, "threshold", res->threshold, "methods", json_object());
     for (int meth = 0; meth < NM; meth++) {
         const nl_validate_method_result *r = &res->method[meth];
-        const char *name = nl_validate_method_name(meth);
+        const char *name = r->name;
         if (r->ran)
             fprintf(fp, "| %s | %.2f | %s |\n", name, r->zmax,
                     r->pass ? "reproduces the target" : "does NOT reproduce the target");

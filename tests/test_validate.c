@@ -148,5 +148,6 @@ Test(validate, error_paths)
     cr_expect(memcmp(&copy, &r, sizeof r) == 0, "a refused call changed the result");
     cr_expect_null(nl_validate_method_name(NL_VALIDATE_METHODS));
     cr_expect_str_eq(nl_validate_method_name(NL_VALIDATE_SPARSE), "sparse");
+    cr_expect_str_eq(r.method[NL_VALIDATE_SUBDIV].name, "subdiv");
     nl_model_free(m);
 }
