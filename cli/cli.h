@@ -44,6 +44,12 @@ int cli_main(int argc, char **argv);
 /* Exit with the library's last message for status `st` (exit 2 or 1). */
 void cli_die_status(int st) __attribute__((noreturn));
 
+/* Exit through cli_die_status unless st is NL_OK (0). */
+void cli_check(int st);
+
+/* malloc(size), or exit 1 with "out of memory". */
+void *cli_malloc(size_t size);
+
 /* Report an option error from getopt for subcommand `cmd` and exit 2. */
 void cli_bad_option(const char *cmd, int c, char **argv);
 
@@ -52,9 +58,17 @@ int cli_parse_size(const char *opt, const char *s, size_t *n, size_t min);   /* 
 uint64_t cli_parse_u64(const char *opt, const char *s);
 double cli_parse_double(const char *opt, const char *s);
 size_t cli_parse_count(const char *opt, const char *s, size_t min);
+/* A finite number > 0; otherwise "OPT: expected a positive WHAT, got ..." */
+double cli_parse_positive(const char *opt, const char *s, const char *what);
 /* --dim D with 1 <= D <= max (dies with exit 2 otherwise) */
 int cli_parse_dim(const char *s, int max);
 int cli_parse_spacing(const char *opt, const char *s, int dim, double *h);
+
+/* Operands after the options: cli_no_operands exits 2 on any ("CMD:
+ * unexpected argument ..."); cli_one_operand returns the one operand or
+ * exits 2 ("CMD: expected one WHAT, got N"). */
+void cli_no_operands(const char *cmd, int argc, char **argv);
+const char *cli_one_operand(const char *cmd, const char *what, int argc, char **argv);
 
 /* Does path end with ext (case-insensitive, ext with its dot)? */
 int cli_has_ext(const char *path, const char *ext);
@@ -84,6 +98,11 @@ json_t *cli_json_array(const double *v, size_t n);
 /* A TSV table to `path`, or to stdout when path is NULL. */
 int cli_write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
                 const double *const *cols);
+
+/* Write f to tmp (the temporary of path, from cli_out_begin) as EXR with
+ * meta when path ends in .exr, else as a 1D TSV with columns t, value;
+ * exits on error. */
+void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta);
 
 /* Read a field (EXR, PNG or TSV), exiting on error. */
 nl_field *cli_read_field(const char *path, nl_meta *meta);

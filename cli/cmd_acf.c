@@ -97,13 +97,10 @@ static void write_centred(const acf_opts *o, const nl_field *full)
 {
     nl_field *C;
     nl_meta meta;
-    int st;
-    if ((st = nl_acf_centred_alloc(full, &C)))
-        cli_die_status(st);
+    cli_check(nl_acf_centred_alloc(full, &C));
     memset(&meta, 0, sizeof meta);
     snprintf(meta.method, sizeof meta.method, "acf %s, lag 0 at the centre", o->unbiased ? "unbiased" : "biased");
-    if ((st = nl_exr_write(o->tmp, C, &meta)))
-        cli_die_status(st);
+    cli_check(nl_exr_write(o->tmp, C, &meta));
     cli_out_commit(o->out);
     nl_field_free(C);
 }
@@ -125,13 +122,11 @@ static void estimate(const acf_opts *o, const nl_field *x, const nl_field *full,
     } else {
         st = nl_acf_axis(full, o->axis, nl - 1, lag, val);
     }
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     if (o->bands) {
         if ((x->n[0] < 4 * (nl - 1) + 1 ? x->n[0] : 4 * (nl - 1) + 1) < 2 * (nl - 1) + 1)
             cli_die(2, "--bands: expected a field of at least %zu samples for --max-lag %zu", 2 * (nl - 1) + 1, nl - 1);
-        if ((st = nl_acf_bartlett_band(full, x->count, nl - 1, val, blo, bhi)))
-            cli_die_status(st);
+        cli_check(nl_acf_bartlett_band(full, x->count, nl - 1, val, blo, bhi));
     }
     free(cnt);
 }
@@ -150,7 +145,6 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
                    const double *bhi)
 {
     size_t nl = o->nl;
-    int st;
     if (o->json) {
         json_t *j = json_pack("{s:o,s:o}", "lag", cli_json_array(lag, nl), "acf", cli_json_array(val, nl));
         if (tgt)
@@ -174,8 +168,7 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
             names[ncol] = "lo", cols[ncol++] = blo, names[ncol] = "hi", cols[ncol++] = bhi;
         snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in spacing units",
                  o->unbiased ? "unbiased" : "biased", o->radial ? "radial average" : "along one axis");
-        if ((st = cli_write_table(o->out ? o->tmp : NULL, comment, ncol, names, nl, cols)))
-            cli_die_status(st);
+        cli_check(cli_write_table(o->out ? o->tmp : NULL, comment, ncol, names, nl, cols));
     }
     if (o->out)
         cli_out_commit(o->out);
@@ -186,15 +179,13 @@ int cli_cmd_acf(int argc, char **argv)
     acf_opts o = {0};
     double *lag, *val, *tgt = NULL, *blo = NULL, *bhi = NULL;
     nl_field *x, *full;
-    int st;
 
     parse(argc, argv, &o);
     x = cli_read_field(o.in, NULL);
     check_field(&o, x);
     if (o.out)
         o.tmp = cli_out_begin(o.out);
-    if ((st = nl_acf_full(x, o.mean, o.unbiased, &full)))
-        cli_die_status(st);
+    cli_check(nl_acf_full(x, o.mean, o.unbiased, &full));
     if (o.out && cli_has_ext(o.out, ".exr")) {
         write_centred(&o, full);
         nl_field_free(full), nl_field_free(x);

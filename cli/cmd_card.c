@@ -29,9 +29,7 @@ static void write_log_picture(const char *path, const nl_field *P)
 {
     nl_field *C;
     double mx;
-    int st;
-    if ((st = nl_fftshift_alloc(P, &C)))
-        cli_die_status(st);
+    cli_check(nl_fftshift_alloc(P, &C));
     mx = log10(nl_fftshift_log10_floor(C, 1e-8));
     nl_png_write_field(path, C, mx - 7, mx);
     nl_field_free(C);
@@ -141,8 +139,7 @@ int cli_cmd_card(int argc, char **argv)
         cli_die_status(st);
     snprintf(path, sizeof path, "%s/field.png", dir);
     double sd = sqrt(mo.variance);
-    if ((st = nl_png_write_field(path, x, mo.mean - 3 * sd, mo.mean + 3 * sd)))
-        cli_die_status(st);
+    cli_check(nl_png_write_field(path, x, mo.mean - 3 * sd, mo.mean + 3 * sd));
     snprintf(path, sizeof path, "%s/periodogram.png", dir);
     write_log_picture(path, P);
     snprintf(path, sizeof path, "%s/welch.png", dir);

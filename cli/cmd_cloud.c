@@ -140,8 +140,7 @@ static void write_lum(const char *etmp, const nl_cloud_scene *s, const double *l
     memset(&meta, 0, sizeof meta);
     snprintf(meta.model, sizeof meta.model, "%s", acf);
     snprintf(meta.method, sizeof meta.method, "cloud:%s", path);
-    if ((st = nl_exr_write(etmp, f, &meta)))
-        cli_die_status(st);
+    cli_check(nl_exr_write(etmp, f, &meta));
     nl_field_free(f);
 }
 
@@ -150,7 +149,7 @@ int cli_cmd_cloud(int argc, char **argv)
     static const struct option opts[] = {{"output", required_argument, 0, 'o'}, {"exr", required_argument, 0, 'e'},
                                          {"help", no_argument, 0, 'h'},         {0}};
     const char *out = NULL, *exr = NULL, *path, *tmp, *etmp = NULL, *acf;
-    int c, st;
+    int c;
     json_error_t je;
     nl_cloud_scene s;
     opterr = 0;
@@ -186,11 +185,9 @@ int cli_cmd_cloud(int argc, char **argv)
     if (!rgb || (exr && !lum))
         cli_die(1, "out of memory");
     cli_progress("cloud", 0);
-    if ((st = nl_render_cloud(&s, rgb, lum, progress)))
-        cli_die_status(st);
+    cli_check(nl_render_cloud(&s, rgb, lum, progress));
     cli_progress_done();
-    if ((st = nl_png_write_rgb8(tmp, s.width, s.height, rgb)))
-        cli_die_status(st);
+    cli_check(nl_png_write_rgb8(tmp, s.width, s.height, rgb));
     if (exr) {
         write_lum(etmp, &s, lum, acf, path);
         cli_out_commit(exr);

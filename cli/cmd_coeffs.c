@@ -86,7 +86,7 @@ int cli_cmd_coeffs(int argc, char **argv)
         {"json", no_argument, 0, 'j'},           {"help", no_argument, 0, 'h'},
         {0}};
     const char *spec = NULL;
-    int c, dim = 0, N = 2, levels = 10, json = 0, st;
+    int c, dim = 0, N = 2, levels = 10, json = 0;
     double tol = 1e-4, s0 = 1;
     nl_model *m;
     nl_subdiv_coeffs *co;
@@ -125,10 +125,8 @@ int cli_cmd_coeffs(int argc, char **argv)
         cli_die(2, "--levels: expected at most 40, got %d", levels);
     if (N > (dim == 1 ? 64 : 8))
         cli_die(2, "--neighborhood: expected at most %d in %dD, got %d", dim == 1 ? 64 : 8, dim, N);
-    if ((st = nl_model_parse(spec, &m)))
-        cli_die_status(st);
-    if ((st = nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co)))
-        cli_die_status(st);
+    cli_check(nl_model_parse(spec, &m));
+    cli_check(nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co));
     if (json) {
         json_t *lv = json_array();
         for (int k = 0; k < co->levels; k++) {

@@ -54,7 +54,6 @@ static void output(const hist_opts *o, const nl_moments *mo, const double *edges
                    const nl_gof *gof, const double *pdf)
 {
     size_t bins = o->bins;
-    int st;
     if (o->json) {
         json_t *j = json_pack("{s:I,s:f,s:f,s:f,s:f,s:f,s:f,s:o,s:o}", "n", (json_int_t)mo->n, "mean", mo->mean,
                               "variance", mo->variance, "skewness", mo->skewness, "kurtosis", mo->kurtosis, "min",
@@ -76,8 +75,7 @@ static void output(const hist_opts *o, const nl_moments *mo, const double *edges
     if (o->out || !o->json) {
         static const char *const names[] = {"lo", "hi", "count", "pdf"};
         const double *cols[] = {edges, edges + 1, counts, pdf};
-        if ((st = cli_write_table(o->out ? o->tmp : NULL, NULL, pdf ? 4 : 3, names, bins, cols)))
-            cli_die_status(st);
+        cli_check(cli_write_table(o->out ? o->tmp : NULL, NULL, pdf ? 4 : 3, names, bins, cols));
     }
     if (o->out)
         cli_out_commit(o->out);
@@ -106,12 +104,10 @@ int cli_cmd_hist(int argc, char **argv)
     if ((st = nl_moments_compute(x, &mo)) || (st = nl_hist(x, o.bins, edges, counts)))
         cli_die_status(st);
     if (dist) {
-        if ((st = nl_gof_test(x->data, x->count, dist, o.bins < 2 ? 2 : o.bins, &gof)))
-            cli_die_status(st);
+        cli_check(nl_gof_test(x->data, x->count, dist, o.bins < 2 ? 2 : o.bins, &gof));
         if (!(pdf = malloc(o.bins * sizeof *pdf)))
             cli_die(1, "out of memory");
-        if ((st = nl_gof_bin_density(dist, edges, o.bins, pdf)))
-            cli_die_status(st);
+        cli_check(nl_gof_bin_density(dist, edges, o.bins, pdf));
     }
     output(&o, &mo, edges, counts, dist ? &gof : NULL, pdf);
     free(edges), free(counts), free(pdf);

@@ -113,8 +113,7 @@ static void make_lattice(opts_t *a, nl_rank1_lattice *L)
             cli_die(2, "--generator: expected fibonacci, korobov[:A] or %d integers G1,...,G%d, got \"%s\"", s, s, gen);
         st = nl_rank1_generator(N, s, g, L);
     }
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
 }
 
 static void print_wave_vectors(const opts_t *a, const nl_rank1_lattice *L)
@@ -227,8 +226,7 @@ static void field(opts_t *a, const nl_rank1_lattice *L)
         cli_die_status(st);
     if (!f || !grad)
         cli_die(1, "out of memory");
-    if ((st = nl_rank1_model_synthesize(L, m, a->extent, a->seed, f, grad, &imag)))
-        cli_die_status(st);
+    cli_check(nl_rank1_model_synthesize(L, m, a->extent, a->seed, f, grad, &imag));
     write_outputs(a, L, f, grad, imag);
     free(f), free(grad);
     nl_model_free(m);

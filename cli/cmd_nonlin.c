@@ -92,7 +92,6 @@ typedef struct {
 
 static void print_design(const opts_t *a, const nl_hermite *he, const design_t *r, const char *tmp)
 {
-    int st;
     size_t nl2 = r->nl2;
     if (a->json) {
         json_t *o = json_pack("{s:s,s:s,s:o,s:o,s:o,s:o,s:f,s:I,s:o}", "target", a->tspec, "g", a->gspec, "lag",
@@ -114,9 +113,8 @@ static void print_design(const opts_t *a, const nl_hermite *he, const design_t *
     if (a->out || !a->json) {
         const char *names[5] = {"lag", "target", "input_acf", "predicted", "measured"};
         const double *cols[5] = {r->lag, r->tg, r->rho, r->pred, r->meas};
-        if ((st = cli_write_table(tmp, "noiselab nonlin --design: covariances; input_acf is normalised",
-                                  a->verify ? 5 : 4, names, nl2, cols)))
-            cli_die_status(st);
+        cli_check(cli_write_table(tmp, "noiselab nonlin --design: covariances; input_acf is normalised",
+                        a->verify ? 5 : 4, names, nl2, cols));
         if (a->out)
             cli_out_commit(a->out);
     }
@@ -139,8 +137,7 @@ static void design(const opts_t *a, const nl_model *m, const nl_dist *d, const n
     if (a->verify) {
         if (!(r.meas = malloc(r.nl2 * sizeof *r.meas)))
             cli_die(1, "out of memory");
-        if ((st = nl_nonlin_verify(S, d, a->verify, r.nl2, r.meas)))
-            cli_die_status(st);
+        cli_check(nl_nonlin_verify(S, d, a->verify, r.nl2, r.meas));
         r.merr = nl_nonlin_max_deviation(r.meas, T->data, r.nl2, scale, var);
     }
     r.lag = malloc(r.nl2 * sizeof *r.lag), r.tg = malloc(r.nl2 * sizeof *r.tg), r.pred = malloc(r.nl2 * sizeof *r.pred);
@@ -164,8 +161,7 @@ static void predict(const opts_t *a, const nl_model *m, const nl_hermite *he, co
     nl_field *S = Ry ? nl_field_alloc(1, &n, &h, &st) : NULL, *Sy = S ? nl_field_alloc(1, &n, &h, &st) : NULL;
     if (!Sy)
         cli_die_status(st);
-    if ((st = nl_wk_sample_acf(m, R)))
-        cli_die_status(st);
+    cli_check(nl_wk_sample_acf(m, R));
     if (!(R->data[0] > 0))
         cli_die(2, "--acf: %s has R(0) = %g; expected a positive variance", a->spec, R->data[0]);
     nl_nonlin_output_acf(he, R->data, n, R->data[0], Ry->data);
@@ -194,14 +190,12 @@ static void predict(const opts_t *a, const nl_model *m, const nl_hermite *he, co
     if (a->out || (!a->json && !a->pout)) {
         static const char *const names[] = {"lag", "input_acf", "output_acf"};
         const double *cols[] = {lag, R->data, Ry->data};
-        if ((st = cli_write_table(tmp, "noiselab nonlin: predicted output autocovariance", 3, names, nl, cols)))
-            cli_die_status(st);
+        cli_check(cli_write_table(tmp, "noiselab nonlin: predicted output autocovariance", 3, names, nl, cols));
     }
     if (a->pout) {
         static const char *const names[] = {"freq", "input_psd", "output_psd"};
         const double *cols[] = {freq, S->data, Sy->data};
-        if ((st = cli_write_table(ptmp, "noiselab nonlin: two-sided spectra, cycles per unit", 3, names, nl, cols)))
-            cli_die_status(st);
+        cli_check(cli_write_table(ptmp, "noiselab nonlin: two-sided spectra, cycles per unit", 3, names, nl, cols));
     }
     free(lag), free(freq);
     nl_field_free(R), nl_field_free(Ry), nl_field_free(S), nl_field_free(Sy);
@@ -222,8 +216,7 @@ int cli_cmd_nonlin(int argc, char **argv)
         tmp = cli_out_begin(a.out);
     if (a.pout)
         ptmp = cli_out_begin(a.pout);
-    if ((st = nl_hermite_expand(d, a.K, &he)))
-        cli_die_status(st);
+    cli_check(nl_hermite_expand(d, a.K, &he));
     if (a.design) {
         design(&a, m, d, &he, tmp);
     } else {

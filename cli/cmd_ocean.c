@@ -52,8 +52,7 @@ static void write_png(const char *path, const double *img, size_t W, int tile)
         for (size_t x = 0; x < T; x++)
             f->data[y * T + x] = img[(y % W) * W + x % W];
     const char *tmp = cli_out_begin(path);
-    if ((st = nl_png_write_field(tmp, f, 0, 1)))
-        cli_die_status(st);
+    cli_check(nl_png_write_field(tmp, f, 0, 1));
     cli_out_commit(path);
     nl_field_free(f);
 }
@@ -169,8 +168,7 @@ static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, do
     int st;
     if (!h || !g)
         cli_die(1, "out of memory");
-    if ((st = nl_ocean_lattice_frame(L, &a->o, a->seed, t, h, g)))
-        cli_die_status(st);
+    cli_check(nl_ocean_lattice_frame(L, &a->o, a->seed, t, h, g));
     if (a->out) {
         char *name = frame_name(a->out, fr, a->frames);
         write_lattice_tsv(a, L, h, g, t, cli_out_begin(name));
@@ -201,8 +199,7 @@ static void grid_frame(const opts_t *a, int fr, double t, double *img, double *g
     int st;
     if (!h || !hx || !hy)
         cli_die(1, "out of memory");
-    if ((st = nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy)))
-        cli_die_status(st);
+    cli_check(nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy));
     if (a->out) {
         size_t n[2] = {M, M};
         double sp[2] = {a->o.patch / (double)M, a->o.patch / (double)M};
@@ -217,8 +214,7 @@ static void grid_frame(const opts_t *a, int fr, double t, double *img, double *g
         snprintf(meta.method, sizeof meta.method, "ocean:grid=%zu,wind=%g,%g,t=%g,patch=%g", M, a->v, a->ang, t,
                  a->o.patch);
         snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);
-        if ((st = nl_exr_write(tmp, f, &meta)))
-            cli_die_status(st);
+        cli_check(nl_exr_write(tmp, f, &meta));
         cli_out_commit(name);
         nl_field_free(f);
         free(name);
@@ -253,7 +249,6 @@ int cli_cmd_ocean(int argc, char **argv)
 {
     opts_t a = {.W = 512, .v = NAN, .frames = 1, .seed = 1, .o = {0, 0, 100, 1e-4}};
     nl_rank1_lattice L;
-    int st;
     parse(argc, argv, &a);
     check(argc, argv, &a);
     a.o.wind = a.v, a.o.angle = a.ang * M_PI / 180;
@@ -262,8 +257,7 @@ int cli_cmd_ocean(int argc, char **argv)
         int idx = nl_rank1_fibonacci_index(a.N);
         if (!idx)
             cli_die(2, "--points: expected a Fibonacci number (e.g. 55, 1597, 10946), got %zu", a.N);
-        if ((st = nl_rank1_fibonacci(idx, &L)))
-            cli_die_status(st);
+        cli_check(nl_rank1_fibonacci(idx, &L));
     }
     cli_progress("ocean", 0);
     for (int fr = 0; fr < a.frames; fr++) {

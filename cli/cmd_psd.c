@@ -91,21 +91,17 @@ static void parse(int argc, char **argv, psd_opts *o)
 static void write_centred(psd_opts *o, const nl_field *P)
 {
     nl_field *C;
-    int st;
-    if ((st = nl_fftshift_alloc(P, &C)))
-        cli_die_status(st);
+    cli_check(nl_fftshift_alloc(P, &C));
     if (o->out && cli_has_ext(o->out, ".exr")) {
         nl_meta meta;
         memset(&meta, 0, sizeof meta);
         snprintf(meta.method, sizeof meta.method, "psd%s, zero frequency at (%zu, %zu)", o->welch ? " welch" : "",
                  P->n[0] / 2, P->n[1] / 2);
-        if ((st = nl_exr_write(o->tmp, C, &meta)))
-            cli_die_status(st);
+        cli_check(nl_exr_write(o->tmp, C, &meta));
     }
     if (o->preview) {
         double mx = nl_fftshift_log10_floor(C, 1e-12);
-        if ((st = nl_png_write_field(o->pvtmp, C, log10(mx) - 8, log10(mx))))
-            cli_die_status(st);
+        cli_check(nl_png_write_field(o->pvtmp, C, log10(mx) - 8, log10(mx)));
         cli_out_commit(o->preview);
     }
     nl_field_free(C);
@@ -156,8 +152,7 @@ static void output(const psd_opts *o, int dim, const double *freq, const double 
                                       : "noiselab psd: two-sided periodogram density, radial average, freq in "
                                         "cycles per unit",
                           tgt ? 3 : 2, names, nf, cols);
-        if (st)
-            cli_die_status(st);
+        cli_check(st);
     }
     if (o->out)
         cli_out_commit(o->out);
@@ -192,8 +187,7 @@ int cli_cmd_psd(int argc, char **argv)
         o.tmp = cli_out_begin(o.out);
     if (o.preview)
         o.pvtmp = cli_out_begin(o.preview);
-    if ((st = o.welch ? nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg) : nl_psd_periodogram(x, o.mean, &P)))
-        cli_die_status(st);
+    cli_check(o.welch ? nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg) : nl_psd_periodogram(x, o.mean, &P));
     if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
         write_centred(&o, P);
     if (o.angular && (st = nl_psd_sectors(P, 18, 0.05, 0.45, o.sector, &o.aniso)))
@@ -206,8 +200,7 @@ int cli_cmd_psd(int argc, char **argv)
         cli_die(1, "out of memory");
     if (o.target)
         target_profile(&o, x, tgt);
-    if ((st = nl_psd_profile(P, freq, val, cnt, &nf)))
-        cli_die_status(st);
+    cli_check(nl_psd_profile(P, freq, val, cnt, &nf));
     if (o.slope && (st = x->dim == 1 ? nl_psd_slope(freq, val, nf, o.f1, o.f2, 1, &o.sl)
                                      : nl_psd_slope_grid(P, o.f1, o.f2, &o.sl)))
         cli_die_status(st);

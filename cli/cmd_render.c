@@ -204,8 +204,7 @@ static void write_picture(const opts_t *a, const nl_field *x)
             cli_die_status(st);
         st = nl_png_write_field(tmp, x, lo, hi);
     }
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     cli_out_commit(a->out);
 }
 

@@ -74,24 +74,6 @@ static const char *spectrum_spec(const char *s, char *buf, size_t len)
     return buf;
 }
 
-static void write_tsv(const char *path, const nl_field *f)
-{
-    static const char *const names[] = {"t", "value"};
-    double *t = malloc(f->count * sizeof *t);
-    const double *cols[2];
-    int st;
-    if (!t)
-        cli_die(1, "out of memory");
-    for (size_t i = 0; i < f->count; i++)
-        t[i] = (double)i * f->h[0];
-    cols[0] = t;
-    cols[1] = f->data;
-    st = nl_tsv_write(path, NULL, 2, names, f->count, cols);
-    free(t);
-    if (st)
-        cli_die_status(st);
-}
-
 static void parse_origin(const char *s, long *o)
 {
     char *end;
@@ -132,8 +114,7 @@ static void apply_from(const char *path, cli_synth_job *job, const char **acf, c
     if (meta.model[0]) {
         nl_model *m;
         int st = nl_model_parse(meta.model, &m);
-        if (st)
-            cli_die_status(st);
+        cli_check(st);
         snprintf(mbuf, 1100, "%s", meta.model);
         if (nl_model_is_spectral(m))
             *spec = mbuf;
@@ -224,9 +205,7 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
         g->given_N = 1;
         break;
     case 't':
-        job->tol = cli_parse_double("--tol", optarg);
-        if (!(job->tol > 0))
-            cli_die(2, "--tol: expected a positive number, got \"%s\"", optarg);
+        job->tol = cli_parse_positive("--tol", optarg, "number");
         g->given_tol = 1;
         break;
     case 'R':
@@ -240,15 +219,11 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
             cli_die(2, "--H: expected a Hurst exponent between 0 and 1, got \"%s\"", optarg);
         break;
     case 'v':
-        job->vscale = cli_parse_double("--variance-scale", optarg);
-        if (!(job->vscale > 0))
-            cli_die(2, "--variance-scale: expected a positive factor, got \"%s\"", optarg);
+        job->vscale = cli_parse_positive("--variance-scale", optarg, "factor");
         g->given_vs = 1;
         break;
     case 'D':
-        job->density = cli_parse_double("--density", optarg);
-        if (!(job->density > 0))
-            cli_die(2, "--density: expected a positive number, got \"%s\"", optarg);
+        job->density = cli_parse_positive("--density", optarg, "number");
         g->given_density = 1;
         break;
     case 'V':
@@ -410,7 +385,6 @@ static void check_model_given(const cli_synth_job *job, const cli_synth_args *g)
 static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
 {
     char sbuf[1200];
-    int st;
     if (!g->size)
         cli_die(2, "synth: --size: expected N, NxM or NxMxK");
     if (!g->out)
@@ -427,8 +401,7 @@ static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
     if (g->preview && !cli_has_ext(g->preview, ".png"))
         cli_die(2, "--preview: expected a file name ending in .png, got \"%s\"", g->preview);
     if (g->acf || g->spec) {
-        if ((st = nl_model_parse(g->acf ? g->acf : spectrum_spec(g->spec, sbuf, sizeof sbuf), &job->m)))
-            cli_die_status(st);
+        cli_check(nl_model_parse(g->acf ? g->acf : spectrum_spec(g->spec, sbuf, sizeof sbuf), &job->m));
         if (g->acf && nl_model_is_spectral(job->m))
             cli_die(2, "--acf: \"%s\" is a spectrum model; pass it with --spectrum", g->acf);
         if (g->spec && !nl_model_is_spectral(job->m))
@@ -500,12 +473,7 @@ int cli_cmd_synth(int argc, char **argv)
     run(&job, f, &res);
     fill_meta(&job, f, &res, &meta);
     cli_phase("synth", "writing");
-    if (cli_has_ext(g.out, ".exr")) {
-        if ((st = nl_exr_write(tmp, f, &meta)))
-            cli_die_status(st);
-    } else {
-        write_tsv(tmp, f);
-    }
+    cli_write_field(g.out, tmp, f, &meta);
     if (g.preview && (st = nl_png_write_field(ptmp, f, res.offset - 3 * res.sd, res.offset + 3 * res.sd)))
         cli_die_status(st);
     cli_progress_done();

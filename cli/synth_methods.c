@@ -18,12 +18,9 @@ void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *
 {
     nl_synth_fft_plan *p;
     nl_synth_fft_info info;
-    int st;
-    if ((st = nl_synth_fft_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, &p)))
-        cli_die_status(st);
+    cli_check(nl_synth_fft_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, &p));
     nl_synth_fft_plan_info(p, &info);
-    if ((st = nl_synth_fft_execute(p, job->seed, f)))
-        cli_die_status(st);
+    cli_check(nl_synth_fft_execute(p, job->seed, f));
     nl_synth_fft_plan_free(p);
     snprintf(r->method, sizeof r->method, "fft");
     if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
@@ -64,8 +61,7 @@ static nl_field *seed_image(const cli_synth_job *job)
 {
     nl_field *img;
     int st = nl_field_read(job->seed_image, &img, NULL);
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     if (img->dim != job->dim)
         cli_die(2, "--seed-image: %s is %dD, expected %dD like --size", job->seed_image, img->dim, job->dim);
     return img;
@@ -76,7 +72,6 @@ static nl_subdiv_plan *subdiv_plan(const cli_synth_job *job, nl_field **img)
 {
     nl_subdiv_options o;
     nl_subdiv_plan *p;
-    int st;
     nl_subdiv_options_default(&o);
     o.levels = job->levels;
     o.N = job->N < 0 ? 2 : job->N;
@@ -92,12 +87,10 @@ static nl_subdiv_plan *subdiv_plan(const cli_synth_job *job, nl_field **img)
             cli_die(2, "--spacing: subdivision needs the same spacing on every axis");
     if (job->seed_image) {
         *img = seed_image(job);
-        if ((st = nl_subdiv_image_levels(job->dim, (*img)->n, job->n, job->levels, &o.levels)))
-            cli_die_status(st);
+        cli_check(nl_subdiv_image_levels(job->dim, (*img)->n, job->n, job->levels, &o.levels));
         o.image = !job->nonperiodic;
     }
-    if ((st = nl_subdiv_plan_alloc(job->m, job->dim, job->n, job->h[0], &o, &p)))
-        cli_die_status(st);
+    cli_check(nl_subdiv_plan_alloc(job->m, job->dim, job->n, job->h[0], &o, &p));
     return p;
 }
 
@@ -140,8 +133,7 @@ void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
         st = nl_subdiv_plan_execute_image(p, img, job->seed, f);
     else
         st = nl_subdiv_plan_execute(p, job->seed, f);
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     subdiv_describe(job, p, r);
     nl_field_free(img);
     nl_subdiv_plan_free(p);
@@ -157,10 +149,8 @@ void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_res
         cli_die(2, "synth midpoint: expected a 1D or 2D --size, got %dD", job->dim);
     if (isnan(H) && (st = nl_subdiv_midpoint_hurst(job->m, job->dim, &H)))
         cli_die_status(st);
-    if ((st = nl_subdiv_plan_alloc_midpoint(job->dim, job->n, job->h[0], job->levels, H, 1.0, job->vscale, &p)))
-        cli_die_status(st);
-    if ((st = nl_subdiv_plan_execute(p, job->seed, f)))
-        cli_die_status(st);
+    cli_check(nl_subdiv_plan_alloc_midpoint(job->dim, job->n, job->h[0], job->levels, H, 1.0, job->vscale, &p));
+    cli_check(nl_subdiv_plan_execute(p, job->seed, f));
     nl_subdiv_plan_info(p, &info);
     snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g", H, info.levels,
              job->vscale);
@@ -173,13 +163,10 @@ void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_re
 {
     nl_synth_circulant_plan *p;
     nl_synth_circulant_info info;
-    int st;
-    if ((st = nl_synth_circulant_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, 16,
-                                         &p)))
-        cli_die_status(st);
+    cli_check(nl_synth_circulant_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, 16,
+                               &p));
     nl_synth_circulant_plan_info(p, &info);
-    if ((st = nl_synth_circulant_execute(p, job->seed, f)))
-        cli_die_status(st);
+    cli_check(nl_synth_circulant_execute(p, job->seed, f));
     nl_synth_circulant_plan_free(p);
     snprintf(r->method, sizeof r->method, "circulant:embedding=%zux%zux%zu", info.m[0], info.m[1], info.m[2]);
     if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
@@ -196,12 +183,9 @@ void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_re
 void cli_synth_cholesky_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     nl_synth_cholesky_plan *p;
-    int st;
     double zero[3] = {0, 0, 0};
-    if ((st = nl_synth_cholesky_plan_alloc(job->m, job->dim, job->n, job->h, &p)))
-        cli_die_status(st);
-    if ((st = nl_synth_cholesky_execute(p, job->seed, f)))
-        cli_die_status(st);
+    cli_check(nl_synth_cholesky_plan_alloc(job->m, job->dim, job->n, job->h, &p));
+    cli_check(nl_synth_cholesky_execute(p, job->seed, f));
     nl_synth_cholesky_plan_free(p);
     snprintf(r->method, sizeof r->method, "cholesky");
     r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
@@ -210,11 +194,9 @@ void cli_synth_cholesky_run(const cli_synth_job *job, nl_field *f, cli_synth_res
 void cli_synth_faulting_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     size_t K;
-    int st;
     if (job->dim > 2)
         cli_die(2, "synth faulting: expected a 1D or 2D --size, got %dD", job->dim);
-    if ((st = nl_synth_faulting(job->seed, job->density, f, &K)))
-        cli_die_status(st);
+    cli_check(nl_synth_faulting(job->seed, job->density, f, &K));
     snprintf(r->method, sizeof r->method, "faulting:density=%.17g", job->density);
     double mean = 0, var = 0;
     for (size_t i = 0; i < f->count; i++)
@@ -248,15 +230,13 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
         st = nl_synth_sparse_plan_exemplar(img, job->radius, job->cell, job->density, &p);
         nl_field_free(img);
     }
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     if (job->angle && (st = nl_synth_sparse_set_angle(p, job->angle)))
         cli_die_status(st);
     nl_synth_sparse_plan_info(p, &info);
     if (job->wrap && job->nonperiodic)
         cli_die(2, "synth sparse: --wrap and --origin exclude each other");
-    if ((st = nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f)))
-        cli_die_status(st);
+    cli_check(nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f));
     nl_synth_sparse_plan_free(p);
     /* expression-valued keys follow '|', as they may hold commas */
     char org[64] = "";

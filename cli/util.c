@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <getopt.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -48,6 +49,20 @@ void cli_die(int code, const char *fmt, ...)
 void cli_die_status(int st)
 {
     cli_die(nl_error_is_input(st) ? 2 : 1, "%s", nl_errmsg());
+}
+
+void cli_check(int st)
+{
+    if (st)
+        cli_die_status(st);
+}
+
+void *cli_malloc(size_t size)
+{
+    void *p = malloc(size);
+    if (!p)
+        cli_die(1, "out of memory");
+    return p;
 }
 
 void cli_bad_option(const char *cmd, int c, char **argv)
@@ -115,6 +130,14 @@ size_t cli_parse_count(const char *opt, const char *s, size_t min)
     return (size_t)v;
 }
 
+double cli_parse_positive(const char *opt, const char *s, const char *what)
+{
+    double v = cli_parse_double(opt, s);
+    if (!(v > 0))
+        cli_die(2, "%s: expected a positive %s, got \"%s\"", opt, what, s);
+    return v;
+}
+
 int cli_parse_dim(const char *s, int max)
 {
     if (strlen(s) != 1 || s[0] < '1' || s[0] > '0' + max)
@@ -145,6 +168,19 @@ int cli_parse_spacing(const char *opt, const char *s, int dim, double *h)
         p = end + 1;
     }
     cli_die(2, "%s: expected a positive spacing H or one per axis (H0,H1,...), got \"%s\"", opt, s);
+}
+
+void cli_no_operands(const char *cmd, int argc, char **argv)
+{
+    if (optind < argc)
+        cli_die(2, "%s: unexpected argument \"%s\"", cmd, argv[optind]);
+}
+
+const char *cli_one_operand(const char *cmd, const char *what, int argc, char **argv)
+{
+    if (optind + 1 != argc)
+        cli_die(2, "%s: expected one %s, got %d", cmd, what, argc - optind);
+    return argv[optind];
 }
 
 int cli_has_ext(const char *path, const char *ext)
@@ -203,12 +239,26 @@ json_t *cli_json_array(const double *v, size_t n)
     return a;
 }
 
+void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta)
+{
+    static const char *const names[] = {"t", "value"};
+    double *t;
+    if (cli_has_ext(path, ".exr")) {
+        cli_check(nl_exr_write(tmp, f, meta));
+        return;
+    }
+    t = cli_malloc(f->count * sizeof *t);
+    for (size_t i = 0; i < f->count; i++)
+        t[i] = (double)i * f->h[0];
+    cli_check(nl_tsv_write(tmp, NULL, 2, names, f->count, (const double *const[]){t, f->data}));
+    free(t);
+}
+
 nl_field *cli_read_field(const char *path, nl_meta *meta)
 {
     nl_field *f;
     int st = nl_field_read(path, &f, meta);
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     return f;
 }
 
