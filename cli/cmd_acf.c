@@ -72,9 +72,7 @@ static void parse(int argc, char **argv, acf_opts *o)
         default: cli_bad_option("acf", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "acf: expected one input file, got %d", argc - optind);
-    o->in = argv[optind];
+    o->in = cli_one_operand("acf", "input file", argc, argv);
 }
 
 /* Checks that need the field; sets the number of lags. */
@@ -109,10 +107,8 @@ static void write_centred(const acf_opts *o, const nl_field *full)
 static void estimate(const acf_opts *o, const nl_field *x, const nl_field *full, double *lag, double *val,
                      double *blo, double *bhi)
 {
-    size_t nl = o->nl, *cnt = malloc(nl * sizeof *cnt);
+    size_t nl = o->nl, *cnt = cli_malloc(nl * sizeof *cnt);
     int st;
-    if (!cnt)
-        cli_die(1, "out of memory");
     if (o->direct) {
         st = nl_acf_direct(x, o->mean, o->unbiased, o->axis, nl - 1, val);
         for (size_t i = 0; i < nl; i++)
@@ -195,13 +191,11 @@ int cli_cmd_acf(int argc, char **argv)
         cli_die(2, "acf: --direct and --bands go with an axis, not --radial");
     if (o.bands && (x->dim != 1 || o.unbiased))
         cli_die(2, "acf: --bands is for the biased estimate of a 1D field");
-    lag = malloc(o.nl * sizeof *lag), val = malloc(o.nl * sizeof *val);
+    lag = cli_malloc(o.nl * sizeof *lag), val = cli_malloc(o.nl * sizeof *val);
     if (o.bands)
-        blo = malloc(o.nl * sizeof *blo), bhi = malloc(o.nl * sizeof *bhi);
+        blo = cli_malloc(o.nl * sizeof *blo), bhi = cli_malloc(o.nl * sizeof *bhi);
     if (o.target)
-        tgt = malloc(o.nl * sizeof *tgt);
-    if (!lag || !val || (o.bands && (!blo || !bhi)) || (o.target && !tgt))
-        cli_die(1, "out of memory");
+        tgt = cli_malloc(o.nl * sizeof *tgt);
     estimate(&o, x, full, lag, val, blo, bhi);
     if (o.target)
         target_values(&o, x, lag, tgt);

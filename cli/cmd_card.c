@@ -38,12 +38,10 @@ static void write_log_picture(const char *path, const nl_field *P)
 /* Radial spectra on the Welch grid: measured and (with a model) the model's. */
 static void write_radial(const char *path, const nl_field *W, const nl_model *m, size_t seg)
 {
-    size_t nb = seg / 2 + 1, *cnt = malloc(nb * sizeof *cnt);
-    double *r = malloc(nb * sizeof *r), *v = malloc(nb * sizeof *v), *t = malloc(nb * sizeof *t);
+    size_t nb = seg / 2 + 1, *cnt = cli_malloc(nb * sizeof *cnt);
+    double *r = cli_malloc(nb * sizeof *r), *v = cli_malloc(nb * sizeof *v), *t = cli_malloc(nb * sizeof *t);
     double step = 1.0 / ((double)seg * W->h[0]);
     int st;
-    if (!cnt || !r || !v || !t)
-        cli_die(1, "out of memory");
     nl_radial(W, NL_GRID_FREQ, step, nb, r, v, cnt);
     for (size_t b = 0; b < nb; b++)
         t[b] = NAN;
@@ -111,8 +109,7 @@ static const char *parse(int argc, char **argv, const char **spec)
         default: cli_bad_option("card", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "card: expected one field file, got %d", argc - optind);
+    cli_one_operand("card", "field file", argc, argv);
     if (!out || !cli_has_ext(out, ".png"))
         cli_die(2, "card: -o: expected an output file ending in .png");
     return out;

@@ -83,8 +83,7 @@ int cli_cmd_check(int argc, char **argv)
         default: cli_bad_option("check", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "check: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("check", argc, argv);
     if (!spec)
         cli_die(2, "check: --acf: expected a model (see noiselab models)");
     if (!dim)

@@ -80,9 +80,7 @@ static void scene_points(json_t *j, const char *path, nl_cloud_scene *s)
     if (!json_is_array(pts) || json_array_size(pts) < 1)
         cli_die(2, "%s: \"points\": expected an array of [x, y, z, value]", path);
     s->npoints = json_array_size(pts);
-    s->points = malloc(s->npoints * 4 * sizeof *s->points);
-    if (!s->points)
-        cli_die(1, "out of memory");
+    s->points = cli_malloc(s->npoints * 4 * sizeof *s->points);
     for (size_t i = 0; i < s->npoints; i++) {
         json_t *p = json_array_get(pts, i);
         if (!json_is_array(p) || json_array_size(p) != 4)
@@ -161,13 +159,11 @@ int cli_cmd_cloud(int argc, char **argv)
         default: cli_bad_option("cloud", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "cloud: expected one scene file, got %d", argc - optind);
+    path = cli_one_operand("cloud", "scene file", argc, argv);
     if (!out || !cli_has_ext(out, ".png"))
         cli_die(2, "cloud: -o: expected an output file ending in .png");
     if (exr && !cli_has_ext(exr, ".exr"))
         cli_die(2, "--exr: expected a file ending in .exr, got \"%s\"", exr);
-    path = argv[optind];
     json_t *j = json_load_file(path, 0, &je);
     if (!j)
         cli_die(2, "%s:%d: not valid JSON: %s", path, je.line, je.text);
@@ -180,10 +176,8 @@ int cli_cmd_cloud(int argc, char **argv)
     tmp = cli_out_begin(out);
     if (exr)
         etmp = cli_out_begin(exr);
-    unsigned char *rgb = malloc(s.width * s.height * 3);
-    double *lum = exr ? malloc(s.width * s.height * sizeof *lum) : NULL;
-    if (!rgb || (exr && !lum))
-        cli_die(1, "out of memory");
+    unsigned char *rgb = cli_malloc(s.width * s.height * 3);
+    double *lum = exr ? cli_malloc(s.width * s.height * sizeof *lum) : NULL;
     cli_progress("cloud", 0);
     cli_check(nl_render_cloud(&s, rgb, lum, progress));
     cli_progress_done();

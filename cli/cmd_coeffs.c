@@ -100,23 +100,18 @@ int cli_cmd_coeffs(int argc, char **argv)
             N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
             break;
         case 't':
-            tol = cli_parse_double("--tol", optarg);
-            if (!(tol > 0))
-                cli_die(2, "--tol: expected a positive number, got \"%s\"", optarg);
+            tol = cli_parse_positive("--tol", optarg, "number");
             break;
         case 'L': levels = (int)cli_parse_count("--levels", optarg, 1); break;
         case 's':
-            s0 = cli_parse_double("--spacing0", optarg);
-            if (!(s0 > 0))
-                cli_die(2, "--spacing0: expected a positive number, got \"%s\"", optarg);
+            s0 = cli_parse_positive("--spacing0", optarg, "number");
             break;
         case 'j': json = 1; break;
         case 'h': fputs(help, stdout); return 0;
         default: cli_bad_option("coeffs", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "coeffs: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("coeffs", argc, argv);
     if (!spec)
         cli_die(2, "coeffs: --acf: expected an autocorrelation model (see noiselab models)");
     if (!dim)

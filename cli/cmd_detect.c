@@ -43,13 +43,12 @@ int cli_cmd_detect(int argc, char **argv)
         default: cli_bad_option("detect", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "detect: expected one input file, got %d", argc - optind);
+    const char *in = cli_one_operand("detect", "input file", argc, argv);
     if (!L)
         cli_die(2, "detect: --levels: expected the number of subdivision levels of the field");
     if (L > 40)
         cli_die(2, "--levels: expected at most 40, got %d", L);
-    x = cli_read_field(argv[optind], NULL);
+    x = cli_read_field(in, NULL);
     if ((st = nl_creases_measure(x, L, &cr)) || (st = nl_aliasing_measure(x, &A)))
         cli_die_status(st);
     if (spec) {

@@ -43,11 +43,9 @@ static void parse(int argc, char **argv, hist_opts *o)
         default: cli_bad_option("hist", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "hist: expected one input file, got %d", argc - optind);
+    o->in = cli_one_operand("hist", "input file", argc, argv);
     if (o->bins > 10000000)
         cli_die(2, "--bins: expected at most 10000000, got %zu", o->bins);
-    o->in = argv[optind];
 }
 
 static void output(const hist_opts *o, const nl_moments *mo, const double *edges, const double *counts,
@@ -97,16 +95,13 @@ int cli_cmd_hist(int argc, char **argv)
     x = cli_read_field(o.in, NULL);
     if (o.out)
         o.tmp = cli_out_begin(o.out);
-    edges = malloc((o.bins + 1) * sizeof *edges);
-    counts = malloc(o.bins * sizeof *counts);
-    if (!edges || !counts)
-        cli_die(1, "out of memory");
+    edges = cli_malloc((o.bins + 1) * sizeof *edges);
+    counts = cli_malloc(o.bins * sizeof *counts);
     if ((st = nl_moments_compute(x, &mo)) || (st = nl_hist(x, o.bins, edges, counts)))
         cli_die_status(st);
     if (dist) {
         cli_check(nl_gof_test(x->data, x->count, dist, o.bins < 2 ? 2 : o.bins, &gof));
-        if (!(pdf = malloc(o.bins * sizeof *pdf)))
-            cli_die(1, "out of memory");
+        pdf = cli_malloc(o.bins * sizeof *pdf);
         cli_check(nl_gof_bin_density(dist, edges, o.bins, pdf));
     }
     output(&o, &mo, edges, counts, dist ? &gof : NULL, pdf);

@@ -70,8 +70,7 @@ static void parse(int argc, char **argv, opts_t *a)
         default: cli_bad_option("krige", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "krige: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("krige", argc, argv);
     if (!a->data || !a->spec || !a->grid || !a->ext || !a->out)
         cli_die(2, "krige: expected --data, --acf, --grid, --extent and -o");
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);
@@ -99,9 +98,7 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
         st = nl_exr_write(tmp, f, &meta);
     else {
         static const char *const names[] = {"x", "value"};
-        double *xs = malloc(a->g[0] * sizeof *xs);
-        if (!xs)
-            cli_die(1, "out of memory");
+        double *xs = cli_malloc(a->g[0] * sizeof *xs);
         for (size_t i = 0; i < a->g[0]; i++)
             xs[i] = a->lo[0] + ((double)i + 0.5) * f->h[0];
         const double *cols[2] = {xs, f->data};
@@ -110,8 +107,7 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
     }
     if (!st && vf)
         st = nl_exr_write(vtmp, vf, &meta);
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     cli_out_commit(a->out);
     if (a->vout)
         cli_out_commit(a->vout);
@@ -146,15 +142,14 @@ int cli_cmd_krige(int argc, char **argv)
     nl_model *m;
     nl_krige_plan *p;
     nl_krige_info info;
-    if ((st = nl_model_parse(a.spec, &m)))
-        cli_die_status(st);
+    cli_check(nl_model_parse(a.spec, &m));
     tmp = cli_out_begin(a.out);
     if (a.vout)
         vtmp = cli_out_begin(a.vout);
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    if ((st = nl_krige_plan_alloc(m, pt->dim, n, pt->pts, pt->val, !isnan(a.mean), isnan(a.mean) ? 0 : a.mean, a.strict, &p)))
-        cli_die_status(st);
+    cli_check(nl_krige_plan_alloc(m, pt->dim, n, pt->pts, pt->val, !isnan(a.mean), isnan(a.mean) ? 0 : a.mean,
+                                  a.strict, &p));
     nl_krige_plan_info(p, &info);
     double h[3];
     for (int d = 0; d < 3; d++)

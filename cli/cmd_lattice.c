@@ -54,9 +54,7 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'a': a->spec = optarg; a->spectral = 0; break;
         case 'S': a->spec = optarg; a->spectral = 1; break;
         case 'E':
-            a->extent = cli_parse_double("--extent", optarg);
-            if (!(a->extent > 0))
-                cli_die(2, "--extent: expected a positive length, got \"%s\"", optarg);
+            a->extent = cli_parse_positive("--extent", optarg, "length");
             break;
         case 's': a->seed = cli_parse_u64("--seed", optarg); break;
         case 'w': a->wv = 1; break;
@@ -67,8 +65,7 @@ static void parse(int argc, char **argv, opts_t *a)
         default: cli_bad_option("lattice", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "lattice: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("lattice", argc, argv);
     if (!a->N)
         cli_die(2, "lattice: --points: expected the number of lattice points");
     if (!a->s)
@@ -217,15 +214,14 @@ static void write_outputs(const opts_t *a, const nl_rank1_lattice *L, const doub
 static void field(opts_t *a, const nl_rank1_lattice *L)
 {
     nl_model *m;
-    double *f = malloc(a->N * sizeof *f), *grad = malloc(a->N * a->s * sizeof *grad), imag;
+    double *f, *grad, imag;
     char sbuf[1100];
     int st;
     if (a->spectral && strncmp(a->spec, "power", 5) && strncmp(a->spec, "spectrum:", 9))
         snprintf(sbuf, sizeof sbuf, "spectrum:%s", a->spec), a->spec = sbuf;
     if ((st = nl_model_parse(a->spec, &m)) || (st = nl_rank1_model_check(m, a->s)))
         cli_die_status(st);
-    if (!f || !grad)
-        cli_die(1, "out of memory");
+    f = cli_malloc(a->N * sizeof *f), grad = cli_malloc(a->N * a->s * sizeof *grad);
     cli_check(nl_rank1_model_synthesize(L, m, a->extent, a->seed, f, grad, &imag));
     write_outputs(a, L, f, grad, imag);
     free(f), free(grad);

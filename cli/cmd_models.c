@@ -35,8 +35,7 @@ int cli_cmd_models(int argc, char **argv)
         } else
             cli_bad_option("models", c, argv);
     }
-    if (optind < argc)
-        cli_die(2, "models: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("models", argc, argv);
     if (json) {
         json_t *arr = json_array();
         for (size_t i = 0; i < n; i++)

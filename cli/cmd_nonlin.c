@@ -52,9 +52,7 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'g': a->gspec = optarg; break;
         case 'n': a->n = cli_parse_count("--size", optarg, 16); break;
         case 'H':
-            a->h = cli_parse_double("--spacing", optarg);
-            if (!(a->h > 0))
-                cli_die(2, "--spacing: expected a positive number, got \"%s\"", optarg);
+            a->h = cli_parse_positive("--spacing", optarg, "number");
             break;
         case 'K': a->K = (int)cli_parse_count("--terms", optarg, 2); break;
         case 'j': a->json = 1; break;
@@ -67,8 +65,7 @@ static void parse(int argc, char **argv, opts_t *a)
         default: cli_bad_option("nonlin", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "nonlin: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("nonlin", argc, argv);
     if (a->design) {
         if (!a->tspec || !a->gspec || a->spec)
             cli_die(2, "nonlin --design: expected --target SPEC and --g DIST (not --acf)");
@@ -135,14 +132,12 @@ static void design(const opts_t *a, const nl_model *m, const nl_dist *d, const n
         cli_die_status(st);
     double scale = var / T->data[0];
     if (a->verify) {
-        if (!(r.meas = malloc(r.nl2 * sizeof *r.meas)))
-            cli_die(1, "out of memory");
+        r.meas = cli_malloc(r.nl2 * sizeof *r.meas);
         cli_check(nl_nonlin_verify(S, d, a->verify, r.nl2, r.meas));
         r.merr = nl_nonlin_max_deviation(r.meas, T->data, r.nl2, scale, var);
     }
-    r.lag = malloc(r.nl2 * sizeof *r.lag), r.tg = malloc(r.nl2 * sizeof *r.tg), r.pred = malloc(r.nl2 * sizeof *r.pred);
-    if (!r.lag || !r.tg || !r.pred)
-        cli_die(1, "out of memory");
+    r.lag = cli_malloc(r.nl2 * sizeof *r.lag), r.tg = cli_malloc(r.nl2 * sizeof *r.tg);
+    r.pred = cli_malloc(r.nl2 * sizeof *r.pred);
     for (size_t i = 0; i < r.nl2; i++)
         r.lag[i] = (double)i * h, r.tg[i] = T->data[i] * scale;
     nl_nonlin_output_acf(he, r.rho, r.nl2, 1, r.pred);
@@ -167,9 +162,7 @@ static void predict(const opts_t *a, const nl_model *m, const nl_hermite *he, co
     nl_nonlin_output_acf(he, R->data, n, R->data[0], Ry->data);
     if ((st = nl_wk_acf_to_spectrum(R, S)) || (st = nl_wk_acf_to_spectrum(Ry, Sy)))
         cli_die_status(st);
-    double *lag = malloc(nl * sizeof *lag), *freq = malloc(nl * sizeof *freq);
-    if (!lag || !freq)
-        cli_die(1, "out of memory");
+    double *lag = cli_malloc(nl * sizeof *lag), *freq = cli_malloc(nl * sizeof *freq);
     for (size_t i = 0; i < nl; i++)
         lag[i] = (double)i * h, freq[i] = (double)i / ((double)n * h);
     if (a->json) {

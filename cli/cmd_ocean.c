@@ -30,10 +30,8 @@ static const char help[] =
 
 static char *frame_name(const char *path, int f, int frames)
 {
-    char *s = malloc(strlen(path) + 16);
+    char *s = cli_malloc(strlen(path) + 16);
     const char *dot = strrchr(path, '.');
-    if (!s)
-        cli_die(1, "out of memory");
     if (frames <= 1 || !dot)
         strcpy(s, path);
     else
@@ -94,14 +92,10 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'F': a->frames = (int)cli_parse_count("--frames", optarg, 1); break;
         case 'D': a->dt = cli_parse_double("--dt", optarg); break;
         case 'P':
-            a->o.patch = cli_parse_double("--patch", optarg);
-            if (!(a->o.patch > 0))
-                cli_die(2, "--patch: expected a positive size in metres, got \"%s\"", optarg);
+            a->o.patch = cli_parse_positive("--patch", optarg, "size in metres");
             break;
         case 'A':
-            a->o.amplitude = cli_parse_double("--amplitude", optarg);
-            if (!(a->o.amplitude > 0))
-                cli_die(2, "--amplitude: expected a positive number, got \"%s\"", optarg);
+            a->o.amplitude = cli_parse_positive("--amplitude", optarg, "number");
             break;
         case 's': a->seed = cli_parse_u64("--seed", optarg); break;
         case 'W': a->W = cli_parse_count("--size", optarg, 8); break;
@@ -117,8 +111,7 @@ static void parse(int argc, char **argv, opts_t *a)
 
 static void check(int argc, char **argv, const opts_t *a)
 {
-    if (optind < argc)
-        cli_die(2, "ocean: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("ocean", argc, argv);
     if (!a->lat == !a->M)
         cli_die(2, "ocean: expected exactly one of --lattice fibonacci --points N or --grid M");
     if (a->lat && strcmp(a->lat, "fibonacci"))
@@ -164,10 +157,8 @@ static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, do
                           double *gy)
 {
     size_t N = L->N;
-    double *h = malloc(N * sizeof *h), *g = malloc(2 * N * sizeof *g);
+    double *h = cli_malloc(N * sizeof *h), *g = cli_malloc(2 * N * sizeof *g);
     int st;
-    if (!h || !g)
-        cli_die(1, "out of memory");
     cli_check(nl_ocean_lattice_frame(L, &a->o, a->seed, t, h, g));
     if (a->out) {
         char *name = frame_name(a->out, fr, a->frames);
@@ -195,10 +186,8 @@ static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, do
 static void grid_frame(const opts_t *a, int fr, double t, double *img, double *gx, double *gy)
 {
     size_t M = a->M;
-    double *h = malloc(M * M * sizeof *h), *hx = malloc(M * M * sizeof *hx), *hy = malloc(M * M * sizeof *hy);
+    double *h = cli_malloc(M * M * sizeof *h), *hx = cli_malloc(M * M * sizeof *hx), *hy = cli_malloc(M * M * sizeof *hy);
     int st;
-    if (!h || !hx || !hy)
-        cli_die(1, "out of memory");
     cli_check(nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy));
     if (a->out) {
         size_t n[2] = {M, M};
@@ -228,9 +217,7 @@ static void pictures(const opts_t *a, int fr, const double *gx, const double *gy
 {
     static const double light[3] = {-0.74, -0.43, 0.5};
     size_t W = a->W;
-    double *sh = malloc(W * W * sizeof *sh);
-    if (!sh)
-        cli_die(1, "out of memory");
+    double *sh = cli_malloc(W * W * sizeof *sh);
     nl_render_shade_gradients(W * W, gx, gy, light, 0.1, sh);
     if (a->image) {
         char *name = frame_name(a->image, fr, a->frames);
@@ -262,10 +249,8 @@ int cli_cmd_ocean(int argc, char **argv)
     cli_progress("ocean", 0);
     for (int fr = 0; fr < a.frames; fr++) {
         cli_progress("ocean", (double)fr / a.frames);
-        double t = a.t0 + fr * a.dt, *img = malloc(a.W * a.W * sizeof *img), *gx = malloc(a.W * a.W * sizeof *gx),
-               *gy = malloc(a.W * a.W * sizeof *gy);
-        if (!img || !gx || !gy)
-            cli_die(1, "out of memory");
+        double t = a.t0 + fr * a.dt, *img = cli_malloc(a.W * a.W * sizeof *img),
+               *gx = cli_malloc(a.W * a.W * sizeof *gx), *gy = cli_malloc(a.W * a.W * sizeof *gy);
         if (a.lat)
             lattice_frame(&a, &L, fr, t, img, gx, gy);
         else

@@ -82,9 +82,7 @@ static void parse(int argc, char **argv, psd_opts *o)
         default: cli_bad_option("psd", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "psd: expected one input file, got %d", argc - optind);
-    o->in = argv[optind];
+    o->in = cli_one_operand("psd", "input file", argc, argv);
 }
 
 /* The 2D spectrum with zero frequency at the centre: EXR and/or picture. */
@@ -193,11 +191,9 @@ int cli_cmd_psd(int argc, char **argv)
     if (o.angular && (st = nl_psd_sectors(P, 18, 0.05, 0.45, o.sector, &o.aniso)))
         cli_die_status(st);
     maxn = x->n[0] + x->n[1] + x->n[2];
-    freq = malloc(maxn * sizeof *freq), val = malloc(maxn * sizeof *val), cnt = malloc(maxn * sizeof *cnt);
+    freq = cli_malloc(maxn * sizeof *freq), val = cli_malloc(maxn * sizeof *val), cnt = cli_malloc(maxn * sizeof *cnt);
     if (o.target)
-        tgt = malloc(maxn * sizeof *tgt);
-    if (!freq || !val || !cnt || (o.target && !tgt))
-        cli_die(1, "out of memory");
+        tgt = cli_malloc(maxn * sizeof *tgt);
     if (o.target)
         target_profile(&o, x, tgt);
     cli_check(nl_psd_profile(P, freq, val, cnt, &nf));

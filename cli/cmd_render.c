@@ -95,9 +95,7 @@ static void parse(int argc, char **argv, opts_t *a)
                 cli_die(2, "--shade: expected AZ,EL in degrees with 0 < EL <= 90, got \"%s\"", optarg);
             break;
         case 'z':
-            a->zs = cli_parse_double("--zscale", optarg);
-            if (!(a->zs > 0))
-                cli_die(2, "--zscale: expected a positive factor, got \"%s\"", optarg);
+            a->zs = cli_parse_positive("--zscale", optarg, "factor");
             a->given_zs = 1;
             break;
         case 'P': a->persp = 1; break;
