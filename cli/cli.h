@@ -53,6 +53,11 @@ void *cli_malloc(size_t size);
 /* Report an option error from getopt for subcommand `cmd` and exit 2. */
 void cli_bad_option(const char *cmd, int c, char **argv);
 
+/* getopt_long with getopt's own messages off; an unknown option or a
+ * missing value goes to cli_bad_option (exit 2). */
+struct option;
+int cli_getopt(int argc, char **argv, const char *shortopts, const struct option *opts, const char *cmd);
+
 /* Option values; each exits 2 with a message naming the option on error. */
 int cli_parse_size(const char *opt, const char *s, size_t *n, size_t min);   /* returns dim */
 uint64_t cli_parse_u64(const char *opt, const char *s);
@@ -85,7 +90,8 @@ void cli_progress_done(void);
 /* Outputs appear whole or not at all: cli_out_begin checks that a temporary
  * file beside `path` can be created (exit 2 naming the path if not) and
  * returns its name; cli_out_commit renames it to `path`.  Temporary files
- * still pending at exit are removed. */
+ * still pending at exit are removed.  An output not asked for (path NULL)
+ * has no temporary (NULL) and nothing to commit. */
 const char *cli_out_begin(const char *path);
 void cli_out_commit(const char *path);
 

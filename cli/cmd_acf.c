@@ -47,8 +47,7 @@ static void parse(int argc, char **argv, acf_opts *o)
         {"bands", no_argument, 0, 'B'},          {0}};
     int c;
     o->maxlag = o->mean = NAN;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "acf")) != -1) {
         switch (c) {
         case 'L':
             o->maxlag = cli_parse_double("--max-lag", optarg);
@@ -69,7 +68,6 @@ static void parse(int argc, char **argv, acf_opts *o)
         case 'B': o->bands = 1; break;
         case 'o': o->out = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("acf", c, argv);
         }
     }
     o->in = cli_one_operand("acf", "input file", argc, argv);
@@ -166,8 +164,7 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
                  o->unbiased ? "unbiased" : "biased", o->radial ? "radial average" : "along one axis");
         cli_check(cli_write_table(o->out ? o->tmp : NULL, comment, ncol, names, nl, cols));
     }
-    if (o->out)
-        cli_out_commit(o->out);
+    cli_out_commit(o->out);
 }
 
 int cli_cmd_acf(int argc, char **argv)
@@ -179,8 +176,7 @@ int cli_cmd_acf(int argc, char **argv)
     parse(argc, argv, &o);
     x = cli_read_field(o.in, NULL);
     check_field(&o, x);
-    if (o.out)
-        o.tmp = cli_out_begin(o.out);
+    o.tmp = cli_out_begin(o.out);
     cli_check(nl_acf_full(x, o.mean, o.unbiased, &full));
     if (o.out && cli_has_ext(o.out, ".exr")) {
         write_centred(&o, full);

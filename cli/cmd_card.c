@@ -100,13 +100,11 @@ static const char *parse(int argc, char **argv, const char **spec)
                                          {0}};
     const char *out = NULL;
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "card")) != -1) {
         switch (c) {
         case 'o': out = optarg; break;
         case 'a': *spec = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("card", c, argv);
         }
     }
     cli_one_operand("card", "field file", argc, argv);

@@ -150,13 +150,11 @@ int cli_cmd_cloud(int argc, char **argv)
     int c;
     json_error_t je;
     nl_cloud_scene s;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "cloud")) != -1) {
         switch (c) {
         case 'o': out = optarg; break;
         case 'e': exr = optarg; break;
         case 'h': fputs(help, stdout); return 0;
-        default: cli_bad_option("cloud", c, argv);
         }
     }
     path = cli_one_operand("cloud", "scene file", argc, argv);
@@ -174,8 +172,7 @@ int cli_cmd_cloud(int argc, char **argv)
     scene_points(j, path, &s);
     acf = scene_rest(j, path, &s);
     tmp = cli_out_begin(out);
-    if (exr)
-        etmp = cli_out_begin(exr);
+    etmp = cli_out_begin(exr);
     unsigned char *rgb = cli_malloc(s.width * s.height * 3);
     double *lum = exr ? cli_malloc(s.width * s.height * sizeof *lum) : NULL;
     cli_progress("cloud", 0);

@@ -90,9 +90,7 @@ int cli_cmd_coeffs(int argc, char **argv)
     double tol = 1e-4, s0 = 1;
     nl_model *m;
     nl_subdiv_coeffs *co;
-
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":h", opts, "coeffs")) != -1) {
         switch (c) {
         case 'a': spec = optarg; break;
         case 'd': dim = cli_parse_dim(optarg, 2); break;
@@ -108,7 +106,6 @@ int cli_cmd_coeffs(int argc, char **argv)
             break;
         case 'j': json = 1; break;
         case 'h': fputs(help, stdout); return 0;
-        default: cli_bad_option("coeffs", c, argv);
         }
     }
     cli_no_operands("coeffs", argc, argv);

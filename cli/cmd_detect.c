@@ -32,15 +32,12 @@ int cli_cmd_detect(int argc, char **argv)
     double A, P = NAN;
     nl_creases cr;
     nl_field *x;
-
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":h", opts, "detect")) != -1) {
         switch (c) {
         case 'L': L = (int)cli_parse_count("--levels", optarg, 1); break;
         case 'a': spec = optarg; break;
         case 'j': json = 1; break;
         case 'h': fputs(help, stdout); return 0;
-        default: cli_bad_option("detect", c, argv);
         }
     }
     const char *in = cli_one_operand("detect", "input file", argc, argv);

@@ -32,15 +32,13 @@ static void parse(int argc, char **argv, hist_opts *o)
                                          {0}};
     int c;
     o->bins = 50;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "hist")) != -1) {
         switch (c) {
         case 'b': o->bins = cli_parse_count("--bins", optarg, 1); break;
         case 'a': o->against = optarg; break;
         case 'j': o->json = 1; break;
         case 'o': o->out = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("hist", c, argv);
         }
     }
     o->in = cli_one_operand("hist", "input file", argc, argv);
@@ -75,8 +73,7 @@ static void output(const hist_opts *o, const nl_moments *mo, const double *edges
         const double *cols[] = {edges, edges + 1, counts, pdf};
         cli_check(cli_write_table(o->out ? o->tmp : NULL, NULL, pdf ? 4 : 3, names, bins, cols));
     }
-    if (o->out)
-        cli_out_commit(o->out);
+    cli_out_commit(o->out);
 }
 
 int cli_cmd_hist(int argc, char **argv)
@@ -93,8 +90,7 @@ int cli_cmd_hist(int argc, char **argv)
     if (o.against && (st = nl_dist_parse(o.against, &dist)))
         cli_die_status(st);
     x = cli_read_field(o.in, NULL);
-    if (o.out)
-        o.tmp = cli_out_begin(o.out);
+    o.tmp = cli_out_begin(o.out);
     edges = cli_malloc((o.bins + 1) * sizeof *edges);
     counts = cli_malloc(o.bins * sizeof *counts);
     if ((st = nl_moments_compute(x, &mo)) || (st = nl_hist(x, o.bins, edges, counts)))

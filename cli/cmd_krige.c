@@ -54,8 +54,7 @@ static void parse(int argc, char **argv, opts_t *a)
         {"json", no_argument, 0, 'j'},       {"output", required_argument, 0, 'o'}, {"variance", required_argument, 0, 'v'},
         {"help", no_argument, 0, 'h'},       {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "krige")) != -1) {
         switch (c) {
         case 'd': a->data = optarg; break;
         case 'a': a->spec = optarg; break;
@@ -67,7 +66,6 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'o': a->out = optarg; break;
         case 'v': a->vout = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("krige", c, argv);
         }
     }
     cli_no_operands("krige", argc, argv);
@@ -109,8 +107,7 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
         st = nl_exr_write(vtmp, vf, &meta);
     cli_check(st);
     cli_out_commit(a->out);
-    if (a->vout)
-        cli_out_commit(a->vout);
+    cli_out_commit(a->vout);
 }
 
 static void report(const opts_t *a, const nl_krige_info *info, size_t n, double secs)
@@ -144,8 +141,7 @@ int cli_cmd_krige(int argc, char **argv)
     nl_krige_info info;
     cli_check(nl_model_parse(a.spec, &m));
     tmp = cli_out_begin(a.out);
-    if (a.vout)
-        vtmp = cli_out_begin(a.vout);
+    vtmp = cli_out_begin(a.vout);
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     cli_check(nl_krige_plan_alloc(m, pt->dim, n, pt->pts, pt->val, !isnan(a.mean), isnan(a.mean) ? 0 : a.mean,

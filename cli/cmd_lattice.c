@@ -45,8 +45,7 @@ static void parse(int argc, char **argv, opts_t *a)
         {"mesh", required_argument, 0, 'M'},    {"help", no_argument, 0, 'h'},
         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "lattice")) != -1) {
         switch (c) {
         case 'n': a->N = cli_parse_count("--points", optarg, 2); break;
         case 'd': a->s = cli_parse_dim(optarg, 4); break;
@@ -62,7 +61,6 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'o': a->out = optarg; break;
         case 'M': a->mesh = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("lattice", c, argv);
         }
     }
     cli_no_operands("lattice", argc, argv);
@@ -204,10 +202,8 @@ static void write_outputs(const opts_t *a, const nl_rank1_lattice *L, const doub
                                          nl_rank1_mesh_triangle, &me)))
             cli_die_status(st);
     }
-    if (a->out)
-        cli_out_commit(a->out);
-    if (a->mesh)
-        cli_out_commit(a->mesh);
+    cli_out_commit(a->out);
+    cli_out_commit(a->mesh);
 }
 
 /* The field of --acf/--spectrum on the lattice, and its outputs. */

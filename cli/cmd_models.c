@@ -25,15 +25,13 @@ int cli_cmd_models(int argc, char **argv)
     int c, json = 0;
     size_t n;
     const nl_model_info *cat = nl_model_catalogue(&n);
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":h", opts, "models")) != -1) {
         if (c == 'j')
             json = 1;
         else if (c == 'h') {
             fputs(help, stdout);
             return 0;
-        } else
-            cli_bad_option("models", c, argv);
+        }
     }
     cli_no_operands("models", argc, argv);
     if (json) {

@@ -45,8 +45,7 @@ static void parse(int argc, char **argv, opts_t *a)
         {"output", required_argument, 0, 'o'}, {"psd", required_argument, 0, 'p'}, {"help", no_argument, 0, 'h'},
         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "nonlin")) != -1) {
         switch (c) {
         case 'a': a->spec = optarg; break;
         case 'g': a->gspec = optarg; break;
@@ -62,7 +61,6 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'o': a->out = optarg; break;
         case 'p': a->pout = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("nonlin", c, argv);
         }
     }
     cli_no_operands("nonlin", argc, argv);
@@ -112,8 +110,7 @@ static void print_design(const opts_t *a, const nl_hermite *he, const design_t *
         const double *cols[5] = {r->lag, r->tg, r->rho, r->pred, r->meas};
         cli_check(cli_write_table(tmp, "noiselab nonlin --design: covariances; input_acf is normalised",
                         a->verify ? 5 : 4, names, nl2, cols));
-        if (a->out)
-            cli_out_commit(a->out);
+        cli_out_commit(a->out);
     }
 }
 
@@ -205,19 +202,15 @@ int cli_cmd_nonlin(int argc, char **argv)
     parse(argc, argv, &a);
     if ((st = nl_model_parse(a.spec, &m)) || (st = nl_dist_parse(a.gspec, &d)))
         cli_die_status(st);
-    if (a.out)
-        tmp = cli_out_begin(a.out);
-    if (a.pout)
-        ptmp = cli_out_begin(a.pout);
+    tmp = cli_out_begin(a.out);
+    ptmp = cli_out_begin(a.pout);
     cli_check(nl_hermite_expand(d, a.K, &he));
     if (a.design) {
         design(&a, m, d, &he, tmp);
     } else {
         predict(&a, m, &he, tmp, ptmp);
-        if (a.out)
-            cli_out_commit(a.out);
-        if (a.pout)
-            cli_out_commit(a.pout);
+        cli_out_commit(a.out);
+        cli_out_commit(a.pout);
     }
     nl_model_free(m), nl_dist_free(d);
     return 0;

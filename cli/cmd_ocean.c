@@ -78,8 +78,7 @@ static void parse(int argc, char **argv, opts_t *a)
         {"mesh", required_argument, 0, 'M'},    {"help", no_argument, 0, 'h'},
         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "ocean")) != -1) {
         switch (c) {
         case 'l': a->lat = optarg; break;
         case 'n': a->N = cli_parse_count("--points", optarg, 3); break;
@@ -104,7 +103,6 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'T': a->tile = optarg; break;
         case 'M': a->mesh = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("ocean", c, argv);
         }
     }
 }

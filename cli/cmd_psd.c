@@ -61,8 +61,7 @@ static void parse(int argc, char **argv, psd_opts *o)
     int c;
     char *end;
     o->mean = NAN, o->nseg = 1, o->aniso = NAN;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "psd")) != -1) {
         switch (c) {
         case 'r': break; /* nD output is always radial; accepted for clarity */
         case 'm': o->mean = cli_parse_double("--mean", optarg); break;
@@ -79,7 +78,6 @@ static void parse(int argc, char **argv, psd_opts *o)
         case 'j': o->json = 1; break;
         case 'o': o->out = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("psd", c, argv);
         }
     }
     o->in = cli_one_operand("psd", "input file", argc, argv);
@@ -152,8 +150,7 @@ static void output(const psd_opts *o, int dim, const double *freq, const double 
                           tgt ? 3 : 2, names, nf, cols);
         cli_check(st);
     }
-    if (o->out)
-        cli_out_commit(o->out);
+    cli_out_commit(o->out);
 }
 
 /* The model's profile on the field's grid. */
@@ -181,10 +178,8 @@ int cli_cmd_psd(int argc, char **argv)
         cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o.in, x->dim);
     if (o.preview && !cli_has_ext(o.preview, ".png"))
         cli_die(2, "--preview: expected a .png file, got \"%s\"", o.preview);
-    if (o.out)
-        o.tmp = cli_out_begin(o.out);
-    if (o.preview)
-        o.pvtmp = cli_out_begin(o.preview);
+    o.tmp = cli_out_begin(o.out);
+    o.pvtmp = cli_out_begin(o.preview);
     cli_check(o.welch ? nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg) : nl_psd_periodogram(x, o.mean, &P));
     if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
         write_centred(&o, P);

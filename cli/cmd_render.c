@@ -82,8 +82,7 @@ static void parse(int argc, char **argv, opts_t *a)
                                          {"clouds", required_argument, 0, 'C'}, {"cloud-plane", required_argument, 0, 'Z'},
                                          {"help", no_argument, 0, 'h'},         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "render")) != -1) {
         switch (c) {
         case 'r':
             if (sscanf(optarg, "%lf:%lf", &a->lo, &a->hi) != 2 || !(a->hi > a->lo) || !isfinite(a->lo) ||
@@ -118,7 +117,6 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'm': a->matrix = optarg; break;
         case 'k': a->step = cli_parse_count("--step", optarg, 1); break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("render", c, argv);
         }
     }
 }

@@ -28,14 +28,12 @@ int cli_cmd_shape(int argc, char **argv)
     nl_dist *d;
     nl_field *x;
     nl_meta meta;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "shape")) != -1) {
         switch (c) {
         case 't': to = optarg; break;
         case 'e': empirical = 1; break;
         case 'o': out = optarg; break;
         case 'h': fputs(help, stdout); return 0;
-        default: cli_bad_option("shape", c, argv);
         }
     }
     const char *in = cli_one_operand("shape", "input file", argc, argv);

@@ -255,8 +255,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         {"octaves", required_argument, 0, 'V'},
         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "synth")) != -1) {
         switch (c) {
         case 'a': g->acf = optarg; break;
         case 'S': g->spec = optarg; break;
@@ -281,7 +280,6 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'W': job->wrap = 1; break;
         case 'F': g->from = optarg; break;
         case 'h': fputs(help, stdout); return 1;
-        default: cli_bad_option("synth", c, argv);
         }
     }
     return 0;
@@ -464,8 +462,7 @@ int cli_cmd_synth(int argc, char **argv)
     check_model_given(&job, &g);
     check_outputs_and_model(&job, &g);
     tmp = cli_out_begin(g.out);
-    if (g.preview)
-        ptmp = cli_out_begin(g.preview);
+    ptmp = cli_out_begin(g.preview);
     f = nl_field_alloc(job.dim, job.n, job.h, &st);
     if (!f)
         cli_die_status(st);
@@ -478,8 +475,7 @@ int cli_cmd_synth(int argc, char **argv)
         cli_die_status(st);
     cli_progress_done();
     cli_out_commit(g.out);
-    if (g.preview)
-        cli_out_commit(g.preview);
+    cli_out_commit(g.preview);
     if (g.json)
         print_json(&job, &meta, &res);
     json_decref(res.report);

@@ -67,13 +67,22 @@ void *cli_malloc(size_t size)
 
 void cli_bad_option(const char *cmd, int c, char **argv)
 {
-    extern int optind, optopt;
     const char *arg = argv[optind - 1];
     if (c == ':')
         cli_die(2, "%s: option \"%s\" expects a value", cmd, arg);
     if (optopt && (!arg || strncmp(arg, "--", 2) != 0))
         cli_die(2, "%s: unknown option \"-%c\" (see noiselab %s --help)", cmd, optopt, cmd);
     cli_die(2, "%s: unknown option \"%s\" (see noiselab %s --help)", cmd, arg ? arg : "?", cmd);
+}
+
+int cli_getopt(int argc, char **argv, const char *shortopts, const struct option *opts, const char *cmd)
+{
+    int c;
+    opterr = 0;
+    c = getopt_long(argc, argv, shortopts, opts, NULL);
+    if (c == '?' || c == ':')
+        cli_bad_option(cmd, c, argv);
+    return c;
 }
 
 int cli_parse_size(const char *opt, const char *s, size_t *n, size_t min)
@@ -192,6 +201,8 @@ int cli_has_ext(const char *path, const char *ext)
 const char *cli_out_begin(const char *path)
 {
     int fd;
+    if (!path)
+        return NULL;
     if (nouts == 0)
         atexit(remove_pending);
     if (nouts == MAX_OUT)
@@ -213,7 +224,7 @@ const char *cli_out_begin(const char *path)
 
 void cli_out_commit(const char *path)
 {
-    for (int i = 0; i < nouts; i++)
+    for (int i = 0; path && i < nouts; i++)
         if (outs[i].tmp[0] && strcmp(outs[i].final, path) == 0) {
             if (rename(outs[i].tmp, outs[i].final) != 0)
                 cli_die(1, "output: cannot rename to \"%s\": %s", path, strerror(errno));
