@@ -75,6 +75,7 @@ extern "C" {
 #include "noiselab/render/terrain.h"
 #include "noiselab/render/shade.h"
 #include "noiselab/render/cloud.h"
+#include "noiselab/render/cloud_scene.h"
 
 #ifdef __cplusplus
 }
