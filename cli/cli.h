@@ -110,6 +110,9 @@ int cli_write_table(const char *path, const char *comment, int ncols, const char
  * exits on error. */
 void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta);
 
+/* nl_field_alloc, exiting on error. */
+nl_field *cli_field_alloc(int dim, const size_t *n, const double *h);
+
 /* Read a field (EXR, PNG or TSV), exiting on error. */
 nl_field *cli_read_field(const char *path, nl_meta *meta);
 

@@ -92,9 +92,8 @@ static void check_field(acf_opts *o, const nl_field *x)
 static void write_centred(const acf_opts *o, const nl_field *full)
 {
     nl_field *C;
-    nl_meta meta;
+    nl_meta meta = {0};
     cli_check(nl_acf_centred_alloc(full, &C));
-    memset(&meta, 0, sizeof meta);
     snprintf(meta.method, sizeof meta.method, "acf %s, lag 0 at the centre", o->unbiased ? "unbiased" : "biased");
     cli_check(nl_exr_write(o->tmp, C, &meta));
     cli_out_commit(o->out);

@@ -30,13 +30,9 @@ static void progress(double f) { cli_progress("cloud", f); }
 static void write_lum(const char *etmp, const nl_cloud_scene *s, const double *lum, const char *path)
 {
     size_t n[2] = {s->width, s->height};
-    int st;
-    nl_field *f = nl_field_alloc(2, n, NULL, &st);
-    nl_meta meta;
-    if (!f)
-        cli_die_status(st);
+    nl_field *f = cli_field_alloc(2, n, NULL);
+    nl_meta meta = {0};
     memcpy(f->data, lum, s->width * s->height * sizeof *lum);
-    memset(&meta, 0, sizeof meta);
     snprintf(meta.model, sizeof meta.model, "%s", nl_model_spec(s->shape));
     snprintf(meta.method, sizeof meta.method, "cloud:%s", path);
     cli_check(nl_exr_write(etmp, f, &meta));

@@ -85,9 +85,8 @@ static void parse(int argc, char **argv, opts_t *a)
 static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf, const nl_krige_info *info,
                           size_t n, const char *tmp, const char *vtmp)
 {
-    nl_meta meta;
+    nl_meta meta = {0};
     int st;
-    memset(&meta, 0, sizeof meta);
     snprintf(meta.model, sizeof meta.model, "%s", a->spec);
     snprintf(meta.method, sizeof meta.method, "krige:%s,points=%zu", isnan(a->mean) ? "ordinary" : "simple", n);
     if (info->pseudo_inverse)
@@ -150,9 +149,8 @@ int cli_cmd_krige(int argc, char **argv)
     double h[3];
     for (int d = 0; d < 3; d++)
         h[d] = (a.hi[d] - a.lo[d]) / (double)a.g[d];
-    nl_field *f = nl_field_alloc(a.gdim, a.g, h, &st), *vf = a.vout ? nl_field_alloc(a.gdim, a.g, h, &st) : NULL;
-    if (!f || (a.vout && !vf) || (st = nl_krige_eval_grid(p, a.lo, f, vf)))
-        cli_die_status(st);
+    nl_field *f = cli_field_alloc(a.gdim, a.g, h), *vf = a.vout ? cli_field_alloc(a.gdim, a.g, h) : NULL;
+    cli_check(nl_krige_eval_grid(p, a.lo, f, vf));
     clock_gettime(CLOCK_MONOTONIC, &t1);
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     write_outputs(&a, f, vf, &info, n, tmp, vtmp);

@@ -148,17 +148,14 @@ static void predict(const opts_t *a, const nl_model *m, const nl_hermite *he, co
 {
     size_t n = a->n, nl = n / 2 + 1;
     double h = a->h;
-    int st;
-    nl_field *R = nl_field_alloc(1, &n, &h, &st), *Ry = R ? nl_field_alloc(1, &n, &h, &st) : NULL;
-    nl_field *S = Ry ? nl_field_alloc(1, &n, &h, &st) : NULL, *Sy = S ? nl_field_alloc(1, &n, &h, &st) : NULL;
-    if (!Sy)
-        cli_die_status(st);
+    nl_field *R = cli_field_alloc(1, &n, &h), *Ry = cli_field_alloc(1, &n, &h);
+    nl_field *S = cli_field_alloc(1, &n, &h), *Sy = cli_field_alloc(1, &n, &h);
     cli_check(nl_wk_sample_acf(m, R));
     if (!(R->data[0] > 0))
         cli_die(2, "--acf: %s has R(0) = %g; expected a positive variance", a->spec, R->data[0]);
     nl_nonlin_output_acf(he, R->data, n, R->data[0], Ry->data);
-    if ((st = nl_wk_acf_to_spectrum(R, S)) || (st = nl_wk_acf_to_spectrum(Ry, Sy)))
-        cli_die_status(st);
+    cli_check(nl_wk_acf_to_spectrum(R, S));
+    cli_check(nl_wk_acf_to_spectrum(Ry, Sy));
     double *lag = cli_malloc(nl * sizeof *lag), *freq = cli_malloc(nl * sizeof *freq);
     for (size_t i = 0; i < nl; i++)
         lag[i] = (double)i * h, freq[i] = (double)i / ((double)n * h);

@@ -42,10 +42,7 @@ static char *frame_name(const char *path, int f, int frames)
 static void write_png(const char *path, const double *img, size_t W, int tile)
 {
     size_t T = tile ? 2 * W : W, n[2] = {T, T};
-    int st;
-    nl_field *f = nl_field_alloc(2, n, NULL, &st);
-    if (!f)
-        cli_die_status(st);
+    nl_field *f = cli_field_alloc(2, n, NULL);
     for (size_t y = 0; y < T; y++)
         for (size_t x = 0; x < T; x++)
             f->data[y * T + x] = img[(y % W) * W + x % W];
@@ -185,19 +182,15 @@ static void grid_frame(const opts_t *a, int fr, double t, double *img, double *g
 {
     size_t M = a->M;
     double *h = cli_malloc(M * M * sizeof *h), *hx = cli_malloc(M * M * sizeof *hx), *hy = cli_malloc(M * M * sizeof *hy);
-    int st;
     cli_check(nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy));
     if (a->out) {
         size_t n[2] = {M, M};
         double sp[2] = {a->o.patch / (double)M, a->o.patch / (double)M};
-        nl_field *f = nl_field_alloc(2, n, sp, &st);
-        nl_meta meta;
+        nl_meta meta = {0};
         char *name = frame_name(a->out, fr, a->frames);
         const char *tmp = cli_out_begin(name);
-        if (!f)
-            cli_die_status(st);
+        nl_field *f = cli_field_alloc(2, n, sp);
         memcpy(f->data, h, M * M * sizeof *h);
-        memset(&meta, 0, sizeof meta);
         snprintf(meta.method, sizeof meta.method, "ocean:grid=%zu,wind=%g,%g,t=%g,patch=%g", M, a->v, a->ang, t,
                  a->o.patch);
         snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);

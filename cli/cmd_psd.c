@@ -89,8 +89,7 @@ static void write_centred(psd_opts *o, const nl_field *P)
     nl_field *C;
     cli_check(nl_fftshift_alloc(P, &C));
     if (o->out && cli_has_ext(o->out, ".exr")) {
-        nl_meta meta;
-        memset(&meta, 0, sizeof meta);
+        nl_meta meta = {0};
         snprintf(meta.method, sizeof meta.method, "psd%s, zero frequency at (%zu, %zu)", o->welch ? " welch" : "",
                  P->n[0] / 2, P->n[1] / 2);
         cli_check(nl_exr_write(o->tmp, C, &meta));

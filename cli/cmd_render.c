@@ -190,9 +190,8 @@ static void write_picture(const opts_t *a, const nl_field *x)
     double lo = a->lo, hi = a->hi;
     int st;
     if (!isnan(a->az)) {
-        nl_field *s = nl_field_alloc(2, x->n, x->h, &st);
-        if (!s || (st = nl_render_relief(x, a->az, a->el, a->zs, s)))
-            cli_die_status(st);
+        nl_field *s = cli_field_alloc(2, x->n, x->h);
+        cli_check(nl_render_relief(x, a->az, a->el, a->zs, s));
         st = nl_png_write_field(tmp, s, 0, 1);
         nl_field_free(s);
     } else {

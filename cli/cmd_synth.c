@@ -463,9 +463,7 @@ int cli_cmd_synth(int argc, char **argv)
     check_outputs_and_model(&job, &g);
     tmp = cli_out_begin(g.out);
     ptmp = cli_out_begin(g.preview);
-    f = nl_field_alloc(job.dim, job.n, job.h, &st);
-    if (!f)
-        cli_die_status(st);
+    f = cli_field_alloc(job.dim, job.n, job.h);
     cli_phase("synth", job.method);
     run(&job, f, &res);
     fill_meta(&job, f, &res, &meta);

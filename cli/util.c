@@ -265,6 +265,15 @@ void cli_write_field(const char *path, const char *tmp, const nl_field *f, const
     free(t);
 }
 
+nl_field *cli_field_alloc(int dim, const size_t *n, const double *h)
+{
+    int st;
+    nl_field *f = nl_field_alloc(dim, n, h, &st);
+    if (!f)
+        cli_die_status(st);
+    return f;
+}
+
 nl_field *cli_read_field(const char *path, nl_meta *meta)
 {
     nl_field *f;
