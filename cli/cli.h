@@ -95,6 +95,12 @@ void cli_progress_done(void);
 const char *cli_out_begin(const char *path);
 void cli_out_commit(const char *path);
 
+/* Subdivision flags (synth/subdiv.h) as "name,name,..." ("" for none). */
+void cli_subdiv_flags(unsigned flags, char *buf, size_t len);
+
+/* The spec for --spectrum: a bare expression means spectrum:EXPR (in buf). */
+const char *cli_spectrum_spec(const char *s, char *buf, size_t len);
+
 /* Print a JSON object on stdout (compact keys in insertion order). */
 void cli_json_print(json_t *obj);
 

@@ -35,18 +35,6 @@ static json_t *flags_json(unsigned f)
     return a;
 }
 
-static void print_flags(unsigned f)
-{
-    int first = 1;
-    for (unsigned b = 0; b < 6; b++)
-        if (f & (1u << b)) {
-            printf("%s%s", first ? "" : ",", nl_subdiv_flag_name(b));
-            first = 0;
-        }
-    if (first)
-        printf("-");
-}
-
 static void print_text(const nl_subdiv_coeffs *c, const char *spec)
 {
     printf("# %s, %dD, spacing0 %g, %d levels\n", spec, c->dim, c->spacing0, c->levels);
@@ -54,10 +42,10 @@ static void print_text(const nl_subdiv_coeffs *c, const char *spec)
         const nl_subdiv_level *l = &c->level[k];
         for (int j = 0; j < l->nclass; j++) {
             const nl_subdiv_class *cl = &l->cls[j];
-            printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %-10.3g flags ", l->level,
-                   l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cl->condition);
-            print_flags(cl->flags);
-            printf("\n");
+            char fl[128];
+            cli_subdiv_flags(cl->flags, fl, sizeof fl);
+            printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %-10.3g flags %s\n", l->level,
+                   l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cl->condition, fl[0] ? fl : "-");
             if (c->dim == 1) {
                 /* the right half a_1..a_N, as in Lewis's Table 1 (a_k = a_{1-k}) */
                 printf("    a_1..a_N:");

@@ -213,8 +213,8 @@ static void field(opts_t *a, const nl_rank1_lattice *L)
     double *f, *grad, imag;
     char sbuf[1100];
     int st;
-    if (a->spectral && strncmp(a->spec, "power", 5) && strncmp(a->spec, "spectrum:", 9))
-        snprintf(sbuf, sizeof sbuf, "spectrum:%s", a->spec), a->spec = sbuf;
+    if (a->spectral)
+        a->spec = cli_spectrum_spec(a->spec, sbuf, sizeof sbuf);
     if ((st = nl_model_parse(a->spec, &m)) || (st = nl_rank1_model_check(m, a->s)))
         cli_die_status(st);
     f = cli_malloc(a->N * sizeof *f), grad = cli_malloc(a->N * a->s * sizeof *grad);

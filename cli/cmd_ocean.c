@@ -39,17 +39,20 @@ static char *frame_name(const char *path, int f, int frames)
     return s;
 }
 
-static void write_png(const char *path, const double *img, size_t W, int tile)
+/* Frame fr of picture `path`: the W x W image, or 2 x 2 copies of it. */
+static void write_png(const char *path, int fr, int frames, const double *img, size_t W, int tile)
 {
     size_t T = tile ? 2 * W : W, n[2] = {T, T};
+    char *name = frame_name(path, fr, frames);
     nl_field *f = cli_field_alloc(2, n, NULL);
     for (size_t y = 0; y < T; y++)
         for (size_t x = 0; x < T; x++)
             f->data[y * T + x] = img[(y % W) * W + x % W];
-    const char *tmp = cli_out_begin(path);
+    const char *tmp = cli_out_begin(name);
     cli_check(nl_png_write_field(tmp, f, 0, 1));
-    cli_out_commit(path);
+    cli_out_commit(name);
     nl_field_free(f);
+    free(name);
 }
 
 /* The command's options. */
@@ -210,16 +213,10 @@ static void pictures(const opts_t *a, int fr, const double *gx, const double *gy
     size_t W = a->W;
     double *sh = cli_malloc(W * W * sizeof *sh);
     nl_render_shade_gradients(W * W, gx, gy, light, 0.1, sh);
-    if (a->image) {
-        char *name = frame_name(a->image, fr, a->frames);
-        write_png(name, sh, W, 0);
-        free(name);
-    }
-    if (a->tile) {
-        char *name = frame_name(a->tile, fr, a->frames);
-        write_png(name, sh, W, 1);
-        free(name);
-    }
+    if (a->image)
+        write_png(a->image, fr, a->frames, sh, W, 0);
+    if (a->tile)
+        write_png(a->tile, fr, a->frames, sh, W, 1);
     free(sh);
 }
 

@@ -65,15 +65,6 @@ static const char help[] =
     "                   seed, size, spacing): bit for bit for every method\n"
     "  -o               EXR (any dimension) or TSV (1D: columns t, value)\n";
 
-/* The spec for --spectrum: a bare expression means spectrum:EXPR. */
-static const char *spectrum_spec(const char *s, char *buf, size_t len)
-{
-    if (strncmp(s, "power", 5) == 0 || strncmp(s, "spectrum:", 9) == 0)
-        return s;
-    snprintf(buf, len, "spectrum:%s", s);
-    return buf;
-}
-
 static void parse_origin(const char *s, long *o)
 {
     char *end;
@@ -399,7 +390,7 @@ static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
     if (g->preview && !cli_has_ext(g->preview, ".png"))
         cli_die(2, "--preview: expected a file name ending in .png, got \"%s\"", g->preview);
     if (g->acf || g->spec) {
-        cli_check(nl_model_parse(g->acf ? g->acf : spectrum_spec(g->spec, sbuf, sizeof sbuf), &job->m));
+        cli_check(nl_model_parse(g->acf ? g->acf : cli_spectrum_spec(g->spec, sbuf, sizeof sbuf), &job->m));
         if (g->acf && nl_model_is_spectral(job->m))
             cli_die(2, "--acf: \"%s\" is a spectrum model; pass it with --spectrum", g->acf);
         if (g->spec && !nl_model_is_spectral(job->m))

@@ -31,15 +31,6 @@ void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *
                           info.clamp_error);
 }
 
-static void flags_string(unsigned f, char *buf, size_t len)
-{
-    size_t k = 0;
-    buf[0] = 0;
-    for (unsigned b = 0; b < 6; b++)
-        if (f & (1u << b))
-            k += (size_t)snprintf(buf + k, len - k, "%s%s", k ? "," : "", nl_subdiv_flag_name(b));
-}
-
 static json_t *levels_report(const nl_subdiv_coeffs *c)
 {
     json_t *a = json_array();
@@ -50,7 +41,7 @@ static json_t *levels_report(const nl_subdiv_coeffs *c)
         char buf[128];
         for (int j = 0; j < l->nclass; j++)
             fl |= l->cls[j].flags, v = fmax(v, l->cls[j].variance);
-        flags_string(fl, buf, sizeof buf);
+        cli_subdiv_flags(fl, buf, sizeof buf);
         json_array_append_new(a, json_pack("{s:i,s:f,s:i,s:f,s:s}", "level", k, "spacing", l->spacing, "N", l->N,
                                            "max_variance", v, "flags", buf));
     }
@@ -114,7 +105,7 @@ static void subdiv_describe(const cli_synth_job *job, const nl_subdiv_plan *p, c
                               job->origin[1]);
     if (job->seed_image)
         snprintf(r->method + k, sizeof r->method - k, "|seed-image=%s", job->seed_image);
-    flags_string(c->flags, r->flags, sizeof r->flags);
+    cli_subdiv_flags(c->flags, r->flags, sizeof r->flags);
     r->sd = sqrt(c->r0);
     r->report = json_pack("{s:f,s:f,s:o}", "spacing0", info.spacing0, "variance", c->r0, "levels",
                           levels_report(c));

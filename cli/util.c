@@ -1,6 +1,7 @@
 /* Errors, option parsing and atomic outputs for the subcommands. */
 #include "cli.h"
 #include "../core/nl_error.h"
+#include "../synth/subdiv.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -230,6 +231,23 @@ void cli_out_commit(const char *path)
                 cli_die(1, "output: cannot rename to \"%s\": %s", path, strerror(errno));
             outs[i].tmp[0] = 0;
         }
+}
+
+void cli_subdiv_flags(unsigned flags, char *buf, size_t len)
+{
+    size_t k = 0;
+    buf[0] = 0;
+    for (unsigned b = 0; b < 6; b++)
+        if (flags & (1u << b))
+            k += (size_t)snprintf(buf + k, len - k, "%s%s", k ? "," : "", nl_subdiv_flag_name(b));
+}
+
+const char *cli_spectrum_spec(const char *s, char *buf, size_t len)
+{
+    if (strncmp(s, "power", 5) == 0 || strncmp(s, "spectrum:", 9) == 0)
+        return s;
+    snprintf(buf, len, "spectrum:%s", s);
+    return buf;
 }
 
 void cli_json_print(json_t *obj)
