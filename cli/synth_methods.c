@@ -1,6 +1,7 @@
 /* The methods of `noiselab synth`: plan, synthesise, report. */
 #include "synth.h"
 #include "../core/autocorr.h"
+#include "../core/field_stats.h"
 #include "../core/nl_error.h"
 #include "../synth/cholesky.h"
 #include "../synth/circulant.h"
@@ -189,11 +190,8 @@ void cli_synth_faulting_run(const cli_synth_job *job, nl_field *f, cli_synth_res
         cli_die(2, "synth faulting: expected a 1D or 2D --size, got %dD", job->dim);
     cli_check(nl_synth_faulting(job->seed, job->density, f, &K));
     snprintf(r->method, sizeof r->method, "faulting:density=%.17g", job->density);
-    double mean = 0, var = 0;
-    for (size_t i = 0; i < f->count; i++)
-        mean += f->data[i] / (double)f->count;
-    for (size_t i = 0; i < f->count; i++)
-        var += (f->data[i] - mean) * (f->data[i] - mean) / (double)f->count;
+    double mean, var;
+    nl_field_mean_var(f, &mean, &var);
     r->sd = sqrt(var) > 0 ? sqrt(var) : 1;
     /* the preview is centred on 0: shift the range by the mean */
     r->offset = mean;
@@ -260,8 +258,6 @@ void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_resu
         json_array_append_new(oct, json_pack("{s:f,s:f,s:f,s:f}", "cell", p.cell[o], "weight", p.weight[o], "peak",
                                              p.peak[o], "leakage", p.leakage[o]));
     snprintf(r->method, sizeof r->method, "lattice:cell=%.17g,octaves=%d", c0, O);
-    for (size_t i = 0; i < f->count; i++)
-        r->sd += f->data[i] * f->data[i] / (double)f->count;
-    r->sd = sqrt(r->sd) > 0 ? sqrt(r->sd) : 1;
+    r->sd = nl_field_rms(f) > 0 ? nl_field_rms(f) : 1;
     r->report = json_pack("{s:o}", "octaves", oct);
 }
