@@ -14,8 +14,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
-#include <unistd.h>
 
 static const char help[] =
     "usage: noiselab card FIELD -o CARD.png [--acf SPEC | --spectrum SPEC]\n\n"

@@ -6,7 +6,6 @@
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab check --acf SPEC --dim D [--json]\n\n"

@@ -3,12 +3,9 @@
 #include "../render/cloud_scene.h"
 
 #include <getopt.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
 
 static const char help[] =
     "usage: noiselab cloud SCENE.json -o CLOUD.png [--exr CLOUD.exr]\n\n"

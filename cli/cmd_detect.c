@@ -7,8 +7,6 @@
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab detect IN --levels L [--acf SPEC | --spectrum SPEC] [--json]\n\n"

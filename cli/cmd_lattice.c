@@ -6,7 +6,6 @@
 #include "../synth/rank1_model.h"
 
 #include <getopt.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -8,7 +8,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab nonlin --acf SPEC --g DIST [--size N] [--spacing H] [--terms K]\n"

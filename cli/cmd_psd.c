@@ -11,7 +11,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab psd IN [--radial] [--mean M] [--welch S] [--target SPEC] [--slope F1:F2]\n"

@@ -13,7 +13,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
