@@ -65,57 +65,34 @@ static const char help[] =
     "                   seed, size, spacing): bit for bit for every method\n"
     "  -o               EXR (any dimension) or TSV (1D: columns t, value)\n";
 
+/* What the command line gave, beyond the job itself. */
+typedef struct {
+    const char *acf, *spec, *size, *spacing, *out, *preview, *origin, *from; /* option values or NULL */
+    int json;                                        /* --json */
+    int given_L, given_N, given_tol, given_vs, given_density; /* explicitly given */
+} cli_synth_args;
+
 static void parse_origin(const char *s, long *o)
 {
-    char *end;
+    char *end, *p;
+    int ok;
     o[0] = strtol(s, &end, 10);
-    if (end == s)
-        cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
-    if (*end == ',') {
-        char *p = end + 1;
+    ok = end != s;
+    if (ok && *end == ',') {
+        p = end + 1;
         o[1] = strtol(p, &end, 10);
-        if (end == p)
-            cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
+        ok = end != p;
     }
-    if (*end)
+    if (!ok || *end)
         cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
 }
 
-/* Regenerate from a field's provenance: the method string "name:k=v,...|k=v|..."
- * written by the methods, the model, seed, size and spacing. */
-static void apply_from(const char *path, cli_synth_job *job, const char **acf, const char **spec, const char **size,
-                       const char **spacing, char *mbuf, char *sizebuf, char *spbuf, char *methbuf)
+/* The method's recorded options: "k=v,...|k=v|..." (what follows "name:"
+ * in the method string written by the methods). */
+static void apply_keys(char *rest, cli_synth_job *job)
 {
-    nl_meta meta;
-    nl_field *f = cli_read_field(path, &meta);
-    char *rest, *part, *save = NULL;
-    nl_field_free(f);
-    if (!meta.method[0] || !meta.seed[0] || !meta.size[0])
-        cli_die(2, "--from: %s does not record how it was made (noiselab.method, seed, size)", path);
-    snprintf(methbuf, 256, "%s", meta.method);
-    rest = strchr(methbuf, ':');
-    if (rest)
-        *rest++ = 0;
-    if (strchr(methbuf, ' '))
-        cli_die(2, "--from: %s was post-processed (\"%s\"); only synthesised fields regenerate", path, meta.method);
-    job->method = methbuf;
-    job->seed = cli_parse_u64("noiselab.seed", meta.seed);
-    snprintf(sizebuf, 64, "%s", meta.size), *size = sizebuf;
-    snprintf(spbuf, 128, "%s", meta.spacing), *spacing = spbuf[0] ? spbuf : NULL;
-    if (meta.model[0]) {
-        nl_model *m;
-        int st = nl_model_parse(meta.model, &m);
-        cli_check(st);
-        snprintf(mbuf, 1100, "%s", meta.model);
-        if (nl_model_is_spectral(m))
-            *spec = mbuf;
-        else
-            *acf = mbuf;
-        nl_model_free(m);
-    }
-    if (strstr(meta.flags, "clamped") || strstr(meta.flags, "not-positive-definite"))
-        job->clamp = 1;
-    for (part = rest ? strtok_r(rest, "|", &save) : NULL; part; part = strtok_r(NULL, "|", &save)) {
+    char *part, *save = NULL;
+    for (part = strtok_r(rest, "|", &save); part; part = strtok_r(NULL, "|", &save)) {
         if (part != rest) {  /* an expression-valued key: the rest of the part */
             char *eq = strchr(part, '=');
             if (!eq)
@@ -150,6 +127,39 @@ static void apply_from(const char *path, cli_synth_job *job, const char **acf, c
     }
 }
 
+/* Regenerate from a field's provenance: the method string "name:k=v,...|k=v|..."
+ * written by the methods, the model, seed, size and spacing. */
+static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
+{
+    static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
+    nl_meta meta;
+    char *rest;
+    nl_field_free(cli_read_field(path, &meta));
+    if (!meta.method[0] || !meta.seed[0] || !meta.size[0])
+        cli_die(2, "--from: %s does not record how it was made (noiselab.method, seed, size)", path);
+    snprintf(methbuf, sizeof methbuf, "%s", meta.method);
+    rest = strchr(methbuf, ':');
+    if (rest)
+        *rest++ = 0;
+    if (strchr(methbuf, ' '))
+        cli_die(2, "--from: %s was post-processed (\"%s\"); only synthesised fields regenerate", path, meta.method);
+    job->method = methbuf;
+    job->seed = cli_parse_u64("noiselab.seed", meta.seed);
+    snprintf(sizebuf, sizeof sizebuf, "%s", meta.size), g->size = sizebuf;
+    snprintf(spbuf, sizeof spbuf, "%s", meta.spacing), g->spacing = spbuf[0] ? spbuf : NULL;
+    if (meta.model[0]) {
+        nl_model *m;
+        cli_check(nl_model_parse(meta.model, &m));
+        snprintf(mbuf, sizeof mbuf, "%s", meta.model);
+        *(nl_model_is_spectral(m) ? &g->spec : &g->acf) = mbuf;
+        nl_model_free(m);
+    }
+    if (strstr(meta.flags, "clamped") || strstr(meta.flags, "not-positive-definite"))
+        job->clamp = 1;
+    if (rest)
+        apply_keys(rest, job);
+}
+
 /* Options that only some methods take. */
 static void only_for(const char *opt, int given, const char *method, const char *allowed)
 {
@@ -160,13 +170,6 @@ static void only_for(const char *opt, int given, const char *method, const char 
     if (given && !strstr(list, word))
         cli_die(2, "synth %s: %s applies to %s only", method, opt, allowed);
 }
-
-/* What the command line gave, beyond the job itself. */
-typedef struct {
-    const char *acf, *spec, *size, *spacing, *out, *preview, *origin, *from; /* option values or NULL */
-    int json;                                        /* --json */
-    int given_L, given_N, given_tol, given_vs, given_density; /* explicitly given */
-} cli_synth_args;
 
 static void job_defaults(cli_synth_job *job)
 {
@@ -279,7 +282,6 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
 /* The method and its options from --from FILE or from the command line. */
 static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
 {
-    static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
     if (g->from) {
         if (optind < argc || g->acf || g->spec || g->size || g->spacing || g->given_L || g->given_N ||
             g->given_tol || g->given_vs || g->given_density || g->origin || job->nonperiodic || job->kernel ||
@@ -287,7 +289,7 @@ static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_a
             job->seed_image || job->random_nb || !isnan(job->H))
             cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
                     "and --json");
-        apply_from(g->from, job, &g->acf, &g->spec, &g->size, &g->spacing, mbuf, sizebuf, spbuf, methbuf);
+        apply_from(g->from, job, g);
         g->given_L = job->levels != 0;
         g->given_density = strcmp(job->method, "faulting") == 0 || strcmp(job->method, "sparse") == 0;
         g->given_N = strcmp(job->method, "subdiv") == 0;
