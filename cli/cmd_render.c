@@ -120,10 +120,9 @@ static void parse(int argc, char **argv, opts_t *a)
     }
 }
 
-static void check(int argc, const opts_t *a)
+static void check(int argc, char **argv, const opts_t *a)
 {
-    if (optind + 1 != argc)
-        cli_die(2, "render: expected one input file, got %d", argc - optind);
+    cli_one_operand("render", "input file", argc, argv);
     if (!a->out && !a->matrix)
         cli_die(2, "render: expected -o OUT.png or --matrix OUT.txt");
     if (a->out && !cli_has_ext(a->out, ".png"))
@@ -208,7 +207,7 @@ int cli_cmd_render(int argc, char **argv)
                 .sun = {NAN, NAN}, .haze = NAN, .water = NAN};
     nl_field *x;
     parse(argc, argv, &a);
-    check(argc, &a);
+    check(argc, argv, &a);
     x = cli_read_field(argv[optind], NULL);
     if (x->dim != 2)
         cli_die(2, "render: expected a 2D field, %s is %dD", argv[optind], x->dim);
