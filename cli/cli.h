@@ -44,17 +44,36 @@ int cli_main(int argc, char **argv);
 /* Exit with the library's last message for status `st` (exit 2 or 1). */
 void cli_die_status(int st) __attribute__((noreturn));
 
+/* Exit through cli_die_status unless st is NL_OK (0). */
+void cli_check(int st);
+
+/* malloc(size), or exit 1 with "out of memory". */
+void *cli_malloc(size_t size);
+
 /* Report an option error from getopt for subcommand `cmd` and exit 2. */
 void cli_bad_option(const char *cmd, int c, char **argv);
+
+/* getopt_long with getopt's own messages off; an unknown option or a
+ * missing value goes to cli_bad_option (exit 2). */
+struct option;
+int cli_getopt(int argc, char **argv, const char *shortopts, const struct option *opts, const char *cmd);
 
 /* Option values; each exits 2 with a message naming the option on error. */
 int cli_parse_size(const char *opt, const char *s, size_t *n, size_t min);   /* returns dim */
 uint64_t cli_parse_u64(const char *opt, const char *s);
 double cli_parse_double(const char *opt, const char *s);
 size_t cli_parse_count(const char *opt, const char *s, size_t min);
+/* A finite number > 0; otherwise "OPT: expected a positive WHAT, got ..." */
+double cli_parse_positive(const char *opt, const char *s, const char *what);
 /* --dim D with 1 <= D <= max (dies with exit 2 otherwise) */
 int cli_parse_dim(const char *s, int max);
 int cli_parse_spacing(const char *opt, const char *s, int dim, double *h);
+
+/* Operands after the options: cli_no_operands exits 2 on any ("CMD:
+ * unexpected argument ..."); cli_one_operand returns the one operand or
+ * exits 2 ("CMD: expected one WHAT, got N"). */
+void cli_no_operands(const char *cmd, int argc, char **argv);
+const char *cli_one_operand(const char *cmd, const char *what, int argc, char **argv);
 
 /* Does path end with ext (case-insensitive, ext with its dot)? */
 int cli_has_ext(const char *path, const char *ext);
@@ -71,9 +90,16 @@ void cli_progress_done(void);
 /* Outputs appear whole or not at all: cli_out_begin checks that a temporary
  * file beside `path` can be created (exit 2 naming the path if not) and
  * returns its name; cli_out_commit renames it to `path`.  Temporary files
- * still pending at exit are removed. */
+ * still pending at exit are removed.  An output not asked for (path NULL)
+ * has no temporary (NULL) and nothing to commit. */
 const char *cli_out_begin(const char *path);
 void cli_out_commit(const char *path);
+
+/* Subdivision flags (synth/subdiv.h) as "name,name,..." ("" for none). */
+void cli_subdiv_flags(unsigned flags, char *buf, size_t len);
+
+/* The spec for --spectrum: a bare expression means spectrum:EXPR (in buf). */
+const char *cli_spectrum_spec(const char *s, char *buf, size_t len);
 
 /* Print a JSON object on stdout (compact keys in insertion order). */
 void cli_json_print(json_t *obj);
@@ -84,6 +110,14 @@ json_t *cli_json_array(const double *v, size_t n);
 /* A TSV table to `path`, or to stdout when path is NULL. */
 int cli_write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
                 const double *const *cols);
+
+/* Write f to tmp (the temporary of path, from cli_out_begin) as EXR with
+ * meta when path ends in .exr, else as a 1D TSV with columns t, value;
+ * exits on error. */
+void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta);
+
+/* nl_field_alloc, exiting on error. */
+nl_field *cli_field_alloc(int dim, const size_t *n, const double *h);
 
 /* Read a field (EXR, PNG or TSV), exiting on error. */
 nl_field *cli_read_field(const char *path, nl_meta *meta);

@@ -47,8 +47,7 @@ static void parse(int argc, char **argv, acf_opts *o)
         {"bands", no_argument, 0, 'B'},          {0}};
     int c;
     o->maxlag = o->mean = NAN;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "acf")) != -1) {
         switch (c) {
         case 'L':
             o->maxlag = cli_parse_double("--max-lag", optarg);
@@ -69,12 +68,9 @@ static void parse(int argc, char **argv, acf_opts *o)
         case 'B': o->bands = 1; break;
         case 'o': o->out = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("acf", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "acf: expected one input file, got %d", argc - optind);
-    o->in = argv[optind];
+    o->in = cli_one_operand("acf", "input file", argc, argv);
 }
 
 /* Checks that need the field; sets the number of lags. */
@@ -96,14 +92,10 @@ static void check_field(acf_opts *o, const nl_field *x)
 static void write_centred(const acf_opts *o, const nl_field *full)
 {
     nl_field *C;
-    nl_meta meta;
-    int st;
-    if ((st = nl_acf_centred_alloc(full, &C)))
-        cli_die_status(st);
-    memset(&meta, 0, sizeof meta);
+    nl_meta meta = {0};
+    cli_check(nl_acf_centred_alloc(full, &C));
     snprintf(meta.method, sizeof meta.method, "acf %s, lag 0 at the centre", o->unbiased ? "unbiased" : "biased");
-    if ((st = nl_exr_write(o->tmp, C, &meta)))
-        cli_die_status(st);
+    cli_check(nl_exr_write(o->tmp, C, &meta));
     cli_out_commit(o->out);
     nl_field_free(C);
 }
@@ -112,10 +104,8 @@ static void write_centred(const acf_opts *o, const nl_field *full)
 static void estimate(const acf_opts *o, const nl_field *x, const nl_field *full, double *lag, double *val,
                      double *blo, double *bhi)
 {
-    size_t nl = o->nl, *cnt = malloc(nl * sizeof *cnt);
+    size_t nl = o->nl, *cnt = cli_malloc(nl * sizeof *cnt);
     int st;
-    if (!cnt)
-        cli_die(1, "out of memory");
     if (o->direct) {
         st = nl_acf_direct(x, o->mean, o->unbiased, o->axis, nl - 1, val);
         for (size_t i = 0; i < nl; i++)
@@ -125,13 +115,11 @@ static void estimate(const acf_opts *o, const nl_field *x, const nl_field *full,
     } else {
         st = nl_acf_axis(full, o->axis, nl - 1, lag, val);
     }
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     if (o->bands) {
         if ((x->n[0] < 4 * (nl - 1) + 1 ? x->n[0] : 4 * (nl - 1) + 1) < 2 * (nl - 1) + 1)
             cli_die(2, "--bands: expected a field of at least %zu samples for --max-lag %zu", 2 * (nl - 1) + 1, nl - 1);
-        if ((st = nl_acf_bartlett_band(full, x->count, nl - 1, val, blo, bhi)))
-            cli_die_status(st);
+        cli_check(nl_acf_bartlett_band(full, x->count, nl - 1, val, blo, bhi));
     }
     free(cnt);
 }
@@ -150,7 +138,6 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
                    const double *bhi)
 {
     size_t nl = o->nl;
-    int st;
     if (o->json) {
         json_t *j = json_pack("{s:o,s:o}", "lag", cli_json_array(lag, nl), "acf", cli_json_array(val, nl));
         if (tgt)
@@ -174,11 +161,9 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
             names[ncol] = "lo", cols[ncol++] = blo, names[ncol] = "hi", cols[ncol++] = bhi;
         snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in spacing units",
                  o->unbiased ? "unbiased" : "biased", o->radial ? "radial average" : "along one axis");
-        if ((st = cli_write_table(o->out ? o->tmp : NULL, comment, ncol, names, nl, cols)))
-            cli_die_status(st);
+        cli_check(cli_write_table(o->out ? o->tmp : NULL, comment, ncol, names, nl, cols));
     }
-    if (o->out)
-        cli_out_commit(o->out);
+    cli_out_commit(o->out);
 }
 
 int cli_cmd_acf(int argc, char **argv)
@@ -186,15 +171,12 @@ int cli_cmd_acf(int argc, char **argv)
     acf_opts o = {0};
     double *lag, *val, *tgt = NULL, *blo = NULL, *bhi = NULL;
     nl_field *x, *full;
-    int st;
 
     parse(argc, argv, &o);
     x = cli_read_field(o.in, NULL);
     check_field(&o, x);
-    if (o.out)
-        o.tmp = cli_out_begin(o.out);
-    if ((st = nl_acf_full(x, o.mean, o.unbiased, &full)))
-        cli_die_status(st);
+    o.tmp = cli_out_begin(o.out);
+    cli_check(nl_acf_full(x, o.mean, o.unbiased, &full));
     if (o.out && cli_has_ext(o.out, ".exr")) {
         write_centred(&o, full);
         nl_field_free(full), nl_field_free(x);
@@ -204,13 +186,11 @@ int cli_cmd_acf(int argc, char **argv)
         cli_die(2, "acf: --direct and --bands go with an axis, not --radial");
     if (o.bands && (x->dim != 1 || o.unbiased))
         cli_die(2, "acf: --bands is for the biased estimate of a 1D field");
-    lag = malloc(o.nl * sizeof *lag), val = malloc(o.nl * sizeof *val);
+    lag = cli_malloc(o.nl * sizeof *lag), val = cli_malloc(o.nl * sizeof *val);
     if (o.bands)
-        blo = malloc(o.nl * sizeof *blo), bhi = malloc(o.nl * sizeof *bhi);
+        blo = cli_malloc(o.nl * sizeof *blo), bhi = cli_malloc(o.nl * sizeof *bhi);
     if (o.target)
-        tgt = malloc(o.nl * sizeof *tgt);
-    if (!lag || !val || (o.bands && (!blo || !bhi)) || (o.target && !tgt))
-        cli_die(1, "out of memory");
+        tgt = cli_malloc(o.nl * sizeof *tgt);
     estimate(&o, x, full, lag, val, blo, bhi);
     if (o.target)
         target_values(&o, x, lag, tgt);

@@ -14,8 +14,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
-#include <unistd.h>
 
 static const char help[] =
     "usage: noiselab card FIELD -o CARD.png [--acf SPEC | --spectrum SPEC]\n\n"
@@ -29,9 +27,7 @@ static void write_log_picture(const char *path, const nl_field *P)
 {
     nl_field *C;
     double mx;
-    int st;
-    if ((st = nl_fftshift_alloc(P, &C)))
-        cli_die_status(st);
+    cli_check(nl_fftshift_alloc(P, &C));
     mx = log10(nl_fftshift_log10_floor(C, 1e-8));
     nl_png_write_field(path, C, mx - 7, mx);
     nl_field_free(C);
@@ -40,12 +36,10 @@ static void write_log_picture(const char *path, const nl_field *P)
 /* Radial spectra on the Welch grid: measured and (with a model) the model's. */
 static void write_radial(const char *path, const nl_field *W, const nl_model *m, size_t seg)
 {
-    size_t nb = seg / 2 + 1, *cnt = malloc(nb * sizeof *cnt);
-    double *r = malloc(nb * sizeof *r), *v = malloc(nb * sizeof *v), *t = malloc(nb * sizeof *t);
+    size_t nb = seg / 2 + 1, *cnt = cli_malloc(nb * sizeof *cnt);
+    double *r = cli_malloc(nb * sizeof *r), *v = cli_malloc(nb * sizeof *v), *t = cli_malloc(nb * sizeof *t);
     double step = 1.0 / ((double)seg * W->h[0]);
     int st;
-    if (!cnt || !r || !v || !t)
-        cli_die(1, "out of memory");
     nl_radial(W, NL_GRID_FREQ, step, nb, r, v, cnt);
     for (size_t b = 0; b < nb; b++)
         t[b] = NAN;
@@ -104,17 +98,14 @@ static const char *parse(int argc, char **argv, const char **spec)
                                          {0}};
     const char *out = NULL;
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "card")) != -1) {
         switch (c) {
         case 'o': out = optarg; break;
         case 'a': *spec = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("card", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "card: expected one field file, got %d", argc - optind);
+    cli_one_operand("card", "field file", argc, argv);
     if (!out || !cli_has_ext(out, ".png"))
         cli_die(2, "card: -o: expected an output file ending in .png");
     return out;
@@ -141,8 +132,7 @@ int cli_cmd_card(int argc, char **argv)
         cli_die_status(st);
     snprintf(path, sizeof path, "%s/field.png", dir);
     double sd = sqrt(mo.variance);
-    if ((st = nl_png_write_field(path, x, mo.mean - 3 * sd, mo.mean + 3 * sd)))
-        cli_die_status(st);
+    cli_check(nl_png_write_field(path, x, mo.mean - 3 * sd, mo.mean + 3 * sd));
     snprintf(path, sizeof path, "%s/periodogram.png", dir);
     write_log_picture(path, P);
     snprintf(path, sizeof path, "%s/welch.png", dir);

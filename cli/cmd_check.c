@@ -6,7 +6,6 @@
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab check --acf SPEC --dim D [--json]\n\n"
@@ -73,18 +72,15 @@ int cli_cmd_check(int argc, char **argv)
     int c, dim = 0, json = 0, st;
     nl_model *m;
     nl_check k;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":h", opts, "check")) != -1) {
         switch (c) {
         case 'a': spec = optarg; break;
         case 'd': dim = cli_parse_dim(optarg, 3); break;
         case 'j': json = 1; break;
         case 'h': fputs(help, stdout); return 0;
-        default: cli_bad_option("check", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "check: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("check", argc, argv);
     if (!spec)
         cli_die(2, "check: --acf: expected a model (see noiselab models)");
     if (!dim)

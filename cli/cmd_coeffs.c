@@ -35,18 +35,6 @@ static json_t *flags_json(unsigned f)
     return a;
 }
 
-static void print_flags(unsigned f)
-{
-    int first = 1;
-    for (unsigned b = 0; b < 6; b++)
-        if (f & (1u << b)) {
-            printf("%s%s", first ? "" : ",", nl_subdiv_flag_name(b));
-            first = 0;
-        }
-    if (first)
-        printf("-");
-}
-
 static void print_text(const nl_subdiv_coeffs *c, const char *spec)
 {
     printf("# %s, %dD, spacing0 %g, %d levels\n", spec, c->dim, c->spacing0, c->levels);
@@ -54,10 +42,10 @@ static void print_text(const nl_subdiv_coeffs *c, const char *spec)
         const nl_subdiv_level *l = &c->level[k];
         for (int j = 0; j < l->nclass; j++) {
             const nl_subdiv_class *cl = &l->cls[j];
-            printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %-10.3g flags ", l->level,
-                   l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cl->condition);
-            print_flags(cl->flags);
-            printf("\n");
+            char fl[128];
+            cli_subdiv_flags(cl->flags, fl, sizeof fl);
+            printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %-10.3g flags %s\n", l->level,
+                   l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cl->condition, fl[0] ? fl : "-");
             if (c->dim == 1) {
                 /* the right half a_1..a_N, as in Lewis's Table 1 (a_k = a_{1-k}) */
                 printf("    a_1..a_N:");
@@ -86,13 +74,11 @@ int cli_cmd_coeffs(int argc, char **argv)
         {"json", no_argument, 0, 'j'},           {"help", no_argument, 0, 'h'},
         {0}};
     const char *spec = NULL;
-    int c, dim = 0, N = 2, levels = 10, json = 0, st;
+    int c, dim = 0, N = 2, levels = 10, json = 0;
     double tol = 1e-4, s0 = 1;
     nl_model *m;
     nl_subdiv_coeffs *co;
-
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":h", opts, "coeffs")) != -1) {
         switch (c) {
         case 'a': spec = optarg; break;
         case 'd': dim = cli_parse_dim(optarg, 2); break;
@@ -100,23 +86,17 @@ int cli_cmd_coeffs(int argc, char **argv)
             N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
             break;
         case 't':
-            tol = cli_parse_double("--tol", optarg);
-            if (!(tol > 0))
-                cli_die(2, "--tol: expected a positive number, got \"%s\"", optarg);
+            tol = cli_parse_positive("--tol", optarg, "number");
             break;
         case 'L': levels = (int)cli_parse_count("--levels", optarg, 1); break;
         case 's':
-            s0 = cli_parse_double("--spacing0", optarg);
-            if (!(s0 > 0))
-                cli_die(2, "--spacing0: expected a positive number, got \"%s\"", optarg);
+            s0 = cli_parse_positive("--spacing0", optarg, "number");
             break;
         case 'j': json = 1; break;
         case 'h': fputs(help, stdout); return 0;
-        default: cli_bad_option("coeffs", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "coeffs: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("coeffs", argc, argv);
     if (!spec)
         cli_die(2, "coeffs: --acf: expected an autocorrelation model (see noiselab models)");
     if (!dim)
@@ -125,10 +105,8 @@ int cli_cmd_coeffs(int argc, char **argv)
         cli_die(2, "--levels: expected at most 40, got %d", levels);
     if (N > (dim == 1 ? 64 : 8))
         cli_die(2, "--neighborhood: expected at most %d in %dD, got %d", dim == 1 ? 64 : 8, dim, N);
-    if ((st = nl_model_parse(spec, &m)))
-        cli_die_status(st);
-    if ((st = nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co)))
-        cli_die_status(st);
+    cli_check(nl_model_parse(spec, &m));
+    cli_check(nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co));
     if (json) {
         json_t *lv = json_array();
         for (int k = 0; k < co->levels; k++) {

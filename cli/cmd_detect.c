@@ -7,8 +7,6 @@
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab detect IN --levels L [--acf SPEC | --spectrum SPEC] [--json]\n\n"
@@ -32,24 +30,20 @@ int cli_cmd_detect(int argc, char **argv)
     double A, P = NAN;
     nl_creases cr;
     nl_field *x;
-
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":h", opts, "detect")) != -1) {
         switch (c) {
         case 'L': L = (int)cli_parse_count("--levels", optarg, 1); break;
         case 'a': spec = optarg; break;
         case 'j': json = 1; break;
         case 'h': fputs(help, stdout); return 0;
-        default: cli_bad_option("detect", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "detect: expected one input file, got %d", argc - optind);
+    const char *in = cli_one_operand("detect", "input file", argc, argv);
     if (!L)
         cli_die(2, "detect: --levels: expected the number of subdivision levels of the field");
     if (L > 40)
         cli_die(2, "--levels: expected at most 40, got %d", L);
-    x = cli_read_field(argv[optind], NULL);
+    x = cli_read_field(in, NULL);
     if ((st = nl_creases_measure(x, L, &cr)) || (st = nl_aliasing_measure(x, &A)))
         cli_die_status(st);
     if (spec) {

@@ -32,29 +32,24 @@ static void parse(int argc, char **argv, hist_opts *o)
                                          {0}};
     int c;
     o->bins = 50;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "hist")) != -1) {
         switch (c) {
         case 'b': o->bins = cli_parse_count("--bins", optarg, 1); break;
         case 'a': o->against = optarg; break;
         case 'j': o->json = 1; break;
         case 'o': o->out = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("hist", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "hist: expected one input file, got %d", argc - optind);
+    o->in = cli_one_operand("hist", "input file", argc, argv);
     if (o->bins > 10000000)
         cli_die(2, "--bins: expected at most 10000000, got %zu", o->bins);
-    o->in = argv[optind];
 }
 
 static void output(const hist_opts *o, const nl_moments *mo, const double *edges, const double *counts,
                    const nl_gof *gof, const double *pdf)
 {
     size_t bins = o->bins;
-    int st;
     if (o->json) {
         json_t *j = json_pack("{s:I,s:f,s:f,s:f,s:f,s:f,s:f,s:o,s:o}", "n", (json_int_t)mo->n, "mean", mo->mean,
                               "variance", mo->variance, "skewness", mo->skewness, "kurtosis", mo->kurtosis, "min",
@@ -76,11 +71,9 @@ static void output(const hist_opts *o, const nl_moments *mo, const double *edges
     if (o->out || !o->json) {
         static const char *const names[] = {"lo", "hi", "count", "pdf"};
         const double *cols[] = {edges, edges + 1, counts, pdf};
-        if ((st = cli_write_table(o->out ? o->tmp : NULL, NULL, pdf ? 4 : 3, names, bins, cols)))
-            cli_die_status(st);
+        cli_check(cli_write_table(o->out ? o->tmp : NULL, NULL, pdf ? 4 : 3, names, bins, cols));
     }
-    if (o->out)
-        cli_out_commit(o->out);
+    cli_out_commit(o->out);
 }
 
 int cli_cmd_hist(int argc, char **argv)
@@ -97,21 +90,15 @@ int cli_cmd_hist(int argc, char **argv)
     if (o.against && (st = nl_dist_parse(o.against, &dist)))
         cli_die_status(st);
     x = cli_read_field(o.in, NULL);
-    if (o.out)
-        o.tmp = cli_out_begin(o.out);
-    edges = malloc((o.bins + 1) * sizeof *edges);
-    counts = malloc(o.bins * sizeof *counts);
-    if (!edges || !counts)
-        cli_die(1, "out of memory");
+    o.tmp = cli_out_begin(o.out);
+    edges = cli_malloc((o.bins + 1) * sizeof *edges);
+    counts = cli_malloc(o.bins * sizeof *counts);
     if ((st = nl_moments_compute(x, &mo)) || (st = nl_hist(x, o.bins, edges, counts)))
         cli_die_status(st);
     if (dist) {
-        if ((st = nl_gof_test(x->data, x->count, dist, o.bins < 2 ? 2 : o.bins, &gof)))
-            cli_die_status(st);
-        if (!(pdf = malloc(o.bins * sizeof *pdf)))
-            cli_die(1, "out of memory");
-        if ((st = nl_gof_bin_density(dist, edges, o.bins, pdf)))
-            cli_die_status(st);
+        cli_check(nl_gof_test(x->data, x->count, dist, o.bins < 2 ? 2 : o.bins, &gof));
+        pdf = cli_malloc(o.bins * sizeof *pdf);
+        cli_check(nl_gof_bin_density(dist, edges, o.bins, pdf));
     }
     output(&o, &mo, edges, counts, dist ? &gof : NULL, pdf);
     free(edges), free(counts), free(pdf);

@@ -9,7 +9,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 #include <time.h>
 
 static const char help[] =
@@ -54,8 +53,7 @@ static void parse(int argc, char **argv, opts_t *a)
         {"json", no_argument, 0, 'j'},       {"output", required_argument, 0, 'o'}, {"variance", required_argument, 0, 'v'},
         {"help", no_argument, 0, 'h'},       {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "krige")) != -1) {
         switch (c) {
         case 'd': a->data = optarg; break;
         case 'a': a->spec = optarg; break;
@@ -67,11 +65,9 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'o': a->out = optarg; break;
         case 'v': a->vout = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("krige", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "krige: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("krige", argc, argv);
     if (!a->data || !a->spec || !a->grid || !a->ext || !a->out)
         cli_die(2, "krige: expected --data, --acf, --grid, --extent and -o");
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);
@@ -88,9 +84,8 @@ static void parse(int argc, char **argv, opts_t *a)
 static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf, const nl_krige_info *info,
                           size_t n, const char *tmp, const char *vtmp)
 {
-    nl_meta meta;
+    nl_meta meta = {0};
     int st;
-    memset(&meta, 0, sizeof meta);
     snprintf(meta.model, sizeof meta.model, "%s", a->spec);
     snprintf(meta.method, sizeof meta.method, "krige:%s,points=%zu", isnan(a->mean) ? "ordinary" : "simple", n);
     if (info->pseudo_inverse)
@@ -99,9 +94,7 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
         st = nl_exr_write(tmp, f, &meta);
     else {
         static const char *const names[] = {"x", "value"};
-        double *xs = malloc(a->g[0] * sizeof *xs);
-        if (!xs)
-            cli_die(1, "out of memory");
+        double *xs = cli_malloc(a->g[0] * sizeof *xs);
         for (size_t i = 0; i < a->g[0]; i++)
             xs[i] = a->lo[0] + ((double)i + 0.5) * f->h[0];
         const double *cols[2] = {xs, f->data};
@@ -110,11 +103,9 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
     }
     if (!st && vf)
         st = nl_exr_write(vtmp, vf, &meta);
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     cli_out_commit(a->out);
-    if (a->vout)
-        cli_out_commit(a->vout);
+    cli_out_commit(a->vout);
 }
 
 static void report(const opts_t *a, const nl_krige_info *info, size_t n, double secs)
@@ -146,22 +137,19 @@ int cli_cmd_krige(int argc, char **argv)
     nl_model *m;
     nl_krige_plan *p;
     nl_krige_info info;
-    if ((st = nl_model_parse(a.spec, &m)))
-        cli_die_status(st);
+    cli_check(nl_model_parse(a.spec, &m));
     tmp = cli_out_begin(a.out);
-    if (a.vout)
-        vtmp = cli_out_begin(a.vout);
+    vtmp = cli_out_begin(a.vout);
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    if ((st = nl_krige_plan_alloc(m, pt->dim, n, pt->pts, pt->val, !isnan(a.mean), isnan(a.mean) ? 0 : a.mean, a.strict, &p)))
-        cli_die_status(st);
+    cli_check(nl_krige_plan_alloc(m, pt->dim, n, pt->pts, pt->val, !isnan(a.mean), isnan(a.mean) ? 0 : a.mean,
+                                  a.strict, &p));
     nl_krige_plan_info(p, &info);
     double h[3];
     for (int d = 0; d < 3; d++)
         h[d] = (a.hi[d] - a.lo[d]) / (double)a.g[d];
-    nl_field *f = nl_field_alloc(a.gdim, a.g, h, &st), *vf = a.vout ? nl_field_alloc(a.gdim, a.g, h, &st) : NULL;
-    if (!f || (a.vout && !vf) || (st = nl_krige_eval_grid(p, a.lo, f, vf)))
-        cli_die_status(st);
+    nl_field *f = cli_field_alloc(a.gdim, a.g, h), *vf = a.vout ? cli_field_alloc(a.gdim, a.g, h) : NULL;
+    cli_check(nl_krige_eval_grid(p, a.lo, f, vf));
     clock_gettime(CLOCK_MONOTONIC, &t1);
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     write_outputs(&a, f, vf, &info, n, tmp, vtmp);

@@ -6,7 +6,6 @@
 #include "../synth/rank1_model.h"
 
 #include <getopt.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,8 +44,7 @@ static void parse(int argc, char **argv, opts_t *a)
         {"mesh", required_argument, 0, 'M'},    {"help", no_argument, 0, 'h'},
         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "lattice")) != -1) {
         switch (c) {
         case 'n': a->N = cli_parse_count("--points", optarg, 2); break;
         case 'd': a->s = cli_parse_dim(optarg, 4); break;
@@ -54,9 +52,7 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'a': a->spec = optarg; a->spectral = 0; break;
         case 'S': a->spec = optarg; a->spectral = 1; break;
         case 'E':
-            a->extent = cli_parse_double("--extent", optarg);
-            if (!(a->extent > 0))
-                cli_die(2, "--extent: expected a positive length, got \"%s\"", optarg);
+            a->extent = cli_parse_positive("--extent", optarg, "length");
             break;
         case 's': a->seed = cli_parse_u64("--seed", optarg); break;
         case 'w': a->wv = 1; break;
@@ -64,11 +60,9 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'o': a->out = optarg; break;
         case 'M': a->mesh = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("lattice", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "lattice: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("lattice", argc, argv);
     if (!a->N)
         cli_die(2, "lattice: --points: expected the number of lattice points");
     if (!a->s)
@@ -113,8 +107,7 @@ static void make_lattice(opts_t *a, nl_rank1_lattice *L)
             cli_die(2, "--generator: expected fibonacci, korobov[:A] or %d integers G1,...,G%d, got \"%s\"", s, s, gen);
         st = nl_rank1_generator(N, s, g, L);
     }
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
 }
 
 static void print_wave_vectors(const opts_t *a, const nl_rank1_lattice *L)
@@ -208,27 +201,23 @@ static void write_outputs(const opts_t *a, const nl_rank1_lattice *L, const doub
                                          nl_rank1_mesh_triangle, &me)))
             cli_die_status(st);
     }
-    if (a->out)
-        cli_out_commit(a->out);
-    if (a->mesh)
-        cli_out_commit(a->mesh);
+    cli_out_commit(a->out);
+    cli_out_commit(a->mesh);
 }
 
 /* The field of --acf/--spectrum on the lattice, and its outputs. */
 static void field(opts_t *a, const nl_rank1_lattice *L)
 {
     nl_model *m;
-    double *f = malloc(a->N * sizeof *f), *grad = malloc(a->N * a->s * sizeof *grad), imag;
+    double *f, *grad, imag;
     char sbuf[1100];
     int st;
-    if (a->spectral && strncmp(a->spec, "power", 5) && strncmp(a->spec, "spectrum:", 9))
-        snprintf(sbuf, sizeof sbuf, "spectrum:%s", a->spec), a->spec = sbuf;
+    if (a->spectral)
+        a->spec = cli_spectrum_spec(a->spec, sbuf, sizeof sbuf);
     if ((st = nl_model_parse(a->spec, &m)) || (st = nl_rank1_model_check(m, a->s)))
         cli_die_status(st);
-    if (!f || !grad)
-        cli_die(1, "out of memory");
-    if ((st = nl_rank1_model_synthesize(L, m, a->extent, a->seed, f, grad, &imag)))
-        cli_die_status(st);
+    f = cli_malloc(a->N * sizeof *f), grad = cli_malloc(a->N * a->s * sizeof *grad);
+    cli_check(nl_rank1_model_synthesize(L, m, a->extent, a->seed, f, grad, &imag));
     write_outputs(a, L, f, grad, imag);
     free(f), free(grad);
     nl_model_free(m);

@@ -4,7 +4,6 @@
 
 #include <getopt.h>
 #include <stdio.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab models [--json]\n\n"
@@ -25,18 +24,15 @@ int cli_cmd_models(int argc, char **argv)
     int c, json = 0;
     size_t n;
     const nl_model_info *cat = nl_model_catalogue(&n);
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":h", opts, "models")) != -1) {
         if (c == 'j')
             json = 1;
         else if (c == 'h') {
             fputs(help, stdout);
             return 0;
-        } else
-            cli_bad_option("models", c, argv);
+        }
     }
-    if (optind < argc)
-        cli_die(2, "models: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("models", argc, argv);
     if (json) {
         json_t *arr = json_array();
         for (size_t i = 0; i < n; i++)

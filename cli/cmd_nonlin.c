@@ -8,7 +8,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab nonlin --acf SPEC --g DIST [--size N] [--spacing H] [--terms K]\n"
@@ -45,16 +44,13 @@ static void parse(int argc, char **argv, opts_t *a)
         {"output", required_argument, 0, 'o'}, {"psd", required_argument, 0, 'p'}, {"help", no_argument, 0, 'h'},
         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "nonlin")) != -1) {
         switch (c) {
         case 'a': a->spec = optarg; break;
         case 'g': a->gspec = optarg; break;
         case 'n': a->n = cli_parse_count("--size", optarg, 16); break;
         case 'H':
-            a->h = cli_parse_double("--spacing", optarg);
-            if (!(a->h > 0))
-                cli_die(2, "--spacing: expected a positive number, got \"%s\"", optarg);
+            a->h = cli_parse_positive("--spacing", optarg, "number");
             break;
         case 'K': a->K = (int)cli_parse_count("--terms", optarg, 2); break;
         case 'j': a->json = 1; break;
@@ -64,11 +60,9 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'o': a->out = optarg; break;
         case 'p': a->pout = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("nonlin", c, argv);
         }
     }
-    if (optind < argc)
-        cli_die(2, "nonlin: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("nonlin", argc, argv);
     if (a->design) {
         if (!a->tspec || !a->gspec || a->spec)
             cli_die(2, "nonlin --design: expected --target SPEC and --g DIST (not --acf)");
@@ -92,7 +86,6 @@ typedef struct {
 
 static void print_design(const opts_t *a, const nl_hermite *he, const design_t *r, const char *tmp)
 {
-    int st;
     size_t nl2 = r->nl2;
     if (a->json) {
         json_t *o = json_pack("{s:s,s:s,s:o,s:o,s:o,s:o,s:f,s:I,s:o}", "target", a->tspec, "g", a->gspec, "lag",
@@ -114,11 +107,9 @@ static void print_design(const opts_t *a, const nl_hermite *he, const design_t *
     if (a->out || !a->json) {
         const char *names[5] = {"lag", "target", "input_acf", "predicted", "measured"};
         const double *cols[5] = {r->lag, r->tg, r->rho, r->pred, r->meas};
-        if ((st = cli_write_table(tmp, "noiselab nonlin --design: covariances; input_acf is normalised",
-                                  a->verify ? 5 : 4, names, nl2, cols)))
-            cli_die_status(st);
-        if (a->out)
-            cli_out_commit(a->out);
+        cli_check(cli_write_table(tmp, "noiselab nonlin --design: covariances; input_acf is normalised",
+                        a->verify ? 5 : 4, names, nl2, cols));
+        cli_out_commit(a->out);
     }
 }
 
@@ -137,15 +128,12 @@ static void design(const opts_t *a, const nl_model *m, const nl_dist *d, const n
         cli_die_status(st);
     double scale = var / T->data[0];
     if (a->verify) {
-        if (!(r.meas = malloc(r.nl2 * sizeof *r.meas)))
-            cli_die(1, "out of memory");
-        if ((st = nl_nonlin_verify(S, d, a->verify, r.nl2, r.meas)))
-            cli_die_status(st);
+        r.meas = cli_malloc(r.nl2 * sizeof *r.meas);
+        cli_check(nl_nonlin_verify(S, d, a->verify, r.nl2, r.meas));
         r.merr = nl_nonlin_max_deviation(r.meas, T->data, r.nl2, scale, var);
     }
-    r.lag = malloc(r.nl2 * sizeof *r.lag), r.tg = malloc(r.nl2 * sizeof *r.tg), r.pred = malloc(r.nl2 * sizeof *r.pred);
-    if (!r.lag || !r.tg || !r.pred)
-        cli_die(1, "out of memory");
+    r.lag = cli_malloc(r.nl2 * sizeof *r.lag), r.tg = cli_malloc(r.nl2 * sizeof *r.tg);
+    r.pred = cli_malloc(r.nl2 * sizeof *r.pred);
     for (size_t i = 0; i < r.nl2; i++)
         r.lag[i] = (double)i * h, r.tg[i] = T->data[i] * scale;
     nl_nonlin_output_acf(he, r.rho, r.nl2, 1, r.pred);
@@ -159,21 +147,15 @@ static void predict(const opts_t *a, const nl_model *m, const nl_hermite *he, co
 {
     size_t n = a->n, nl = n / 2 + 1;
     double h = a->h;
-    int st;
-    nl_field *R = nl_field_alloc(1, &n, &h, &st), *Ry = R ? nl_field_alloc(1, &n, &h, &st) : NULL;
-    nl_field *S = Ry ? nl_field_alloc(1, &n, &h, &st) : NULL, *Sy = S ? nl_field_alloc(1, &n, &h, &st) : NULL;
-    if (!Sy)
-        cli_die_status(st);
-    if ((st = nl_wk_sample_acf(m, R)))
-        cli_die_status(st);
+    nl_field *R = cli_field_alloc(1, &n, &h), *Ry = cli_field_alloc(1, &n, &h);
+    nl_field *S = cli_field_alloc(1, &n, &h), *Sy = cli_field_alloc(1, &n, &h);
+    cli_check(nl_wk_sample_acf(m, R));
     if (!(R->data[0] > 0))
         cli_die(2, "--acf: %s has R(0) = %g; expected a positive variance", a->spec, R->data[0]);
     nl_nonlin_output_acf(he, R->data, n, R->data[0], Ry->data);
-    if ((st = nl_wk_acf_to_spectrum(R, S)) || (st = nl_wk_acf_to_spectrum(Ry, Sy)))
-        cli_die_status(st);
-    double *lag = malloc(nl * sizeof *lag), *freq = malloc(nl * sizeof *freq);
-    if (!lag || !freq)
-        cli_die(1, "out of memory");
+    cli_check(nl_wk_acf_to_spectrum(R, S));
+    cli_check(nl_wk_acf_to_spectrum(Ry, Sy));
+    double *lag = cli_malloc(nl * sizeof *lag), *freq = cli_malloc(nl * sizeof *freq);
     for (size_t i = 0; i < nl; i++)
         lag[i] = (double)i * h, freq[i] = (double)i / ((double)n * h);
     if (a->json) {
@@ -194,14 +176,12 @@ static void predict(const opts_t *a, const nl_model *m, const nl_hermite *he, co
     if (a->out || (!a->json && !a->pout)) {
         static const char *const names[] = {"lag", "input_acf", "output_acf"};
         const double *cols[] = {lag, R->data, Ry->data};
-        if ((st = cli_write_table(tmp, "noiselab nonlin: predicted output autocovariance", 3, names, nl, cols)))
-            cli_die_status(st);
+        cli_check(cli_write_table(tmp, "noiselab nonlin: predicted output autocovariance", 3, names, nl, cols));
     }
     if (a->pout) {
         static const char *const names[] = {"freq", "input_psd", "output_psd"};
         const double *cols[] = {freq, S->data, Sy->data};
-        if ((st = cli_write_table(ptmp, "noiselab nonlin: two-sided spectra, cycles per unit", 3, names, nl, cols)))
-            cli_die_status(st);
+        cli_check(cli_write_table(ptmp, "noiselab nonlin: two-sided spectra, cycles per unit", 3, names, nl, cols));
     }
     free(lag), free(freq);
     nl_field_free(R), nl_field_free(Ry), nl_field_free(S), nl_field_free(Sy);
@@ -218,20 +198,15 @@ int cli_cmd_nonlin(int argc, char **argv)
     parse(argc, argv, &a);
     if ((st = nl_model_parse(a.spec, &m)) || (st = nl_dist_parse(a.gspec, &d)))
         cli_die_status(st);
-    if (a.out)
-        tmp = cli_out_begin(a.out);
-    if (a.pout)
-        ptmp = cli_out_begin(a.pout);
-    if ((st = nl_hermite_expand(d, a.K, &he)))
-        cli_die_status(st);
+    tmp = cli_out_begin(a.out);
+    ptmp = cli_out_begin(a.pout);
+    cli_check(nl_hermite_expand(d, a.K, &he));
     if (a.design) {
         design(&a, m, d, &he, tmp);
     } else {
         predict(&a, m, &he, tmp, ptmp);
-        if (a.out)
-            cli_out_commit(a.out);
-        if (a.pout)
-            cli_out_commit(a.pout);
+        cli_out_commit(a.out);
+        cli_out_commit(a.pout);
     }
     nl_model_free(m), nl_dist_free(d);
     return 0;

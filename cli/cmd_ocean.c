@@ -30,10 +30,8 @@ static const char help[] =
 
 static char *frame_name(const char *path, int f, int frames)
 {
-    char *s = malloc(strlen(path) + 16);
+    char *s = cli_malloc(strlen(path) + 16);
     const char *dot = strrchr(path, '.');
-    if (!s)
-        cli_die(1, "out of memory");
     if (frames <= 1 || !dot)
         strcpy(s, path);
     else
@@ -41,21 +39,20 @@ static char *frame_name(const char *path, int f, int frames)
     return s;
 }
 
-static void write_png(const char *path, const double *img, size_t W, int tile)
+/* Frame fr of picture `path`: the W x W image, or 2 x 2 copies of it. */
+static void write_png(const char *path, int fr, int frames, const double *img, size_t W, int tile)
 {
     size_t T = tile ? 2 * W : W, n[2] = {T, T};
-    int st;
-    nl_field *f = nl_field_alloc(2, n, NULL, &st);
-    if (!f)
-        cli_die_status(st);
+    char *name = frame_name(path, fr, frames);
+    nl_field *f = cli_field_alloc(2, n, NULL);
     for (size_t y = 0; y < T; y++)
         for (size_t x = 0; x < T; x++)
             f->data[y * T + x] = img[(y % W) * W + x % W];
-    const char *tmp = cli_out_begin(path);
-    if ((st = nl_png_write_field(tmp, f, 0, 1)))
-        cli_die_status(st);
-    cli_out_commit(path);
+    const char *tmp = cli_out_begin(name);
+    cli_check(nl_png_write_field(tmp, f, 0, 1));
+    cli_out_commit(name);
     nl_field_free(f);
+    free(name);
 }
 
 /* The command's options. */
@@ -81,8 +78,7 @@ static void parse(int argc, char **argv, opts_t *a)
         {"mesh", required_argument, 0, 'M'},    {"help", no_argument, 0, 'h'},
         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "ocean")) != -1) {
         switch (c) {
         case 'l': a->lat = optarg; break;
         case 'n': a->N = cli_parse_count("--points", optarg, 3); break;
@@ -95,14 +91,10 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'F': a->frames = (int)cli_parse_count("--frames", optarg, 1); break;
         case 'D': a->dt = cli_parse_double("--dt", optarg); break;
         case 'P':
-            a->o.patch = cli_parse_double("--patch", optarg);
-            if (!(a->o.patch > 0))
-                cli_die(2, "--patch: expected a positive size in metres, got \"%s\"", optarg);
+            a->o.patch = cli_parse_positive("--patch", optarg, "size in metres");
             break;
         case 'A':
-            a->o.amplitude = cli_parse_double("--amplitude", optarg);
-            if (!(a->o.amplitude > 0))
-                cli_die(2, "--amplitude: expected a positive number, got \"%s\"", optarg);
+            a->o.amplitude = cli_parse_positive("--amplitude", optarg, "number");
             break;
         case 's': a->seed = cli_parse_u64("--seed", optarg); break;
         case 'W': a->W = cli_parse_count("--size", optarg, 8); break;
@@ -111,15 +103,13 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'T': a->tile = optarg; break;
         case 'M': a->mesh = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("ocean", c, argv);
         }
     }
 }
 
 static void check(int argc, char **argv, const opts_t *a)
 {
-    if (optind < argc)
-        cli_die(2, "ocean: unexpected argument \"%s\"", argv[optind]);
+    cli_no_operands("ocean", argc, argv);
     if (!a->lat == !a->M)
         cli_die(2, "ocean: expected exactly one of --lattice fibonacci --points N or --grid M");
     if (a->lat && strcmp(a->lat, "fibonacci"))
@@ -165,12 +155,9 @@ static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, do
                           double *gy)
 {
     size_t N = L->N;
-    double *h = malloc(N * sizeof *h), *g = malloc(2 * N * sizeof *g);
+    double *h = cli_malloc(N * sizeof *h), *g = cli_malloc(2 * N * sizeof *g);
     int st;
-    if (!h || !g)
-        cli_die(1, "out of memory");
-    if ((st = nl_ocean_lattice_frame(L, &a->o, a->seed, t, h, g)))
-        cli_die_status(st);
+    cli_check(nl_ocean_lattice_frame(L, &a->o, a->seed, t, h, g));
     if (a->out) {
         char *name = frame_name(a->out, fr, a->frames);
         write_lattice_tsv(a, L, h, g, t, cli_out_begin(name));
@@ -197,28 +184,20 @@ static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, do
 static void grid_frame(const opts_t *a, int fr, double t, double *img, double *gx, double *gy)
 {
     size_t M = a->M;
-    double *h = malloc(M * M * sizeof *h), *hx = malloc(M * M * sizeof *hx), *hy = malloc(M * M * sizeof *hy);
-    int st;
-    if (!h || !hx || !hy)
-        cli_die(1, "out of memory");
-    if ((st = nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy)))
-        cli_die_status(st);
+    double *h = cli_malloc(M * M * sizeof *h), *hx = cli_malloc(M * M * sizeof *hx), *hy = cli_malloc(M * M * sizeof *hy);
+    cli_check(nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy));
     if (a->out) {
         size_t n[2] = {M, M};
         double sp[2] = {a->o.patch / (double)M, a->o.patch / (double)M};
-        nl_field *f = nl_field_alloc(2, n, sp, &st);
-        nl_meta meta;
+        nl_meta meta = {0};
         char *name = frame_name(a->out, fr, a->frames);
         const char *tmp = cli_out_begin(name);
-        if (!f)
-            cli_die_status(st);
+        nl_field *f = cli_field_alloc(2, n, sp);
         memcpy(f->data, h, M * M * sizeof *h);
-        memset(&meta, 0, sizeof meta);
         snprintf(meta.method, sizeof meta.method, "ocean:grid=%zu,wind=%g,%g,t=%g,patch=%g", M, a->v, a->ang, t,
                  a->o.patch);
         snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);
-        if ((st = nl_exr_write(tmp, f, &meta)))
-            cli_die_status(st);
+        cli_check(nl_exr_write(tmp, f, &meta));
         cli_out_commit(name);
         nl_field_free(f);
         free(name);
@@ -232,20 +211,12 @@ static void pictures(const opts_t *a, int fr, const double *gx, const double *gy
 {
     static const double light[3] = {-0.74, -0.43, 0.5};
     size_t W = a->W;
-    double *sh = malloc(W * W * sizeof *sh);
-    if (!sh)
-        cli_die(1, "out of memory");
+    double *sh = cli_malloc(W * W * sizeof *sh);
     nl_render_shade_gradients(W * W, gx, gy, light, 0.1, sh);
-    if (a->image) {
-        char *name = frame_name(a->image, fr, a->frames);
-        write_png(name, sh, W, 0);
-        free(name);
-    }
-    if (a->tile) {
-        char *name = frame_name(a->tile, fr, a->frames);
-        write_png(name, sh, W, 1);
-        free(name);
-    }
+    if (a->image)
+        write_png(a->image, fr, a->frames, sh, W, 0);
+    if (a->tile)
+        write_png(a->tile, fr, a->frames, sh, W, 1);
     free(sh);
 }
 
@@ -253,7 +224,6 @@ int cli_cmd_ocean(int argc, char **argv)
 {
     opts_t a = {.W = 512, .v = NAN, .frames = 1, .seed = 1, .o = {0, 0, 100, 1e-4}};
     nl_rank1_lattice L;
-    int st;
     parse(argc, argv, &a);
     check(argc, argv, &a);
     a.o.wind = a.v, a.o.angle = a.ang * M_PI / 180;
@@ -262,16 +232,13 @@ int cli_cmd_ocean(int argc, char **argv)
         int idx = nl_rank1_fibonacci_index(a.N);
         if (!idx)
             cli_die(2, "--points: expected a Fibonacci number (e.g. 55, 1597, 10946), got %zu", a.N);
-        if ((st = nl_rank1_fibonacci(idx, &L)))
-            cli_die_status(st);
+        cli_check(nl_rank1_fibonacci(idx, &L));
     }
     cli_progress("ocean", 0);
     for (int fr = 0; fr < a.frames; fr++) {
         cli_progress("ocean", (double)fr / a.frames);
-        double t = a.t0 + fr * a.dt, *img = malloc(a.W * a.W * sizeof *img), *gx = malloc(a.W * a.W * sizeof *gx),
-               *gy = malloc(a.W * a.W * sizeof *gy);
-        if (!img || !gx || !gy)
-            cli_die(1, "out of memory");
+        double t = a.t0 + fr * a.dt, *img = cli_malloc(a.W * a.W * sizeof *img),
+               *gx = cli_malloc(a.W * a.W * sizeof *gx), *gy = cli_malloc(a.W * a.W * sizeof *gy);
         if (a.lat)
             lattice_frame(&a, &L, fr, t, img, gx, gy);
         else

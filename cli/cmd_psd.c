@@ -11,7 +11,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab psd IN [--radial] [--mean M] [--welch S] [--target SPEC] [--slope F1:F2]\n"
@@ -61,8 +60,7 @@ static void parse(int argc, char **argv, psd_opts *o)
     int c;
     char *end;
     o->mean = NAN, o->nseg = 1, o->aniso = NAN;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "psd")) != -1) {
         switch (c) {
         case 'r': break; /* nD output is always radial; accepted for clarity */
         case 'm': o->mean = cli_parse_double("--mean", optarg); break;
@@ -79,33 +77,25 @@ static void parse(int argc, char **argv, psd_opts *o)
         case 'j': o->json = 1; break;
         case 'o': o->out = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("psd", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "psd: expected one input file, got %d", argc - optind);
-    o->in = argv[optind];
+    o->in = cli_one_operand("psd", "input file", argc, argv);
 }
 
 /* The 2D spectrum with zero frequency at the centre: EXR and/or picture. */
 static void write_centred(psd_opts *o, const nl_field *P)
 {
     nl_field *C;
-    int st;
-    if ((st = nl_fftshift_alloc(P, &C)))
-        cli_die_status(st);
+    cli_check(nl_fftshift_alloc(P, &C));
     if (o->out && cli_has_ext(o->out, ".exr")) {
-        nl_meta meta;
-        memset(&meta, 0, sizeof meta);
+        nl_meta meta = {0};
         snprintf(meta.method, sizeof meta.method, "psd%s, zero frequency at (%zu, %zu)", o->welch ? " welch" : "",
                  P->n[0] / 2, P->n[1] / 2);
-        if ((st = nl_exr_write(o->tmp, C, &meta)))
-            cli_die_status(st);
+        cli_check(nl_exr_write(o->tmp, C, &meta));
     }
     if (o->preview) {
         double mx = nl_fftshift_log10_floor(C, 1e-12);
-        if ((st = nl_png_write_field(o->pvtmp, C, log10(mx) - 8, log10(mx))))
-            cli_die_status(st);
+        cli_check(nl_png_write_field(o->pvtmp, C, log10(mx) - 8, log10(mx)));
         cli_out_commit(o->preview);
     }
     nl_field_free(C);
@@ -156,11 +146,9 @@ static void output(const psd_opts *o, int dim, const double *freq, const double 
                                       : "noiselab psd: two-sided periodogram density, radial average, freq in "
                                         "cycles per unit",
                           tgt ? 3 : 2, names, nf, cols);
-        if (st)
-            cli_die_status(st);
+        cli_check(st);
     }
-    if (o->out)
-        cli_out_commit(o->out);
+    cli_out_commit(o->out);
 }
 
 /* The model's profile on the field's grid. */
@@ -188,26 +176,20 @@ int cli_cmd_psd(int argc, char **argv)
         cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o.in, x->dim);
     if (o.preview && !cli_has_ext(o.preview, ".png"))
         cli_die(2, "--preview: expected a .png file, got \"%s\"", o.preview);
-    if (o.out)
-        o.tmp = cli_out_begin(o.out);
-    if (o.preview)
-        o.pvtmp = cli_out_begin(o.preview);
-    if ((st = o.welch ? nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg) : nl_psd_periodogram(x, o.mean, &P)))
-        cli_die_status(st);
+    o.tmp = cli_out_begin(o.out);
+    o.pvtmp = cli_out_begin(o.preview);
+    cli_check(o.welch ? nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg) : nl_psd_periodogram(x, o.mean, &P));
     if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
         write_centred(&o, P);
     if (o.angular && (st = nl_psd_sectors(P, 18, 0.05, 0.45, o.sector, &o.aniso)))
         cli_die_status(st);
     maxn = x->n[0] + x->n[1] + x->n[2];
-    freq = malloc(maxn * sizeof *freq), val = malloc(maxn * sizeof *val), cnt = malloc(maxn * sizeof *cnt);
+    freq = cli_malloc(maxn * sizeof *freq), val = cli_malloc(maxn * sizeof *val), cnt = cli_malloc(maxn * sizeof *cnt);
     if (o.target)
-        tgt = malloc(maxn * sizeof *tgt);
-    if (!freq || !val || !cnt || (o.target && !tgt))
-        cli_die(1, "out of memory");
+        tgt = cli_malloc(maxn * sizeof *tgt);
     if (o.target)
         target_profile(&o, x, tgt);
-    if ((st = nl_psd_profile(P, freq, val, cnt, &nf)))
-        cli_die_status(st);
+    cli_check(nl_psd_profile(P, freq, val, cnt, &nf));
     if (o.slope && (st = x->dim == 1 ? nl_psd_slope(freq, val, nf, o.f1, o.f2, 1, &o.sl)
                                      : nl_psd_slope_grid(P, o.f1, o.f2, &o.sl)))
         cli_die_status(st);

@@ -7,7 +7,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab render IN (-o OUT.png | --matrix OUT.txt) [--range LO:HI] [--shade AZ,EL]\n"
@@ -82,8 +81,7 @@ static void parse(int argc, char **argv, opts_t *a)
                                          {"clouds", required_argument, 0, 'C'}, {"cloud-plane", required_argument, 0, 'Z'},
                                          {"help", no_argument, 0, 'h'},         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "render")) != -1) {
         switch (c) {
         case 'r':
             if (sscanf(optarg, "%lf:%lf", &a->lo, &a->hi) != 2 || !(a->hi > a->lo) || !isfinite(a->lo) ||
@@ -95,9 +93,7 @@ static void parse(int argc, char **argv, opts_t *a)
                 cli_die(2, "--shade: expected AZ,EL in degrees with 0 < EL <= 90, got \"%s\"", optarg);
             break;
         case 'z':
-            a->zs = cli_parse_double("--zscale", optarg);
-            if (!(a->zs > 0))
-                cli_die(2, "--zscale: expected a positive factor, got \"%s\"", optarg);
+            a->zs = cli_parse_positive("--zscale", optarg, "factor");
             a->given_zs = 1;
             break;
         case 'P': a->persp = 1; break;
@@ -120,15 +116,13 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'm': a->matrix = optarg; break;
         case 'k': a->step = cli_parse_count("--step", optarg, 1); break;
         case 'h': fputs(help, stdout); exit(0);
-        default: cli_bad_option("render", c, argv);
         }
     }
 }
 
-static void check(int argc, const opts_t *a)
+static void check(int argc, char **argv, const opts_t *a)
 {
-    if (optind + 1 != argc)
-        cli_die(2, "render: expected one input file, got %d", argc - optind);
+    cli_one_operand("render", "input file", argc, argv);
     if (!a->out && !a->matrix)
         cli_die(2, "render: expected -o OUT.png or --matrix OUT.txt");
     if (a->out && !cli_has_ext(a->out, ".png"))
@@ -194,9 +188,8 @@ static void write_picture(const opts_t *a, const nl_field *x)
     double lo = a->lo, hi = a->hi;
     int st;
     if (!isnan(a->az)) {
-        nl_field *s = nl_field_alloc(2, x->n, x->h, &st);
-        if (!s || (st = nl_render_relief(x, a->az, a->el, a->zs, s)))
-            cli_die_status(st);
+        nl_field *s = cli_field_alloc(2, x->n, x->h);
+        cli_check(nl_render_relief(x, a->az, a->el, a->zs, s));
         st = nl_png_write_field(tmp, s, 0, 1);
         nl_field_free(s);
     } else {
@@ -204,8 +197,7 @@ static void write_picture(const opts_t *a, const nl_field *x)
             cli_die_status(st);
         st = nl_png_write_field(tmp, x, lo, hi);
     }
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     cli_out_commit(a->out);
 }
 
@@ -215,7 +207,7 @@ int cli_cmd_render(int argc, char **argv)
                 .sun = {NAN, NAN}, .haze = NAN, .water = NAN};
     nl_field *x;
     parse(argc, argv, &a);
-    check(argc, &a);
+    check(argc, argv, &a);
     x = cli_read_field(argv[optind], NULL);
     if (x->dim != 2)
         cli_die(2, "render: expected a 2D field, %s is %dD", argv[optind], x->dim);

@@ -24,54 +24,35 @@ int cli_cmd_shape(int argc, char **argv)
                                          {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
                                          {0}};
     const char *to = NULL, *out = NULL, *tmp;
-    int c, empirical = 0, st;
+    int c, empirical = 0;
     nl_dist *d;
     nl_field *x;
     nl_meta meta;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "shape")) != -1) {
         switch (c) {
         case 't': to = optarg; break;
         case 'e': empirical = 1; break;
         case 'o': out = optarg; break;
         case 'h': fputs(help, stdout); return 0;
-        default: cli_bad_option("shape", c, argv);
         }
     }
-    if (optind + 1 != argc)
-        cli_die(2, "shape: expected one input file, got %d", argc - optind);
+    const char *in = cli_one_operand("shape", "input file", argc, argv);
     if (!to)
         cli_die(2, "shape: --to: expected a distribution (e.g. --to laplace)");
     if (!out)
         cli_die(2, "shape: -o: expected an output file (.exr or .tsv)");
     if (!cli_has_ext(out, ".exr") && !cli_has_ext(out, ".tsv"))
         cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", out);
-    if ((st = nl_dist_parse(to, &d)))
-        cli_die_status(st);
-    x = cli_read_field(argv[optind], &meta);
+    cli_check(nl_dist_parse(to, &d));
+    x = cli_read_field(in, &meta);
     if (cli_has_ext(out, ".tsv") && x->dim != 1)
         cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", x->dim, out);
     tmp = cli_out_begin(out);
-    if ((st = nl_synth_shape(x, d, empirical)))
-        cli_die_status(st);
+    cli_check(nl_synth_shape(x, d, empirical));
     size_t len = strlen(meta.method);
     snprintf(meta.method + len, sizeof meta.method - len, "%s shape:%s%s", len ? " +" : "", to,
              empirical ? ",empirical" : "");
-    if (cli_has_ext(out, ".exr"))
-        st = nl_exr_write(tmp, x, &meta);
-    else {
-        static const char *const names[] = {"t", "value"};
-        double *t = malloc(x->count * sizeof *t);
-        const double *cols[2] = {t, x->data};
-        if (!t)
-            cli_die(1, "out of memory");
-        for (size_t i = 0; i < x->count; i++)
-            t[i] = (double)i * x->h[0];
-        st = nl_tsv_write(tmp, NULL, 2, names, x->count, cols);
-        free(t);
-    }
-    if (st)
-        cli_die_status(st);
+    cli_write_field(out, tmp, x, &meta);
     cli_out_commit(out);
     nl_field_free(x);
     nl_dist_free(d);

@@ -65,85 +65,34 @@ static const char help[] =
     "                   seed, size, spacing): bit for bit for every method\n"
     "  -o               EXR (any dimension) or TSV (1D: columns t, value)\n";
 
-/* The spec for --spectrum: a bare expression means spectrum:EXPR. */
-static const char *spectrum_spec(const char *s, char *buf, size_t len)
-{
-    if (strncmp(s, "power", 5) == 0 || strncmp(s, "spectrum:", 9) == 0)
-        return s;
-    snprintf(buf, len, "spectrum:%s", s);
-    return buf;
-}
-
-static void write_tsv(const char *path, const nl_field *f)
-{
-    static const char *const names[] = {"t", "value"};
-    double *t = malloc(f->count * sizeof *t);
-    const double *cols[2];
-    int st;
-    if (!t)
-        cli_die(1, "out of memory");
-    for (size_t i = 0; i < f->count; i++)
-        t[i] = (double)i * f->h[0];
-    cols[0] = t;
-    cols[1] = f->data;
-    st = nl_tsv_write(path, NULL, 2, names, f->count, cols);
-    free(t);
-    if (st)
-        cli_die_status(st);
-}
+/* What the command line gave, beyond the job itself. */
+typedef struct {
+    const char *acf, *spec, *size, *spacing, *out, *preview, *origin, *from; /* option values or NULL */
+    int json;                                        /* --json */
+    int given_L, given_N, given_tol, given_vs, given_density; /* explicitly given */
+} cli_synth_args;
 
 static void parse_origin(const char *s, long *o)
 {
-    char *end;
+    char *end, *p;
+    int ok;
     o[0] = strtol(s, &end, 10);
-    if (end == s)
-        cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
-    if (*end == ',') {
-        char *p = end + 1;
+    ok = end != s;
+    if (ok && *end == ',') {
+        p = end + 1;
         o[1] = strtol(p, &end, 10);
-        if (end == p)
-            cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
+        ok = end != p;
     }
-    if (*end)
+    if (!ok || *end)
         cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
 }
 
-/* Regenerate from a field's provenance: the method string "name:k=v,...|k=v|..."
- * written by the methods, the model, seed, size and spacing. */
-static void apply_from(const char *path, cli_synth_job *job, const char **acf, const char **spec, const char **size,
-                       const char **spacing, char *mbuf, char *sizebuf, char *spbuf, char *methbuf)
+/* The method's recorded options: "k=v,...|k=v|..." (what follows "name:"
+ * in the method string written by the methods). */
+static void apply_keys(char *rest, cli_synth_job *job)
 {
-    nl_meta meta;
-    nl_field *f = cli_read_field(path, &meta);
-    char *rest, *part, *save = NULL;
-    nl_field_free(f);
-    if (!meta.method[0] || !meta.seed[0] || !meta.size[0])
-        cli_die(2, "--from: %s does not record how it was made (noiselab.method, seed, size)", path);
-    snprintf(methbuf, 256, "%s", meta.method);
-    rest = strchr(methbuf, ':');
-    if (rest)
-        *rest++ = 0;
-    if (strchr(methbuf, ' '))
-        cli_die(2, "--from: %s was post-processed (\"%s\"); only synthesised fields regenerate", path, meta.method);
-    job->method = methbuf;
-    job->seed = cli_parse_u64("noiselab.seed", meta.seed);
-    snprintf(sizebuf, 64, "%s", meta.size), *size = sizebuf;
-    snprintf(spbuf, 128, "%s", meta.spacing), *spacing = spbuf[0] ? spbuf : NULL;
-    if (meta.model[0]) {
-        nl_model *m;
-        int st = nl_model_parse(meta.model, &m);
-        if (st)
-            cli_die_status(st);
-        snprintf(mbuf, 1100, "%s", meta.model);
-        if (nl_model_is_spectral(m))
-            *spec = mbuf;
-        else
-            *acf = mbuf;
-        nl_model_free(m);
-    }
-    if (strstr(meta.flags, "clamped") || strstr(meta.flags, "not-positive-definite"))
-        job->clamp = 1;
-    for (part = rest ? strtok_r(rest, "|", &save) : NULL; part; part = strtok_r(NULL, "|", &save)) {
+    char *part, *save = NULL;
+    for (part = strtok_r(rest, "|", &save); part; part = strtok_r(NULL, "|", &save)) {
         if (part != rest) {  /* an expression-valued key: the rest of the part */
             char *eq = strchr(part, '=');
             if (!eq)
@@ -178,6 +127,39 @@ static void apply_from(const char *path, cli_synth_job *job, const char **acf, c
     }
 }
 
+/* Regenerate from a field's provenance: the method string "name:k=v,...|k=v|..."
+ * written by the methods, the model, seed, size and spacing. */
+static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
+{
+    static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
+    nl_meta meta;
+    char *rest;
+    nl_field_free(cli_read_field(path, &meta));
+    if (!meta.method[0] || !meta.seed[0] || !meta.size[0])
+        cli_die(2, "--from: %s does not record how it was made (noiselab.method, seed, size)", path);
+    snprintf(methbuf, sizeof methbuf, "%s", meta.method);
+    rest = strchr(methbuf, ':');
+    if (rest)
+        *rest++ = 0;
+    if (strchr(methbuf, ' '))
+        cli_die(2, "--from: %s was post-processed (\"%s\"); only synthesised fields regenerate", path, meta.method);
+    job->method = methbuf;
+    job->seed = cli_parse_u64("noiselab.seed", meta.seed);
+    snprintf(sizebuf, sizeof sizebuf, "%s", meta.size), g->size = sizebuf;
+    snprintf(spbuf, sizeof spbuf, "%s", meta.spacing), g->spacing = spbuf[0] ? spbuf : NULL;
+    if (meta.model[0]) {
+        nl_model *m;
+        cli_check(nl_model_parse(meta.model, &m));
+        snprintf(mbuf, sizeof mbuf, "%s", meta.model);
+        *(nl_model_is_spectral(m) ? &g->spec : &g->acf) = mbuf;
+        nl_model_free(m);
+    }
+    if (strstr(meta.flags, "clamped") || strstr(meta.flags, "not-positive-definite"))
+        job->clamp = 1;
+    if (rest)
+        apply_keys(rest, job);
+}
+
 /* Options that only some methods take. */
 static void only_for(const char *opt, int given, const char *method, const char *allowed)
 {
@@ -188,13 +170,6 @@ static void only_for(const char *opt, int given, const char *method, const char 
     if (given && !strstr(list, word))
         cli_die(2, "synth %s: %s applies to %s only", method, opt, allowed);
 }
-
-/* What the command line gave, beyond the job itself. */
-typedef struct {
-    const char *acf, *spec, *size, *spacing, *out, *preview, *origin, *from; /* option values or NULL */
-    int json;                                        /* --json */
-    int given_L, given_N, given_tol, given_vs, given_density; /* explicitly given */
-} cli_synth_args;
 
 static void job_defaults(cli_synth_job *job)
 {
@@ -224,9 +199,7 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
         g->given_N = 1;
         break;
     case 't':
-        job->tol = cli_parse_double("--tol", optarg);
-        if (!(job->tol > 0))
-            cli_die(2, "--tol: expected a positive number, got \"%s\"", optarg);
+        job->tol = cli_parse_positive("--tol", optarg, "number");
         g->given_tol = 1;
         break;
     case 'R':
@@ -240,15 +213,11 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
             cli_die(2, "--H: expected a Hurst exponent between 0 and 1, got \"%s\"", optarg);
         break;
     case 'v':
-        job->vscale = cli_parse_double("--variance-scale", optarg);
-        if (!(job->vscale > 0))
-            cli_die(2, "--variance-scale: expected a positive factor, got \"%s\"", optarg);
+        job->vscale = cli_parse_positive("--variance-scale", optarg, "factor");
         g->given_vs = 1;
         break;
     case 'D':
-        job->density = cli_parse_double("--density", optarg);
-        if (!(job->density > 0))
-            cli_die(2, "--density: expected a positive number, got \"%s\"", optarg);
+        job->density = cli_parse_positive("--density", optarg, "number");
         g->given_density = 1;
         break;
     case 'V':
@@ -280,8 +249,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         {"octaves", required_argument, 0, 'V'},
         {0}};
     int c;
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, ":ho:", opts, NULL)) != -1) {
+    while ((c = cli_getopt(argc, argv, ":ho:", opts, "synth")) != -1) {
         switch (c) {
         case 'a': g->acf = optarg; break;
         case 'S': g->spec = optarg; break;
@@ -306,7 +274,6 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'W': job->wrap = 1; break;
         case 'F': g->from = optarg; break;
         case 'h': fputs(help, stdout); return 1;
-        default: cli_bad_option("synth", c, argv);
         }
     }
     return 0;
@@ -315,7 +282,6 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
 /* The method and its options from --from FILE or from the command line. */
 static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
 {
-    static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
     if (g->from) {
         if (optind < argc || g->acf || g->spec || g->size || g->spacing || g->given_L || g->given_N ||
             g->given_tol || g->given_vs || g->given_density || g->origin || job->nonperiodic || job->kernel ||
@@ -323,7 +289,7 @@ static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_a
             job->seed_image || job->random_nb || !isnan(job->H))
             cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
                     "and --json");
-        apply_from(g->from, job, &g->acf, &g->spec, &g->size, &g->spacing, mbuf, sizebuf, spbuf, methbuf);
+        apply_from(g->from, job, g);
         g->given_L = job->levels != 0;
         g->given_density = strcmp(job->method, "faulting") == 0 || strcmp(job->method, "sparse") == 0;
         g->given_N = strcmp(job->method, "subdiv") == 0;
@@ -410,7 +376,6 @@ static void check_model_given(const cli_synth_job *job, const cli_synth_args *g)
 static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
 {
     char sbuf[1200];
-    int st;
     if (!g->size)
         cli_die(2, "synth: --size: expected N, NxM or NxMxK");
     if (!g->out)
@@ -427,8 +392,7 @@ static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
     if (g->preview && !cli_has_ext(g->preview, ".png"))
         cli_die(2, "--preview: expected a file name ending in .png, got \"%s\"", g->preview);
     if (g->acf || g->spec) {
-        if ((st = nl_model_parse(g->acf ? g->acf : spectrum_spec(g->spec, sbuf, sizeof sbuf), &job->m)))
-            cli_die_status(st);
+        cli_check(nl_model_parse(g->acf ? g->acf : cli_spectrum_spec(g->spec, sbuf, sizeof sbuf), &job->m));
         if (g->acf && nl_model_is_spectral(job->m))
             cli_die(2, "--acf: \"%s\" is a spectrum model; pass it with --spectrum", g->acf);
         if (g->spec && !nl_model_is_spectral(job->m))
@@ -491,27 +455,18 @@ int cli_cmd_synth(int argc, char **argv)
     check_model_given(&job, &g);
     check_outputs_and_model(&job, &g);
     tmp = cli_out_begin(g.out);
-    if (g.preview)
-        ptmp = cli_out_begin(g.preview);
-    f = nl_field_alloc(job.dim, job.n, job.h, &st);
-    if (!f)
-        cli_die_status(st);
+    ptmp = cli_out_begin(g.preview);
+    f = cli_field_alloc(job.dim, job.n, job.h);
     cli_phase("synth", job.method);
     run(&job, f, &res);
     fill_meta(&job, f, &res, &meta);
     cli_phase("synth", "writing");
-    if (cli_has_ext(g.out, ".exr")) {
-        if ((st = nl_exr_write(tmp, f, &meta)))
-            cli_die_status(st);
-    } else {
-        write_tsv(tmp, f);
-    }
+    cli_write_field(g.out, tmp, f, &meta);
     if (g.preview && (st = nl_png_write_field(ptmp, f, res.offset - 3 * res.sd, res.offset + 3 * res.sd)))
         cli_die_status(st);
     cli_progress_done();
     cli_out_commit(g.out);
-    if (g.preview)
-        cli_out_commit(g.preview);
+    cli_out_commit(g.preview);
     if (g.json)
         print_json(&job, &meta, &res);
     json_decref(res.report);

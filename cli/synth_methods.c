@@ -1,6 +1,7 @@
 /* The methods of `noiselab synth`: plan, synthesise, report. */
 #include "synth.h"
 #include "../core/autocorr.h"
+#include "../core/field_stats.h"
 #include "../core/nl_error.h"
 #include "../synth/cholesky.h"
 #include "../synth/circulant.h"
@@ -12,18 +13,14 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     nl_synth_fft_plan *p;
     nl_synth_fft_info info;
-    int st;
-    if ((st = nl_synth_fft_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, &p)))
-        cli_die_status(st);
+    cli_check(nl_synth_fft_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, &p));
     nl_synth_fft_plan_info(p, &info);
-    if ((st = nl_synth_fft_execute(p, job->seed, f)))
-        cli_die_status(st);
+    cli_check(nl_synth_fft_execute(p, job->seed, f));
     nl_synth_fft_plan_free(p);
     snprintf(r->method, sizeof r->method, "fft");
     if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
@@ -32,15 +29,6 @@ void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *
     r->report = json_pack("{s:f,s:f,s:f,s:I,s:f}", "variance", info.variance, "min_spectrum", info.min_lambda,
                           "max_spectrum", info.max_lambda, "clamped", (json_int_t)info.negatives, "clamp_error",
                           info.clamp_error);
-}
-
-static void flags_string(unsigned f, char *buf, size_t len)
-{
-    size_t k = 0;
-    buf[0] = 0;
-    for (unsigned b = 0; b < 6; b++)
-        if (f & (1u << b))
-            k += (size_t)snprintf(buf + k, len - k, "%s%s", k ? "," : "", nl_subdiv_flag_name(b));
 }
 
 static json_t *levels_report(const nl_subdiv_coeffs *c)
@@ -53,7 +41,7 @@ static json_t *levels_report(const nl_subdiv_coeffs *c)
         char buf[128];
         for (int j = 0; j < l->nclass; j++)
             fl |= l->cls[j].flags, v = fmax(v, l->cls[j].variance);
-        flags_string(fl, buf, sizeof buf);
+        cli_subdiv_flags(fl, buf, sizeof buf);
         json_array_append_new(a, json_pack("{s:i,s:f,s:i,s:f,s:s}", "level", k, "spacing", l->spacing, "N", l->N,
                                            "max_variance", v, "flags", buf));
     }
@@ -64,8 +52,7 @@ static nl_field *seed_image(const cli_synth_job *job)
 {
     nl_field *img;
     int st = nl_field_read(job->seed_image, &img, NULL);
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     if (img->dim != job->dim)
         cli_die(2, "--seed-image: %s is %dD, expected %dD like --size", job->seed_image, img->dim, job->dim);
     return img;
@@ -76,7 +63,6 @@ static nl_subdiv_plan *subdiv_plan(const cli_synth_job *job, nl_field **img)
 {
     nl_subdiv_options o;
     nl_subdiv_plan *p;
-    int st;
     nl_subdiv_options_default(&o);
     o.levels = job->levels;
     o.N = job->N < 0 ? 2 : job->N;
@@ -92,12 +78,10 @@ static nl_subdiv_plan *subdiv_plan(const cli_synth_job *job, nl_field **img)
             cli_die(2, "--spacing: subdivision needs the same spacing on every axis");
     if (job->seed_image) {
         *img = seed_image(job);
-        if ((st = nl_subdiv_image_levels(job->dim, (*img)->n, job->n, job->levels, &o.levels)))
-            cli_die_status(st);
+        cli_check(nl_subdiv_image_levels(job->dim, (*img)->n, job->n, job->levels, &o.levels));
         o.image = !job->nonperiodic;
     }
-    if ((st = nl_subdiv_plan_alloc(job->m, job->dim, job->n, job->h[0], &o, &p)))
-        cli_die_status(st);
+    cli_check(nl_subdiv_plan_alloc(job->m, job->dim, job->n, job->h[0], &o, &p));
     return p;
 }
 
@@ -121,7 +105,7 @@ static void subdiv_describe(const cli_synth_job *job, const nl_subdiv_plan *p, c
                               job->origin[1]);
     if (job->seed_image)
         snprintf(r->method + k, sizeof r->method - k, "|seed-image=%s", job->seed_image);
-    flags_string(c->flags, r->flags, sizeof r->flags);
+    cli_subdiv_flags(c->flags, r->flags, sizeof r->flags);
     r->sd = sqrt(c->r0);
     r->report = json_pack("{s:f,s:f,s:o}", "spacing0", info.spacing0, "variance", c->r0, "levels",
                           levels_report(c));
@@ -140,8 +124,7 @@ void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
         st = nl_subdiv_plan_execute_image(p, img, job->seed, f);
     else
         st = nl_subdiv_plan_execute(p, job->seed, f);
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     subdiv_describe(job, p, r);
     nl_field_free(img);
     nl_subdiv_plan_free(p);
@@ -157,10 +140,8 @@ void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_res
         cli_die(2, "synth midpoint: expected a 1D or 2D --size, got %dD", job->dim);
     if (isnan(H) && (st = nl_subdiv_midpoint_hurst(job->m, job->dim, &H)))
         cli_die_status(st);
-    if ((st = nl_subdiv_plan_alloc_midpoint(job->dim, job->n, job->h[0], job->levels, H, 1.0, job->vscale, &p)))
-        cli_die_status(st);
-    if ((st = nl_subdiv_plan_execute(p, job->seed, f)))
-        cli_die_status(st);
+    cli_check(nl_subdiv_plan_alloc_midpoint(job->dim, job->n, job->h[0], job->levels, H, 1.0, job->vscale, &p));
+    cli_check(nl_subdiv_plan_execute(p, job->seed, f));
     nl_subdiv_plan_info(p, &info);
     snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g", H, info.levels,
              job->vscale);
@@ -173,13 +154,10 @@ void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_re
 {
     nl_synth_circulant_plan *p;
     nl_synth_circulant_info info;
-    int st;
-    if ((st = nl_synth_circulant_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, 16,
-                                         &p)))
-        cli_die_status(st);
+    cli_check(nl_synth_circulant_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, 16,
+                               &p));
     nl_synth_circulant_plan_info(p, &info);
-    if ((st = nl_synth_circulant_execute(p, job->seed, f)))
-        cli_die_status(st);
+    cli_check(nl_synth_circulant_execute(p, job->seed, f));
     nl_synth_circulant_plan_free(p);
     snprintf(r->method, sizeof r->method, "circulant:embedding=%zux%zux%zu", info.m[0], info.m[1], info.m[2]);
     if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
@@ -196,12 +174,9 @@ void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_re
 void cli_synth_cholesky_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     nl_synth_cholesky_plan *p;
-    int st;
     double zero[3] = {0, 0, 0};
-    if ((st = nl_synth_cholesky_plan_alloc(job->m, job->dim, job->n, job->h, &p)))
-        cli_die_status(st);
-    if ((st = nl_synth_cholesky_execute(p, job->seed, f)))
-        cli_die_status(st);
+    cli_check(nl_synth_cholesky_plan_alloc(job->m, job->dim, job->n, job->h, &p));
+    cli_check(nl_synth_cholesky_execute(p, job->seed, f));
     nl_synth_cholesky_plan_free(p);
     snprintf(r->method, sizeof r->method, "cholesky");
     r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
@@ -210,17 +185,12 @@ void cli_synth_cholesky_run(const cli_synth_job *job, nl_field *f, cli_synth_res
 void cli_synth_faulting_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     size_t K;
-    int st;
     if (job->dim > 2)
         cli_die(2, "synth faulting: expected a 1D or 2D --size, got %dD", job->dim);
-    if ((st = nl_synth_faulting(job->seed, job->density, f, &K)))
-        cli_die_status(st);
+    cli_check(nl_synth_faulting(job->seed, job->density, f, &K));
     snprintf(r->method, sizeof r->method, "faulting:density=%.17g", job->density);
-    double mean = 0, var = 0;
-    for (size_t i = 0; i < f->count; i++)
-        mean += f->data[i] / (double)f->count;
-    for (size_t i = 0; i < f->count; i++)
-        var += (f->data[i] - mean) * (f->data[i] - mean) / (double)f->count;
+    double mean, var;
+    nl_field_mean_var(f, &mean, &var);
     r->sd = sqrt(var) > 0 ? sqrt(var) : 1;
     /* the preview is centred on 0: shift the range by the mean */
     r->offset = mean;
@@ -248,15 +218,13 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
         st = nl_synth_sparse_plan_exemplar(img, job->radius, job->cell, job->density, &p);
         nl_field_free(img);
     }
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     if (job->angle && (st = nl_synth_sparse_set_angle(p, job->angle)))
         cli_die_status(st);
     nl_synth_sparse_plan_info(p, &info);
     if (job->wrap && job->nonperiodic)
         cli_die(2, "synth sparse: --wrap and --origin exclude each other");
-    if ((st = nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f)))
-        cli_die_status(st);
+    cli_check(nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f));
     nl_synth_sparse_plan_free(p);
     /* expression-valued keys follow '|', as they may hold commas */
     char org[64] = "";
@@ -289,8 +257,6 @@ void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_resu
         json_array_append_new(oct, json_pack("{s:f,s:f,s:f,s:f}", "cell", p.cell[o], "weight", p.weight[o], "peak",
                                              p.peak[o], "leakage", p.leakage[o]));
     snprintf(r->method, sizeof r->method, "lattice:cell=%.17g,octaves=%d", c0, O);
-    for (size_t i = 0; i < f->count; i++)
-        r->sd += f->data[i] * f->data[i] / (double)f->count;
-    r->sd = sqrt(r->sd) > 0 ? sqrt(r->sd) : 1;
+    r->sd = nl_field_rms(f) > 0 ? nl_field_rms(f) : 1;
     r->report = json_pack("{s:o}", "octaves", oct);
 }

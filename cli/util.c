@@ -1,9 +1,11 @@
 /* Errors, option parsing and atomic outputs for the subcommands. */
 #include "cli.h"
 #include "../core/nl_error.h"
+#include "../synth/subdiv.h"
 
 #include <errno.h>
 #include <fcntl.h>
+#include <getopt.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -50,15 +52,38 @@ void cli_die_status(int st)
     cli_die(nl_error_is_input(st) ? 2 : 1, "%s", nl_errmsg());
 }
 
+void cli_check(int st)
+{
+    if (st)
+        cli_die_status(st);
+}
+
+void *cli_malloc(size_t size)
+{
+    void *p = malloc(size);
+    if (!p)
+        cli_die(1, "out of memory");
+    return p;
+}
+
 void cli_bad_option(const char *cmd, int c, char **argv)
 {
-    extern int optind, optopt;
     const char *arg = argv[optind - 1];
     if (c == ':')
         cli_die(2, "%s: option \"%s\" expects a value", cmd, arg);
     if (optopt && (!arg || strncmp(arg, "--", 2) != 0))
         cli_die(2, "%s: unknown option \"-%c\" (see noiselab %s --help)", cmd, optopt, cmd);
     cli_die(2, "%s: unknown option \"%s\" (see noiselab %s --help)", cmd, arg ? arg : "?", cmd);
+}
+
+int cli_getopt(int argc, char **argv, const char *shortopts, const struct option *opts, const char *cmd)
+{
+    int c;
+    opterr = 0;
+    c = getopt_long(argc, argv, shortopts, opts, NULL);
+    if (c == '?' || c == ':')
+        cli_bad_option(cmd, c, argv);
+    return c;
 }
 
 int cli_parse_size(const char *opt, const char *s, size_t *n, size_t min)
@@ -115,6 +140,14 @@ size_t cli_parse_count(const char *opt, const char *s, size_t min)
     return (size_t)v;
 }
 
+double cli_parse_positive(const char *opt, const char *s, const char *what)
+{
+    double v = cli_parse_double(opt, s);
+    if (!(v > 0))
+        cli_die(2, "%s: expected a positive %s, got \"%s\"", opt, what, s);
+    return v;
+}
+
 int cli_parse_dim(const char *s, int max)
 {
     if (strlen(s) != 1 || s[0] < '1' || s[0] > '0' + max)
@@ -147,6 +180,19 @@ int cli_parse_spacing(const char *opt, const char *s, int dim, double *h)
     cli_die(2, "%s: expected a positive spacing H or one per axis (H0,H1,...), got \"%s\"", opt, s);
 }
 
+void cli_no_operands(const char *cmd, int argc, char **argv)
+{
+    if (optind < argc)
+        cli_die(2, "%s: unexpected argument \"%s\"", cmd, argv[optind]);
+}
+
+const char *cli_one_operand(const char *cmd, const char *what, int argc, char **argv)
+{
+    if (optind + 1 != argc)
+        cli_die(2, "%s: expected one %s, got %d", cmd, what, argc - optind);
+    return argv[optind];
+}
+
 int cli_has_ext(const char *path, const char *ext)
 {
     size_t lp = strlen(path), le = strlen(ext);
@@ -156,6 +202,8 @@ int cli_has_ext(const char *path, const char *ext)
 const char *cli_out_begin(const char *path)
 {
     int fd;
+    if (!path)
+        return NULL;
     if (nouts == 0)
         atexit(remove_pending);
     if (nouts == MAX_OUT)
@@ -177,12 +225,29 @@ const char *cli_out_begin(const char *path)
 
 void cli_out_commit(const char *path)
 {
-    for (int i = 0; i < nouts; i++)
+    for (int i = 0; path && i < nouts; i++)
         if (outs[i].tmp[0] && strcmp(outs[i].final, path) == 0) {
             if (rename(outs[i].tmp, outs[i].final) != 0)
                 cli_die(1, "output: cannot rename to \"%s\": %s", path, strerror(errno));
             outs[i].tmp[0] = 0;
         }
+}
+
+void cli_subdiv_flags(unsigned flags, char *buf, size_t len)
+{
+    size_t k = 0;
+    buf[0] = 0;
+    for (unsigned b = 0; b < 6; b++)
+        if (flags & (1u << b))
+            k += (size_t)snprintf(buf + k, len - k, "%s%s", k ? "," : "", nl_subdiv_flag_name(b));
+}
+
+const char *cli_spectrum_spec(const char *s, char *buf, size_t len)
+{
+    if (strncmp(s, "power", 5) == 0 || strncmp(s, "spectrum:", 9) == 0)
+        return s;
+    snprintf(buf, len, "spectrum:%s", s);
+    return buf;
 }
 
 void cli_json_print(json_t *obj)
@@ -203,12 +268,35 @@ json_t *cli_json_array(const double *v, size_t n)
     return a;
 }
 
+void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta)
+{
+    static const char *const names[] = {"t", "value"};
+    double *t;
+    if (cli_has_ext(path, ".exr")) {
+        cli_check(nl_exr_write(tmp, f, meta));
+        return;
+    }
+    t = cli_malloc(f->count * sizeof *t);
+    for (size_t i = 0; i < f->count; i++)
+        t[i] = (double)i * f->h[0];
+    cli_check(nl_tsv_write(tmp, NULL, 2, names, f->count, (const double *const[]){t, f->data}));
+    free(t);
+}
+
+nl_field *cli_field_alloc(int dim, const size_t *n, const double *h)
+{
+    int st;
+    nl_field *f = nl_field_alloc(dim, n, h, &st);
+    if (!f)
+        cli_die_status(st);
+    return f;
+}
+
 nl_field *cli_read_field(const char *path, nl_meta *meta)
 {
     nl_field *f;
     int st = nl_field_read(path, &f, meta);
-    if (st)
-        cli_die_status(st);
+    cli_check(st);
     return f;
 }
 

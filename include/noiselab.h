@@ -31,6 +31,7 @@ extern "C" {
 #include "noiselab/core/version.h"
 #include "noiselab/core/nl_error.h"
 #include "noiselab/core/field.h"
+#include "noiselab/core/field_stats.h"
 #include "noiselab/core/mem.h"
 #include "noiselab/core/model.h"
 #include "noiselab/core/dist.h"
@@ -76,6 +77,7 @@ extern "C" {
 #include "noiselab/render/terrain.h"
 #include "noiselab/render/shade.h"
 #include "noiselab/render/cloud.h"
+#include "noiselab/render/cloud_scene.h"
 
 #ifdef __cplusplus
 }
