@@ -1,5 +1,6 @@
 /* Validity, smoothness and singularity of a model. */
 #include "check.h"
+#include "../core/gsl_guard.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 #include "slope.h"
@@ -113,7 +114,7 @@ static int eigen_check(const nl_model *m, int dim, nl_check *c)
     return st;
 }
 
-int nl_check_model(const nl_model *m, int dim, nl_check *c)
+static int check_model(const nl_model *m, int dim, nl_check *c)
 {
     double r0, zero[3] = {0, 0, 0};
     int st;
@@ -194,4 +195,14 @@ int nl_check_model(const nl_model *m, int dim, nl_check *c)
         }
     }
     return NL_OK;
+}
+
+/* Bracketed for GSL (core/gsl_guard.h): its errors come back as statuses. */
+int nl_check_model(const nl_model *m, int dim, nl_check *c)
+{
+    int st;
+    nl_gsl_enter();
+    st = check_model(m, dim, c);
+    nl_gsl_leave();
+    return st;
 }

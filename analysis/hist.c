@@ -1,5 +1,6 @@
 /* Histogram and moments through GSL. */
 #include "hist.h"
+#include "../core/gsl_guard.h"
 #include "../core/nl_error.h"
 
 #include <gsl/gsl_histogram.h>
@@ -19,7 +20,7 @@ int nl_moments_compute(const nl_field *x, nl_moments *m)
     return NL_OK;
 }
 
-int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
+static int hist(const nl_field *x, size_t bins, double *edges, double *counts)
 {
     double lo, hi;
     gsl_histogram *h;
@@ -41,4 +42,14 @@ int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
         counts[b] = h->bin[b];
     gsl_histogram_free(h);
     return NL_OK;
+}
+
+/* Bracketed for GSL (core/gsl_guard.h): its errors come back as statuses. */
+int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
+{
+    int st;
+    nl_gsl_enter();
+    st = hist(x, bins, edges, counts);
+    nl_gsl_leave();
+    return st;
 }

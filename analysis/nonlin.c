@@ -1,5 +1,6 @@
 /* Hermite coefficients by Gauss-Hermite quadrature (GSL). */
 #include "nonlin.h"
+#include "../core/gsl_guard.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 
@@ -11,7 +12,7 @@
 #include <math.h>
 #include <string.h>
 
-int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h)
+static int hermite_expand(const nl_dist *to, int terms, nl_hermite *h)
 {
     const size_t nodes = 400;
     gsl_integration_fixed_workspace *w;
@@ -121,5 +122,15 @@ int nl_nonlin_design(const nl_hermite *h, const double *target, size_t n, double
     *err = e;
     if (unreachable)
         *unreachable = bad;
+    return st;
+}
+
+/* Bracketed for GSL (core/gsl_guard.h): its errors come back as statuses. */
+int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h)
+{
+    int st;
+    nl_gsl_enter();
+    st = hermite_expand(to, terms, h);
+    nl_gsl_leave();
     return st;
 }
