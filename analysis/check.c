@@ -105,8 +105,8 @@ static int eigen_check(const nl_model *m, int dim, nl_check *c)
                 lag[a] = ((double)pi[a] - (double)pj[a]) * h;
             gsl_matrix_set(A, i, j, nl_model_acf(m, dim, lag));
         }
-    if (!st && gsl_eigen_symm(A, ev, w))
-        st = NL_ERROR(NL_EFAIL, "check: the eigenvalues did not converge");
+    if (!st && (st = gsl_eigen_symm(A, ev, w)))
+        st = NL_ERROR(NL_EFAIL, "check: the eigenvalues did not converge: %s", nl_gsl_reason(st));
     for (size_t i = 0; !st && i < N; i++)
         lmin = fmin(lmin, gsl_vector_get(ev, i));
     c->min_eigenvalue = lmin / r0;

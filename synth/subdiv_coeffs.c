@@ -93,8 +93,9 @@ static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts,
         gsl_vector_set(b, j, acf_at(m, dim, target, pts + j * dim));
     }
     gsl_matrix_memcpy(F, A);
-    if (eig_range(F, &lmin, &amax, &amin)) {
-        st = NL_ERROR(NL_EFAIL, "the eigenvalues of a %zu x %zu system did not converge", n, n);
+    if ((st = eig_range(F, &lmin, &amax, &amin))) {
+        st = NL_ERROR(NL_EFAIL, "the eigenvalues of a %zu x %zu system did not converge: %s", n, n,
+                      nl_gsl_reason(st));
         goto done;
     }
     cls->min_eigenvalue = lmin;
@@ -109,8 +110,8 @@ static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts,
     } else {
         gsl_matrix_memcpy(F, A);
         cls->flags |= NL_SUBDIV_PINV;
-        if (pinv_solve(F, b, x)) {
-            st = NL_ERROR(NL_EFAIL, "the SVD of a %zu x %zu system failed", n, n);
+        if ((st = pinv_solve(F, b, x))) {
+            st = NL_ERROR(NL_EFAIL, "the SVD of a %zu x %zu system failed: %s", n, n, nl_gsl_reason(st));
             goto done;
         }
     }

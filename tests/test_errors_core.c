@@ -329,3 +329,36 @@ Test(errors_autocorr, etoobig)
     cr_assert_null(c);
     nl_field_free(x);
 }
+
+/* NL_ETOOBIG from the size a file declares: a 64 x 64 PNG read under a
+ * memory limit of 1000 bytes, directly, as a field and as an exemplar. */
+Test(errors_io, etoobig_on_read)
+{
+    static uint8_t pix[64 * 64];
+    const char *png = scratch("big.png", NULL);
+    char spec[600];
+    nl_field *f;
+    nl_model *m;
+    for (size_t i = 0; i < sizeof pix; i++)
+        pix[i] = (uint8_t)(i * 37 % 251);
+    cr_assert_eq(nl_png_write_gray8(png, 64, 64, pix), NL_OK);
+    setenv("NOISELAB_MEMORY_LIMIT", "1000", 1);
+    cr_assert_eq(nl_png_read(png, &f), NL_ETOOBIG);
+    cr_assert_null(f);
+    cr_assert_eq(nl_field_read(png, &f, NULL), NL_ETOOBIG);
+    snprintf(spec, sizeof spec, "image:%s", png);
+    cr_assert_eq(nl_model_parse(spec, &m), NL_ETOOBIG);
+}
+
+/* NL_ETOOBIG from the scratch grid of a spectral model's conversion. */
+Test(errors_wk, etoobig)
+{
+    size_t n[2] = {64, 64};
+    int st;
+    nl_field *R = nl_field_alloc(2, n, NULL, &st);
+    nl_model *m = model("power:d=2.5");
+    setenv("NOISELAB_MEMORY_LIMIT", "30000", 1);  /* R (32768 bytes) is made; the spectrum grid does not fit */
+    cr_assert_eq(nl_wk_sample_acf(m, R), NL_ETOOBIG);
+    nl_model_free(m);
+    nl_field_free(R);
+}
