@@ -109,11 +109,12 @@ static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *ds
     if (st)
         return st;
     /* each worker brackets its share once, so that the models' own GSL
-     * guards (Matern, power) cost it a thread-local counter per value */
+     * guards (Matern, power) cost it a thread-local counter per value;
+     * nowait: the region's end is the only barrier, as before */
 #pragma omp parallel if (reentrant && rows * ni > 65536)
     {
         nl_gsl_enter();
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, 16) nowait
         for (size_t r = 0; r < rows; r++) {
             size_t idx[3] = {0, r % g->n[1], r / g->n[1]};
             if (sym && mirror_row(g, r) < r)

@@ -2,7 +2,15 @@
  * lists is triggered here, and every GSL failure the library can meet comes
  * back as a status (or NAN) although no test turns GSL's handler off: GSL's
  * default handler, which prints and aborts, is in place for the whole suite,
- * so a path that reached it unguarded would crash its test. */
+ * so a path that reached it unguarded would crash its test (with the guard
+ * made a no-op, the Cholesky, quadrature and chi-square tests abort and the
+ * handler tests fail).
+ *
+ * Codes listed but not triggered one by one: NL_ENOMEM of the readers,
+ * parsers and wk/autocorr scratch, which all allocate through nl_alloc as
+ * nl_field_alloc does (errors_field/enomem triggers it there by limiting the
+ * address space); NL_EFAIL of FFTW planning, which does not fail for any
+ * size with FFTW_ESTIMATE or FFTW_MEASURE (the headers say so). */
 #include "../core/autocorr.h"
 #include "../core/dist.h"
 #include "../core/field.h"
