@@ -1,5 +1,6 @@
 /* Validity, smoothness and singularity of a model. */
 #include "check.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 #include "slope.h"
@@ -104,8 +105,8 @@ static int eigen_check(const nl_model *m, int dim, nl_check *c)
                 lag[a] = ((double)pi[a] - (double)pj[a]) * h;
             gsl_matrix_set(A, i, j, nl_model_acf(m, dim, lag));
         }
-    if (!st && gsl_eigen_symm(A, ev, w))
-        st = NL_ERROR(NL_EFAIL, "check: the eigenvalues did not converge");
+    if (!st && (st = gsl_eigen_symm(A, ev, w)))
+        st = NL_ERROR(NL_EFAIL, "check: the eigenvalues did not converge: %s", nl_gsl_reason(st));
     for (size_t i = 0; !st && i < N; i++)
         lmin = fmin(lmin, gsl_vector_get(ev, i));
     c->min_eigenvalue = lmin / r0;
@@ -133,7 +134,7 @@ static double singular_spacing(const nl_model *m, double L)
     return 0;
 }
 
-int nl_check_model(const nl_model *m, int dim, nl_check *c)
+static int check_model(const nl_model *m, int dim, nl_check *c)
 {
     double r0, zero[3] = {0, 0, 0};
     int st;
@@ -197,4 +198,14 @@ int nl_check_model(const nl_model *m, int dim, nl_check *c)
     if (!isnan(r0) && dim == 1)
         c->singular_below = singular_spacing(m, c->scale);
     return NL_OK;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+int nl_check_model(const nl_model *m, int dim, nl_check *c)
+{
+    int st;
+    nl_gsl_enter();
+    st = check_model(m, dim, c);
+    nl_gsl_leave();
+    return st;
 }

@@ -2,6 +2,7 @@
  * chi-square distribution; the Kolmogorov series is summed here, GSL has
  * no KS test). */
 #include "gof.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 
 #include <gsl/gsl_cdf.h>
@@ -25,7 +26,7 @@ static double q_ks(double l)
     return fmin(fmax(2 * s, 0), 1);
 }
 
-int nl_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl_gof *out)
+static int gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl_gof *out)
 {
     double *s, D = 0, en;
     size_t *count;
@@ -70,4 +71,14 @@ int nl_gof_bin_density(const nl_dist *d, const double *edges, size_t bins, doubl
     for (size_t b = 0; b < bins; b++)
         pdf[b] = (nl_dist_cdf(d, edges[b + 1]) - nl_dist_cdf(d, edges[b])) / (edges[b + 1] - edges[b]);
     return NL_OK;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+int nl_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl_gof *out)
+{
+    int st;
+    nl_gsl_enter();
+    st = gof_test(x, n, d, bins, out);
+    nl_gsl_leave();
+    return st;
 }

@@ -1,5 +1,6 @@
 /* Histogram and moments through GSL. */
 #include "hist.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 
 #include <gsl/gsl_histogram.h>
@@ -20,7 +21,7 @@ int nl_moments_compute(const nl_field *x, nl_moments *m)
     return NL_OK;
 }
 
-int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
+static int hist(const nl_field *x, size_t bins, double *edges, double *counts)
 {
     double lo, hi;
     gsl_histogram *h;
@@ -61,5 +62,15 @@ int nl_hist_density(const nl_field *x, const nl_moments *mo, size_t bins, double
                        sqrt(2 * M_PI * mo->variance);
         }
     free(edges), free(counts);
+    return st;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
+{
+    int st;
+    nl_gsl_enter();
+    st = hist(x, bins, edges, counts);
+    nl_gsl_leave();
     return st;
 }

@@ -1,5 +1,6 @@
 /* Ordinary and simple kriging through a Cholesky (or SVD) factorisation. */
 #include "krige.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 
 #include <gsl/gsl_blas.h>
@@ -110,7 +111,7 @@ static int factorize(nl_krige_plan *p, const gsl_matrix *C, int strict)
     return st;
 }
 
-int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
+static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
                      double mean, int strict, nl_krige_plan **out)
 {
     nl_krige_plan *p;
@@ -190,7 +191,7 @@ int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts,
 
 void nl_krige_plan_info(const nl_krige_plan *p, nl_krige_info *info) { *info = p->info; }
 
-int nl_krige_eval(const nl_krige_plan *p, const double *x, double *est, double *var, double *lambda)
+static int krige_eval(const nl_krige_plan *p, const double *x, double *est, double *var, double *lambda)
 {
     size_t n = p->n;
     double e = p->info.mean;
@@ -281,7 +282,7 @@ forward_block(const double *L, size_t tda, size_t n, double *restrict z)
  * and 1^T C^-1 c0 = (L^-1 1) . z, so one forward substitution serves all
  * NL_KRIGE_BLOCK points of a block, streaming L once per block instead of once
  * per point (the per-point solve is bound by memory bandwidth). */
-int nl_krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var)
+static int krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var)
 {
     size_t n = p->n, B = NL_KRIGE_BLOCK;
     double *z;
@@ -346,4 +347,35 @@ int nl_krige_eval_grid(const nl_krige_plan *p, const double *lo, const nl_field 
         }
     }
     return status;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val,
+                        int simple, double mean, int strict, nl_krige_plan **out)
+{
+    int st;
+    nl_gsl_enter();
+    st = krige_plan_alloc(m, dim, n, pts, val, simple, mean, strict, out);
+    nl_gsl_leave();
+    return st;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+int nl_krige_eval(const nl_krige_plan *p, const double *x, double *est, double *var, double *lambda)
+{
+    int st;
+    nl_gsl_enter();
+    st = krige_eval(p, x, est, var, lambda);
+    nl_gsl_leave();
+    return st;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+int nl_krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var)
+{
+    int st;
+    nl_gsl_enter();
+    st = krige_eval_block(p, count, x, est, var);
+    nl_gsl_leave();
+    return st;
 }

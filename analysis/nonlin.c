@@ -1,6 +1,7 @@
 /* Hermite coefficients by Gauss-Hermite quadrature (GSL). */
 #include "nonlin.h"
 #include "acf.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 #include "../synth/fft.h"
@@ -14,7 +15,7 @@
 #include <math.h>
 #include <string.h>
 
-int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h)
+static int hermite_expand(const nl_dist *to, int terms, nl_hermite *h)
 {
     const size_t nodes = 400;
     gsl_integration_fixed_workspace *w;
@@ -167,4 +168,14 @@ double nl_nonlin_max_deviation(const double *meas, const double *target, size_t 
     for (size_t i = 0; i < n; i++)
         e = fmax(e, fabs(meas[i] - target[i] * scale) / var);
     return e;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h)
+{
+    int st;
+    nl_gsl_enter();
+    st = hermite_expand(to, terms, h);
+    nl_gsl_leave();
+    return st;
 }

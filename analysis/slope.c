@@ -1,5 +1,6 @@
 /* Log-log regression of a spectrum. */
 #include "slope.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 
@@ -15,9 +16,11 @@ static int fit(const double *x, const double *y, size_t m, int E, nl_slope *out)
     double c0, c1, cov00, cov01, cov11, ss;
     if (m < 3)
         return NL_ERROR(NL_EINVAL, "slope: expected at least 3 frequencies in the band, got %zu", m);
+    nl_gsl_enter();
     gsl_fit_linear(x, 1, y, 1, m, &c0, &c1, &cov00, &cov01, &cov11, &ss);
     out->slope = c1;
     out->ci95 = gsl_cdf_tdist_Qinv(0.025, (double)(m - 2)) * sqrt(cov11);
+    nl_gsl_leave();
     out->points = m;
     /* eq. (16) takes d of a 1D profile; the spectrum of an isotropic E-D
      * field falls as f^-(d + E - 1) (Voss 1985) */

@@ -1,6 +1,7 @@
 /* Ensemble ACF against a target, with the tolerance from the estimator's variance. */
 #include "verdict.h"
 #include "acf.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 
 #include <gsl/gsl_cdf.h>
@@ -109,7 +110,10 @@ double nl_verdict_threshold(double alpha, size_t ntests, size_t dof)
     if (!(alpha > 0 && alpha < 1) || ntests == 0)
         return NAN;
     q = alpha / (2.0 * (double)ntests);
-    return dof ? gsl_cdf_tdist_Qinv(q, (double)dof) : gsl_cdf_ugaussian_Qinv(q);
+    nl_gsl_enter();
+    q = dof ? gsl_cdf_tdist_Qinv(q, (double)dof) : gsl_cdf_ugaussian_Qinv(q);
+    nl_gsl_leave();
+    return q;
 }
 
 double nl_verdict_isserlis_var(nl_verdict_cov C, void *ctx, const size_t *n, long lx, long ly)

@@ -3,7 +3,6 @@
 #include "cli.h"
 #include "../core/fftw_plan.h"
 
-#include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -46,7 +45,6 @@ static void usage(FILE *fp)
 int cli_main(int argc, char **argv)
 {
     static int saving;
-    gsl_set_error_handler_off();
     if (argc < 2) {
         usage(stderr);
         return 2;

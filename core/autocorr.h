@@ -12,9 +12,18 @@
 
 #include "field.h"
 
+/* Units: the sums are of squared field units, not divided by any count
+ * (the estimators divide).  *out receives a new field of 2 n_a samples per
+ * axis with x's spacing h, released by nl_field_free; NULL on failure.
+ * Returns NL_OK, NL_ETOOBIG (two arrays of the padded size do not fit:
+ * nl_size_check), NL_ENOMEM (allocation failed), NL_EFAIL (FFTW could not
+ * plan; not seen in practice, FFTW_ESTIMATE plans every size).  Plans FFTW
+ * on every call, so it is not thread-safe (core/fftw_plan.h); x is only
+ * read. */
 int nl_autocorr_sums(const nl_field *x, double mean, nl_field **out);
 
-/* Arithmetic mean of the samples. */
+/* Arithmetic mean of the count samples (sum / count, in order).  No status;
+ * thread-safe. */
 double nl_field_mean(const nl_field *x);
 
 #endif

@@ -1,5 +1,6 @@
 /* Named distributions through GSL's densities, CDFs and inverse CDFs. */
 #include "dist.h"
+#include "gsl_guard_internal.h"
 #include "nl_error.h"
 
 #include <gsl/gsl_cdf.h>
@@ -203,6 +204,27 @@ static double table_interp(const double *x, const double *y, size_t n, double v)
     return x[hi] > x[lo] ? y[lo] + (y[hi] - y[lo]) * (v - x[lo]) / (x[hi] - x[lo]) : y[hi];
 }
 
+/* Of the GSL functions used here only the chi-square ones have an error path
+ * (the inverse fails to converge for u below about 1e-300; probed over
+ * extreme arguments), so only they are guarded. */
+static double chi2_cdf(double y)
+{
+    double v;
+    nl_gsl_enter();
+    v = gsl_cdf_chisq_P(y, 1);
+    nl_gsl_leave();
+    return v;
+}
+
+static double chi2_quantile(double u)
+{
+    double v;
+    nl_gsl_enter();
+    v = gsl_cdf_chisq_Pinv(u, 1);
+    nl_gsl_leave();
+    return v;
+}
+
 double nl_dist_cdf(const nl_dist *d, double y)
 {
     switch (d->kind) {
@@ -211,7 +233,7 @@ double nl_dist_cdf(const nl_dist *d, double y)
     case D_LAPLACE: return gsl_cdf_laplace_P(y, d->p1);
     case D_HYPERBOLIC: return 2 / M_PI * atan(exp(M_PI * y / 2));
     case D_LOGNORMAL: return gsl_cdf_lognormal_P(y, d->p1, d->p2);
-    case D_CHI2: return gsl_cdf_chisq_P(y, 1);
+    case D_CHI2: return chi2_cdf(y);
     case D_POWER: return y <= 0 ? 0 : y >= 1 ? 1 : pow(y, 1 / d->p1);
     default: return table_interp(d->y, d->u, d->n, y);
     }
@@ -239,7 +261,7 @@ double nl_dist_quantile(const nl_dist *d, double u)
     case D_LAPLACE: return gsl_cdf_laplace_Pinv(u, d->p1);
     case D_HYPERBOLIC: return 2 / M_PI * log(tan(M_PI * u / 2));
     case D_LOGNORMAL: return gsl_cdf_lognormal_Pinv(u, d->p1, d->p2);
-    case D_CHI2: return gsl_cdf_chisq_Pinv(u, 1);
+    case D_CHI2: return chi2_quantile(u);
     case D_POWER: return pow(u, d->p1);
     default: return table_interp(d->u, d->y, d->n, u);
     }

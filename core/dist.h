@@ -12,7 +12,17 @@
  *                              paper's terrains, applied to the uniform rank)
  *   table:FILE                 a quantile table: TSV with header, columns u y,
  *                              u increasing from 0 to 1, y non-decreasing;
- *                              linear interpolation */
+ *                              linear interpolation
+ *
+ * nl_dist_parse returns NL_OK and a new distribution in *out (release it
+ * with nl_dist_free; NULL is a no-op), or NL_EINVAL (unknown name or key, a
+ * parameter that is not a number or out of range), NL_EINPUT (table: file
+ * missing, a row that is not two numbers, u not increasing from 0 to 1 or y
+ * decreasing, fewer than two rows) or NL_ENOMEM.  The other functions return
+ * values, no status: quantile(u) for u in [0, 1] (infinite tails at 0 and 1
+ * where the support is), NAN where GSL's chi-square inverse fails (it runs
+ * under the library's GSL guard, core/nl_error.h).  All are thread-safe; a
+ * distribution is read-only after parsing. */
 #ifndef NL_DIST_H
 #define NL_DIST_H
 
@@ -22,7 +32,7 @@ typedef struct nl_dist nl_dist;
 
 int nl_dist_parse(const char *spec, nl_dist **out);
 void nl_dist_free(nl_dist *d);
-const char *nl_dist_spec(const nl_dist *d);
+const char *nl_dist_spec(const nl_dist *d);  /* owned by d */
 
 double nl_dist_cdf(const nl_dist *d, double y);
 double nl_dist_pdf(const nl_dist *d, double y);  /* NAN for table: */

@@ -5,12 +5,23 @@
  * are 2-7x faster but cost seconds to make, so they are kept as FFTW wisdom in
  * $XDG_CACHE_HOME/noiselab/fftw-wisdom (~/.cache/... by default): the first
  * run at a size pays for planning, later runs reuse the plan. Either plan gives
- * the same result to rounding (tests/test_fftw_plan.c).
+ * the same result to rounding (tests/test_fft_props.c, the test comparing
+ * the two planners).
  *
  * NOISELAB_FFTW=estimate or =measure overrides the policy for every size.
  * FFTW_MEASURE overwrites the arrays it plans on: callers plan before they
  * fill their input (or plan on scratch arrays and use the new-array execute).
- * Planning is not thread-safe: plan from one thread. */
+ *
+ * Thread safety.  FFTW's planner is not reentrant: plans must be made (and
+ * destroyed) from one thread at a time, although executing a finished plan
+ * on its own arrays is thread-safe.  Functions of the library that plan (and
+ * so must not run concurrently with each other or with the caller's own FFTW
+ * planning): nl_fftw_flags itself (first call: FFTW threads and wisdom),
+ * nl_wk_acf_to_spectrum, nl_wk_spectrum_to_acf, nl_wk_sample_acf of a
+ * spectral model, nl_wk_sample_spectrum of a non-spectral one,
+ * nl_wk_sample_spectrum_half of a non-spectral one, nl_autocorr_sums, and the
+ * plan_alloc functions and estimators of synth/ and analysis/ that use FFTs
+ * (see their headers).  Neither function below returns a status. */
 #ifndef NL_FFTW_PLAN_H
 #define NL_FFTW_PLAN_H
 
@@ -19,13 +30,17 @@
 #define NL_FFTW_MEASURE_MIN ((size_t)1 << 18)
 #define NL_FFTW_THREADS_MIN ((size_t)1 << 16)
 
-/* Planner flags for a transform of `count` samples; the plan made next uses
- * as many threads as OpenMP would from NL_FFTW_THREADS_MIN samples on, else one. The first call sets up FFTW's threads and
- * loads the wisdom cache. */
+/* Planner flags for a transform of `count` samples (FFTW_ESTIMATE or
+ * FFTW_MEASURE, as above); the plan made next uses as many threads as OpenMP
+ * would from NL_FFTW_THREADS_MIN samples on, else one (a process-wide FFTW
+ * setting: call it right before planning).  The first call sets up FFTW's
+ * threads and loads the wisdom cache.  Not thread-safe (see above). */
 unsigned nl_fftw_flags(size_t count);
 
 /* Writes the wisdom cache if plans were measured since it was loaded; a
- * no-op otherwise. Failure to write a cache is silent (it is only a cache). */
+ * no-op otherwise.  Failure to write a cache is silent (it is only a cache);
+ * the file is written under a temporary name and renamed.  Not thread-safe
+ * (reads FFTW's wisdom, which planning writes). */
 void nl_fftw_save(void);
 
 #endif

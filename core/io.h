@@ -9,7 +9,17 @@
  * String attributes record how the field was made (nl_meta).
  *
  * Writers write exactly the path given; making outputs appear atomically is
- * the caller's job (cli/ writes to a temporary name and renames). */
+ * the caller's job (cli/ writes to a temporary name and renames).
+ *
+ * Common contract.  Readers put a new field in *out (NULL on failure),
+ * released by nl_field_free, and return NL_OK, NL_EINPUT (missing,
+ * unreadable or malformed file, named in the message), NL_ETOOBIG (the size
+ * the file declares does not fit: nl_size_check, honouring
+ * NOISELAB_MEMORY_LIMIT) or NL_ENOMEM.  Writers return NL_OK, NL_EIO (the
+ * path cannot be created or written), NL_ETOOBIG (the image is too large for
+ * the format) or NL_ENOMEM, and never modify their inputs.  Every function is
+ * thread-safe (no shared state; OpenEXRCore and libpng's simplified API keep
+ * theirs per call), as long as two threads do not write one path. */
 #ifndef NL_IO_H
 #define NL_IO_H
 
@@ -30,44 +40,60 @@ typedef struct {
 } nl_meta;
 
 /* Write `f` as EXR with the attributes of `meta` (may be NULL).  Samples
- * are stored as 32-bit floats. Returns NL_OK or NL_EIO/NL_EINVAL. */
+ * are stored as 32-bit floats (rounded to nearest).  Returns NL_OK, NL_EIO,
+ * NL_ETOOBIG (n0 or n1 n2 over 2^31 - 1) or NL_ENOMEM. */
 int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta);
 
 /* Read the "Y" channel (or the only channel) of an EXR into a new field;
  * noiselab.size and noiselab.spacing are honoured when present.  `meta`
- * (may be NULL) receives the attributes found.  NL_EINPUT on a bad file. */
+ * (may be NULL) receives the attributes found.  Samples are widened to
+ * double exactly (they may be non-finite: nl_field_read checks).  NL_EINPUT
+ * on a bad file (not EXR, tiled or deep, no "Y" channel and several others,
+ * subsampled, empty window, noiselab.size or .spacing inconsistent). */
 int nl_exr_read(const char *path, nl_field **out, nl_meta *meta);
 
 /* Read an 8- or 16-bit PNG (grey, or colour converted to grey by the
- * Rec. 709 weights) into a new 2D field with values in [0, 1]. */
+ * Rec. 709 weights) into a new 2D field with values in [0, 1] (stored value
+ * over 255 or 65535, no gamma decoding), unit spacing, top row first (row
+ * j = 0 is the image's top).  NL_EINPUT on a file that is not a readable
+ * PNG. */
 int nl_png_read(const char *path, nl_field **out);
 
-/* Write an 8-bit grey PNG of a w x h row-major image. */
+/* Write an 8-bit grey PNG of a w x h row-major image (w h bytes, top row
+ * first).  NL_ETOOBIG beyond 2^31 - 1 pixels a side. */
 int nl_png_write_gray8(const char *path, size_t w, size_t h, const uint8_t *pix);
 
-/* Write an 8-bit RGB PNG of a w x h image (3 bytes per pixel, row-major). */
+/* Write an 8-bit RGB PNG of a w x h image (3 bytes per pixel, row-major,
+ * top row first).  NL_ETOOBIG beyond 2^31 - 1 pixels a side. */
 int nl_png_write_rgb8(const char *path, size_t w, size_t h, const uint8_t *rgb);
 
 /* 8-bit preview of a 2D field (the first z slice of a 3D one): values from
- * lo to hi map linearly onto 0..255 and are clamped. */
+ * lo to hi map linearly onto 0..255 and are clamped.  NL_EINVAL unless
+ * lo < hi. */
 int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi);
 
 /* Write a TSV table: `comment` (may be NULL) as a '#' line, a header line of
- * the ncols names, then nrows rows of the columns cols[0..ncols-1]. */
+ * the ncols names, then nrows rows of the columns cols[0..ncols-1] (each of
+ * nrows doubles, printed with %.10g).  NL_EIO when the file cannot be
+ * created or a write fails. */
 int nl_tsv_write(const char *path, const char *comment, int ncols, const char *const *names,
                  size_t nrows, const double *const *cols);
 
-/* The same, to an open stream (e.g. stdout); the stream is not closed. */
+/* The same, to an open stream (e.g. stdout); the stream is not closed.
+ * NL_EIO when the stream reports an error. */
 int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *names, size_t nrows,
                   const double *const *cols);
 
 /* Read a 1D field from a TSV table with a header line: the column named
  * "value" if there is one, else the last; the spacing is taken from a first
- * column named "t" or "x" when present.  Lines starting with '#' are skipped. */
+ * column named "t" or "x" when present.  Lines starting with '#' are skipped.
+ * NL_EINPUT: no file, no header, a row with a different column count, a
+ * value that is not a finite number, or fewer than 2 samples. */
 int nl_tsv_read_field(const char *path, nl_field **out);
 
 /* Read any field: EXR by content, else PNG by content, else TSV.  Samples
- * must be finite (NL_EINPUT names the first that is not). */
+ * must be finite (NL_EINPUT names the first that is not).  `meta` (may be
+ * NULL) is zeroed, then filled from EXR attributes. */
 int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
 
 #endif

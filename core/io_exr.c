@@ -180,6 +180,37 @@ static int read_pixels(exr_context_t ctx, const char *path, float *buf, int32_t 
     return NL_OK;
 }
 
+/* The field's dimension, size and spacing from the w x hh image and the
+ * noiselab.size and noiselab.spacing attributes, when present. */
+static int layout(const char *path, const nl_meta *m, int32_t w, int32_t hh, int *dim, size_t *n, double *h)
+{
+    n[0] = (size_t)w;
+    n[1] = (size_t)hh;
+    n[2] = 1;
+    *dim = hh == 1 ? 1 : 2;
+    if (m->size[0]) {
+        size_t nn[3] = {1, 1, 1};
+        int d;
+        if (parse_dims(m->size, nn, &d) || nn[0] != (size_t)w || nn[1] * nn[2] != (size_t)hh)
+            return NL_ERROR(NL_EINPUT, "%s: noiselab.size \"%s\" does not match the %dx%d image", path, m->size, w,
+                            hh);
+        memcpy(n, nn, sizeof nn);
+        *dim = d;
+    }
+    if (m->spacing[0]) {
+        const char *p = m->spacing;
+        char *end;
+        for (int a = 0; a < *dim; a++) {
+            h[a] = strtod(p, &end);
+            if (end == p || !(h[a] > 0))
+                return NL_ERROR(NL_EINPUT, "%s: noiselab.spacing \"%s\": expected %d positive numbers", path,
+                                m->spacing, *dim);
+            p = *end == ',' ? end + 1 : end;
+        }
+    }
+    return NL_OK;
+}
+
 int nl_exr_read(const char *path, nl_field **out, nl_meta *meta)
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
@@ -219,32 +250,9 @@ int nl_exr_read(const char *path, nl_field **out, nl_meta *meta)
         if (exr_attr_get_string(ctx, 0, attrs[i].name, &len, &s) == EXR_ERR_SUCCESS && s)
             snprintf((char *)&m + attrs[i].off, attrs[i].len, "%.*s", (int)len, s);
     }
-    n[0] = (size_t)w;
-    n[1] = (size_t)hh;
-    n[2] = 1;
-    dim = hh == 1 ? 1 : 2;
-    if (m.size[0]) {
-        size_t nn[3] = {1, 1, 1};
-        int d;
-        if (parse_dims(m.size, nn, &d) || nn[0] != (size_t)w || nn[1] * nn[2] != (size_t)hh) {
-            exr_finish(&ctx);
-            return NL_ERROR(NL_EINPUT, "%s: noiselab.size \"%s\" does not match the %dx%d image", path, m.size, w,
-                            hh);
-        }
-        memcpy(n, nn, sizeof n);
-        dim = d;
-    }
-    if (m.spacing[0]) {
-        char *p = m.spacing, *end;
-        for (int a = 0; a < dim; a++) {
-            h[a] = strtod(p, &end);
-            if (end == p || !(h[a] > 0)) {
-                exr_finish(&ctx);
-                return NL_ERROR(NL_EINPUT, "%s: noiselab.spacing \"%s\": expected %d positive numbers", path,
-                                m.spacing, dim);
-            }
-            p = *end == ',' ? end + 1 : end;
-        }
+    if ((st = layout(path, &m, w, hh, &dim, n, h))) {
+        exr_finish(&ctx);
+        return st;
     }
     f = nl_field_alloc(dim, n, h, &st);
     if (f)

@@ -12,10 +12,12 @@
 
 #include <stddef.h>
 
-/* An uninitialised block of `bytes` (NULL when out of memory). */
+/* An uninitialised block of `bytes` (NULL when out of memory; bytes = 0
+ * gives a valid 1-byte block), released by nl_free (not by fftw_free).
+ * No status and no message: callers raise NL_ENOMEM.  Thread-safe. */
 void *nl_alloc(size_t bytes);
 
-/* Free a block from nl_alloc (NULL is a no-op). */
+/* Free a block from nl_alloc (NULL is a no-op).  Thread-safe. */
 void nl_free(void *p);
 
 #endif

@@ -25,8 +25,15 @@
  * sample at unit spacing); spectra are two-sided densities, so the variance
  * is the integral of S over all frequencies.
  *
- * libmatheval evaluation is not thread-safe: nl_model_acf and
- * nl_model_spectrum must not be called on one model from two threads. */
+ * Thread safety.  libmatheval evaluation is not thread-safe: nl_model_acf
+ * and nl_model_spectrum must not be called on one expr: or spectrum: model
+ * from two threads (nl_model_is_reentrant says which models may); every
+ * other model may be evaluated from any number of threads.  nl_model_parse
+ * is not thread-safe for expr: and spectrum: specs (libmatheval's parser has
+ * global state) nor for image: (it plans FFTW, core/fftw_plan.h); other specs
+ * parse concurrently.  GSL: the Matern, power and Hankel paths reach GSL
+ * under the library's guard (core/nl_error.h); where GSL fails they return
+ * NAN (Matern: 0 where Bessel K fails), never abort. */
 #ifndef NL_MODEL_H
 #define NL_MODEL_H
 
@@ -47,15 +54,20 @@ typedef enum {
 
 typedef struct nl_model nl_model;
 
-/* Parse a spec.  Returns NL_OK and a new model in *out, or NL_EINVAL
- * (NL_EINPUT for an unreadable image) with a message naming the bad part. */
+/* Parse a spec.  Returns NL_OK and a new model in *out (release it with
+ * nl_model_free), or, with *out = NULL and a message naming the bad part:
+ * NL_EINVAL (unknown family or key, a value that is not a finite number or
+ * out of range, a missing required parameter, a malformed expression, a 3D
+ * or constant exemplar), NL_EINPUT (image: file missing or malformed),
+ * NL_ETOOBIG (image: too large to tabulate) or NL_ENOMEM. */
 int nl_model_parse(const char *spec, nl_model **out);
 
+/* Release a model (NULL is a no-op). */
 void nl_model_free(nl_model *m);
 
 nl_model_kind nl_model_get_kind(const nl_model *m);
 
-/* The spec as given by the user. */
+/* The spec as given by the user (owned by the model). */
 const char *nl_model_spec(const nl_model *m);
 
 /* Is the model defined by its spectrum (power, spectrum:) rather than by R? */
@@ -69,7 +81,10 @@ int nl_model_is_reentrant(const nl_model *m);
 /* R at the lag vector lag[0..dim-1] (spacing units), for models defined by R,
  * and for power:, whose R is computed by quadrature (the Fourier or Hankel
  * transform of its band-limited spectrum, Lewis 1987 eq. (13)).  For
- * spectrum: models returns NAN (use the sampled conversion in wk.h). */
+ * spectrum: models returns NAN (use the sampled conversion in wk.h).  NAN
+ * too where power:'s quadrature fails (e.g. at lags of 1e6 in 2D: GSL runs
+ * out of subdivisions).  dim is 1..3 (checked by nl_model_check_dim, not
+ * here); R is in the model's variance units, R(0) = var. */
 double nl_model_acf(const nl_model *m, int dim, const double *lag);
 
 /* S at the frequency vector f[0..dim-1] (cycles per unit length) for spectral
@@ -80,7 +95,9 @@ double nl_model_spectrum(const nl_model *m, int dim, const double *f);
 /* The spectrum of an isotropic autocorrelation in dim = 1..4 dimensions at
  * radial frequency w (cycles per unit), by the Hankel transform of Lewis
  * 1987 eq. (13) with GSL quadrature and Bessel functions (4D uses the model's
- * 3D profile, which is the same function of |lag|).  NAN on failure. */
+ * 3D profile, which is the same function of |lag|).  NAN on failure (dim
+ * outside 1..4, R(0) not positive, quadrature not converged).  Slow: up to
+ * thousands of evaluations of R per frequency. */
 double nl_model_spectrum_iso(const nl_model *m, int dim, double w);
 
 /* Is R a function of |lag| alone in dim > 1 (no sep, angle or ratio, and
@@ -92,7 +109,8 @@ int nl_model_is_isotropic(const nl_model *m);
 double nl_model_acf_d2(const nl_model *m, double t);
 
 /* Check that the model can be used in `dim` dimensions (e.g. an image model
- * has no 3D table, spectral models take no anisotropy keys). */
+ * has no 3D table, spectral models take no anisotropy keys).  NL_OK or
+ * NL_EINVAL with a message. */
 int nl_model_check_dim(const nl_model *m, int dim);
 
 /* One entry of the model catalogue printed by `noiselab models`. */
@@ -102,7 +120,7 @@ typedef struct {
     const char *formula;  /* R or S */
 } nl_model_info;
 
-/* The catalogue; *count receives its length. */
+/* The catalogue (static storage: do not free); *count receives its length. */
 const nl_model_info *nl_model_catalogue(size_t *count);
 
 /* The value in effect of the parameter `name` (var, scale, alpha, omega, nu,

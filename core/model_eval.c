@@ -1,4 +1,5 @@
 /* Evaluation of R(lag) and S(f) for every model family. */
+#include "gsl_guard_internal.h"
 #include "model_internal.h"
 
 #include <gsl/gsl_sf_bessel.h>
@@ -19,14 +20,20 @@ static double acf_expr(const nl_model *m, double t, double x, double y, double z
     return eval_expr(m->eval, names, v, 5);
 }
 
+/* The only GSL calls of the closed-form models, so the only guarded path:
+ * markov, gauss and the others never touch the guard. */
 static double matern(double nu, double u)
 {
-    gsl_sf_result lk;
+    gsl_sf_result lk, lg;
+    int st;
     if (u == 0)
         return 1.0;
-    if (gsl_sf_bessel_lnKnu_e(nu, u, &lk) != 0)
+    nl_gsl_enter();
+    st = gsl_sf_bessel_lnKnu_e(nu, u, &lk) || gsl_sf_lngamma_e(nu, &lg);
+    nl_gsl_leave();
+    if (st)
         return 0.0;
-    return exp((1 - nu) * M_LN2 - gsl_sf_lngamma(nu) + nu * log(u) + lk.val);
+    return exp((1 - nu) * M_LN2 - lg.val + nu * log(u) + lk.val);
 }
 
 /* The 1D profile R1(t) of a model, t signed. */

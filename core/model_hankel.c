@@ -6,6 +6,7 @@
  *     3D  R(r) = 4 pi int S(k) sin(2 pi k r) / (2 pi k r) k^2 dk
  * over the band fmin <= k <= fmax (GSL QAWO for the trigonometric weights,
  * QAG for the Bessel one). */
+#include "gsl_guard_internal.h"
 #include "model_internal.h"
 
 #include <gsl/gsl_integration.h>
@@ -45,7 +46,7 @@ static double integrand_sinc3(double k, void *p)
     return 4 * M_PI * s_of(a->m, 3, k) * k / (2 * M_PI * a->r);
 }
 
-double nl_model_power_acf(const nl_model *m, int dim, double r)
+static double power_acf(const nl_model *m, int dim, double r)
 {
     struct arg a = {m, dim, fabs(r)};
     gsl_integration_workspace *w = gsl_integration_workspace_alloc(2000);
@@ -72,6 +73,16 @@ double nl_model_power_acf(const nl_model *m, int dim, double r)
     return st == 0 ? val : NAN;
 }
 
+/* One guard per value: a quadrature costs far more than the guard. */
+double nl_model_power_acf(const nl_model *m, int dim, double r)
+{
+    double v;
+    nl_gsl_enter();
+    v = power_acf(m, dim, r);
+    nl_gsl_leave();
+    return v;
+}
+
 /* Lewis 1987, eq. (13): the spectrum of an isotropic n-dimensional R,
  *     S(w) = 2 pi w^(1 - n/2) int_0^inf R(r) J_{n/2 - 1}(2 pi w r) r^(n/2) dr,
  * for w > 0 (J_{-1/2}(x) = sqrt(2 / (pi x)) cos x in 1D), and
@@ -95,7 +106,7 @@ static double hankel_integrand(double r, void *p)
     return R * J * pow(r, a->n / 2.0);
 }
 
-double nl_model_spectrum_iso(const nl_model *m, int dim, double w)
+static double spectrum_iso(const nl_model *m, int dim, double w)
 {
     static const double sphere[] = {0, 2, 2 * M_PI, 4 * M_PI, 2 * M_PI * M_PI};
     double zero[3] = {0, 0, 0}, r0 = nl_model_acf(m, dim < 3 ? dim : 3, zero), rmax = 1e-3, val, err;
@@ -121,4 +132,13 @@ double nl_model_spectrum_iso(const nl_model *m, int dim, double w)
     if (a.w == 0)
         return sphere[dim] * val;
     return 2 * M_PI * pow(a.w, 1 - dim / 2.0) * val;
+}
+
+double nl_model_spectrum_iso(const nl_model *m, int dim, double w)
+{
+    double v;
+    nl_gsl_enter();
+    v = spectrum_iso(m, dim, w);
+    nl_gsl_leave();
+    return v;
 }

@@ -1,5 +1,6 @@
 /* Philox4x32-10 counter-based Gaussian numbers. */
 #include "rng.h"
+#include "gsl_guard_internal.h"
 
 #include <gsl/gsl_cdf.h>
 #include <math.h>
@@ -57,6 +58,7 @@ unsigned long nl_rng_poisson(uint64_t seed, uint32_t stream, uint64_t index, uin
     unsigned long lo = 0, hi = (unsigned long)(mean + 20 * sqrt(mean) + 20);
     if (!(mean > 0))
         return 0;
+    nl_gsl_enter();
     while (lo < hi) {
         unsigned long mid = lo + (hi - lo) / 2;
         if (gsl_cdf_poisson_P((unsigned)mid, mean) < u)
@@ -64,5 +66,6 @@ unsigned long nl_rng_poisson(uint64_t seed, uint32_t stream, uint64_t index, uin
         else
             hi = mid;
     }
+    nl_gsl_leave();
     return lo;
 }

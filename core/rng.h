@@ -14,7 +14,10 @@
  *
  * Streams in use: NL_STREAM_WHITE is the white noise under FFT synthesis
  * (samples 2k and 2k + 1 in row-major order are the pair of index k), so
- * two models synthesised with the same seed and size share it. */
+ * two models synthesised with the same seed and size share it.
+ *
+ * No function here returns a status or allocates; all are pure functions of
+ * their arguments and thread-safe. */
 #ifndef NL_RNG_H
 #define NL_RNG_H
 
@@ -38,7 +41,8 @@ double nl_rng_gauss2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t su
 void nl_rng_gauss_pair(uint64_t seed, uint32_t stream, uint64_t index, double g[2]);
 
 /* Poisson(mean) by inversion of its CDF (GSL) at nl_rng_uniform2(seed,
- * stream, index, sub); mean <= 1e8. */
+ * stream, index, sub); 0 for mean <= 0 or NAN; mean <= 1e8 (beyond, the
+ * search bound overflows).  The GSL CDF runs under the library's guard. */
 unsigned long nl_rng_poisson(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub, double mean);
 
 #endif

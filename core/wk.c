@@ -1,5 +1,6 @@
 /* Sampling models on wrapped grids; Wiener-Khinchine by FFT. */
 #include "wk.h"
+#include "gsl_guard_internal.h"
 #include "fftw_plan.h"
 #include "mem.h"
 #include "nl_error.h"
@@ -107,23 +108,31 @@ static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *ds
     int sym = reentrant && ni == n0 && rows > 1;
     if (st)
         return st;
-#pragma omp parallel for schedule(dynamic, 16) if (reentrant && rows * ni > 65536)
-    for (size_t r = 0; r < rows; r++) {
-        size_t idx[3] = {0, r % g->n[1], r / g->n[1]};
-        if (sym && mirror_row(g, r) < r)
-            continue;
-        for (size_t i = 0; i < ni; i++) {
-            double y;
-            idx[0] = i;
-            y = value_at(m, g, idx, freq);
-            if (!isfinite(y)) {
+    /* each worker brackets its share once, so that the models' own GSL
+     * guards (Matern, power) cost it a thread-local counter per value;
+     * nowait: the region's end is the only barrier, as before */
+#pragma omp parallel if (reentrant && rows * ni > 65536)
+    {
+        nl_gsl_enter();
+#pragma omp for schedule(dynamic, 16) nowait
+        for (size_t r = 0; r < rows; r++) {
+            size_t idx[3] = {0, r % g->n[1], r / g->n[1]};
+            if (sym && mirror_row(g, r) < r)
+                continue;
+            for (size_t i = 0; i < ni; i++) {
+                double y;
+                idx[0] = i;
+                y = value_at(m, g, idx, freq);
+                if (!isfinite(y)) {
 #pragma omp critical
-                if (r < bad)
-                    bad = r;
-                break;
+                    if (r < bad)
+                        bad = r;
+                    break;
+                }
+                dst[r * stride + i] = y;
             }
-            dst[r * stride + i] = y;
         }
+        nl_gsl_leave();
     }
     if (bad < rows) {
         size_t idx[3] = {0, bad % g->n[1], bad / g->n[1]};

@@ -12,7 +12,21 @@
  *     inverse  R_j = 1 / (n_1 h_1 ... n_d h_d) sum_k S_k exp(+2 pi i j.k / n)
  * so S is a two-sided spectral density in (variance) per (cycles per unit)^d
  * and R_0 is the Riemann sum of S over the grid frequencies.  The two are
- * exact inverses of each other. */
+ * exact inverses of each other.
+ *
+ * Statuses: NL_OK; NL_EINVAL (the model cannot be used in the field's
+ * dimension, it is not finite at some sampled lag or frequency (named in the
+ * message), the grids of input and output differ, or dim is not 1..3);
+ * NL_ETOOBIG (a scratch grid does not fit: nl_field_alloc); NL_ENOMEM;
+ * NL_EFAIL (FFTW could not plan; not seen in practice, FFTW_ESTIMATE plans
+ * every size).  On failure the output's contents are unspecified.
+ *
+ * Thread safety: the conversions and the samplers that convert plan FFTW on
+ * every call and so are not thread-safe (core/fftw_plan.h); sampling a
+ * spectral model's spectrum or an R model's R plans nothing and is
+ * thread-safe for reentrant models (nl_model_is_reentrant).  Models are
+ * sampled on OpenMP threads when reentrant and the grid has more than 65536
+ * values. */
 #ifndef NL_WK_H
 #define NL_WK_H
 
@@ -23,12 +37,13 @@
 static inline long nl_wrap(size_t j, size_t n) { return j <= n / 2 ? (long)j : (long)j - (long)n; }
 
 /* Fill R (whose dim, n and h are set) with the model's autocorrelation at the
- * wrapped lags.  Spectral models are sampled in frequency and converted. */
+ * wrapped lags.  Spectral models are sampled in frequency and converted
+ * (plans FFTW). */
 int nl_wk_sample_acf(const nl_model *m, nl_field *R);
 
 /* Fill S with the model's spectrum at the wrapped frequencies of a space grid
  * of R's n and h: the closed form for spectral models, otherwise the forward
- * conversion of the sampled autocorrelation. */
+ * conversion of the sampled autocorrelation (plans FFTW). */
 int nl_wk_sample_spectrum(const nl_model *m, nl_field *S);
 
 /* The same on the half grid of a real-to-complex transform, in half the
@@ -36,11 +51,14 @@ int nl_wk_sample_spectrum(const nl_model *m, nl_field *S);
  * (k n1 + j) (n0/2 + 1) + i standing for the wrapped frequency (i, j, k)
  * (free it with nl_free, core/mem.h);
  * the rest of the grid follows from evenness, S(-f) = S(f).  n and h hold
- * dim entries (h NULL: unit spacing). */
+ * dim entries (h NULL: unit spacing).  *out is NULL on failure.  Plans FFTW
+ * for non-spectral models.  NL_EINVAL also for dim outside 1..3. */
 int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, const double *h, double **out);
 
 /* Forward and inverse conversion of real, even (R_j = R_-j) fields; the
- * imaginary part, zero for even input up to rounding, is dropped. */
+ * imaginary part, zero for even input up to rounding, is dropped.  R and S
+ * must have the same dim and n (NL_EINVAL); the output's h is not read: the
+ * input's spacing sets the scaling.  Plan FFTW: not thread-safe. */
 int nl_wk_acf_to_spectrum(const nl_field *R, nl_field *S);
 int nl_wk_spectrum_to_acf(const nl_field *S, nl_field *R);
 

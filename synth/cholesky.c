@@ -1,6 +1,8 @@
 /* Cholesky factorisation of the grid covariance matrix (GSL). */
 #include "cholesky.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/rng.h"
 
 #include <gsl/gsl_linalg.h>
@@ -23,7 +25,7 @@ void nl_synth_cholesky_plan_free(nl_synth_cholesky_plan *p)
     free(p);
 }
 
-int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h,
+static int cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h,
                               nl_synth_cholesky_plan **out)
 {
     nl_synth_cholesky_plan *p;
@@ -66,11 +68,12 @@ int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, co
             gsl_matrix_set(p->L, i, j, r);
             gsl_matrix_set(p->L, j, i, r);
         }
-    if (gsl_linalg_cholesky_decomp1(p->L) != 0) {
+    if ((st = gsl_linalg_cholesky_decomp1(p->L)) != 0) {
+        st = NL_ERROR(NL_ENOTPD, "%s: the %zu x %zu covariance matrix is not positive definite (Cholesky "
+                      "failed: %s); the model is not valid on this grid, or it is singular at this spacing",
+                      nl_model_spec(m), count, count, nl_gsl_reason(st));
         nl_synth_cholesky_plan_free(p);
-        return NL_ERROR(NL_ENOTPD, "%s: the %zu x %zu covariance matrix is not positive definite (Cholesky "
-                        "failed); the model is not valid on this grid, or it is singular at this spacing",
-                        nl_model_spec(m), count, count);
+        return st;
     }
     *out = p;
     return NL_OK;
@@ -90,4 +93,15 @@ int nl_synth_cholesky_execute(nl_synth_cholesky_plan *p, uint64_t seed, nl_field
         out->data[i] = s;
     }
     return NL_OK;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): GSL reports by status, never aborts. */
+int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h,
+                                 nl_synth_cholesky_plan **out)
+{
+    int st;
+    nl_gsl_enter();
+    st = cholesky_plan_alloc(m, dim, n, h, out);
+    nl_gsl_leave();
+    return st;
 }

@@ -2,6 +2,7 @@
 #include "lattice.h"
 #include "../core/fftw_plan.h"
 #include "../core/mem.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../core/wk.h"
@@ -172,6 +173,7 @@ static int fit_weights(int dim, const nl_model *m, nl_synth_lattice_plan *p, dou
     int O = p->octaves, active[NL_LATTICE_MAX_OCTAVES], st = NL_OK;
     for (int o = 0; o < O; o++)
         active[o] = 1;
+    nl_gsl_enter();
     for (int iter = 0; iter < O; iter++) {
         int k = 0, map[NL_LATTICE_MAX_OCTAVES], neg = 0;
         for (int o = 0; o < O; o++)
@@ -194,8 +196,9 @@ static int fit_weights(int dim, const nl_model *m, nl_synth_lattice_plan *p, dou
                 gsl_vector_set(y, (size_t)i, t);
                 gsl_vector_set(w, (size_t)i, t > 0 ? 1 / (t * t) : 0);
             }
-            if (gsl_multifit_wlinear(X, w, y, c, cov, &chi2, ws))
-                st = NL_ERROR(NL_EFAIL, "lattice: the weight fit failed");
+            int gst = gsl_multifit_wlinear(X, w, y, c, cov, &chi2, ws);
+            if (gst)
+                st = NL_ERROR(NL_EFAIL, "lattice: the weight fit failed: %s", nl_gsl_reason(gst));
             for (int j = 0; !st && j < k; j++) {
                 double v = gsl_vector_get(c, (size_t)j);
                 if (v < 0)
@@ -208,6 +211,7 @@ static int fit_weights(int dim, const nl_model *m, nl_synth_lattice_plan *p, dou
         if (st || !neg)
             break;
     }
+    nl_gsl_leave();
     for (int o = 0; o < O; o++)
         if (!active[o])
             p->weight[o] = 0;

@@ -1,5 +1,6 @@
 /* y = F_y^-1(F_x(x)) by table lookup or by ranks. */
 #include "shape.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 
 #include <gsl/gsl_cdf.h>
@@ -8,7 +9,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical)
+static int synth_shape(nl_field *f, const nl_dist *to, int empirical)
 {
     if (f->count < 2)
         return NL_ERROR(NL_EINVAL, "shape: expected at least 2 samples, got %zu", f->count);
@@ -50,4 +51,14 @@ int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical)
     }
     free(g);
     return NL_OK;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical)
+{
+    int st;
+    nl_gsl_enter();
+    st = synth_shape(f, to, empirical);
+    nl_gsl_leave();
+    return st;
 }

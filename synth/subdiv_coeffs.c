@@ -1,6 +1,7 @@
 /* Midpoint estimation coefficients of generalized stochastic subdivision:
  * Lewis 1987, eqs. (4), (6), (7), (10), (12). */
 #include "subdiv.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
@@ -72,7 +73,7 @@ static int pinv_solve(gsl_matrix *A, const gsl_vector *b, gsl_vector *x)
     return st;
 }
 
-int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
+static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
                  const double *reset, nl_subdiv_class *cls)
 {
     gsl_matrix *A = gsl_matrix_alloc(n, n), *F = gsl_matrix_alloc(n, n);
@@ -92,8 +93,9 @@ int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, con
         gsl_vector_set(b, j, acf_at(m, dim, target, pts + j * dim));
     }
     gsl_matrix_memcpy(F, A);
-    if (eig_range(F, &lmin, &amax, &amin)) {
-        st = NL_ERROR(NL_EFAIL, "the eigenvalues of a %zu x %zu system did not converge", n, n);
+    if ((st = eig_range(F, &lmin, &amax, &amin))) {
+        st = NL_ERROR(NL_EFAIL, "the eigenvalues of a %zu x %zu system did not converge: %s", n, n,
+                      nl_gsl_reason(st));
         goto done;
     }
     cls->min_eigenvalue = lmin;
@@ -108,8 +110,8 @@ int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, con
     } else {
         gsl_matrix_memcpy(F, A);
         cls->flags |= NL_SUBDIV_PINV;
-        if (pinv_solve(F, b, x)) {
-            st = NL_ERROR(NL_EFAIL, "the SVD of a %zu x %zu system failed", n, n);
+        if ((st = pinv_solve(F, b, x))) {
+            st = NL_ERROR(NL_EFAIL, "the SVD of a %zu x %zu system failed: %s", n, n, nl_gsl_reason(st));
             goto done;
         }
     }
@@ -384,4 +386,15 @@ int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, ui
         for (int j = 0; j < c->level[lv].nclass; j++)
             c->flags |= c->level[lv].cls[j].flags;
     return NL_OK;
+}
+
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
+                    const double *reset, nl_subdiv_class *cls)
+{
+    int st;
+    nl_gsl_enter();
+    st = subdiv_solve(m, dim, n, pts, target, reset, cls);
+    nl_gsl_leave();
+    return st;
 }

@@ -1,7 +1,6 @@
 /* Running the CLI from tests and scratch space. */
 #include "util.h"
 
-#include <gsl/gsl_errno.h>
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -63,5 +62,3 @@ int count_lines(const char *s)
     return n;
 }
 
-/* As in noiselab's main: GSL reports errors by status, never aborts. */
-__attribute__((constructor)) static void gsl_errors_by_status(void) { gsl_set_error_handler_off(); }

@@ -14,7 +14,6 @@
  * (NOISELAB_MEMORY_LIMIT), so sizes that would take long are refused. */
 #include "../../cli/cli.h"
 
-#include <gsl/gsl_errno.h>
 #include <jansson.h>
 #include <setjmp.h>
 #include <stdint.h>
@@ -33,7 +32,6 @@ static void setup(void)
         return;
     setenv("NOISELAB_MEMORY_LIMIT", "4194304", 1);
     setenv("NOISELAB_FFTW", "estimate", 1);
-    gsl_set_error_handler_off();
     cli_exit_hook = escape;
     if (!freopen("/dev/null", "w", stdout))
         abort();

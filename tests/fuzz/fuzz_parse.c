@@ -6,7 +6,6 @@
 #include "../../core/io.h"
 #include "../../core/model.h"
 
-#include <gsl/gsl_errno.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,7 +15,6 @@
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static char path[64];
-    gsl_set_error_handler_off();
     /* a file may declare any size: refuse beyond 512 MB, as a small machine would */
     setenv("NOISELAB_MEMORY_LIMIT", "536870912", 0);
 #if FUZZ_TARGET == 1 || FUZZ_TARGET == 2
