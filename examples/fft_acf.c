@@ -15,24 +15,27 @@ int main(void)
     const size_t n[2] = {128, 128};
     nl_model *m = NULL;
     nl_synth_fft_plan *plan = NULL;
-    nl_field *f = NULL;
+    nl_acf_plan *est = NULL;
+    nl_field *f = NULL, *acf = NULL;
     double lag[MAXLAG + 1], val[MAXLAG + 1], avg[MAXLAG + 1] = {0};
 
     int st = nl_model_parse("markov:scale=8", &m);
     if (st == NL_OK)
         st = nl_synth_fft_plan_alloc(m, 2, n, NULL, 0, &plan); /* the costly part, once */
     if (st == NL_OK)
+        st = nl_acf_plan_alloc(2, n, &est); /* the estimator's FFTW plans, once */
+    if (st == NL_OK)
         f = nl_field_alloc(2, n, NULL, &st);
+    if (st == NL_OK)
+        acf = nl_acf_plan_output_alloc(est, NULL, &st);
     for (uint64_t seed = 1; st == NL_OK && seed <= SEEDS; seed++) {
-        nl_field *acf = NULL;
         st = nl_synth_fft_execute(plan, seed, f); /* one realization per seed */
         if (st == NL_OK)
-            st = nl_acf_full(f, NAN, NL_ACF_BIASED, &acf); /* NAN: subtract the sample mean */
+            st = nl_acf_plan_execute(est, f, NAN, NL_ACF_BIASED, acf); /* NAN: subtract the sample mean */
         if (st == NL_OK)
             st = nl_acf_axis(acf, 0, MAXLAG, lag, val);
         for (int i = 0; st == NL_OK && i <= MAXLAG; i++)
             avg[i] += val[i] / SEEDS;
-        nl_field_free(acf);
     }
     if (st == NL_OK) {
         printf("lag\testimate\tmodel\n");
@@ -43,7 +46,9 @@ int main(void)
     } else {
         fprintf(stderr, "fft_acf: %s\n", nl_errmsg());
     }
+    nl_field_free(acf);
     nl_field_free(f);
+    nl_acf_plan_free(est);
     nl_synth_fft_plan_free(plan);
     nl_model_free(m);
     return st == NL_OK ? 0 : 1;
