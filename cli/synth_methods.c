@@ -251,7 +251,7 @@ void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_resu
         cli_die(2, "synth lattice: expected a 1D or 2D --size, got %dD", job->dim);
     if (!O)
         O = nl_synth_lattice_default_octaves(c0);
-    if ((st = nl_synth_lattice_plan_alloc(job->m, job->dim, c0, O, &p)) || (st = nl_synth_lattice_execute(&p, job->seed, f)))
+    if ((st = nl_synth_lattice_plan_init(job->m, job->dim, c0, O, &p)) || (st = nl_synth_lattice_execute(&p, job->seed, f)))
         cli_die_status(st);
     for (int o = 0; o < p.octaves; o++)
         json_array_append_new(oct, json_pack("{s:f,s:f,s:f,s:f}", "cell", p.cell[o], "weight", p.weight[o], "peak",

@@ -218,7 +218,7 @@ static int fit_weights(int dim, const nl_model *m, nl_synth_lattice_plan *p, dou
     return st;
 }
 
-int nl_synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p)
+int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p)
 {
     double probe[2] = {0.1, 0};
     int st;

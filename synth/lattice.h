@@ -40,9 +40,8 @@ typedef struct {
     double leakage[NL_LATTICE_MAX_OCTAVES];  /* fraction of octave power below its band */
 } nl_synth_lattice_plan;
 
-/* The plan is a plain struct the caller owns: nothing to free (the
- * _alloc name follows the other plans; it allocates nothing that outlives
- * the call).
+/* The plan is a plain struct the caller owns and nl_synth_lattice_plan_init
+ * fills in: it allocates nothing, so there is nothing to free.
  * Thread safety: the basis spectrum of each dimension is measured once per
  * process into static tables, on the first plan of that dimension; make the
  * first plan of each dimension from one thread.  After that, plans are
@@ -56,12 +55,12 @@ typedef struct {
  * closed-form spectrum in dim dimensions; NL_ENOMEM.  (GSL's weighted
  * least squares, an SVD of finite values, does not fail; it would give
  * NL_EFAIL.) */
-int nl_synth_lattice_plan_alloc(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);
+int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);
 
 /* The basis spectrum at cell c (samples) and frequency f (cycles per
  * sample), dim 1 or 2, per (cycles per sample)^dim; 0 from 8 / c up.  0
  * everywhere when the measurement could not run (out of memory);
- * nl_synth_lattice_plan_alloc reports that case. */
+ * nl_synth_lattice_plan_init reports that case. */
 double nl_synth_lattice_basis_spectrum(int dim, double c, double f);
 
 /* x = sum_o w_o noise_o into out (1D or 2D, periodic when every cell
