@@ -9,7 +9,7 @@ MAJOR     := $(firstword $(subst ., ,$(VERSION)))
 CC        ?= gcc
 OPT       ?= -O2 -g
 CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
-             -I/usr/include/OpenEXR -DNL_VERSION='"$(VERSION)"'
+             -I/usr/include/OpenEXR
 LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lgslcblas -lpng -ljansson -lmatheval -lm
 BUILD     := build
 
@@ -159,7 +159,7 @@ fuzz: $(DEPS_OK)
 	@n=1; for t in $(FUZZ_TARGETS); do \
 	    if [ $$n -le 3 ]; then src="tests/fuzz/fuzz_parse.c"; else src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)"; fi; \
 	    clang -O1 -g -fsanitize=fuzzer,address,undefined -DFUZZ_TARGET=$$n -D_GNU_SOURCE -I/usr/include/OpenEXR \
-	        -DNL_VERSION='"$(VERSION)"' $$src $(LIB_SRC) -o $(BUILD)/fuzz/$$t $(LDLIBS) -lgomp -lm || exit 1; \
+	        $$src $(LIB_SRC) -o $(BUILD)/fuzz/$$t $(LDLIBS) -lgomp -lm || exit 1; \
 	    mkdir -p $(BUILD)/fuzz/corpus-$$t $(BUILD)/fuzz/work-$$t && cp tests/fuzz/corpus/$$t/* $(BUILD)/fuzz/corpus-$$t/; \
 	    (cd $(BUILD)/fuzz/work-$$t && ASAN_OPTIONS=detect_leaks=0 ../$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	        -timeout=20 -artifact_prefix=../$$t- ../corpus-$$t) || exit 1; \

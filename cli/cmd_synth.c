@@ -1,6 +1,7 @@
 /* noiselab synth: synthesise a field with a prescribed model. */
 #include "synth.h"
 #include "../core/nl_error.h"
+#include "../core/version.h"
 
 #include <getopt.h>
 #include <inttypes.h>
@@ -407,7 +408,7 @@ static void fill_meta(const cli_synth_job *job, const nl_field *f, const cli_syn
     snprintf(meta->method, sizeof meta->method, "%s", res->method);
     snprintf(meta->flags, sizeof meta->flags, "%s", res->flags);
     snprintf(meta->seed, sizeof meta->seed, "%" PRIu64, job->seed);
-    snprintf(meta->version, sizeof meta->version, "%s", NL_VERSION);
+    snprintf(meta->version, sizeof meta->version, "%s", nl_version());
     for (int a = 0, k = 0, l = 0; a < job->dim; a++) {
         k += snprintf(meta->spacing + k, sizeof meta->spacing - (size_t)k, "%s%.17g", a ? "," : "", f->h[a]);
         l += snprintf(meta->size + l, sizeof meta->size - (size_t)l, "%s%zu", a ? "x" : "", job->n[a]);

@@ -2,6 +2,7 @@
  * spectrum, and measure what was produced. */
 #include "cli.h"
 #include "../core/fftw_plan.h"
+#include "../core/version.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -54,7 +55,7 @@ int cli_main(int argc, char **argv)
         return 0;
     }
     if (strcmp(argv[1], "--version") == 0) {
-        printf("noiselab %s\n", NL_VERSION);
+        printf("noiselab %s\n", nl_version());
         return 0;
     }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)

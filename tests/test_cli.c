@@ -1,6 +1,7 @@
 /* The command line: success paths, and every error path giving exit 2, one
  * line on stderr naming the bad value, and no output file. */
 #include "../core/io.h"
+#include "../core/version.h"
 #include "util.h"
 
 #include <criterion/criterion.h>
@@ -216,7 +217,7 @@ Test(cli, nl_synth_writes_exr_with_provenance)
     cr_assert_str_eq(meta.method, "fft");
     cr_assert_str_eq(meta.seed, "7");
     cr_assert_str_eq(meta.spacing, "0.5,0.5");
-    cr_assert_str_eq(meta.version, NL_VERSION);
+    cr_assert_str_eq(meta.version, NL_VERSION_STRING);
     nl_field_free(f);
     snprintf(path, sizeof path, "%s/a.png", scratch_dir());
     cr_assert(file_exists(path));
