@@ -40,17 +40,10 @@ static void make_stencil(const nl_subdiv_level *l, int dim, long cx, long cy, lo
     s->var = cl->variance;
 }
 
-int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,
-                        const long *lags, double *out)
+/* The coefficient sets and sizes the propagation supports. */
+static int check_supported(const nl_subdiv_coeffs *c, size_t nx, size_t ny, long cx, long cy)
 {
     const int dim = c->dim;
-    long cx = (long)(nx >> c->levels), cy = dim == 2 ? (long)(ny >> c->levels) : 1;
-    size_t cn[2] = {(size_t)cx, (size_t)cy}, big = nx * ny;
-    double h[2] = {c->spacing0, c->spacing0}, *C;
-    stencil *st;
-    nl_field *R;
-    int s;
-
     if ((dim == 2 ? 2 * c->level[c->levels - 1].N : 0) > 8 || (dim == 1 && c->level[c->levels - 1].N > 128))
         return NL_ERROR(NL_EINVAL, "exact covariance: neighbourhood too large");
     for (int k = 0; k < c->levels; k++)
@@ -60,22 +53,29 @@ int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx,
         for (int j = 0; j < c->level[k].nclass; j++)
             if (c->level[k].cls[j].nalt)
                 return NL_ERROR(NL_EINVAL, "exact covariance: random neighbourhoods are not supported");
-    if (big > 4096)
-        return NL_ERROR(NL_ETOOBIG, "exact covariance: expected at most 4096 samples, got %zu", big);
+    if (nx * ny > 4096)
+        return NL_ERROR(NL_ETOOBIG, "exact covariance: expected at most 4096 samples, got %zu", nx * ny);
     if ((size_t)cx << c->levels != nx || (dim == 2 && (size_t)cy << c->levels != ny) || cx < 2)
         return NL_ERROR(NL_EINVAL, "exact covariance: the size must be the coarse size times 2^levels");
-    /* coarse covariance: the model wrapped on the coarse grid (core/wk.h) */
-    R = nl_field_alloc(dim, cn, h, &s);
+    return NL_OK;
+}
+
+/* The covariance matrix of the coarse grid (cx x cy, periodic): the model
+ * wrapped on it (core/wk.h).  *out is malloc'd (n^2 doubles, n = cx cy). */
+static int coarse_covariance(const nl_subdiv_coeffs *c, const nl_model *m, long cx, long cy, double **out)
+{
+    size_t cn[2] = {(size_t)cx, (size_t)cy};
+    double h[2] = {c->spacing0, c->spacing0}, *C;
+    int s;
+    nl_field *R = nl_field_alloc(c->dim, cn, h, &s);
     if (!R)
         return s;
     if ((s = nl_wk_sample_acf(m, R))) {
         nl_field_free(R);
         return s;
     }
-    C = malloc((size_t)(cx * cy) * (size_t)(cx * cy) * sizeof *C);
-    st = malloc(sizeof *st);
-    if (!C || !st) {
-        free(C), free(st), nl_field_free(R);
+    if (!(C = malloc((size_t)(cx * cy) * (size_t)(cx * cy) * sizeof *C))) {
+        nl_field_free(R);
         return NL_ERROR(NL_ENOMEM, "out of memory");
     }
     for (long p = 0; p < cx * cy; p++)
@@ -84,47 +84,82 @@ int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx,
             C[p * cx * cy + q] = R->data[dy * cx + dx];
         }
     nl_field_free(R);
-    for (int k = 0; k < c->levels; k++) {
-        long nx2 = 2 * cx, ny2 = dim == 2 ? 2 * cy : 1, n1 = cx * cy, n2 = nx2 * ny2;
-        double *T = calloc((size_t)(n2 * n1), sizeof *T), *C2 = malloc((size_t)(n2 * n2) * sizeof *C2);
-        if (!T || !C2) {
-            free(T), free(C2), free(C), free(st);
-            return NL_ERROR(NL_ENOMEM, "out of memory");
-        }
-        for (long P = 0; P < n2; P++) {  /* T = M C */
-            make_stencil(&c->level[k], dim, cx, cy, P % nx2, P / nx2, st);
+    *out = C;
+    return NL_OK;
+}
+
+/* One level: C' = M C M^T + D on the grid twice as fine (Lewis 1987,
+ * eqs. 4 and 7 per new point; D diagonal, the displacements independent).
+ * *C (cx x cy points) is replaced by the new matrix. */
+static int refine_level(const nl_subdiv_level *l, int dim, long cx, long cy, stencil *st, double **C)
+{
+    long nx2 = 2 * cx, ny2 = dim == 2 ? 2 * cy : 1, n1 = cx * cy, n2 = nx2 * ny2;
+    double *T = calloc((size_t)(n2 * n1), sizeof *T), *C2 = malloc((size_t)(n2 * n2) * sizeof *C2);
+    if (!T || !C2) {
+        free(T), free(C2);
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    for (long P = 0; P < n2; P++) {  /* T = M C */
+        make_stencil(l, dim, cx, cy, P % nx2, P / nx2, st);
+        for (int q = 0; q < st->n; q++)
+            for (long j = 0; j < n1; j++)
+                T[P * n1 + j] += st->w[q] * (*C)[st->idx[q] * n1 + j];
+    }
+    for (long Q = 0; Q < n2; Q++) {  /* C' = T M^T + D */
+        make_stencil(l, dim, cx, cy, Q % nx2, Q / nx2, st);
+        for (long P = 0; P < n2; P++) {
+            double v = 0;
             for (int q = 0; q < st->n; q++)
-                for (long j = 0; j < n1; j++)
-                    T[P * n1 + j] += st->w[q] * C[st->idx[q] * n1 + j];
+                v += st->w[q] * T[P * n1 + st->idx[q]];
+            C2[P * n2 + Q] = v + (P == Q ? st->var : 0);
         }
-        for (long Q = 0; Q < n2; Q++) {  /* C' = T M^T + D */
-            make_stencil(&c->level[k], dim, cx, cy, Q % nx2, Q / nx2, st);
-            for (long P = 0; P < n2; P++) {
-                double v = 0;
-                for (int q = 0; q < st->n; q++)
-                    v += st->w[q] * T[P * n1 + st->idx[q]];
-                C2[P * n2 + Q] = v + (P == Q ? st->var : 0);
-            }
+    }
+    free(T);
+    free(*C);
+    *C = C2;
+    return NL_OK;
+}
+
+/* The covariance at lag (lx, ly) averaged over the pairs inside the grid. */
+static double lag_average(const double *C, long cx, long cy, long lx, long ly)
+{
+    double sum = 0;
+    long cnt = 0;
+    for (long y = 0; y < cy; y++)
+        for (long x = 0; x < cx; x++) {
+            long x2 = x + lx, y2 = y + ly;
+            if (x2 < 0 || x2 >= cx || y2 < 0 || y2 >= cy)
+                continue;
+            sum += C[(y * cx + x) * cx * cy + y2 * cx + x2];
+            cnt++;
         }
-        free(T);
+    return cnt ? sum / (double)cnt : 0;
+}
+
+int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,
+                        const long *lags, double *out)
+{
+    const int dim = c->dim;
+    long cx = (long)(nx >> c->levels), cy = dim == 2 ? (long)(ny >> c->levels) : 1;
+    double *C = NULL;
+    stencil *st;
+    int s;
+
+    if ((s = check_supported(c, nx, ny, cx, cy)) || (s = coarse_covariance(c, m, cx, cy, &C)))
+        return s;
+    if (!(st = malloc(sizeof *st))) {
         free(C);
-        C = C2;
-        cx = nx2, cy = ny2;
+        return NL_ERROR(NL_ENOMEM, "out of memory");
     }
-    for (size_t i = 0; i < nlags; i++) {
-        long lx = lags[2 * i], ly = dim == 2 ? lags[2 * i + 1] : 0;
-        double sum = 0;
-        long cnt = 0;
-        for (long y = 0; y < cy; y++)
-            for (long x = 0; x < cx; x++) {
-                long x2 = x + lx, y2 = y + ly;
-                if (x2 < 0 || x2 >= cx || y2 < 0 || y2 >= cy)
-                    continue;
-                sum += C[(y * cx + x) * cx * cy + y2 * cx + x2];
-                cnt++;
-            }
-        out[i] = cnt ? sum / (double)cnt : 0;
+    for (int k = 0; k < c->levels; k++) {
+        if ((s = refine_level(&c->level[k], dim, cx, cy, st, &C))) {
+            free(C), free(st);
+            return s;
+        }
+        cx *= 2, cy = dim == 2 ? 2 * cy : 1;
     }
+    for (size_t i = 0; i < nlags; i++)
+        out[i] = lag_average(C, cx, cy, lags[2 * i], dim == 2 ? lags[2 * i + 1] : 0);
     free(C);
     free(st);
     return NL_OK;
