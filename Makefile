@@ -84,6 +84,10 @@ $(BIN): $(CLI_OBJ) $(LIB)
 $(BUILD)/tests/run: $(TEST_OBJ) $(LIB)
 	$(CC) $(CFLAGS) -o $@ $(TEST_OBJ) $(LIB) $(LDLIBS) -lcriterion
 
+# The catalogue of hostile inputs checks field outputs with this.
+$(BUILD)/tests/finite: $(BUILD)/tests/bad/finite.o $(LIB)
+	$(CC) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 	$(CC) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
 
@@ -92,8 +96,9 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # tests plan with FFTW_ESTIMATE, except the one comparing the two planners.
 # Then tools/test-install.sh installs into a scratch DESTDIR and builds the
 # examples and the README's example against it with pkg-config alone.
-test: all $(BUILD)/tests/run $(EXP_BIN)
+test: all $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
+	NOISELAB_FFTW=estimate sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
 	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) sh tools/test-install.sh
