@@ -3,7 +3,10 @@
 #include "../core/nl_error.h"
 #include "../core/version.h"
 
+#include <errno.h>
+#include <float.h>
 #include <getopt.h>
+#include <limits.h>
 #include <inttypes.h>
 #include <math.h>
 #include <stdio.h>
@@ -73,10 +76,24 @@ typedef struct {
     int given_L, given_N, given_tol, given_vs, given_density; /* explicitly given */
 } cli_synth_args;
 
+/* Window origins stay within +-2^30 samples: the 2D generators index
+ * lattice points by 32-bit coordinates, and origin + size + reach must not
+ * overflow a long. */
+#define CLI_ORIGIN_MAX (1L << 30)
+
+static void check_origin(const char *opt, const char *s, const long *o)
+{
+    for (int a = 0; a < 2; a++)
+        if (o[a] < -CLI_ORIGIN_MAX || o[a] > CLI_ORIGIN_MAX)
+            cli_die(2, "%s: expected window indices from -%ld to %ld, got \"%s\"", opt, CLI_ORIGIN_MAX,
+                    CLI_ORIGIN_MAX, s);
+}
+
 static void parse_origin(const char *s, long *o)
 {
     char *end, *p;
     int ok;
+    errno = 0;
     o[0] = strtol(s, &end, 10);
     ok = end != s;
     if (ok && *end == ',') {
@@ -86,6 +103,9 @@ static void parse_origin(const char *s, long *o)
     }
     if (!ok || *end)
         cli_die(2, "--origin: expected X or X,Y (integers), got \"%s\"", s);
+    if (errno == ERANGE)
+        o[0] = o[1] = LONG_MAX;
+    check_origin("--origin", s, o);
 }
 
 /* The method's recorded options: "k=v,...|k=v|..." (what follows "name:"
@@ -115,7 +135,12 @@ static void apply_keys(char *rest, cli_synth_job *job)
             else if (!strcmp(kv, "neighborhood")) job->N = strcmp(v, "auto") ? atoi(v) : 0;
             else if (!strcmp(kv, "tol")) job->tol = atof(v);
             else if (!strcmp(kv, "nonperiodic")) job->nonperiodic = 1;
-            else if (!strcmp(kv, "origin")) sscanf(v, "%ld:%ld", &job->origin[0], &job->origin[1]);
+            else if (!strcmp(kv, "origin")) {
+                errno = 0;
+                if (sscanf(v, "%ld:%ld", &job->origin[0], &job->origin[1]) != 2 || errno == ERANGE)
+                    job->origin[0] = LONG_MAX;
+                check_origin("--from: origin", v, job->origin);
+            }
             else if (!strcmp(kv, "random-neighborhoods")) job->random_nb = atoi(v);
             else if (!strcmp(kv, "H")) job->H = atof(v);
             else if (!strcmp(kv, "variance-scale")) job->vscale = atof(v);
@@ -352,6 +377,9 @@ static void check_method_options(const cli_synth_job *job, const cli_synth_args 
     only_for("--H", !isnan(job->H), job->method, "midpoint");
     only_for("--variance-scale", g->given_vs, job->method, "midpoint");
     only_for("--density", g->given_density, job->method, "faulting sparse");
+    if (g->origin && job->wrap)
+        cli_die(2, "synth sparse: --origin \"%s\" and --wrap exclude each other (a periodic tile has no origin)",
+                g->origin);
     if (g->origin && !job->nonperiodic && strcmp(job->method, "subdiv") == 0)
         cli_die(2, "synth subdiv: --origin needs --nonperiodic (a periodic field has no origin)");
 }
@@ -419,6 +447,9 @@ static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_
 {
     json_t *o = json_pack("{s:s,s:s,s:I,s:s,s:s}", "model", meta->model, "method", meta->method, "seed",
                           (json_int_t)job->seed, "size", meta->size, "spacing", meta->spacing);
+    /* JSON integers here are signed 64-bit: a larger seed is given as its decimal string */
+    if (job->seed > (uint64_t)INT64_MAX)
+        json_object_set_new(o, "seed", json_string(meta->seed));
     json_t *fl = json_array();
     const char *p = res->flags;
     while (*p) {
@@ -430,6 +461,17 @@ static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_
     if (res->report)
         json_object_update(o, res->report);
     cli_json_print(o);
+}
+
+/* Nothing non-finite is written, and an EXR (float32) holds every sample. */
+static void check_output(const cli_synth_job *job, const cli_synth_args *g, const nl_field *f)
+{
+    int exr = cli_has_ext(g->out, ".exr");
+    size_t k;
+    if (nl_field_check_finite(f, exr ? FLT_MAX : INFINITY, &k))
+        cli_die(2, "synth %s%s%s: %s%s; %s not written", job->method, job->m ? " " : "",
+                job->m ? nl_model_spec(job->m) : "", nl_errmsg(),
+                isfinite(f->data[k]) ? " of float32 EXR (lower the variance)" : "", g->out);
 }
 
 int cli_cmd_synth(int argc, char **argv)
@@ -461,6 +503,7 @@ int cli_cmd_synth(int argc, char **argv)
     cli_phase("synth", job.method);
     run(&job, f, &res);
     fill_meta(&job, f, &res, &meta);
+    check_output(&job, &g, f);
     cli_phase("synth", "writing");
     cli_write_field(g.out, tmp, f, &meta);
     if (g.preview && (st = nl_png_write_field(ptmp, f, res.offset - 3 * res.sd, res.offset + 3 * res.sd)))

@@ -5,6 +5,7 @@
 
 #include <stdio.h>
 #include <fftw3.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -101,4 +102,24 @@ void nl_field_free(nl_field *f)
         return;
     nl_free(f->data);
     free(f);
+}
+
+int nl_field_check_finite(const nl_field *f, double limit, size_t *first)
+{
+    for (size_t k = 0; k < f->count; k++) {
+        double v = f->data[k];
+        if (isfinite(v) && fabs(v) <= limit)
+            continue;
+        size_t i = k % f->n[0], j = k / f->n[0] % f->n[1], l = k / (f->n[0] * f->n[1]);
+        if (first)
+            *first = k;
+        if (!isfinite(v))
+            return NL_ERROR(NL_EINVAL, "sample %zu (x %zu, y %zu, z %zu) is %g, expected a finite number", k, i, j,
+                            l, v);
+        return NL_ERROR(NL_EINVAL, "sample %zu (x %zu, y %zu, z %zu) is %g, beyond the largest magnitude %g", k, i,
+                        j, l, v, limit);
+    }
+    if (first)
+        *first = f->count;
+    return NL_OK;
 }

@@ -39,6 +39,13 @@ nl_field *nl_field_alloc(int dim, const size_t *n, const double *h, int *status)
 /* Release a field from nl_field_alloc or any reader; NULL is a no-op. */
 void nl_field_free(nl_field *f);
 
+/* Check every sample: NL_OK when each is finite and its magnitude at most
+ * `limit` (INFINITY: finiteness only; FLT_MAX: representable in a float32
+ * file); otherwise NL_EINVAL with a message naming the first bad sample
+ * (its index, x, y, z and value).  *first (when not NULL) receives that
+ * index, or f->count when every sample passes.  Reads f only; thread-safe. */
+int nl_field_check_finite(const nl_field *f, double limit, size_t *first);
+
 /* Bytes of memory available to this process now (MemAvailable, lowered by
  * the environment variable NOISELAB_MEMORY_LIMIT in bytes when set to a
  * positive integer), or 0 if unknown.  Reads /proc/meminfo on every call. */
