@@ -197,6 +197,20 @@ void cli_synth_faulting_run(const cli_synth_job *job, nl_field *f, cli_synth_res
     r->report = json_pack("{s:I,s:f}", "faults", (json_int_t)K, "density", job->density);
 }
 
+/* Flags: a clamped spectrum, and a kernel that loses more than
+ * CLI_SPARSE_TRUNC_FLAG of its energy at the radius (the variance is then
+ * R(0) less that fraction; the report gives it as truncated_energy). */
+#define CLI_SPARSE_TRUNC_FLAG 1e-3
+
+static void sparse_flags(const nl_synth_sparse_info *info, char *flags, size_t size)
+{
+    int k = 0;
+    if (info->clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
+        k = snprintf(flags, size, "clamped");
+    if (info->truncated > CLI_SPARSE_TRUNC_FLAG)
+        snprintf(flags + k, size - (size_t)k, "%struncated=%.2g", k ? "," : "", info->truncated);
+}
+
 void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     nl_synth_sparse_plan *p;
@@ -207,7 +221,8 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
     if (given != 1)
         cli_die(2, "synth sparse: expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE");
     if (job->m)
-        st = nl_synth_sparse_plan_model(job->m, job->dim, job->h, job->radius, job->cell, job->density, &p);
+        st = nl_synth_sparse_plan_model_flags(job->m, job->dim, job->h, job->radius, job->cell, job->density,
+                                              job->clamp ? NL_SYNTH_FFT_CLAMP : 0, &p);
     else if (job->kernel)
         st = nl_synth_sparse_plan_expr(job->kernel, job->dim, job->radius ? job->radius : 16, job->cell, job->density,
                                     &p);
@@ -222,8 +237,6 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
     if (job->angle && (st = nl_synth_sparse_set_angle(p, job->angle)))
         cli_die_status(st);
     nl_synth_sparse_plan_info(p, &info);
-    if (job->wrap && job->nonperiodic)
-        cli_die(2, "synth sparse: --wrap and --origin exclude each other");
     cli_check(nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f));
     nl_synth_sparse_plan_free(p);
     /* expression-valued keys follow '|', as they may hold commas */
@@ -234,11 +247,14 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
              info.cell, info.density, job->wrap ? ",wrap" : org, job->kernel ? "|kernel=" : "",
              job->kernel ? job->kernel : "", job->exemplar ? "|exemplar=" : "", job->exemplar ? job->exemplar : "",
              job->angle ? "|angle=" : "", job->angle ? job->angle : "");
+    sparse_flags(&info, r->flags, sizeof r->flags);
     r->sd = sqrt(info.variance);
     r->offset = info.mean;
     r->report = json_pack("{s:i,s:i,s:f,s:f,s:f,s:f}", "radius", info.radius, "cell", info.cell, "density",
                           info.density, "variance", info.variance, "excess_kurtosis", info.kurtosis, "truncated_energy",
                           info.truncated);
+    if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
+        json_object_set_new(r->report, "clamp_error", json_real(info.clamp_error));
 }
 
 void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)

@@ -2,10 +2,10 @@
 #include "cholesky.h"
 #include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
-#include "../core/gsl_guard_internal.h"
 #include "../core/rng.h"
 
 #include <gsl/gsl_linalg.h>
+#include <math.h>
 #include <stdlib.h>
 
 struct nl_synth_cholesky_plan {
@@ -65,6 +65,14 @@ static int cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, cons
             for (int a = 0; a < 3; a++)
                 lag[a] = ((double)pi[a] - (double)pj[a]) * hh[a];
             double r = nl_model_acf(m, dim, lag);
+            if (!isfinite(r)) {
+                st = NL_ERROR(NL_EINVAL, "%s: the covariance is not finite (%g) at lag (%g, %g, %g)%s",
+                              nl_model_spec(m), r, lag[0], lag[1], lag[2],
+                              nl_model_is_spectral(m) ? "; cholesky needs the covariance at every lag of the "
+                                                        "grid: use fft or circulant for this spectrum" : "");
+                nl_synth_cholesky_plan_free(p);
+                return st;
+            }
             gsl_matrix_set(p->L, i, j, r);
             gsl_matrix_set(p->L, j, i, r);
         }

@@ -26,7 +26,8 @@ typedef struct nl_synth_cholesky_plan nl_synth_cholesky_plan;
  * the factor and a count-sample workspace; free with
  * nl_synth_cholesky_plan_free.  Not thread-safe (evaluates the model; GSL's
  * error handler).  Returns NL_OK and *out, or (*out = NULL)
- *   NL_EINVAL  dim outside 1..3, a zero size, a model unusable in dim;
+ *   NL_EINVAL  dim outside 1..3, a zero size, a model unusable in dim, a
+ *              covariance that is not finite at some lag of the grid;
  *   NL_ETOOBIG more than NL_SYNTH_CHOLESKY_MAX samples, or sizes overflow;
  *   NL_ENOTPD  the Cholesky factorisation fails;
  *   NL_ENOMEM  out of memory. */

@@ -6,11 +6,13 @@
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../core/wk.h"
+#include "fft.h"
 
 #include <complex.h>
 #include <fftw3.h>
 #include <math.h>
 #include <matheval.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,6 +23,7 @@ struct nl_synth_sparse_plan {
     double density;     /* impulses per cell */
     double *h;          /* (2R+1)^dim kernel table, x fastest */
     void *angle;        /* libmatheval theta(x, y) or NULL */
+    char *angle_expr;   /* its text, for messages */
     nl_synth_sparse_info info;
 };
 
@@ -30,6 +33,7 @@ void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p)
         return;
     if (p->angle)
         evaluator_destroy(p->angle);
+    free(p->angle_expr);
     free(p->h);
     free(p);
 }
@@ -74,6 +78,12 @@ static int new_plan(int dim, int radius, int cell, double density, nl_synth_spar
         return NL_ERROR(NL_EINVAL, "radius: expected 1 to 4096 samples, got %d", radius);
     if (cell < 0 || cell > 4096)
         return NL_ERROR(NL_EINVAL, "cell: expected 1 to 4096 samples, got %d", cell);
+    {
+        size_t nt = table_size(dim, radius);
+        int st = nl_size_check(1, &nt, sizeof(double), 1, NULL);
+        if (st)
+            return st;
+    }
     p = calloc(1, sizeof *p);
     if (!p || !(p->h = calloc(table_size(dim, radius), sizeof *p->h))) {
         free(p);
@@ -91,26 +101,28 @@ static int new_plan(int dim, int radius, int cell, double density, nl_synth_spar
     return NL_OK;
 }
 
-int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
-                            nl_synth_sparse_plan **out)
+/* The model's kernel on a periodic grid of mm samples per axis: g =
+ * IDFT(sqrt(lambda_k)) / M (real parts), its energy in *total; the
+ * positive-definiteness rule of FFT synthesis (synth/fft.h) on lambda_k:
+ * the fraction of the spectrum's mass that is negative goes to
+ * info->clamp_error, NL_ENOTPD above NL_SYNTH_FFT_CLAMP_TOL unless
+ * NL_SYNTH_FFT_CLAMP. */
+static int model_kernel(const nl_model *m, int dim, const double *hh, const size_t *mm, unsigned flags,
+                        fftw_complex **out, double *total, nl_synth_sparse_info *info)
 {
-    size_t mm[2], M, span;
-    double hh[2] = {h ? h[0] : 1, h && dim == 2 ? h[1] : 1}, cellh = hh[0] * (dim == 2 ? hh[1] : 1);
-    double total = 0, kept = 0, zero[2] = {0, 0};
+    size_t M = mm[0] * mm[1];
+    double cellh = hh[0] * (dim == 2 ? hh[1] : 1), neg = 0, pos = 0, lmin = INFINITY;
     nl_field *S;
     fftw_complex *g;
     fftw_plan fp;
-    int dims[2], st, R = radius;
+    int dims[2], st;
     *out = NULL;
-    if (dim != 1 && dim != 2)
-        return NL_ERROR(NL_EINVAL, "sparse: expected dimension 1 or 2, got %d", dim);
-    /* periodic grid for h = IDFT(sqrt(lambda)) / N: large enough that the
-     * kernel has decayed where it wraps */
-    span = radius > 0 ? (size_t)(4 * radius + 4) : (dim == 1 ? 8192 : 512);
-    for (mm[0] = 64; mm[0] < span; mm[0] *= 2)
-        ;
-    mm[1] = dim == 2 ? mm[0] : 1;
-    M = mm[0] * mm[1];
+    /* the sampled spectrum and the complex kernel are alive together */
+    if ((st = nl_size_check(dim, mm, sizeof(double) + sizeof(fftw_complex), 1, NULL))) {
+        char why[256];
+        snprintf(why, sizeof why, "%s", nl_errmsg());
+        return NL_ERROR(st, "radius: the kernel's FFT grid (%zu samples per axis) does not fit: %s", mm[0], why);
+    }
     S = nl_field_alloc(dim, mm, hh, &st);
     if (!S)
         return st;
@@ -118,58 +130,121 @@ int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int 
         nl_field_free(S);
         return st;
     }
-    g = nl_alloc(M * sizeof(fftw_complex));
+    for (size_t i = 0; i < M; i++) {
+        double l = S->data[i] / cellh;
+        if (l < 0)
+            neg -= l, info->negatives++;
+        else
+            pos += l;
+        lmin = fmin(lmin, l);
+    }
+    info->clamp_error = pos > 0 ? neg / pos : INFINITY;
+    if (!(pos > 0))
+        st = NL_ERROR(NL_ENOTPD, "%s: the sampled spectrum has no positive part on the kernel's grid",
+                      nl_model_spec(m));
+    else if (info->clamp_error > NL_SYNTH_FFT_CLAMP_TOL && !(flags & NL_SYNTH_FFT_CLAMP))
+        st = NL_ERROR(NL_ENOTPD,
+                      "%s: not positive definite on the kernel's grid: min spectrum %.3g; zeroing the %zu negative "
+                      "values would change the covariance by up to %.2g of R(0), above %.0e (use --clamp to accept)",
+                      nl_model_spec(m), lmin * cellh, info->negatives, info->clamp_error, NL_SYNTH_FFT_CLAMP_TOL);
+    g = st ? NULL : nl_alloc(M * sizeof(fftw_complex));
     for (int a = 0; a < dim; a++)
         dims[a] = (int)mm[dim - 1 - a];
     fp = g ? fftw_plan_dft(dim, dims, g, g, FFTW_BACKWARD, nl_fftw_flags(M)) : NULL;
     if (!fp) {
         nl_free(g), nl_field_free(S);
-        return NL_ERROR(NL_ENOMEM, "sparse: cannot plan the kernel FFT");
+        return st ? st : NL_ERROR(NL_ENOMEM, "sparse: cannot plan the kernel FFT");
     }
     for (size_t i = 0; i < M; i++)
         g[i] = sqrt(fmax(S->data[i] / cellh, 0));
     fftw_execute(fp);
     fftw_destroy_plan(fp);
     nl_field_free(S);
+    *total = 0;
     for (size_t i = 0; i < M; i++) {
         double v = creal(g[i]) / (double)M;
         g[i] = v;
-        total += v * v;
+        *total += v * v;
     }
-    if (R <= 0) {
-        /* the smallest box keeping all but 1e-4 of the energy */
-        for (R = 1; R < (int)mm[0] / 4; R++) {
-            double in = 0;
-            for (long j = dim == 2 ? -R : 0; j <= (dim == 2 ? R : 0); j++)
-                for (long i = -R; i <= R; i++) {
-                    double v = creal(g[((j + (long)mm[1]) % (long)mm[1]) * mm[0] + (size_t)((i + (long)mm[0]) % (long)mm[0])]);
-                    in += v * v;
-                }
-            if (in >= (1 - NL_SPARSE_ENERGY_TOL) * total)
-                break;
-        }
+    *out = g;
+    return NL_OK;
+}
+
+static double kernel_value(const fftw_complex *g, const size_t *mm, long i, long j)
+{
+    return creal(g[((j + (long)mm[1]) % (long)mm[1]) * mm[0] + (size_t)((i + (long)mm[0]) % (long)mm[0])]);
+}
+
+/* The smallest box keeping all but NL_SPARSE_ENERGY_TOL of the energy. */
+static int auto_radius(const fftw_complex *g, const size_t *mm, int dim, double total)
+{
+    int R;
+    for (R = 1; R < (int)mm[0] / 4; R++) {
+        double in = 0;
+        for (long j = dim == 2 ? -R : 0; j <= (dim == 2 ? R : 0); j++)
+            for (long i = -R; i <= R; i++) {
+                double v = kernel_value(g, mm, i, j);
+                in += v * v;
+            }
+        if (in >= (1 - NL_SPARSE_ENERGY_TOL) * total)
+            break;
     }
+    return R;
+}
+
+int nl_synth_sparse_plan_model_flags(const nl_model *m, int dim, const double *h, int radius, int cell,
+                                     double density, unsigned flags, nl_synth_sparse_plan **out)
+{
+    size_t mm[2], span;
+    double hh[2] = {h ? h[0] : 1, h && dim == 2 ? h[1] : 1};
+    double total = 0, kept = 0, zero[2] = {0, 0}, r0;
+    nl_synth_sparse_info info = {0};
+    fftw_complex *g;
+    int st, R = radius;
+    *out = NULL;
+    if (dim != 1 && dim != 2)
+        return NL_ERROR(NL_EINVAL, "sparse: expected dimension 1 or 2, got %d", dim);
+    if (radius > 4096)
+        return NL_ERROR(NL_EINVAL, "radius: expected 1 to 4096 samples, got %d", radius);
+    /* periodic grid for h = IDFT(sqrt(lambda)) / N: large enough that the
+     * kernel has decayed where it wraps */
+    span = radius > 0 ? (size_t)(4 * radius + 4) : (dim == 1 ? 8192 : 512);
+    for (mm[0] = 64; mm[0] < span; mm[0] *= 2)
+        ;
+    mm[1] = dim == 2 ? mm[0] : 1;
+    if ((st = model_kernel(m, dim, hh, mm, flags, &g, &total, &info)))
+        return st;
+    if (R <= 0)
+        R = auto_radius(g, mm, dim, total);
     if ((st = new_plan(dim, R, cell, density, out))) {
         nl_free(g);
         return st;
     }
     for (long j = dim == 2 ? -R : 0; j <= (dim == 2 ? R : 0); j++)
         for (long i = -R; i <= R; i++) {
-            double v = creal(g[((j + (long)mm[1]) % (long)mm[1]) * mm[0] + (size_t)((i + (long)mm[0]) % (long)mm[0])]);
+            double v = kernel_value(g, mm, i, j);
             (*out)->h[(size_t)(dim == 2 ? (j + R) * (2 * R + 1) : 0) + (size_t)(i + R)] = v;
             kept += v * v;
         }
     nl_free(g);
     (*out)->info.truncated = total > 0 ? 1 - kept / total : 0;
-    /* h * h = R within the box: the variance R(0) less the truncated energy */
-    st = finish(*out, nl_model_acf(m, dim, zero) * (1 - (*out)->info.truncated));
-    if (isnan(nl_model_acf(m, dim, zero)))
-        st = finish(*out, total * (1 - (*out)->info.truncated));
+    (*out)->info.clamp_error = info.clamp_error;
+    (*out)->info.negatives = info.negatives;
+    /* h * h = R within the box: the variance R(0) less the truncated energy
+     * (a spectrum model without a closed-form R(0): the kernel's energy) */
+    r0 = nl_model_acf(m, dim, zero);
+    st = finish(*out, (isnan(r0) ? total : r0) * (1 - (*out)->info.truncated));
     if (st) {
         nl_synth_sparse_plan_free(*out);
         *out = NULL;
     }
     return st;
+}
+
+int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
+                               nl_synth_sparse_plan **out)
+{
+    return nl_synth_sparse_plan_model_flags(m, dim, h, radius, cell, density, 0, out);
 }
 
 int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
@@ -267,8 +342,9 @@ int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr)
         return NL_ERROR(NL_ENOMEM, "out of memory");
     if (p->angle)
         evaluator_destroy(p->angle);
+    free(p->angle_expr);
+    p->angle_expr = copy;
     p->angle = evaluator_create(copy);
-    free(copy);
     if (!p->angle)
         return NL_ERROR(NL_EINVAL, "angle: malformed expression \"%s\"", expr);
     evaluator_get_variables(p->angle, &vars, &nv);
@@ -333,6 +409,20 @@ static int make_impulses(const nl_synth_sparse_plan *p, uint64_t seed, long cx0,
     memset(im, 0, sizeof *im);
     im->cx0 = cx0, im->cy0 = cy0, im->ncx = cx1 - cx0 + 1, im->ncy = cy1 - cy0 + 1;
     ncell = (size_t)im->ncx * (size_t)im->ncy;
+    {
+        /* offsets per cell, and five arrays per impulse (about density per cell) */
+        double want = p->density * (double)ncell * 1.5 + 64;
+        size_t n2[2] = {ncell + 1, 1}, ni = want < 1e18 ? (size_t)want : SIZE_MAX / 64;
+        int st = nl_size_check(1, n2, sizeof(size_t), 1, NULL);
+        if (!st && (st = nl_size_check(1, &ni, 2 * sizeof(long) + 3 * sizeof(double), 1, NULL))) {
+            char why[256];
+            snprintf(why, sizeof why, "%s", nl_errmsg());
+            return NL_ERROR(st, "density: %.3g impulses per cell over %zu cells do not fit: %s", p->density, ncell,
+                            why);
+        }
+        if (st)
+            return st;
+    }
     im->start = malloc((ncell + 1) * sizeof *im->start);
     cap = (size_t)(p->density * (double)ncell * 1.5) + 64;
     im->px = malloc(cap * sizeof *im->px), im->py = malloc(cap * sizeof *im->py);
@@ -372,6 +462,11 @@ static int make_impulses(const nl_synth_sparse_plan *p, uint64_t seed, long cx0,
                 if (p->angle) {
                     double v[2] = {(double)im->px[total], (double)im->py[total]};
                     double th = evaluator_evaluate(p->angle, 2, (char **)names, v);
+                    if (!isfinite(th)) {
+                        impulses_free(im);
+                        return NL_ERROR(NL_EINVAL, "angle: \"%s\" is not finite (%g) at the impulse (x %g, y %g)",
+                                        p->angle_expr, th, v[0], v[1]);
+                    }
                     im->c[total] = cos(th), im->s[total] = sin(th);
                 }
                 total++;
@@ -422,6 +517,10 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
     } else {
         if (origin)
             ox = origin[0], oy = dim == 2 ? origin[1] : 0;
+        if (ox < -NL_SPARSE_ORIGIN_MAX || ox > NL_SPARSE_ORIGIN_MAX - nx || oy < -NL_SPARSE_ORIGIN_MAX ||
+            oy > NL_SPARSE_ORIGIN_MAX - ny)
+            return NL_ERROR(NL_EINVAL, "origin: the window (%ld, %ld) + %ldx%ld leaves +-%ld samples", ox, oy, nx, ny,
+                            NL_SPARSE_ORIGIN_MAX);
         cx0 = floordiv(ox - reach, C), cx1 = floordiv(ox + nx - 1 + reach, C);
         if (dim == 2)
             cy0 = floordiv(oy - reach, C), cy1 = floordiv(oy + ny - 1 + reach, C);

@@ -44,6 +44,10 @@
  * by Cauchy-Schwarz the ACF then changes by at most sqrt(1e-6) = 1e-3 R(0). */
 #define NL_SPARSE_ENERGY_TOL 1e-6
 
+/* Windows keep within +-2^30 samples of the origin: cells are indexed by
+ * 32-bit coordinates (farther windows would repeat the field). */
+#define NL_SPARSE_ORIGIN_MAX (1L << 30)
+
 typedef struct nl_synth_sparse_plan nl_synth_sparse_plan;
 
 typedef struct {
@@ -55,6 +59,8 @@ typedef struct {
     double kurtosis;        /* predicted excess kurtosis */
     double variance;        /* predicted variance */
     double mean;            /* added to every sample: the exemplar's mean (plan_exemplar), else 0 */
+    double clamp_error;     /* model kernels: negative mass / positive mass of the sampled spectrum */
+    size_t negatives;       /* model kernels: negative spectrum samples zeroed */
 } nl_synth_sparse_info;
 
 /* Plans own their kernel table (and angle expression); free with
@@ -69,10 +75,26 @@ typedef struct {
  *   NL_EINVAL  dim not 1 or 2, density outside (0, 1e6], radius or cell
  *              above 4096, a zero kernel, a malformed expression or one
  *              with unknown variables or non-finite values, an image not 2D
- *              or constant, a model unusable in dim or not positive definite;
- *   NL_ENOMEM  out of memory (NL_ETOOBIG when a model kernel's FFT grid,
- *              up to 4 radius + 4 samples per axis, exceeds this machine's
- *              memory). */
+ *              or constant, a model unusable in dim or not finite on the
+ *              kernel's grid;
+ *   NL_ENOTPD  a model not positive definite on the kernel's grid: the
+ *              rule of FFT synthesis (synth/fft.h), the negative mass of
+ *              the sampled spectrum above NL_SYNTH_FFT_CLAMP_TOL of its
+ *              positive mass; with flags NL_SYNTH_FFT_CLAMP (the _flags
+ *              form) the negative part is zeroed instead and info.clamp_error
+ *              bounds the change;
+ *   NL_ETOOBIG the kernel table, or a model kernel's FFT grid (up to
+ *              4 radius + 4 samples per axis), exceeds this machine's
+ *              memory (nl_mem_available), checked before allocating;
+ *   NL_ENOMEM  out of memory.
+ * info.truncated is the kernel energy left beyond the radius: the field's
+ * variance is R(0) times (1 - truncated), its ACF that of the truncated
+ * kernel (callers flag it).  A spectrum model with no closed-form R(0) is
+ * scaled to the kernel's own energy, R(0) as sampled. */
+int nl_synth_sparse_plan_model_flags(const nl_model *m, int dim, const double *h, int radius, int cell,
+                                     double density, unsigned flags, nl_synth_sparse_plan **out);
+/* nl_synth_sparse_plan_model_flags with flags 0 (refuses what is not
+ * positive definite). */
 int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
                             nl_synth_sparse_plan **out);
 int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
@@ -101,7 +123,10 @@ void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_in
  * an angle is only read (thread-safe); with an angle the libmatheval
  * expression is evaluated, so one such plan serves one thread at a time.
  * NL_OK, or NL_EINVAL (dims differ, wrap with an origin, a tile not a
- * multiple of the cell or smaller than the kernel), NL_ENOMEM. */
+ * multiple of the cell or smaller than the kernel, a window beyond
+ * +-NL_SPARSE_ORIGIN_MAX, an angle that is not finite at some impulse),
+ * NL_ETOOBIG (the impulses of the window's cells exceed the memory
+ * available, checked before allocating), NL_ENOMEM. */
 int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out);
 
 /* Frees the plan (NULL: no-op). */
