@@ -101,12 +101,49 @@ static size_t mirror_row(const nl_field *g, size_t r)
  * (negation is exact, and cos, |.| and the rotation commute with it), so
  * the other half is copied reversed.  Expressions are evaluated everywhere:
  * an odd expression must show up as such. */
+/* A covariance, and the spectrum of a real field, are even: R(-t) = R(t),
+ * S(-f) = S(f).  Sampling only half the spectrum (the r2c half grid) or
+ * taking the real part of the DFT of an odd part would silently keep the
+ * even part of a model that is not, so check about EVEN_SAMPLES points
+ * spread over the grid against their mirrors: NL_EINVAL when some pair
+ * differs by more than EVEN_TOL of the largest magnitude sampled (rounding
+ * in a tabulated or transformed model stays far below). */
+enum { EVEN_SAMPLES = 2048 };
+#define EVEN_TOL 1e-6
+
+static int check_even(const nl_model *m, const nl_field *g, int freq)
+{
+    size_t step = g->count > EVEN_SAMPLES ? g->count / EVEN_SAMPLES : 1, worst = 0;
+    double big = 0, diff = 0, wa = 0, wb = 0;
+    nl_gsl_enter();
+    for (size_t k = 0; k < g->count; k += step) {
+        size_t idx[3] = {k % g->n[0], k / g->n[0] % g->n[1], k / (g->n[0] * g->n[1])}, mir[3];
+        for (int a = 0; a < 3; a++)
+            mir[a] = (g->n[a] - idx[a]) % g->n[a];
+        double va = value_at(m, g, idx, freq), vb = value_at(m, g, mir, freq);
+        if (!isfinite(va) || !isfinite(vb))
+            continue; /* fill_rows names it */
+        big = fmax(big, fmax(fabs(va), fabs(vb)));
+        if (fabs(va - vb) > diff)
+            diff = fabs(va - vb), worst = k, wa = va, wb = vb;
+    }
+    nl_gsl_leave();
+    if (diff > EVEN_TOL * big) {
+        size_t i = worst % g->n[0], j = worst / g->n[0] % g->n[1], l = worst / (g->n[0] * g->n[1]);
+        return NL_ERROR(NL_EINVAL, "%s: not even: the %s at index (%zu, %zu, %zu) is %g but %g at its mirror "
+                        "image; %s", nl_model_spec(m), freq ? "spectrum" : "covariance", i, j, l, wa, wb,
+                        freq ? "the spectrum of a real field must satisfy S(-f) = S(f)"
+                             : "a covariance must satisfy R(-t) = R(t)");
+    }
+    return NL_OK;
+}
+
 static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *dst, size_t stride, int freq)
 {
     size_t rows = g->n[1] * g->n[2], bad = rows, n0 = g->n[0];
     int st = nl_model_check_dim(m, g->dim), reentrant = nl_model_is_reentrant(m);
     int sym = reentrant && ni == n0 && rows > 1;
-    if (st)
+    if (st || (st = check_even(m, g, freq)))
         return st;
     /* each worker brackets its share once, so that the models' own GSL
      * guards (Matern, power) cost it a thread-local counter per value;
