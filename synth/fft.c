@@ -8,6 +8,7 @@
 #include "../core/wk.h"
 
 #include <complex.h>
+#include <float.h>
 #include <fftw3.h>
 #include <math.h>
 #include <stdlib.h>
@@ -125,6 +126,20 @@ static int plan_from_half(const char *name, int dim, const size_t *n, const doub
     return NL_OK;
 }
 
+int nl_synth_check_cell(int dim, const double *h)
+{
+    double cell = 1;
+    for (int a = 0; h && a < dim; a++) {
+        if (!(h[a] > 0) || !isfinite(h[a]))
+            return NL_ERROR(NL_EINVAL, "spacing: expected a positive finite number, got %g", h[a]);
+        cell *= h[a];
+    }
+    if (!(cell >= DBL_MIN) || !isfinite(cell))
+        return NL_ERROR(NL_EINVAL, "spacing: the %dD cell volume (product of the spacings %g ...) is %g, out of the "
+                        "range of a double; expected spacings nearer 1", dim, h[0], cell);
+    return NL_OK;
+}
+
 int nl_synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
                          nl_synth_fft_plan **out)
 {
@@ -137,6 +152,8 @@ int nl_synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const d
     for (int a = 0; a < dim; a++)
         if (n[a] > INT32_MAX)
             return NL_ERROR(NL_ETOOBIG, "size: %zu samples along an axis is beyond FFTW's int sizes", n[a]);
+    if ((st = nl_synth_check_cell(dim, h)))
+        return st;
     if ((st = nl_wk_sample_spectrum_half(m, dim, n, h, &S)))
         return st;
     return plan_from_half(nl_model_spec(m), dim, n, h, S, flags, out);

@@ -45,7 +45,8 @@ typedef struct {
  * nl_synth_fft_plan_free.  Plans FFTW and evaluates the model: NOT
  * thread-safe (call from one thread).  Returns NL_OK and *out, or
  * (*out = NULL)
- *   NL_EINVAL  a model that cannot be sampled in dim (nl_model_check_dim),
+ *   NL_EINVAL  a spacing refused by nl_synth_check_cell, a model that
+ *              cannot be sampled in dim (nl_model_check_dim),
  *              or a size the spectrum sampling refuses;
  *   NL_ETOOBIG sizes overflow, exceed memory or FFTW's int sizes;
  *   NL_ENOTPD  negative eigenvalues beyond NL_SYNTH_FFT_CLAMP_TOL without
@@ -73,5 +74,11 @@ int nl_synth_fft_execute(const nl_synth_fft_plan *p, uint64_t seed, nl_field *ou
 
 /* Frees the plan and its FFTW plans (NULL: no-op); not thread-safe (FFTW). */
 void nl_synth_fft_plan_free(nl_synth_fft_plan *p);
+
+/* Check a grid spacing h[0..dim-1] (NULL: unit) for the spectral methods:
+ * each positive and finite, and the cell volume h[0]...h[dim-1] a normal
+ * double (the spectrum is divided by it).  NL_OK or NL_EINVAL naming the
+ * value.  Thread-safe. */
+int nl_synth_check_cell(int dim, const double *h);
 
 #endif

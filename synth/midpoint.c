@@ -22,8 +22,12 @@ int nl_subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, do
         return NL_ERROR(NL_EINVAL, "midpoint: expected dimension 1 or 2, got %d", dim);
     if (!(H > 0 && H < 1))
         return NL_ERROR(NL_EINVAL, "midpoint: expected a Hurst exponent 0 < H < 1, got %g", H);
-    if (levels < 1 || levels > 40 || !(spacing0 > 0) || !(sigma2 > 0) || !(vscale > 0))
-        return NL_ERROR(NL_EINVAL, "midpoint: expected levels 1..40 and positive spacing, variance and scale");
+    if (levels < 1 || levels > 40)
+        return NL_ERROR(NL_EINVAL, "midpoint: levels: expected 1 to 40, got %d", levels);
+    if (!(spacing0 > 0) || !isfinite(spacing0) || !(sigma2 > 0) || !isfinite(sigma2) || !(vscale > 0) ||
+        !isfinite(vscale))
+        return NL_ERROR(NL_EINVAL, "midpoint: expected a positive finite spacing, variance and variance-scale, got "
+                        "%g, %g and %g", spacing0, sigma2, vscale);
     c = calloc(1, sizeof *c);
     if (!c || !(c->level = calloc((size_t)levels, sizeof *c->level))) {
         free(c);
@@ -73,6 +77,13 @@ int nl_subdiv_coeffs_midpoint(int dim, int levels, double spacing0, double H, do
                     v -= cl->a[i] * cl->a[q] * gam(sigma2, H, px[i] - px[q], py[i] - py[q]);
             }
             v *= pow(vscale, k);
+            if (!isfinite(v) || !isfinite(c->r0)) {
+                nl_subdiv_coeffs_free(c);
+                return NL_ERROR(NL_EINVAL, "midpoint: the variance of level %d is %g (variance-scale %g per level, "
+                                "coarse spacing %g, H %g); expected a finite number: lower the variance-scale, the "
+                                "levels or the spacing", k, isfinite(v) ? 0.5 * sigma2 * pow(spacing0, 2 * H) : v,
+                                vscale, spacing0, H);
+            }
             cl->variance = cl->raw_variance = v;
             cl->condition = 1;
             cl->min_eigenvalue = NAN;

@@ -212,7 +212,7 @@ int nl_synth_sparse_plan_model_flags(const nl_model *m, int dim, const double *h
     for (mm[0] = 64; mm[0] < span; mm[0] *= 2)
         ;
     mm[1] = dim == 2 ? mm[0] : 1;
-    if ((st = model_kernel(m, dim, hh, mm, flags, &g, &total, &info)))
+    if ((st = nl_synth_check_cell(dim, hh)) || (st = model_kernel(m, dim, hh, mm, flags, &g, &total, &info)))
         return st;
     if (R <= 0)
         R = auto_radius(g, mm, dim, total);

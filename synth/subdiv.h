@@ -285,13 +285,18 @@ int nl_subdiv_synth_periodic(const nl_subdiv_coeffs *c, const nl_model *m, uint6
 int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
                            nl_field *f);
 
+/* Windows keep within +-2^30 finest-grid samples: 2D lattice points are
+ * drawn by 32-bit coordinates (farther windows would repeat the field). */
+#define NL_SUBDIV_ORIGIN_MAX (1L << 30)
+
 /* Non-periodic window: the samples of an infinite field at finest-grid
  * indices origin[a] .. origin[a] + n[a] - 1.  Level 0 is white noise of
  * variance R(0) at spacing s_0 (exact when R(s_0) is negligible; the
  * residual correlation R(s_0)/R(0) is the caller's to report).  Two windows
  * agree bit for bit where they overlap.  f->h is set to s_0 / 2^levels.
  * NL_EINVAL (f's dim), NL_ENOTPD (a level not positive definite: windows
- * never clamp), NL_ENOMEM.  Thread-safe: c is only read. */
+ * never clamp), NL_EINVAL (a window beyond +-NL_SUBDIV_ORIGIN_MAX),
+ * NL_ENOMEM.  Thread-safe: c is only read. */
 int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f);
 
 #endif

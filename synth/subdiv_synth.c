@@ -269,6 +269,10 @@ int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long 
         return NL_ERROR(NL_EINVAL, "subdivision: a %dD plan cannot fill a %dD field", dim, f->dim);
     if ((st = nl_subdiv_check_levels(c, 0)))
         return st;
+    for (int a = 0; a < dim; a++)
+        if (origin[a] < -NL_SUBDIV_ORIGIN_MAX || origin[a] > NL_SUBDIV_ORIGIN_MAX - (long)f->n[a])
+            return NL_ERROR(NL_EINVAL, "origin: the window from %ld with %zu samples along axis %d leaves +-%ld",
+                            origin[a], f->n[a], a, NL_SUBDIV_ORIGIN_MAX);
     rx = malloc((size_t)(L + 1) * sizeof *rx);
     ry = malloc((size_t)(L + 1) * sizeof *ry);
     if (!rx || !ry) {
