@@ -85,6 +85,14 @@ static int plan_from_half(const char *name, int dim, const size_t *n, const doub
     rows = p->count / p->n[0];
     p->half = rows * h0;
     p->amp = S;
+    for (size_t k = 0; k < p->half; k++)
+        if (!isfinite(S[k] / cell)) {
+            st = NL_ERROR(NL_EINVAL, "%s: the sampled spectrum is not finite (%g) at frequency index (%zu, %zu, %zu): "
+                          "the model's values are too large for this grid", name, S[k] / cell, k % h0,
+                          k / h0 % p->n[1], k / h0 / p->n[1]);
+            nl_synth_fft_plan_free(p);
+            return st;
+        }
     for (size_t r = 0; r < rows; r++)
         for (size_t i = 0; i < h0; i++) {
             double l = S[r * h0 + i] / cell, w = i == 0 || 2 * i == p->n[0] ? 1 : 2;

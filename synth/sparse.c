@@ -47,6 +47,8 @@ static int finish(nl_synth_sparse_plan *p, double variance)
     double s2 = 0, s4 = 0, lambda = p->density / pow(p->cell, p->dim), k;
     for (size_t i = 0; i < n; i++)
         s2 += p->h[i] * p->h[i];
+    if (!isfinite(s2))
+        return NL_ERROR(NL_EINVAL, "sparse: the kernel's energy overflows (%g); expected smaller kernel values", s2);
     if (!(s2 > 0))
         return NL_ERROR(NL_EINVAL, "sparse: the kernel is zero everywhere within the radius");
     k = sqrt(variance / (lambda * s2));
@@ -132,6 +134,11 @@ static int model_kernel(const nl_model *m, int dim, const double *hh, const size
     }
     for (size_t i = 0; i < M; i++) {
         double l = S->data[i] / cellh;
+        if (!isfinite(l)) {
+            nl_field_free(S);
+            return NL_ERROR(NL_EINVAL, "%s: the sampled spectrum is not finite (%g) at frequency index %zu of the "
+                            "kernel's grid: the model's values are too large", nl_model_spec(m), l, i);
+        }
         if (l < 0)
             neg -= l, info->negatives++;
         else

@@ -73,6 +73,24 @@ static int pinv_solve(gsl_matrix *A, const gsl_vector *b, gsl_vector *x)
     return st;
 }
 
+/* Every covariance of the system finite (a singularity of the model at a
+ * lag of this level would make the coefficients NaN): NL_EINVAL naming
+ * the first lag where it is not. */
+static int check_finite(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
+                        const gsl_matrix *A, const gsl_vector *b)
+{
+    for (size_t j = 0; j < n; j++)
+        for (size_t k = 0; k <= n; k++) {
+            const double *q = k < n ? pts + k * dim : target;
+            double v = k < n ? gsl_matrix_get(A, j, k) : gsl_vector_get(b, j);
+            if (!isfinite(v))
+                return NL_ERROR(NL_EINVAL, "%s: the covariance is not finite (%g) at lag (%g, %g), which "
+                                "subdivision evaluates", nl_model_spec(m), v, q[0] - pts[j * dim],
+                                dim == 2 ? q[1] - pts[j * dim + 1] : 0.0);
+        }
+    return NL_OK;
+}
+
 static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
                  const double *reset, nl_subdiv_class *cls)
 {
@@ -92,6 +110,8 @@ static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts,
             gsl_matrix_set(A, j, k, acf_at(m, dim, pts + j * dim, pts + k * dim));
         gsl_vector_set(b, j, acf_at(m, dim, target, pts + j * dim));
     }
+    if ((st = check_finite(m, dim, n, pts, target, A, b)))
+        goto done;
     gsl_matrix_memcpy(F, A);
     if ((st = eig_range(F, &lmin, &amax, &amin))) {
         st = NL_ERROR(NL_EFAIL, "the eigenvalues of a %zu x %zu system did not converge: %s", n, n,
