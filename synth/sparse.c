@@ -532,6 +532,15 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
         if (dim == 2)
             cy0 = floordiv(oy - reach, C), cy1 = floordiv(oy + ny - 1 + reach, C);
     }
+    {
+        /* the impulses drawn, and those each sample gathers from the cells within reach */
+        double cells = (double)(cx1 - cx0 + 1) * (double)(cy1 - cy0 + 1), per = (2.0 * (double)reach / C + 2);
+        double work = cells * p->density + (double)out->count * pow(per, dim) * (p->density + 1);
+        if (work > NL_SPARSE_WORK_MAX)
+            return NL_ERROR(NL_ETOOBIG, "sparse: about %.2g impulse evaluations (radius %d, cell %d, density %g, %zu "
+                            "samples), above %.0e; expected a smaller radius or density, or a larger cell", work, R,
+                            C, p->density, out->count, NL_SPARSE_WORK_MAX);
+    }
     if ((st = make_impulses(p, seed, cx0, cx1, cy0, cy1, &im)))
         return st;
 #pragma omp parallel for schedule(dynamic, 8) if (out->count > 65536)

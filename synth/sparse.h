@@ -44,6 +44,10 @@
  * by Cauchy-Schwarz the ACF then changes by at most sqrt(1e-6) = 1e-3 R(0). */
 #define NL_SPARSE_ENERGY_TOL 1e-6
 
+/* Work bound of one execution: impulses drawn plus impulses gathered over
+ * all samples (about a minute on one core at the bound). */
+#define NL_SPARSE_WORK_MAX 2e10
+
 /* Windows keep within +-2^30 samples of the origin: cells are indexed by
  * 32-bit coordinates (farther windows would repeat the field). */
 #define NL_SPARSE_ORIGIN_MAX (1L << 30)
@@ -126,7 +130,8 @@ void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_in
  * multiple of the cell or smaller than the kernel, a window beyond
  * +-NL_SPARSE_ORIGIN_MAX, an angle that is not finite at some impulse),
  * NL_ETOOBIG (the impulses of the window's cells exceed the memory
- * available, checked before allocating), NL_ENOMEM. */
+ * available, checked before allocating, or the work exceeds
+ * NL_SPARSE_WORK_MAX), NL_ENOMEM. */
 int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out);
 
 /* Frees the plan (NULL: no-op). */
