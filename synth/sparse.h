@@ -45,8 +45,8 @@
 #define NL_SPARSE_ENERGY_TOL 1e-6
 
 /* Work bound of one execution: impulses drawn plus impulses gathered over
- * all samples (about a minute on one core at the bound). */
-#define NL_SPARSE_WORK_MAX 2e10
+ * all samples (some 10 ns each: under a minute on one core at the bound). */
+#define NL_SPARSE_WORK_MAX 4e9
 
 /* Windows keep within +-2^30 samples of the origin: cells are indexed by
  * 32-bit coordinates (farther windows would repeat the field). */
