@@ -108,6 +108,15 @@ static void parse_origin(const char *s, long *o)
     check_origin("--origin", s, o);
 }
 
+/* An integer option in min..max, checked before it is narrowed to int. */
+static int parse_int(const char *opt, const char *s, int min, int max)
+{
+    size_t v = cli_parse_count(opt, s, (size_t)min);
+    if (v > (size_t)max)
+        cli_die(2, "%s: expected %d to %d, got \"%s\"", opt, min, max, s);
+    return (int)v;
+}
+
 /* The method's recorded options: "k=v,...|k=v|..." (what follows "name:"
  * in the method string written by the methods). */
 static void apply_keys(char *rest, cli_synth_job *job)
@@ -131,9 +140,10 @@ static void apply_keys(char *rest, cli_synth_job *job)
             const char *v = eq ? eq + 1 : "";
             if (eq)
                 *eq = 0;
-            if (!strcmp(kv, "levels")) job->levels = atoi(v);
-            else if (!strcmp(kv, "neighborhood")) job->N = strcmp(v, "auto") ? atoi(v) : 0;
-            else if (!strcmp(kv, "tol")) job->tol = atof(v);
+            if (!strcmp(kv, "levels")) job->levels = parse_int("--from: levels", v, 0, 40);
+            else if (!strcmp(kv, "neighborhood"))
+                job->N = strcmp(v, "auto") ? parse_int("--from: neighborhood", v, 1, INT_MAX) : 0;
+            else if (!strcmp(kv, "tol")) job->tol = cli_parse_positive("--from: tol", v, "number");
             else if (!strcmp(kv, "nonperiodic")) job->nonperiodic = 1;
             else if (!strcmp(kv, "origin")) {
                 errno = 0;
@@ -141,14 +151,19 @@ static void apply_keys(char *rest, cli_synth_job *job)
                     job->origin[0] = LONG_MAX;
                 check_origin("--from: origin", v, job->origin);
             }
-            else if (!strcmp(kv, "random-neighborhoods")) job->random_nb = atoi(v);
-            else if (!strcmp(kv, "H")) job->H = atof(v);
-            else if (!strcmp(kv, "variance-scale")) job->vscale = atof(v);
-            else if (!strcmp(kv, "density")) job->density = atof(v);
-            else if (!strcmp(kv, "radius")) job->radius = atoi(v);
-            else if (!strcmp(kv, "cell")) job->cell = atoi(v), job->cell0 = atof(v);
+            else if (!strcmp(kv, "random-neighborhoods"))
+                job->random_nb = parse_int("--from: random-neighborhoods", v, 1, 256);
+            else if (!strcmp(kv, "H")) job->H = cli_parse_double("--from: H", v);
+            else if (!strcmp(kv, "variance-scale"))
+                job->vscale = cli_parse_positive("--from: variance-scale", v, "factor");
+            else if (!strcmp(kv, "density")) job->density = cli_parse_positive("--from: density", v, "number");
+            else if (!strcmp(kv, "radius")) job->radius = parse_int("--from: radius", v, 1, 4096);
+            else if (!strcmp(kv, "cell")) {
+                job->cell0 = cli_parse_positive("--from: cell", v, "number");
+                job->cell = job->cell0 < INT_MAX ? (int)job->cell0 : INT_MAX;
+            }
             else if (!strcmp(kv, "wrap")) job->wrap = 1;
-            else if (!strcmp(kv, "octaves")) job->octaves = atoi(v);
+            else if (!strcmp(kv, "octaves")) job->octaves = parse_int("--from: octaves", v, 1, 16);
         }
     }
 }
@@ -215,13 +230,11 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
 {
     switch (c) {
     case 'L':
-        job->levels = (int)cli_parse_count("--levels", optarg, 1);
-        if (job->levels > 30)
-            cli_die(2, "--levels: expected 1 to 30, got \"%s\"", optarg);
+        job->levels = parse_int("--levels", optarg, 1, 30);
         g->given_L = 1;
         break;
     case 'N':
-        job->N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
+        job->N = strcmp(optarg, "auto") == 0 ? 0 : parse_int("--neighborhood", optarg, 1, INT_MAX);
         g->given_N = 1;
         break;
     case 't':
@@ -229,9 +242,7 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
         g->given_tol = 1;
         break;
     case 'R':
-        job->random_nb = (int)cli_parse_count("--random-neighborhoods", optarg, 1);
-        if (job->random_nb > 256)
-            cli_die(2, "--random-neighborhoods: expected 1 to 256, got \"%s\"", optarg);
+        job->random_nb = parse_int("--random-neighborhoods", optarg, 1, 256);
         break;
     case 'u':
         job->H = cli_parse_double("--H", optarg);
@@ -247,9 +258,7 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
         g->given_density = 1;
         break;
     case 'V':
-        job->octaves = (int)cli_parse_count("--octaves", optarg, 1);
-        if (job->octaves > 16)
-            cli_die(2, "--octaves: expected 1 to 16, got \"%s\"", optarg);
+        job->octaves = parse_int("--octaves", optarg, 1, 16);
         break;
     }
 }
@@ -295,8 +304,8 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'K': job->kernel = optarg; break;
         case 'E': job->exemplar = optarg; break;
         case 'A': job->angle = optarg; break;
-        case 'r': job->radius = (int)cli_parse_count("--radius", optarg, 1); break;
-        case 'C': job->cell = (int)cli_parse_count("--cell", optarg, 1); break;
+        case 'r': job->radius = parse_int("--radius", optarg, 1, 4096); break;
+        case 'C': job->cell = parse_int("--cell", optarg, 1, INT_MAX); break;
         case 'W': job->wrap = 1; break;
         case 'F': g->from = optarg; break;
         case 'h': fputs(help, stdout); return 1;
