@@ -47,7 +47,8 @@ static const char help[] =
     "            cell (default 1), --cell C and --radius R in samples, --wrap for a periodic\n"
     "            tile, --origin X[,Y] for a window of the infinite field, --angle EXPR in\n"
     "            x, y rotating the kernel with position; the report predicts the excess\n"
-    "            kurtosis 3 sum h^4 / (lambda (sum h^2)^2)\n"
+    "            kurtosis 3 sum h^4 / (lambda (sum h^2)^2); a kernel losing more than 1e-3\n"
+    "            of its energy at the radius is flagged truncated=FRACTION\n"
     "  lattice   interpolated noise lattice (Perlin gradient noise) summed over octaves,\n"
     "            weighted to the target spectrum's power in each octave's band; --cell C\n"
     "            largest lattice cell (default size/4), --octaves O (default: down to cell\n"
@@ -62,12 +63,14 @@ static const char help[] =
     "  --seed           64-bit seed (default 1)\n"
     "  --spacing        output grid spacing, one value or one per axis (default 1)\n"
     "  --clamp          synthesise a model that is not positive definite by zeroing its\n"
-    "                   negative spectrum (fft) or variances (subdiv); flagged in the output\n"
+    "                   negative spectrum (fft, circulant, sparse, lattice) or variances\n"
+    "                   (subdiv); flagged \"clamped\" in the output, the change in the report\n"
     "  --preview        8-bit PNG of a 2D field (the first slice of 3D), mean +- 3 sd\n"
     "  --json           print the synthesis report as JSON\n"
     "  --from FILE      regenerate FILE from what it records (method, options, model,\n"
     "                   seed, size, spacing): bit for bit for every method\n"
-    "  -o               EXR (any dimension) or TSV (1D: columns t, value)\n";
+    "  -o               EXR (any dimension) or TSV (1D: columns t, value); nothing is\n"
+    "                   written unless every sample is finite (and, in EXR, within float32)\n";
 
 /* What the command line gave, beyond the job itself. */
 typedef struct {
@@ -325,6 +328,7 @@ static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_a
             cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
                     "and --json");
         apply_from(g->from, job, g);
+        job->from = 1;
         g->given_L = job->levels != 0;
         g->given_density = strcmp(job->method, "faulting") == 0 || strcmp(job->method, "sparse") == 0;
         g->given_N = strcmp(job->method, "subdiv") == 0;

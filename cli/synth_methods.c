@@ -213,6 +213,25 @@ static void sparse_flags(const nl_synth_sparse_info *info, char *flags, size_t s
         snprintf(flags + k, size - (size_t)k, "%struncated=%.2g", k ? "," : "", info->truncated);
 }
 
+/* A model kernel.  The kernel's FFT grid depends on whether the radius was
+ * automatic, and a field records the radius it used: regenerating (--from),
+ * the automatic radius is tried first and kept when it is the recorded
+ * one, so that the field comes back bit for bit. */
+static int sparse_model_plan(const cli_synth_job *job, nl_synth_sparse_plan **p)
+{
+    unsigned fl = job->clamp ? NL_SYNTH_FFT_CLAMP : 0;
+    if (job->from && job->radius) {
+        nl_synth_sparse_info info;
+        if (!nl_synth_sparse_plan_model_flags(job->m, job->dim, job->h, 0, job->cell, job->density, fl, p)) {
+            nl_synth_sparse_plan_info(*p, &info);
+            if (info.radius == job->radius)
+                return NL_OK;
+            nl_synth_sparse_plan_free(*p);
+        }
+    }
+    return nl_synth_sparse_plan_model_flags(job->m, job->dim, job->h, job->radius, job->cell, job->density, fl, p);
+}
+
 void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     nl_synth_sparse_plan *p;
@@ -223,8 +242,7 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
     if (given != 1)
         cli_die(2, "synth sparse: expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE");
     if (job->m)
-        st = nl_synth_sparse_plan_model_flags(job->m, job->dim, job->h, job->radius, job->cell, job->density,
-                                              job->clamp ? NL_SYNTH_FFT_CLAMP : 0, &p);
+        st = sparse_model_plan(job, &p);
     else if (job->kernel)
         st = nl_synth_sparse_plan_expr(job->kernel, job->dim, job->radius ? job->radius : 16, job->cell, job->density,
                                     &p);
