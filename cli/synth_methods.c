@@ -241,6 +241,10 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
         cli_die(2, "synth sparse: expected a 1D or 2D --size, got %dD", job->dim);
     if (given != 1)
         cli_die(2, "synth sparse: expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE");
+    /* an explicit radius: the work is known before the kernel is made */
+    if (job->radius || job->kernel)
+        cli_check(nl_synth_sparse_check_work(job->dim, job->n, job->radius ? job->radius : 16, job->cell,
+                                             job->density, job->angle != NULL));
     if (job->m)
         st = sparse_model_plan(job, &p);
     else if (job->kernel)

@@ -38,6 +38,14 @@ void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p)
     free(p);
 }
 
+static int default_cell(int radius)
+{
+    int c;
+    for (c = 4; c < radius; c *= 2)
+        ;
+    return c;
+}
+
 static size_t table_size(int dim, int R) { return dim == 1 ? (size_t)(2 * R + 1) : (size_t)(2 * R + 1) * (2 * R + 1); }
 
 /* Finish a plan: scale h so that the variance is `variance`, fill info. */
@@ -93,11 +101,7 @@ static int new_plan(int dim, int radius, int cell, double density, nl_synth_spar
     }
     p->dim = dim;
     p->radius = radius;
-    if (cell > 0)
-        p->cell = cell;
-    else
-        for (p->cell = 4; p->cell < radius; p->cell *= 2)
-            ;
+    p->cell = cell > 0 ? cell : default_cell(radius);
     p->density = density;
     *out = p;
     return NL_OK;
@@ -498,6 +502,23 @@ static double kernel_at(const nl_synth_sparse_plan *p, double u, double v)
     return s;
 }
 
+int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, int angle)
+{
+    double reach = angle ? ceil(radius * M_SQRT2) + 1 : radius, C = cell > 0 ? cell : default_cell(radius);
+    double count = 1, cells = 1, per = 2 * reach / C + 2, work;
+    for (int a = 0; a < dim; a++) {
+        count *= (double)n[a];
+        cells *= ((double)n[a] + 2 * reach) / C + 2;
+    }
+    /* the impulses drawn, and those each sample gathers from the cells within reach */
+    work = cells * density + count * pow(per, dim) * (density + 1);
+    if (work > NL_SPARSE_WORK_MAX)
+        return NL_ERROR(NL_ETOOBIG, "sparse: about %.2g impulse evaluations (radius %d, cell %g, density %g, %.0f "
+                        "samples), above %.0e; expected a smaller radius or density, or a larger cell", work, radius, C,
+                        density, count, NL_SPARSE_WORK_MAX);
+    return NL_OK;
+}
+
 static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out)
@@ -532,15 +553,8 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
         if (dim == 2)
             cy0 = floordiv(oy - reach, C), cy1 = floordiv(oy + ny - 1 + reach, C);
     }
-    {
-        /* the impulses drawn, and those each sample gathers from the cells within reach */
-        double cells = (double)(cx1 - cx0 + 1) * (double)(cy1 - cy0 + 1), per = (2.0 * (double)reach / C + 2);
-        double work = cells * p->density + (double)out->count * pow(per, dim) * (p->density + 1);
-        if (work > NL_SPARSE_WORK_MAX)
-            return NL_ERROR(NL_ETOOBIG, "sparse: about %.2g impulse evaluations (radius %d, cell %d, density %g, %zu "
-                            "samples), above %.0e; expected a smaller radius or density, or a larger cell", work, R,
-                            C, p->density, out->count, NL_SPARSE_WORK_MAX);
-    }
+    if ((st = nl_synth_sparse_check_work(dim, out->n, R, C, p->density, p->angle != NULL)))
+        return st;
     if ((st = make_impulses(p, seed, cx0, cx1, cy0, cy1, &im)))
         return st;
 #pragma omp parallel for schedule(dynamic, 8) if (out->count > 65536)

@@ -134,6 +134,13 @@ void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_in
  * NL_SPARSE_WORK_MAX), NL_ENOMEM. */
 int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out);
 
+/* The work bound of nl_synth_sparse_execute for an output of n[0..dim-1]
+ * samples, a kernel of this radius (rotated: angle != 0), cell (<= 0: the
+ * default) and density, checkable before a plan is made: NL_OK, or
+ * NL_ETOOBIG naming the values when the impulses drawn and gathered exceed
+ * NL_SPARSE_WORK_MAX.  Thread-safe. */
+int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, int angle);
+
 /* Frees the plan (NULL: no-op). */
 void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p);
 
