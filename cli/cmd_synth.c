@@ -339,7 +339,8 @@ static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_a
         return;
     }
     if (optind >= argc)
-        cli_die(2, "synth: expected a METHOD (fft, subdiv, midpoint, circulant, cholesky), see noiselab synth --help");
+        cli_die(2, "synth: expected a METHOD (fft, subdiv, midpoint, circulant, cholesky, faulting, sparse or lattice), "
+                "see noiselab synth --help");
     job->method = argv[optind];
     if (optind + 1 < argc)
         cli_die(2, "synth: unexpected argument \"%s\"", argv[optind + 1]);

@@ -77,7 +77,8 @@ static nl_subdiv_plan *subdiv_plan(const cli_synth_job *job, nl_field **img)
         cli_die(2, "synth subdiv: expected a 1D or 2D --size, got %dD", job->dim);
     for (int a = 1; a < job->dim; a++)
         if (job->h[a] != job->h[0])
-            cli_die(2, "--spacing: subdivision needs the same spacing on every axis");
+            cli_die(2, "--spacing: subdivision needs the same spacing on every axis, got %g and %g", job->h[0],
+                    job->h[a]);
     if (job->seed_image) {
         *img = seed_image(job);
         cli_check(nl_subdiv_image_levels(job->dim, (*img)->n, job->n, job->levels, &o.levels));
@@ -253,7 +254,8 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
     else {
         nl_field *img = cli_read_field(job->exemplar, NULL);
         if (job->dim != 2)
-            cli_die(2, "--exemplar: expected a 2D image and a 2D --size");
+            cli_die(2, "--exemplar: expected a 2D image and a 2D --size, got %dD %s and a %dD --size", img->dim,
+                    job->exemplar, job->dim);
         st = nl_synth_sparse_plan_exemplar(img, job->radius, job->cell, job->density, &p);
         nl_field_free(img);
     }

@@ -58,7 +58,7 @@ static int finish(nl_synth_sparse_plan *p, double variance)
     if (!isfinite(s2))
         return NL_ERROR(NL_EINVAL, "sparse: the kernel's energy overflows (%g); expected smaller kernel values", s2);
     if (!(s2 > 0))
-        return NL_ERROR(NL_EINVAL, "sparse: the kernel is zero everywhere within the radius");
+        return NL_ERROR(NL_EINVAL, "sparse: the kernel is zero everywhere within the radius %d", p->radius);
     k = sqrt(variance / (lambda * s2));
     s2 = 0;
     for (size_t i = 0; i < n; i++) {
@@ -325,7 +325,7 @@ int nl_synth_sparse_plan_image(const nl_field *img, int cell, double density, nl
     if (!(var > 0)) {
         nl_synth_sparse_plan_free(*out);
         *out = NULL;
-        return NL_ERROR(NL_EINVAL, "exemplar: the image is constant");
+        return NL_ERROR(NL_EINVAL, "exemplar: the %zux%zu image is constant (%g); expected a texture", w, hgt, mean);
     }
     for (size_t j = 0; j < hgt; j++)
         for (size_t i = 0; i < w; i++) {
@@ -347,7 +347,7 @@ int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr)
     char *copy, **vars;
     int nv;
     if (p->dim != 2)
-        return NL_ERROR(NL_EINVAL, "angle: a rotated kernel needs a 2D field");
+        return NL_ERROR(NL_EINVAL, "angle: a rotated kernel needs a 2D field, got %dD", p->dim);
     copy = strdup(expr);
     if (!copy)
         return NL_ERROR(NL_ENOMEM, "out of memory");
@@ -375,7 +375,7 @@ int nl_synth_sparse_plan_exemplar(const nl_field *img, int radius, int cell, dou
     int st;
     *out = NULL;
     if (img->dim != 2)
-        return NL_ERROR(NL_EINVAL, "--exemplar: expected a 2D image and a 2D --size");
+        return NL_ERROR(NL_EINVAL, "--exemplar: expected a 2D image, got %dD", img->dim);
     if (radius) {
         /* the central 2R x 2R window of the exemplar */
         size_t w = 2 * (size_t)radius, n[2] = {w, w};

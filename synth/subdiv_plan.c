@@ -54,7 +54,9 @@ int nl_subdiv_image_levels(int dim, const size_t *image_n, const size_t *n, int 
     if (levels && levels != Li)
         return NL_ERROR(NL_EINVAL, "--levels: the seed image fixes %d levels, got %d", Li, levels);
     if (Li < 1)
-        return NL_ERROR(NL_EINVAL, "--seed-image: the image is already as large as --size");
+        return NL_ERROR(NL_EINVAL, "--seed-image: the %zu%s%.0zu image is already as large as --size %zu%s%.0zu; "
+                        "expected a smaller image", image_n[0], dim == 2 ? "x" : "", dim == 2 ? image_n[1] : (size_t)0,
+                        n[0], dim == 2 ? "x" : "", dim == 2 ? n[1] : (size_t)0);
     *out = Li;
     return NL_OK;
 }
@@ -117,7 +119,7 @@ static int coeffs_for(const nl_model *m, int dim, int L, double h, const nl_subd
         return st;
     if (o->random_nb) {
         if (dim != 2)
-            st = NL_ERROR(NL_EINVAL, "--random-neighborhoods: expected a 2D --size");
+            st = NL_ERROR(NL_EINVAL, "--random-neighborhoods: expected a 2D --size, got %dD", dim);
         else
             st = nl_subdiv_coeffs_randomize(*c, m, o->random_nb, o->random_seed);
     }
