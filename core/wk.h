@@ -16,7 +16,10 @@
  *
  * Statuses: NL_OK; NL_EINVAL (the model cannot be used in the field's
  * dimension, it is not finite at some sampled lag or frequency (named in the
- * message), the grids of input and output differ, or dim is not 1..3);
+ * message), it is not even (R(-t) != R(t) or S(-f) != S(f) beyond 1e-6 of
+ * its largest value, on some 2048 points checked against their mirror
+ * images: a half grid or a real part would silently keep only its even
+ * part), the grids of input and output differ, or dim is not 1..3);
  * NL_ETOOBIG (a scratch grid does not fit: nl_field_alloc); NL_ENOMEM;
  * NL_EFAIL (FFTW could not plan; not seen in practice, FFTW_ESTIMATE plans
  * every size).  On failure the output's contents are unspecified.
