@@ -60,9 +60,14 @@ int cli_main(int argc, char **argv)
     }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0) {
+            int rc;
             if (!saving++)
                 atexit(nl_fftw_save); /* commands may exit() from deep inside */
-            return commands[i].run(argc - 1, argv + 1);
+            cli_out_start(argc, argv);
+            cli_limits();
+            rc = commands[i].run(argc - 1, argv + 1);
+            cli_out_finish(rc == 0);
+            return rc;
         }
     cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, cloud, lattice, ocean, card, render, detect, bench; see noiselab --help)",
             argv[1]);
