@@ -101,7 +101,9 @@ void cli_progress_abandon(void);
  * returns its name; cli_out_commit marks it ready.  The ready outputs are
  * renamed together when the command returns 0 (cli_out_finish, from
  * cli_main); a failure (cli_die, a non-zero return, exit) or a fatal signal
- * (SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT: the handler removes, then the
+ * (SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGXCPU, SIGXFSZ, SIGALRM, SIGUSR1,
+ * SIGUSR2, and SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL unless a sanitizer
+ * handles them; signals ignored at start stay ignored: the handler removes, then the
  * signal kills with its default action) removes every temporary of the run.
  * An output not asked for (path NULL) has no temporary (NULL) and nothing
  * to commit.  Any number of outputs. */

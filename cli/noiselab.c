@@ -4,6 +4,7 @@
 #include "../core/fftw_plan.h"
 #include "../core/version.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -66,6 +67,9 @@ int cli_main(int argc, char **argv)
             cli_out_start(argc, argv);
             cli_limits();
             rc = commands[i].run(argc - 1, argv + 1);
+            /* the standard output is an output too: flushed before the files are committed */
+            if (rc == 0 && (fflush(stdout) || ferror(stdout)))
+                cli_die(1, "standard output: write failed: %s", strerror(errno));
             cli_out_finish(rc == 0);
             return rc;
         }

@@ -151,7 +151,8 @@ void cli_out_start(int argc, char **argv)
     used = 0;
     clock_gettime(CLOCK_REALTIME_COARSE, &started);
     if (!installed++) {
-        static const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT};
+        static const int sigs[] = {SIGINT,  SIGTERM, SIGHUP,  SIGPIPE, SIGQUIT, SIGXCPU, SIGXFSZ, SIGALRM,
+                                   SIGUSR1, SIGUSR2, SIGABRT, SIGSEGV, SIGBUS,  SIGFPE,  SIGILL};
         struct sigaction sa;
         memset(&sa, 0, sizeof sa);
         sa.sa_handler = on_signal;
@@ -160,8 +161,9 @@ void cli_out_start(int argc, char **argv)
             sigaddset(&sa.sa_mask, sigs[i]);
         for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++) {
             struct sigaction old;
-            /* a signal the caller ignores (nohup, a shell's background job) stays ignored */
-            if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+            /* a signal the caller ignores (nohup, a shell's background job) stays ignored, and one
+             * somebody else handles (a sanitizer's SIGSEGV) stays theirs */
+            if (sigaction(sigs[i], NULL, &old) == 0 && !(old.sa_flags & SA_SIGINFO) && old.sa_handler == SIG_DFL)
                 sigaction(sigs[i], &sa, NULL);
         }
         atexit(at_exit);
@@ -170,24 +172,35 @@ void cli_out_start(int argc, char **argv)
 
 void cli_out_abandon(void) { remove_all(); }
 
+/* Does the option value v name path: the same, or (loose) a name made from
+ * it, as frames are: "x.png" gives "x-000.png"? */
+static int names(const char *v, const char *path, int loose)
+{
+    const char *dot = strrchr(v, '.');
+    size_t stem = dot ? (size_t)(dot - v) : strlen(v), lp = strlen(path), le = strlen(v) - stem;
+    if (!loose)
+        return strcmp(v, path) == 0;
+    return stem && lp > stem + le && strncmp(v, path, stem) == 0 && strcmp(path + lp - le, v + stem) == 0;
+}
+
 /* The option that named `path` on the command line, looking from argv[*i]
  * on (*i is left past it); "output" if none. */
 static const char *option_from(const char *path, int *i, char *buf, size_t len)
 {
-    size_t lp = strlen(path);
-    for (; cmd_argv && *i < cmd_argc; (*i)++) {
-        const char *a = cmd_argv[*i], *eq = strchr(a, '=');
-        if (strcmp(a, path) == 0 && *i > 1 && cmd_argv[*i - 1][0] == '-')
-            snprintf(buf, len, "%s", cmd_argv[*i - 1]);
-        else if (a[0] == '-' && a[1] == '-' && eq && strcmp(eq + 1, path) == 0)
-            snprintf(buf, len, "%.*s", (int)(eq - a), a);
-        else if (a[0] == '-' && a[1] && a[1] != '-' && strlen(a) == lp + 2 && strcmp(a + 2, path) == 0)
-            snprintf(buf, len, "-%c", a[1]);
-        else
-            continue;
-        (*i)++;
-        return buf;
-    }
+    for (int loose = 0; loose < 2; loose++)
+        for (int k = *i; cmd_argv && k < cmd_argc; k++) {
+            const char *a = cmd_argv[k], *eq = strchr(a, '=');
+            if (names(a, path, loose) && k > 1 && cmd_argv[k - 1][0] == '-')
+                snprintf(buf, len, "%s", cmd_argv[k - 1]);
+            else if (a[0] == '-' && a[1] == '-' && eq && names(eq + 1, path, loose))
+                snprintf(buf, len, "%.*s", (int)(eq - a), a);
+            else if (a[0] == '-' && a[1] && a[1] != '-' && !eq && names(a + 2, path, loose))
+                snprintf(buf, len, "-%c", a[1]);
+            else
+                continue;
+            *i = k + 1;
+            return buf;
+        }
     return "output";
 }
 
