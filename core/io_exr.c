@@ -1,7 +1,7 @@
 /* OpenEXR read (from a file in memory: read once) and write through the
  * OpenEXRCore C API. */
 #include "io.h"
-#include "io_read.h"
+#include "io_read_internal.h"
 #include "nl_error.h"
 
 #include <openexr.h>

@@ -1,6 +1,6 @@
 /* PNG read (exemplars) and 8-bit grey write (previews) through libpng. */
 #include "io.h"
-#include "io_read.h"
+#include "io_read_internal.h"
 #include "nl_error.h"
 
 #include <math.h>

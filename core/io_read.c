@@ -1,5 +1,5 @@
 /* Reading a file once into memory, and reading any field file. */
-#include "io_read.h"
+#include "io_read_internal.h"
 #include "field.h"
 #include "nl_error.h"
 

@@ -1,6 +1,6 @@
 /* TSV tables: write columns, read a 1D field. */
 #include "io.h"
-#include "io_read.h"
+#include "io_read_internal.h"
 #include "nl_error.h"
 
 #include <errno.h>

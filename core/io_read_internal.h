@@ -4,8 +4,8 @@
  * work as inputs: nl_field_read takes the whole file into memory, looks at
  * its first bytes and decodes the copy (the EXR reader seeks, which a pipe
  * cannot). */
-#ifndef NL_IO_READ_H
-#define NL_IO_READ_H
+#ifndef NL_IO_READ_INTERNAL_H
+#define NL_IO_READ_INTERNAL_H
 
 #include "io.h"
 
