@@ -8,6 +8,7 @@
 #include "util.h"
 
 #include <criterion/criterion.h>
+#include <dirent.h>
 #include <fcntl.h>
 #include <math.h>
 #include <omp.h>
@@ -15,7 +16,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 /* A writer thread copying a file into a FIFO, as `cat FILE >FIFO` would. */
@@ -139,4 +142,62 @@ Test(hygiene, thread_count_is_capped)
     omp_set_num_threads(1);
     cr_assert_eq(nl_threads_max(), 1);
     omp_set_num_threads(keep);
+}
+
+/* Files of the scratch folder whose name starts with `prefix`. */
+static int files_named(const char *prefix)
+{
+    DIR *d = opendir(scratch_dir());
+    struct dirent *e;
+    int n = 0;
+    while (d && (e = readdir(d)))
+        n += strncmp(e->d_name, prefix, strlen(prefix)) == 0;
+    if (d)
+        closedir(d);
+    return n;
+}
+
+/* SIGTERM while a command has begun its two outputs (it is blocked opening
+ * a FIFO for its seed image): both temporaries are removed and the process
+ * dies of SIGTERM (the status a shell shows as 143). */
+Test(hygiene, signal_removes_the_outputs_begun)
+{
+    const char *bin = getenv("NOISELAB");
+    char fifo[512], tmp[600], exe[1024], here[256];
+    pid_t pid;
+    int status, i;
+    snprintf(exe, sizeof exe, "%s", bin ? bin : "../bin/noiselab");
+    if (exe[0] != '/' && getcwd(here, sizeof here)) /* relative to here, before the child changes folder */
+        snprintf(exe, sizeof exe, "%s/%s", here, bin ? bin : "../bin/noiselab");
+    snprintf(fifo, sizeof fifo, "%s/seed", scratch_dir());
+    unlink(fifo);
+    cr_assert_eq(mkfifo(fifo, 0600), 0);
+    pid = fork();
+    cr_assert_geq(pid, 0);
+    if (pid == 0) {
+        if (chdir(scratch_dir()) == 0)
+            execl(exe, "noiselab", "synth", "subdiv", "--acf", "markov:scale=8", "--size", "64x64", "--seed-image",
+                  "seed", "-o", "sig.exr", "--preview", "sig.png", (char *)NULL);
+        _exit(127);
+    }
+    snprintf(tmp, sizeof tmp, "%s/sig.png.tmp.%ld", scratch_dir(), (long)pid);
+    for (i = 0; i < 500 && !file_exists(tmp); i++)
+        usleep(10000);
+    cr_expect(file_exists(tmp), "the command never began its outputs");
+    cr_expect_eq(files_named("sig."), 2, "expected the two temporaries");
+    kill(pid, SIGTERM);
+    cr_assert_eq(waitpid(pid, &status, 0), pid);
+    unlink(fifo);
+    cr_expect(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM, "status %#x", status);
+    cr_expect_eq(files_named("sig."), 0, "a temporary was left");
+}
+
+/* More outputs than the old table of 8: all 18 files of 9 frames appear. */
+Test(hygiene, nine_frames_commit_all_their_files)
+{
+    char err[1024];
+    int rc = run_noiselab("ocean --grid 16 --wind 10,30 --frames 9 --dt 0.1 -o fr.exr --image fr.png --size 16", NULL, 0,
+                          err, sizeof err);
+    cr_assert_eq(rc, 0, "%s", err);
+    cr_expect_eq(files_named("fr-"), 18);
 }
