@@ -44,6 +44,11 @@ int cli_main(int argc, char **argv);
 /* Exit with the library's last message for status `st` (exit 2 or 1). */
 void cli_die_status(int st) __attribute__((noreturn));
 
+/* The process-wide bounds, checked before a command runs: exit 2 when
+ * NOISELAB_MEMORY_LIMIT does not parse (nl_mem_limit); OpenMP's thread
+ * count capped at nl_threads_max() (a few per online processor). */
+void cli_limits(void);
+
 /* Exit through cli_die_status unless st is NL_OK (0). */
 void cli_check(int st);
 
@@ -86,14 +91,44 @@ void cli_progress(const char *what, double frac);
  * replaces the phase.  cli_progress_done ends it. */
 void cli_phase(const char *what, const char *phase);
 void cli_progress_done(void);
+/* Clear a progress line from a signal handler (async-signal-safe). */
+void cli_progress_abandon(void);
 
-/* Outputs appear whole or not at all: cli_out_begin checks that a temporary
- * file beside `path` can be created (exit 2 naming the path if not) and
- * returns its name; cli_out_commit renames it to `path`.  Temporary files
- * still pending at exit are removed.  An output not asked for (path NULL)
- * has no temporary (NULL) and nothing to commit. */
+/* Outputs appear whole or not at all, and all of a run's or none
+ * (cli/outputs.c).  cli_out_begin checks that a temporary file beside `path`
+ * can be created (exit 2 naming the option and the path if not, if `path`
+ * is a folder, or if another output of this run names the same file) and
+ * returns its name; cli_out_commit marks it ready.  The ready outputs are
+ * renamed together when the command returns 0 (cli_out_finish, from
+ * cli_main); a failure (cli_die, a non-zero return, exit) or a fatal signal
+ * (SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGXCPU, SIGXFSZ, SIGALRM, SIGUSR1,
+ * SIGUSR2, and SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL unless a sanitizer
+ * handles them; signals ignored at start stay ignored: the handler removes, then the
+ * signal kills with its default action) removes every temporary of the run.
+ * An output not asked for (path NULL) has no temporary (NULL) and nothing
+ * to commit.  Any number of outputs. */
 const char *cli_out_begin(const char *path);
 void cli_out_commit(const char *path);
+
+/* A folder of outputs named by option `opt` (e.g. a report): created when
+ * missing, and then removed with its contents on failure; when it exists,
+ * the files this run adds to it are removed on failure.  Exit 2 naming opt
+ * and the folder when it cannot be made or is a file.  The files inside are
+ * written under their own names. */
+void cli_out_dir(const char *opt, const char *dir);
+
+/* mkdtemp(templ) for scratch files, removed with its contents at the end of
+ * the run whatever happens; NULL (errno set) when it cannot be made. */
+char *cli_out_tmpdir(char *templ);
+
+/* The run's bookkeeping (cli_main): cli_out_start forgets the previous run,
+ * remembers argv (to name the option of a path in messages) and installs
+ * the signal handlers once; cli_out_finish(1) commits every ready output
+ * (all or none: exit 1 when a rename fails, after removing the others),
+ * cli_out_finish(0) and cli_out_abandon remove every output of the run. */
+void cli_out_start(int argc, char **argv);
+void cli_out_finish(int ok);
+void cli_out_abandon(void);
 
 /* Subdivision flags (synth/subdiv.h) as "name,name,..." ("" for none). */
 void cli_subdiv_flags(unsigned flags, char *buf, size_t len);

@@ -123,7 +123,7 @@ int cli_cmd_card(int argc, char **argv)
         cli_die_status(st);
     const char *tmp = cli_out_begin(out);
     char dir[] = "/tmp/noiselab-card-XXXXXX", path[4200];
-    if (!mkdtemp(dir))
+    if (!cli_out_tmpdir(dir))
         cli_die(1, "card: cannot create a temporary directory");
     nl_moments mo;
     size_t seg = (x->n[0] < x->n[1] ? x->n[0] : x->n[1]) / 4, nseg;

@@ -65,8 +65,7 @@ static void parse(int argc, char **argv, vctx *v)
         v->N = v->dim == 1 ? 2048 : 128;
     if (v->N & (v->N - 1))
         cli_die(2, "--size: expected a power of two, got %zu", v->N);
-    if (mkdir(v->dir, 0755) && errno != EEXIST)
-        cli_die(2, "-o: cannot create directory \"%s\": %s", v->dir, strerror(errno));
+    cli_out_dir("-o", v->dir);
 }
 
 static FILE *open_in(const vctx *v, const char *name)

@@ -4,6 +4,7 @@
 #include "../core/fftw_plan.h"
 #include "../core/version.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -60,9 +61,17 @@ int cli_main(int argc, char **argv)
     }
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(argv[1], commands[i].name) == 0) {
+            int rc;
             if (!saving++)
                 atexit(nl_fftw_save); /* commands may exit() from deep inside */
-            return commands[i].run(argc - 1, argv + 1);
+            cli_out_start(argc, argv);
+            cli_limits();
+            rc = commands[i].run(argc - 1, argv + 1);
+            /* the standard output is an output too: flushed before the files are committed */
+            if (rc == 0 && (fflush(stdout) || ferror(stdout)))
+                cli_die(1, "standard output: write failed: %s", strerror(errno));
+            cli_out_finish(rc == 0);
+            return rc;
         }
     cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, cloud, lattice, ocean, card, render, detect, bench; see noiselab --help)",
             argv[1]);

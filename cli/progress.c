@@ -6,13 +6,15 @@
 #include "cli.h"
 
 #include <pthread.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
 #include <unistd.h>
 
 static struct timespec t0;
-static int started, shown;
+static int started;
+static volatile sig_atomic_t shown;
 
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 static pthread_cond_t wake = PTHREAD_COND_INITIALIZER;
@@ -102,4 +104,13 @@ void cli_progress_done(void)
     if (shown)
         fprintf(stderr, "\r%*s\r", (int)sizeof line, "");
     started = shown = 0;
+}
+
+void cli_progress_abandon(void)
+{
+    static const char blank[] = "                                                                                ";
+    /* as cli_progress_done: a line of sizeof line blanks between two returns */
+    if (shown && (write(2, "\r", 1) < 0 || write(2, blank, sizeof blank - 1) < 0 ||
+                  write(2, blank, sizeof line - (sizeof blank - 1)) < 0 || write(2, "\r", 1) < 0))
+        shown = 0;
 }

@@ -1,5 +1,7 @@
-/* Errors, option parsing and atomic outputs for the subcommands. */
+/* Errors, option parsing and writing outputs for the subcommands. */
 #include "cli.h"
+#include "../core/fftw_plan.h"
+#include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../synth/subdiv.h"
 
@@ -8,6 +10,7 @@
 #include <getopt.h>
 #include <limits.h>
 #include <math.h>
+#include <omp.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,22 +18,7 @@
 #include <strings.h>
 #include <unistd.h>
 
-enum { MAX_OUT = 8 };
-static struct {
-    char final[PATH_MAX];
-    char tmp[PATH_MAX];
-} outs[MAX_OUT];
-static int nouts;
-
 void (*cli_exit_hook)(int code);
-
-static void remove_pending(void)
-{
-    for (int i = 0; i < nouts; i++)
-        if (outs[i].tmp[0])
-            unlink(outs[i].tmp);
-    nouts = 0;
-}
 
 void cli_die(int code, const char *fmt, ...)
 {
@@ -41,7 +29,7 @@ void cli_die(int code, const char *fmt, ...)
     vfprintf(stderr, fmt, ap);
     va_end(ap);
     fputc('\n', stderr);
-    remove_pending();
+    cli_out_abandon();
     if (cli_exit_hook)
         cli_exit_hook(code);
     exit(code);
@@ -50,6 +38,15 @@ void cli_die(int code, const char *fmt, ...)
 void cli_die_status(int st)
 {
     cli_die(nl_error_is_input(st) ? 2 : 1, "%s", nl_errmsg());
+}
+
+void cli_limits(void)
+{
+    size_t lim;
+    int cap = nl_threads_max();
+    cli_check(nl_mem_limit(&lim));
+    if (omp_get_max_threads() > cap)
+        omp_set_num_threads(cap);
 }
 
 void cli_check(int st)
@@ -197,40 +194,6 @@ int cli_has_ext(const char *path, const char *ext)
 {
     size_t lp = strlen(path), le = strlen(ext);
     return lp > le && strcasecmp(path + lp - le, ext) == 0;
-}
-
-const char *cli_out_begin(const char *path)
-{
-    int fd;
-    if (!path)
-        return NULL;
-    if (nouts == 0)
-        atexit(remove_pending);
-    if (nouts == MAX_OUT)
-        cli_die(1, "too many outputs");
-    if (!*path)
-        cli_die(2, "output: expected a file name, got \"\"");
-    snprintf(outs[nouts].final, PATH_MAX, "%s", path);
-    if (snprintf(outs[nouts].tmp, PATH_MAX, "%s.tmp.%ld", path, (long)getpid()) >= PATH_MAX)
-        cli_die(2, "output: path too long: \"%s\"", path);
-    fd = open(outs[nouts].tmp, O_WRONLY | O_CREAT | O_EXCL, 0644);
-    if (fd < 0) {
-        int e = errno;
-        outs[nouts].tmp[0] = 0;
-        cli_die(2, "output: cannot write \"%s\": %s", path, strerror(e));
-    }
-    close(fd);
-    return outs[nouts++].tmp;
-}
-
-void cli_out_commit(const char *path)
-{
-    for (int i = 0; path && i < nouts; i++)
-        if (outs[i].tmp[0] && strcmp(outs[i].final, path) == 0) {
-            if (rename(outs[i].tmp, outs[i].final) != 0)
-                cli_die(1, "output: cannot rename to \"%s\": %s", path, strerror(errno));
-            outs[i].tmp[0] = 0;
-        }
 }
 
 void cli_subdiv_flags(unsigned flags, char *buf, size_t len)

@@ -37,6 +37,14 @@ static void setup(void)
         fftw_import_wisdom_from_filename(cache);
 }
 
+int nl_threads_max(void)
+{
+    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+    int cap = cpus > 0 && cpus < 1024 ? (int)cpus * NL_THREADS_PER_CPU : 1024 * NL_THREADS_PER_CPU;
+    int want = omp_get_max_threads();
+    return want < 1 ? 1 : want < cap ? want : cap;
+}
+
 unsigned nl_fftw_flags(size_t count)
 {
     const char *e = getenv("NOISELAB_FFTW");
@@ -45,7 +53,7 @@ unsigned nl_fftw_flags(size_t count)
         setup();
     /* threads pay off only on large transforms; on small ones their start-up
      * and, when processes share the cores, their spinning cost more */
-    fftw_plan_with_nthreads(count >= NL_FFTW_THREADS_MIN ? omp_get_max_threads() : 1);
+    fftw_plan_with_nthreads(count >= NL_FFTW_THREADS_MIN ? nl_threads_max() : 1);
     if (e && strcmp(e, "estimate") == 0)
         measure = 0;
     else if (e && strcmp(e, "measure") == 0)

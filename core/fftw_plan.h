@@ -31,11 +31,20 @@
 #define NL_FFTW_THREADS_MIN ((size_t)1 << 16)
 
 /* Planner flags for a transform of `count` samples (FFTW_ESTIMATE or
- * FFTW_MEASURE, as above); the plan made next uses as many threads as OpenMP
- * would from NL_FFTW_THREADS_MIN samples on, else one (a process-wide FFTW
+ * FFTW_MEASURE, as above); the plan made next uses nl_threads_max() threads
+ * from NL_FFTW_THREADS_MIN samples on, else one (a process-wide FFTW
  * setting: call it right before planning).  The first call sets up FFTW's
  * threads and loads the wisdom cache.  Not thread-safe (see above). */
 unsigned nl_fftw_flags(size_t count);
+
+/* Threads per online processor at most (nl_threads_max). */
+#define NL_THREADS_PER_CPU 4
+
+/* The number of threads to use: OpenMP's (OMP_NUM_THREADS or
+ * omp_set_num_threads) capped at NL_THREADS_PER_CPU times the online
+ * processors, and at least 1, so that an absurd OMP_NUM_THREADS (10^5) costs
+ * no thread-creation failure.  Thread-safe. */
+int nl_threads_max(void);
 
 /* Writes the wisdom cache if plans were measured since it was loaded; a
  * no-op otherwise.  Failure to write a cache is silent (it is only a cache);

@@ -27,19 +27,18 @@ size_t nl_mem_available(void)
         avail = pages > 0 && psize > 0 ? (size_t)pages * (size_t)psize : 0;
     }
     /* NOISELAB_MEMORY_LIMIT (bytes) lowers the ceiling, e.g. on shared machines */
-    const char *lim = getenv("NOISELAB_MEMORY_LIMIT");
-    if (lim) {
-        char *end;
-        unsigned long long v = strtoull(lim, &end, 10);
-        if (end != lim && !*end && v > 0 && (avail == 0 || v < avail))
-            avail = (size_t)v;
-    }
+    size_t lim; /* a malformed limit is refused by nl_size_check */
+    if (nl_mem_limit(&lim) == NL_OK && lim && (avail == 0 || lim < avail))
+        avail = lim;
     return avail;
 }
 
 int nl_size_check(int dim, const size_t *n, size_t elem, size_t copies, size_t *count)
 {
-    size_t c = 1, bytes;
+    size_t c = 1, bytes, lim;
+    int st = nl_mem_limit(&lim);
+    if (st)
+        return st;
     if (dim < 1 || dim > 3)
         return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
     for (int a = 0; a < dim; a++) {

@@ -24,7 +24,8 @@ typedef struct {
  * `copies` arrays alive at once, neither overflows size_t nor exceeds the
  * memory available on this machine (nl_mem_available; 0, unknown, skips
  * that test).  Returns NL_OK (and the sample count in *count when count is
- * not NULL), NL_EINVAL (dim not 1..3, or some n[a] = 0) or NL_ETOOBIG (the
+ * not NULL), NL_EINVAL (dim not 1..3, some n[a] = 0, or NOISELAB_MEMORY_LIMIT
+ * set to a value that does not parse: nl_mem_limit) or NL_ETOOBIG (the
  * count or the bytes overflow size_t, or exceed the memory available). */
 int nl_size_check(int dim, const size_t *n, size_t elem, size_t copies, size_t *count);
 
@@ -48,7 +49,7 @@ int nl_field_check_finite(const nl_field *f, double limit, size_t *first);
 
 /* Bytes of memory available to this process now (MemAvailable, lowered by
  * the environment variable NOISELAB_MEMORY_LIMIT in bytes when set to a
- * positive integer), or 0 if unknown.  Reads /proc/meminfo on every call. */
+ * positive integer; see nl_mem_limit), or 0 if unknown.  Reads /proc/meminfo on every call. */
 size_t nl_mem_available(void);
 
 #endif

@@ -91,7 +91,11 @@ int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *n
  * value that is not a finite number, or fewer than 2 samples. */
 int nl_tsv_read_field(const char *path, nl_field **out);
 
-/* Read any field: EXR by content, else PNG by content, else TSV.  Samples
+/* Read any field: EXR by content, else PNG by content, else TSV.  The file
+ * is read once, front to back, into memory (core/io_read_internal.h), so a pipe, a
+ * FIFO or /dev/stdin works as well as a file (nl_exr_read and nl_png_read
+ * read once too); NL_ETOOBIG when it grows beyond the memory available,
+ * NL_EINPUT for a folder.  Samples
  * must be finite (NL_EINPUT names the first that is not).  `meta` (may be
  * NULL) is zeroed, then filled from EXR attributes. */
 int nl_field_read(const char *path, nl_field **out, nl_meta *meta);

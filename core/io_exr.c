@@ -1,5 +1,7 @@
-/* OpenEXR read and write through the OpenEXRCore C API. */
+/* OpenEXR read (from a file in memory: read once) and write through the
+ * OpenEXRCore C API. */
 #include "io.h"
+#include "io_read_internal.h"
 #include "nl_error.h"
 
 #include <openexr.h>
@@ -211,9 +213,50 @@ static int layout(const char *path, const nl_meta *m, int32_t w, int32_t hh, int
     return NL_OK;
 }
 
+/* The file in memory, read through OpenEXRCore's custom stream (pread
+ * semantics: a short count at the end). */
+typedef struct {
+    const unsigned char *buf;
+    size_t len;
+} membuf;
+
+static int64_t mem_read(exr_const_context_t ctxt, void *user, void *dst, uint64_t sz, uint64_t off,
+                        exr_stream_error_func_ptr_t error_cb)
+{
+    const membuf *m = user;
+    (void)ctxt;
+    (void)error_cb;
+    if (off >= m->len)
+        return 0;
+    if (sz > m->len - off)
+        sz = m->len - off;
+    memcpy(dst, m->buf + off, sz);
+    return (int64_t)sz;
+}
+
+static int64_t mem_size(exr_const_context_t ctxt, void *user)
+{
+    (void)ctxt;
+    return (int64_t)((const membuf *)user)->len;
+}
+
 int nl_exr_read(const char *path, nl_field **out, nl_meta *meta)
 {
+    unsigned char *buf;
+    size_t len;
+    int st;
+    *out = NULL;
+    if ((st = nl_io_slurp(path, &buf, &len)))
+        return st;
+    st = nl_exr_read_mem(path, buf, len, out, meta);
+    free(buf);
+    return st;
+}
+
+int nl_exr_read_mem(const char *path, const unsigned char *file, size_t len, nl_field **out, nl_meta *meta)
+{
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    membuf mb = {file, len};
     exr_context_t ctx = NULL;
     exr_attr_box2i_t dw;
     exr_storage_t storage;
@@ -228,6 +271,9 @@ int nl_exr_read(const char *path, nl_field **out, nl_meta *meta)
     *out = NULL;
     memset(&m, 0, sizeof m);
     init.error_handler_fn = quiet_handler;
+    init.user_data = &mb;
+    init.read_fn = mem_read;
+    init.size_fn = mem_size;
     if (exr_start_read(&ctx, path, &init) != EXR_ERR_SUCCESS)
         return NL_ERROR(NL_EINPUT, "%s: not a readable EXR file: %s", path, exr_msg);
     if (exr_get_storage(ctx, 0, &storage) || storage != EXR_STORAGE_SCANLINE) {

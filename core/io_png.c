@@ -1,5 +1,6 @@
 /* PNG read (exemplars) and 8-bit grey write (previews) through libpng. */
 #include "io.h"
+#include "io_read_internal.h"
 #include "nl_error.h"
 
 #include <math.h>
@@ -8,6 +9,19 @@
 #include <string.h>
 
 int nl_png_read(const char *path, nl_field **out)
+{
+    unsigned char *file;
+    size_t len;
+    int st;
+    *out = NULL;
+    if ((st = nl_io_slurp(path, &file, &len)))
+        return st;
+    st = nl_png_read_mem(path, file, len, out);
+    free(file);
+    return st;
+}
+
+int nl_png_read_mem(const char *path, const unsigned char *file, size_t len, nl_field **out)
 {
     png_image img;
     png_bytep buf;
@@ -18,7 +32,7 @@ int nl_png_read(const char *path, nl_field **out)
     *out = NULL;
     memset(&img, 0, sizeof img);
     img.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&img, path))
+    if (!png_image_begin_read_from_memory(&img, file, len))
         return NL_ERROR(NL_EINPUT, "%s: not a readable PNG file: %s", path, img.message);
     /* Sample values are taken as stored, without gamma decoding: 16-bit
      * files are read as 16-bit grey, 8-bit files as 8-bit grey; colour is

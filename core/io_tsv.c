@@ -1,5 +1,6 @@
-/* TSV tables: write columns, read a 1D field; and reading any field file. */
+/* TSV tables: write columns, read a 1D field. */
 #include "io.h"
+#include "io_read_internal.h"
 #include "nl_error.h"
 
 #include <errno.h>
@@ -54,14 +55,23 @@ static int split(char *line, char **fld, int max)
 int nl_tsv_read_field(const char *path, nl_field **out)
 {
     FILE *fp = fopen(path, "r");
+    int st;
+    *out = NULL;
+    if (!fp)
+        return NL_ERROR(NL_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+    st = nl_tsv_read_stream(fp, path, out);
+    fclose(fp);
+    return st;
+}
+
+int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out)
+{
     char line[4096], *fld[64];
     int ncol = 0, vcol, tcol = -1, st = NL_OK;
     size_t cap = 1024, n = 0, lineno = 0;
     double *v = NULL, t0 = 0, t1 = 0;
 
     *out = NULL;
-    if (!fp)
-        return NL_ERROR(NL_EINPUT, "%s: cannot open: %s", path, strerror(errno));
     while (fgets(line, sizeof line, fp)) {
         lineno++;
         if (line[0] == '#' || line[0] == '\n')
@@ -69,10 +79,8 @@ int nl_tsv_read_field(const char *path, nl_field **out)
         ncol = split(line, fld, 64);
         break;
     }
-    if (ncol == 0) {
-        fclose(fp);
+    if (ncol == 0)
         return NL_ERROR(NL_EINPUT, "%s: expected a TSV header line, found none", path);
-    }
     vcol = ncol - 1;
     for (int c = 0; c < ncol; c++)
         if (strcmp(fld[c], "value") == 0)
@@ -80,10 +88,8 @@ int nl_tsv_read_field(const char *path, nl_field **out)
     if (strcmp(fld[0], "t") == 0 || strcmp(fld[0], "x") == 0)
         tcol = 0;
     v = malloc(cap * sizeof *v);
-    if (!v) {
-        fclose(fp);
+    if (!v)
         return NL_ERROR(NL_ENOMEM, "out of memory");
-    }
     while (!st && fgets(line, sizeof line, fp)) {
         char *end;
         double x;
@@ -114,7 +120,8 @@ int nl_tsv_read_field(const char *path, nl_field **out)
         }
         v[n++] = x;
     }
-    fclose(fp);
+    if (!st && ferror(fp))
+        st = NL_ERROR(NL_EINPUT, "%s: read failed", path);
     if (!st && n < 2)
         st = NL_ERROR(NL_EINPUT, "%s: expected at least 2 samples, got %zu", path, n);
     if (!st) {
@@ -127,32 +134,4 @@ int nl_tsv_read_field(const char *path, nl_field **out)
     }
     free(v);
     return st;
-}
-
-int nl_field_read(const char *path, nl_field **out, nl_meta *meta)
-{
-    static const unsigned char exr_magic[4] = {0x76, 0x2f, 0x31, 0x01};
-    static const unsigned char png_magic[4] = {0x89, 'P', 'N', 'G'};
-    unsigned char head[4] = {0};
-    FILE *fp = fopen(path, "rb");
-    size_t got;
-    if (meta)
-        memset(meta, 0, sizeof *meta);
-    if (!fp)
-        return NL_ERROR(NL_EINPUT, "%s: cannot open: %s", path, strerror(errno));
-    got = fread(head, 1, 4, fp);
-    fclose(fp);
-    if (got == 4 && memcmp(head, exr_magic, 4) == 0) {
-        int st = nl_exr_read(path, out, meta);
-        for (size_t i = 0; !st && i < (*out)->count; i++)
-            if (!isfinite((*out)->data[i])) {
-                st = NL_ERROR(NL_EINPUT, "%s: sample %zu is %g; expected finite values", path, i, (*out)->data[i]);
-                nl_field_free(*out);
-                *out = NULL;
-            }
-        return st;
-    }
-    if (got == 4 && memcmp(head, png_magic, 4) == 0)
-        return nl_png_read(path, out);
-    return nl_tsv_read_field(path, out);
 }

@@ -20,4 +20,12 @@ void *nl_alloc(size_t bytes);
 /* Free a block from nl_alloc (NULL is a no-op).  Thread-safe. */
 void nl_free(void *p);
 
+/* The limit set by NOISELAB_MEMORY_LIMIT: a positive whole number of bytes
+ * (decimal digits only) in *bytes, 0 when the variable is not set.
+ * NL_EINVAL, naming the variable and its value, when it is set to anything
+ * else (empty, signed, fractional, with a unit, 0, beyond SIZE_MAX): a limit
+ * that does not parse is refused, not ignored.  Thread-safe as long as no
+ * thread changes the environment. */
+int nl_mem_limit(size_t *bytes);
+
 #endif

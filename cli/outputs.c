@@ -1,0 +1,400 @@
+/* The outputs of one run, all or none.
+ *
+ * Every output is written to a temporary beside it (cli_out_begin) and only
+ * marked ready by cli_out_commit; the renames happen together when the
+ * command returns success (cli_out_finish from cli_main).  A failure
+ * (cli_die, a non-zero return, exit) and a fatal signal remove every
+ * temporary and every folder this run created.  The table of outputs grows
+ * in chunks that never move, and an entry is filled before its state is
+ * published, so the signal handler can walk it at any moment using only
+ * unlink, rmdir and directory reads (async-signal-safe). */
+#include "cli.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/syscall.h>
+#include <time.h>
+#include <unistd.h>
+
+/* An entry: a file's temporary (PENDING until committed, READY after), a
+ * folder this run made (DIR_NEW: emptied and removed on failure) or one it
+ * writes into (DIR_OLD: the files that were not there at the start and are
+ * newer than it are removed on failure), a scratch folder (TMP_DIR: emptied
+ * and removed at the end whatever happens); DONE once renamed. */
+enum { FREE, PENDING, READY, DONE, DIR_NEW, DIR_OLD, TMP_DIR };
+enum { CHUNK = 16 };
+
+typedef struct {
+    _Atomic int state;
+    char tmp[PATH_MAX];   /* the temporary, or the folder */
+    char final[PATH_MAX]; /* the output's name as given */
+    dev_t dev;            /* the folder holding the output, to find one output named twice */
+    ino_t ino;
+    char *names;          /* DIR_OLD: the entries present at the start, each NUL-terminated, "" last */
+} entry;
+
+typedef struct chunk {
+    entry e[CHUNK];
+    struct chunk *_Atomic next;
+} chunk;
+
+static chunk first;
+static size_t used;                   /* entries handed out in this run (main thread only) */
+static _Atomic int committing, caught; /* renaming now; the signal that came meanwhile */
+static struct timespec started;        /* when the run began (coarse clock, as file times) */
+static int cmd_argc;
+static char **cmd_argv;
+
+static entry *at(size_t i)
+{
+    chunk *c = &first;
+    for (size_t k = i / CHUNK; k; k--) {
+        chunk *n = atomic_load(&c->next);
+        if (!n) {
+            if (!(n = calloc(1, sizeof *n)))
+                cli_die(1, "out of memory for the list of outputs");
+            atomic_store(&c->next, n);
+        }
+        c = n;
+    }
+    return &c->e[i % CHUNK];
+}
+
+/* Is `name` among the NUL-separated list `names`? */
+static int listed(const char *names, const char *name)
+{
+    for (const char *p = names; p && *p; p += strlen(p) + 1)
+        if (strcmp(p, name) == 0)
+            return 1;
+    return 0;
+}
+
+/* Remove what this run put in folder e (async-signal-safe: getdents64,
+ * fstatat, unlinkat, rmdir). */
+static void purge_dir(const entry *e, int made)
+{
+    char buf[4096];
+    long got;
+    int fd = open(e->tmp, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0)
+        return;
+    while ((got = syscall(SYS_getdents64, fd, buf, sizeof buf)) > 0)
+        for (long off = 0; off < got;) {
+            struct {
+                unsigned long long ino;
+                long long off;
+                unsigned short reclen;
+                unsigned char type;
+                char name[];
+            } *d = (void *)(buf + off);
+            struct stat st;
+            off += d->reclen;
+            if (strcmp(d->name, ".") == 0 || strcmp(d->name, "..") == 0)
+                continue;
+            if (!made && (listed(e->names, d->name) || fstatat(fd, d->name, &st, AT_SYMLINK_NOFOLLOW) ||
+                          !S_ISREG(st.st_mode) || st.st_mtim.tv_sec < started.tv_sec ||
+                          (st.st_mtim.tv_sec == started.tv_sec && st.st_mtim.tv_nsec < started.tv_nsec)))
+                continue;
+            unlinkat(fd, d->name, 0);
+        }
+    close(fd);
+    if (made)
+        rmdir(e->tmp);
+}
+
+/* Undo every output of this run (async-signal-safe). */
+static void remove_all(void)
+{
+    for (chunk *c = &first; c; c = atomic_load(&c->next))
+        for (int i = 0; i < CHUNK; i++) {
+            entry *e = &c->e[i];
+            int s = atomic_exchange(&e->state, FREE);
+            if (s == PENDING || s == READY)
+                unlink(e->tmp);
+            else if (s == DIR_NEW || s == DIR_OLD || s == TMP_DIR)
+                purge_dir(e, s != DIR_OLD);
+        }
+}
+
+static void on_signal(int sig)
+{
+    int keep = errno;
+    if (atomic_load(&committing)) { /* let the renames finish; cli_out_finish raises it then */
+        atomic_store(&caught, sig);
+        errno = keep;
+        return;
+    }
+    remove_all();
+    cli_progress_abandon();
+    signal(sig, SIG_DFL);
+    raise(sig); /* delivered when the handler returns: the status says which signal */
+    errno = keep;
+}
+
+static void at_exit(void) { remove_all(); }
+
+void cli_out_start(int argc, char **argv)
+{
+    static int installed;
+    cmd_argc = argc, cmd_argv = argv;
+    remove_all();
+    for (size_t i = 0; i < used; i++)
+        free(at(i)->names), at(i)->names = NULL;
+    used = 0;
+    clock_gettime(CLOCK_REALTIME_COARSE, &started);
+    if (!installed++) {
+        static const int sigs[] = {SIGINT,  SIGTERM, SIGHUP,  SIGPIPE, SIGQUIT, SIGXCPU, SIGXFSZ, SIGALRM,
+                                   SIGUSR1, SIGUSR2, SIGABRT, SIGSEGV, SIGBUS,  SIGFPE,  SIGILL};
+        struct sigaction sa;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++)
+            sigaddset(&sa.sa_mask, sigs[i]);
+        for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++) {
+            struct sigaction old;
+            /* a signal the caller ignores (nohup, a shell's background job) stays ignored, and one
+             * somebody else handles (a sanitizer's SIGSEGV) stays theirs */
+            if (sigaction(sigs[i], NULL, &old) == 0 && !(old.sa_flags & SA_SIGINFO) && old.sa_handler == SIG_DFL)
+                sigaction(sigs[i], &sa, NULL);
+        }
+        atexit(at_exit);
+    }
+}
+
+void cli_out_abandon(void) { remove_all(); }
+
+/* Does the option value v name path: the same, or (loose) a name made from
+ * it, as frames are: "x.png" gives "x-000.png"? */
+static int names(const char *v, const char *path, int loose)
+{
+    const char *dot = strrchr(v, '.');
+    size_t stem = dot ? (size_t)(dot - v) : strlen(v), lp = strlen(path), le = strlen(v) - stem;
+    if (!loose)
+        return strcmp(v, path) == 0;
+    return stem && lp > stem + le && strncmp(v, path, stem) == 0 && strcmp(path + lp - le, v + stem) == 0;
+}
+
+/* The option that named `path` on the command line, looking from argv[*i]
+ * on (*i is left past it); "output" if none. */
+static const char *option_from(const char *path, int *i, char *buf, size_t len)
+{
+    for (int loose = 0; loose < 2; loose++)
+        for (int k = *i; cmd_argv && k < cmd_argc; k++) {
+            const char *a = cmd_argv[k], *eq = strchr(a, '=');
+            if (names(a, path, loose) && k > 1 && cmd_argv[k - 1][0] == '-')
+                snprintf(buf, len, "%s", cmd_argv[k - 1]);
+            else if (a[0] == '-' && a[1] == '-' && eq && names(eq + 1, path, loose))
+                snprintf(buf, len, "%.*s", (int)(eq - a), a);
+            else if (a[0] == '-' && a[1] && a[1] != '-' && !eq && names(a + 2, path, loose))
+                snprintf(buf, len, "-%c", a[1]);
+            else
+                continue;
+            *i = k + 1;
+            return buf;
+        }
+    return "output";
+}
+
+static const char *option_of(const char *path, char *buf, size_t len)
+{
+    int i = 1;
+    return option_from(path, &i, buf, len);
+}
+
+/* The folder holding `path` (its device and inode), to tell one file named
+ * twice; exits 2 when it does not exist. */
+static void folder_of(const char *path, entry *e)
+{
+    char dir[PATH_MAX], ob[64];
+    const char *slash = strrchr(path, '/');
+    struct stat st;
+    if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else
+        snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+    if (stat(dir, &st))
+        cli_die(2, "%s: cannot write \"%s\": %s", option_of(path, ob, sizeof ob), path, strerror(errno));
+    if (!S_ISDIR(st.st_mode))
+        cli_die(2, "%s: cannot write \"%s\": \"%s\" is not a folder", option_of(path, ob, sizeof ob), path, dir);
+    e->dev = st.st_dev, e->ino = st.st_ino;
+}
+
+static const char *base(const char *p)
+{
+    const char *s = strrchr(p, '/');
+    return s ? s + 1 : p;
+}
+
+/* Refuse a path that another output of this run already names. */
+static void check_twice(const char *path, const entry *e)
+{
+    char a[64], b[64];
+    for (size_t i = 0; i + 1 < used; i++) {
+        const entry *o = at(i);
+        int s = atomic_load(&o->state);
+        if ((s == PENDING || s == READY) && o->dev == e->dev && o->ino == e->ino &&
+            strcmp(base(o->final), base(path)) == 0) {
+            int k = 1;
+            const char *oa = option_from(o->final, &k, a, sizeof a), *ob = option_of(path, b, sizeof b);
+            if (strcmp(o->final, path) == 0)
+                ob = option_from(path, &k, b, sizeof b);
+            if (strcmp(oa, ob) == 0)
+                cli_die(2, "%s: \"%s\" is written twice by this command; expected a different name for each output",
+                        oa, path);
+            cli_die(2, "%s and %s: both name \"%s\"; expected a different file for each output", oa, ob, path);
+        }
+    }
+}
+
+const char *cli_out_begin(const char *path)
+{
+    char ob[64];
+    struct stat st;
+    entry *e;
+    int fd;
+    if (!path)
+        return NULL;
+    if (!*path)
+        cli_die(2, "%s: expected a file name, got \"\"", option_of(path, ob, sizeof ob));
+    if (path[strlen(path) - 1] == '/' || (stat(path, &st) == 0 && S_ISDIR(st.st_mode)))
+        cli_die(2, "%s: \"%s\" is a folder; expected a file name", option_of(path, ob, sizeof ob), path);
+    e = at(used++);
+    atomic_store(&e->state, FREE);
+    folder_of(path, e);
+    snprintf(e->final, PATH_MAX, "%s", path);
+    check_twice(path, e);
+    if (snprintf(e->tmp, PATH_MAX, "%s.tmp.%ld", path, (long)getpid()) >= PATH_MAX)
+        cli_die(2, "%s: path too long: \"%s\"", option_of(path, ob, sizeof ob), path);
+    atomic_store(&e->state, PENDING); /* published before the file exists: a signal removes it */
+    fd = open(e->tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        int err = errno;
+        atomic_store(&e->state, FREE); /* not ours (EEXIST) or not made */
+        cli_die(2, "%s: cannot write \"%s\": %s", option_of(path, ob, sizeof ob), path, strerror(err));
+    }
+    close(fd);
+    return e->tmp;
+}
+
+void cli_out_commit(const char *path)
+{
+    for (size_t i = 0; path && i < used; i++) {
+        entry *e = at(i);
+        int s = PENDING;
+        if (strcmp(e->final, path) == 0)
+            atomic_compare_exchange_strong(&e->state, &s, READY);
+    }
+}
+
+/* The names in folder `dir` now, NUL-separated with "" last (NULL if none). */
+static char *snapshot(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *de;
+    size_t len = 0, cap = 256;
+    char *names = malloc(cap);
+    while (d && names && (de = readdir(d))) {
+        size_t l = strlen(de->d_name) + 1;
+        while (len + l + 1 > cap) {
+            char *more = realloc(names, cap *= 2);
+            if (!more) {
+                free(names);
+                closedir(d);
+                cli_die(1, "out of memory listing \"%s\"", dir);
+            }
+            names = more;
+        }
+        memcpy(names + len, de->d_name, l);
+        len += l;
+    }
+    if (d)
+        closedir(d);
+    if (!names)
+        cli_die(1, "out of memory listing \"%s\"", dir);
+    names[len] = 0;
+    return names;
+}
+
+void cli_out_dir(const char *opt, const char *dir)
+{
+    struct stat st;
+    entry *e;
+    if (!*dir)
+        cli_die(2, "%s: expected a folder name, got \"\"", opt);
+    if (snprintf(at(used)->tmp, PATH_MAX, "%s", dir) >= PATH_MAX)
+        cli_die(2, "%s: path too long: \"%s\"", opt, dir);
+    e = at(used++);
+    e->final[0] = 0;
+    if (stat(dir, &st) == 0) {
+        if (!S_ISDIR(st.st_mode))
+            cli_die(2, "%s: \"%s\" exists and is not a folder", opt, dir);
+        e->names = snapshot(dir);
+        atomic_store(&e->state, DIR_OLD);
+        return;
+    }
+    atomic_store(&e->state, DIR_NEW); /* before it exists, as for files */
+    if (mkdir(dir, 0755)) {
+        int err = errno;
+        atomic_store(&e->state, FREE);
+        cli_die(2, "%s: cannot create folder \"%s\": %s", opt, dir, strerror(err));
+    }
+}
+
+void cli_out_finish(int ok)
+{
+    size_t i;
+    if (!ok) {
+        remove_all();
+        return;
+    }
+    atomic_store(&committing, 1);
+    for (i = 0; i < used; i++) {
+        entry *e = at(i);
+        if (atomic_load(&e->state) != READY)
+            continue;
+        if (rename(e->tmp, e->final) != 0) {
+            int err = errno;
+            for (size_t k = 0; k < i; k++) /* all or none: what was renamed goes too */
+                if (atomic_load(&at(k)->state) == DONE)
+                    unlink(at(k)->final);
+            atomic_store(&committing, 0);
+            cli_die(1, "output: cannot rename to \"%s\": %s", e->final, strerror(err));
+        }
+        atomic_store(&e->state, DONE);
+    }
+    for (i = 0; i < used; i++) { /* begun and never committed: dropped; scratch folders: removed */
+        entry *e = at(i);
+        int s = atomic_exchange(&e->state, FREE);
+        if (s == PENDING)
+            unlink(e->tmp);
+        else if (s == TMP_DIR)
+            purge_dir(e, 1);
+        e->final[0] = 0;
+    }
+    atomic_store(&committing, 0);
+    if (atomic_load(&caught)) {
+        signal(caught, SIG_DFL);
+        raise(caught);
+    }
+}
+
+char *cli_out_tmpdir(char *templ)
+{
+    entry *e;
+    if (strlen(templ) >= PATH_MAX || !mkdtemp(templ))
+        return NULL;
+    e = at(used++);
+    e->final[0] = 0;
+    snprintf(e->tmp, PATH_MAX, "%s", templ);
+    atomic_store(&e->state, TMP_DIR);
+    return templ;
+}

@@ -1,0 +1,27 @@
+/* Reading a file once (internal to core/io_*.c).
+ *
+ * Inputs are read once, front to back, so that pipes, FIFOs and /dev/stdin
+ * work as inputs: nl_field_read takes the whole file into memory, looks at
+ * its first bytes and decodes the copy (the EXR reader seeks, which a pipe
+ * cannot). */
+#ifndef NL_IO_READ_INTERNAL_H
+#define NL_IO_READ_INTERNAL_H
+
+#include "io.h"
+
+#include <stddef.h>
+
+/* The whole of `path` (a file, pipe, FIFO or character device) in a new
+ * block *buf of *len bytes (plus a NUL after them), released by free.
+ * NL_EINPUT when it cannot be opened or read or is a folder (the message
+ * names the path), NL_ETOOBIG when it grows beyond the memory available
+ * (nl_mem_available), NL_ENOMEM.  Thread-safe. */
+int nl_io_slurp(const char *path, unsigned char **buf, size_t *len);
+
+/* The readers of io.h on a file already in memory (`path` only names it in
+ * messages); same results and codes. */
+int nl_exr_read_mem(const char *path, const unsigned char *buf, size_t len, nl_field **out, nl_meta *meta);
+int nl_png_read_mem(const char *path, const unsigned char *buf, size_t len, nl_field **out);
+int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out);
+
+#endif
