@@ -83,6 +83,10 @@ static int profile_decay(const nl_model *m, int dim, double L, double *b)
     }
 done:
     nl_field_free(R), nl_field_free(S), free(f);
+    if (st == NL_EINVAL)
+        st = NL_ERROR(NL_EINVAL, "%s: the spectrum of R shows no decay to measure between %g and %g cycles per "
+                      "unit (correlation length %g lags); expected a covariance that decays within 2^20 lags",
+                      nl_model_spec(m), 16 / L, 128 / L, L);
     return st;
 }
 
