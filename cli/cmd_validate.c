@@ -76,6 +76,19 @@ static FILE *open_in(const vctx *v, const char *name)
     return fopen(path, "w");
 }
 
+/* One TSV cell: the number, or "-" where a method did not run (or its
+ * estimate is undefined), so that the table holds no nan. */
+static void cell(FILE *fp, int have, double v)
+{
+    if (have && isfinite(v))
+        fprintf(fp, "\t%.8g", v);
+    else
+        fprintf(fp, "\t-");
+}
+
+/* A JSON number, or null where it is undefined. */
+static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
+
 /* DIR/acf.tsv and the gnuplot script; returns whether the plot was made. */
 static int write_data(const vctx *v)
 {
@@ -90,17 +103,20 @@ static int write_data(const vctx *v)
         fprintf(fp, "\t%s\t%s_se", nl_validate_method_name(meth), nl_validate_method_name(meth));
     fprintf(fp, "\n");
     for (int i = 0; i < L; i++) {
-        fprintf(fp, "%d\t%.8g\t%.8g", i, r->target[i], r->have_exact ? r->exact[i] : NAN);
-        for (int meth = 0; meth < NM; meth++)
-            fprintf(fp, "\t%.8g\t%.8g", r->method[meth].ran ? r->method[meth].mean[i] : NAN,
-                    r->method[meth].ran ? r->method[meth].se[i] : NAN);
+        fprintf(fp, "%d", i);
+        cell(fp, 1, r->target[i]);
+        cell(fp, r->have_exact, r->have_exact ? r->exact[i] : 0);
+        for (int meth = 0; meth < NM; meth++) {
+            cell(fp, r->method[meth].ran, r->method[meth].ran ? r->method[meth].mean[i] : 0);
+            cell(fp, r->method[meth].ran, r->method[meth].ran ? r->method[meth].se[i] : 0);
+        }
         fprintf(fp, "\n");
     }
     fclose(fp);
     fp = open_in(v, "acf.gp");
     fprintf(fp, "set terminal pngcairo size 900,560 font 'DejaVu Sans,11'\nset output '%s/acf.png'\n"
                 "set title '%s, %dD: ensemble ACF along x (%zu realizations)'\nset xlabel 'lag (samples)'\n"
-                "set grid\nset key top right\nset datafile missing 'nan'\n"
+                "set grid\nset key top right\nset datafile missing '-'\n"
                 "plot '%s/acf.tsv' using 1:2 with lines lw 3 lc rgb 'black' title 'target'",
             v->dir, v->spec, v->dim, v->M, v->dir);
     for (int meth = 0; meth < NM; meth++)
@@ -122,17 +138,29 @@ static const char *refusal(const vctx *v, int meth)
     return v->k.positive_definite ? v->r.method[meth].why : "the model is not positive definite (see above)";
 }
 
+/* "%.*g", or what an undefined (NaN) or unbounded figure means. */
+static const char *figure(char *buf, size_t size, int digits, double v, const char *nan_means)
+{
+    if (isfinite(v))
+        snprintf(buf, size, "%.*g", digits, v);
+    else
+        snprintf(buf, size, "%s", isnan(v) ? nan_means : v < 0 ? "unbounded below (a kink at lag 0)" : "unbounded");
+    return buf;
+}
+
 static void write_model_md(FILE *fp, const vctx *v)
 {
     const nl_check *k = &v->k;
+    char b1[64], b2[64], b3[64];
     fprintf(fp, "# noiselab validate: `%s` in %dD\n\n## The model\n\n%s. Smallest sampled spectrum / largest: "
-                "%.3g; smallest covariance eigenvalue / R(0): %.3g%s. Mean-square differentiable %s; "
-                "R''(0) = %.4g; %s.\n\n",
+                "%s; smallest covariance eigenvalue / R(0): %s%s. Mean-square differentiable %s; "
+                "R''(0) = %s; %s.\n\n",
             v->spec, v->dim, k->positive_definite ? "**Positive definite**" : "**Not positive definite**",
-            k->min_spectrum, k->min_eigenvalue,
+            figure(b1, sizeof b1, 3, k->min_spectrum, "not computed"),
+            figure(b2, sizeof b2, 3, k->min_eigenvalue, "not computed (a spectrum: model)"),
             k->isotropic ? (k->isotropic_bound_ok ? "; isotropic, above the -1/n bound" : "; isotropic, BELOW the -1/n bound") : "",
             k->differentiable_order < 0 ? "infinitely often" : k->differentiable_order == 0 ? "nowhere (rough)" : "a finite number of times",
-            k->r2, k->singular_below > 0 ? "numerically singular for subdivision below spacing" : "never numerically singular for subdivision");
+            figure(b3, sizeof b3, 4, k->r2, "not computed (a spectrum: model)"), k->singular_below > 0 ? "numerically singular for subdivision below spacing" : "never numerically singular for subdivision");
     if (k->singular_below > 0)
         fprintf(fp, "(%.3g)\n\n", k->singular_below);
 }
@@ -149,18 +177,20 @@ static void write_report(const vctx *v, int plotted)
                 "Bonferroni over 33 lags, family-wise 1e-3).\n\n| method | max \\|z\\| | verdict |\n|---|---|---|\n",
             v->M, res->n[0], v->dim == 2 ? " x " : "", v->dim == 2 ? res->n[1] : (size_t)0, v->M, res->threshold,
             v->M - 1);
-    json_t *vj = json_pack("{s:s,s:i,s:b,s:f,s:o}", "model", v->spec, "dim", v->dim, "positive_definite",
-                           v->k.positive_definite, "threshold", res->threshold, "methods", json_object());
+    json_t *vj = json_pack("{s:s,s:i,s:b,s:o,s:o}", "model", v->spec, "dim", v->dim, "positive_definite",
+                           v->k.positive_definite, "threshold", num(res->threshold), "methods", json_object());
     for (int meth = 0; meth < NM; meth++) {
         const nl_validate_method_result *r = &res->method[meth];
         const char *name = r->name;
-        if (r->ran)
+        if (r->ran && !isfinite(r->zmax))
+            fprintf(fp, "| %s | - | undefined (the ensemble's spread is 0 at some lag) |\n", name);
+        else if (r->ran)
             fprintf(fp, "| %s | %.2f | %s |\n", name, r->zmax,
                     r->pass ? "reproduces the target" : "does NOT reproduce the target");
         else
             fprintf(fp, "| %s | - | refused: %s |\n", name, refusal(v, meth));
         json_object_set_new(json_object_get(vj, "methods"), name,
-                            r->ran ? json_pack("{s:f,s:b}", "max_abs_z", r->zmax, "pass", r->pass)
+                            r->ran ? json_pack("{s:o,s:b}", "max_abs_z", num(r->zmax), "pass", r->pass)
                                    : json_pack("{s:s}", "refused", refusal(v, meth)));
     }
     fprintf(fp, "\n%s\n\nSubdivision estimates new points from earlier levels only, so its covariance differs "
