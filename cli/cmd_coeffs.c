@@ -44,8 +44,13 @@ static void print_text(const nl_subdiv_coeffs *c, const char *spec)
             const nl_subdiv_class *cl = &l->cls[j];
             char fl[128];
             cli_subdiv_flags(cl->flags, fl, sizeof fl);
-            printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %-10.3g flags %s\n", l->level,
-                   l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cl->condition, fl[0] ? fl : "-");
+            char cond[32];
+            if (isfinite(cl->condition))
+                snprintf(cond, sizeof cond, "%-10.3g", cl->condition);
+            else
+                snprintf(cond, sizeof cond, "%-10s", "unbounded");
+            printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %s flags %s\n", l->level,
+                   l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cond, fl[0] ? fl : "-");
             if (c->dim == 1) {
                 /* the right half a_1..a_N, as in Lewis's Table 1 (a_k = a_{1-k}) */
                 printf("    a_1..a_N:");
@@ -63,6 +68,25 @@ static void print_text(const nl_subdiv_coeffs *c, const char *spec)
             }
         }
     }
+}
+
+/* The model finite and positive at lag 0, and every coefficient and
+ * variance finite (a model singular at a lag the levels reach). */
+static void check_finite(const nl_model *m, const nl_subdiv_coeffs *c, const char *spec)
+{
+    double zero[3] = {0, 0, 0}, r0 = nl_model_acf(m, c->dim, zero);
+    if (!(isfinite(r0) && r0 > 0))
+        cli_die(2, "--acf: %s: R(0) = %g; expected a finite positive variance", spec, r0);
+    for (int k = 0; k < c->levels; k++)
+        for (int j = 0; j < c->level[k].nclass; j++) {
+            const nl_subdiv_class *cl = &c->level[k].cls[j];
+            int ok = isfinite(cl->variance) && isfinite(cl->raw_variance) && isfinite(cl->min_eigenvalue);
+            for (size_t i = 0; ok && i < cl->n; i++)
+                ok = isfinite(cl->a[i]);
+            if (!ok)
+                cli_die(2, "--acf: %s gives non-finite coefficients at level %d (spacing %g); expected a model "
+                        "finite at every lag", spec, k, c->level[k].spacing);
+        }
 }
 
 int cli_cmd_coeffs(int argc, char **argv)
@@ -107,6 +131,7 @@ int cli_cmd_coeffs(int argc, char **argv)
         cli_die(2, "--neighborhood: expected at most %d in %dD, got %d", dim == 1 ? 64 : 8, dim, N);
     cli_check(nl_model_parse(spec, &m));
     cli_check(nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co));
+    check_finite(m, co, spec);
     if (json) {
         json_t *lv = json_array();
         for (int k = 0; k < co->levels; k++) {
