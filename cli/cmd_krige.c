@@ -182,6 +182,11 @@ int cli_cmd_krige(int argc, char **argv)
     double h[3];
     for (int d = 0; d < 3; d++)
         h[d] = (a.hi[d] - a.lo[d]) / (double)a.g[d];
+    if ((st = nl_size_check(a.gdim, a.g, sizeof(double), a.vout ? 2 : 1, NULL))) {
+        char why[256];
+        snprintf(why, sizeof why, "%s", nl_errmsg());
+        cli_die(st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1, "--grid %s: %s", a.grid, why);
+    }
     nl_field *f = cli_field_alloc(a.gdim, a.g, h), *vf = a.vout ? cli_field_alloc(a.gdim, a.g, h) : NULL;
     cli_check(nl_krige_eval_grid(p, a.lo, f, vf));
     clock_gettime(CLOCK_MONOTONIC, &t1);

@@ -103,7 +103,7 @@ static int check_coordinate(const char *path, size_t lineno, const char *text, s
 }
 
 /* Grow v to hold one more sample, checked against the memory available. */
-static int grow(double **v, size_t *cap, size_t n)
+static int grow(const char *path, double **v, size_t *cap, size_t n)
 {
     size_t want = 2 * *cap;
     double *nv;
@@ -111,7 +111,8 @@ static int grow(double **v, size_t *cap, size_t n)
     if (n < *cap)
         return NL_OK;
     if ((st = nl_size_check(1, &want, sizeof **v, 2, NULL)))
-        return st;
+        return NL_ERROR(st, "%s: more than %zu samples do not fit in the memory available (NOISELAB_MEMORY_LIMIT "
+                        "or the machine's)", path, n);
     nv = realloc(*v, want * sizeof **v);
     if (!nv)
         return NL_ERROR(NL_ENOMEM, "out of memory");
@@ -134,7 +135,7 @@ static int read_row(const char *path, size_t lineno, char *line, int ncol, int v
         return NL_ERROR(NL_EINPUT, "%s:%zu: expected a finite number, got \"%s\"", path, lineno, fld[vcol]);
     if (tcol >= 0 && (st = check_coordinate(path, lineno, fld[tcol], *n, t0, t1)))
         return st;
-    if ((st = grow(v, cap, *n)))
+    if ((st = grow(path, v, cap, *n)))
         return st;
     (*v)[(*n)++] = x;
     return NL_OK;
