@@ -43,6 +43,8 @@ static void parse(int argc, char **argv, hist_opts *o)
         }
     }
     o->in = cli_one_operand("hist", "input file", argc, argv);
+    if (o->out && !cli_has_ext(o->out, ".tsv"))
+        cli_die(2, "-o: expected a .tsv file (the histogram is a table), got \"%s\"", o->out);
     if (o->bins > 10000000)
         cli_die(2, "--bins: expected at most 10000000, got %zu", o->bins);
 }

@@ -67,8 +67,12 @@ static void parse(int argc, char **argv, opts_t *a)
         if (!a->tspec || !a->gspec || a->spec)
             cli_die(2, "nonlin --design: expected --target SPEC and --g DIST (not --acf)");
         a->spec = a->tspec;
+        if (a->pout)
+            cli_die(2, "--psd: not written by --design (its table goes to -o), got \"%s\"", a->pout);
     } else if (!a->spec || !a->gspec)
         cli_die(2, "nonlin: expected --acf SPEC and --g DIST");
+    else if (a->verify)
+        cli_die(2, "--verify: goes with --design, got --verify %zu without it", a->verify);
     if (a->verify > 1000)
         cli_die(2, "--verify: expected at most 1000 realizations, got %zu", a->verify);
     if (a->K > NL_HERMITE_MAX)
@@ -95,7 +99,7 @@ static void print_design(const opts_t *a, const nl_hermite *he, const design_t *
                               "hermite_coefficients", cli_json_array(he->c, (size_t)a->K));
         if (a->verify)
             json_object_set_new(o, "measured_output_acf", cli_json_array(r->meas, nl2)),
-                json_object_set_new(o, "measured_error", json_real(r->merr));
+                json_object_set_new(o, "measured_error", isfinite(r->merr) ? json_real(r->merr) : json_null());
         cli_json_print(o);
     } else {
         printf("# design for %s after %s: projection error %.3g of the output variance, %zu unreachable lags",

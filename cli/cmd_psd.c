@@ -185,7 +185,10 @@ int cli_cmd_psd(int argc, char **argv)
         cli_die(2, "--preview: expected a .png file, got \"%s\"", o.preview);
     o.tmp = cli_out_begin(o.out);
     o.pvtmp = cli_out_begin(o.preview);
-    cli_check(o.welch ? nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg) : nl_psd_periodogram(x, o.mean, &P));
+    if (o.welch && (st = nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--welch %zu: %s", o.welch, nl_errmsg());
+    if (!o.welch)
+        cli_check(nl_psd_periodogram(x, o.mean, &P));
     if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
         write_centred(&o, P);
     if (o.angular && (st = nl_psd_sectors(P, 18, 0.05, 0.45, o.sector, &o.aniso)))
