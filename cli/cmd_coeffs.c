@@ -17,7 +17,8 @@ static const char help[] =
     "(eq. 7), the condition number and the flags of each point class.\n\n"
     "  --neighborhood N  half-width: 2N points in 1D, a 2N x 2N block in 2D (default 2);\n"
     "                    auto grows N per level until eq. (7) improves by less than\n"
-    "                    E R(0) (--tol, default 1e-4), up to 16 in 1D and 6 in 2D\n"
+    "                    E R(0) (--tol, default 1e-4), up to 16 in 1D and 6 in 2D;\n"
+    "                    in 2D, levels (2N)^6 at most 1.2e8 (N = 8: 7 levels)\n"
     "  --levels L        number of levels (default 10)\n"
     "  --spacing0 S      observation spacing at level 0, in lag units (default 1);\n"
     "                    level k uses S / 2^k\n"
@@ -129,6 +130,11 @@ int cli_cmd_coeffs(int argc, char **argv)
         cli_die(2, "--levels: expected at most 40, got %d", levels);
     if (N > (dim == 1 ? 64 : 8))
         cli_die(2, "--neighborhood: expected at most %d in %dD, got %d", dim == 1 ? 64 : 8, dim, N);
+    /* 2D: three (2N)^2 systems per level, O((2N)^6) each when singular (SVD):
+     * N = 8 takes about 0.6 s a level, so levels (2N)^6 <= 1.2e8 keeps it to seconds */
+    if (dim == 2 && (double)levels * pow(2.0 * N, 6) > 1.2e8)
+        cli_die(2, "--neighborhood %d with --levels %d in 2D: expected levels (2N)^6 <= 1.2e8 (at most %d levels "
+                "with N = %d)", N, levels, (int)(1.2e8 / pow(2.0 * N, 6)), N);
     cli_check(nl_model_parse(spec, &m));
     cli_check(nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co));
     check_finite(m, co, spec);

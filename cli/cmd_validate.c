@@ -20,7 +20,8 @@ static const char help[] =
     "compares it with the target at 33 lags: max |z| against the Bonferroni threshold\n"
     "of Student's t(M-1) at a family-wise rate of 1e-3.  Writes DIR/index.md (tables,\n"
     "plots), DIR/verdict.json, DIR/acf.tsv and DIR/acf.png (gnuplot).  Subdivision is\n"
-    "approximate: its own exact expected ACF is shown beside the target.\n";
+    "approximate: its own exact expected ACF is shown beside the target.  N is a power\n"
+    "of two (default 2048 in 1D, 128 in 2D), and N^dim M at most 2^24.\n";
 
 /* What validate works on and what it found. */
 typedef struct {
@@ -65,6 +66,11 @@ static void parse(int argc, char **argv, vctx *v)
         v->N = v->dim == 1 ? 2048 : 128;
     if (v->N & (v->N - 1))
         cli_die(2, "--size: expected a power of two, got %zu", v->N);
+    /* every method synthesises and estimates M fields: about 2e5 samples a
+     * second, so 2^24 samples keep each method near a minute */
+    if ((double)v->M * pow((double)v->N, v->dim) > 16777216.0)
+        cli_die(2, "--size %zu with --realizations %zu in %dD: %.3g samples per method; expected at most 2^24 "
+                "(about a minute per method)", v->N, v->M, v->dim, (double)v->M * pow((double)v->N, v->dim));
     if (mkdir(v->dir, 0755) && errno != EEXIST)
         cli_die(2, "-o: cannot create directory \"%s\": %s", v->dir, strerror(errno));
 }
