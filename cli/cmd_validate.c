@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 static const char help[] =
     "usage: noiselab validate --acf SPEC --dim 1|2 -o DIR [--size N] [--realizations M]\n\n"
@@ -71,8 +72,6 @@ static void parse(int argc, char **argv, vctx *v)
     if ((double)v->M * pow((double)v->N, v->dim) > 16777216.0)
         cli_die(2, "--size %zu with --realizations %zu in %dD: %.3g samples per method; expected at most 2^24 "
                 "(about a minute per method)", v->N, v->M, v->dim, (double)v->M * pow((double)v->N, v->dim));
-    if (mkdir(v->dir, 0755) && errno != EEXIST)
-        cli_die(2, "-o: cannot create directory \"%s\": %s", v->dir, strerror(errno));
 }
 
 static FILE *open_in(const vctx *v, const char *name)
@@ -217,6 +216,23 @@ static void progress(void *ctx, int meth, size_t done, size_t total)
     cli_progress("validate", (meth + (double)done / (double)total) / NM);
 }
 
+/* R finite at every lag of the validation grid (a model singular at one
+ * lag would be refused by some methods with a message naming a NaN and
+ * pass others unnoticed). */
+static void check_grid_lags(const vctx *v)
+{
+    if (nl_model_get_kind(v->m) == NL_MODEL_SPECTRUM)
+        return;
+    for (size_t j = 0; j < (v->dim == 2 ? v->N : 1); j++)
+        for (size_t i = 0; i < v->N; i++) {
+            double lag[3] = {(double)i, (double)j, 0};
+            double r = nl_model_acf(v->m, v->dim, lag);
+            if (!isfinite(r))
+                cli_die(2, "--acf: %s is not finite at lag (%zu, %zu) of the %zu-sample grid; expected a model "
+                        "finite at every lag", v->spec, i, j, v->N);
+        }
+}
+
 int cli_cmd_validate(int argc, char **argv)
 {
     static vctx v;
@@ -227,11 +243,20 @@ int cli_cmd_validate(int argc, char **argv)
     parse(argc, argv, &v);
     if ((st = nl_model_parse(v.spec, &v.m)) || (st = nl_check_model(v.m, v.dim, &v.k)))
         cli_die_status(st);
+    check_grid_lags(&v);
     n[0] = n[1] = v.N;
     nl_validate_options_default(&o);
     o.realizations = v.M, o.progress = progress;
-    if ((st = nl_validate_model(v.m, v.dim, n, v.k.positive_definite, &o, &v.r)))
+    /* the folder is made once every check has passed, and removed again
+     * (when this run made it) if the methods fail */
+    int made = mkdir(v.dir, 0755) == 0;
+    if (!made && errno != EEXIST)
+        cli_die(2, "-o: cannot create directory \"%s\": %s", v.dir, strerror(errno));
+    if ((st = nl_validate_model(v.m, v.dim, n, v.k.positive_definite, &o, &v.r))) {
+        if (made)
+            rmdir(v.dir);
         cli_die_status(st);
+    }
     cli_progress_done();
     write_report(&v, write_data(&v));
     printf("%s %dD: %s;", v.spec, v.dim, v.k.positive_definite ? "positive definite" : "NOT positive definite");
