@@ -137,11 +137,16 @@ static void target_values(const acf_opts *o, const nl_field *x, const double *la
     if ((st = nl_model_parse(o->target, &m)) ||
         (st = nl_acf_model_values(m, x->dim, x->n, x->h, o->radial ? 0 : o->axis, lag, o->nl, tgt)))
         cli_die_status(st);
+    nl_model_free(m);
+}
+
+/* The index of the first lag at which the target is not finite, or -1. */
+static long target_not_finite(const acf_opts *o, const double *lag, const double *tgt)
+{
     for (size_t i = 0; i < o->nl; i++)
         if (!isfinite(tgt[i]) && !isnan(lag[i]))
-            cli_die(2, "--target: %s is %g at lag %g; expected a model finite at every lag of the estimate",
-                    o->target, tgt[i], lag[i]);
-    nl_model_free(m);
+            return (long)i;
+    return -1;
 }
 
 static void output(const acf_opts *o, const double *lag, const double *val, const double *tgt, const double *blo,
@@ -204,6 +209,14 @@ int cli_cmd_acf(int argc, char **argv)
     estimate(&o, x, full, lag, val, blo, bhi);
     if (o.target)
         target_values(&o, x, lag, tgt);
+    long bad = o.target ? target_not_finite(&o, lag, tgt) : -1;
+    if (bad >= 0) {
+        double b = tgt[bad], l = lag[bad];
+        free(lag), free(val), free(tgt), free(blo), free(bhi);
+        nl_field_free(full), nl_field_free(x);
+        cli_die(2, "--target: %s is %g at lag %g; expected a model finite at every lag of the estimate", o.target,
+                b, l);
+    }
     output(&o, lag, val, tgt, blo, bhi);
     free(lag), free(val), free(tgt), free(blo), free(bhi);
     nl_field_free(full);

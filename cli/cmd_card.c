@@ -40,12 +40,17 @@ static nl_field *model_spectrum(const nl_field *W, const nl_model *m, const char
     nl_field *S = nl_field_alloc(2, W->n, W->h, &st);
     if (!S)
         cli_die_status(st);
-    if ((st = nl_wk_sample_spectrum(m, S)))
+    if ((st = nl_wk_sample_spectrum(m, S))) {
+        nl_field_free(S);
         cli_die(nl_error_is_input(st) ? 2 : 1, "--acf: %s", nl_errmsg());
+    }
     for (size_t i = 0; i < S->count; i++)
-        if (!isfinite(S->data[i]))
+        if (!isfinite(S->data[i])) {
+            double bad = S->data[i];
+            nl_field_free(S);
             cli_die(2, "--acf: %s has a spectrum of %g at a frequency of the card's grid; expected a finite "
-                    "spectrum", spec, S->data[i]);
+                    "spectrum", spec, bad);
+        }
     return S;
 }
 

@@ -185,8 +185,10 @@ int cli_cmd_psd(int argc, char **argv)
         cli_die(2, "--preview: expected a .png file, got \"%s\"", o.preview);
     o.tmp = cli_out_begin(o.out);
     o.pvtmp = cli_out_begin(o.preview);
-    if (o.welch && (st = nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg)))
+    if (o.welch && (st = nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg))) {
+        nl_field_free(x);
         cli_die(nl_error_is_input(st) ? 2 : 1, "--welch %zu: %s", o.welch, nl_errmsg());
+    }
     if (!o.welch)
         cli_check(nl_psd_periodogram(x, o.mean, &P));
     if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
@@ -201,11 +203,15 @@ int cli_cmd_psd(int argc, char **argv)
         target_profile(&o, x, tgt);
     cli_check(nl_psd_profile(P, freq, val, cnt, &nf));
     if (o.slope && (st = x->dim == 1 ? nl_psd_slope(freq, val, nf, o.f1, o.f2, 1, &o.sl)
-                                     : nl_psd_slope_grid(P, o.f1, o.f2, &o.sl)))
+                                     : nl_psd_slope_grid(P, o.f1, o.f2, &o.sl)) == NL_OK &&
+        !(isfinite(o.sl.slope) && isfinite(o.sl.ci95)))
+        st = NL_ERROR(NL_EINVAL, "the fit is undefined (slope %g +- %g); expected a band where the periodogram "
+                      "varies", o.sl.slope, o.sl.ci95);
+    if (o.slope && st) {
+        free(freq), free(val), free(cnt), free(tgt);
+        nl_field_free(P), nl_field_free(x);
         cli_die(nl_error_is_input(st) ? 2 : 1, "--slope %g:%g: %s", o.f1, o.f2, nl_errmsg());
-    if (o.slope && !(isfinite(o.sl.slope) && isfinite(o.sl.ci95)))
-        cli_die(2, "--slope %g:%g: the fit is undefined (slope %g +- %g); expected a band where the periodogram "
-                "varies", o.f1, o.f2, o.sl.slope, o.sl.ci95);
+    }
     output(&o, x->dim, freq, val, tgt, nf);
     free(freq), free(val), free(cnt), free(tgt);
     nl_field_free(P);
