@@ -184,6 +184,9 @@ static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *
         return NL_ERROR(NL_EINVAL, "%s: kriging needs R(lag)", nl_model_spec(m));
     if ((st = check_spans(dim, n, pts, val)))
         return st;
+    double r0 = nl_model_acf(m, dim, zero);
+    if (!(isfinite(r0) && r0 > 0))
+        return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a finite positive variance", nl_model_spec(m), r0);
     if (nl_size_check(2, (size_t[]){n, n}, sizeof(double), 4, NULL))
         return NL_ERROR(NL_ETOOBIG, "kriging: the %zu x %zu covariance matrix and its factors (4 copies of %g "
                         "bytes) do not fit in the memory available", n, n, 8.0 * (double)n * (double)n);

@@ -95,6 +95,9 @@ Test(hostile_krige, overflowing_data_and_models_refused)
     cr_assert_eq(nl_model_parse("expr:1/r", &m), NL_OK);
     REFUSED(NL_EINVAL, "expr:1/r", nl_krige_plan_alloc(m, 1, 3, x, ok, 0, 0, 0, &p));
     nl_model_free(m);
+    cr_assert_eq(nl_model_parse("expr:-exp(-r)", &m), NL_OK);
+    REFUSED(NL_EINVAL, "R(0) = -1", nl_krige_plan_alloc(m, 1, 3, x, ok, 0, 0, 0, &p));
+    nl_model_free(m);
 }
 
 Test(hostile_krige, matrix_checked_against_the_memory_limit)
