@@ -154,6 +154,11 @@ static int check_model(const nl_model *m, int dim, nl_check *c)
     } else {
         if (!(r0 > 0) || !isfinite(r0))
             return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a positive variance", nl_model_spec(m), r0);
+        /* the checks reach 1e-13 R(0) and square covariances: far from 1
+         * they run through subnormal numbers (minutes) or overflow */
+        if (r0 < 1e-200 || r0 > 1e200)
+            return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a variance between 1e-200 and 1e200 (the checks "
+                            "are relative to R(0): rescale the model)", nl_model_spec(m), r0);
         /* the lag beyond which |R| < 1e-8 R(0): the last such crossing below 2^20 */
         c->scale = 1e-3;
         for (double t = 1e-3; t < 1048576; t *= 1.25)
