@@ -1,5 +1,6 @@
 /* noiselab hist: histogram and moments of a field. */
 #include "cli.h"
+#include "../core/field.h"
 #include "../analysis/gof.h"
 #include "../analysis/hist.h"
 #include "../core/dist.h"
@@ -47,6 +48,8 @@ static void parse(int argc, char **argv, hist_opts *o)
         cli_die(2, "-o: expected a .tsv file (the histogram is a table), got \"%s\"", o->out);
     if (o->bins > 10000000)
         cli_die(2, "--bins: expected at most 10000000, got %zu", o->bins);
+    if (nl_size_check(1, &o->bins, sizeof(double), 4, NULL))
+        cli_die(2, "--bins %zu: the edges, counts and densities do not fit in the memory available", o->bins);
 }
 
 /* A JSON number, or null where it is undefined (a constant field). */

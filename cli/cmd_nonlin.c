@@ -1,5 +1,6 @@
 /* noiselab nonlin: predicted ACF and spectrum after a memoryless nonlinearity. */
 #include "cli.h"
+#include "../core/field.h"
 #include "../analysis/nonlin.h"
 #include "../core/model.h"
 #include "../core/wk.h"
@@ -79,6 +80,9 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "--terms: expected at most %d, got %d", NL_HERMITE_MAX, a->K);
     if (a->n > (1u << 24))
         cli_die(2, "--size: expected at most 16777216, got %zu", a->n);
+    /* about eight arrays of n samples live at once (fields, spectra, FFT scratch) */
+    if (nl_size_check(1, &a->n, sizeof(double), 8, NULL))
+        cli_die(2, "--size %zu: eight arrays of that many samples do not fit in the memory available", a->n);
 }
 
 /* The design's columns (nl2 lags) and figures. */
