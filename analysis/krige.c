@@ -135,6 +135,22 @@ static int check_spans(int dim, size_t n, const double *pts, const double *val)
     return NL_OK;
 }
 
+/* The data's spans, the model's variance and the matrix's memory. */
+static int check_inputs(const nl_model *m, int dim, size_t n, const double *pts, const double *val)
+{
+    double zero[3] = {0, 0, 0}, r0;
+    int st = check_spans(dim, n, pts, val);
+    if (st)
+        return st;
+    r0 = nl_model_acf(m, dim, zero);
+    if (!(isfinite(r0) && r0 > 0))
+        return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a finite positive variance", nl_model_spec(m), r0);
+    if (nl_size_check(2, (size_t[]){n, n}, sizeof(double), 4, NULL))
+        return NL_ERROR(NL_ETOOBIG, "kriging: the %zu x %zu covariance matrix and its factors (4 copies of %g "
+                        "bytes) do not fit in the memory available", n, n, 8.0 * (double)n * (double)n);
+    return NL_OK;
+}
+
 /* Every covariance of the data finite (a model singular at some lag). */
 static int check_matrix(const nl_krige_plan *p, const gsl_matrix *C)
 {
@@ -182,14 +198,8 @@ static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *
         return st;
     if (nl_model_is_spectral(m) && nl_model_get_kind(m) == NL_MODEL_SPECTRUM)
         return NL_ERROR(NL_EINVAL, "%s: kriging needs R(lag)", nl_model_spec(m));
-    if ((st = check_spans(dim, n, pts, val)))
+    if ((st = check_inputs(m, dim, n, pts, val)))
         return st;
-    double r0 = nl_model_acf(m, dim, zero);
-    if (!(isfinite(r0) && r0 > 0))
-        return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a finite positive variance", nl_model_spec(m), r0);
-    if (nl_size_check(2, (size_t[]){n, n}, sizeof(double), 4, NULL))
-        return NL_ERROR(NL_ETOOBIG, "kriging: the %zu x %zu covariance matrix and its factors (4 copies of %g "
-                        "bytes) do not fit in the memory available", n, n, 8.0 * (double)n * (double)n);
     p = calloc(1, sizeof *p);
     if (!p || !(p->pts = malloc(n * (size_t)dim * sizeof *p->pts))) {
         free(p);
