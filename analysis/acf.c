@@ -36,6 +36,9 @@ int nl_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t
 {
     double m;
     size_t stride = 1, n;
+    int st = nl_estimate_check_range(x, mean, 0);
+    if (st)
+        return st;
     if (axis < 0 || axis >= x->dim)
         return NL_ERROR(NL_EINVAL, "axis: expected an axis of the %d-D field, got %d", x->dim, axis);
     m = isnan(mean) ? nl_field_mean(x) : mean, n = x->n[axis];
@@ -70,5 +73,19 @@ int nl_acf_bartlett(const double *c, size_t nc, size_t N, size_t maxlag, double 
         }
         var[k] = s / (double)N;
     }
+    return NL_OK;
+}
+
+int nl_estimate_check_range(const nl_field *x, double mean, int spacing)
+{
+    double m = isnan(mean) ? nl_field_mean(x) : mean, d = 0, cell = x->h[0] * x->h[1] * x->h[2];
+    for (size_t i = 0; i < x->count; i++)
+        d = fmax(d, fabs(x->data[i] - m));
+    if (!isfinite(m) || !(d * (double)x->count < 1e150) ||
+        (spacing && !isfinite(d * d * (double)x->count * (double)x->count * cell)))
+        return NL_ERROR(NL_EINVAL,
+                        "estimate: the samples deviate from the mean %g by up to %g (spacing %g); their sums of "
+                        "squares overflow; expected deviations below %g",
+                        m, d, x->h[0], 1e150 / (double)x->count);
     return NL_OK;
 }

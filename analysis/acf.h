@@ -81,6 +81,14 @@ int nl_acf_radial(const nl_field *full, size_t nbins, double *lag, double *val, 
  * NL_OK or NL_EINVAL (axis not an axis of x, or maxlag >= n_axis). */
 int nl_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t maxlag, double *val);
 
+/* Whether the second-order estimates of x (acf, periodogram, Welch) stay
+ * finite: with m = mean (the sample mean when mean is NaN) and D the
+ * largest |x - m|, requires D count < 1e150 and, when spacing is set, that
+ * D^2 count times the cell h[0] h[1] h[2] be finite too.  Every estimator
+ * of this module and of psd.h calls it before it runs.  Returns NL_OK or
+ * NL_EINVAL naming the mean and the deviation. */
+int nl_estimate_check_range(const nl_field *x, double mean, int spacing);
+
 /* Bartlett's approximation (1946) to the variance of the biased
  * autocovariance estimate of a 1D Gaussian series at lag k:
  *     Var c_k ~ (1/N) sum_{|v| < N} [c_v^2 + c_{v+k} c_{v-k}],

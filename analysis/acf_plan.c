@@ -45,7 +45,9 @@ nl_field *nl_acf_plan_output_alloc(const nl_acf_plan *p, const double *h, int *s
 
 int nl_acf_plan_execute(nl_acf_plan *p, const nl_field *x, double mean, int unbiased, nl_field *c)
 {
-    int st = nl_autocorr_plan_execute(p->sums, x, isnan(mean) ? nl_field_mean(x) : mean, c);
+    int st = nl_estimate_check_range(x, mean, 0);
+    if (!st)
+        st = nl_autocorr_plan_execute(p->sums, x, isnan(mean) ? nl_field_mean(x) : mean, c);
     if (st)
         return st;
     for (size_t k = 0; k < c->n[2]; k++)

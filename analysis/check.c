@@ -83,6 +83,10 @@ static int profile_decay(const nl_model *m, int dim, double L, double *b)
     }
 done:
     nl_field_free(R), nl_field_free(S), free(f);
+    if (st == NL_EINVAL)
+        st = NL_ERROR(NL_EINVAL, "%s: the spectrum of R shows no decay to measure between %g and %g cycles per "
+                      "unit (correlation length %g lags); expected a covariance that decays within 2^20 lags",
+                      nl_model_spec(m), 16 / L, 128 / L, L);
     return st;
 }
 
@@ -150,6 +154,11 @@ static int check_model(const nl_model *m, int dim, nl_check *c)
     } else {
         if (!(r0 > 0) || !isfinite(r0))
             return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a positive variance", nl_model_spec(m), r0);
+        /* the checks reach 1e-13 R(0) and square covariances: far from 1
+         * they run through subnormal numbers (minutes) or overflow */
+        if (r0 < 1e-200 || r0 > 1e200)
+            return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a variance between 1e-200 and 1e200 (the checks "
+                            "are relative to R(0): rescale the model)", nl_model_spec(m), r0);
         /* the lag beyond which |R| < 1e-8 R(0): the last such crossing below 2^20 */
         c->scale = 1e-3;
         for (double t = 1e-3; t < 1048576; t *= 1.25)

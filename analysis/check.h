@@ -48,7 +48,8 @@ typedef struct {
 
 /* All checks of m in dim (1..3) dimensions into *out (zeroed first).
  * Returns NL_OK, NL_EINVAL (m not defined in dim, nl_model_check_dim, or
- * R(0) not a positive finite variance), NL_ENOMEM, NL_EFAIL (the
+ * R(0) not a positive finite variance or outside [1e-200, 1e200], or a
+ * spectrum without a measurable decay), NL_ENOMEM, NL_EFAIL (the
  * eigenvalues did not converge), or the codes of nl_wk_sample_spectrum and
  * nl_wk_acf_to_spectrum (core/wk.h).  "Not positive definite" is a result
  * (out->positive_definite = 0), not an error.  Thread safety: as the model

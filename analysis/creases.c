@@ -54,6 +54,9 @@ int nl_creases_measure(const nl_field *f, int levels, nl_creases *out)
         if (k >= 1 && k < levels && !isnan(out->ratio[k]))
             use[nuse++] = out->ratio[k];
     }
+    if (!(sum[levels] > 0))
+        return NL_ERROR(NL_EINVAL, "creases: the finest level has no curvature (second differences all 0: a "
+                        "constant or linear field); expected a random field");
     if (nuse == 0)
         return NL_ERROR(NL_EINVAL, "creases: no level between the coarsest and the finest holds 64 samples; "
                         "use a larger field or more levels");

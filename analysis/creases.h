@@ -38,7 +38,8 @@ typedef struct {
 /* f: 1D or 2D field made by `levels` levels of refinement (each size a
  * multiple of 2^levels).  *out is filled (the caller's struct; nothing to
  * free).  NL_EINVAL: a 3D field, levels outside 1..40, a size that is not a
- * multiple of 2^levels, or no level between the coarsest and the finest
+ * multiple of 2^levels, a field without curvature at the finest level
+ * (constant or linear), or no level between the coarsest and the finest
  * with 64 samples.  Reentrant and thread-safe (f only read). */
 int nl_creases_measure(const nl_field *f, int levels, nl_creases *out);
 

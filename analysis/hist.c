@@ -18,6 +18,11 @@ int nl_moments_compute(const nl_field *x, nl_moments *m)
     m->skewness = gsl_stats_skew_m_sd(x->data, 1, x->count, m->mean, sqrt(m->variance));
     m->kurtosis = gsl_stats_kurtosis_m_sd(x->data, 1, x->count, m->mean, sqrt(m->variance));
     gsl_stats_minmax(&m->min, &m->max, x->data, 1, x->count);
+    if (!isfinite(m->mean) || !isfinite(m->variance))
+        return NL_ERROR(NL_EINVAL, "moments: the samples run from %g to %g, whose variance overflows; expected "
+                        "magnitudes below 1e150", m->min, m->max);
+    if (m->variance == 0)
+        m->skewness = m->kurtosis = NAN;
     return NL_OK;
 }
 
@@ -30,6 +35,8 @@ static int hist(const nl_field *x, size_t bins, double *edges, double *counts)
     gsl_stats_minmax(&lo, &hi, x->data, 1, x->count);
     if (!isfinite(lo) || !isfinite(hi))
         return NL_ERROR(NL_EINVAL, "histogram: expected finite samples, got range [%g, %g]", lo, hi);
+    if (!isfinite(hi - lo))
+        return NL_ERROR(NL_EINVAL, "histogram: the samples run from %g to %g, whose width overflows", lo, hi);
     if (!(hi > lo))
         hi = lo + 1;
     h = gsl_histogram_alloc(bins);
@@ -58,8 +65,9 @@ int nl_hist_density(const nl_field *x, const nl_moments *mo, size_t bins, double
             double w = edges[b + 1] - edges[b];
             mid[b] = 0.5 * (edges[b] + edges[b + 1]);
             density[b] = counts[b] / ((double)x->count * w);
-            gauss[b] = exp(-0.5 * (mid[b] - mo->mean) * (mid[b] - mo->mean) / mo->variance) /
-                       sqrt(2 * M_PI * mo->variance);
+            gauss[b] = mo->variance > 0 ? exp(-0.5 * (mid[b] - mo->mean) * (mid[b] - mo->mean) / mo->variance) /
+                                              sqrt(2 * M_PI * mo->variance)
+                                        : 0;
         }
     free(edges), free(counts);
     return st;

@@ -17,20 +17,24 @@ typedef struct {
 } nl_moments;
 
 /* Moments and range of every sample of x (any dim; units of the samples).
- * Returns NL_OK or NL_EINVAL (fewer than 2 samples); *m is untouched on
- * failure.  Use this, not loops by hand, for a field's mean and variance. */
+ * A constant field (variance 0) has no skewness or kurtosis: both are NaN
+ * then, and the caller reports them as undefined.  Returns NL_OK or
+ * NL_EINVAL (fewer than 2 samples, or samples so large that the mean or
+ * the variance overflows); *m is unspecified on failure.  Use this, not loops by hand, for a field's mean and variance. */
 int nl_moments_compute(const nl_field *x, nl_moments *m);
 
 /* Histogram of `bins` equal bins over [min, max] of the samples (the maximum
  * falls in the last bin; a constant field spans [v, v + 1]): the caller's
  * edges[0..bins] and counts[0..bins-1] (counts as doubles).  Returns NL_OK,
- * NL_EINVAL (bins = 0, or a sample is infinite or NaN) or NL_ENOMEM. */
+ * NL_EINVAL (bins = 0, a sample is infinite or NaN, or max - min
+ * overflows) or NL_ENOMEM. */
 int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
 
 /* The histogram of nl_hist as a density against the Gaussian of the
  * moments mo (from nl_moments_compute): for each of the bins, its midpoint,
  * count / (N width) and the Gaussian density of mean mo->mean and variance
- * mo->variance at the midpoint (the caller's arrays of bins entries).
+ * mo->variance at the midpoint (0 when the variance is 0; the caller's
+ * arrays of bins entries).
  * Returns the codes of nl_hist, or NL_ENOMEM. */
 int nl_hist_density(const nl_field *x, const nl_moments *mo, size_t bins, double *mid, double *density, double *gauss);
 

@@ -3,6 +3,9 @@
 #include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 
+#include "../core/field.h"
+
+#include <float.h>
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include <math.h>
@@ -111,6 +114,73 @@ static int factorize(nl_krige_plan *p, const gsl_matrix *C, int strict)
     return st;
 }
 
+/* Coordinates whose differences, and values whose differences, stay finite
+ * (distances and the residuals d - b 1 must not overflow). */
+static int check_spans(int dim, size_t n, const double *pts, const double *val)
+{
+    double lo[4] = {INFINITY, INFINITY, INFINITY, INFINITY}, hi[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < n; i++)
+        for (int a = 0; a <= dim; a++) {
+            double x = a < dim ? pts[i * dim + a] : val[i];
+            if (!isfinite(x))
+                return NL_ERROR(NL_EINVAL, "kriging: expected finite coordinates and values, point %zu is not", i);
+            lo[a] = fmin(lo[a], x), hi[a] = fmax(hi[a], x);
+        }
+    for (int a = 0; a <= dim; a++)
+        if (!isfinite(4 * (hi[a] - lo[a])))
+            return NL_ERROR(NL_EINVAL,
+                            "kriging: the data's %s run from %g to %g, whose difference overflows; expected a "
+                            "span below %g",
+                            a == dim ? "values" : a == 0 ? "x" : a == 1 ? "y" : "z", lo[a], hi[a], DBL_MAX / 4);
+    return NL_OK;
+}
+
+/* The data's spans, the model's variance and the matrix's memory. */
+static int check_inputs(const nl_model *m, int dim, size_t n, const double *pts, const double *val)
+{
+    double zero[3] = {0, 0, 0}, r0;
+    int st = check_spans(dim, n, pts, val);
+    if (st)
+        return st;
+    r0 = nl_model_acf(m, dim, zero);
+    if (!(isfinite(r0) && r0 > 0))
+        return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a finite positive variance", nl_model_spec(m), r0);
+    if (nl_size_check(2, (size_t[]){n, n}, sizeof(double), 4, NULL))
+        return NL_ERROR(NL_ETOOBIG, "kriging: the %zu x %zu covariance matrix and its factors (4 copies of %g "
+                        "bytes) do not fit in the memory available", n, n, 8.0 * (double)n * (double)n);
+    return NL_OK;
+}
+
+/* Every covariance of the data finite (a model singular at some lag). */
+static int check_matrix(const nl_krige_plan *p, const gsl_matrix *C)
+{
+    for (size_t i = 0; i < p->n; i++)
+        for (size_t j = 0; j < p->n; j++)
+            if (!isfinite(gsl_matrix_get(C, i, j))) {
+                double lag = 0;
+                for (int a = 0; a < p->dim; a++)
+                    lag += (p->pts[i * p->dim + a] - p->pts[j * p->dim + a]) *
+                           (p->pts[i * p->dim + a] - p->pts[j * p->dim + a]);
+                return NL_ERROR(NL_EINVAL, "%s: the covariance of data points %zu and %zu (distance %g) is %g; "
+                                "expected a model finite at every lag",
+                                nl_model_spec(p->m), i, j, sqrt(lag), gsl_matrix_get(C, i, j));
+            }
+    return NL_OK;
+}
+
+/* The weights and the mean finite (values too large for the model's scale). */
+static int check_solution(const nl_krige_plan *p)
+{
+    int ok = isfinite(p->s) && isfinite(p->info.mean) && isfinite(p->r0);
+    for (size_t i = 0; ok && i < p->n; i++)
+        ok = isfinite(gsl_vector_get(p->a, i)) && isfinite(gsl_vector_get(p->u, i));
+    if (!ok)
+        return NL_ERROR(NL_EINVAL, "kriging: the weights or the mean (%g) overflow with %s and these data; "
+                        "expected data values and a variance of smaller magnitude", p->info.mean,
+                        nl_model_spec(p->m));
+    return NL_OK;
+}
+
 static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
                      double mean, int strict, nl_krige_plan **out)
 {
@@ -128,13 +198,8 @@ static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *
         return st;
     if (nl_model_is_spectral(m) && nl_model_get_kind(m) == NL_MODEL_SPECTRUM)
         return NL_ERROR(NL_EINVAL, "%s: kriging needs R(lag)", nl_model_spec(m));
-    for (size_t i = 0; i < n; i++) {
-        int ok = isfinite(val[i]);
-        for (int a = 0; a < dim; a++)
-            ok = ok && isfinite(pts[i * dim + a]);
-        if (!ok)
-            return NL_ERROR(NL_EINVAL, "kriging: expected finite coordinates and values, point %zu is not", i);
-    }
+    if ((st = check_inputs(m, dim, n, pts, val)))
+        return st;
     p = calloc(1, sizeof *p);
     if (!p || !(p->pts = malloc(n * (size_t)dim * sizeof *p->pts))) {
         free(p);
@@ -157,7 +222,9 @@ static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *
         gsl_vector_set(d, i, val[i]);
         gsl_vector_set(one, i, 1.0);
     }
-    st = factorize(p, C, strict);
+    st = check_matrix(p, C);
+    if (!st)
+        st = factorize(p, C, strict);
     if (!st) {
         double b;
         solve(p, one, p->u);
@@ -181,6 +248,8 @@ static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *
         }
     }
     gsl_matrix_free(C), gsl_vector_free(d), gsl_vector_free(one);
+    if (!st)
+        st = check_solution(p);
     if (st) {
         nl_krige_plan_free(p);
         return st;
@@ -341,6 +410,10 @@ int nl_krige_eval_grid(const nl_krige_plan *p, const double *lo, const nl_field 
                 x[(q - q0) * (size_t)dim + a] = lo[a] + ((double)idx[a] + 0.5) * f->h[a];
         }
         int st = nl_krige_eval_block(p, nq, x, &f->data[q0], var ? &var->data[q0] : NULL);
+        for (size_t q = 0; !st && q < nq; q++)
+            if (!isfinite(f->data[q0 + q]) || (var && !isfinite(var->data[q0 + q])))
+                st = NL_ERROR(NL_EINVAL, "kriging: the estimate at cell %zu (x %g) is not finite; expected "
+                              "cell centres within a finite distance of the data", q0 + q, x[q * (size_t)dim]);
         if (st) {
 #pragma omp critical
             status = st;

@@ -48,10 +48,15 @@ typedef struct {
  * (NL_EINVAL naming it) instead of the pseudo-inverse.  *out is NULL on
  * failure.
  * Errors: NL_EINVAL for n = 0, dim outside 1..3, a model that cannot be
- * evaluated in dim dimensions or has no R(lag) (spectrum:), or a singular
- * system with strict, or a coordinate or value that is not finite;
- * NL_ENOMEM.  (A singular system whose SVD failed to converge would give
- * NL_EFAIL; GSL's SVD of a finite symmetric matrix does not fail.) */
+ * evaluated in dim dimensions or has no R(lag) (spectrum:), whose R(0) is
+ * not finite and positive or whose covariance of two data points is not
+ * finite, a coordinate or value that is not finite, data whose coordinate
+ * or value spans overflow (the message names them), weights that
+ * overflow, or a singular system with strict; NL_ETOOBIG when the n x n
+ * matrix and its factors (4 copies) exceed the memory available
+ * (core/field.h); NL_ENOMEM.  (A singular system whose SVD failed to
+ * converge would give NL_EFAIL; GSL's SVD of a finite symmetric matrix
+ * does not fail.) */
 int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
                      double mean, int strict, nl_krige_plan **out);
 

@@ -35,7 +35,11 @@ typedef struct {
  * thread-safe, core/fftw_plan.h).  Nothing returned needs freeing. */
 
 /* The first `terms` coefficients c_n of g = F_to^-1 o Phi into *h.
- * NL_EINVAL: terms outside 2..NL_HERMITE_MAX; NL_ENOMEM. */
+ * NL_EINVAL: terms outside 2..NL_HERMITE_MAX, an expansion that is not
+ * finite (a distribution near the overflow threshold), an output that is
+ * constant to rounding (variance <= 0), or a quadrature
+ * variance more than 1% from the distribution's closed-form variance
+ * (tails too heavy, e.g. lognormal with sigma >= 3); NL_ENOMEM. */
 int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h);
 
 /* Output covariance at input correlation rho (|rho| <= 1). */

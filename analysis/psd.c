@@ -1,5 +1,6 @@
 /* The periodogram, by one r2c FFT, planned once per grid size. */
 #include "psd.h"
+#include "acf.h"
 #include "../core/fftw_plan.h"
 #include "../core/autocorr.h"
 #include "../core/mem.h"
@@ -73,6 +74,8 @@ int nl_psd_plan_execute(nl_psd_plan *p, const nl_field *x, double mean, nl_field
         if (x->n[a] != n[a] || P->n[a] != n[a])
             return NL_ERROR(NL_EINVAL, "periodogram: axis %d: expected %zu samples, got %zu and %zu", a, n[a],
                             x->n[a], P->n[a]);
+    if (nl_estimate_check_range(x, mean, 1))
+        return NL_EINVAL;
     m = isnan(mean) ? nl_field_mean(x) : mean;
     for (size_t i = 0; i < x->count; i++)
         p->buf[i] = x->data[i] - m;

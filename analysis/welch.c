@@ -1,5 +1,6 @@
 /* Welch averaging of windowed periodograms, planned once per segment size. */
 #include "welch.h"
+#include "acf.h"
 #include "../core/fftw_plan.h"
 #include "../core/autocorr.h"
 #include "../core/mem.h"
@@ -97,6 +98,8 @@ int nl_welch_plan_execute(nl_welch_plan *p, const nl_field *x, double mean, nl_f
         return NL_ERROR(NL_EINVAL, "welch: expected a %dD field and a %dD output of %zu samples per axis", dim, dim, S);
     if (S > x->n[0] || (dim == 2 && S > ny))
         return NL_ERROR(NL_EINVAL, "welch: expected a segment of 4 samples up to the field's size, got %zu", S);
+    if (nl_estimate_check_range(x, mean, 1))
+        return NL_EINVAL;
     m = isnan(mean) ? nl_field_mean(x) : mean;
     memset(P->data, 0, P->count * sizeof(double));
     for (size_t y0 = 0; y0 + (dim == 2 ? S : 1) <= ny; y0 += dim == 2 ? half : 1) {

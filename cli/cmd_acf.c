@@ -4,6 +4,7 @@
 #include "../analysis/fftshift.h"
 #include "../core/model.h"
 
+#include <float.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -82,7 +83,8 @@ static void check_field(acf_opts *o, const nl_field *x)
         cli_die(2, "--radial: expected a 2D or 3D field, %s is 1D", o->in);
     if (isnan(o->maxlag))
         o->nl = x->n[o->axis] / 4;
-    else if ((o->nl = (size_t)floor(o->maxlag / x->h[o->axis] + 1e-9)) >= x->n[o->axis])
+    else if (!(o->maxlag / x->h[o->axis] < (double)x->n[o->axis]) ||
+             (o->nl = (size_t)floor(o->maxlag / x->h[o->axis] + 1e-9)) >= x->n[o->axis])
         cli_die(2, "--max-lag: expected at most %g for %zu samples, got %g",
                 (double)(x->n[o->axis] - 1) * x->h[o->axis], x->n[o->axis], o->maxlag);
     o->nl += 1;
@@ -94,6 +96,10 @@ static void write_centred(const acf_opts *o, const nl_field *full)
     nl_field *C;
     nl_meta meta = {0};
     cli_check(nl_acf_centred_alloc(full, &C));
+    for (size_t i = 0; i < C->count; i++)
+        if (!(fabs(C->data[i]) <= FLT_MAX))
+            cli_die(2, "-o: the estimate %g does not fit the float32 samples of \"%s\"; expected |acf| <= %g "
+                    "(scale the input)", C->data[i], o->out, FLT_MAX);
     snprintf(meta.method, sizeof meta.method, "acf %s, lag 0 at the centre", o->unbiased ? "unbiased" : "biased");
     cli_check(nl_exr_write(o->tmp, C, &meta));
     cli_out_commit(o->out);
@@ -132,6 +138,15 @@ static void target_values(const acf_opts *o, const nl_field *x, const double *la
         (st = nl_acf_model_values(m, x->dim, x->n, x->h, o->radial ? 0 : o->axis, lag, o->nl, tgt)))
         cli_die_status(st);
     nl_model_free(m);
+}
+
+/* The index of the first lag at which the target is not finite, or -1. */
+static long target_not_finite(const acf_opts *o, const double *lag, const double *tgt)
+{
+    for (size_t i = 0; i < o->nl; i++)
+        if (!isfinite(tgt[i]) && !isnan(lag[i]))
+            return (long)i;
+    return -1;
 }
 
 static void output(const acf_opts *o, const double *lag, const double *val, const double *tgt, const double *blo,
@@ -194,6 +209,14 @@ int cli_cmd_acf(int argc, char **argv)
     estimate(&o, x, full, lag, val, blo, bhi);
     if (o.target)
         target_values(&o, x, lag, tgt);
+    long bad = o.target ? target_not_finite(&o, lag, tgt) : -1;
+    if (bad >= 0) {
+        double b = tgt[bad], l = lag[bad];
+        free(lag), free(val), free(tgt), free(blo), free(bhi);
+        nl_field_free(full), nl_field_free(x);
+        cli_die(2, "--target: %s is %g at lag %g; expected a model finite at every lag of the estimate", o.target,
+                b, l);
+    }
     output(&o, lag, val, tgt, blo, bhi);
     free(lag), free(val), free(tgt), free(blo), free(bhi);
     nl_field_free(full);

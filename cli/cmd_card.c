@@ -33,22 +33,40 @@ static void write_log_picture(const char *path, const nl_field *P)
     nl_field_free(C);
 }
 
-/* Radial spectra on the Welch grid: measured and (with a model) the model's. */
-static void write_radial(const char *path, const nl_field *W, const nl_model *m, size_t seg)
+/* The model's spectrum on the Welch grid, finite everywhere. */
+static nl_field *model_spectrum(const nl_field *W, const nl_model *m, const char *spec)
+{
+    int st;
+    nl_field *S = nl_field_alloc(2, W->n, W->h, &st);
+    if (!S)
+        cli_die_status(st);
+    if ((st = nl_wk_sample_spectrum(m, S))) {
+        nl_field_free(S);
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--acf: %s", nl_errmsg());
+    }
+    for (size_t i = 0; i < S->count; i++)
+        if (!isfinite(S->data[i])) {
+            double bad = S->data[i];
+            nl_field_free(S);
+            cli_die(2, "--acf: %s has a spectrum of %g at a frequency of the card's grid; expected a finite "
+                    "spectrum", spec, bad);
+        }
+    return S;
+}
+
+/* Radial spectra on the Welch grid: measured and (with the model's spectrum S) the model's. */
+static void write_radial(const char *path, const nl_field *W, const nl_field *S, size_t seg)
 {
     size_t nb = seg / 2 + 1, *cnt = cli_malloc(nb * sizeof *cnt);
     double *r = cli_malloc(nb * sizeof *r), *v = cli_malloc(nb * sizeof *v), *t = cli_malloc(nb * sizeof *t);
     double step = 1.0 / ((double)seg * W->h[0]);
-    int st;
     nl_radial(W, NL_GRID_FREQ, step, nb, r, v, cnt);
     for (size_t b = 0; b < nb; b++)
         t[b] = NAN;
-    if (m) {
-        nl_field *S = nl_field_alloc(2, W->n, W->h, &st);
-        double *rr = malloc(nb * sizeof *rr);
-        if (S && nl_wk_sample_spectrum(m, S) == NL_OK)
-            nl_radial(S, NL_GRID_FREQ, step, nb, rr, t, cnt);
-        nl_field_free(S), free(rr);
+    if (S) {
+        double *rr = cli_malloc(nb * sizeof *rr);
+        nl_radial(S, NL_GRID_FREQ, step, nb, rr, t, cnt);
+        free(rr);
     }
     FILE *fp = fopen(path, "w");
     fprintf(fp, "f\twelch\ttarget\n");
@@ -121,15 +139,18 @@ int cli_cmd_card(int argc, char **argv)
     nl_model *m = NULL;
     if (spec && (st = nl_model_parse(spec, &m)))
         cli_die_status(st);
-    const char *tmp = cli_out_begin(out);
-    char dir[] = "/tmp/noiselab-card-XXXXXX", path[4200];
-    if (!cli_out_tmpdir(dir))
-        cli_die(1, "card: cannot create a temporary directory");
     nl_moments mo;
     size_t seg = (x->n[0] < x->n[1] ? x->n[0] : x->n[1]) / 4, nseg;
     if ((st = nl_moments_compute(x, &mo)) || (st = nl_psd_periodogram(x, NAN, &P)) ||
         (st = nl_psd_welch(x, seg, NAN, &W, &nseg)))
         cli_die_status(st);
+    if (!(mo.variance > 0))
+        cli_die(2, "card: %s is constant (%g everywhere); expected a field that varies", argv[optind], mo.mean);
+    nl_field *S = m ? model_spectrum(W, m, spec) : NULL;
+    const char *tmp = cli_out_begin(out);
+    char dir[] = "/tmp/noiselab-card-XXXXXX", path[4200];
+    if (!cli_out_tmpdir(dir))
+        cli_die(1, "card: cannot create a temporary directory");
     snprintf(path, sizeof path, "%s/field.png", dir);
     double sd = sqrt(mo.variance);
     cli_check(nl_png_write_field(path, x, mo.mean - 3 * sd, mo.mean + 3 * sd));
@@ -138,7 +159,7 @@ int cli_cmd_card(int argc, char **argv)
     snprintf(path, sizeof path, "%s/welch.png", dir);
     write_log_picture(path, W);
     snprintf(path, sizeof path, "%s/radial.tsv", dir);
-    write_radial(path, W, m, seg);
+    write_radial(path, W, S, seg);
     snprintf(path, sizeof path, "%s/hist.tsv", dir);
     write_hist(path, x, &mo);
     snprintf(path, sizeof path, "%s/card.gp", dir);
@@ -150,6 +171,6 @@ int cli_cmd_card(int argc, char **argv)
     if (system(path) != 0)
         cli_die(1, "card: cannot remove %s", dir);
     cli_out_commit(out);
-    nl_field_free(P), nl_field_free(W), nl_field_free(x), nl_model_free(m);
+    nl_field_free(P), nl_field_free(W), nl_field_free(x), nl_field_free(S), nl_model_free(m);
     return 0;
 }

@@ -17,6 +17,9 @@ static const char help[] =
     "differentiable_order (null: infinitely), r2, singular_below_spacing (null:\n"
     "never), scale, spectral_decay, flags.  Exit status 0 whatever the verdict.\n";
 
+/* A JSON number, or null where it is undefined or unbounded. */
+static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
+
 static void print_json(const char *spec, int dim, const nl_check *k)
 {
     json_t *fl = json_array();
@@ -28,14 +31,14 @@ static void print_json(const char *spec, int dim, const nl_check *k)
         json_array_append_new(fl, json_string("isotropic-bound"));
     if (!k->monotone_3d)
         json_array_append_new(fl, json_string("not-monotone-3d"));
-    json_t *o = json_pack("{s:s,s:i,s:b,s:f,s:o,s:b,s:b,s:f,s:o,s:o,s:o,s:f,s:o,s:o}", "model", spec, "dim", dim,
-                          "positive_definite", k->positive_definite, "min_spectrum", k->min_spectrum,
+    json_t *o = json_pack("{s:s,s:i,s:b,s:o,s:o,s:b,s:b,s:o,s:o,s:o,s:o,s:o,s:o,s:o}", "model", spec, "dim", dim,
+                          "positive_definite", k->positive_definite, "min_spectrum", num(k->min_spectrum),
                           "min_eigenvalue", isfinite(k->min_eigenvalue) ? json_real(k->min_eigenvalue) : json_null(),
-                          "isotropic_bound_ok", k->isotropic_bound_ok, "isotropic", k->isotropic, "min_r", k->min_r,
+                          "isotropic_bound_ok", k->isotropic_bound_ok, "isotropic", k->isotropic, "min_r", num(k->min_r),
                           "differentiable_order",
                           k->differentiable_order < 0 ? json_null() : json_integer(k->differentiable_order), "r2",
                           isfinite(k->r2) ? json_real(k->r2) : json_null(), "singular_below_spacing",
-                          k->singular_below > 0 ? json_real(k->singular_below) : json_null(), "scale", k->scale,
+                          k->singular_below > 0 ? json_real(k->singular_below) : json_null(), "scale", num(k->scale),
                           "spectral_decay", isfinite(k->spectral_decay) ? json_real(k->spectral_decay) : json_null(),
                           "flags", fl);
     cli_json_print(o);
@@ -45,7 +48,10 @@ static void print_text(const char *spec, int dim, const nl_check *k)
 {
     printf("%s in %dD: %s\n", spec, dim, k->positive_definite ? "positive definite" : "NOT positive definite");
     printf("  min spectrum / max     %.3g\n", k->min_spectrum);
-    printf("  min eigenvalue / R(0)  %.3g\n", k->min_eigenvalue);
+    if (isfinite(k->min_eigenvalue))
+        printf("  min eigenvalue / R(0)  %.3g\n", k->min_eigenvalue);
+    else
+        printf("  min eigenvalue / R(0)  not computed (a spectrum: model has no R(0) here)\n");
     if (k->isotropic)
         printf("  min R / R(0)           %.4f (isotropic bound -1/%d: %s)\n", k->min_r, dim,
                k->isotropic_bound_ok ? "ok" : "violated");
@@ -56,7 +62,12 @@ static void print_text(const char *spec, int dim, const nl_check *k)
     else
         printf("  differentiable         %d times (spectrum ~ f^-%.2f)\n", k->differentiable_order,
                k->spectral_decay);
-    printf("  R''(0)                 %.6g\n", k->r2);
+    if (isfinite(k->r2))
+        printf("  R''(0)                 %.6g\n", k->r2);
+    else if (k->r2 < 0)
+        printf("  R''(0)                 unbounded below (a kink at lag 0)\n");
+    else
+        printf("  R''(0)                 not computed (a spectrum: model)\n");
     if (k->singular_below > 0)
         printf("  numerically singular below spacing %.3g (subdivision, N = 2)\n", k->singular_below);
     else

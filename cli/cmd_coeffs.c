@@ -17,7 +17,8 @@ static const char help[] =
     "(eq. 7), the condition number and the flags of each point class.\n\n"
     "  --neighborhood N  half-width: 2N points in 1D, a 2N x 2N block in 2D (default 2);\n"
     "                    auto grows N per level until eq. (7) improves by less than\n"
-    "                    E R(0) (--tol, default 1e-4), up to 16 in 1D and 6 in 2D\n"
+    "                    E R(0) (--tol, default 1e-4), up to 16 in 1D and 6 in 2D;\n"
+    "                    in 2D, levels (2N)^6 at most 1.2e8 (N = 8: 7 levels)\n"
     "  --levels L        number of levels (default 10)\n"
     "  --spacing0 S      observation spacing at level 0, in lag units (default 1);\n"
     "                    level k uses S / 2^k\n"
@@ -44,8 +45,13 @@ static void print_text(const nl_subdiv_coeffs *c, const char *spec)
             const nl_subdiv_class *cl = &l->cls[j];
             char fl[128];
             cli_subdiv_flags(cl->flags, fl, sizeof fl);
-            printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %-10.3g flags %s\n", l->level,
-                   l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cl->condition, fl[0] ? fl : "-");
+            char cond[32];
+            if (isfinite(cl->condition))
+                snprintf(cond, sizeof cond, "%-10.3g", cl->condition);
+            else
+                snprintf(cond, sizeof cond, "%-10s", "unbounded");
+            printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %s flags %s\n", l->level,
+                   l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cond, fl[0] ? fl : "-");
             if (c->dim == 1) {
                 /* the right half a_1..a_N, as in Lewis's Table 1 (a_k = a_{1-k}) */
                 printf("    a_1..a_N:");
@@ -63,6 +69,25 @@ static void print_text(const nl_subdiv_coeffs *c, const char *spec)
             }
         }
     }
+}
+
+/* The model finite and positive at lag 0, and every coefficient and
+ * variance finite (a model singular at a lag the levels reach). */
+static void check_finite(const nl_model *m, const nl_subdiv_coeffs *c, const char *spec)
+{
+    double zero[3] = {0, 0, 0}, r0 = nl_model_acf(m, c->dim, zero);
+    if (!(isfinite(r0) && r0 > 0))
+        cli_die(2, "--acf: %s: R(0) = %g; expected a finite positive variance", spec, r0);
+    for (int k = 0; k < c->levels; k++)
+        for (int j = 0; j < c->level[k].nclass; j++) {
+            const nl_subdiv_class *cl = &c->level[k].cls[j];
+            int ok = isfinite(cl->variance) && isfinite(cl->raw_variance) && isfinite(cl->min_eigenvalue);
+            for (size_t i = 0; ok && i < cl->n; i++)
+                ok = isfinite(cl->a[i]);
+            if (!ok)
+                cli_die(2, "--acf: %s gives non-finite coefficients at level %d (spacing %g); expected a model "
+                        "finite at every lag", spec, k, c->level[k].spacing);
+        }
 }
 
 int cli_cmd_coeffs(int argc, char **argv)
@@ -105,8 +130,14 @@ int cli_cmd_coeffs(int argc, char **argv)
         cli_die(2, "--levels: expected at most 40, got %d", levels);
     if (N > (dim == 1 ? 64 : 8))
         cli_die(2, "--neighborhood: expected at most %d in %dD, got %d", dim == 1 ? 64 : 8, dim, N);
+    /* 2D: three (2N)^2 systems per level, O((2N)^6) each when singular (SVD):
+     * N = 8 takes about 0.6 s a level, so levels (2N)^6 <= 1.2e8 keeps it to seconds */
+    if (dim == 2 && (double)levels * pow(2.0 * N, 6) > 1.2e8)
+        cli_die(2, "--neighborhood %d with --levels %d in 2D: expected levels (2N)^6 <= 1.2e8 (at most %d levels "
+                "with N = %d)", N, levels, (int)(1.2e8 / pow(2.0 * N, 6)), N);
     cli_check(nl_model_parse(spec, &m));
     cli_check(nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co));
+    check_finite(m, co, spec);
     if (json) {
         json_t *lv = json_array();
         for (int k = 0; k < co->levels; k++) {

@@ -1,5 +1,6 @@
 /* noiselab detect: creases and aliasing in a subdivision field. */
 #include "cli.h"
+#include "../core/nl_error.h"
 #include "../analysis/aliasing.h"
 #include "../analysis/creases.h"
 #include "../core/model.h"
@@ -45,7 +46,10 @@ int cli_cmd_detect(int argc, char **argv)
         cli_die(2, "--levels: expected at most 40, got %d", L);
     x = cli_read_field(in, NULL);
     if ((st = nl_creases_measure(x, L, &cr)) || (st = nl_aliasing_measure(x, &A)))
-        cli_die_status(st);
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--levels %d on %s: %s", L, in, nl_errmsg());
+    if (!isfinite(A) || !isfinite(cr.index))
+        cli_die(2, "detect: %s gives an undefined measure (crease index %g, aliasing %g); expected a random field",
+                in, cr.index, A);
     if (spec) {
         nl_model *m;
         if ((st = nl_model_parse(spec, &m)) || (st = nl_aliasing_predict(m, x, &P)))

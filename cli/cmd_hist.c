@@ -1,10 +1,12 @@
 /* noiselab hist: histogram and moments of a field. */
 #include "cli.h"
+#include "../core/field.h"
 #include "../analysis/gof.h"
 #include "../analysis/hist.h"
 #include "../core/dist.h"
 
 #include <getopt.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -42,8 +44,24 @@ static void parse(int argc, char **argv, hist_opts *o)
         }
     }
     o->in = cli_one_operand("hist", "input file", argc, argv);
+    if (o->out && !cli_has_ext(o->out, ".tsv"))
+        cli_die(2, "-o: expected a .tsv file (the histogram is a table), got \"%s\"", o->out);
     if (o->bins > 10000000)
         cli_die(2, "--bins: expected at most 10000000, got %zu", o->bins);
+    if (nl_size_check(1, &o->bins, sizeof(double), 4, NULL))
+        cli_die(2, "--bins %zu: the edges, counts and densities do not fit in the memory available", o->bins);
+}
+
+/* A JSON number, or null where it is undefined (a constant field). */
+static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
+
+/* "%.10g", or "undefined (constant field)". */
+static void print_moment(const char *name, double v, const char *tail)
+{
+    if (isfinite(v))
+        printf("# %s %.10g%s\n", name, v, tail);
+    else
+        printf("# %s undefined (constant field: variance 0)\n", name);
 }
 
 static void output(const hist_opts *o, const nl_moments *mo, const double *edges, const double *counts,
@@ -51,10 +69,10 @@ static void output(const hist_opts *o, const nl_moments *mo, const double *edges
 {
     size_t bins = o->bins;
     if (o->json) {
-        json_t *j = json_pack("{s:I,s:f,s:f,s:f,s:f,s:f,s:f,s:o,s:o}", "n", (json_int_t)mo->n, "mean", mo->mean,
-                              "variance", mo->variance, "skewness", mo->skewness, "kurtosis", mo->kurtosis, "min",
-                              mo->min, "max", mo->max, "edges", cli_json_array(edges, bins + 1), "counts",
-                              cli_json_array(counts, bins));
+        json_t *j = json_pack("{s:I,s:f,s:f,s:o,s:o,s:f,s:f,s:o,s:o}", "n", (json_int_t)mo->n, "mean", mo->mean,
+                              "variance", mo->variance, "skewness", num(mo->skewness), "kurtosis",
+                              num(mo->kurtosis), "min", mo->min, "max", mo->max, "edges",
+                              cli_json_array(edges, bins + 1), "counts", cli_json_array(counts, bins));
         if (pdf)
             json_object_set_new(j, "against", json_pack("{s:s,s:f,s:f,s:f,s:I,s:f,s:o}", "distribution", o->against,
                                                         "ks_statistic", gof->D, "ks_p", gof->p_ks, "chi2", gof->chi2,
@@ -62,8 +80,9 @@ static void output(const hist_opts *o, const nl_moments *mo, const double *edges
                                                         "pdf", cli_json_array(pdf, bins)));
         cli_json_print(j);
     } else if (!o->out) {
-        printf("# n %zu\n# mean %.10g\n# variance %.10g\n# skewness %.10g\n# kurtosis %.10g (excess)\n", mo->n,
-               mo->mean, mo->variance, mo->skewness, mo->kurtosis);
+        printf("# n %zu\n# mean %.10g\n# variance %.10g\n", mo->n, mo->mean, mo->variance);
+        print_moment("skewness", mo->skewness, "");
+        print_moment("kurtosis", mo->kurtosis, " (excess)");
         if (pdf)
             printf("# against %s: KS D %.6g p %.4g; chi-square %.6g on %zu equal-probability bins, p %.4g\n",
                    o->against, gof->D, gof->p_ks, gof->chi2, gof->bins - 1, gof->p_chi2);

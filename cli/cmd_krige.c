@@ -5,7 +5,9 @@
 #include "../core/model.h"
 #include "../core/nl_error.h"
 
+#include <float.h>
 #include <getopt.h>
+#include <string.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,7 +43,22 @@ static void parse_extent(opts_t *a)
         a->hi[d] = strtod(p, &end);
         if (end == p || !(a->hi[d] > a->lo[d]) || (d + 1 < a->gdim ? *end != ',' : *end != 0))
             cli_die(2, "--extent: expected %d ranges a:b with a < b, got \"%s\"", a->gdim, a->ext);
+        if (!isfinite(4 * (a->hi[d] - a->lo[d])))
+            cli_die(2, "--extent: expected finite ranges whose width does not overflow, got \"%s\"", a->ext);
         p = end + 1;
+    }
+}
+
+/* The grid and the data together span finite distances on every axis. */
+static void check_reach(const opts_t *a, const nl_points *pt)
+{
+    for (int d = 0; d < a->gdim; d++) {
+        double lo = a->lo[d], hi = a->hi[d];
+        for (size_t i = 0; i < pt->n; i++)
+            lo = fmin(lo, pt->pts[i * (size_t)pt->dim + d]), hi = fmax(hi, pt->pts[i * (size_t)pt->dim + d]);
+        if (!isfinite(4 * (hi - lo)))
+            cli_die(2, "--extent: \"%s\" and the data of %s span %g to %g on axis %d, whose distances overflow; "
+                    "expected a span below %g", a->ext, a->data, lo, hi, d + 1, DBL_MAX / 4);
     }
 }
 
@@ -78,6 +95,19 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "-o: TSV holds 1D grids; use .exr, got \"%s\"", a->out);
     if (a->vout && !cli_has_ext(a->vout, ".exr"))
         cli_die(2, "--variance: expected a .exr file, got \"%s\"", a->vout);
+    if (a->vout && strcmp(a->vout, a->out) == 0)
+        cli_die(2, "--variance: expected a file other than -o, got \"%s\" for both -o and --variance", a->vout);
+}
+
+/* A field bound for a float32 EXR fits it. */
+static void check_float(const char *opt, const char *path, const nl_field *f)
+{
+    if (!path || !cli_has_ext(path, ".exr"))
+        return;
+    for (size_t i = 0; i < f->count; i++)
+        if (!(fabs(f->data[i]) <= FLT_MAX))
+            cli_die(2, "%s: sample %zu is %g, beyond the float32 range of \"%s\"; expected |value| <= %g "
+                    "(write .tsv in 1D, or scale the data)", opt, i, f->data[i], path, FLT_MAX);
 }
 
 /* The estimates (EXR or, 1D, TSV) and the variances. */
@@ -90,6 +120,9 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
     snprintf(meta.method, sizeof meta.method, "krige:%s,points=%zu", isnan(a->mean) ? "ordinary" : "simple", n);
     if (info->pseudo_inverse)
         snprintf(meta.flags, sizeof meta.flags, "singular,pseudo-inverse");
+    check_float("-o", a->out, f);
+    if (vf)
+        check_float("--variance", a->vout, vf);
     if (cli_has_ext(a->out, ".exr"))
         st = nl_exr_write(tmp, f, &meta);
     else {
@@ -134,6 +167,7 @@ int cli_cmd_krige(int argc, char **argv)
     if (pt->dim != a.gdim)
         cli_die(2, "--data: %s has %d coordinates per point, the grid %d", a.data, pt->dim, a.gdim);
     n = pt->n;
+    check_reach(&a, pt);
     nl_model *m;
     nl_krige_plan *p;
     nl_krige_info info;
@@ -148,6 +182,11 @@ int cli_cmd_krige(int argc, char **argv)
     double h[3];
     for (int d = 0; d < 3; d++)
         h[d] = (a.hi[d] - a.lo[d]) / (double)a.g[d];
+    if ((st = nl_size_check(a.gdim, a.g, sizeof(double), a.vout ? 2 : 1, NULL))) {
+        char why[256];
+        snprintf(why, sizeof why, "%s", nl_errmsg());
+        cli_die(st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1, "--grid %s: %s", a.grid, why);
+    }
     nl_field *f = cli_field_alloc(a.gdim, a.g, h), *vf = a.vout ? cli_field_alloc(a.gdim, a.g, h) : NULL;
     cli_check(nl_krige_eval_grid(p, a.lo, f, vf));
     clock_gettime(CLOCK_MONOTONIC, &t1);

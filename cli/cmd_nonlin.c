@@ -1,5 +1,6 @@
 /* noiselab nonlin: predicted ACF and spectrum after a memoryless nonlinearity. */
 #include "cli.h"
+#include "../core/field.h"
 #include "../analysis/nonlin.h"
 #include "../core/model.h"
 #include "../core/wk.h"
@@ -67,14 +68,21 @@ static void parse(int argc, char **argv, opts_t *a)
         if (!a->tspec || !a->gspec || a->spec)
             cli_die(2, "nonlin --design: expected --target SPEC and --g DIST (not --acf)");
         a->spec = a->tspec;
+        if (a->pout)
+            cli_die(2, "--psd: not written by --design (its table goes to -o), got \"%s\"", a->pout);
     } else if (!a->spec || !a->gspec)
         cli_die(2, "nonlin: expected --acf SPEC and --g DIST");
+    else if (a->verify)
+        cli_die(2, "--verify: goes with --design, got --verify %zu without it", a->verify);
     if (a->verify > 1000)
         cli_die(2, "--verify: expected at most 1000 realizations, got %zu", a->verify);
     if (a->K > NL_HERMITE_MAX)
         cli_die(2, "--terms: expected at most %d, got %d", NL_HERMITE_MAX, a->K);
     if (a->n > (1u << 24))
         cli_die(2, "--size: expected at most 16777216, got %zu", a->n);
+    /* about eight arrays of n samples live at once (fields, spectra, FFT scratch) */
+    if (nl_size_check(1, &a->n, sizeof(double), 8, NULL))
+        cli_die(2, "--size %zu: eight arrays of that many samples do not fit in the memory available", a->n);
 }
 
 /* The design's columns (nl2 lags) and figures. */
@@ -95,7 +103,7 @@ static void print_design(const opts_t *a, const nl_hermite *he, const design_t *
                               "hermite_coefficients", cli_json_array(he->c, (size_t)a->K));
         if (a->verify)
             json_object_set_new(o, "measured_output_acf", cli_json_array(r->meas, nl2)),
-                json_object_set_new(o, "measured_error", json_real(r->merr));
+                json_object_set_new(o, "measured_error", isfinite(r->merr) ? json_real(r->merr) : json_null());
         cli_json_print(o);
     } else {
         printf("# design for %s after %s: projection error %.3g of the output variance, %zu unreachable lags",

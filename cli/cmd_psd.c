@@ -6,6 +6,7 @@
 #include "../analysis/spectral.h"
 #include "../analysis/welch.h"
 #include "../core/model.h"
+#include "../core/nl_error.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -105,6 +106,9 @@ static void write_centred(psd_opts *o, const nl_field *P)
     }
 }
 
+/* A JSON number, or null where it is undefined. */
+static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
+
 static void print_json(const psd_opts *o, int dim, const double *freq, const double *val, const double *tgt, size_t nf)
 {
     json_t *j = json_pack("{s:o,s:o}", "freq", cli_json_array(freq, nf), "psd", cli_json_array(val, nf));
@@ -114,14 +118,14 @@ static void print_json(const psd_opts *o, int dim, const double *freq, const dou
     json_object_set_new(j, "average", json_string(dim == 1 ? "none" : "radial"));
     if (o->angular) {
         json_object_set_new(j, "sectors", cli_json_array(o->sector, 18));
-        json_object_set_new(j, "anisotropy", json_real(o->aniso));
+        json_object_set_new(j, "anisotropy", num(o->aniso));
     }
     if (o->welch)
         json_object_set_new(j, "welch_segments", json_integer((json_int_t)o->nseg));
     if (o->slope)
-        json_object_set_new(j, "slope", json_pack("{s:f,s:f,s:I,s:f,s:[f,f]}", "slope", o->sl.slope, "ci95",
-                                                  o->sl.ci95, "points", (json_int_t)o->sl.points,
-                                                  "fractal_dimension", o->sl.fractal_dim, "band", o->f1, o->f2));
+        json_object_set_new(j, "slope", json_pack("{s:o,s:o,s:I,s:o,s:[f,f]}", "slope", num(o->sl.slope), "ci95",
+                                                  num(o->sl.ci95), "points", (json_int_t)o->sl.points,
+                                                  "fractal_dimension", num(o->sl.fractal_dim), "band", o->f1, o->f2));
     cli_json_print(j);
 }
 
@@ -134,7 +138,10 @@ static void output(const psd_opts *o, int dim, const double *freq, const double 
         printf("# sector power (0.05..0.45 cycles/sample), 10-degree sectors from +x:");
         for (int b = 0; b < 18; b++)
             printf(" %.4g", o->sector[b]);
-        printf("\n# anisotropy (max/min sector power) %.4f\n", o->aniso);
+        if (isfinite(o->aniso))
+            printf("\n# anisotropy (max/min sector power) %.4f\n", o->aniso);
+        else
+            printf("\n# anisotropy (max/min sector power) undefined (a sector holds no power)\n");
     }
     if (o->slope && !o->json)
         printf("# slope %.4f +- %.4f (95%%, %zu frequencies in [%g, %g]); fractal dimension "
@@ -178,7 +185,12 @@ int cli_cmd_psd(int argc, char **argv)
         cli_die(2, "--preview: expected a .png file, got \"%s\"", o.preview);
     o.tmp = cli_out_begin(o.out);
     o.pvtmp = cli_out_begin(o.preview);
-    cli_check(o.welch ? nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg) : nl_psd_periodogram(x, o.mean, &P));
+    if (o.welch && (st = nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg))) {
+        nl_field_free(x);
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--welch %zu: %s", o.welch, nl_errmsg());
+    }
+    if (!o.welch)
+        cli_check(nl_psd_periodogram(x, o.mean, &P));
     if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
         write_centred(&o, P);
     if (o.angular && (st = nl_psd_sectors(P, 18, 0.05, 0.45, o.sector, &o.aniso)))
@@ -191,8 +203,15 @@ int cli_cmd_psd(int argc, char **argv)
         target_profile(&o, x, tgt);
     cli_check(nl_psd_profile(P, freq, val, cnt, &nf));
     if (o.slope && (st = x->dim == 1 ? nl_psd_slope(freq, val, nf, o.f1, o.f2, 1, &o.sl)
-                                     : nl_psd_slope_grid(P, o.f1, o.f2, &o.sl)))
-        cli_die_status(st);
+                                     : nl_psd_slope_grid(P, o.f1, o.f2, &o.sl)) == NL_OK &&
+        !(isfinite(o.sl.slope) && isfinite(o.sl.ci95)))
+        st = NL_ERROR(NL_EINVAL, "the fit is undefined (slope %g +- %g); expected a band where the periodogram "
+                      "varies", o.sl.slope, o.sl.ci95);
+    if (o.slope && st) {
+        free(freq), free(val), free(cnt), free(tgt);
+        nl_field_free(P), nl_field_free(x);
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--slope %g:%g: %s", o.f1, o.f2, nl_errmsg());
+    }
     output(&o, x->dim, freq, val, tgt, nf);
     free(freq), free(val), free(cnt), free(tgt);
     nl_field_free(P);

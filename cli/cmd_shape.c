@@ -4,6 +4,8 @@
 #include "../synth/shape.h"
 
 #include <getopt.h>
+#include <float.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,6 +51,11 @@ int cli_cmd_shape(int argc, char **argv)
         cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", x->dim, out);
     tmp = cli_out_begin(out);
     cli_check(nl_synth_shape(x, d, empirical));
+    for (size_t i = 0; i < x->count; i++)
+        if (!isfinite(x->data[i]) || (cli_has_ext(out, ".exr") && !(fabs(x->data[i]) <= FLT_MAX)))
+            cli_die(2, "--to: %s gives the value %g at sample %zu, beyond %s; expected a distribution whose "
+                    "values fit the output", to, x->data[i], i, cli_has_ext(out, ".exr") ? "the float32 range of "
+                    "EXR" : "the finite numbers");
     size_t len = strlen(meta.method);
     snprintf(meta.method + len, sizeof meta.method - len, "%s shape:%s%s", len ? " +" : "", to,
              empirical ? ",empirical" : "");

@@ -110,6 +110,18 @@ static int load_table(nl_dist *d, const char *path)
     return NL_OK;
 }
 
+/* Values not infinite as far into the tails as shaping evaluates the
+ * quantile (u in [1e-300, 1 - 1e-16], synth/shape.c), nor their span. */
+static int check_tails(const nl_dist *d)
+{
+    double lo = nl_dist_quantile(d, 1e-300), hi = nl_dist_quantile(d, 1 - 1e-16);
+    /* NaN: GSL's chi-square inverse gives up that far out (the callers skip it) */
+    if (isinf(lo) || isinf(hi) || isinf(hi - lo))
+        return NL_ERROR(NL_EINVAL, "%s: the quantiles at u = 1e-300 and 1 - 1e-16 are %g and %g; expected "
+                        "parameters whose values and their span stay finite", d->spec, lo, hi);
+    return NL_OK;
+}
+
 int nl_dist_parse(const char *spec, nl_dist **out)
 {
     static const struct {
@@ -170,6 +182,8 @@ int nl_dist_parse(const char *spec, nl_dist **out)
             break;
         }
     }
+    if (!st)
+        st = check_tails(d);
     if (st) {
         nl_dist_free(d);
         return st;

@@ -16,7 +16,9 @@
  *
  * nl_dist_parse returns NL_OK and a new distribution in *out (release it
  * with nl_dist_free; NULL is a no-op), or NL_EINVAL (unknown name or key, a
- * parameter that is not a number or out of range), NL_EINPUT (table: file
+ * parameter that is not a number or out of range, or parameters whose
+ * quantile at u = 1e-300 or 1 - 1e-16, or the span between, is infinite,
+ * e.g. laplace:a=1e308), NL_EINPUT (table: file
  * missing, a row that is not two numbers, u not increasing from 0 to 1 or y
  * decreasing, fewer than two rows) or NL_ENOMEM.  The other functions return
  * values, no status: quantile(u) for u in [0, 1] (infinite tails at 0 and 1

@@ -85,10 +85,15 @@ int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *n
                   const double *const *cols);
 
 /* Read a 1D field from a TSV table with a header line: the column named
- * "value" if there is one, else the last; the spacing is taken from a first
- * column named "t" or "x" when present.  Lines starting with '#' are skipped.
- * NL_EINPUT: no file, no header, a row with a different column count, a
- * value that is not a finite number, or fewer than 2 samples. */
+ * "value", and at most one other, a first column named "t" or "x" that
+ * gives the spacing (t1 - t0) and must be finite, increasing and regular
+ * (each t within a thousandth of a step of t0 + i step).  Lines starting
+ * with '#' are skipped.  NL_EINPUT: no file, no header, no "value" column,
+ * more than two columns (scattered points are not a series), a row with a
+ * different column count, a value or coordinate that is not a finite
+ * number, a coordinate column that is constant, decreasing or irregular, a
+ * line longer than 4095 characters, or fewer than 2 samples; NL_ETOOBIG or
+ * NL_ENOMEM when the samples do not fit in memory. */
 int nl_tsv_read_field(const char *path, nl_field **out);
 
 /* Read any field: EXR by content, else PNG by content, else TSV.  The file

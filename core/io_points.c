@@ -1,6 +1,7 @@
 /* Scattered data points from TSV. */
 #include "io_points.h"
 #include "nl_error.h"
+#include "field.h"
 
 #include <errno.h>
 #include <math.h>
@@ -53,6 +54,12 @@ static int read_rows(FILE *fp, const char *path, size_t cols, size_t lineno, dou
         if (line[0] == '#' || line[0] == '\n')
             continue;
         if (*n == cap) {
+            size_t want[2] = {2 * cap, cols};
+            if (nl_size_check(2, want, sizeof *v, 2, NULL)) {
+                free(v);
+                return NL_ERROR(NL_ETOOBIG, "%s:%zu: more than %zu points do not fit in the memory available", path,
+                                lineno, *n);
+            }
             double *w = realloc(v, 2 * cap * cols * sizeof *v);
             if (!w) {
                 full = 1;
@@ -108,11 +115,16 @@ int nl_points_read(const char *path, nl_points **out)
         if (line[0] != '#' && line[0] != '\n')
             cols = columns(line);
     }
+    if (cols)
+        line[strcspn(line, "\r\n")] = 0;
     if (!cols)
         st = NL_ERROR(NL_EINPUT, "%s: expected at least one data row", path);
     else if (cols < 2 || cols > 4)
         st = NL_ERROR(NL_EINPUT, "%s:%zu: expected a header of 2 to 4 columns (x [y [z]] value), got %zu", path,
                       lineno, cols);
+    else if (strcmp(strrchr(line, '\t') + 1, "value") != 0)
+        st = NL_ERROR(NL_EINPUT, "%s:%zu: expected a header x [y [z]] value whose last column is named \"value\", "
+                      "got \"%s\"", path, lineno, strrchr(line, '\t') + 1);
     else if (!(st = read_rows(fp, path, cols, lineno, &raw, &n)) && !n)
         st = NL_ERROR(NL_EINPUT, "%s: expected at least one data row", path);
     fclose(fp);

@@ -16,9 +16,10 @@ typedef struct {
 
 /* Read path into a new nl_points (*out; NULL on failure), released by
  * nl_points_free.  Errors: NL_EINPUT when the file cannot be opened, the
- * header has fewer than 2 or more than 4 columns, a row is not that many
- * finite numbers, or there is no row (the message names file and line);
- * NL_ENOMEM.  Thread-safe. */
+ * header has fewer than 2 or more than 4 columns or its last column is not
+ * named "value", a row is not that many finite numbers, or there is no row
+ * (the message names file and line); NL_ETOOBIG when the rows outgrow the
+ * memory available (core/field.h); NL_ENOMEM.  Thread-safe. */
 int nl_points_read(const char *path, nl_points **out);
 
 /* Free p and its arrays (NULL is a no-op). */

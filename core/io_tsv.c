@@ -52,6 +52,108 @@ static int split(char *line, char **fld, int max)
     return n;
 }
 
+/* The columns of a 1D series from its header: the "value" column (*vcol) and
+ * an optional first coordinate column named t or x (*tcol, else -1). */
+static int header_columns(const char *path, size_t lineno, char **fld, int ncol, int *vcol, int *tcol)
+{
+    *vcol = -1;
+    *tcol = -1;
+    for (int c = 0; c < ncol; c++)
+        if (strcmp(fld[c], "value") == 0)
+            *vcol = c;
+    if (*vcol < 0)
+        return NL_ERROR(NL_EINPUT, "%s:%zu: expected a column named \"value\" in the header, got %d column%s "
+                        "starting \"%s\"",
+                        path, lineno, ncol, ncol > 1 ? "s" : "", fld[0]);
+    if (ncol > 2)
+        return NL_ERROR(NL_EINPUT,
+                        "%s:%zu: expected a 1D series (columns t value), got %d columns: scattered points "
+                        "or several coordinates are not a series",
+                        path, lineno, ncol);
+    if (ncol == 2 && *vcol == 1 && (strcmp(fld[0], "t") == 0 || strcmp(fld[0], "x") == 0))
+        *tcol = 0;
+    return NL_OK;
+}
+
+/* The coordinate of row n: finite, and on the regular increasing grid
+ * t0 + n h set by the first two rows (to a thousandth of a step, so that
+ * coordinates printed to 10 digits pass). */
+static int check_coordinate(const char *path, size_t lineno, const char *text, size_t n, double *t0, double *t1)
+{
+    char *end;
+    double t = strtod(text, &end), h, want;
+    if (end == text || *end || !isfinite(t))
+        return NL_ERROR(NL_EINPUT, "%s:%zu: expected a finite coordinate, got \"%s\"", path, lineno, text);
+    if (n < 2) {
+        *(n == 0 ? t0 : t1) = t;
+        if (n == 1 && !(t > *t0 && isfinite(t - *t0)))
+            return NL_ERROR(NL_EINPUT,
+                            "%s:%zu: expected an increasing coordinate column, got %.10g after %.10g (a series "
+                            "that is constant or decreasing in its coordinate)",
+                            path, lineno, t, *t0);
+        return NL_OK;
+    }
+    h = *t1 - *t0;
+    want = *t0 + (double)n * h;
+    if (!(fabs(t - want) <= 1e-3 * h + 1e-9 * fabs(want)))
+        return NL_ERROR(NL_EINPUT,
+                        "%s:%zu: expected a regular coordinate column (step %.10g), got %.10g where %.10g was "
+                        "due; resample the series onto a regular grid",
+                        path, lineno, h, t, want);
+    return NL_OK;
+}
+
+/* Grow v to hold one more sample, checked against the memory available. */
+static int grow(const char *path, double **v, size_t *cap, size_t n)
+{
+    size_t want = 2 * *cap;
+    double *nv;
+    int st;
+    if (n < *cap)
+        return NL_OK;
+    if ((st = nl_size_check(1, &want, sizeof **v, 2, NULL)))
+        return NL_ERROR(st, "%s: more than %zu samples do not fit in the memory available (NOISELAB_MEMORY_LIMIT "
+                        "or the machine's)", path, n);
+    nv = realloc(*v, want * sizeof **v);
+    if (!nv)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    *v = nv;
+    *cap = want;
+    return NL_OK;
+}
+
+/* One data row: the sample into v[*n] and the coordinate checked. */
+static int read_row(const char *path, size_t lineno, char *line, int ncol, int vcol, int tcol, double **v,
+                    size_t *cap, size_t *n, double *t0, double *t1)
+{
+    char *fld[64], *end;
+    double x;
+    int k = split(line, fld, 64), st;
+    if (k != ncol)
+        return NL_ERROR(NL_EINPUT, "%s:%zu: expected %d columns, got %d", path, lineno, ncol, k);
+    x = strtod(fld[vcol], &end);
+    if (end == fld[vcol] || *end || !isfinite(x))
+        return NL_ERROR(NL_EINPUT, "%s:%zu: expected a finite number, got \"%s\"", path, lineno, fld[vcol]);
+    if (tcol >= 0 && (st = check_coordinate(path, lineno, fld[tcol], *n, t0, t1)))
+        return st;
+    if ((st = grow(path, v, cap, *n)))
+        return st;
+    (*v)[(*n)++] = x;
+    return NL_OK;
+}
+
+/* fgets that refuses a line longer than the buffer (it would be split). */
+static char *get_line(char *line, int size, FILE *fp, const char *path, size_t lineno, int *st)
+{
+    if (!fgets(line, size, fp))
+        return NULL;
+    if (!strchr(line, '\n') && !feof(fp)) {
+        *st = NL_ERROR(NL_EINPUT, "%s:%zu: expected lines shorter than %d characters", path, lineno, size - 1);
+        return NULL;
+    }
+    return line;
+}
+
 int nl_tsv_read_field(const char *path, nl_field **out)
 {
     FILE *fp = fopen(path, "r");
@@ -67,58 +169,29 @@ int nl_tsv_read_field(const char *path, nl_field **out)
 int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out)
 {
     char line[4096], *fld[64];
-    int ncol = 0, vcol, tcol = -1, st = NL_OK;
+    int ncol = 0, vcol = -1, tcol = -1, st = NL_OK;
     size_t cap = 1024, n = 0, lineno = 0;
     double *v = NULL, t0 = 0, t1 = 0;
 
     *out = NULL;
-    while (fgets(line, sizeof line, fp)) {
+    while (get_line(line, sizeof line, fp, path, lineno + 1, &st)) {
         lineno++;
         if (line[0] == '#' || line[0] == '\n')
             continue;
         ncol = split(line, fld, 64);
         break;
     }
-    if (ncol == 0)
-        return NL_ERROR(NL_EINPUT, "%s: expected a TSV header line, found none", path);
-    vcol = ncol - 1;
-    for (int c = 0; c < ncol; c++)
-        if (strcmp(fld[c], "value") == 0)
-            vcol = c;
-    if (strcmp(fld[0], "t") == 0 || strcmp(fld[0], "x") == 0)
-        tcol = 0;
-    v = malloc(cap * sizeof *v);
-    if (!v)
-        return NL_ERROR(NL_ENOMEM, "out of memory");
-    while (!st && fgets(line, sizeof line, fp)) {
-        char *end;
-        double x;
-        int k;
+    if (!st && ncol == 0)
+        st = NL_ERROR(NL_EINPUT, "%s: expected a TSV header line, found none", path);
+    if (!st)
+        st = header_columns(path, lineno, fld, ncol, &vcol, &tcol);
+    if (!st && !(v = malloc(cap * sizeof *v)))
+        st = NL_ERROR(NL_ENOMEM, "out of memory");
+    while (!st && get_line(line, sizeof line, fp, path, lineno + 1, &st)) {
         lineno++;
         if (line[0] == '#' || line[0] == '\n')
             continue;
-        k = split(line, fld, 64);
-        if (k != ncol) {
-            st = NL_ERROR(NL_EINPUT, "%s:%zu: expected %d columns, got %d", path, lineno, ncol, k);
-            break;
-        }
-        x = strtod(fld[vcol], &end);
-        if (end == fld[vcol] || *end || !isfinite(x)) {
-            st = NL_ERROR(NL_EINPUT, "%s:%zu: expected a finite number, got \"%s\"", path, lineno, fld[vcol]);
-            break;
-        }
-        if (tcol >= 0 && n < 2)
-            *(n == 0 ? &t0 : &t1) = strtod(fld[tcol], NULL);
-        if (n == cap) {
-            double *nv = realloc(v, 2 * cap * sizeof *v);
-            if (!nv) {
-                st = NL_ERROR(NL_ENOMEM, "out of memory");
-                break;
-            }
-            v = nv;
-            cap *= 2;
-        }
-        v[n++] = x;
+        st = read_row(path, lineno, line, ncol, vcol, tcol, &v, &cap, &n, &t0, &t1);
     }
     if (!st && ferror(fp))
         st = NL_ERROR(NL_EINPUT, "%s: read failed", path);
