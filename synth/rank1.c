@@ -1,6 +1,7 @@
 /* Rank-1 lattices: generators, wave vectors, one-FFT synthesis, Delaunay. */
 #include "rank1.h"
 #include "../core/fftw_plan.h"
+#include "../core/field.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -126,12 +127,33 @@ int nl_rank1_generator(size_t N, int s, const long *g, nl_rank1_lattice *L)
         return NL_ERROR(NL_EINVAL, "points: expected 2 to 16777216, got %zu", N);
     if (g[0] != 1)
         return NL_ERROR(NL_EINVAL, "generator: expected a first component of 1, got %ld", g[0]);
+    int st = nl_size_check(1, &N, sizeof(double) + (size_t)s * sizeof(long), 1, NULL);
+    if (st)
+        return st;
     L->s = s;
     L->N = N;
     for (int a = 0; a < s; a++)
         L->g[a] = ((g[a] % (long)N) + (long)N) % (long)N;
     L->min_dist = min_distance(N, s, L->g);
     return wave_vectors(L);
+}
+
+int nl_rank1_check_generator(size_t N, int s, const long *g)
+{
+    for (int a = 0; a < s; a++) {
+        long ga = ((g[a] % (long)N) + (long)N) % (long)N;
+        if (a > 0 && ga == 0)
+            return NL_ERROR(NL_EINVAL, "generator: degenerate: component %d is 0 mod %zu (every point has x%d = 0)",
+                            a + 1, N, a + 1);
+        for (int b = 0; b < a; b++) {
+            long gb = ((g[b] % (long)N) + (long)N) % (long)N;
+            if (ga == gb || (ga + gb) % (long)N == 0)
+                return NL_ERROR(NL_EINVAL, "generator: degenerate: components %d and %d are %s mod %zu (the points "
+                                "lie on the plane x%d %s x%d = 0)", b + 1, a + 1, ga == gb ? "equal" : "opposite",
+                                N, b + 1, ga == gb ? "-" : "+", a + 1);
+        }
+    }
+    return NL_OK;
 }
 
 int nl_rank1_fibonacci(int index, nl_rank1_lattice *L)

@@ -64,8 +64,16 @@ int nl_rank1_korobov(size_t N, int s, long a, nl_rank1_lattice *L);
 
 /* A lattice with a given generator (s values, g[0] must be 1; reduced mod N).
  * NL_EINVAL: s outside 1..NL_RANK1_MAX_DIM, N outside 2..2^24, g[0] != 1;
- * NL_ENOMEM. */
+ * NL_ETOOBIG: the wave vector search needs more than the memory available
+ * (nl_mem_available); NL_ENOMEM. */
 int nl_rank1_generator(size_t N, int s, const long *g, nl_rank1_lattice *L);
+
+/* NL_OK, or NL_EINVAL for a degenerate generator (s values, reduced mod
+ * N): a component g_a (a >= 1) that is 0 mod N, or two components equal or
+ * opposite mod N, which put every point on a plane (x_a = 0, x_a = x_b or
+ * x_a + x_b = 0 on the torus).  Pure; thread-safe.  The constructors do not
+ * call it (tiny Fibonacci and Korobov lattices are degenerate this way). */
+int nl_rank1_check_generator(size_t N, int s, const long *g);
 
 /* Frees L->k and sets it to NULL. */
 void nl_rank1_free(nl_rank1_lattice *L);
