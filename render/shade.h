@@ -34,7 +34,8 @@ void nl_render_shade_gradients(size_t count, const double *gx, const double *gy,
 void nl_render_nearest(size_t M, const double *src, size_t W, double *dst);
 
 /* The default grey range of a field: mean -+ 3 standard deviations (hi =
- * lo + 1 when that is empty).  Errors: those of nl_moments_compute
+ * lo + 1 when that is empty).  Errors: those of nl_moments_compute, NL_EINVAL
+ * when the range is not finite
  * (analysis/hist.h).  Thread-safe. */
 int nl_render_grey_range(const nl_field *x, double *lo, double *hi);
 
