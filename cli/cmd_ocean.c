@@ -5,6 +5,7 @@
 #include "../render/shade.h"
 #include "../synth/ocean.h"
 
+#include <float.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -88,7 +89,13 @@ static void parse(int argc, char **argv, opts_t *a)
                 cli_die(2, "--wind: expected V,ANGLE with a positive speed in m/s, got \"%s\"", optarg);
             break;
         case 't': a->t0 = cli_parse_double("--time", optarg); break;
-        case 'F': a->frames = (int)cli_parse_count("--frames", optarg, 1); break;
+        case 'F': {
+            size_t fr = cli_parse_count("--frames", optarg, 1);
+            if (fr > 10000)
+                cli_die(2, "--frames: expected at most 10000 frames, got \"%s\"", optarg);
+            a->frames = (int)fr;
+            break;
+        }
         case 'D': a->dt = cli_parse_double("--dt", optarg); break;
         case 'P':
             a->o.patch = cli_parse_positive("--patch", optarg, "size in metres");
@@ -122,6 +129,8 @@ static void check(int argc, char **argv, const opts_t *a)
         cli_die(2, "--frames: expected --dt with a positive time step");
     if (a->W > 8192 || a->M > 8192)
         cli_die(2, "--size/--grid: expected at most 8192");
+    if (!(fabs(a->t0) + (a->frames - 1) * fabs(a->dt) <= 1e9))
+        cli_die(2, "--time/--dt: expected times within 1e9 s, got %g + %d x %g", a->t0, a->frames - 1, a->dt);
     if (a->mesh && !a->lat)
         cli_die(2, "--mesh: expected --lattice");
 }
@@ -194,6 +203,10 @@ static void grid_frame(const opts_t *a, int fr, double t, double *img, double *g
         const char *tmp = cli_out_begin(name);
         nl_field *f = cli_field_alloc(2, n, sp);
         memcpy(f->data, h, M * M * sizeof *h);
+        for (size_t q = 0; q < M * M; q++)
+            if (!(fabs(h[q]) <= FLT_MAX))
+                cli_die(2, "--amplitude: %g makes heights of %g, beyond the float32 range of EXR (%g)", a->o.amplitude,
+                        h[q], FLT_MAX);
         snprintf(meta.method, sizeof meta.method, "ocean:grid=%zu,wind=%g,%g,t=%g,patch=%g", M, a->v, a->ang, t,
                  a->o.patch);
         snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);
