@@ -251,12 +251,17 @@ void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_resu
         cli_die(2, "synth lattice: expected a 1D or 2D --size, got %dD", job->dim);
     if (!O)
         O = nl_synth_lattice_default_octaves(c0);
-    if ((st = nl_synth_lattice_plan_init(job->m, job->dim, c0, O, &p)) || (st = nl_synth_lattice_execute(&p, job->seed, f)))
+    if ((st = nl_synth_lattice_plan_init_flags(job->m, job->dim, c0, O, job->clamp ? NL_SYNTH_LATTICE_CLAMP : 0, &p)) ||
+        (st = nl_synth_lattice_execute(&p, job->seed, f)))
         cli_die_status(st);
+    if (p.negatives)
+        snprintf(r->flags, sizeof r->flags, "clamped");
     for (int o = 0; o < p.octaves; o++)
         json_array_append_new(oct, json_pack("{s:f,s:f,s:f,s:f}", "cell", p.cell[o], "weight", p.weight[o], "peak",
                                              p.peak[o], "leakage", p.leakage[o]));
     snprintf(r->method, sizeof r->method, "lattice:cell=%.17g,octaves=%d", c0, O);
     r->sd = nl_field_rms(f) > 0 ? nl_field_rms(f) : 1;
     r->report = json_pack("{s:o}", "octaves", oct);
+    if (p.negatives)
+        json_object_set_new(r->report, "clamp_error", json_real(p.clamp_error));
 }

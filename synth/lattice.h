@@ -38,7 +38,11 @@ typedef struct {
     double weight[NL_LATTICE_MAX_OCTAVES];   /* amplitude w_o */
     double peak[NL_LATTICE_MAX_OCTAVES];     /* f_o, cycles per sample */
     double leakage[NL_LATTICE_MAX_OCTAVES];  /* fraction of octave power below its band */
+    size_t negatives;                     /* fit frequencies where the target is negative (clamped) */
+    double clamp_error;                   /* their power relative to the positive power (0: none) */
 } nl_synth_lattice_plan;
+
+#define NL_SYNTH_LATTICE_CLAMP 1u  /* flag: fit a target that is negative somewhere, without those values */
 
 /* The plan is a plain struct the caller owns and nl_synth_lattice_plan_init
  * fills in: it allocates nothing, so there is nothing to free.
@@ -56,6 +60,16 @@ typedef struct {
  * least squares, an SVD of finite values, does not fail; it would give
  * NL_EFAIL.) */
 int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);
+
+/* As nl_synth_lattice_plan_init (which is this with flags 0), with the
+ * positive-definiteness rule of the other methods on the target at the 96
+ * fit frequencies: a target that is not finite there is NL_EINVAL; one that
+ * is negative there is NL_ENOTPD, or with NL_SYNTH_LATTICE_CLAMP fitted
+ * without those values, p->negatives and p->clamp_error (their power,
+ * weighted by f^dim on the log-spaced frequencies, relative to the positive
+ * power) saying so. */
+int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
+                                     nl_synth_lattice_plan *p);
 
 /* The basis spectrum at cell c (samples) and frequency f (cycles per
  * sample), dim 1 or 2, per (cycles per sample)^dim; 0 from 8 / c up.  0
