@@ -247,6 +247,15 @@ int cli_cmd_ocean(int argc, char **argv)
             cli_die(2, "--points: expected a Fibonacci number (e.g. 55, 1597, 10946), got %zu", a.N);
         cli_check(nl_rank1_fibonacci(idx, &L));
     }
+    {
+        /* per frame: the picture's three W x W arrays, and on a grid its two
+         * complex M x M FFT buffers and three M x M outputs */
+        size_t nw[2] = {a.W, a.W}, nm[2] = {a.M, a.M};
+        if (a.image || a.tile)
+            cli_check(nl_size_check(2, nw, 4 * sizeof(double), 1, NULL));
+        if (a.M)
+            cli_check(nl_size_check(2, nm, 8 * sizeof(double), 1, NULL));
+    }
     cli_progress("ocean", 0);
     for (int fr = 0; fr < a.frames; fr++) {
         cli_progress("ocean", (double)fr / a.frames);

@@ -256,6 +256,7 @@ static int check_camera(const nl_cloud_scene *s, double size)
 static int check_scene(const nl_cloud_scene *s)
 {
     double size = 0;
+    int st;
     if (!s->width || !s->height || s->grid < 2 || s->noise_grid < 2 || !s->npoints || !s->points || !s->shape ||
         !s->noise)
         return NL_ERROR(NL_EINVAL, "cloud: expected a picture, grids of at least 2 samples, data points and two "
@@ -283,7 +284,14 @@ static int check_scene(const nl_cloud_scene *s)
     if (!isfinite(s->sun[0] * s->sun[0] + s->sun[1] * s->sun[1] + s->sun[2] * s->sun[2]))
         return NL_ERROR(NL_EINVAL, "cloud: sun: expected a direction of finite length, got (%g, %g, %g)", s->sun[0],
                         s->sun[1], s->sun[2]);
-    return check_camera(s, size);
+    if ((st = check_camera(s, size)))
+        return st;
+    /* the shape, light and noise volumes */
+    size_t vs[3] = {s->grid, s->grid, s->grid}, vn[3] = {s->noise_grid, s->noise_grid, s->noise_grid};
+    if ((st = nl_size_check(3, vs, 2 * sizeof(double), 1, NULL)) ||
+        (st = nl_size_check(3, vn, 2 * sizeof(double), 1, NULL)))
+        return st;
+    return NL_OK;
 }
 
 int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double))

@@ -95,18 +95,27 @@ static int wave_vectors(nl_rank1_lattice *L)
     }
     for (size_t m = 0; m < L->N; m++)
         q.best[m] = INFINITY;
+    /* worst: the largest minimal norm^2, scanned only when the shell bound
+     * passes the last scan's value (norms only decrease, so the scanned
+     * value bounds the current one: the loop stops at the same shell or,
+     * scanning less often, after shells that cannot improve any residue) */
+    double worst = INFINITY;
     for (long r = 0;; r++) {
-        double worst = 0;
-        int all = 1;
-        for (size_t m = 0; m < L->N; m++) {
-            if (isinf(q.best[m]))
-                all = 0;
-            else
-                worst = fmax(worst, q.best[m]);
-        }
         /* every vector of this shell has norm^2 >= r^2 / s */
-        if (all && (double)r * (double)r / L->s > worst)
-            break;
+        if ((double)r * (double)r / L->s > worst || isinf(worst)) {
+            int all = 1;
+            worst = 0;
+            for (size_t m = 0; m < L->N && all; m++) {
+                if (isinf(q.best[m]))
+                    all = 0;
+                else
+                    worst = fmax(worst, q.best[m]);
+            }
+            if (!all)
+                worst = INFINITY;
+            else if ((double)r * (double)r / L->s > worst)
+                break;
+        }
         shell(&q, k, 0, r);
     }
     /* symmetric set for a real field */
@@ -171,9 +180,19 @@ int nl_rank1_fibonacci(int index, nl_rank1_lattice *L)
 int nl_rank1_korobov(size_t N, int s, long a, nl_rank1_lattice *L)
 {
     long g[NL_RANK1_MAX_DIM];
+    int st;
+    if (s < 1 || s > NL_RANK1_MAX_DIM)
+        return NL_ERROR(NL_EINVAL, "dim: expected 1 to %d, got %d", NL_RANK1_MAX_DIM, s);
+    if (N < 2 || N > (1u << 24))
+        return NL_ERROR(NL_EINVAL, "points: expected 2 to 16777216, got %zu", N);
+    if ((st = nl_size_check(1, &N, sizeof(double) + (size_t)s * sizeof(long), 1, NULL)))
+        return st;
     if (a <= 0) {
         double best = -1;
-        size_t tries = N > 4096 ? 4096 : N;
+        /* at most NL_RANK1_SEARCH_BUDGET point coordinates over the candidates */
+        size_t tries = N > 4096 ? 4096 : N, cap = NL_RANK1_SEARCH_BUDGET / (N * (size_t)s);
+        if (tries > cap)
+            tries = cap < 18 ? 18 : cap;
         for (size_t t = 2; t < tries; t++) {
             long cand = (long)t;
             g[0] = 1;
