@@ -24,22 +24,33 @@ void nl_rank1_point(const nl_rank1_lattice *L, size_t n, double *x)
         x[a] = (double)((unsigned long long)n * (unsigned long long)L->g[a] % L->N) / (double)L->N;
 }
 
-/* Minimum torus distance between distinct lattice points: that of x_n to 0. */
-static double min_distance(size_t N, int s, const long *g)
+/* Minimum torus distance between distinct lattice points: that of x_n to 0,
+ * with the coordinates n g_a mod N stepped by addition.  The scan stops
+ * once the distance is at most `floor` (the value returned is then <=
+ * floor: enough for a search that only keeps distances above it). */
+static double min_distance_above(size_t N, int s, const long *g, double floor)
 {
-    double best = INFINITY;
+    double best = INFINITY, f2 = floor > 0 ? floor * floor : -1;
+    unsigned long long r[NL_RANK1_MAX_DIM] = {0};
     for (size_t n = 1; n < N; n++) {
         double d2 = 0;
         for (int a = 0; a < s; a++) {
-            double x = (double)((unsigned long long)n * (unsigned long long)g[a] % N) / (double)N;
+            r[a] += (unsigned long long)g[a];
+            if (r[a] >= N)
+                r[a] -= N;
+            double x = (double)r[a] / (double)N;
             if (x > 0.5)
                 x -= 1;
             d2 += x * x;
         }
         best = fmin(best, d2);
+        if (best <= f2 && sqrt(best) <= floor)
+            break;
     }
     return sqrt(best);
 }
+
+static double min_distance(size_t N, int s, const long *g) { return min_distance_above(N, s, g, -1); }
 
 /* Enumerate k in shells of |k|_1 = L: all vectors with sum |k_a| = L. */
 typedef struct {
@@ -198,7 +209,7 @@ int nl_rank1_korobov(size_t N, int s, long a, nl_rank1_lattice *L)
             g[0] = 1;
             for (int d = 1; d < s; d++)
                 g[d] = (long)((unsigned long long)g[d - 1] * (unsigned long long)cand % N);
-            double md = min_distance(N, s, g);
+            double md = min_distance_above(N, s, g, best + 1e-15);
             if (md > best + 1e-15)
                 best = md, a = cand;
         }

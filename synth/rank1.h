@@ -58,12 +58,13 @@ int nl_rank1_fibonacci(int index, nl_rank1_lattice *L);
 int nl_rank1_fibonacci_index(size_t N);
 
 /* Korobov lattice of N points in s dimensions, g = (1, a, a^2, ...) mod N;
- * a <= 0: searched over 2 <= a < min(N, 4096, max(18, 2^30 / (N s))) for
- * the largest minimum distance (ties: smallest a): the search's work is
+ * a <= 0: searched over 2 <= a < min(N, 4096, max(18, 2^33 / (N s))) for
+ * the largest minimum distance (ties: smallest a).  The search's work is
  * bounded by NL_RANK1_SEARCH_BUDGET point coordinates, which shortens it
- * from N s > 2^18 on.  Errors as nl_rank1_generator (checked before the
- * search). */
-#define NL_RANK1_SEARCH_BUDGET ((size_t)1 << 30)
+ * from N s > 2^21 on (in 2D above 1048576 points); a candidate's scan stops
+ * once it cannot beat the best so far.  Errors as nl_rank1_generator
+ * (checked before the search). */
+#define NL_RANK1_SEARCH_BUDGET ((size_t)1 << 33)
 int nl_rank1_korobov(size_t N, int s, long a, nl_rank1_lattice *L);
 
 /* A lattice with a given generator (s values, g[0] must be 1; reduced mod N).
