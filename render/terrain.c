@@ -205,8 +205,10 @@ void nl_render_view_default(const nl_field *f, nl_render_view *v)
 }
 
 /* The view's numbers: each named with its value when out of range.  Far
- * bounds (camera, haze, clouds) keep the ray marcher's trip count and the
- * cloud plane's cell indices finite: at most reach = 1000 (nx + ny). */
+ * bounds keep the ray marcher's trip count (its step grows with distance,
+ * so about 250 log(8 haze) steps a column when tiled) and the cloud plane's
+ * cell indices finite: camera and clouds within reach = 1000 (nx + ny),
+ * haze within 1000 reach. */
 static int check_view(const nl_field *f, const nl_render_view *v)
 {
     double reach = 1000 * (double)(f->n[0] + f->n[1]), amax = 0;
@@ -217,8 +219,8 @@ static int check_view(const nl_field *f, const nl_render_view *v)
     if (!(v->zscale > 0) || !isfinite(v->zscale * amax * (double)f->count))
         return NL_ERROR(NL_EINVAL, "render: zscale: expected a positive factor that keeps heights finite, got %g "
                         "(largest |value| %g)", v->zscale, amax);
-    if (!(v->haze > 0 && v->haze <= reach))
-        return NL_ERROR(NL_EINVAL, "render: haze: expected 0 < haze <= %g samples, got %g", reach, v->haze);
+    if (!(v->haze > 0 && v->haze <= 1000 * reach))
+        return NL_ERROR(NL_EINVAL, "render: haze: expected 0 < haze <= %g samples, got %g", 1000 * reach, v->haze);
     if (!(fabs(v->pitch) <= 30) || !(fabs(v->azimuth) <= 360))
         return NL_ERROR(NL_EINVAL, "render: look: expected an azimuth within +-360 and |pitch| <= 30 degrees, got "
                         "%g,%g", v->azimuth, v->pitch);
