@@ -195,6 +195,13 @@ static void grid_frame(const opts_t *a, int fr, double t, double *img, double *g
     size_t M = a->M;
     double *h = cli_malloc(M * M * sizeof *h), *hx = cli_malloc(M * M * sizeof *hx), *hy = cli_malloc(M * M * sizeof *hy);
     cli_check(nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy));
+    for (size_t q = 0; a->out && q < M * M; q++)
+        if (!(fabs(h[q]) <= FLT_MAX)) {
+            double big = h[q];
+            free(h), free(hx), free(hy);
+            cli_die(2, "--amplitude: %g makes heights of %g, beyond the float32 range of EXR (%g)", a->o.amplitude,
+                    big, FLT_MAX);
+        }
     if (a->out) {
         size_t n[2] = {M, M};
         double sp[2] = {a->o.patch / (double)M, a->o.patch / (double)M};
@@ -203,10 +210,6 @@ static void grid_frame(const opts_t *a, int fr, double t, double *img, double *g
         const char *tmp = cli_out_begin(name);
         nl_field *f = cli_field_alloc(2, n, sp);
         memcpy(f->data, h, M * M * sizeof *h);
-        for (size_t q = 0; q < M * M; q++)
-            if (!(fabs(h[q]) <= FLT_MAX))
-                cli_die(2, "--amplitude: %g makes heights of %g, beyond the float32 range of EXR (%g)", a->o.amplitude,
-                        h[q], FLT_MAX);
         snprintf(meta.method, sizeof meta.method, "ocean:grid=%zu,wind=%g,%g,t=%g,patch=%g", M, a->v, a->ang, t,
                  a->o.patch);
         snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);
