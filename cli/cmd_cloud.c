@@ -56,6 +56,8 @@ int cli_cmd_cloud(int argc, char **argv)
     if (exr && !cli_has_ext(exr, ".exr"))
         cli_die(2, "--exr: expected a file ending in .exr, got \"%s\"", exr);
     cli_check(nl_cloud_scene_read(path, &s));
+    size_t px[2] = {s.width, s.height};
+    cli_check(nl_size_check(2, px, 3 + sizeof(double), 1, NULL));
     tmp = cli_out_begin(out);
     etmp = cli_out_begin(exr);
     unsigned char *rgb = cli_malloc(s.width * s.height * 3);

@@ -5,7 +5,9 @@
 #include "../core/io_obj.h"
 #include "../synth/rank1_model.h"
 
+#include <errno.h>
 #include <getopt.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,7 +15,7 @@
 static const char help[] =
     "usage: noiselab lattice --points N --dim S [--generator fibonacci|korobov[:A]|G1,...,GS]\n"
     "                        [--acf SPEC | --spectrum SPEC] [--extent E] [--seed X]\n"
-    "                        [--wave-vectors] [--json] [-o OUT.tsv] [--mesh OUT.obj]\n\n"
+    "                        [--wave-vectors] [--json] [-o OUT.tsv] [--mesh OUT.obj] [--clamp]\n\n"
     "Rank-1 lattice x_n = (n/N) g mod 1 (Keller 2001).  Generators: fibonacci (2D, N a\n"
     "Fibonacci number, g = (1, F_{k-1})), korobov (g = (1, a, a^2, ...) with a searched\n"
     "for the largest minimum distance, or given), or explicit.  Default: fibonacci in 2D\n"
@@ -21,14 +23,17 @@ static const char help[] =
     "  --wave-vectors  print K_N: for each residue m the k with k.g = m (mod N) of least\n"
     "                  norm (TSV m k1..kS norm; --json {\"N\", \"generator\", \"wave_vectors\"})\n"
     "  with a model: a field on the N points by ONE complex FFT of length N, on a torus\n"
-    "  of side E (default 1): TSV columns x1..xS value grad1..gradS\n"
+    "  of side E (default 1): TSV columns x1..xS value grad1..gradS; a model that is\n"
+    "  not positive definite on the lattice (negative spectrum) is refused, or with\n"
+    "  --clamp its negative values are zeroed and the header gives the change\n"
     "  --mesh OBJ      (2D) the periodic Delaunay triangulation of the height field\n";
 
 /* The command's options. */
 typedef struct {
     const char *gen, *spec, *out, *mesh;  /* as given, or NULL */
     size_t N;                             /* --points */
-    int s, wv, json, spectral;            /* --dim, --wave-vectors, --json, --spectrum given */
+    int s, wv, json, spectral, clamp;     /* --dim, --wave-vectors, --json, --spectrum given, --clamp */
+    char note[240];                       /* what the synthesis approximated, for the header */
     double extent;                        /* --extent */
     uint64_t seed;                        /* --seed */
 } opts_t;
@@ -42,6 +47,7 @@ static void parse(int argc, char **argv, opts_t *a)
         {"seed", required_argument, 0, 's'},    {"wave-vectors", no_argument, 0, 'w'},
         {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
         {"mesh", required_argument, 0, 'M'},    {"help", no_argument, 0, 'h'},
+        {"clamp", no_argument, 0, 'c'},
         {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "lattice")) != -1) {
@@ -56,6 +62,7 @@ static void parse(int argc, char **argv, opts_t *a)
             break;
         case 's': a->seed = cli_parse_u64("--seed", optarg); break;
         case 'w': a->wv = 1; break;
+        case 'c': a->clamp = 1; break;
         case 'j': a->json = 1; break;
         case 'o': a->out = optarg; break;
         case 'M': a->mesh = optarg; break;
@@ -88,13 +95,22 @@ static void make_lattice(opts_t *a, nl_rank1_lattice *L)
         st = nl_rank1_fibonacci(nl_rank1_fibonacci_index(N), L);
     } else if (strncmp(gen, "korobov", 7) == 0) {
         long k = 0;
-        if (gen[7] == ':' && (k = atol(gen + 8)) <= 0)
-            cli_die(2, "--generator: expected korobov:A with A > 0, got \"%s\"", gen);
+        char *end = NULL;
+        if (gen[7] && (gen[7] != ':' || (k = strtol(gen + 8, &end, 10)) <= 0 || *end || k == LONG_MAX))
+            cli_die(2, "--generator: expected korobov:A with 0 < A < 2^63 - 1, got \"%s\"", gen);
+        if (k > 0) {
+            long g[NL_RANK1_MAX_DIM] = {1};
+            for (int d = 1; d < s; d++)
+                g[d] = (long)((unsigned long long)g[d - 1] * (unsigned long long)(k % (long)N) % N);
+            if ((st = nl_rank1_check_generator(N, s, g)))
+                cli_die(2, "--generator %s: %s", gen, nl_errmsg());
+        }
         st = nl_rank1_korobov(N, s, k, L);
     } else {
         long g[NL_RANK1_MAX_DIM];
         char *p = (char *)gen, *end;
         int k = 0;
+        errno = 0;
         while (k < NL_RANK1_MAX_DIM) {
             g[k++] = strtol(p, &end, 10);
             if (end == p)
@@ -103,8 +119,10 @@ static void make_lattice(opts_t *a, nl_rank1_lattice *L)
                 break;
             p = end + 1;
         }
-        if (k != s || *end || end == p)
+        if (k != s || *end || end == p || errno == ERANGE)
             cli_die(2, "--generator: expected fibonacci, korobov[:A] or %d integers G1,...,G%d, got \"%s\"", s, s, gen);
+        if ((st = nl_rank1_check_generator(N, s, g)))
+            cli_die(2, "--generator %s: %s", gen, nl_errmsg());
         st = nl_rank1_generator(N, s, g, L);
     }
     cli_check(st);
@@ -149,8 +167,8 @@ static void write_points(FILE *fp, const opts_t *a, const nl_rank1_lattice *L, c
 {
     int s = a->s;
     if (f) {
-        fprintf(fp, "# noiselab lattice: N %zu, dim %d, %s, seed %llu, extent %g, max |imag| %.3g\n", a->N, s,
-                a->spec, (unsigned long long)a->seed, a->extent, imag);
+        fprintf(fp, "# noiselab lattice: N %zu, dim %d, %s, seed %llu, extent %g, max |imag| %.3g%s\n", a->N, s,
+                a->spec, (unsigned long long)a->seed, a->extent, imag, a->note);
         for (int d = 0; d < s; d++)
             fprintf(fp, "x%d\t", d + 1);
         fprintf(fp, "value");
@@ -216,8 +234,18 @@ static void field(opts_t *a, const nl_rank1_lattice *L)
         a->spec = cli_spectrum_spec(a->spec, sbuf, sizeof sbuf);
     if ((st = nl_model_parse(a->spec, &m)) || (st = nl_rank1_model_check(m, a->s)))
         cli_die_status(st);
+    nl_rank1_model_info info;
+    cli_check(nl_size_check(1, &a->N, (1 + (size_t)a->s) * sizeof *f, 1, NULL));
     f = cli_malloc(a->N * sizeof *f), grad = cli_malloc(a->N * a->s * sizeof *grad);
-    cli_check(nl_rank1_model_synthesize(L, m, a->extent, a->seed, f, grad, &imag));
+    cli_check(nl_rank1_model_synthesize_info(L, m, a->extent, a->seed, a->clamp ? NL_RANK1_CLAMP : 0, f, grad, &imag,
+                                             &info));
+    size_t k = 0;
+    if (info.nodes)
+        k += (size_t)snprintf(a->note, sizeof a->note, ", spectrum on a radial table of %zu nodes (interpolation "
+                              "error <= %.2g of S(0))", info.nodes, info.interp_error);
+    if (info.negatives)
+        snprintf(a->note + k, sizeof a->note - k, ", clamped: %zu negative spectrum values zeroed (variance changed "
+                 "by %.2g of it)", info.negatives, info.clamp_error);
     write_outputs(a, L, f, grad, imag);
     free(f), free(grad);
     nl_model_free(m);

@@ -5,6 +5,7 @@
 #include "../render/shade.h"
 #include "../synth/ocean.h"
 
+#include <float.h>
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -88,7 +89,13 @@ static void parse(int argc, char **argv, opts_t *a)
                 cli_die(2, "--wind: expected V,ANGLE with a positive speed in m/s, got \"%s\"", optarg);
             break;
         case 't': a->t0 = cli_parse_double("--time", optarg); break;
-        case 'F': a->frames = (int)cli_parse_count("--frames", optarg, 1); break;
+        case 'F': {
+            size_t fr = cli_parse_count("--frames", optarg, 1);
+            if (fr > 10000)
+                cli_die(2, "--frames: expected at most 10000 frames, got \"%s\"", optarg);
+            a->frames = (int)fr;
+            break;
+        }
         case 'D': a->dt = cli_parse_double("--dt", optarg); break;
         case 'P':
             a->o.patch = cli_parse_positive("--patch", optarg, "size in metres");
@@ -122,6 +129,8 @@ static void check(int argc, char **argv, const opts_t *a)
         cli_die(2, "--frames: expected --dt with a positive time step");
     if (a->W > 8192 || a->M > 8192)
         cli_die(2, "--size/--grid: expected at most 8192");
+    if (!(fabs(a->t0) + (a->frames - 1) * fabs(a->dt) <= 1e9))
+        cli_die(2, "--time/--dt: expected times within 1e9 s, got %g + %d x %g", a->t0, a->frames - 1, a->dt);
     if (a->mesh && !a->lat)
         cli_die(2, "--mesh: expected --lattice");
 }
@@ -186,6 +195,13 @@ static void grid_frame(const opts_t *a, int fr, double t, double *img, double *g
     size_t M = a->M;
     double *h = cli_malloc(M * M * sizeof *h), *hx = cli_malloc(M * M * sizeof *hx), *hy = cli_malloc(M * M * sizeof *hy);
     cli_check(nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy));
+    for (size_t q = 0; a->out && q < M * M; q++)
+        if (!(fabs(h[q]) <= FLT_MAX)) {
+            double big = h[q];
+            free(h), free(hx), free(hy);
+            cli_die(2, "--amplitude: %g makes heights of %g, beyond the float32 range of EXR (%g)", a->o.amplitude,
+                    big, FLT_MAX);
+        }
     if (a->out) {
         size_t n[2] = {M, M};
         double sp[2] = {a->o.patch / (double)M, a->o.patch / (double)M};
@@ -233,6 +249,15 @@ int cli_cmd_ocean(int argc, char **argv)
         if (!idx)
             cli_die(2, "--points: expected a Fibonacci number (e.g. 55, 1597, 10946), got %zu", a.N);
         cli_check(nl_rank1_fibonacci(idx, &L));
+    }
+    {
+        /* per frame: the picture's three W x W arrays, and on a grid its two
+         * complex M x M FFT buffers and three M x M outputs */
+        size_t nw[2] = {a.W, a.W}, nm[2] = {a.M, a.M};
+        if (a.image || a.tile)
+            cli_check(nl_size_check(2, nw, 4 * sizeof(double), 1, NULL));
+        if (a.M)
+            cli_check(nl_size_check(2, nm, 8 * sizeof(double), 1, NULL));
     }
     cli_progress("ocean", 0);
     for (int fr = 0; fr < a.frames; fr++) {

@@ -48,8 +48,11 @@ static void pair(const char *opt, const char *s, double *a, double *b)
 
 static void perspective(const char *in, const nl_field *x, const char *tmp, nl_render_view *v)
 {
-    uint8_t *rgb = malloc(v->width * v->height * 3);
-    int st;
+    size_t n[2] = {v->width, v->height};
+    int st = nl_size_check(2, n, 3, 1, NULL);
+    uint8_t *rgb = st ? NULL : malloc(v->width * v->height * 3);
+    if (st)
+        cli_die_status(st);
     if (!rgb)
         cli_die(1, "render: out of memory for a %zu x %zu picture", v->width, v->height);
     cli_phase("render", in);
@@ -81,16 +84,19 @@ static void parse(int argc, char **argv, opts_t *a)
                                          {"clouds", required_argument, 0, 'C'}, {"cloud-plane", required_argument, 0, 'Z'},
                                          {"help", no_argument, 0, 'h'},         {0}};
     int c;
+    char junk;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "render")) != -1) {
         switch (c) {
         case 'r':
-            if (sscanf(optarg, "%lf:%lf", &a->lo, &a->hi) != 2 || !(a->hi > a->lo) || !isfinite(a->lo) ||
-                !isfinite(a->hi))
-                cli_die(2, "--range: expected LO:HI with LO < HI, got \"%s\"", optarg);
+            if (sscanf(optarg, "%lf:%lf%c", &a->lo, &a->hi, &junk) != 2 || !(a->hi > a->lo) || !isfinite(a->lo) ||
+                !isfinite(a->hi) || !isfinite(a->hi - a->lo))
+                cli_die(2, "--range: expected LO:HI with LO < HI, both finite and HI - LO finite, got \"%s\"", optarg);
             break;
         case 's':
-            if (sscanf(optarg, "%lf,%lf", &a->az, &a->el) != 2 || !(a->el > 0 && a->el <= 90))
-                cli_die(2, "--shade: expected AZ,EL in degrees with 0 < EL <= 90, got \"%s\"", optarg);
+            if (sscanf(optarg, "%lf,%lf%c", &a->az, &a->el, &junk) != 2 || !(a->el > 0 && a->el <= 90) ||
+                !(fabs(a->az) <= 360))
+                cli_die(2, "--shade: expected AZ,EL in degrees with -360 <= AZ <= 360 and 0 < EL <= 90, got \"%s\"",
+                        optarg);
             break;
         case 'z':
             a->zs = cli_parse_positive("--zscale", optarg, "factor");

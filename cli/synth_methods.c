@@ -283,39 +283,11 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
         json_object_set_new(r->report, "clamp_error", json_real(info.clamp_error));
 }
 
-/* The positive-definiteness rule of fft (synth/fft.h) for a spectrum
- * model given to the lattice, whose weight fit ignores where the spectrum
- * is negative: sampled on the output grid (unit spacing, the lattice's
- * units), the negative mass must stay within NL_SYNTH_FFT_CLAMP_TOL of the
- * positive mass, or --clamp accepts it with a flag. */
 static void lattice_check_pd(const cli_synth_job *job, cli_synth_result *r)
 {
-    const double one[3] = {1, 1, 1};
-    size_t h0 = job->n[0] / 2 + 1, rows = 1, negs = 0;
-    double *S, neg = 0, pos = 0, lmin = INFINITY, err;
-    if (!nl_model_is_spectral(job->m))
-        return;
-    for (int a = 1; a < job->dim; a++)
-        rows *= job->n[a];
-    cli_check(nl_wk_sample_spectrum_half(job->m, job->dim, job->n, one, &S));
-    for (size_t k = 0; k < rows * h0; k++) {
-        size_t i = k % h0;
-        double w = i == 0 || 2 * i == job->n[0] ? 1 : 2;
-        if (S[k] < 0)
-            neg -= w * S[k], negs += (size_t)w;
-        else
-            pos += w * S[k];
-        lmin = fmin(lmin, S[k]);
-    }
-    nl_free(S);
-    err = pos > 0 ? neg / pos : INFINITY;
-    if (!(pos > 0))
-        cli_die(2, "%s: the sampled spectrum has no positive part on this grid", nl_model_spec(job->m));
-    if (err > NL_SYNTH_FFT_CLAMP_TOL && !job->clamp)
-        cli_die(2, "%s: not positive definite on this grid: min spectrum %.3g; the lattice would drop the %zu "
-                "negative values, changing the covariance by up to %.2g of R(0), above %.0e (use --clamp to accept)",
-                nl_model_spec(job->m), lmin, negs, err, NL_SYNTH_FFT_CLAMP_TOL);
-    if (err > NL_SYNTH_FFT_CLAMP_TOL)
+    double err;
+    cli_check(nl_synth_lattice_check_grid(job->m, job->dim, job->n, job->clamp, &err));
+    if (err > 0)
         snprintf(r->flags, sizeof r->flags, "clamped");
 }
 
@@ -330,12 +302,17 @@ void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_resu
     if (!O)
         O = nl_synth_lattice_default_octaves(c0);
     lattice_check_pd(job, r);
-    if ((st = nl_synth_lattice_plan_init(job->m, job->dim, c0, O, &p)) || (st = nl_synth_lattice_execute(&p, job->seed, f)))
+    if ((st = nl_synth_lattice_plan_init_flags(job->m, job->dim, c0, O, job->clamp ? NL_SYNTH_LATTICE_CLAMP : 0, &p)) ||
+        (st = nl_synth_lattice_execute(&p, job->seed, f)))
         cli_die_status(st);
+    if (p.negatives)
+        snprintf(r->flags, sizeof r->flags, "clamped");
     for (int o = 0; o < p.octaves; o++)
         json_array_append_new(oct, json_pack("{s:f,s:f,s:f,s:f}", "cell", p.cell[o], "weight", p.weight[o], "peak",
                                              p.peak[o], "leakage", p.leakage[o]));
     snprintf(r->method, sizeof r->method, "lattice:cell=%.17g,octaves=%d", c0, O);
     r->sd = nl_field_rms(f) > 0 ? nl_field_rms(f) : 1;
     r->report = json_pack("{s:o}", "octaves", oct);
+    if (p.negatives)
+        json_object_set_new(r->report, "clamp_error", json_real(p.clamp_error));
 }

@@ -231,19 +231,66 @@ static void camera_setup(const nl_cloud_scene *s, camera *cm)
     cm->tanh_ = tan(s->fov * M_PI / 360), cm->aspect = (double)s->width / (double)s->height;
 }
 
+/* The camera: finite, within reach of the box, not looking at its own
+ * position, not straight up or down (the picture's up is +y). */
+static int check_camera(const nl_cloud_scene *s, double size)
+{
+    double f[3], fl, fh;
+    for (int a = 0; a < 3; a++)
+        if (!(fabs(s->cam[a]) <= 1e6 * size) || !(fabs(s->look[a]) <= 1e6 * size))
+            return NL_ERROR(NL_EINVAL, "cloud: camera: expected \"position\" and \"look_at\" within 1e6 box sizes "
+                            "(%g) of the origin, got %g and %g on axis %d", size, s->cam[a], s->look[a], a + 1);
+    for (int a = 0; a < 3; a++)
+        f[a] = s->look[a] - s->cam[a];
+    fl = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]), fh = hypot(f[0], f[2]);
+    if (!(fl > 1e-9 * size))
+        return NL_ERROR(NL_EINVAL, "cloud: camera: \"look_at\" (%g, %g, %g) is the camera's position: expected a "
+                        "point to look at", s->look[0], s->look[1], s->look[2]);
+    if (!(fh > 1e-6 * fl))
+        return NL_ERROR(NL_EINVAL, "cloud: camera: looking straight %s (from %g, %g, %g to %g, %g, %g): expected a "
+                        "direction off the vertical (up is +y)", f[1] > 0 ? "up" : "down", s->cam[0], s->cam[1],
+                        s->cam[2], s->look[0], s->look[1], s->look[2]);
+    return NL_OK;
+}
+
 static int check_scene(const nl_cloud_scene *s)
 {
+    double size = 0;
+    int st;
     if (!s->width || !s->height || s->grid < 2 || s->noise_grid < 2 || !s->npoints || !s->points || !s->shape ||
         !s->noise)
         return NL_ERROR(NL_EINVAL, "cloud: expected a picture, grids of at least 2 samples, data points and two "
                         "models");
-    for (int a = 0; a < 3; a++)
-        if (!(s->hi[a] > s->lo[a]))
-            return NL_ERROR(NL_EINVAL, "cloud: expected each lower box corner coordinate below the upper");
+    for (int a = 0; a < 3; a++) {
+        if (!(s->hi[a] > s->lo[a]) || !isfinite(s->hi[a] - s->lo[a]) || !(fabs(s->lo[a]) <= 1e12) ||
+            !(fabs(s->hi[a]) <= 1e12))
+            return NL_ERROR(NL_EINVAL, "cloud: box: expected lower < upper within +-1e12 on every axis, got %g to "
+                            "%g on axis %d", s->lo[a], s->hi[a], a + 1);
+        if (!((s->hi[a] - s->lo[a]) * 1e6 >= fmax(fabs(s->lo[a]), fabs(s->hi[a]))))
+            return NL_ERROR(NL_EINVAL, "cloud: box: %g to %g on axis %d is too thin for its position (below 1e-6 "
+                            "of it)", s->lo[a], s->hi[a], a + 1);
+        size = fmax(size, s->hi[a] - s->lo[a]);
+    }
+    for (size_t i = 0; i < s->npoints; i++)
+        for (int a = 0; a < 4; a++)
+            if (!isfinite(s->points[4 * i + a]) || fabs(s->points[4 * i + a]) > 1e12)
+                return NL_ERROR(NL_EINVAL, "cloud: points[%zu]: expected values within +-1e12, got %g", i,
+                                s->points[4 * i + a]);
     if (!(s->threshold >= 0 && s->threshold < 1) || !(s->period > 0) || !(s->fov > 0 && s->fov < 180) ||
         (s->sun[0] == 0 && s->sun[1] == 0 && s->sun[2] == 0))
         return NL_ERROR(NL_EINVAL, "cloud: expected 0 <= threshold < 1, a positive period, 0 < fov < 180 and a "
-                        "non-zero sun direction");
+                        "non-zero sun direction, got %g, %g, %g, (%g, %g, %g)", s->threshold, s->period, s->fov,
+                        s->sun[0], s->sun[1], s->sun[2]);
+    if (!isfinite(s->sun[0] * s->sun[0] + s->sun[1] * s->sun[1] + s->sun[2] * s->sun[2]))
+        return NL_ERROR(NL_EINVAL, "cloud: sun: expected a direction of finite length, got (%g, %g, %g)", s->sun[0],
+                        s->sun[1], s->sun[2]);
+    if ((st = check_camera(s, size)))
+        return st;
+    /* the shape, light and noise volumes */
+    size_t vs[3] = {s->grid, s->grid, s->grid}, vn[3] = {s->noise_grid, s->noise_grid, s->noise_grid};
+    if ((st = nl_size_check(3, vs, 2 * sizeof(double), 1, NULL)) ||
+        (st = nl_size_check(3, vn, 2 * sizeof(double), 1, NULL)))
+        return st;
     return NL_OK;
 }
 

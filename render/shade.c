@@ -24,6 +24,9 @@ int nl_render_relief(const nl_field *x, double az, double el, double zscale, nl_
             double gx = zscale * (x->data[j * nx + i1] - x->data[j * nx + i0]) / ((double)(i1 - i0) * x->h[0]);
             double gy = zscale * (x->data[j1 * nx + i] - x->data[j0 * nx + i]) / ((double)(j1 - j0) * x->h[1]);
             double n = sqrt(gx * gx + gy * gy + 1);
+            if (!isfinite(n))
+                return NL_ERROR(NL_EINVAL, "relief: zscale: %g makes the slope at (%zu, %zu) %s; expected heights "
+                                "whose slopes stay finite", zscale, i, j, isnan(n) ? "not a number" : "overflow");
             out->data[j * nx + i] = fmax(0, facing(gx, gy, l) / n);
         }
     return NL_OK;
@@ -55,5 +58,8 @@ int nl_render_grey_range(const nl_field *x, double *lo, double *hi)
     *lo = m.mean - 3 * sqrt(m.variance), *hi = m.mean + 3 * sqrt(m.variance);
     if (!(*hi > *lo))
         *hi = *lo + 1;
+    if (!isfinite(*lo) || !isfinite(*hi) || !isfinite(*hi - *lo))
+        return NL_ERROR(NL_EINVAL, "grey range: mean %g +- 3 sd %g is not finite; expected finite values (or give "
+                        "--range)", m.mean, sqrt(m.variance));
     return NL_OK;
 }

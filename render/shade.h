@@ -17,7 +17,9 @@
  * spacing x->h.  Gradients by central differences, one-sided at the edges.
  * Values in [0, 1].
  * Errors: NL_EINVAL for x or out not 2D, sizes that differ, zscale not
- * positive and finite, or el outside (0, 90].  Thread-safe. */
+ * positive and finite, or el outside (0, 90], or a slope that overflows
+ * (zscale times a height difference); out is then partly written.
+ * Thread-safe. */
 int nl_render_relief(const nl_field *x, double az, double el, double zscale, nl_field *out);
 
 /* Relief from given gradients: out[q] = ambient + (1 - ambient)
@@ -32,7 +34,8 @@ void nl_render_shade_gradients(size_t count, const double *gx, const double *gy,
 void nl_render_nearest(size_t M, const double *src, size_t W, double *dst);
 
 /* The default grey range of a field: mean -+ 3 standard deviations (hi =
- * lo + 1 when that is empty).  Errors: those of nl_moments_compute
+ * lo + 1 when that is empty).  Errors: those of nl_moments_compute, NL_EINVAL
+ * when the range is not finite
  * (analysis/hist.h).  Thread-safe. */
 int nl_render_grey_range(const nl_field *x, double *lo, double *hi);
 

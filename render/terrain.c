@@ -204,20 +204,56 @@ void nl_render_view_default(const nl_field *f, nl_render_view *v)
     v->water = NAN;
 }
 
+/* The view's numbers: each named with its value when out of range.  Far
+ * bounds keep the ray marcher's trip count (its step grows with distance,
+ * so about 250 log(8 haze) steps a column when tiled) and the cloud plane's
+ * cell indices finite: camera and clouds within reach = 1000 (nx + ny),
+ * haze within 1000 reach. */
+static int check_view(const nl_field *f, const nl_render_view *v)
+{
+    double reach = 1000 * (double)(f->n[0] + f->n[1]), amax = 0;
+    for (size_t i = 0; i < f->count; i++)
+        amax = fmax(amax, fabs(f->data[i]));
+    if (!(v->fov > 0 && v->fov < 170))
+        return NL_ERROR(NL_EINVAL, "render: fov: expected 0 < fov < 170 degrees, got %g", v->fov);
+    if (!(v->zscale > 0) || !isfinite(v->zscale * amax * (double)f->count))
+        return NL_ERROR(NL_EINVAL, "render: zscale: expected a positive factor that keeps heights finite, got %g "
+                        "(largest |value| %g)", v->zscale, amax);
+    if (!(v->haze > 0 && v->haze <= 1000 * reach))
+        return NL_ERROR(NL_EINVAL, "render: haze: expected 0 < haze <= %g samples, got %g", 1000 * reach, v->haze);
+    if (!(fabs(v->pitch) <= 30) || !(fabs(v->azimuth) <= 360))
+        return NL_ERROR(NL_EINVAL, "render: look: expected an azimuth within +-360 and |pitch| <= 30 degrees, got "
+                        "%g,%g", v->azimuth, v->pitch);
+    if (!(v->sun[1] > 0 && v->sun[1] <= 90) || !(fabs(v->sun[0]) <= 360))
+        return NL_ERROR(NL_EINVAL, "render: sun: expected an azimuth within +-360 and 0 < elevation <= 90 degrees, "
+                        "got %g,%g", v->sun[0], v->sun[1]);
+    if (!(fabs(v->cam[0]) <= reach && fabs(v->cam[1]) <= reach && v->cam[2] > 0 && v->cam[2] <= reach))
+        return NL_ERROR(NL_EINVAL, "render: camera: expected X, Y within +-%g and 0 < H <= %g samples, got %g,%g,%g",
+                        reach, reach, v->cam[0], v->cam[1], v->cam[2]);
+    if (!isnan(v->water) && !isfinite(v->zscale * v->water))
+        return NL_ERROR(NL_EINVAL, "render: water: expected a finite level, got %g", v->water);
+    if (v->clouds && (v->clouds->dim != 2 || !(v->cloud_height > 0 && v->cloud_height <= reach) ||
+                      !(v->cloud_scale >= 1e-3 && v->cloud_scale <= reach)))
+        return NL_ERROR(NL_EINVAL, "render: cloud plane: expected a 2D field, 0 < height <= %g and a scale from "
+                        "0.001 to %g, got %g,%g", reach, reach, v->cloud_height, v->cloud_scale);
+    return NL_OK;
+}
+
 /* The field and the view can be rendered, and the work arrays sized. */
 static int check(const nl_field *f, const nl_render_view *v)
 {
-    const size_t W = v->width * SS, H = v->height * SS;
     if (f->dim != 2 || f->n[0] < 3 || f->n[1] < 3)
         return NL_ERROR(NL_EINVAL, "render: a perspective view needs a 2D field of at least 3 x 3 samples");
-    if (!(v->fov > 0 && v->fov < 170) || !(v->zscale > 0) || !(v->haze > 0) || !(fabs(v->pitch) <= 30) ||
-        !(v->sun[1] > 0 && v->sun[1] <= 90) || v->width < 1 || v->height < 1 ||
-        (v->clouds && (v->clouds->dim != 2 || !(v->cloud_height > 0) || !(v->cloud_scale > 0))))
-        return NL_ERROR(NL_EINVAL, "render: a view needs 0 < fov < 170, zscale > 0, haze > 0, |pitch| <= 30 and "
-                        "0 < sun elevation <= 90");
+    const size_t W = v->width * SS, H = v->height * SS;
+    if (v->width < 1 || v->height < 1)
+        return NL_ERROR(NL_EINVAL, "render: size: expected at least 1 x 1 pixels, got %zu x %zu", v->width,
+                        v->height);
+    int st = check_view(f, v);
+    if (st)
+        return st;
     /* the supersampled picture (3 doubles a pixel) and the lit colours */
     size_t pic[2] = {3 * W, H}, col[2] = {3, f->count};
-    int st = nl_size_check(2, pic, sizeof(double), 1, NULL);
+    st = nl_size_check(2, pic, sizeof(double), 1, NULL);
     if (st || (st = nl_size_check(2, col, sizeof(double), 1, NULL)))
         return st;
     return NL_OK;

@@ -218,7 +218,43 @@ static int fit_weights(int dim, const nl_model *m, nl_synth_lattice_plan *p, dou
     return st;
 }
 
+/* The positive-definiteness rule on the target at the fit frequencies (the
+ * 96 of fit_weights): finite everywhere; negative values are refused, or
+ * under NL_SYNTH_LATTICE_CLAMP left out of the fit (weight 0) with their
+ * power relative to the positive power in p (measure f^dim dlog f: the
+ * power of the band in 1D, of the radial shell in 2D). */
+static int target_sign(int dim, const nl_model *m, double flo, unsigned flags, nl_synth_lattice_plan *p)
+{
+    enum { NF = 96 };
+    double pos = 0, neg = 0, lo = 0, flo_at = 0;
+    for (int i = 0; i < NF; i++) {
+        double f = flo * pow(0.5 / flo, (i + 0.5) / NF), fv[2] = {f, 0};
+        double t = nl_model_spectrum(m, dim, fv), w = pow(f, dim);
+        if (!isfinite(t))
+            return NL_ERROR(NL_EINVAL, "%s: the spectrum is %g at f = %g cycles per sample; expected finite values",
+                            nl_model_spec(m), t, f);
+        if (t < 0) {
+            neg -= t * w, p->negatives++;
+            if (t < lo)
+                lo = t, flo_at = f;
+        } else
+            pos += t * w;
+    }
+    p->clamp_error = neg > 0 ? (pos > 0 ? neg / pos : INFINITY) : 0;
+    if (neg > 0 && (!(flags & NL_SYNTH_LATTICE_CLAMP) || !(pos > 0)))
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite: the spectrum is negative at %zu of the %d fit "
+                        "frequencies (min %.3g at f = %.3g); leaving them out changes the fitted power by %.2g of it "
+                        "(use --clamp to accept)", nl_model_spec(m), p->negatives, NF, lo, flo_at, p->clamp_error);
+    return NL_OK;
+}
+
 int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p)
+{
+    return nl_synth_lattice_plan_init_flags(m, dim, cell0, octaves, 0, p);
+}
+
+int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
+                                     nl_synth_lattice_plan *p)
 {
     double probe[2] = {0.1, 0};
     int st;
@@ -250,6 +286,8 @@ int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int oct
         p->peak[o] = fpk;
         p->leakage[o] = all > 0 ? below / all : 0;
     }
+    if ((st = target_sign(dim, m, p->peak[0] / 2, flags, p)))
+        return st;
     return fit_weights(dim, m, p, p->peak[0] / 2);
 }
 

@@ -38,7 +38,11 @@ typedef struct {
     double weight[NL_LATTICE_MAX_OCTAVES];   /* amplitude w_o */
     double peak[NL_LATTICE_MAX_OCTAVES];     /* f_o, cycles per sample */
     double leakage[NL_LATTICE_MAX_OCTAVES];  /* fraction of octave power below its band */
+    size_t negatives;                     /* fit frequencies where the target is negative (clamped) */
+    double clamp_error;                   /* their power relative to the positive power (0: none) */
 } nl_synth_lattice_plan;
+
+#define NL_SYNTH_LATTICE_CLAMP 1u  /* flag: fit a target that is negative somewhere, without those values */
 
 /* The plan is a plain struct the caller owns and nl_synth_lattice_plan_init
  * fills in: it allocates nothing, so there is nothing to free.
@@ -57,6 +61,16 @@ typedef struct {
  * NL_EFAIL.) */
 int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);
 
+/* As nl_synth_lattice_plan_init (which is this with flags 0), with the
+ * positive-definiteness rule of the other methods on the target at the 96
+ * fit frequencies: a target that is not finite there is NL_EINVAL; one that
+ * is negative there is NL_ENOTPD, or with NL_SYNTH_LATTICE_CLAMP fitted
+ * without those values, p->negatives and p->clamp_error (their power,
+ * weighted by f^dim on the log-spaced frequencies, relative to the positive
+ * power) saying so. */
+int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
+                                     nl_synth_lattice_plan *p);
+
 /* The basis spectrum at cell c (samples) and frequency f (cycles per
  * sample), dim 1 or 2, per (cycles per sample)^dim; 0 from 8 / c up.  0
  * everywhere when the measurement could not run (out of memory);
@@ -73,5 +87,17 @@ int nl_synth_lattice_execute(const nl_synth_lattice_plan *p, uint64_t seed, nl_f
  * (the O with cell0 / 2^O < 2, at least 1, at most NL_LATTICE_MAX_OCTAVES). */
 double nl_synth_lattice_default_cell(const size_t *n);
 int nl_synth_lattice_default_octaves(double cell0);
+
+/* The positive-definiteness rule of fft (synth/fft.h) for a spectrum model
+ * on the dim-D output grid n (unit spacing): the lattice's weight fit
+ * ignores where the spectrum is negative, so the negative mass relative to
+ * the positive must stay within NL_SYNTH_FFT_CLAMP_TOL, or clamp accepts it
+ * and *clamp_error receives that ratio (0 when within, and for models that
+ * are not spectrum: models, which are not checked here).  Returns NL_OK,
+ * NL_ENOTPD (beyond the tolerance without clamp), NL_EINVAL (no positive
+ * part), or the codes of nl_wk_sample_spectrum_half (a spectrum that is not
+ * finite or not even; NL_ETOOBIG, NL_ENOMEM).  Not thread-safe (it may plan
+ * FFTW). */
+int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, int clamp, double *clamp_error);
 
 #endif

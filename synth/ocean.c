@@ -37,6 +37,35 @@ static int check(const nl_ocean_params *o, double t)
         !isfinite(o->amplitude) || !isfinite(o->angle) || !isfinite(t))
         return NL_ERROR(NL_EINVAL, "ocean: expected a positive wind, patch and amplitude and a finite angle and "
                         "time, got %g, %g, %g, %g, %g", o->wind, o->patch, o->amplitude, o->angle, t);
+    if (!(fabs(t) <= 1e9))
+        return NL_ERROR(NL_EINVAL, "ocean: time: expected |t| <= 1e9 s (the phases keep their precision), got %g", t);
+    if (!(fabs(o->angle) <= 1e6))
+        return NL_ERROR(NL_EINVAL, "ocean: angle: expected |angle| <= 1e6 radians, got %g", o->angle);
+    return NL_OK;
+}
+
+/* The spectrum's total over the wave vectors (sum) must be positive and
+ * finite: a wind or patch that leaves every wave vector without energy, or
+ * an amplitude that overflows, is refused. */
+static int check_power(const nl_ocean_params *o, double sum)
+{
+    if (!isfinite(sum))
+        return NL_ERROR(NL_EINVAL, "ocean: amplitude: %g (wind %g m/s, patch %g m) makes the wave heights overflow",
+                        o->amplitude, o->wind, o->patch);
+    if (!(sum > 0)) {
+        double L = o->wind * o->wind / NL_OCEAN_G;
+        return NL_ERROR(NL_EINVAL, "ocean: the Phillips spectrum vanishes on every wave vector: wind %g m/s makes "
+                        "waves of %g m and suppresses those below %g m, on a patch of %g m", o->wind, L, L / 1000,
+                        o->patch);
+    }
+    return NL_OK;
+}
+
+static int check_finite(const nl_ocean_params *o, const double *x, size_t n)
+{
+    for (size_t i = 0; x && i < n; i++)
+        if (!isfinite(x[i]))
+            return check_power(o, INFINITY);
     return NL_OK;
 }
 
@@ -47,6 +76,7 @@ int nl_ocean_lattice_coefficients(const nl_rank1_lattice *L, const nl_ocean_para
         return NL_ERROR(NL_EINVAL, "ocean: expected a 2D lattice");
     if (check(o, t))
         return NL_EINVAL;
+    double sum = 0;
     for (size_t m = 0; m < N; m++) {
         size_t mn = (N - m) % N;
         double kx = (double)L->k[2 * m], ky = (double)L->k[2 * m + 1], w = omega(o, kx, ky);
@@ -55,8 +85,9 @@ int nl_ocean_lattice_coefficients(const nl_rank1_lattice *L, const nl_ocean_para
         if (2 * m == N)
             v = creal(v);  /* k and -k share the residue: keep the real part */
         c[2 * m] = creal(v), c[2 * m + 1] = cimag(v);
+        sum += c[2 * m] * c[2 * m] + c[2 * m + 1] * c[2 * m + 1];
     }
-    return NL_OK;
+    return check_power(o, sum);
 }
 
 int nl_ocean_grid(size_t M, const nl_ocean_params *o, uint64_t seed, double t, double *h, double *gx, double *gy)
@@ -72,6 +103,7 @@ int nl_ocean_grid(size_t M, const nl_ocean_params *o, uint64_t seed, double t, d
         nl_free(b), nl_free(hk);
         return NL_ERROR(NL_ENOMEM, "cannot plan a %zu x %zu FFT", M, M);
     }
+    double sum = 0;
     for (size_t j = 0; j < M; j++)
         for (size_t i = 0; i < M; i++) {
             long kx = i <= M / 2 ? (long)i : (long)i - (long)M, ky = j <= M / 2 ? (long)j : (long)j - (long)M;
@@ -83,8 +115,10 @@ int nl_ocean_grid(size_t M, const nl_ocean_params *o, uint64_t seed, double t, d
             if (2 * i == M || 2 * j == M)
                 v = 0;
             hk[j * M + i] = v;
+            sum += creal(v) * creal(v) + cimag(v) * cimag(v);
         }
-    for (int comp = 0; comp < 3; comp++) {
+    int st = check_power(o, sum);
+    for (int comp = 0; !st && comp < 3; comp++) {
         double *out = comp == 0 ? h : comp == 1 ? gx : gy;
         if (!out)
             continue;
@@ -97,9 +131,10 @@ int nl_ocean_grid(size_t M, const nl_ocean_params *o, uint64_t seed, double t, d
         fftw_execute(p);
         for (size_t n = 0; n < N; n++)
             out[n] = creal(b[n]);
+        st = check_finite(o, out, N);
     }
     fftw_destroy_plan(p), nl_free(b), nl_free(hk);
-    return NL_OK;
+    return st;
 }
 
 int nl_ocean_lattice_frame(const nl_rank1_lattice *L, const nl_ocean_params *o, uint64_t seed, double t, double *h,
@@ -111,6 +146,8 @@ int nl_ocean_lattice_frame(const nl_rank1_lattice *L, const nl_ocean_params *o, 
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu coefficients", L->N);
     if (!(st = nl_ocean_lattice_coefficients(L, o, seed, t, cf)))
         st = nl_rank1_synthesize(L, cf, o->patch, h, grad, &imag);
+    if (!st && !(st = check_finite(o, h, L->N)))
+        st = check_finite(o, grad, 2 * L->N);
     free(cf);
     return st;
 }

@@ -30,7 +30,10 @@ typedef struct {
  * the caller owns every array.  The FFT functions plan FFTW, which is not
  * thread-safe (core/fftw_plan.h).  Parameters are checked where a status
  * is returned: NL_EINVAL unless wind, patch and amplitude are positive and
- * finite and the angle and time finite. */
+ * finite, the angle within 1e6 radians and |t| <= 1e9 s; NL_EINVAL too
+ * when the spectrum vanishes on every wave vector used (a wind whose waves
+ * dwarf the patch, a patch too small for the wind) or the heights or
+ * gradients overflow (amplitude). */
 
 /* Phillips spectrum P(K) at integer wave vector (kx, ky) (2D), K = 2 pi k /
  * patch; 0 at k = 0. */

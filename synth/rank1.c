@@ -1,6 +1,7 @@
 /* Rank-1 lattices: generators, wave vectors, one-FFT synthesis, Delaunay. */
 #include "rank1.h"
 #include "../core/fftw_plan.h"
+#include "../core/field.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -23,22 +24,33 @@ void nl_rank1_point(const nl_rank1_lattice *L, size_t n, double *x)
         x[a] = (double)((unsigned long long)n * (unsigned long long)L->g[a] % L->N) / (double)L->N;
 }
 
-/* Minimum torus distance between distinct lattice points: that of x_n to 0. */
-static double min_distance(size_t N, int s, const long *g)
+/* Minimum torus distance between distinct lattice points: that of x_n to 0,
+ * with the coordinates n g_a mod N stepped by addition.  The scan stops
+ * once the distance is at most `floor` (the value returned is then <=
+ * floor: enough for a search that only keeps distances above it). */
+static double min_distance_above(size_t N, int s, const long *g, double floor)
 {
-    double best = INFINITY;
+    double best = INFINITY, f2 = floor > 0 ? floor * floor : -1;
+    unsigned long long r[NL_RANK1_MAX_DIM] = {0};
     for (size_t n = 1; n < N; n++) {
         double d2 = 0;
         for (int a = 0; a < s; a++) {
-            double x = (double)((unsigned long long)n * (unsigned long long)g[a] % N) / (double)N;
+            r[a] += (unsigned long long)g[a];
+            if (r[a] >= N)
+                r[a] -= N;
+            double x = (double)r[a] / (double)N;
             if (x > 0.5)
                 x -= 1;
             d2 += x * x;
         }
         best = fmin(best, d2);
+        if (best <= f2 && sqrt(best) <= floor)
+            break;
     }
     return sqrt(best);
 }
+
+static double min_distance(size_t N, int s, const long *g) { return min_distance_above(N, s, g, -1); }
 
 /* Enumerate k in shells of |k|_1 = L: all vectors with sum |k_a| = L. */
 typedef struct {
@@ -94,18 +106,27 @@ static int wave_vectors(nl_rank1_lattice *L)
     }
     for (size_t m = 0; m < L->N; m++)
         q.best[m] = INFINITY;
+    /* worst: the largest minimal norm^2, scanned only when the shell bound
+     * passes the last scan's value (norms only decrease, so the scanned
+     * value bounds the current one: the loop stops at the same shell or,
+     * scanning less often, after shells that cannot improve any residue) */
+    double worst = INFINITY;
     for (long r = 0;; r++) {
-        double worst = 0;
-        int all = 1;
-        for (size_t m = 0; m < L->N; m++) {
-            if (isinf(q.best[m]))
-                all = 0;
-            else
-                worst = fmax(worst, q.best[m]);
-        }
         /* every vector of this shell has norm^2 >= r^2 / s */
-        if (all && (double)r * (double)r / L->s > worst)
-            break;
+        if ((double)r * (double)r / L->s > worst || isinf(worst)) {
+            int all = 1;
+            worst = 0;
+            for (size_t m = 0; m < L->N && all; m++) {
+                if (isinf(q.best[m]))
+                    all = 0;
+                else
+                    worst = fmax(worst, q.best[m]);
+            }
+            if (!all)
+                worst = INFINITY;
+            else if ((double)r * (double)r / L->s > worst)
+                break;
+        }
         shell(&q, k, 0, r);
     }
     /* symmetric set for a real field */
@@ -126,12 +147,33 @@ int nl_rank1_generator(size_t N, int s, const long *g, nl_rank1_lattice *L)
         return NL_ERROR(NL_EINVAL, "points: expected 2 to 16777216, got %zu", N);
     if (g[0] != 1)
         return NL_ERROR(NL_EINVAL, "generator: expected a first component of 1, got %ld", g[0]);
+    int st = nl_size_check(1, &N, sizeof(double) + (size_t)s * sizeof(long), 1, NULL);
+    if (st)
+        return st;
     L->s = s;
     L->N = N;
     for (int a = 0; a < s; a++)
         L->g[a] = ((g[a] % (long)N) + (long)N) % (long)N;
     L->min_dist = min_distance(N, s, L->g);
     return wave_vectors(L);
+}
+
+int nl_rank1_check_generator(size_t N, int s, const long *g)
+{
+    for (int a = 0; a < s; a++) {
+        long ga = ((g[a] % (long)N) + (long)N) % (long)N;
+        if (a > 0 && ga == 0)
+            return NL_ERROR(NL_EINVAL, "generator: degenerate: component %d is 0 mod %zu (every point has x%d = 0)",
+                            a + 1, N, a + 1);
+        for (int b = 0; b < a; b++) {
+            long gb = ((g[b] % (long)N) + (long)N) % (long)N;
+            if (ga == gb || (ga + gb) % (long)N == 0)
+                return NL_ERROR(NL_EINVAL, "generator: degenerate: components %d and %d are %s mod %zu (the points "
+                                "lie on the plane x%d %s x%d = 0)", b + 1, a + 1, ga == gb ? "equal" : "opposite",
+                                N, b + 1, ga == gb ? "-" : "+", a + 1);
+        }
+    }
+    return NL_OK;
 }
 
 int nl_rank1_fibonacci(int index, nl_rank1_lattice *L)
@@ -149,15 +191,25 @@ int nl_rank1_fibonacci(int index, nl_rank1_lattice *L)
 int nl_rank1_korobov(size_t N, int s, long a, nl_rank1_lattice *L)
 {
     long g[NL_RANK1_MAX_DIM];
+    int st;
+    if (s < 1 || s > NL_RANK1_MAX_DIM)
+        return NL_ERROR(NL_EINVAL, "dim: expected 1 to %d, got %d", NL_RANK1_MAX_DIM, s);
+    if (N < 2 || N > (1u << 24))
+        return NL_ERROR(NL_EINVAL, "points: expected 2 to 16777216, got %zu", N);
+    if ((st = nl_size_check(1, &N, sizeof(double) + (size_t)s * sizeof(long), 1, NULL)))
+        return st;
     if (a <= 0) {
         double best = -1;
-        size_t tries = N > 4096 ? 4096 : N;
+        /* at most NL_RANK1_SEARCH_BUDGET point coordinates over the candidates */
+        size_t tries = N > 4096 ? 4096 : N, cap = NL_RANK1_SEARCH_BUDGET / (N * (size_t)s);
+        if (tries > cap)
+            tries = cap < 18 ? 18 : cap;
         for (size_t t = 2; t < tries; t++) {
             long cand = (long)t;
             g[0] = 1;
             for (int d = 1; d < s; d++)
                 g[d] = (long)((unsigned long long)g[d - 1] * (unsigned long long)cand % N);
-            double md = min_distance(N, s, g);
+            double md = min_distance_above(N, s, g, best + 1e-15);
             if (md > best + 1e-15)
                 best = md, a = cand;
         }

@@ -58,14 +58,27 @@ int nl_rank1_fibonacci(int index, nl_rank1_lattice *L);
 int nl_rank1_fibonacci_index(size_t N);
 
 /* Korobov lattice of N points in s dimensions, g = (1, a, a^2, ...) mod N;
- * a <= 0: searched over 2 <= a < min(N, 4096) for the largest minimum
- * distance (ties: smallest a).  Errors as nl_rank1_generator. */
+ * a <= 0: searched over 2 <= a < min(N, 4096, max(18, 2^33 / (N s))) for
+ * the largest minimum distance (ties: smallest a).  The search's work is
+ * bounded by NL_RANK1_SEARCH_BUDGET point coordinates, which shortens it
+ * from N s > 2^21 on (in 2D above 1048576 points); a candidate's scan stops
+ * once it cannot beat the best so far.  Errors as nl_rank1_generator
+ * (checked before the search). */
+#define NL_RANK1_SEARCH_BUDGET ((size_t)1 << 33)
 int nl_rank1_korobov(size_t N, int s, long a, nl_rank1_lattice *L);
 
 /* A lattice with a given generator (s values, g[0] must be 1; reduced mod N).
  * NL_EINVAL: s outside 1..NL_RANK1_MAX_DIM, N outside 2..2^24, g[0] != 1;
- * NL_ENOMEM. */
+ * NL_ETOOBIG: the wave vector search needs more than the memory available
+ * (nl_mem_available); NL_ENOMEM. */
 int nl_rank1_generator(size_t N, int s, const long *g, nl_rank1_lattice *L);
+
+/* NL_OK, or NL_EINVAL for a degenerate generator (s values, reduced mod
+ * N): a component g_a (a >= 1) that is 0 mod N, or two components equal or
+ * opposite mod N, which put every point on a plane (x_a = 0, x_a = x_b or
+ * x_a + x_b = 0 on the torus).  Pure; thread-safe.  The constructors do not
+ * call it (tiny Fibonacci and Korobov lattices are degenerate this way). */
+int nl_rank1_check_generator(size_t N, int s, const long *g);
 
 /* Frees L->k and sets it to NULL. */
 void nl_rank1_free(nl_rank1_lattice *L);

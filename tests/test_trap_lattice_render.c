@@ -489,3 +489,92 @@ Test(trap_points, reads_back)
     unlink(path);
     free(text);
 }
+
+/* The hardening refusals: each with its code and the value named. */
+Test(trap_rank1, hostile_inputs)
+{
+    nl_rank1_lattice L;
+    long zero[2] = {1, 0}, same[3] = {1, 7, 7}, opposite[2] = {1, 609}, fine[2] = {1, 233};
+    nl_model *neg = model("spectrum:cos(f)/(1+f*f)");
+    nl_rank1_model_info info;
+    double f[610];
+    cr_assert_eq(nl_rank1_check_generator(610, 2, zero), NL_EINVAL);
+    cr_assert(strstr(nl_errmsg(), "degenerate"), "%s", nl_errmsg());
+    cr_assert_eq(nl_rank1_check_generator(100, 3, same), NL_EINVAL);
+    cr_assert_eq(nl_rank1_check_generator(610, 2, opposite), NL_EINVAL);
+    cr_assert_eq(nl_rank1_check_generator(610, 2, fine), NL_OK);
+    cr_assert_eq(nl_rank1_fibonacci(15, &L), NL_OK);
+    cr_assert_eq(nl_rank1_model_synthesize(&L, neg, 1, 1, f, NULL, NULL), NL_ENOTPD, "a negative spectrum");
+    cr_assert(strstr(nl_errmsg(), "not positive definite"), "%s", nl_errmsg());
+    cr_assert_eq(nl_rank1_model_synthesize_info(&L, neg, 1, 1, NL_RANK1_CLAMP, f, NULL, NULL, &info), NL_OK, "%s",
+                 nl_errmsg());
+    cr_assert(info.negatives > 0 && info.clamp_error > 0 && isfinite(info.clamp_error));
+    for (size_t n = 0; n < L.N; n++)
+        cr_assert(isfinite(f[n]));
+    nl_rank1_free(&L), nl_model_free(neg);
+}
+
+Test(trap_ocean, hostile_inputs)
+{
+    nl_rank1_lattice L;
+    double c[2 * 55], grid[16];
+    nl_ocean_params gale = {1e308, 0.4, 100, 1e-4}, speck = {12.3, 0.4, 1e-300, 1e-4}, loud = {12.3, 0.4, 100, 1e308};
+    cr_assert_eq(nl_rank1_fibonacci(10, &L), NL_OK);
+    cr_assert_eq(nl_ocean_lattice_coefficients(&L, &gale, 1, 0, c), NL_EINVAL, "a wind whose waves dwarf the patch");
+    cr_assert(strstr(nl_errmsg(), "vanishes"), "%s", nl_errmsg());
+    cr_assert_eq(nl_ocean_grid(4, &speck, 1, 0, grid, NULL, NULL), NL_EINVAL, "a patch of 1e-300 m");
+    cr_assert_eq(nl_ocean_grid(4, &loud, 1, 0, grid, NULL, NULL), NL_EINVAL, "an amplitude that overflows");
+    cr_assert(strstr(nl_errmsg(), "amplitude"), "%s", nl_errmsg());
+    cr_assert_eq(nl_ocean_grid(4, &sea, 1, 1e308, grid, NULL, NULL), NL_EINVAL, "time 1e308");
+    nl_rank1_free(&L);
+}
+
+Test(trap_lattice, not_positive_definite)
+{
+    nl_model *neg = model("spectrum:cos(20*f)/(1+f*f)");
+    nl_synth_lattice_plan p;
+    cr_assert_eq(nl_synth_lattice_plan_init(neg, 2, 16, 3, &p), NL_ENOTPD);
+    cr_assert(strstr(nl_errmsg(), "not positive definite"), "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_lattice_plan_init_flags(neg, 2, 16, 3, NL_SYNTH_LATTICE_CLAMP, &p), NL_OK, "%s",
+                 nl_errmsg());
+    cr_assert(p.negatives > 0 && p.clamp_error > 0);
+    nl_model_free(neg);
+}
+
+Test(trap_render, hostile_views)
+{
+    nl_field *f = field2(32, 32), *s = field2(32, 32);
+    nl_render_view v;
+    uint8_t rgb[3 * 16];
+    cr_assert_eq(nl_render_relief(f, 30, 40, 1e308, s), NL_EINVAL, "slopes that overflow");
+    cr_assert(strstr(nl_errmsg(), "zscale"), "%s", nl_errmsg());
+    nl_render_view_default(f, &v);
+    v.width = v.height = 4, v.tile = 1, v.haze = 1e300;
+    cr_assert_eq(nl_render_terrain(f, &v, rgb), NL_EINVAL, "haze beyond reach");
+    cr_assert(strstr(nl_errmsg(), "haze"), "%s", nl_errmsg());
+    nl_render_view_default(f, &v);
+    v.width = v.height = 4, v.cam[0] = 1e308;
+    cr_assert_eq(nl_render_terrain(f, &v, rgb), NL_EINVAL, "camera far away");
+    nl_render_view_default(f, &v);
+    v.width = v.height = 4, v.azimuth = 1e308;
+    cr_assert_eq(nl_render_terrain(f, &v, rgb), NL_EINVAL, "azimuth 1e308");
+    nl_field_free(f), nl_field_free(s);
+}
+
+Test(trap_render, hostile_cloud_cameras)
+{
+    nl_cloud_scene s;
+    unsigned char rgb[3 * 48];
+    scene(&s);
+    s.look[2] = -4;  /* the camera's own position */
+    cr_assert_eq(nl_render_cloud(&s, rgb, NULL, NULL), NL_EINVAL, "looking at itself");
+    cr_assert(strstr(nl_errmsg(), "look_at"), "%s", nl_errmsg());
+    s.look[1] = -3;  /* straight down */
+    cr_assert_eq(nl_render_cloud(&s, rgb, NULL, NULL), NL_EINVAL, "looking straight down");
+    s.look[1] = 0, s.look[2] = 0, s.hi[0] = 1e308, s.lo[0] = -1e308;
+    cr_assert_eq(nl_render_cloud(&s, rgb, NULL, NULL), NL_EINVAL, "a box of infinite size");
+    cr_assert(strstr(nl_errmsg(), "box"), "%s", nl_errmsg());
+    s.hi[0] = 1, s.lo[0] = -1;
+    cr_assert_eq(nl_render_cloud(&s, rgb, NULL, NULL), NL_OK, "%s", nl_errmsg());
+    nl_model_free(s.shape), nl_model_free(s.noise);
+}
