@@ -63,11 +63,19 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { NMODEL = 24, NMETHOD = 6, M = 48, MAXLAG = 16 };
+enum { NMODEL = 24, NMETHOD = 6, M = 160, MAXLAG = 16 };
 static const char *const method_name[NMETHOD] = {"fft", "circulant", "cholesky", "subdiv", "sparse", "lattice"};
 
-/* Known failures: "dim/model index/method", see tests/fuzz/FINDINGS.md. */
-static const char *const known[] = {NULL};
+/* Known failures, by model kind (the spec's prefix) and method; each is a
+ * finding of tests/fuzz/FINDINGS.md, to be removed from here with its fix. */
+static const struct {
+    const char *prefix, *method, *finding;
+} known[] = {
+    {"spectrum:", "cholesky", "F1"}, /* NL_OK and every sample NaN */
+    {"power:", "cholesky", "F1"},
+    {"power:", "circulant", "F6"},   /* most of the variance lost, no flag */
+    {NULL, NULL, NULL},
+};
 
 static uint64_t rng_state = 0x9e3779b97f4a7c15ull;
 static double uni(double a, double b)
@@ -284,12 +292,10 @@ static int target(const ctx *c, runner *r, const size_t *n, size_t L, long (*lag
     return NL_OK;
 }
 
-static int is_known(int dim, int k, int method)
+static int is_known(const char *spec, int method)
 {
-    char key[64];
-    snprintf(key, sizeof key, "%d/%d/%s", dim, k, method_name[method]);
-    for (size_t i = 0; known[i]; i++)
-        if (!strcmp(known[i], key))
+    for (size_t i = 0; known[i].prefix; i++)
+        if (!strncmp(spec, known[i].prefix, strlen(known[i].prefix)) && !strcmp(known[i].method, method_name[method]))
             return 1;
     return 0;
 }
@@ -298,9 +304,11 @@ static void one(const ctx *c, int k, int method, size_t *stats)
 {
     runner r = {.method = method};
     size_t n[2] = {c->n[0], c->n[1]};
-    if (method == 2 && c->dim == 2)
+    if (method == 2 && c->dim == 2) /* Cholesky: O(count^3) */
         n[0] = n[1] = 12;
-    int flagged, st = plan(c, &r, n, &flagged), known_fail = is_known(c->dim, k, method);
+    if (method == 3 && c->dim == 2) /* the exact subdivision covariance: O(count^3) per level */
+        n[0] = n[1] = 16;
+    int flagged, st = plan(c, &r, n, &flagged), known_fail = is_known(c->spec, method);
     if (st != NL_OK) {
         stats[0]++;
         return;
@@ -314,7 +322,10 @@ static void one(const ctx *c, int k, int method, size_t *stats)
     cr_assert(x);
     cr_assert_eq(nl_verdict_alloc(c->dim, n, L, (const long(*)[2])lags, &v), NL_OK);
     int finite = 1;
-    for (uint64_t s = 1; s <= M; s++) {
+    /* a flagged approximation (or the lattice) is only checked for finite
+     * output: a few realizations do */
+    uint64_t count = flagged || method == 5 ? 4 : M;
+    for (uint64_t s = 1; s <= count; s++) {
         cr_assert_eq(run(&r, s, x), NL_OK, "%s %s: seed %llu: %s", c->spec, method_name[method],
                      (unsigned long long)s, nl_errmsg());
         for (size_t i = 0; i < x->count && finite; i++)
@@ -322,9 +333,10 @@ static void one(const ctx *c, int k, int method, size_t *stats)
         nl_verdict_add(v, x);
     }
     if (known_fail && !finite)
-        cr_log_warn("known failure %d/%d/%s (%s): non-finite output", c->dim, k, method_name[method], c->spec);
+        cr_log_warn("known failure (tests/fuzz/FINDINGS.md) %s %s: non-finite output", c->spec, method_name[method]);
     else
-        cr_expect(finite, "%s %s: NL_OK with a non-finite sample", c->spec, method_name[method]);
+        cr_expect(finite, "%s %s (%dD case %d): NL_OK with a non-finite sample", c->spec, method_name[method], c->dim,
+                  k);
     if (finite && !flagged && (method != 5)) {
         cr_assert_eq(nl_verdict_stats(v, mean, se), NL_OK);
         int tst = target(c, &r, n, L, lags, t);
@@ -334,8 +346,8 @@ static void one(const ctx *c, int k, int method, size_t *stats)
             double z = nl_verdict_zmax(L, mean, se, t, &worst);
             double zc = nl_verdict_threshold(1e-3 / (double)c->cases, L, M - 1);
             if (known_fail && !(z <= zc))
-                cr_log_warn("known failure %d/%d/%s (%s): z = %.1f at lag (%ld, %ld)", c->dim, k,
-                            method_name[method], c->spec, z, lags[worst][0], lags[worst][1]);
+                cr_log_warn("known failure (tests/fuzz/FINDINGS.md) %s %s: z = %.1f at lag (%ld, %ld)", c->spec,
+                            method_name[method], z, lags[worst][0], lags[worst][1]);
             else
                 cr_expect(z <= zc,
                           "%s %s (%dD case %d): ensemble ACF at lag (%ld, %ld) is %.4g, target %.4g: %.1f standard "
@@ -353,7 +365,7 @@ static void one(const ctx *c, int k, int method, size_t *stats)
 
 static void sweep(int dim)
 {
-    ctx c = {.dim = dim, .n = {dim == 1 ? 64 : 16, dim == 1 ? 1 : 16}, .cases = 2 * NMODEL * NMETHOD};
+    ctx c = {.dim = dim, .n = {dim == 1 ? 256 : 32, dim == 1 ? 1 : 32}, .cases = 2 * NMODEL * NMETHOD};
     size_t stats[3] = {0}; /* refused, flagged (or approximate), ACF-checked */
     rng_state = 0x9e3779b97f4a7c15ull * (uint64_t)(dim + 1);
     for (int k = 0; k < NMODEL; k++) {
