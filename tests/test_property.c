@@ -72,7 +72,6 @@ static const struct {
     const char *prefix, *method, *finding;
 } known[] = {
     {"spectrum:", "cholesky", "F1"}, /* NL_OK and every sample NaN */
-    {"power:", "cholesky", "F1"},
     {"power:", "circulant", "F6"},   /* most of the variance lost, no flag */
     {NULL, NULL, NULL},
 };
