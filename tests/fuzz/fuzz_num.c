@@ -5,6 +5,10 @@
  *   8 synthcli  the same choice as a command line, `noiselab synth ...`,
  *               run in-process by cli_main (cli_die's exit replaced by a
  *               longjmp, as in fuzz_cli.c)
+ *   9 fieldnum  the analysis on a tiny field (up to 16 x 16) of hostile
+ *               finite samples (0, denormals, 1e154, 1e200, 1e308, ...):
+ *               ACF (full, axis, radial, direct), periodogram, Welch,
+ *               moments, histogram, spectral slope
  * The fuzzer's bytes are decoded into a structured choice (decode below),
  * not parsed as text: a method (fft, circulant, cholesky, sparse, lattice,
  * subdiv), a model name with each parameter either absent or drawn from a
@@ -35,6 +39,10 @@
 #include "../../synth/lattice.h"
 #include "../../synth/sparse.h"
 #include "../../synth/subdiv.h"
+#if FUZZ_TARGET == 9
+#include "../../analysis/slope.h"
+#include "../../analysis/welch.h"
+#endif
 #if FUZZ_TARGET == 8
 #include "../../cli/cli.h"
 #include <dirent.h>
@@ -215,7 +223,7 @@ static void setup(void)
     setenv("NOISELAB_FFTW", "estimate", 1);
 }
 
-#if FUZZ_TARGET == 7
+#if FUZZ_TARGET == 7 || FUZZ_TARGET == 9
 /* A refusal must say why; a success must be finite. */
 static void check(int st, const char *what)
 {
@@ -237,6 +245,9 @@ static void check_field(const nl_field *f, const char *what)
         }
 }
 
+#endif
+
+#if FUZZ_TARGET == 7
 static void analyse(const nl_field *x)
 {
     nl_field *a = NULL, *p = NULL;
@@ -336,6 +347,124 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         nl_field_free(out);
     }
     nl_model_free(m);
+    return 0;
+}
+
+#elif FUZZ_TARGET == 9
+/* Finite sample values that stress sums of squares and fourth powers. */
+static const double vals[] = {0, -0.0, 1, -1, 0.5, 4.9e-324, 2.2250738585072014e-308, 1e-300, 1e-154, 1e77,
+                              1e154, -1e154, 1e200, -1e200, 1e308, -1e308, 1.7976931348623157e308, 3, 1e15, -7};
+enum { NVAL = sizeof vals / sizeof *vals };
+
+static void finite_array(const double *v, size_t n, const char *what)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(v[i])) {
+            if (ignored(what, "nonfinite"))
+                return;
+            fprintf(stderr, "fuzz: %s returned NL_OK with value %zu = %g\n", what, i, v[i]);
+            __builtin_trap();
+        }
+}
+
+static void acfs(const nl_field *x, int unbiased, size_t maxlag)
+{
+    nl_field *a = NULL;
+    int st = nl_acf_full(x, 0, unbiased, &a);
+    check(st, "nl_acf_full");
+    if (st)
+        return;
+    check_field(a, "nl_acf_full");
+    double lag[16], val[16];
+    size_t cnt[16];
+    if ((st = nl_acf_axis(a, 0, maxlag, lag, val)) == NL_OK)
+        finite_array(val, maxlag + 1, "nl_acf_axis");
+    check(st, "nl_acf_axis");
+    if ((st = nl_acf_radial(a, 8, lag, val, cnt)) == NL_OK)
+        for (size_t i = 0; i < 8; i++)
+            if (cnt[i])
+                finite_array(&val[i], 1, "nl_acf_radial");
+    check(st, "nl_acf_radial");
+    if ((st = nl_acf_direct(x, 0, unbiased, 0, maxlag, val)) == NL_OK)
+        finite_array(val, maxlag + 1, "nl_acf_direct");
+    check(st, "nl_acf_direct");
+    nl_field_free(a);
+}
+
+static void psds(const nl_field *x, size_t S)
+{
+    nl_field *P = NULL;
+    int st = nl_psd_periodogram(x, 0, &P);
+    check(st, "nl_psd_periodogram");
+    if (st == NL_OK) {
+        check_field(P, "nl_psd_periodogram");
+        nl_slope sl;
+        if ((st = nl_psd_slope_grid(P, 0.01, 0.5, &sl)) == NL_OK)
+            finite_array(&sl.slope, 1, "nl_psd_slope_grid");
+        check(st, "nl_psd_slope_grid");
+        nl_field_free(P);
+    }
+    nl_welch_plan *w;
+    if ((st = nl_welch_plan_alloc(x->dim, S, &w)) == NL_OK) {
+        size_t n[2] = {S, S};
+        nl_field *W = nl_field_alloc(x->dim, n, x->h, &st);
+        if (W && (st = nl_welch_plan_execute(w, x, NAN, W, NULL)) == NL_OK)
+            check_field(W, "nl_welch_plan_execute");
+        check(st, "nl_welch_plan_execute");
+        nl_field_free(W);
+        nl_welch_plan_free(w);
+    }
+    check(st, "nl_welch_plan_alloc");
+}
+
+static void moments(const nl_field *x, size_t bins)
+{
+    nl_moments mo;
+    int st = nl_moments_compute(x, &mo);
+    check(st, "nl_moments_compute");
+    if (st)
+        return;
+    double m4[4] = {mo.mean, mo.variance, mo.min, mo.max};
+    finite_array(m4, 4, "nl_moments_compute");
+    double edges[65], counts[64], mid[64], dens[64], gauss[64];
+    if ((st = nl_hist(x, bins, edges, counts)) == NL_OK)
+        finite_array(edges, bins + 1, "nl_hist");
+    check(st, "nl_hist");
+    if ((st = nl_hist_density(x, &mo, bins, mid, dens, gauss)) == NL_OK) {
+        finite_array(mid, bins, "nl_hist_density");
+        finite_array(dens, bins, "nl_hist_density");
+    }
+    check(st, "nl_hist_density");
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    bytes b = {data, size};
+    setup();
+    int dim = 1 + take(&b) % 2;
+    size_t n[2] = {1 + take(&b) % 16, dim == 2 ? 1 + take(&b) % 16 : 1};
+    double h[2];
+    h[0] = h[1] = take(&b) & 1 ? atof(pick_num(&b)) : 1;
+    unsigned o = take(&b);
+    size_t S = (size_t[]){4, 8, 16, 3}[o & 3], bins = 1 + (o >> 2) % 64, maxlag = take(&b) % 16;
+    int st;
+    nl_field *x = nl_field_alloc(dim, n, h, &st);
+    check(st, "nl_field_alloc");
+    if (!x)
+        return 0;
+    for (size_t i = 0; i < x->count; i++)
+        x->data[i] = vals[(b.left ? take(&b) : (unsigned)(i * 7)) % NVAL];
+    if (getenv("FUZZ_DEBUG")) {
+        fprintf(stderr, "case: dim %d n %zux%zu h %g unbiased %u S %zu bins %zu maxlag %zu values", dim, n[0], n[1],
+                h[0], o & 1, S, bins, maxlag);
+        for (size_t i = 0; i < x->count; i++)
+            fprintf(stderr, " %g", x->data[i]);
+        fputc('\n', stderr);
+    }
+    acfs(x, o & 1, maxlag);
+    psds(x, S);
+    moments(x, bins);
+    nl_field_free(x);
     return 0;
 }
 
