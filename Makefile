@@ -157,8 +157,9 @@ asan: $(DEPS_OK)
 # files and fail the run.  Targets 1-3 read one input with a library parser
 # (tests/fuzz/fuzz_parse.c), 4-6 run the command line in-process
 # (tests/fuzz/fuzz_cli.c), 7-8 decode the input into a synthesis on a tiny
-# grid, by the library and by the command line, 9 into a tiny field for the
-# analysis (tests/fuzz/fuzz_num.c).
+# grid, run by the library (tests/fuzz/fuzz_num.c) and by the command line
+# (tests/fuzz/fuzz_synthcli.c), 9 into a tiny field for the analysis
+# (fuzz_num.c).
 # `make fuzz FUZZ_TARGETS="synthnum synthcli"` runs some of them.
 FUZZ_SECONDS ?= 30
 FUZZ_TARGETS ?= model dist field cli krige cloud synthnum synthcli fieldnum
@@ -170,7 +171,7 @@ fuzz: $(DEPS_OK)
 	    model) n=1 src=tests/fuzz/fuzz_parse.c ;; dist) n=2 src=tests/fuzz/fuzz_parse.c ;; \
 	    field) n=3 src=tests/fuzz/fuzz_parse.c ;; cli) n=4 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; \
 	    krige) n=5 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; cloud) n=6 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; \
-	    synthnum) n=7 src=tests/fuzz/fuzz_num.c ;; synthcli) n=8 src="tests/fuzz/fuzz_num.c $(FUZZ_CLI_SRC)" ;; \
+	    synthnum) n=7 src=tests/fuzz/fuzz_num.c ;; synthcli) n=8 src="tests/fuzz/fuzz_synthcli.c $(FUZZ_CLI_SRC)" ;; \
 	    fieldnum) n=9 src=tests/fuzz/fuzz_num.c ;; \
 	    *) echo "fuzz: no target $$t"; exit 1 ;; \
 	    esac; \
