@@ -178,7 +178,7 @@ fuzz: $(DEPS_OK)
 	    clang -O1 -g -fsanitize=fuzzer,address,undefined -DFUZZ_TARGET=$$n -D_GNU_SOURCE -I/usr/include/OpenEXR \
 	        $$src $(LIB_SRC) -o $(BUILD)/fuzz/$$t $(LDLIBS) -lgomp -lm || exit 1; \
 	    mkdir -p $(BUILD)/fuzz/corpus-$$t $(BUILD)/fuzz/work-$$t && cp tests/fuzz/corpus/$$t/* $(BUILD)/fuzz/corpus-$$t/; \
-	    (cd $(BUILD)/fuzz/work-$$t && ASAN_OPTIONS=detect_leaks=0 ../$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	    (cd $(BUILD)/fuzz/work-$$t && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1 ../$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	        -timeout=20 -artifact_prefix=../$$t- ../corpus-$$t) || exit 1; \
 	done
 

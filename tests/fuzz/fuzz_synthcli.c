@@ -17,6 +17,8 @@
 #include "num_case.h"
 
 #include <dirent.h>
+#include <sanitizer/common_interface_defs.h>
+#include <stdint.h>
 #include <math.h>
 #include <setjmp.h>
 #include <strings.h>
@@ -34,6 +36,9 @@ static void setup_cli(void)
     if (done++)
         return;
     cli_exit_hook = escape;
+    /* stderr is a file while the command runs: sanitizer reports of a
+     * crash inside it go to the real stderr, beside libFuzzer's */
+    __sanitizer_set_report_fd((void *)(intptr_t)dup(2));
     snprintf(errpath, sizeof errpath, "/tmp/noiselab-fuzz-err-%ld", (long)getpid());
     snprintf(outpath, sizeof outpath, "/tmp/noiselab-fuzz-out-%ld", (long)getpid());
 }
