@@ -152,23 +152,34 @@ asan: $(DEPS_OK)
 	LSAN_OPTIONS=suppressions=$(abspath tests/lsan.supp) $(MAKE) BUILD=build/asan BINDIR=build/asan/bin \
 	    OPT="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" test
 
-# libFuzzer on the parsers (clang), FUZZ_SECONDS each (default 30), from the
-# committed seed corpora; crashes are left as crash-* files and fail the run.
+# libFuzzer on the parsers and the number paths (clang), FUZZ_SECONDS each
+# (default 30), from the committed seed corpora; crashes are left as crash-*
+# files and fail the run.  Targets 1-3 read one input with a library parser
+# (tests/fuzz/fuzz_parse.c), 4-6 run the command line in-process
+# (tests/fuzz/fuzz_cli.c), 7-8 decode the input into a synthesis on a tiny
+# grid, run by the library (tests/fuzz/fuzz_num.c) and by the command line
+# (tests/fuzz/fuzz_synthcli.c), 9 into a tiny field for the analysis
+# (fuzz_num.c).
+# `make fuzz FUZZ_TARGETS="synthnum synthcli"` runs some of them.
 FUZZ_SECONDS ?= 30
-# Targets 1-3 read one input with a library parser (tests/fuzz/fuzz_parse.c),
-# 4-6 run the command line in-process (tests/fuzz/fuzz_cli.c).
-FUZZ_TARGETS := model dist field cli krige cloud
+FUZZ_TARGETS ?= model dist field cli krige cloud synthnum synthcli fieldnum
 FUZZ_CLI_SRC := $(filter-out cli/main.c,$(CLI_SRC)) $(BENCH_SRC)
 fuzz: $(DEPS_OK)
 	@mkdir -p $(BUILD)/fuzz
-	@n=1; for t in $(FUZZ_TARGETS); do \
-	    if [ $$n -le 3 ]; then src="tests/fuzz/fuzz_parse.c"; else src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)"; fi; \
+	@for t in $(FUZZ_TARGETS); do \
+	    case $$t in \
+	    model) n=1 src=tests/fuzz/fuzz_parse.c ;; dist) n=2 src=tests/fuzz/fuzz_parse.c ;; \
+	    field) n=3 src=tests/fuzz/fuzz_parse.c ;; cli) n=4 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; \
+	    krige) n=5 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; cloud) n=6 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; \
+	    synthnum) n=7 src=tests/fuzz/fuzz_num.c ;; synthcli) n=8 src="tests/fuzz/fuzz_synthcli.c $(FUZZ_CLI_SRC)" ;; \
+	    fieldnum) n=9 src=tests/fuzz/fuzz_num.c ;; \
+	    *) echo "fuzz: no target $$t"; exit 1 ;; \
+	    esac; \
 	    clang -O1 -g -fsanitize=fuzzer,address,undefined -DFUZZ_TARGET=$$n -D_GNU_SOURCE -I/usr/include/OpenEXR \
 	        $$src $(LIB_SRC) -o $(BUILD)/fuzz/$$t $(LDLIBS) -lgomp -lm || exit 1; \
 	    mkdir -p $(BUILD)/fuzz/corpus-$$t $(BUILD)/fuzz/work-$$t && cp tests/fuzz/corpus/$$t/* $(BUILD)/fuzz/corpus-$$t/; \
-	    (cd $(BUILD)/fuzz/work-$$t && ASAN_OPTIONS=detect_leaks=0 ../$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	    (cd $(BUILD)/fuzz/work-$$t && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1 ../$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
 	        -timeout=20 -artifact_prefix=../$$t- ../corpus-$$t) || exit 1; \
-	    n=$$((n + 1)); \
 	done
 
 # Speed against this machine's floor, measured in the same run (TSV).
