@@ -59,9 +59,11 @@ static void print_text(const char *spec, int dim, const nl_check *k)
         printf("  3D spectrum monotone   %s\n", k->monotone_3d ? "yes" : "no");
     if (k->differentiable_order < 0)
         printf("  differentiable         infinitely (spectrum decays faster than any power)\n");
-    else
+    else if (isfinite(k->spectral_decay))
         printf("  differentiable         %d times (spectrum ~ f^-%.2f)\n", k->differentiable_order,
                k->spectral_decay);
+    else /* the spectral fit saw no power law, but R has a kink at lag 0 */
+        printf("  differentiable         %d times (R has a kink at lag 0)\n", k->differentiable_order);
     if (isfinite(k->r2))
         printf("  R''(0)                 %.6g\n", k->r2);
     else if (k->r2 < 0)
