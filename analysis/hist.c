@@ -5,6 +5,7 @@
 
 #include <gsl/gsl_histogram.h>
 #include <gsl/gsl_statistics_double.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -18,9 +19,16 @@ int nl_moments_compute(const nl_field *x, nl_moments *m)
     m->skewness = gsl_stats_skew_m_sd(x->data, 1, x->count, m->mean, sqrt(m->variance));
     m->kurtosis = gsl_stats_kurtosis_m_sd(x->data, 1, x->count, m->mean, sqrt(m->variance));
     gsl_stats_minmax(&m->min, &m->max, x->data, 1, x->count);
-    if (!isfinite(m->mean) || !isfinite(m->variance))
-        return NL_ERROR(NL_EINVAL, "moments: the samples run from %g to %g, whose variance overflows; expected "
-                        "magnitudes below 1e150", m->min, m->max);
+    /* GSL's running mean and variance accumulate in long double; the mean
+     * square deviation comes back as a double times n / (n - 1) <= 2, so
+     * deviations below sqrt(DBL_MAX / 2) keep the variance finite. */
+    if (!isfinite(m->mean))
+        return NL_ERROR(NL_EINVAL, "moments: the samples run from %g to %g: the mean and variance overflow; expected max - min below %g",
+                        m->min, m->max, DBL_MAX);
+    if (!isfinite(m->variance))
+        return NL_ERROR(NL_EINVAL, "moments: the samples deviate from their mean %g by up to %g: the variance overflows; "
+                        "expected deviations below %.3g (sqrt(DBL_MAX / 2))", m->mean,
+                        fmax(m->max - m->mean, m->mean - m->min), sqrt(DBL_MAX / 2));
     if (m->variance == 0)
         m->skewness = m->kurtosis = NAN;
     return NL_OK;
