@@ -36,7 +36,7 @@ int nl_moments_compute(const nl_field *x, nl_moments *m)
 
 static int hist(const nl_field *x, size_t bins, double *edges, double *counts)
 {
-    double lo, hi;
+    double lo, hi, top;
     gsl_histogram *h;
     if (bins < 1)
         return NL_ERROR(NL_EINVAL, "bins: expected at least 1, got %zu", bins);
@@ -47,13 +47,25 @@ static int hist(const nl_field *x, size_t bins, double *edges, double *counts)
         return NL_ERROR(NL_EINVAL, "histogram: the samples run from %g to %g, whose width overflows", lo, hi);
     if (!(hi > lo))
         hi = lo + 1;
+    /* beyond 2^53, v + 1 rounds to v: a width of 2^-20 |v| (2^32 ulps) toward zero */
+    if (!(hi > lo) && lo < 0)
+        hi = lo - lo * 0x1p-20;
+    else if (!(hi > lo))
+        lo = hi - hi * 0x1p-20;
     h = gsl_histogram_alloc(bins);
     if (!h)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu bins", bins);
-    /* nudge the upper edge so that the maximum is counted in the last bin */
-    gsl_histogram_set_ranges_uniform(h, lo, nextafter(hi, INFINITY));
+    /* nudge the upper edge so that the maximum is counted in the last bin;
+     * above DBL_MAX there is no edge: its samples are counted there by hand */
+    top = nextafter(hi, INFINITY);
+    if (isinf(top))
+        top = hi;
+    gsl_histogram_set_ranges_uniform(h, lo, top);
     for (size_t i = 0; i < x->count; i++)
-        gsl_histogram_increment(h, x->data[i]);
+        if (x->data[i] >= top)
+            h->bin[bins - 1] += 1;
+        else
+            gsl_histogram_increment(h, x->data[i]);
     for (size_t b = 0; b <= bins; b++)
         edges[b] = h->range[b];
     for (size_t b = 0; b < bins; b++)

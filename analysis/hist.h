@@ -26,7 +26,8 @@ typedef struct {
 int nl_moments_compute(const nl_field *x, nl_moments *m);
 
 /* Histogram of `bins` equal bins over [min, max] of the samples (the maximum
- * falls in the last bin; a constant field spans [v, v + 1]): the caller's
+ * falls in the last bin; a constant field spans [v, v + 1], or when
+ * v + 1 rounds to v, |v| >= 2^53, a width of 2^-20 |v| toward 0): the caller's
  * edges[0..bins] and counts[0..bins-1] (counts as doubles).  Returns NL_OK,
  * NL_EINVAL (bins = 0, a sample is infinite or NaN, or max - min
  * overflows) or NL_ENOMEM. */

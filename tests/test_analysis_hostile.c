@@ -141,6 +141,40 @@ Test(hostile_moments, constant_and_overflowing_samples)
     nl_field_free(f);
 }
 
+/* A constant field beyond 2^53 (v + 1 == v) still gets bins of positive
+ * width: strictly increasing edges and finite densities that integrate to 1
+ * (exact properties but for the rounding of count / (N w) w, hence 1e-9). */
+Test(hostile_moments, histogram_of_a_huge_constant_field)
+{
+    const double vals[] = {-1e308, 1e308, DBL_MAX, -DBL_MAX, 0x1p53, -0x1p60};
+    const size_t bins_list[] = {1, 7, 1000};
+    size_t n = 9;
+    nl_field *f = nl_field_alloc(1, &n, NULL, NULL);
+    nl_moments mo;
+    for (size_t v = 0; v < sizeof vals / sizeof *vals; v++)
+        for (size_t b = 0; b < 3; b++) {
+            size_t bins = bins_list[b];
+            double *mid = malloc(bins * sizeof *mid), *dens = malloc(bins * sizeof *dens);
+            double *gauss = malloc(bins * sizeof *gauss), *edges = malloc((bins + 1) * sizeof *edges), total = 0;
+            double *counts = malloc(bins * sizeof *counts);
+            for (size_t i = 0; i < n; i++)
+                f->data[i] = vals[v];
+            cr_assert_eq(nl_moments_compute(f, &mo), NL_OK, "%s", nl_errmsg());
+            cr_assert_eq(nl_hist(f, bins, edges, counts), NL_OK, "%s", nl_errmsg());
+            for (size_t i = 0; i < bins; i++)
+                cr_expect(edges[i + 1] > edges[i], "v %g, %zu bins: edges %zu, %zu are %g, %g", vals[v], bins, i,
+                          i + 1, edges[i], edges[i + 1]);
+            cr_assert_eq(nl_hist_density(f, &mo, bins, mid, dens, gauss), NL_OK, "%s", nl_errmsg());
+            for (size_t i = 0; i < bins; i++) {
+                cr_expect(isfinite(dens[i]) && dens[i] >= 0, "v %g: density %zu is %g", vals[v], i, dens[i]);
+                total += dens[i] * (edges[i + 1] - edges[i]);
+            }
+            cr_expect(fabs(total - 1) < 1e-9, "v %g, %zu bins: the density integrates to %.17g", vals[v], bins, total);
+            free(mid), free(dens), free(gauss), free(edges), free(counts);
+        }
+    nl_field_free(f);
+}
+
 /* The bound of nl_estimate_check_range, D <= sqrt(DBL_MAX / 16) / N, is
  * sufficient where it is tightest: every sample at D from the given mean 0
  * puts all of N D into the zero frequency, and the 3D autocorrelation sums
