@@ -5,6 +5,7 @@
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -76,16 +77,29 @@ int nl_acf_bartlett(const double *c, size_t nc, size_t N, size_t maxlag, double 
     return NL_OK;
 }
 
+/* The deviation D from the mean up to which the second-order sums of N
+ * samples stay finite: the transform of the deviations is at most N D in
+ * modulus, its squared modulus at most N^2 D^2 (the periodogram, a Welch
+ * segment), and the inverse transform of the autocorrelation sums the
+ * squared moduli over the 2^dim N <= 8 N cells of its padded grid: at most
+ * 8 N^2 D^2 (Parseval).  With a factor 2 for rounding, all stay finite for
+ * D <= sqrt(DBL_MAX / 16) / N (about 3.4e153 / N).  With the spacing, the
+ * density's N^2 D^2 cell must be finite too: D below sqrt(DBL_MAX / cell) / N. */
 int nl_estimate_check_range(const nl_field *x, double mean, int spacing)
 {
     double m = isnan(mean) ? nl_field_mean(x) : mean, d = 0, cell = x->h[0] * x->h[1] * x->h[2];
+    double N = (double)x->count, bound = sqrt(DBL_MAX / 16.0) / N;
     for (size_t i = 0; i < x->count; i++)
         d = fmax(d, fabs(x->data[i] - m));
-    if (!isfinite(m) || !(d * (double)x->count < 1e150) ||
-        (spacing && !isfinite(d * d * (double)x->count * (double)x->count * cell)))
+    if (!isfinite(m) || !(d <= bound))
         return NL_ERROR(NL_EINVAL,
-                        "estimate: the samples deviate from the mean %g by up to %g (spacing %g); their sums of "
-                        "squares overflow; expected deviations below %g",
-                        m, d, x->h[0], 1e150 / (double)x->count);
+                        "the samples deviate from their mean %g by up to %g: the sums of squares of the estimate "
+                        "overflow; expected deviations below %.3g (sqrt(DBL_MAX / 16) / %zu samples)",
+                        m, d, bound, x->count);
+    if (spacing && !isfinite(d * d * N * N * cell))
+        return NL_ERROR(NL_EINVAL,
+                        "the samples deviate from their mean %g by up to %g: the spectral density overflows at the "
+                        "cell %g; expected deviations below %.3g (sqrt(DBL_MAX / cell) / %zu samples)",
+                        m, d, cell, sqrt(DBL_MAX / cell) / N, x->count);
     return NL_OK;
 }

@@ -82,11 +82,13 @@ int nl_acf_radial(const nl_field *full, size_t nbins, double *lag, double *val, 
 int nl_acf_direct(const nl_field *x, double mean, int unbiased, int axis, size_t maxlag, double *val);
 
 /* Whether the second-order estimates of x (acf, periodogram, Welch) stay
- * finite: with m = mean (the sample mean when mean is NaN) and D the
- * largest |x - m|, requires D count < 1e150 and, when spacing is set, that
- * D^2 count times the cell h[0] h[1] h[2] be finite too.  Every estimator
- * of this module and of psd.h calls it before it runs.  Returns NL_OK or
- * NL_EINVAL naming the mean and the deviation. */
+ * finite: with m = mean (the sample mean when mean is NaN), N = count and D
+ * the largest |x - m|, requires m finite and D <= sqrt(DBL_MAX / 16) / N
+ * (the transforms' squared moduli and the padded autocorrelation sums, at
+ * most 8 N^2 D^2, with a factor 2 to spare) and, when spacing is set, that
+ * D^2 N^2 times the cell h[0] h[1] h[2] be finite too.  Every estimator of
+ * this module and of psd.h calls it before it runs.  Returns NL_OK or
+ * NL_EINVAL naming the mean, the deviation and the bound. */
 int nl_estimate_check_range(const nl_field *x, double mean, int spacing);
 
 /* Bartlett's approximation (1946) to the variance of the biased

@@ -5,6 +5,7 @@
 
 #include <gsl/gsl_histogram.h>
 #include <gsl/gsl_statistics_double.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -18,9 +19,16 @@ int nl_moments_compute(const nl_field *x, nl_moments *m)
     m->skewness = gsl_stats_skew_m_sd(x->data, 1, x->count, m->mean, sqrt(m->variance));
     m->kurtosis = gsl_stats_kurtosis_m_sd(x->data, 1, x->count, m->mean, sqrt(m->variance));
     gsl_stats_minmax(&m->min, &m->max, x->data, 1, x->count);
-    if (!isfinite(m->mean) || !isfinite(m->variance))
-        return NL_ERROR(NL_EINVAL, "moments: the samples run from %g to %g, whose variance overflows; expected "
-                        "magnitudes below 1e150", m->min, m->max);
+    /* GSL's running mean and variance accumulate in long double; the mean
+     * square deviation comes back as a double times n / (n - 1) <= 2, so
+     * deviations below sqrt(DBL_MAX / 2) keep the variance finite. */
+    if (!isfinite(m->mean))
+        return NL_ERROR(NL_EINVAL, "moments: the samples run from %g to %g: the mean and variance overflow; expected max - min below %g",
+                        m->min, m->max, DBL_MAX);
+    if (!isfinite(m->variance))
+        return NL_ERROR(NL_EINVAL, "moments: the samples deviate from their mean %g by up to %g: the variance overflows; "
+                        "expected deviations below %.3g (sqrt(DBL_MAX / 2))", m->mean,
+                        fmax(m->max - m->mean, m->mean - m->min), sqrt(DBL_MAX / 2));
     if (m->variance == 0)
         m->skewness = m->kurtosis = NAN;
     return NL_OK;
@@ -28,7 +36,7 @@ int nl_moments_compute(const nl_field *x, nl_moments *m)
 
 static int hist(const nl_field *x, size_t bins, double *edges, double *counts)
 {
-    double lo, hi;
+    double lo, hi, top;
     gsl_histogram *h;
     if (bins < 1)
         return NL_ERROR(NL_EINVAL, "bins: expected at least 1, got %zu", bins);
@@ -39,13 +47,25 @@ static int hist(const nl_field *x, size_t bins, double *edges, double *counts)
         return NL_ERROR(NL_EINVAL, "histogram: the samples run from %g to %g, whose width overflows", lo, hi);
     if (!(hi > lo))
         hi = lo + 1;
+    /* beyond 2^53, v + 1 rounds to v: a width of 2^-20 |v| (2^32 ulps) toward zero */
+    if (!(hi > lo) && lo < 0)
+        hi = lo - lo * 0x1p-20;
+    else if (!(hi > lo))
+        lo = hi - hi * 0x1p-20;
     h = gsl_histogram_alloc(bins);
     if (!h)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu bins", bins);
-    /* nudge the upper edge so that the maximum is counted in the last bin */
-    gsl_histogram_set_ranges_uniform(h, lo, nextafter(hi, INFINITY));
+    /* nudge the upper edge so that the maximum is counted in the last bin;
+     * above DBL_MAX there is no edge: its samples are counted there by hand */
+    top = nextafter(hi, INFINITY);
+    if (isinf(top))
+        top = hi;
+    gsl_histogram_set_ranges_uniform(h, lo, top);
     for (size_t i = 0; i < x->count; i++)
-        gsl_histogram_increment(h, x->data[i]);
+        if (x->data[i] >= top)
+            h->bin[bins - 1] += 1;
+        else
+            gsl_histogram_increment(h, x->data[i]);
     for (size_t b = 0; b <= bins; b++)
         edges[b] = h->range[b];
     for (size_t b = 0; b < bins; b++)

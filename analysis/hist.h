@@ -19,12 +19,15 @@ typedef struct {
 /* Moments and range of every sample of x (any dim; units of the samples).
  * A constant field (variance 0) has no skewness or kurtosis: both are NaN
  * then, and the caller reports them as undefined.  Returns NL_OK or
- * NL_EINVAL (fewer than 2 samples, or samples so large that the mean or
- * the variance overflows); *m is unspecified on failure.  Use this, not loops by hand, for a field's mean and variance. */
+ * NL_EINVAL (fewer than 2 samples, max - min above DBL_MAX so that the
+ * mean overflows, or a variance that overflows: it stays finite while every
+ * |x - mean| is below sqrt(DBL_MAX / 2), about 9.5e153); *m is unspecified
+ * on failure.  Use this, not loops by hand, for a field's mean and variance. */
 int nl_moments_compute(const nl_field *x, nl_moments *m);
 
 /* Histogram of `bins` equal bins over [min, max] of the samples (the maximum
- * falls in the last bin; a constant field spans [v, v + 1]): the caller's
+ * falls in the last bin; a constant field spans [v, v + 1], or when
+ * v + 1 rounds to v, |v| >= 2^53, a width of 2^-20 |v| toward 0): the caller's
  * edges[0..bins] and counts[0..bins-1] (counts as doubles).  Returns NL_OK,
  * NL_EINVAL (bins = 0, a sample is infinite or NaN, or max - min
  * overflows) or NL_ENOMEM. */

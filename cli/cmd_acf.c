@@ -3,6 +3,7 @@
 #include "../analysis/acf.h"
 #include "../analysis/fftshift.h"
 #include "../core/model.h"
+#include "../core/nl_error.h"
 
 #include <float.h>
 #include <getopt.h>
@@ -186,12 +187,14 @@ int cli_cmd_acf(int argc, char **argv)
     acf_opts o = {0};
     double *lag, *val, *tgt = NULL, *blo = NULL, *bhi = NULL;
     nl_field *x, *full;
+    int st;
 
     parse(argc, argv, &o);
     x = cli_read_field(o.in, NULL);
     check_field(&o, x);
     o.tmp = cli_out_begin(o.out);
-    cli_check(nl_acf_full(x, o.mean, o.unbiased, &full));
+    if ((st = nl_acf_full(x, o.mean, o.unbiased, &full)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o.in, nl_errmsg());
     if (o.out && cli_has_ext(o.out, ".exr")) {
         write_centred(&o, full);
         nl_field_free(full), nl_field_free(x);

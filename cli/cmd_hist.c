@@ -4,6 +4,7 @@
 #include "../analysis/gof.h"
 #include "../analysis/hist.h"
 #include "../core/dist.h"
+#include "../core/nl_error.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -113,7 +114,7 @@ int cli_cmd_hist(int argc, char **argv)
     edges = cli_malloc((o.bins + 1) * sizeof *edges);
     counts = cli_malloc(o.bins * sizeof *counts);
     if ((st = nl_moments_compute(x, &mo)) || (st = nl_hist(x, o.bins, edges, counts)))
-        cli_die_status(st);
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o.in, nl_errmsg());
     if (dist) {
         cli_check(nl_gof_test(x->data, x->count, dist, o.bins < 2 ? 2 : o.bins, &gof));
         pdf = cli_malloc(o.bins * sizeof *pdf);

@@ -187,10 +187,10 @@ int cli_cmd_psd(int argc, char **argv)
     o.pvtmp = cli_out_begin(o.preview);
     if (o.welch && (st = nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg))) {
         nl_field_free(x);
-        cli_die(nl_error_is_input(st) ? 2 : 1, "--welch %zu: %s", o.welch, nl_errmsg());
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: --welch %zu: %s", o.in, o.welch, nl_errmsg());
     }
-    if (!o.welch)
-        cli_check(nl_psd_periodogram(x, o.mean, &P));
+    if (!o.welch && (st = nl_psd_periodogram(x, o.mean, &P)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o.in, nl_errmsg());
     if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
         write_centred(&o, P);
     if (o.angular && (st = nl_psd_sectors(P, 18, 0.05, 0.45, o.sector, &o.aniso)))

@@ -9,12 +9,14 @@
 #include "../analysis/krige.h"
 #include "../analysis/nonlin.h"
 #include "../analysis/psd.h"
+#include "../analysis/welch.h"
 #include "../core/dist.h"
 #include "../core/io.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
 
 #include <criterion/criterion.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -126,7 +128,110 @@ Test(hostile_moments, constant_and_overflowing_samples)
     cr_expect_eq(mo.variance, 0);
     cr_expect(isnan(mo.skewness) && isnan(mo.kurtosis), "a constant field has no skewness or kurtosis");
     f->data[0] = 1e200, f->data[1] = -1e200;
-    REFUSED(NL_EINVAL, "overflows", nl_moments_compute(f, &mo));
+    REFUSED(NL_EINVAL, "variance overflows", nl_moments_compute(f, &mo));
+    REFUSED(NL_EINVAL, "expected deviations below 9.48e+153", nl_moments_compute(f, &mo));
+    for (size_t i = 0; i < n; i++)
+        f->data[i] = i % 2 ? 1e308 : -1e308;
+    REFUSED(NL_EINVAL, "by up to 1e+308", nl_moments_compute(f, &mo));
+    /* the stated bound suffices: deviations of 0.99 sqrt(DBL_MAX / 2) */
+    for (size_t i = 0; i < n; i++)
+        f->data[i] = (i % 2 ? 0.99 : -0.99) * sqrt(DBL_MAX / 2);
+    cr_expect_eq(nl_moments_compute(f, &mo), NL_OK, "%s", nl_errmsg());
+    cr_expect(isfinite(mo.variance) && isfinite(mo.kurtosis), "variance %g kurtosis %g", mo.variance, mo.kurtosis);
+    nl_field_free(f);
+}
+
+/* A constant field beyond 2^53 (v + 1 == v) still gets bins of positive
+ * width: strictly increasing edges and finite densities that integrate to 1
+ * (exact properties but for the rounding of count / (N w) w, hence 1e-9). */
+Test(hostile_moments, histogram_of_a_huge_constant_field)
+{
+    const double vals[] = {-1e308, 1e308, DBL_MAX, -DBL_MAX, 0x1p53, -0x1p60};
+    const size_t bins_list[] = {1, 7, 1000};
+    size_t n = 9;
+    nl_field *f = nl_field_alloc(1, &n, NULL, NULL);
+    nl_moments mo;
+    for (size_t v = 0; v < sizeof vals / sizeof *vals; v++)
+        for (size_t b = 0; b < 3; b++) {
+            size_t bins = bins_list[b];
+            double *mid = malloc(bins * sizeof *mid), *dens = malloc(bins * sizeof *dens);
+            double *gauss = malloc(bins * sizeof *gauss), *edges = malloc((bins + 1) * sizeof *edges), total = 0;
+            double *counts = malloc(bins * sizeof *counts);
+            for (size_t i = 0; i < n; i++)
+                f->data[i] = vals[v];
+            cr_assert_eq(nl_moments_compute(f, &mo), NL_OK, "%s", nl_errmsg());
+            cr_assert_eq(nl_hist(f, bins, edges, counts), NL_OK, "%s", nl_errmsg());
+            for (size_t i = 0; i < bins; i++)
+                cr_expect(edges[i + 1] > edges[i], "v %g, %zu bins: edges %zu, %zu are %g, %g", vals[v], bins, i,
+                          i + 1, edges[i], edges[i + 1]);
+            cr_assert_eq(nl_hist_density(f, &mo, bins, mid, dens, gauss), NL_OK, "%s", nl_errmsg());
+            for (size_t i = 0; i < bins; i++) {
+                cr_expect(isfinite(dens[i]) && dens[i] >= 0, "v %g: density %zu is %g", vals[v], i, dens[i]);
+                total += dens[i] * (edges[i + 1] - edges[i]);
+            }
+            cr_expect(fabs(total - 1) < 1e-9, "v %g, %zu bins: the density integrates to %.17g", vals[v], bins, total);
+            free(mid), free(dens), free(gauss), free(edges), free(counts);
+        }
+    nl_field_free(f);
+}
+
+/* The bound of nl_estimate_check_range, D <= sqrt(DBL_MAX / 16) / N, is
+ * sufficient where it is tightest: every sample at D from the given mean 0
+ * puts all of N D into the zero frequency, and the 3D autocorrelation sums
+ * 8 N^2 D^2 = DBL_MAX / 2 there; every estimate must come back finite (an
+ * exact property: no tolerance).  Just above the bound each is refused with
+ * a message naming the deviation and the bound. */
+static void estimates_at_the_bound(int dim, const size_t *n)
+{
+    int st;
+    nl_field *f = nl_field_alloc(dim, n, NULL, &st), *out = NULL;
+    cr_assert_not_null(f);
+    double bound = sqrt(DBL_MAX / 16.0) / (double)f->count, val[3];
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] = bound;
+    cr_assert_eq(nl_acf_full(f, 0, 0, &out), NL_OK, "%dD: %s", dim, nl_errmsg());
+    for (size_t i = 0; i < out->count; i++)
+        cr_assert(isfinite(out->data[i]), "%dD acf: sample %zu is %g", dim, i, out->data[i]);
+    nl_field_free(out);
+    cr_assert_eq(nl_psd_periodogram(f, 0, &out), NL_OK, "%dD: %s", dim, nl_errmsg());
+    for (size_t i = 0; i < out->count; i++)
+        cr_assert(isfinite(out->data[i]), "%dD periodogram: sample %zu is %g", dim, i, out->data[i]);
+    nl_field_free(out);
+    cr_assert_eq(nl_acf_direct(f, 0, 1, 0, 2, val), NL_OK, "%dD: %s", dim, nl_errmsg());
+    cr_expect(isfinite(val[0]) && isfinite(val[2]), "%dD direct: %g %g", dim, val[0], val[2]);
+    if (dim < 3) {
+        cr_assert_eq(nl_psd_welch(f, 4, 0, &out, NULL), NL_OK, "%dD: %s", dim, nl_errmsg());
+        for (size_t i = 0; i < out->count; i++)
+            cr_assert(isfinite(out->data[i]), "%dD welch: sample %zu is %g", dim, i, out->data[i]);
+        nl_field_free(out);
+    }
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] = 1.01 * bound;
+    REFUSED(NL_EINVAL, "sums of squares", nl_acf_full(f, 0, 0, &out));
+    REFUSED(NL_EINVAL, "expected deviations below", nl_psd_periodogram(f, 0, &out));
+    REFUSED(NL_EINVAL, "expected deviations below", nl_acf_direct(f, 0, 1, 0, 2, val));
+    cr_expect_null(out);
+    nl_field_free(f);
+}
+
+Test(hostile_estimates, finite_up_to_the_stated_bound)
+{
+    size_t n1[1] = {64}, n2[2] = {8, 6}, n3[3] = {4, 6, 5};
+    estimates_at_the_bound(1, n1);
+    estimates_at_the_bound(2, n2);
+    estimates_at_the_bound(3, n3);
+}
+
+Test(hostile_estimates, values_around_1e200_refused)
+{
+    size_t n = 4;
+    nl_field *f = nl_field_alloc(1, &n, NULL, NULL), *out = NULL;
+    nl_moments mo;
+    f->data[0] = 1e200, f->data[1] = -1e200, f->data[2] = 1e200, f->data[3] = 5e199;
+    REFUSED(NL_EINVAL, "by up to 1.375e+200", nl_acf_full(f, NAN, 0, &out));
+    REFUSED(NL_EINVAL, "expected deviations below 8.38e+152", nl_psd_periodogram(f, NAN, &out));
+    REFUSED(NL_EINVAL, "variance overflows", nl_moments_compute(f, &mo));
+    cr_expect_null(out);
     nl_field_free(f);
 }
 
