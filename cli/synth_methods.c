@@ -163,8 +163,9 @@ void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_re
     cli_check(nl_synth_circulant_execute(p, job->seed, f));
     nl_synth_circulant_plan_free(p);
     snprintf(r->method, sizeof r->method, "circulant:embedding=%zux%zux%zu", info.m[0], info.m[1], info.m[2]);
-    if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
-        snprintf(r->flags, sizeof r->flags, "clamped");
+    int clamped = info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL, lost = fabs(info.variance_loss) > NL_SYNTH_CIRCULANT_LOSS_TOL;
+    snprintf(r->flags, sizeof r->flags, "%s%s%s", clamped ? "clamped" : "", clamped && lost ? "," : "",
+             lost ? "variance-changed" : "");
     double zero[3] = {0, 0, 0};
     r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
     if (!(r->sd > 0))
@@ -172,6 +173,9 @@ void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_re
     r->report = json_pack("{s:[I,I,I],s:f,s:f,s:f,s:i}", "embedding", (json_int_t)info.m[0], (json_int_t)info.m[1],
                           (json_int_t)info.m[2], "min_eigenvalue", info.min_eigenvalue, "max_eigenvalue",
                           info.max_eigenvalue, "clamp_error", info.clamp_error, "doublings", info.doublings);
+    /* the spectral models' loss to the embedding's frequency sampling (synth/circulant.h) */
+    if (lost)
+        json_object_set_new(r->report, "variance_loss", json_real(info.variance_loss));
 }
 
 void cli_synth_cholesky_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)

@@ -119,6 +119,10 @@ static int validate(nl_model *m, const char *name)
         return st;
     if (m->kind == NL_MODEL_MARKAUSSIAN && (st = check_positive(name, "alpha", m->alpha)))
         return st;
+    /* exp(-|t|^alpha) is positive definite exactly for 0 < alpha <= 2 */
+    if (m->kind == NL_MODEL_MARKAUSSIAN && !(m->alpha <= 2))
+        return NL_ERROR(NL_EINVAL, "%s: alpha: expected 0 < alpha <= 2 (above 2 the ACF is not positive definite), "
+                        "got %.17g", name, m->alpha);
     if (m->kind == NL_MODEL_MATERN && (st = check_positive(name, "nu", m->nu)))
         return st;
     if (m->kind == NL_MODEL_POWER) {

@@ -28,6 +28,20 @@ static size_t smooth_even(size_t x)
     }
 }
 
+/* 1 - (the synthesised variance) / R(0): the power a spectral model loses
+ * to the embedding's frequency sampling; 0 for a lag model (R is sampled
+ * itself); NaN when R(0) is not known. */
+static double variance_loss(const nl_model *m, int dim, const nl_synth_fft_plan *fft)
+{
+    double zero[3] = {0, 0, 0}, r0;
+    nl_synth_fft_info fi;
+    if (!nl_model_is_spectral(m))
+        return 0;
+    r0 = nl_model_acf(m, dim, zero);
+    nl_synth_fft_plan_info(fft, &fi);
+    return isfinite(r0) && r0 > 0 ? 1 - fi.variance / r0 : NAN;
+}
+
 void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p)
 {
     if (!p)
@@ -88,6 +102,8 @@ int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, c
         p->info.doublings++;
     }
     memcpy(p->m, mm, sizeof mm);
+    if (!st)
+        p->info.variance_loss = variance_loss(m, dim, p->fft);
     if (st) {
         nl_synth_circulant_plan_free(p);
         return st;

@@ -9,7 +9,15 @@
  * covariance exactly R(lag) for every pair of the n grid.  A negative
  * eigenvalue beyond that rule doubles m (up to max_factor * n per axis);
  * a model whose embedding never becomes non-negative is refused
- * (NL_ENOTPD) unless clamping is accepted. */
+ * (NL_ENOTPD) unless clamping is accepted.
+ *
+ * A spectral model (power:, spectrum:) is sampled in frequency on the
+ * embedding, not in lag: the covariance is then the Riemann sum of S over
+ * the embedding's frequencies, which misses the power below 1/(m h).  The
+ * plan measures that loss against R(0) (variance_loss; the caller flags it
+ * above NL_SYNTH_CIRCULANT_LOSS_TOL): a steep power law whose fmin is far
+ * below 1/(m h) keeps only a fraction of its variance (power:d=2.424 on 64
+ * samples, embedding 128: 0.10 of it). */
 #ifndef NL_SYNTH_CIRCULANT_H
 #define NL_SYNTH_CIRCULANT_H
 
@@ -21,7 +29,15 @@ typedef struct {
     double max_eigenvalue;/* largest */
     double clamp_error;   /* covariance change from zeroing negatives, / R(0) */
     int doublings;        /* times the embedding was doubled */
+    double variance_loss; /* spectral models: 1 - (variance of the synthesised field) / R(0), negative
+                           * for a gain; NaN when R(0) is not known (spectrum:); lag models: 0 */
 } nl_synth_circulant_info;
+
+/* |variance_loss| above which a plan's field is flagged: a
+ * spectral model is sampled at the embedding's frequencies, so the power
+ * below its lowest frequency 1/(m h) (and above the Nyquist frequency) is
+ * not synthesised; the model's R(0) is then not the field's variance. */
+#define NL_SYNTH_CIRCULANT_LOSS_TOL 1e-3
 
 typedef struct nl_synth_circulant_plan nl_synth_circulant_plan;
 

@@ -11,6 +11,7 @@
 #include <float.h>
 #include <fftw3.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -134,17 +135,37 @@ static int plan_from_half(const char *name, int dim, const size_t *n, const doub
     return NL_OK;
 }
 
+/* v in the fewest significant digits (at least 2) that read back as v:
+ * the value as a user most likely wrote it (4.9e-324, not 4.94066e-324). */
+static const char *short_g(double v, char *buf, size_t len)
+{
+    for (int p = 2; p <= 17; p++) {
+        snprintf(buf, len, "%.*g", p, v);
+        if (strtod(buf, NULL) == v)
+            break;
+    }
+    return buf;
+}
+
 int nl_synth_check_cell(int dim, const double *h)
 {
     double cell = 1;
+    char b0[32], b1[32];
     for (int a = 0; h && a < dim; a++) {
         if (!(h[a] > 0) || !isfinite(h[a]))
-            return NL_ERROR(NL_EINVAL, "spacing: expected a positive finite number, got %g", h[a]);
+            return NL_ERROR(NL_EINVAL, "spacing: expected a positive finite number, got %s",
+                            short_g(h[a], b0, sizeof b0));
+        /* the frequencies are multiples of 1 / (n h): a denormal h makes
+         * them overflow (4.9e-324: 1/h is inf) */
+        if (!(h[a] >= DBL_MIN))
+            return NL_ERROR(NL_EINVAL, "spacing: %s is below the smallest normal double %.17g (its frequencies "
+                            "1/spacing overflow); expected spacings nearer 1", short_g(h[a], b0, sizeof b0), DBL_MIN);
         cell *= h[a];
     }
     if (!(cell >= DBL_MIN) || !isfinite(cell))
-        return NL_ERROR(NL_EINVAL, "spacing: the %dD cell volume (product of the spacings %g ...) is %g, out of the "
-                        "range of a double; expected spacings nearer 1", dim, h[0], cell);
+        return NL_ERROR(NL_EINVAL, "spacing: the %dD cell volume (product of the spacings %s ...) is %s, out of the "
+                        "range of a double; expected spacings nearer 1", dim, short_g(h[0], b0, sizeof b0),
+                        short_g(cell, b1, sizeof b1));
     return NL_OK;
 }
 

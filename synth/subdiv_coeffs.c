@@ -96,8 +96,8 @@ static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts,
 {
     gsl_matrix *A = gsl_matrix_alloc(n, n), *F = gsl_matrix_alloc(n, n);
     gsl_vector *b = gsl_vector_alloc(n), *x = gsl_vector_alloc(n);
-    double lmin = 0, amax = 0, amin = 0, v;
-    int st = NL_OK, uniform = 1;
+    double lmin = 0, amax = 0, amin = 0, v, r0;
+    int st = NL_OK, uniform = 1, e = 0;
 
     cls->flags = 0;
     cls->n = n;
@@ -112,13 +112,23 @@ static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts,
     }
     if ((st = check_finite(m, dim, n, pts, target, A, b)))
         goto done;
+    /* R(0) far from 1 (a variance near DBL_MIN makes the covariances
+     * denormal, on which GSL's eigen iteration never converges): solve the
+     * system scaled by 2^-e, R(0) 2^-e in [1, 2), exact in binary, and scale
+     * the eigenvalue and the variance back.  e = 0 (no scaling) otherwise. */
+    r0 = acf_at(m, dim, target, target);
+    if (isfinite(r0) && r0 > 0 && (r0 < 0x1p-500 || r0 > 0x1p500)) {
+        e = ilogb(r0);
+        gsl_matrix_scale(A, ldexp(1.0, -e));
+        gsl_vector_scale(b, ldexp(1.0, -e));
+    }
     gsl_matrix_memcpy(F, A);
     if ((st = eig_range(F, &lmin, &amax, &amin))) {
         st = NL_ERROR(NL_EFAIL, "the eigenvalues of a %zu x %zu system did not converge: %s", n, n,
                       nl_gsl_reason(st));
         goto done;
     }
-    cls->min_eigenvalue = lmin;
+    cls->min_eigenvalue = ldexp(lmin, e);
     cls->condition = amin > 0 ? amax / amin : INFINITY;
     if (lmin < -(double)n * DBL_EPSILON * amax)
         cls->flags |= NL_SUBDIV_NOT_PD;
@@ -145,9 +155,10 @@ static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts,
         cls->flags |= NL_SUBDIV_NN_RESET;
     }
     /* eq. (7) */
-    v = acf_at(m, dim, target, target);
+    v = ldexp(r0, -e);
     for (size_t k = 0; k < n; k++)
         v -= cls->a[k] * gsl_vector_get(b, k);
+    v = ldexp(v, e);
     cls->raw_variance = v;
     cls->variance = v > 0 ? v : 0.0;
     if (v < 0)

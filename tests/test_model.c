@@ -155,6 +155,17 @@ Test(model, errors_name_the_bad_part)
     parse_bad("image:", "expected a file name");
 }
 
+/* exp(-|t|^alpha) is positive definite only for 0 < alpha <= 2 (the
+ * catalogue's range): the parser refuses the first double above 2 and the
+ * largest, naming alpha and the range; 2 itself (the Gaussian) is kept. */
+Test(model, markaussian_alpha_above_two_refused)
+{
+    parse_bad("markaussian:alpha=2.0000000000000004", "0 < alpha <= 2");
+    parse_bad("markaussian:alpha=1e308", "alpha");
+    parse_bad("markaussian:alpha=3,scale=4", "got 3");
+    nl_model_free(parse_ok("markaussian:alpha=2"));
+}
+
 Test(model, dimension_checks)
 {
     nl_model *m = parse_ok("power:d=2");

@@ -21,7 +21,8 @@
  *              refused) it has flagged its approximation (negatives > 0,
  *              clamp_error reported);
  *   circulant  with min_eigenvalue >= 0, R exactly; else flagged
- *              (clamp_error > 0 after a clamped replan);
+ *              (clamp_error > 0 after a clamped replan, or a spectral
+ *              model's variance_loss beyond NL_SYNTH_CIRCULANT_LOSS_TOL);
  *   cholesky   R exactly (or NL_ENOTPD);
  *   subdiv     the exact covariance of the subdivision process it ran
  *              (analysis/subdiv_exact.h: the method's own approximation of R
@@ -72,7 +73,6 @@ static const struct {
     const char *prefix, *method, *finding;
 } known[] = {
     {"spectrum:", "cholesky", "F1"}, /* NL_OK and every sample NaN */
-    {"power:", "circulant", "F6"},   /* most of the variance lost, no flag */
     {NULL, NULL, NULL},
 };
 
@@ -231,6 +231,10 @@ static int plan(const ctx *c, runner *r, const size_t *n, int *flagged)
                           c->spec);
                 *flagged = 1;
             }
+        }
+        if (st == NL_OK) { /* a spectral model's variance lost to the embedding (F6) */
+            nl_synth_circulant_plan_info(r->plan, &in);
+            *flagged |= fabs(in.variance_loss) > NL_SYNTH_CIRCULANT_LOSS_TOL;
         }
     } else if (r->method == 2) {
         st = nl_synth_cholesky_plan_alloc(c->m, c->dim, n, NULL, (nl_synth_cholesky_plan **)&r->plan);

@@ -10,6 +10,7 @@
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 #include "../synth/cholesky.h"
+#include "../synth/circulant.h"
 #include "../synth/fft.h"
 #include "../synth/sparse.h"
 #include "../synth/subdiv.h"
@@ -175,4 +176,72 @@ Test(synth_hostile, subdivision)
     says("variance-scale");
     nl_field_free(f);
     nl_model_free(sing), nl_model_free(m);
+}
+
+/* A denormal spacing makes the frequencies 1/(n h) overflow (F11): refused,
+ * the value named as written (4.9e-324, not 4.94066e-324). */
+Test(synth_hostile, fft_denormal_spacing)
+{
+    nl_model *m = model("power:d=0");
+    size_t n[1] = {4};
+    double h[1] = {4.9e-324}, aniso[2] = {4.9e-324, 1e300};
+    nl_synth_fft_plan *p;
+    cr_assert_eq(nl_synth_fft_plan_alloc(m, 1, n, h, 0, &p), NL_EINVAL);
+    says("4.9e-324");
+    cr_assert_eq(nl_synth_check_cell(2, aniso), NL_EINVAL, "cell 4.9e-24 is normal, the x frequencies are not");
+    says("spacing: 4.9e-324");
+    nl_model_free(m);
+}
+
+/* Circulant embedding of a spectral model samples S at the embedding's
+ * frequencies (F6): the power below the first one, 1/128 here, is lost and
+ * measured.  power:d=2.424 from fmin 1/1024: the integral of f^-d above
+ * 1/256 (the lower edge of the first bin) holds 0.139 of the total, and the
+ * one-point rule underestimates a convex f^-d, so the loss lies in (0.86,
+ * 0.95); measured 0.899.  A lag model is sampled in lag: loss 0. */
+Test(synth_hostile, circulant_variance_loss)
+{
+    nl_model *pw = model("power:d=2.424,var=1.722"), *mk = model("markov:scale=4");
+    size_t n[1] = {64};
+    nl_synth_circulant_plan *p;
+    nl_synth_circulant_info in;
+    cr_assert_eq(nl_synth_circulant_plan_alloc(pw, 1, n, NULL, 0, 16, &p), NL_OK, "%s", nl_errmsg());
+    nl_synth_circulant_plan_info(p, &in);
+    cr_expect(in.variance_loss > 0.86 && in.variance_loss < 0.95, "loss %g", in.variance_loss);
+    cr_expect_gt(in.variance_loss, NL_SYNTH_CIRCULANT_LOSS_TOL);
+    nl_synth_circulant_plan_free(p);
+    cr_assert_eq(nl_synth_circulant_plan_alloc(mk, 1, n, NULL, 0, 16, &p), NL_OK, "%s", nl_errmsg());
+    nl_synth_circulant_plan_info(p, &in);
+    cr_expect_eq(in.variance_loss, 0.0);
+    nl_synth_circulant_plan_free(p);
+    nl_model_free(pw), nl_model_free(mk);
+}
+
+/* subdiv --nonperiodic at var = DBL_MIN (F14): the covariances are denormal
+ * and GSL's eigen iteration on them never ended; the system is now solved
+ * scaled by 2^-e.  The field must end and equal sqrt(DBL_MIN) times the
+ * var = 1 field up to the covariances that underflow at DBL_MIN (the
+ * farthest neighbours, R < 2^-1074 / DBL_MIN ~ 2e-16 relative): 1e-9 of
+ * the standard deviation. */
+Test(synth_hostile, subdivision_tiny_variance, .timeout = 20)
+{
+    nl_model *tiny = model("markov:var=2.2250738585072014e-308"), *one = model("markov");
+    nl_subdiv_options o;
+    nl_subdiv_plan *p;
+    size_t n[1] = {16};
+    long origin[2] = {0, 0};
+    nl_field *a = field(1, 16, 1), *b = field(1, 16, 1);
+    nl_subdiv_options_default(&o);
+    o.nonperiodic = 1;
+    cr_assert_eq(nl_subdiv_plan_alloc(tiny, 1, n, 1.0, &o, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_subdiv_plan_execute_window(p, 3, origin, a), NL_OK, "%s", nl_errmsg());
+    nl_subdiv_plan_free(p);
+    cr_assert_eq(nl_subdiv_plan_alloc(one, 1, n, 1.0, &o, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_subdiv_plan_execute_window(p, 3, origin, b), NL_OK, "%s", nl_errmsg());
+    nl_subdiv_plan_free(p);
+    for (size_t i = 0; i < 16; i++)
+        cr_expect(fabs(a->data[i] / sqrt(DBL_MIN) - b->data[i]) < 1e-9, "sample %zu: %.17g against %.17g", i,
+                  a->data[i] / sqrt(DBL_MIN), b->data[i]);
+    nl_field_free(a), nl_field_free(b);
+    nl_model_free(tiny), nl_model_free(one);
 }
