@@ -248,7 +248,8 @@ void nl_subdiv_plan_info(const nl_subdiv_plan *p, nl_subdiv_info *info);
 int nl_subdiv_plan_execute(const nl_subdiv_plan *p, uint64_t seed, nl_field *f);
 
 /* The window at finest-grid indices origin[a] .. origin[a] + n[a] - 1 of a
- * nonperiodic plan (nl_subdiv_synth_window).  NL_EINVAL for a periodic
+ * nonperiodic plan (nl_subdiv_synth_window); origin NULL is origin 0, as
+ * for sparse windows.  NL_EINVAL for a periodic
  * plan or a mismatched f; NL_ENOTPD; NL_ENOMEM. */
 int nl_subdiv_plan_execute_window(const nl_subdiv_plan *p, uint64_t seed, const long *origin, nl_field *f);
 

@@ -258,9 +258,10 @@ int nl_subdiv_plan_execute_window(const nl_subdiv_plan *p, uint64_t seed, const 
     int st;
     if (!p->nonperiodic)
         return NL_ERROR(NL_EINVAL, "subdivision: a window needs a plan made with the nonperiodic option");
+    static const long zero[2] = {0, 0};
     if ((st = check_field(p, f)))
         return st;
-    return nl_subdiv_synth_window(p->c, seed, origin, f);
+    return nl_subdiv_synth_window(p->c, seed, origin ? origin : zero, f);
 }
 
 int nl_subdiv_plan_execute_image(const nl_subdiv_plan *p, const nl_field *image, uint64_t seed, nl_field *f)

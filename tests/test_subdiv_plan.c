@@ -77,6 +77,11 @@ Test(subdiv_plan, window_and_midpoint_equal_one_shot)
     cr_assert_eq(nl_subdiv_coeffs_alloc(m, 1, 6, 64.0, 2, 1e-4, 16, &c), 0);
     cr_assert_eq(nl_subdiv_synth_window(c, 3, origin, b), 0);
     cr_assert(same(a, b));
+    /* origin NULL is the window at 0 */
+    origin[0] = 0;
+    cr_assert_eq(nl_subdiv_plan_execute_window(p, 3, NULL, a), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_subdiv_plan_execute_window(p, 3, origin, b), 0, "%s", nl_errmsg());
+    cr_assert(same(a, b));
     nl_subdiv_coeffs_free(c), nl_subdiv_plan_free(p);
 
     cr_assert_eq(nl_subdiv_plan_alloc_midpoint(1, n, 1.0, 3, 0.7, 1.0, 1.0, &p), 0, "%s", nl_errmsg());
