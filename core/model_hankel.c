@@ -5,7 +5,9 @@
  *     2D  R(r) = 2 pi int S(k) J0(2 pi k r) k dk
  *     3D  R(r) = 4 pi int S(k) sin(2 pi k r) / (2 pi k r) k^2 dk
  * over the band fmin <= k <= fmax (GSL QAWO for the trigonometric weights,
- * QAG for the Bessel one). */
+ * QAG for the Bessel one; at lags of over HANKEL_PERIODS periods of the band,
+ * or where QAG fails, Hankel's expansion of J0 turns the 2D transform into
+ * QAWO integrals too). */
 #include "gsl_guard_internal.h"
 #include "model_internal.h"
 
@@ -109,7 +111,7 @@ static double power_acf_2d_far(const nl_model *m, double r, gsl_integration_work
         for (b.sine = 0; b.sine < 2; b.sine++) {
             gsl_integration_qawo_table *t = gsl_integration_qawo_table_alloc(
                 2 * M_PI * r, hi - lo, b.sine ? GSL_INTEG_SINE : GSL_INTEG_COSINE, 50);
-            int st = t ? gsl_integration_qawo(&F, lo, 1e-13, 1e-11, 2000, w, t, &v, &err) : -1;
+            int st = t ? gsl_integration_qawo(&F, lo, 1e-13 * m->var, 1e-11, 2000, w, t, &v, &err) : -1;
             gsl_integration_qawo_table_free(t);
             if (st)
                 return NAN;
