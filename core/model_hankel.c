@@ -5,7 +5,9 @@
  *     2D  R(r) = 2 pi int S(k) J0(2 pi k r) k dk
  *     3D  R(r) = 4 pi int S(k) sin(2 pi k r) / (2 pi k r) k^2 dk
  * over the band fmin <= k <= fmax (GSL QAWO for the trigonometric weights,
- * QAG for the Bessel one). */
+ * QAG for the Bessel one; at lags of over HANKEL_PERIODS periods of the band,
+ * or where QAG fails, Hankel's expansion of J0 turns the 2D transform into
+ * QAWO integrals too). */
 #include "gsl_guard_internal.h"
 #include "model_internal.h"
 
@@ -46,6 +48,79 @@ static double integrand_sinc3(double k, void *p)
     return 4 * M_PI * s_of(a->m, 3, k) * k / (2 * M_PI * a->r);
 }
 
+/* Hankel's expansion of J0 for large x (Abramowitz and Stegun 9.2.5, 9.2.9,
+ * 9.2.10): J0(x) = (pi x)^(-1/2) [(P + Q) cos x + (P - Q) sin x], the series
+ * P, Q summed until a term falls below 1e-17; for x >= HANKEL_X0 the terms
+ * fall below it before they start to grow, so the expansion is good to
+ * about 1e-16 there. */
+#define HANKEL_X0 40.0
+/* Beyond this many periods of J0 over the band, adaptive quadrature of the
+ * oscillating integrand costs tens of milliseconds per lag, or fails. */
+#define HANKEL_PERIODS 1000.0
+
+static void hankel_pq(double x, double *P, double *Q)
+{
+    double t = 1;
+    *P = 1;
+    *Q = 0;
+    for (int k = 1; k < 60; k++) {
+        double prev = fabs(t);
+        t *= -(2.0 * k - 1) * (2.0 * k - 1) / (k * 8.0 * x);
+        if (fabs(t) < 1e-17 || fabs(t) > prev)
+            break;
+        if (k % 2)
+            *Q += (k % 4 == 1 ? 1 : -1) * t;
+        else
+            *P += (k % 4 == 0 ? 1 : -1) * t;
+    }
+}
+
+struct asym_arg {
+    const nl_model *m;
+    double r;
+    int sine;
+};
+
+/* 2 pi S(k) k (P +- Q) / sqrt(pi x), the amplitude of cos x (sine = 0) or of
+ * sin x (sine = 1), x = 2 pi k r. */
+static double integrand_asym(double k, void *p)
+{
+    const struct asym_arg *a = p;
+    double x = 2 * M_PI * k * a->r, P, Q;
+    hankel_pq(x, &P, &Q);
+    return 2 * M_PI * s_of(a->m, 2, k) * k * (a->sine ? P - Q : P + Q) / sqrt(M_PI * x);
+}
+
+/* The 2D R(r) at large r: QAG with J0 below k0 = HANKEL_X0 / (2 pi r) (a few
+ * periods), and above it the expansion of J0, whose cos and sin parts QAWO
+ * integrates at a cost that does not grow with r. */
+static double power_acf_2d_far(const nl_model *m, double r, gsl_integration_workspace *w)
+{
+    struct arg a = {m, 2, r};
+    struct asym_arg b = {m, r, 0};
+    double lo = m->fmin, hi = m->fmax, k0 = HANKEL_X0 / (2 * M_PI * r), near = 0, far = 0, v, err;
+    gsl_function F = {integrand_j0, &a};
+    if (k0 > lo) {
+        if (gsl_integration_qag(&F, lo, fmin(k0, hi), 0, 1e-11, 2000, GSL_INTEG_GAUSS61, w, &near, &err))
+            return NAN;
+        lo = k0;
+    }
+    if (lo < hi) {
+        F.function = integrand_asym;
+        F.params = &b;
+        for (b.sine = 0; b.sine < 2; b.sine++) {
+            gsl_integration_qawo_table *t = gsl_integration_qawo_table_alloc(
+                2 * M_PI * r, hi - lo, b.sine ? GSL_INTEG_SINE : GSL_INTEG_COSINE, 50);
+            int st = t ? gsl_integration_qawo(&F, lo, 1e-13 * m->var, 1e-11, 2000, w, t, &v, &err) : -1;
+            gsl_integration_qawo_table_free(t);
+            if (st)
+                return NAN;
+            far += v;
+        }
+    }
+    return near + far;
+}
+
 static double power_acf(const nl_model *m, int dim, double r)
 {
     struct arg a = {m, dim, fabs(r)};
@@ -61,7 +136,13 @@ static double power_acf(const nl_model *m, int dim, double r)
         st = gsl_integration_qag(&F, lo, hi, 0, 1e-11, 2000, GSL_INTEG_GAUSS61, w, &val, &err);
     } else if (dim == 2) {
         F.function = integrand_j0;
-        st = gsl_integration_qag(&F, lo, hi, 0, 1e-11, 2000, GSL_INTEG_GAUSS61, w, &val, &err);
+        st = (hi - lo) * a.r > HANKEL_PERIODS ? -1
+                                               : gsl_integration_qag(&F, lo, hi, 0, 1e-11, 2000, GSL_INTEG_GAUSS61, w,
+                                                                     &val, &err);
+        if (st && 2 * M_PI * a.r * hi > 2 * HANKEL_X0) {
+            val = power_acf_2d_far(m, a.r, w);
+            st = isfinite(val) ? 0 : -1;
+        }
     } else {
         gsl_integration_qawo_table *t =
             gsl_integration_qawo_table_alloc(2 * M_PI * a.r, hi - lo, dim == 1 ? GSL_INTEG_COSINE : GSL_INTEG_SINE, 50);

@@ -76,16 +76,15 @@ Test(gsl_guard, restores_the_callers_handler)
     nl_model_free(m);
 }
 
-/* The power model's R by quadrature: at a lag of 1e6 in 2D the J0 integrand
- * oscillates a million times over the band and QAG runs out of subdivisions
- * (GSL_EMAXITER); in 1D at 1e9 QAWO meets roundoff.  Both are NAN, with GSL's
- * reason recorded, and the process goes on. */
+/* The power model's R by quadrature: in 1D at 1e9 QAWO meets roundoff: NAN,
+ * with GSL's reason recorded, and the process goes on.  (In 2D a lag of 1e6,
+ * where the J0 integrand oscillates half a million times over the band, goes
+ * to Hankel's expansion of J0 and is finite.) */
 Test(gsl_guard, power_quadrature_failure_is_nan)
 {
     nl_model *m = model("power:d=2.5");
     double far2[3] = {1e6, 0, 0}, far1[3] = {1e9, 0, 0}, near[3] = {3, 0, 0};
-    cr_assert(isnan(nl_model_acf(m, 2, far2)));
-    cr_assert(strstr(nl_gsl_reason(0), "subdivisions"), "reason: %s", nl_gsl_reason(0));
+    cr_assert(fabs(nl_model_acf(m, 2, far2)) < 1e-5);
     cr_assert(isnan(nl_model_acf(m, 1, far1)));
     cr_assert(strstr(nl_gsl_reason(0), "roundoff"), "reason: %s", nl_gsl_reason(0));
     /* tolerance: the quadrature's relative accuracy is 1e-11 */
@@ -126,9 +125,9 @@ Test(gsl_guard, chi2_quantile_failure)
 static void *failing_quadratures(void *arg)
 {
     nl_model *m = arg;
-    double far2[3] = {1e6, 0, 0};
+    double far1[3] = {1e9, 0, 0};
     for (int i = 0; i < 4; i++)
-        if (!isnan(nl_model_acf(m, 2, far2)))
+        if (!isnan(nl_model_acf(m, 1, far1)))
             return (void *)1;
     return NULL;
 }

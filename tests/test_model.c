@@ -4,6 +4,8 @@
 
 #include <criterion/criterion.h>
 #include <gsl/gsl_integration.h>
+#include <gsl/gsl_sf_bessel.h>
+#include <gsl/gsl_sf_gamma.h>
 #include <math.h>
 #include <string.h>
 
@@ -115,6 +117,55 @@ static double shell_integrand(double k, void *p)
     const struct shell_arg *a = p;
     double f[3] = {k, 0, 0};
     return shell[a->dim] * pow(k, a->dim - 1) * nl_model_spectrum(a->m, a->dim, f);
+}
+
+/* Large nu: the Matern correlation against GSL's K_nu at nu = 2e6, past the
+ * switch to the asymptotic form (nu > 1e6).  The reference loses about
+ * nu ln(nu) * 1e-16 = 3e-9 to cancellation in its logarithms, hence 2e-8; the
+ * pure Gauss limit exp(-a^2 / 2) is off by up to 0.23 / nu = 1.2e-7 at
+ * a^2 = 1.17, so the test also sees the first correction. */
+Test(model, matern_large_nu)
+{
+    double nu = 2e6, worst_gauss = 0;
+    nl_model *m = parse_ok("matern:nu=2e6,scale=2");
+    for (double t = 0.25; t < 8; t += 0.43) {
+        double a = t / 2, u = sqrt(2 * nu) * a;
+        double ref = exp((1 - nu) * M_LN2 - gsl_sf_lngamma(nu) + nu * log(u) + gsl_sf_bessel_lnKnu(nu, u));
+        cr_assert_float_eq(at1(m, t), ref, 2e-8, "t=%g: %.12g, K_nu gives %.12g", t, at1(m, t), ref);
+        worst_gauss = fmax(worst_gauss, fabs(exp(-a * a / 2) - ref));
+    }
+    cr_assert_gt(worst_gauss, 5e-8, "the first correction is visible at nu = 2e6");
+    nl_model_free(m);
+    m = parse_ok("matern:nu=1e300");
+    cr_assert(isnan(at1(m, 1)), "nu above 1e15 is not evaluated");
+    nl_model_free(m);
+}
+
+/* 2D power R at lags of thousands of periods of the band (the expansion of
+ * J0, core/model_hankel.c) against the closed form of d = 0,
+ *     R(r) = var (fmax J1(2 pi fmax r) - fmin J1(2 pi fmin r)) / (pi r (fmax^2 - fmin^2)),
+ * to 1e-12 (measured: 1e-13 at worst, where R is 1e-8; the quadratures ask
+ * for 1e-11 relative to the integrands' larger partial sums, and dropping
+ * Hankel's Q series alone gives errors of 1e-10); and d = 1 with a denormal
+ * fmin finite and below R(0). */
+Test(model, power_2d_far_lags)
+{
+    nl_model *m = parse_ok("power:d=0,var=2");
+    double lo = 1.0 / 1024, hi = 0.5;
+    for (double r = 1500; r < 2e6; r *= 1.7) {
+        double lag[2] = {r * 0.6, r * 0.8};
+        double want = 2 * (hi * gsl_sf_bessel_J1(2 * M_PI * hi * r) - lo * gsl_sf_bessel_J1(2 * M_PI * lo * r)) /
+                      (M_PI * r * (hi * hi - lo * lo));
+        cr_assert_float_eq(nl_model_acf(m, 2, lag), want, 1e-12, "r=%g: %.12g, closed form %.12g", r,
+                           nl_model_acf(m, 2, lag), want);
+    }
+    nl_model_free(m);
+    m = parse_ok("power:d=1,fmin=4.9e-324");
+    for (double r = 4096; r < 1e5; r *= 2.3) {
+        double lag[2] = {r, 0}, v = nl_model_acf(m, 2, lag);
+        cr_assert(isfinite(v) && fabs(v) < 1, "r=%g: %g", r, v);
+    }
+    nl_model_free(m);
 }
 
 Test(model, power_normalisation)
