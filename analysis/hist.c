@@ -83,7 +83,7 @@ int nl_hist_density(const nl_field *x, const nl_moments *mo, size_t bins, double
     else if (!(st = nl_hist(x, bins, edges, counts)))
         for (size_t b = 0; b < bins; b++) {
             double w = edges[b + 1] - edges[b];
-            mid[b] = 0.5 * (edges[b] + edges[b + 1]);
+            mid[b] = 0.5 * edges[b] + 0.5 * edges[b + 1]; /* no overflow at +-DBL_MAX; exact halves */
             density[b] = counts[b] / ((double)x->count * w);
             gauss[b] = mo->variance > 0 ? exp(-0.5 * (mid[b] - mo->mean) * (mid[b] - mo->mean) / mo->variance) /
                                               sqrt(2 * M_PI * mo->variance)

@@ -167,6 +167,8 @@ Test(hostile_moments, histogram_of_a_huge_constant_field)
             cr_assert_eq(nl_hist_density(f, &mo, bins, mid, dens, gauss), NL_OK, "%s", nl_errmsg());
             for (size_t i = 0; i < bins; i++) {
                 cr_expect(isfinite(dens[i]) && dens[i] >= 0, "v %g: density %zu is %g", vals[v], i, dens[i]);
+                cr_expect(mid[i] >= edges[i] && mid[i] <= edges[i + 1], "v %g: bin %zu's middle is %g", vals[v], i,
+                          mid[i]);
                 total += dens[i] * (edges[i + 1] - edges[i]);
             }
             cr_expect(fabs(total - 1) < 1e-9, "v %g, %zu bins: the density integrates to %.17g", vals[v], bins, total);
