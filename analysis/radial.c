@@ -26,9 +26,10 @@ int nl_radial(const nl_field *g, int kind, double step, size_t nbins, double *r,
                     d2 += c * c;
                 }
                 d = sqrt(d2);
-                b = (size_t)floor(d / step + 0.5);
-                if (b >= nbins)
+                double q = floor(d / step + 0.5);
+                if (!(q < (double)nbins)) /* also NaN and inf, before the conversion */
                     continue;
+                b = (size_t)q;
                 r[b] += d;
                 v[b] += g->data[(k * g->n[1] + j) * g->n[0] + i];
                 cnt[b]++;

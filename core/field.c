@@ -68,9 +68,9 @@ nl_field *nl_field_alloc(int dim, const size_t *n, const double *h, int *status)
         return NULL;
     }
     for (int a = 0; h && a < dim; a++)
-        if (!(h[a] > 0)) {
+        if (!(h[a] > 0) || !isfinite(h[a])) {
             if (status)
-                *status = NL_ERROR(NL_EINVAL, "spacing: expected a positive number, got %g", h[a]);
+                *status = NL_ERROR(NL_EINVAL, "spacing: expected a positive finite number, got %g", h[a]);
             return NULL;
         }
     nl_field *f = calloc(1, sizeof *f);

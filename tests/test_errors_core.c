@@ -369,3 +369,15 @@ Test(errors_wk, etoobig)
     nl_model_free(m);
     nl_field_free(R);
 }
+
+/* A field's spacing is a positive finite length: inf (which the radial
+ * estimators would turn into an out-of-range bin index) is refused. */
+Test(field_errors, infinite_spacing_refused)
+{
+    size_t n[2] = {8, 8};
+    double h[2] = {1, INFINITY};
+    int st = NL_OK;
+    cr_assert_null(nl_field_alloc(2, n, h, &st));
+    cr_assert_eq(st, NL_EINVAL);
+    cr_assert(strstr(nl_errmsg(), "inf") != NULL, "%s", nl_errmsg());
+}
