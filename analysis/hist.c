@@ -52,6 +52,15 @@ static int hist(const nl_field *x, size_t bins, double *edges, double *counts)
         hi = lo - lo * 0x1p-20;
     else if (!(hi > lo))
         lo = hi - hi * 0x1p-20;
+    {   /* bins narrower than a few ulps would share edges (width 0): widen */
+        double mag = fmax(fabs(lo), fabs(hi)), minw = (double)bins * 4 * (nextafter(mag, INFINITY) - mag);
+        if (hi - lo < minw && isfinite(minw)) {
+            if (isfinite(lo + minw))
+                hi = lo + minw;
+            else
+                lo = hi - minw;
+        }
+    }
     h = gsl_histogram_alloc(bins);
     if (!h)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu bins", bins);
