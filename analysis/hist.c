@@ -52,8 +52,9 @@ static int hist(const nl_field *x, size_t bins, double *edges, double *counts)
         hi = lo - lo * 0x1p-20;
     else if (!(hi > lo))
         lo = hi - hi * 0x1p-20;
-    {   /* bins narrower than a few ulps would share edges (width 0): widen */
-        double mag = fmax(fabs(lo), fabs(hi)), minw = (double)bins * 4 * (nextafter(mag, INFINITY) - mag);
+    {   /* bins narrower than a few ulps would share edges (width 0), and
+         * narrower than 2^-1000 would make densities overflow: widen */
+        double mag = fmax(fabs(lo), fabs(hi)), minw = (double)bins * fmax(4 * (nextafter(mag, INFINITY) - mag), 0x1p-1000);
         if (hi - lo < minw && isfinite(minw)) {
             if (isfinite(lo + minw))
                 hi = lo + minw;

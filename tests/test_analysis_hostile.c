@@ -146,7 +146,7 @@ Test(hostile_moments, constant_and_overflowing_samples)
  * (exact properties but for the rounding of count / (N w) w, hence 1e-9). */
 Test(hostile_moments, histogram_of_a_huge_constant_field)
 {
-    const double vals[] = {-1e308, 1e308, DBL_MAX, -DBL_MAX, 0x1p53, -0x1p60, 1e15, -3e14};
+    const double vals[] = {-1e308, 1e308, DBL_MAX, -DBL_MAX, 0x1p53, -0x1p60, 1e15, -3e14, 4.9e-324, 0};
     const size_t bins_list[] = {1, 7, 1000};
     size_t n = 9;
     nl_field *f = nl_field_alloc(1, &n, NULL, NULL);
