@@ -94,17 +94,11 @@ static size_t mirror_row(const nl_field *g, size_t r)
     return (g->n[2] - k) % g->n[2] * g->n[1] + (g->n[1] - j) % g->n[1];
 }
 
-/* Model values at the wrapped lags or frequencies (i < ni, all j, k) of the
- * grid g, into rows of `stride` doubles.  Reentrant models are sampled on
- * all threads, and, when whole rows are asked for, only on half of them:
- * R(-x) = R(x) and S(-f) = S(f) hold exactly in floating point for them
- * (negation is exact, and cos, |.| and the rotation commute with it), so
- * the other half is copied reversed.  Expressions are evaluated everywhere:
- * an odd expression must show up as such. */
 /* A covariance, and the spectrum of a real field, are even: R(-t) = R(t),
  * S(-f) = S(f).  Sampling only half the spectrum (the r2c half grid) or
  * taking the real part of the DFT of an odd part would silently keep the
- * even part of a model that is not, so check about EVEN_SAMPLES points
+ * even part of an expression that is not (named models are even exactly,
+ * see fill_rows), so check about EVEN_SAMPLES points
  * spread over the grid against their mirrors: NL_EINVAL when some pair
  * differs by more than EVEN_TOL of the largest magnitude sampled (rounding
  * in a tabulated or transformed model stays far below). */
@@ -138,12 +132,19 @@ static int check_even(const nl_model *m, const nl_field *g, int freq)
     return NL_OK;
 }
 
+/* Model values at the wrapped lags or frequencies (i < ni, all j, k) of the
+ * grid g, into rows of `stride` doubles.  Reentrant models are sampled on
+ * all threads, and, when whole rows are asked for, only on half of them:
+ * R(-x) = R(x) and S(-f) = S(f) hold exactly in floating point for them
+ * (negation is exact, and cos, |.| and the rotation commute with it), so
+ * the other half is copied reversed.  Expressions are evaluated everywhere:
+ * an odd expression must show up as such. */
 static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *dst, size_t stride, int freq)
 {
     size_t rows = g->n[1] * g->n[2], bad = rows, n0 = g->n[0];
     int st = nl_model_check_dim(m, g->dim), reentrant = nl_model_is_reentrant(m);
     int sym = reentrant && ni == n0 && rows > 1;
-    if (st || (st = check_even(m, g, freq)))
+    if (st || (!reentrant && (st = check_even(m, g, freq))))
         return st;
     /* each worker brackets its share once, so that the models' own GSL
      * guards (Matern, power) cost it a thread-local counter per value;
