@@ -32,20 +32,13 @@
 #include <string.h>
 #include <sys/resource.h>
 
-static nl_model *model(const char *spec)
-{
-    nl_model *m = NULL;
-    cr_assert_eq(nl_model_parse(spec, &m), NL_OK, "%s: %s", spec, nl_errmsg());
-    return m;
-}
-
 /* ---- GSL failures inside the library ---- */
 
 /* R(t) = 1 - |t|/3 is not a covariance: the Cholesky of its 64 x 64 matrix
  * fails (GSL_EDOM), which must be NL_ENOTPD with GSL's reason, not abort. */
 Test(gsl_guard, cholesky_not_pd_is_a_status)
 {
-    nl_model *m = model("expr:1-abs(t)/3");
+    nl_model *m = test_model("expr:1-abs(t)/3");
     nl_synth_cholesky_plan *p = (void *)1;
     size_t n = 64;
     cr_assert_eq(nl_synth_cholesky_plan_alloc(m, 1, &n, NULL, &p), NL_ENOTPD);
@@ -66,7 +59,7 @@ static void caller_handler(const char *reason, const char *file, int line, int e
  * back in place when the call returns. */
 Test(gsl_guard, restores_the_callers_handler)
 {
-    nl_model *m = model("expr:1-abs(t)/3");
+    nl_model *m = test_model("expr:1-abs(t)/3");
     nl_synth_cholesky_plan *p;
     size_t n = 64;
     gsl_set_error_handler(caller_handler);
@@ -82,7 +75,7 @@ Test(gsl_guard, restores_the_callers_handler)
  * to Hankel's expansion of J0 and is finite.) */
 Test(gsl_guard, power_quadrature_failure_is_nan)
 {
-    nl_model *m = model("power:d=2.5");
+    nl_model *m = test_model("power:d=2.5");
     double far2[3] = {1e6, 0, 0}, far1[3] = {1e9, 0, 0}, near[3] = {3, 0, 0};
     cr_assert(fabs(nl_model_acf(m, 2, far2)) < 1e-5);
     cr_assert(isnan(nl_model_acf(m, 1, far1)));
@@ -99,7 +92,7 @@ Test(gsl_guard, matern_extreme_nu)
 {
     const char *specs[] = {"matern:nu=1e-3", "matern:nu=100", "matern:nu=1e6"};
     for (int s = 0; s < 3; s++) {
-        nl_model *m = model(specs[s]);
+        nl_model *m = test_model(specs[s]);
         double prev = INFINITY;
         for (double t = 0.01; t < 1e9; t *= 7.3) {
             double lag[1] = {t}, r = nl_model_acf(m, 1, lag);
@@ -136,7 +129,7 @@ static void *failing_quadratures(void *arg)
  * back after the last one returns. */
 Test(gsl_guard, threads)
 {
-    nl_model *m = model("power:d=2.5");
+    nl_model *m = test_model("power:d=2.5");
     pthread_t t[4];
     void *r;
     gsl_set_error_handler(caller_handler);
@@ -285,10 +278,10 @@ Test(errors_model, einval_einput)
         cr_assert_neq(nl_errmsg()[0], 0);
     }
     cr_assert_eq(nl_model_parse("image:/nonexistent-dir/x.png", &m), NL_EINPUT);
-    m = model("markov");
+    m = test_model("markov");
     cr_assert_eq(nl_model_check_dim(m, 4), NL_EINVAL);
     nl_model_free(m);
-    m = model("power:d=2,angle=30");
+    m = test_model("power:d=2,angle=30");
     cr_assert_eq(nl_model_check_dim(m, 2), NL_EINVAL);
     nl_model_free(m);
 }
@@ -314,7 +307,7 @@ Test(errors_wk, einval)
     size_t n[2] = {8, 8}, n2[2] = {8, 4};
     int st;
     nl_field *R = nl_field_alloc(2, n, NULL, &st), *S = nl_field_alloc(2, n2, NULL, &st);
-    nl_model *m = model("expr:1/t");  /* infinite at lag 0 */
+    nl_model *m = test_model("expr:1/t");  /* infinite at lag 0 */
     double *half;
     cr_assert_eq(nl_wk_sample_acf(m, R), NL_EINVAL);
     cr_assert(strstr(nl_errmsg(), "not finite"), "%s", nl_errmsg());
@@ -363,7 +356,7 @@ Test(errors_wk, etoobig)
     size_t n[2] = {64, 64};
     int st;
     nl_field *R = nl_field_alloc(2, n, NULL, &st);
-    nl_model *m = model("power:d=2.5");
+    nl_model *m = test_model("power:d=2.5");
     setenv("NOISELAB_MEMORY_LIMIT", "30000", 1);  /* R (32768 bytes) is made; the spectrum grid does not fit */
     cr_assert_eq(nl_wk_sample_acf(m, R), NL_ETOOBIG);
     nl_model_free(m);

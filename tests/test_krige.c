@@ -4,6 +4,7 @@
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../synth/fft.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <gsl/gsl_linalg.h>
@@ -11,13 +12,6 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
-
-static nl_model *model(const char *spec)
-{
-    nl_model *m;
-    cr_assert_eq(nl_model_parse(spec, &m), 0);
-    return m;
-}
 
 /* random points in [0, 1]^dim and values */
 static void data(size_t n, int dim, uint64_t seed, double *pts, double *val)
@@ -31,7 +25,7 @@ static void data(size_t n, int dim, uint64_t seed, double *pts, double *val)
 
 Test(krige, interpolates_the_data_exactly)
 {
-    nl_model *m = model("gauss:scale=0.3,angle=25,ratio=0.5");
+    nl_model *m = test_model("gauss:scale=0.3,angle=25,ratio=0.5");
     double pts[2 * 12], val[12];
     nl_krige_plan *p;
     data(12, 2, 1, pts, val);
@@ -49,7 +43,7 @@ Test(krige, interpolates_the_data_exactly)
  * bordered system [C 1; 1^T 0][lambda; nu] = [c0; 1] (GSL LU) to 1e-10. */
 Test(krige, matches_the_bordered_system)
 {
-    nl_model *m = model("markov:scale=0.4,angle=10,ratio=0.7,zratio=0.5");
+    nl_model *m = test_model("markov:scale=0.4,angle=10,ratio=0.7,zratio=0.5");
     enum { N = 25 };
     double pts[3 * N], val[N], lam[N];
     nl_krige_plan *p;
@@ -93,7 +87,7 @@ Test(krige, matches_the_bordered_system)
  * ordinary kriging; R(0) exactly for simple kriging. */
 Test(krige, variance_reaches_the_sill)
 {
-    nl_model *m = model("markov:scale=0.1");
+    nl_model *m = test_model("markov:scale=0.1");
     double pts[2 * 10], val[10], last = -1;
     nl_krige_plan *po, *ps;
     data(10, 2, 3, pts, val);
@@ -120,7 +114,7 @@ Test(krige, variance_reaches_the_sill)
  * Markov model are regular. */
 Test(krige, singular_systems)
 {
-    nl_model *m = model("gauss:scale=0.5");
+    nl_model *m = test_model("gauss:scale=0.5");
     double pts[6] = {0.1, 0.2, 0.1, 0.2, 0.7, 0.4}, val[3] = {1, 1, 2};
     nl_krige_plan *p;
     nl_krige_info info;
@@ -132,7 +126,7 @@ Test(krige, singular_systems)
     nl_krige_eval(p, pts, &e, NULL, NULL);
     cr_expect_float_eq(e, 1.0, 1e-6, "the duplicate datum is still interpolated");
     nl_krige_plan_free(p), nl_model_free(m);
-    m = model("markov:scale=0.5");
+    m = test_model("markov:scale=0.5");
     double q[6] = {0.1, 0.2, 0.3, 0.2, 0.7, 0.4};
     cr_assert_eq(nl_krige_plan_alloc(m, 2, 3, q, val, 0, 0, 1, &p), 0);
     nl_krige_plan_info(p, &info);
@@ -148,7 +142,7 @@ Test(krige, singular_systems)
  * percent; 20% bounds it with margin. */
 Test(krige, calibration)
 {
-    nl_model *m = model("markov:scale=8");
+    nl_model *m = test_model("markov:scale=8");
     size_t n[2] = {128, 128};
     nl_synth_fft_plan *fp;
     nl_field *f = nl_field_alloc(2, n, NULL, NULL);
@@ -185,7 +179,7 @@ Test(krige, blocked_evaluation_equals_pointwise)
 {
     enum { N = 300, Q = 2 * NL_KRIGE_BLOCK + 17 };
     double *pts = malloc(2 * N * sizeof *pts), *val = malloc(N * sizeof *val), x[2 * Q], e[Q], v[Q];
-    nl_model *m = model("markov:scale=0.2,angle=30,ratio=0.5");
+    nl_model *m = test_model("markov:scale=0.2,angle=30,ratio=0.5");
     data(N, 2, 11, pts, val);
     for (size_t q = 0; q < 2 * Q; q++)
         x[q] = nl_rng_uniform(12, 0, q);
@@ -214,7 +208,7 @@ Test(krige, bit_reproducible_across_threads)
     double *pts = malloc(2 * N * sizeof *pts), *val = malloc(N * sizeof *val), *x = malloc(2 * Q * sizeof *x);
     double *e[2] = {malloc(Q * sizeof(double)), malloc(Q * sizeof(double))};
     double *v[2] = {malloc(Q * sizeof(double)), malloc(Q * sizeof(double))};
-    nl_model *m = model("markov:scale=0.2");
+    nl_model *m = test_model("markov:scale=0.2");
     nl_krige_plan *p;
     data(N, 2, 13, pts, val);
     for (size_t q = 0; q < 2 * Q; q++)

@@ -6,17 +6,11 @@
 #include "../core/model.h"
 #include "../core/nl_error.h"
 #include "../synth/subdiv.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
 #include <string.h>
-
-static nl_model *model(const char *spec)
-{
-    nl_model *m;
-    cr_assert_eq(nl_model_parse(spec, &m), 0, "%s", spec);
-    return m;
-}
 
 static nl_field *field(int dim, size_t nx, size_t ny)
 {
@@ -33,7 +27,7 @@ static int same(const nl_field *a, const nl_field *b)
 
 Test(subdiv_plan, execute_is_pure_and_equals_one_shot)
 {
-    nl_model *m = model("markaussian:alpha=1.4,scale=5.3");
+    nl_model *m = test_model("markaussian:alpha=1.4,scale=5.3");
     size_t n[2] = {128, 96};
     nl_subdiv_options o;
     nl_subdiv_plan *p;
@@ -59,7 +53,7 @@ Test(subdiv_plan, execute_is_pure_and_equals_one_shot)
 
 Test(subdiv_plan, window_and_midpoint_equal_one_shot)
 {
-    nl_model *m = model("markov:scale=6.1");
+    nl_model *m = test_model("markov:scale=6.1");
     size_t n[1] = {200};
     long origin[2] = {-37, 0};
     nl_subdiv_options o;
@@ -98,7 +92,7 @@ Test(subdiv_plan, window_and_midpoint_equal_one_shot)
  * refinement of the zero-mean image plus its mean. */
 Test(subdiv_plan, seed_image_kept_and_mean_restored)
 {
-    nl_model *m = model("markov:scale=4");
+    nl_model *m = test_model("markov:scale=4");
     size_t n[2] = {64, 32}, ni[2] = {16, 8};
     nl_subdiv_options o;
     nl_subdiv_plan *p;
@@ -141,8 +135,8 @@ Test(subdiv_plan, default_levels_policy)
 /* Every NL_E* code the plan API lists. */
 Test(subdiv_plan, error_paths)
 {
-    nl_model *m = model("markov:scale=4"), *spec = model("spectrum:1/(1+k^2)"),
-             *bad = model("expr:cos(10*r)*exp(-r)"), *pw = model("power:d=3.6");
+    nl_model *m = test_model("markov:scale=4"), *spec = test_model("spectrum:1/(1+k^2)"),
+             *bad = test_model("expr:cos(10*r)*exp(-r)"), *pw = test_model("power:d=3.6");
     size_t n[2] = {64, 64}, n3[2] = {100, 100}, ni[2] = {16, 16}, nj[2] = {24, 16}, tiny[1] = {1};
     nl_subdiv_options o;
     nl_subdiv_plan *p = (nl_subdiv_plan *)1;
@@ -203,7 +197,7 @@ Test(subdiv_plan, error_paths)
 
 Test(subdiv_plan, model_param)
 {
-    nl_model *pw = model("power:d=3.6,fmin=0.01"), *m = model("markov:scale=4");
+    nl_model *pw = test_model("power:d=3.6,fmin=0.01"), *m = test_model("markov:scale=4");
     double v = -1;
     cr_assert_eq(nl_model_param(pw, "d", &v), 0);
     cr_assert_eq(v, 3.6);
@@ -222,7 +216,7 @@ Test(subdiv_plan, model_param)
  * NL_ENOMEM need a failing solver or allocator: not triggered). */
 Test(subdiv_plan, one_shot_error_paths)
 {
-    nl_model *m = model("markov:scale=4"), *flat = model("expr:0*t"), *bad = model("expr:cos(10*r)*exp(-r)");
+    nl_model *m = test_model("markov:scale=4"), *flat = test_model("expr:0*t"), *bad = test_model("expr:cos(10*r)*exp(-r)");
     nl_subdiv_coeffs *c = (nl_subdiv_coeffs *)1, *c1, *c2;
     nl_field *f2 = field(2, 64, 64), *f1 = field(1, 64, 1), *coarse = field(2, 16, 16), *small = field(2, 8, 8),
              *odd = field(2, 18, 16);

@@ -16,17 +16,11 @@
 #include "../synth/fft.h"
 #include "../synth/shape.h"
 #include "../synth/sparse.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
 #include <string.h>
-
-static nl_model *model(const char *spec)
-{
-    nl_model *m;
-    cr_assert_eq(nl_model_parse(spec, &m), 0, "%s: %s", spec, nl_errmsg());
-    return m;
-}
 
 static nl_field *field(int dim, size_t nx, size_t ny)
 {
@@ -43,8 +37,8 @@ static int same(const nl_field *a, const nl_field *b)
 
 Test(synth_errors, fft)
 {
-    nl_model *m = model("markov:scale=3"), *osc = model("oscillatory:omega=2,scale=10"),
-             *img = model("spectrum:exp(-k);ratio=0.5");
+    nl_model *m = test_model("markov:scale=3"), *osc = test_model("oscillatory:omega=2,scale=10"),
+             *img = test_model("spectrum:exp(-k);ratio=0.5");
     size_t n[2] = {64, 64}, big[3] = {1000000, 1000000, 1000}, wide[1] = {(size_t)1 << 32};
     nl_synth_fft_plan *p = (nl_synth_fft_plan *)1;
     nl_field *f = field(2, 32, 64), *zero = field(1, 16, 1);
@@ -65,8 +59,8 @@ Test(synth_errors, fft)
 
 Test(synth_errors, circulant)
 {
-    nl_model *m = model("markov:scale=3"), *bad = model("gauss-osc:omega=2,scale=3"),
-             *img = model("spectrum:exp(-k);ratio=0.5");
+    nl_model *m = test_model("markov:scale=3"), *bad = test_model("gauss-osc:omega=2,scale=3"),
+             *img = test_model("spectrum:exp(-k);ratio=0.5");
     size_t n[3] = {64, 64, 1}, big[3] = {1000000, 1000000, 1000};
     nl_synth_circulant_plan *p = (nl_synth_circulant_plan *)1;
     nl_field *f = field(2, 64, 32);
@@ -87,8 +81,8 @@ Test(synth_errors, cholesky)
 {
     /* the issue's example: a triangle that is not positive definite on a
      * fine grid, found without touching GSL's error handler */
-    nl_model *m = model("markov:scale=3"), *tri = model("expr:1-abs(t)/3"),
-             *img = model("spectrum:exp(-k);ratio=0.5");
+    nl_model *m = test_model("markov:scale=3"), *tri = test_model("expr:1-abs(t)/3"),
+             *img = test_model("spectrum:exp(-k);ratio=0.5");
     size_t n[2] = {10, 10}, n0[1] = {0}, big[2] = {100, 100}, line[1] = {64};
     double h[1] = {0.1};
     nl_synth_cholesky_plan *p = (nl_synth_cholesky_plan *)1;
@@ -107,7 +101,7 @@ Test(synth_errors, cholesky)
 
 Test(synth_errors, sparse)
 {
-    nl_model *m = model("markov:scale=3");
+    nl_model *m = test_model("markov:scale=3");
     double h[2] = {1, 1};
     long origin[2] = {3, 4};
     nl_synth_sparse_plan *p = (nl_synth_sparse_plan *)1;
@@ -170,7 +164,7 @@ Test(synth_errors, faulting_and_shape)
 
 Test(synth_plans, execute_twice)
 {
-    nl_model *m = model("matern:nu=1.5,scale=3.7");
+    nl_model *m = test_model("matern:nu=1.5,scale=3.7");
     size_t n[2] = {24, 20};
     nl_synth_cholesky_plan *ch;
     nl_synth_circulant_plan *ci;
@@ -195,7 +189,7 @@ Test(synth_plans, execute_twice)
  * overlap, so a shared workspace shows up as mismatches. */
 Test(synth_plans, circulant_two_threads)
 {
-    nl_model *m = model("markov:scale=7.3");
+    nl_model *m = test_model("markov:scale=7.3");
     size_t n[2] = {256, 256};
     nl_synth_circulant_plan *ci;
     nl_field *a = field(2, 256, 256);

@@ -14,18 +14,12 @@
 #include "../synth/fft.h"
 #include "../synth/sparse.h"
 #include "../synth/subdiv.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <float.h>
 #include <math.h>
 #include <string.h>
-
-static nl_model *model(const char *spec)
-{
-    nl_model *m;
-    cr_assert_eq(nl_model_parse(spec, &m), 0, "%s: %s", spec, nl_errmsg());
-    return m;
-}
 
 static nl_field *field(int dim, size_t nx, size_t ny)
 {
@@ -60,7 +54,7 @@ Test(synth_hostile, field_check_finite)
 
 Test(synth_hostile, cholesky_covariance_not_finite)
 {
-    nl_model *s = model("spectrum:exp(-k*k)"), *p = model("power:d=2.5"), *sing = model("expr:1/abs(abs(t)-3)");
+    nl_model *s = test_model("spectrum:exp(-k*k)"), *p = test_model("power:d=2.5"), *sing = test_model("expr:1/abs(abs(t)-3)");
     size_t n2[2] = {8, 8}, two[1] = {2}, n1[1] = {16};
     double far[1] = {1e9};
     nl_synth_cholesky_plan *c = (nl_synth_cholesky_plan *)1;
@@ -76,7 +70,7 @@ Test(synth_hostile, cholesky_covariance_not_finite)
 
 Test(synth_hostile, spectrum_not_even)
 {
-    nl_model *odd = model("spectrum:exp(-(fx-0.1)^2*200)"), *acf = model("expr:exp(-abs(t))*(1+0.5*t)");
+    nl_model *odd = test_model("spectrum:exp(-(fx-0.1)^2*200)"), *acf = test_model("expr:exp(-abs(t))*(1+0.5*t)");
     size_t n2[2] = {32, 32}, n1[1] = {64};
     double *S = (double *)1;
     cr_assert_eq(nl_wk_sample_spectrum_half(odd, 2, n2, NULL, &S), NL_EINVAL, "only f >= 0 would be sampled");
@@ -89,7 +83,7 @@ Test(synth_hostile, spectrum_not_even)
 
 Test(synth_hostile, fft_spacing_and_overflow)
 {
-    nl_model *m = model("markov"), *big = model("expr:1e308*exp(-abs(t))");
+    nl_model *m = test_model("markov"), *big = test_model("expr:1e308*exp(-abs(t))");
     size_t n3[3] = {8, 8, 8}, n1[1] = {64};
     double tiny[3] = {1e-200, 1e-200, 1e-200};
     nl_synth_fft_plan *p;
@@ -102,7 +96,7 @@ Test(synth_hostile, fft_spacing_and_overflow)
 
 Test(synth_hostile, sparse_positive_definite_rule)
 {
-    nl_model *m = model("expr:exp(-r^4/256)");
+    nl_model *m = test_model("expr:exp(-r^4/256)");
     nl_synth_sparse_plan *p = (nl_synth_sparse_plan *)1;
     nl_synth_sparse_info info;
     cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 0, 0, 1, &p), NL_ENOTPD);
@@ -120,7 +114,7 @@ Test(synth_hostile, sparse_positive_definite_rule)
 
 Test(synth_hostile, sparse_truncation_and_spectrum_models)
 {
-    nl_model *m = model("markov:scale=4"), *s = model("spectrum:exp(-k*k*5)");
+    nl_model *m = test_model("markov:scale=4"), *s = test_model("spectrum:exp(-k*k*5)");
     nl_synth_sparse_plan *p;
     nl_synth_sparse_info info;
     cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 2, 0, 1, &p), NL_OK, "%s", nl_errmsg());
@@ -158,7 +152,7 @@ Test(synth_hostile, sparse_execute_bounds)
 
 Test(synth_hostile, subdivision)
 {
-    nl_model *sing = model("expr:exp(-abs(t))/abs(abs(t)-1)"), *m = model("gauss:scale=2");
+    nl_model *sing = test_model("expr:exp(-abs(t))/abs(abs(t)-1)"), *m = test_model("gauss:scale=2");
     nl_subdiv_options o;
     nl_subdiv_plan *p;
     size_t n[2] = {32, 32}, n1[1] = {64};
@@ -182,7 +176,7 @@ Test(synth_hostile, subdivision)
  * the value named as written (4.9e-324, not 4.94066e-324). */
 Test(synth_hostile, fft_denormal_spacing)
 {
-    nl_model *m = model("power:d=0");
+    nl_model *m = test_model("power:d=0");
     size_t n[1] = {4};
     double h[1] = {4.9e-324}, aniso[2] = {4.9e-324, 1e300};
     nl_synth_fft_plan *p;
@@ -201,7 +195,7 @@ Test(synth_hostile, fft_denormal_spacing)
  * 0.95); measured 0.899.  A lag model is sampled in lag: loss 0. */
 Test(synth_hostile, circulant_variance_loss)
 {
-    nl_model *pw = model("power:d=2.424,var=1.722"), *mk = model("markov:scale=4");
+    nl_model *pw = test_model("power:d=2.424,var=1.722"), *mk = test_model("markov:scale=4");
     size_t n[1] = {64};
     nl_synth_circulant_plan *p;
     nl_synth_circulant_info in;
@@ -225,7 +219,7 @@ Test(synth_hostile, circulant_variance_loss)
  * the standard deviation. */
 Test(synth_hostile, subdivision_tiny_variance, .timeout = 20)
 {
-    nl_model *tiny = model("markov:var=2.2250738585072014e-308"), *one = model("markov");
+    nl_model *tiny = test_model("markov:var=2.2250738585072014e-308"), *one = test_model("markov");
     nl_subdiv_options o;
     nl_subdiv_plan *p;
     size_t n[1] = {16};

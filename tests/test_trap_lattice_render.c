@@ -17,6 +17,7 @@
 #include "../synth/lattice.h"
 #include "../synth/ocean.h"
 #include "../synth/rank1_model.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
@@ -24,13 +25,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-
-static nl_model *model(const char *spec)
-{
-    nl_model *m;
-    cr_assert_eq(nl_model_parse(spec, &m), NL_OK, "%s", nl_errmsg());
-    return m;
-}
 
 static nl_field *field2(size_t nx, size_t ny)
 {
@@ -136,8 +130,8 @@ Test(trap_rank1, model)
 {
     nl_rank1_lattice L2, L4;
     long g[4] = {1, 5, 25, 125};
-    nl_model *sp = model("power:d=2.6,fmin=0.5,fmax=40"), *aniso = model("gauss:scale=0.2,ratio=2"),
-             *iso = model("markov:scale=0.1");
+    nl_model *sp = test_model("power:d=2.6,fmin=0.5,fmax=40"), *aniso = test_model("gauss:scale=0.2,ratio=2"),
+             *iso = test_model("markov:scale=0.1");
     double f[89];
     cr_assert_eq(nl_rank1_fibonacci(11, &L2), NL_OK);
     cr_assert_eq(nl_rank1_generator(89, 4, g, &L4), NL_OK);
@@ -153,7 +147,7 @@ Test(trap_rank1, model)
 Test(trap_rank1, model_enomem)
 {
     nl_rank1_lattice L;
-    nl_model *iso = model("markov:scale=0.1");
+    nl_model *iso = test_model("markov:scale=0.1");
     cr_assert_eq(nl_rank1_fibonacci(25, &L), NL_OK);
     double *f = malloc(L.N * sizeof *f);
     EXPECT_ENOMEM(nl_rank1_model_synthesize(&L, iso, 1, 1, f, NULL, NULL));
@@ -211,7 +205,7 @@ Test(trap_obj, einval_and_eio)
 
 Test(trap_lattice, einval)
 {
-    nl_model *m = model("power:d=2.6,fmin=0.001"), *r = model("markov:scale=8");
+    nl_model *m = test_model("power:d=2.6,fmin=0.001"), *r = test_model("markov:scale=8");
     nl_synth_lattice_plan p;
     size_t n3[3] = {8, 8, 8};
     nl_field *f3 = nl_field_alloc(3, n3, NULL, NULL);
@@ -228,7 +222,7 @@ Test(trap_lattice, einval)
 /* The first plan of a process measures the basis spectrum. */
 Test(trap_lattice, enomem)
 {
-    nl_model *m = model("power:d=2.6,fmin=0.001");
+    nl_model *m = test_model("power:d=2.6,fmin=0.001");
     nl_synth_lattice_plan p;
     EXPECT_ENOMEM(nl_synth_lattice_plan_init(m, 2, 16, 2, &p));
     nl_model_free(m);
@@ -238,7 +232,7 @@ static const double pts2[] = {0.1, 0.2, 0.7, 0.3, 0.4, 0.8}, val3[] = {1.5, -0.5
 
 Test(trap_krige, einval)
 {
-    nl_model *m = model("gauss:scale=0.3"), *s = model("spectrum:exp(-f*f)"), *m1 = model("markov:scale=0.3");
+    nl_model *m = test_model("gauss:scale=0.3"), *s = test_model("spectrum:exp(-f*f)"), *m1 = test_model("markov:scale=0.3");
     nl_krige_plan *p = (nl_krige_plan *)1;
     double dup[] = {0.1, 0.2, 0.1, 0.2, 0.4, 0.8}, nan_pts[] = {0.1, 0.2, NAN, 0.3, 0.4, 0.8};
     cr_assert_eq(nl_krige_plan_alloc(m, 2, 0, pts2, val3, 0, 0, 0, &p), NL_EINVAL, "no points");
@@ -264,7 +258,7 @@ Test(trap_krige, einval)
 
 Test(trap_krige, enomem)
 {
-    nl_model *m = model("markov:scale=0.3");
+    nl_model *m = test_model("markov:scale=0.3");
     size_t n = 3000;
     double *pts = malloc(2 * n * sizeof *pts), *val = malloc(n * sizeof *val), x[2] = {0.5, 0.5}, e, v;
     cr_assert(pts && val);
@@ -351,7 +345,7 @@ Test(trap_aliasing, codes)
 {
     size_t n3[3] = {8, 8, 8};
     nl_field *f3 = nl_field_alloc(3, n3, NULL, NULL), *odd = field2(9, 8), *f = field2(512, 512);
-    nl_model *m = model("markov:scale=4"), *bad = model("expr:1/abs(t)");
+    nl_model *m = test_model("markov:scale=4"), *bad = test_model("expr:1/abs(t)");
     double A;
     cr_assert_eq(nl_aliasing_measure(f3, &A), NL_EINVAL, "3D");
     cr_assert_eq(nl_aliasing_measure(odd, &A), NL_EINVAL, "odd size");
@@ -406,8 +400,8 @@ static void scene(nl_cloud_scene *s)
     for (int a = 0; a < 3; a++)
         s->lo[a] = -1, s->hi[a] = 1;
     s->npoints = 2, s->points = cloud_points;
-    s->shape = model("gauss:scale=0.6");
-    s->noise = model("gauss:scale=0.2");
+    s->shape = test_model("gauss:scale=0.6");
+    s->noise = test_model("gauss:scale=0.2");
     s->amplitude = 0.3, s->period = 1, s->noise_grid = 8, s->seed = 3;
     s->threshold = 0.2, s->extinction = 8, s->grid = 8;
     s->cam[2] = -4, s->fov = 40, s->sun[1] = 1;
@@ -432,7 +426,7 @@ Test(trap_render, cloud)
     cr_assert_eq(nl_render_cloud(&s, rgb, lum, NULL), NL_EINVAL, "no sun");
     s.sun[1] = 1;
     nl_model_free(s.noise);
-    s.noise = model("expr:1-abs(t)/3");
+    s.noise = test_model("expr:1-abs(t)/3");
     cr_assert_eq(nl_render_cloud(&s, rgb, lum, NULL), NL_ENOTPD, "a noise model that is not positive definite");
     EXPECT_ENOMEM(nl_render_cloud(&s, rgb, lum, NULL));
     nl_model_free(s.shape), nl_model_free(s.noise);
@@ -495,7 +489,7 @@ Test(trap_rank1, hostile_inputs)
 {
     nl_rank1_lattice L;
     long zero[2] = {1, 0}, same[3] = {1, 7, 7}, opposite[2] = {1, 609}, fine[2] = {1, 233};
-    nl_model *neg = model("spectrum:cos(f)/(1+f*f)");
+    nl_model *neg = test_model("spectrum:cos(f)/(1+f*f)");
     nl_rank1_model_info info;
     double f[610];
     cr_assert_eq(nl_rank1_check_generator(610, 2, zero), NL_EINVAL);
@@ -531,7 +525,7 @@ Test(trap_ocean, hostile_inputs)
 
 Test(trap_lattice, not_positive_definite)
 {
-    nl_model *neg = model("spectrum:cos(20*f)/(1+f*f)");
+    nl_model *neg = test_model("spectrum:cos(20*f)/(1+f*f)");
     nl_synth_lattice_plan p;
     cr_assert_eq(nl_synth_lattice_plan_init(neg, 2, 16, 3, &p), NL_ENOTPD);
     cr_assert(strstr(nl_errmsg(), "not positive definite"), "%s", nl_errmsg());

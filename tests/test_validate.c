@@ -12,17 +12,11 @@
 #include "../analysis/validate.h"
 #include "../analysis/verdict.h"
 #include "../core/nl_error.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
 #include <string.h>
-
-static nl_model *model(const char *spec)
-{
-    nl_model *m;
-    cr_assert_eq(nl_model_parse(spec, &m), NL_OK, "%s", spec);
-    return m;
-}
 
 static void count_progress(void *ctx, int method, size_t done, size_t total)
 {
@@ -38,7 +32,7 @@ static void count_progress(void *ctx, int method, size_t done, size_t total)
  * realization once. */
 Test(validate, markov_passes)
 {
-    nl_model *m = model("markov:scale=4");
+    nl_model *m = test_model("markov:scale=4");
     nl_validate_options o;
     nl_validate_result r;
     size_t n[2] = {256, 1}, calls[NL_VALIDATE_METHODS] = {0};
@@ -69,7 +63,7 @@ Test(validate, markov_passes)
  * correct target gives max |z| near 2 (markov_passes). */
 Test(validate, wrong_target_fails)
 {
-    nl_model *m = model("markov:scale=8"), *wrong = model("markov:scale=4");
+    nl_model *m = test_model("markov:scale=8"), *wrong = test_model("markov:scale=4");
     nl_validate_options o;
     nl_validate_result r;
     size_t n[2] = {1024, 1};
@@ -94,7 +88,7 @@ Test(validate, wrong_target_fails)
  * subdivision levels that are not, so no exact ACF. */
 Test(validate, refusals)
 {
-    nl_model *m = model("gauss:scale=20"), *tri = model("expr:1-abs(t)/3");
+    nl_model *m = test_model("gauss:scale=20"), *tri = test_model("expr:1-abs(t)/3");
     nl_validate_options o;
     nl_validate_result r;
     size_t n[2] = {64, 64};
@@ -121,7 +115,7 @@ Test(validate, refusals)
  * with *out left as it was by nl_validate_method. */
 Test(validate, error_paths)
 {
-    nl_model *m = model("markov:scale=3");
+    nl_model *m = test_model("markov:scale=3");
     nl_validate_options o;
     nl_validate_result r, copy;
     nl_validate_options_default(&o);

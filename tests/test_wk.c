@@ -5,6 +5,7 @@
 #include "../core/model.h"
 #include "../core/mem.h"
 #include "../core/wk.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
@@ -19,18 +20,11 @@ static nl_field *grid(int dim, size_t n, double h)
     return f;
 }
 
-static nl_model *model(const char *spec)
-{
-    nl_model *m;
-    cr_assert_eq(nl_model_parse(spec, &m), 0, "%s", spec);
-    return m;
-}
-
 /* Forward then inverse is the identity up to rounding (~1e-15 relative). */
 Test(wk, round_trip_2d)
 {
     nl_field *R = grid(2, 48, 0.7), *S = grid(2, 48, 0.7), *R2 = grid(2, 48, 0.7);
-    nl_model *m = model("markov:scale=3.1,angle=20,ratio=0.6");
+    nl_model *m = test_model("markov:scale=3.1,angle=20,ratio=0.6");
     cr_assert_eq(nl_wk_sample_acf(m, R), 0);
     cr_assert_eq(nl_wk_acf_to_spectrum(R, S), 0);
     cr_assert_eq(nl_wk_spectrum_to_acf(S, R2), 0);
@@ -46,7 +40,7 @@ Test(wk, sampled_markov_closed_form)
 {
     double h = 0.5, s = 8, q = exp(-h / s);
     nl_field *S = grid(1, 4096, h);
-    nl_model *m = model("markov:scale=8");
+    nl_model *m = test_model("markov:scale=8");
     cr_assert_eq(nl_wk_sample_spectrum(m, S), 0);
     for (size_t k = 0; k < 4096; k += 37) {
         double th = 2 * M_PI * (double)k / 4096;
@@ -63,7 +57,7 @@ Test(wk, gauss_matches_continuous_spectrum)
 {
     double h = 0.25;
     nl_field *S = grid(1, 1024, h);
-    nl_model *m = model("gauss:scale=4,var=2");
+    nl_model *m = test_model("gauss:scale=4,var=2");
     cr_assert_eq(nl_wk_sample_spectrum(m, S), 0);
     for (size_t k = 0; k < 60; k++) {
         double f = (double)k / (1024 * h);
@@ -81,7 +75,7 @@ Test(wk, gauss_matches_continuous_spectrum)
 Test(wk, spectrum_model_to_acf_2d)
 {
     nl_field *R = grid(2, 64, 0.5);
-    nl_model *m = model("spectrum:3.14159265358979*9*exp(-(3.14159265358979*k*3)^2)");
+    nl_model *m = test_model("spectrum:3.14159265358979*9*exp(-(3.14159265358979*k*3)^2)");
     cr_assert_eq(nl_wk_sample_acf(m, R), 0);
     for (size_t j = 0; j < 20; j++)
         for (size_t i = 0; i < 20; i++) {
@@ -112,7 +106,7 @@ Test(wk, half_grid_matches_full)
     };
     for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
         double h[3] = {0.7, 0.9, 1.1}, *half, top = 0;
-        nl_model *m = model(cases[c].spec);
+        nl_model *m = test_model(cases[c].spec);
         nl_field *S = nl_field_alloc(cases[c].dim, cases[c].n, h, NULL);
         size_t h0 = cases[c].n[0] / 2 + 1, rows = S->count / S->n[0];
         cr_assert_eq(nl_wk_sample_spectrum(m, S), 0, "%s", cases[c].spec);
@@ -144,7 +138,7 @@ Test(wk, sampled_acf_is_the_model_at_every_wrapped_lag)
     };
     for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
         double h[3] = {0.7, 0.9, 1.1};
-        nl_model *m = model(cases[c].spec);
+        nl_model *m = test_model(cases[c].spec);
         nl_field *R = nl_field_alloc(cases[c].dim, cases[c].n, h, NULL);
         size_t checked = 0;
         cr_assert_eq(nl_wk_sample_acf(m, R), 0, "%s", cases[c].spec);

@@ -1,5 +1,8 @@
 /* Running the CLI from tests and scratch space. */
 #include "util.h"
+#include "../core/nl_error.h"
+
+#include <criterion/criterion.h>
 
 
 #include <stdio.h>
@@ -62,3 +65,10 @@ int count_lines(const char *s)
     return n;
 }
 
+
+nl_model *test_model(const char *spec)
+{
+    nl_model *m = NULL;
+    cr_assert_eq(nl_model_parse(spec, &m), NL_OK, "%s: %s", spec, nl_errmsg());
+    return m;
+}

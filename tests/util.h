@@ -2,6 +2,8 @@
 #ifndef NL_TEST_UTIL_H
 #define NL_TEST_UTIL_H
 
+#include "../core/model.h"
+
 #include <stddef.h>
 
 /* Run the noiselab binary ($NOISELAB) with the shell words of `args`; the
@@ -17,5 +19,9 @@ int file_exists(const char *path);
 
 /* Number of lines in s. */
 int count_lines(const char *s);
+
+/* The model of a spec that must parse (the test fails naming the spec and
+ * the message otherwise); released by nl_model_free. */
+nl_model *test_model(const char *spec);
 
 #endif
