@@ -23,12 +23,80 @@ const char *nl_subdiv_class_name(int cls)
     return cls >= 0 && cls < 4 ? names[cls] : "?";
 }
 
-static double acf_at(const nl_model *m, int dim, const double *p, const double *q)
+/* R at the lags a plan evaluates, remembered: the systems of one plan share
+ * most of their lags (every class, level and random neighbourhood repeats
+ * the same few hundred), and for power: models each R is a quadrature.
+ * Keyed by the exact lag, so a remembered value is the value itself. */
+struct memo {
+    size_t n, cap;   /* entries, slots (a power of two, or 0: no memory) */
+    double *key;     /* 2 per slot */
+    double *val;
+    unsigned char *used;
+};
+
+static void memo_free(struct memo *mm)
 {
-    double lag[3] = {0, 0, 0};
+    free(mm->key), free(mm->val), free(mm->used);
+    memset(mm, 0, sizeof *mm);
+}
+
+static size_t memo_slot(const struct memo *mm, const double *lag)
+{
+    uint64_t h[2];
+    memcpy(h, lag, sizeof h);
+    h[0] = (h[0] ^ (h[1] * 0x9e3779b97f4a7c15u)) * 0xbf58476d1ce4e5b9u;
+    return (size_t)(h[0] ^ (h[0] >> 31)) & (mm->cap - 1);
+}
+
+/* Doubles the table; on failure the memo is dropped (values are then
+ * evaluated each time, as without it). */
+static void memo_grow(struct memo *mm)
+{
+    struct memo big = {0, mm->cap ? 2 * mm->cap : 1024, NULL, NULL, NULL};
+    big.key = malloc(2 * big.cap * sizeof *big.key);
+    big.val = malloc(big.cap * sizeof *big.val);
+    big.used = calloc(big.cap, 1);
+    if (!big.key || !big.val || !big.used || big.cap > ((size_t)1 << 22)) {
+        memo_free(&big);
+        memo_free(mm);
+        return;
+    }
+    for (size_t i = 0; i < mm->cap; i++) {
+        size_t j;
+        if (!mm->used[i])
+            continue;
+        for (j = memo_slot(&big, mm->key + 2 * i); big.used[j]; j = (j + 1) & (big.cap - 1))
+            ;
+        big.used[j] = 1;
+        memcpy(big.key + 2 * j, mm->key + 2 * i, 2 * sizeof *big.key);
+        big.val[j] = mm->val[i];
+        big.n++;
+    }
+    memo_free(mm);
+    *mm = big;
+}
+
+static double acf_at(const nl_model *m, int dim, const double *p, const double *q, struct memo *mm)
+{
+    double lag[3] = {0, 0, 0}, v;
+    size_t j = 0;
     for (int a = 0; a < dim; a++)
         lag[a] = p[a] - q[a];
-    return nl_model_acf(m, dim, lag);
+    if (mm && 2 * (mm->n + 1) > mm->cap)
+        memo_grow(mm);
+    if (mm && mm->cap) {
+        for (j = memo_slot(mm, lag); mm->used[j]; j = (j + 1) & (mm->cap - 1))
+            if (!memcmp(mm->key + 2 * j, lag, 2 * sizeof *lag))
+                return mm->val[j];
+    }
+    v = nl_model_acf(m, dim, lag);
+    if (mm && mm->cap) {
+        mm->used[j] = 1;
+        memcpy(mm->key + 2 * j, lag, 2 * sizeof *lag);
+        mm->val[j] = v;
+        mm->n++;
+    }
+    return v;
 }
 
 /* Eigenvalues of the symmetric A (destroyed): min and max |.|. */
@@ -92,7 +160,7 @@ static int check_finite(const nl_model *m, int dim, size_t n, const double *pts,
 }
 
 static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
-                 const double *reset, nl_subdiv_class *cls)
+                        const double *reset, nl_subdiv_class *cls, struct memo *mm)
 {
     gsl_matrix *A = gsl_matrix_alloc(n, n), *F = gsl_matrix_alloc(n, n);
     gsl_vector *b = gsl_vector_alloc(n), *x = gsl_vector_alloc(n);
@@ -107,8 +175,8 @@ static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts,
     }
     for (size_t j = 0; j < n; j++) {
         for (size_t k = 0; k < n; k++)
-            gsl_matrix_set(A, j, k, acf_at(m, dim, pts + j * dim, pts + k * dim));
-        gsl_vector_set(b, j, acf_at(m, dim, target, pts + j * dim));
+            gsl_matrix_set(A, j, k, acf_at(m, dim, pts + j * dim, pts + k * dim, mm));
+        gsl_vector_set(b, j, acf_at(m, dim, target, pts + j * dim, mm));
     }
     if ((st = check_finite(m, dim, n, pts, target, A, b)))
         goto done;
@@ -116,7 +184,7 @@ static int subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts,
      * denormal, on which GSL's eigen iteration never converges): solve the
      * system scaled by 2^-e, R(0) 2^-e in [1, 2), exact in binary, and scale
      * the eigenvalue and the variance back.  e = 0 (no scaling) otherwise. */
-    r0 = acf_at(m, dim, target, target);
+    r0 = acf_at(m, dim, target, target, mm);
     if (isfinite(r0) && r0 > 0 && (r0 < 0x1p-500 || r0 > 0x1p500)) {
         e = ilogb(r0);
         gsl_matrix_scale(A, ldexp(1.0, -e));
@@ -171,6 +239,17 @@ done:
     return st;
 }
 
+/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
+static int solve_guarded(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
+                         const double *reset, nl_subdiv_class *cls, struct memo *mm)
+{
+    int st;
+    nl_gsl_enter();
+    st = subdiv_solve(m, dim, n, pts, target, reset, cls, mm);
+    nl_gsl_leave();
+    return st;
+}
+
 /* Observation points, target and reset pattern of a class at spacing s. */
 static void geometry(int cls, int N, double s, double *pts, double *target, double *reset)
 {
@@ -196,7 +275,8 @@ static void geometry(int cls, int N, double s, double *pts, double *target, doub
         }
 }
 
-static int solve_class(const nl_model *m, int dim, int cls, int N, double s, nl_subdiv_class *out)
+static int solve_class(const nl_model *m, int dim, int cls, int N, double s, nl_subdiv_class *out,
+                       struct memo *mm)
 {
     size_t n = dim == 1 ? (size_t)(2 * N) : (size_t)(4 * N * N);
     double *pts = malloc(n * dim * sizeof *pts), *reset = malloc(n * sizeof *reset), target[2];
@@ -208,7 +288,7 @@ static int solve_class(const nl_model *m, int dim, int cls, int N, double s, nl_
         return NL_ERROR(NL_ENOMEM, "out of memory");
     }
     geometry(cls, N, s, pts, target, reset);
-    st = nl_subdiv_solve(m, dim, n, pts, target, reset, out);
+    st = solve_guarded(m, dim, n, pts, target, reset, out, mm);
     if (!st && dim == 2) {
         double amax = 0;
         size_t w = (size_t)(2 * N), corner[4] = {0, w - 1, w * (w - 1), w * w - 1};
@@ -234,7 +314,7 @@ static void free_level(nl_subdiv_level *l)
     }
 }
 
-static int solve_level(const nl_model *m, int dim, int N, double s, nl_subdiv_level *l)
+static int solve_level(const nl_model *m, int dim, int N, double s, nl_subdiv_level *l, struct memo *mm)
 {
     static const int classes2[] = {NL_SUBDIV_FACE, NL_SUBDIV_EDGE_X, NL_SUBDIV_EDGE_Y};
     int st = NL_OK;
@@ -244,7 +324,7 @@ static int solve_level(const nl_model *m, int dim, int N, double s, nl_subdiv_le
     l->nclass = dim == 1 ? 1 : 3;
     memset(l->cls, 0, sizeof l->cls);
     for (int c = 0; c < l->nclass && !st; c++)
-        st = solve_class(m, dim, dim == 1 ? NL_SUBDIV_MID : classes2[c], N, s, &l->cls[c]);
+        st = solve_class(m, dim, dim == 1 ? NL_SUBDIV_MID : classes2[c], N, s, &l->cls[c], mm);
     return st;
 }
 
@@ -262,8 +342,9 @@ int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacin
                         nl_subdiv_coeffs **out)
 {
     nl_subdiv_coeffs *c;
+    struct memo mm = {0, 0, NULL, NULL, NULL};
     double zero[2] = {0, 0};
-    int st;
+    int st = NL_OK;
     *out = NULL;
     if (dim != 1 && dim != 2)
         return NL_ERROR(NL_EINVAL, "subdivision: expected dimension 1 or 2, got %d", dim);
@@ -300,14 +381,14 @@ int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacin
         nl_subdiv_level *l = &c->level[k];
         l->level = k;
         if (N > 0) {
-            st = solve_level(m, dim, N, s, l);
+            st = solve_level(m, dim, N, s, l, &mm);
         } else {
             /* grow N until eq. (7) improves by less than tol R(0) */
-            st = solve_level(m, dim, 1, s, l);
+            st = solve_level(m, dim, 1, s, l, &mm);
             for (int n = 2; !st && n <= nmax; n++) {
                 nl_subdiv_level next;
                 next.level = k;
-                if ((st = solve_level(m, dim, n, s, &next))) {
+                if ((st = solve_level(m, dim, n, s, &next, &mm))) {
                     free_level(&next);
                     break;
                 }
@@ -322,6 +403,7 @@ int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacin
         for (int j = 0; !st && j < l->nclass; j++)
             c->flags |= l->cls[j].flags;
     }
+    memo_free(&mm);
     if (st) {
         nl_subdiv_coeffs_free(c);
         return st;
@@ -368,6 +450,7 @@ static void random_set(int cls, size_t n, uint64_t seed, uint32_t stream, int *o
 
 int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, uint64_t plan_seed)
 {
+    struct memo mm = {0, 0, NULL, NULL, NULL};
     if (c->dim != 2)
         return NL_ERROR(NL_EINVAL, "random neighbourhoods: expected a 2D plan");
     if (k < 1 || k > 256)
@@ -384,6 +467,7 @@ int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, ui
             cl->alt_var = malloc((size_t)k * sizeof *cl->alt_var);
             if (!pts || !cl->offx || !cl->offy || !cl->alt_a || !cl->alt_var) {
                 free(pts);
+                memo_free(&mm);
                 return NL_ERROR(NL_ENOMEM, "out of memory");
             }
             cl->nalt = k;
@@ -395,7 +479,8 @@ int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, ui
                 for (size_t p = 0; p < n; p++)
                     pts[2 * p] = ox[p] * l->spacing, pts[2 * p + 1] = oy[p] * l->spacing;
                 tmp.a = cl->alt_a + (size_t)a * n;
-                if ((st = nl_subdiv_solve(m, 2, n, pts, target, NULL, &tmp))) {
+                if ((st = solve_guarded(m, 2, n, pts, target, NULL, &tmp, &mm))) {
+                    memo_free(&mm);
                     free(pts);
                     return st;
                 }
@@ -412,6 +497,7 @@ int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, ui
             free(pts);
         }
     }
+    memo_free(&mm);
     c->flags &= ~NL_SUBDIV_DIAG_BIAS;
     for (int lv = 0; lv < c->levels; lv++)
         for (int j = 0; j < c->level[lv].nclass; j++)
@@ -419,13 +505,8 @@ int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, ui
     return NL_OK;
 }
 
-/* Bracketed for GSL (core/gsl_guard_internal.h): its errors come back as statuses. */
 int nl_subdiv_solve(const nl_model *m, int dim, size_t n, const double *pts, const double *target,
                     const double *reset, nl_subdiv_class *cls)
 {
-    int st;
-    nl_gsl_enter();
-    st = subdiv_solve(m, dim, n, pts, target, reset, cls);
-    nl_gsl_leave();
-    return st;
+    return solve_guarded(m, dim, n, pts, target, reset, cls, NULL);
 }
