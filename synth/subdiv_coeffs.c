@@ -42,10 +42,14 @@ static void memo_free(struct memo *mm)
 
 static size_t memo_slot(const struct memo *mm, const double *lag)
 {
-    uint64_t h[2];
+    uint64_t h[2], x;
     memcpy(h, lag, sizeof h);
-    h[0] = (h[0] ^ (h[1] * 0x9e3779b97f4a7c15u)) * 0xbf58476d1ce4e5b9u;
-    return (size_t)(h[0] ^ (h[0] >> 31)) & (mm->cap - 1);
+    /* the bits of a lag like 3.5 sit at the top: mix them all down
+     * (splitmix64's finaliser) */
+    x = h[0] ^ (h[1] >> 32 | h[1] << 32);
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9u;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebu;
+    return (size_t)(x ^ (x >> 31)) & (mm->cap - 1);
 }
 
 /* Doubles the table; on failure the memo is dropped (values are then

@@ -74,6 +74,15 @@ void nl_subdiv_plan_free(nl_subdiv_plan *p)
 /* The periodic set-up: the size check, the levels' positive definiteness
  * and, with a model, the FFT plan of level 0 (in this order, as the
  * one-shot nl_subdiv_synth_periodic reports them). */
+static int check_periodic_size(int dim, const size_t *n, int L)
+{
+    size_t c0 = n[0] >> L, c1 = dim == 2 ? n[1] >> L : 2;
+    if ((c0 << L) != n[0] || (dim == 2 && (c1 << L) != n[1]) || c0 < 2 || c1 < 2)
+        return NL_ERROR(NL_EINVAL, "size: expected each size a multiple of 2^%d = %ld with at least 2 coarse "
+                        "samples, got %zu%s%.0zu", L, 1L << L, n[0], dim == 2 ? "x" : "", dim == 2 ? n[1] : (size_t)0);
+    return NL_OK;
+}
+
 static int plan_periodic(nl_subdiv_plan *p)
 {
     const nl_subdiv_coeffs *c = p->c;
@@ -82,11 +91,8 @@ static int plan_periodic(nl_subdiv_plan *p)
     int st;
     p->cn[0] = p->n[0] >> c->levels;
     p->cn[1] = dim == 2 ? p->n[1] >> c->levels : 1;
-    if ((p->cn[0] << c->levels) != p->n[0] || (dim == 2 && (p->cn[1] << c->levels) != p->n[1]) || p->cn[0] < 2 ||
-        (dim == 2 && p->cn[1] < 2))
-        return NL_ERROR(NL_EINVAL, "size: expected each size a multiple of 2^%d = %ld with at least 2 coarse "
-                        "samples, got %zu%s%.0zu", c->levels, 1L << c->levels, p->n[0], dim == 2 ? "x" : "",
-                        dim == 2 ? p->n[1] : (size_t)0);
+    if ((st = check_periodic_size(dim, p->n, c->levels)))
+        return st;
     if ((st = nl_subdiv_check_levels(c, p->allow_not_pd)))
         return st;
     if (p->m)
@@ -144,6 +150,9 @@ int nl_subdiv_plan_alloc(const nl_model *m, int dim, const size_t *n, double h, 
     if (L < 1)
         return NL_ERROR(NL_EINVAL, "--size: expected a size divisible by 2 with at least 16 samples for "
                         "subdivision, got %zu", n[0]);
+    /* the size first: the coefficients can cost seconds */
+    if (!o->nonperiodic && !o->image && (st = check_periodic_size(dim, n, L)))
+        return st;
     if ((st = coeffs_for(m, dim, L, h, o, &c)))
         return st;
     if (!(p = plan_new(c, 1, m, dim, n)))
