@@ -13,6 +13,8 @@ typedef struct {
     long idx[256];  /* old flat indices */
     double w[256];  /* weights */
     double var;     /* displacement variance */
+    int cls;        /* class index into the level's cls[] (-1: a kept point) */
+    long ci, cj;    /* its cell */
 } stencil;
 
 static long wrap(long i, long n) { return ((i % n) + n) % n; }
@@ -23,10 +25,12 @@ static void make_stencil(const nl_subdiv_level *l, int dim, long cx, long cy, lo
     int ox = (int)(I % 2), oy = (int)(J % 2), N = l->N, w = 2 * N;
     const nl_subdiv_class *cl;
     s->n = 0;
+    s->ci = i, s->cj = j;
     if (!ox && !oy) {
-        s->n = 1, s->idx[0] = j * cx + i, s->w[0] = 1, s->var = 0;
+        s->n = 1, s->idx[0] = j * cx + i, s->w[0] = 1, s->var = 0, s->cls = -1;
         return;
     }
+    s->cls = dim == 1 ? 0 : ox && oy ? 0 : ox ? 1 : 2;
     if (dim == 1) {
         cl = &l->cls[0];
         for (int k = 0; k < w; k++)
@@ -88,16 +92,43 @@ static int coarse_covariance(const nl_subdiv_coeffs *c, const nl_model *m, long 
     return NL_OK;
 }
 
+/* The displacement covariance of the level on its periodic cell grid:
+ * D[((a nc + b) cy + dy) cx + dx] = Cov(d_a(i), d_b(i + (dx, dy))), the
+ * realised covariance summed over the offsets congruent to (dx, dy) (the
+ * white numbers wrap with the level). */
+static double *disp_table(const nl_subdiv_level *l, int dim, long cx, long cy)
+{
+    const int nc = l->nclass, R = 2 * l->taps, RY = dim == 2 ? R : 0;
+    double *D = calloc((size_t)(nc * nc * cx * cy), sizeof *D);
+    if (!D)
+        return NULL;
+    for (int a = 0; a < nc; a++)
+        for (int b = 0; b < nc; b++)
+            for (int my = -RY; my <= RY; my++)
+                for (int mx = -R; mx <= R; mx++)
+                    D[((a * nc + b) * cy + wrap(my, cy)) * cx + wrap(mx, cx)] +=
+                        nl_subdiv_disp_realised(l, dim, a, b, mx, my);
+    return D;
+}
+
 /* One level: C' = M C M^T + D on the grid twice as fine (Lewis 1987,
- * eqs. 4 and 7 per new point; D diagonal, the displacements independent).
+ * eqs. 4 and 7 per new point; D diagonal when the displacements are
+ * independent, else the covariance their filter realises, subdiv.h).
  * *C (cx x cy points) is replaced by the new matrix. */
 static int refine_level(const nl_subdiv_level *l, int dim, long cx, long cy, stencil *st, double **C)
 {
     long nx2 = 2 * cx, ny2 = dim == 2 ? 2 * cy : 1, n1 = cx * cy, n2 = nx2 * ny2;
     double *T = calloc((size_t)(n2 * n1), sizeof *T), *C2 = malloc((size_t)(n2 * n2) * sizeof *C2);
-    if (!T || !C2) {
-        free(T), free(C2);
+    double *D = disp_table(l, dim, cx, cy);
+    int *cls = malloc((size_t)n2 * sizeof *cls);
+    long *cell = malloc((size_t)n2 * sizeof *cell);
+    if (!T || !C2 || !D || !cls || !cell) {
+        free(T), free(C2), free(D), free(cls), free(cell);
         return NL_ERROR(NL_ENOMEM, "out of memory");
+    }
+    for (long P = 0; P < n2; P++) {
+        make_stencil(l, dim, cx, cy, P % nx2, P / nx2, st);
+        cls[P] = st->cls, cell[P] = st->cj * cx + st->ci;
     }
     for (long P = 0; P < n2; P++) {  /* T = M C */
         make_stencil(l, dim, cx, cy, P % nx2, P / nx2, st);
@@ -111,9 +142,14 @@ static int refine_level(const nl_subdiv_level *l, int dim, long cx, long cy, ste
             double v = 0;
             for (int q = 0; q < st->n; q++)
                 v += st->w[q] * T[P * n1 + st->idx[q]];
-            C2[P * n2 + Q] = v + (P == Q ? st->var : 0);
+            if (cls[P] >= 0 && cls[Q] >= 0) {
+                long dx = wrap(cell[Q] % cx - cell[P] % cx, cx), dy = wrap(cell[Q] / cx - cell[P] / cx, cy);
+                v += D[((cls[P] * l->nclass + cls[Q]) * cy + dy) * cx + dx];
+            }
+            C2[P * n2 + Q] = v;
         }
     }
+    free(D), free(cls), free(cell);
     free(T);
     free(*C);
     *C = C2;

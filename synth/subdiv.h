@@ -91,6 +91,12 @@ typedef struct {
     int reach;            /* largest |offset| of an observation from the anchor */
     int nclass;           /* 1 in 1D; 3 in 2D (face, edge-x, edge-y) */
     nl_subdiv_class cls[3];
+    /* correlated displacements (nl_subdiv_coeffs_correlate); filt NULL:
+     * independent, each of variance cls[a].variance */
+    int taps;             /* M: filter offsets -M..M per axis */
+    double *filt;         /* nclass^2 (2M+1)^dim taps g^{ab}(p): index
+                             ((a nclass + b) (2M+1) + py + M) (2M+1) + px + M (1D: py absent) */
+    double filt_error;    /* max |realised - target| displacement covariance / R(0) */
 } nl_subdiv_level;
 
 typedef struct {
@@ -130,6 +136,32 @@ void nl_subdiv_coeffs_free(nl_subdiv_coeffs *c);
  * The alternatives are owned by c.  NL_OK, or NL_EINVAL (c not 2D, k
  * outside 1..256), NL_EFAIL, NL_ENOMEM (c is then still valid and freeable). */
 int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, uint64_t plan_seed);
+
+/* Correlated displacements (synth/subdiv_disp.c has the derivation): the
+ * new points of a level, grouped by cell (1D: cell i holds the midpoint
+ * 2i + 1; 2D: cell (i, j) holds face (2i+1, 2j+1), edge-x (2i+1, 2j) and
+ * edge-y (2i, 2j+1), in cls[] order), get displacements
+ *     d_a(i) = sum_b sum_{|p| <= M} g^{ab}(p) w_b(i + p),
+ * w_b(i) the N(0, 1) number the independent construction draws for class
+ * b's point of cell i (NL_SUBDIV_STREAM + level + 1 at its fine index), and
+ * g a filter whose covariance approximates, over cell offsets m,
+ *   NL_SUBDIV_DISP_ERROR   the covariance of the true estimation errors,
+ *   NL_SUBDIV_DISP_NEWNEW  R_nn - A R_oo A^T, which makes the new points'
+ *                          covariance exact when the old level is;
+ * both keep eq. (7) as the variance.  taps = M, 0 .. NL_SUBDIV_MAX_TAPS.
+ * Sets every level's taps, filt and filt_error.  NL_OK, or NL_EINVAL (taps
+ * or target out of range, random neighbourhoods, R not finite at a lag it
+ * needs), NL_EFAIL, NL_ENOMEM (c is then still valid, with every level
+ * independent or correlated).  Evaluates the model: not thread-safe for
+ * expression models. */
+enum { NL_SUBDIV_DISP_INDEPENDENT = 0, NL_SUBDIV_DISP_ERROR = 1, NL_SUBDIV_DISP_NEWNEW = 2 };
+#define NL_SUBDIV_MAX_TAPS 16
+int nl_subdiv_coeffs_correlate(nl_subdiv_coeffs *c, const nl_model *m, int taps, int target);
+
+/* The displacement covariance a level realises, Cov(d_a(i), d_b(i + m)),
+ * m = (mx, my) in cells (my = 0 in 1D): from its filter, or the diagonal
+ * eq. (7) variances when independent.  Pure. */
+double nl_subdiv_disp_realised(const nl_subdiv_level *l, int dim, int a, int b, int mx, int my);
 
 /* Eq. (12) for any observation set: n points pts[i*dim..] and the target,
  * in lag units.  Fills cls (a must hold n doubles); `reset` gives the
@@ -182,6 +214,8 @@ typedef struct {
     int image;            /* the coarse level is given (nl_subdiv_plan_execute_image): no coarse FFT plan */
     int random_nb;        /* 2D: random neighbourhoods per class (nl_subdiv_coeffs_randomize); 0 = none */
     uint64_t random_seed; /* plan seed of the random neighbourhoods */
+    int displacements;    /* NL_SUBDIV_DISP_INDEPENDENT (Lewis), _ERROR (correlated) or _NEWNEW */
+    int taps;             /* correlated: filter half-width M, 1..NL_SUBDIV_MAX_TAPS; 0 = 4 in 1D, 2 in 2D */
 } nl_subdiv_options;
 
 typedef struct {
@@ -192,7 +226,8 @@ typedef struct {
 } nl_subdiv_info;
 
 /* The defaults: levels 0 (policy), N = 2, tol 1e-4, nmax 0, periodic, no
- * clamp, no image, no random neighbourhoods, random_seed 1. */
+ * clamp, no image, no random neighbourhoods, random_seed 1, independent
+ * displacements. */
 void nl_subdiv_options_default(nl_subdiv_options *o);
 
 /* The default number of levels for an output of n[0..dim-1] samples: the

@@ -316,6 +316,9 @@ static void free_level(nl_subdiv_level *l)
         cl->offx = cl->offy = NULL;
         cl->nalt = 0;
     }
+    free(l->filt);
+    l->filt = NULL;
+    l->taps = 0;
 }
 
 static int solve_level(const nl_model *m, int dim, int N, double s, nl_subdiv_level *l, struct memo *mm)
@@ -327,6 +330,7 @@ static int solve_level(const nl_model *m, int dim, int N, double s, nl_subdiv_le
     l->spacing = s;
     l->nclass = dim == 1 ? 1 : 3;
     memset(l->cls, 0, sizeof l->cls);
+    l->taps = 0, l->filt = NULL, l->filt_error = 0;
     for (int c = 0; c < l->nclass && !st; c++)
         st = solve_class(m, dim, dim == 1 ? NL_SUBDIV_MID : classes2[c], N, s, &l->cls[c], mm);
     return st;

@@ -129,6 +129,12 @@ static int coeffs_for(const nl_model *m, int dim, int L, double h, const nl_subd
         else
             st = nl_subdiv_coeffs_randomize(*c, m, o->random_nb, o->random_seed);
     }
+    if (!st && o->displacements) {
+        if (o->taps < 0 || o->taps > NL_SUBDIV_MAX_TAPS)
+            st = NL_ERROR(NL_EINVAL, "--taps: expected 1 to %d, got %d", NL_SUBDIV_MAX_TAPS, o->taps);
+        else
+            st = nl_subdiv_coeffs_correlate(*c, m, o->taps ? o->taps : dim == 1 ? 4 : 2, o->displacements);
+    }
     if (st) {
         nl_subdiv_coeffs_free(*c);
         *c = NULL;

@@ -119,10 +119,50 @@ static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, 
 /* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
  * the finer grid is old point I/2 when I is even, else the midpoint of old
  * points (I-1)/2 and (I+1)/2.  Eq. (3) in 1D, eq. (9) in 2D. */
-static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv)
+/* Correlated displacements of one level, per class and cell (subdiv.h). */
+typedef struct {
+    double *v;     /* v[(a ny + y) nx + x] for the cell (c0 + x, c1 + y) */
+    long c0, c1;   /* first cell */
+    long nx, ny;   /* cells (ny = 1 in 1D) */
+} disp;
+
+/* The displacements for the cells of dst; per = the periodic level's cells
+ * (NULL: an infinite level).  d->v NULL when the level is independent. */
+static int disp_alloc(int dim, const nl_subdiv_level *l, const grid *dst, const long *per, uint64_t seed,
+                      unsigned lv, disp *d)
+{
+    long c0[2], n[2], none[2] = {0, 0};
+    size_t sz[3] = {(size_t)l->nclass, 0, 0};
+    int st;
+    d->v = NULL;
+    if (!l->filt)
+        return NL_OK;
+    c0[0] = fdiv2(dst->x0), c0[1] = dim == 2 ? fdiv2(dst->y0) : 0;
+    n[0] = fdiv2(dst->x0 + dst->nx - 1) - c0[0] + 1;
+    n[1] = dim == 2 ? fdiv2(dst->y0 + dst->ny - 1) - c0[1] + 1 : 1;
+    sz[1] = (size_t)n[0], sz[2] = (size_t)n[1];
+    if ((st = nl_size_check(3, sz, sizeof(double), 1, NULL)))
+        return st;
+    if (!(d->v = nl_alloc(sz[0] * sz[1] * sz[2] * sizeof *d->v)))
+        return NL_ERROR(NL_ENOMEM, "out of memory for the displacements of level %u", lv);
+    d->c0 = c0[0], d->c1 = c0[1], d->nx = n[0], d->ny = n[1];
+    if ((st = nl_subdiv_disp_fill(l, dim, seed, lv, c0, n, per ? per : none, d->v))) {
+        nl_free(d->v);
+        d->v = NULL;
+    }
+    return st;
+}
+
+static inline double disp_at(const disp *d, int a, long i, long j)
+{
+    return d->v[(a * d->ny + (j - d->c1)) * d->nx + (i - d->c0)];
+}
+
+static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv,
+                   const disp *dp)
 {
     const int N = l->N, w = 2 * N;
-    const int standard = dim == 2 && !l->cls[0].nalt && !l->cls[1].nalt && !l->cls[2].nalt;
+    const int standard = dim == 2 && !l->cls[0].nalt && !l->cls[1].nalt && !l->cls[2].nalt && !dp->v;
 #pragma omp parallel for schedule(static) if (dst->nx * dst->ny > 65536)
     for (long J = dst->y0; J < dst->y0 + dst->ny; J++) {
         double *row = dst->v + (J - dst->y0) * dst->nx;
@@ -139,12 +179,12 @@ static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst
                 row[I - dst->x0] = at(src, i, dim == 2 ? j : src->y0);
                 continue;
             }
+            int c = dim == 1 ? 0 : ox && oy ? 0 : ox ? 1 : 2;  /* mid; face, edge-x, edge-y */
             if (dim == 1) {
                 cl = &l->cls[0];
                 for (int k = 0; k < w; k++)
                     s += cl->a[k] * at(src, i + 1 - N + k, src->y0);
             } else {
-                int c = ox && oy ? 0 : ox ? 1 : 2;  /* face, edge-x, edge-y */
                 cl = &l->cls[c];
                 if (cl->nalt) {
                     /* a random quadrilateral neighbourhood */
@@ -162,7 +202,10 @@ static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst
                     for (int q = 0; q < w; q++)
                         s += cl->a[r * w + q] * at(src, i + 1 - N + q, j + 1 - N + r);
             }
-            s += sqrt(cl->variance) * nl_rng_gauss(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
+            if (dp->v)
+                s += disp_at(dp, c, i, dim == 2 ? j : 0);
+            else
+                s += sqrt(cl->variance) * nl_rng_gauss(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
             row[I - dst->x0] = s;
         }
     }
@@ -235,10 +278,15 @@ int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse,
         grid src, dst = {f->data, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1};
         if ((st = pad_periodic(dim, cur, cx, cy, c->level[k].reach, &src)))
             break;
+        long per[2] = {cx, cy};
+        disp dp = {NULL, 0, 0, 0, 0};
         if (k + 1 < c->levels)
             st = grid_alloc(&dst, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1);
+        if (!st && (st = disp_alloc(dim, &c->level[k], &dst, per, seed, (unsigned)k, &dp)) && k + 1 < c->levels)
+            nl_free(dst.v);
         if (!st) {
-            refine(dim, &c->level[k], &src, &dst, seed, (unsigned)k);
+            refine(dim, &c->level[k], &src, &dst, seed, (unsigned)k, &dp);
+            nl_free(dp.v);
             if (cur != coarse->data)
                 nl_free(cur);
             cur = dst.v;
@@ -296,8 +344,12 @@ int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long 
         grid dst;
         st = grid_alloc(&dst, rx[k + 1][0], ry[k + 1][0], rx[k + 1][1] - rx[k + 1][0] + 1,
                         ry[k + 1][1] - ry[k + 1][0] + 1);
+        disp dp = {NULL, 0, 0, 0, 0};
+        if (!st && (st = disp_alloc(dim, &c->level[k], &dst, NULL, seed, (unsigned)k, &dp)))
+            nl_free(dst.v);
         if (!st) {
-            refine(dim, &c->level[k], &g, &dst, seed, (unsigned)k);
+            refine(dim, &c->level[k], &g, &dst, seed, (unsigned)k, &dp);
+            nl_free(dp.v);
             nl_free(g.v);
             g = dst;
         }
