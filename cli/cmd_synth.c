@@ -2,6 +2,7 @@
 #include "synth.h"
 #include "../core/nl_error.h"
 #include "../core/version.h"
+#include "../synth/subdiv.h"
 
 #include <errno.h>
 #include <float.h>
@@ -32,6 +33,13 @@ static const char help[] =
     "            --seed-image FILE   start from this image as the coarse level (kept exactly)\n"
     "            --random-neighborhoods K  2D: K random quadrilateral neighbourhoods per\n"
     "                                point class, one drawn per point (against diagonal bias)\n"
+    "            --displacements independent|correlated  independent: Lewis's, each new\n"
+    "                                point displaced on its own (eq. 7); correlated: the new\n"
+    "                                points of a level displaced together, with the covariance\n"
+    "                                of their estimation errors, by a filter of white noise\n"
+    "                                (default independent)\n"
+    "            --taps M            correlated: the filter's half-width in cells (default 4 in\n"
+    "                                1D, 2 in 2D; at most 16)\n"
     "  circulant exact stationary field on a NON-periodic grid by circulant embedding\n"
     "            (Dietrich-Newsam, Wood-Chan): the embedding doubles until its eigenvalues\n"
     "            are non-negative, up to 16x the size; the report gives the embedding and\n"
@@ -76,7 +84,7 @@ static const char help[] =
 typedef struct {
     const char *acf, *spec, *size, *spacing, *out, *preview, *origin, *from; /* option values or NULL */
     int json;                                        /* --json */
-    int given_L, given_N, given_tol, given_vs, given_density; /* explicitly given */
+    int given_L, given_N, given_tol, given_vs, given_density, given_disp; /* explicitly given */
 } cli_synth_args;
 
 /* Window origins stay within +-2^30 samples: the 2D generators index
@@ -120,6 +128,16 @@ static int parse_int(const char *opt, const char *s, int min, int max)
     return (int)v;
 }
 
+static int parse_displacements(const char *opt, const char *s)
+{
+    if (!strcmp(s, "independent"))
+        return NL_SUBDIV_DISP_INDEPENDENT;
+    if (!strcmp(s, "correlated"))
+        return NL_SUBDIV_DISP_ERROR;
+    cli_die(2, "%s: expected independent or correlated, got \"%s\"", opt, s);
+    return 0;
+}
+
 /* The method's recorded options: "k=v,...|k=v|..." (what follows "name:"
  * in the method string written by the methods). */
 static void apply_keys(char *rest, cli_synth_job *job)
@@ -156,6 +174,9 @@ static void apply_keys(char *rest, cli_synth_job *job)
             }
             else if (!strcmp(kv, "random-neighborhoods"))
                 job->random_nb = parse_int("--from: random-neighborhoods", v, 1, 256);
+            else if (!strcmp(kv, "displacements"))
+                job->displacements = parse_displacements("--from: displacements", v);
+            else if (!strcmp(kv, "taps")) job->taps = parse_int("--from: taps", v, 1, NL_SUBDIV_MAX_TAPS);
             else if (!strcmp(kv, "H")) job->H = cli_parse_double("--from: H", v);
             else if (!strcmp(kv, "variance-scale"))
                 job->vscale = cli_parse_positive("--from: variance-scale", v, "factor");
@@ -247,6 +268,13 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
     case 'R':
         job->random_nb = parse_int("--random-neighborhoods", optarg, 1, 256);
         break;
+    case 'X':
+        job->displacements = parse_displacements("--displacements", optarg);
+        g->given_disp = 1;
+        break;
+    case 'T':
+        job->taps = parse_int("--taps", optarg, 1, NL_SUBDIV_MAX_TAPS);
+        break;
     case 'u':
         job->H = cli_parse_double("--H", optarg);
         if (!(job->H > 0 && job->H < 1))
@@ -285,6 +313,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         {"cell", required_argument, 0, 'C'},       {"wrap", no_argument, 0, 'W'},
         {"from", required_argument, 0, 'F'},
         {"octaves", required_argument, 0, 'V'},
+        {"displacements", required_argument, 0, 'X'}, {"taps", required_argument, 0, 'T'},
         {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "synth")) != -1) {
@@ -298,7 +327,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'p': g->preview = optarg; break;
         case 'j': g->json = 1; break;
         case 'o': g->out = optarg; break;
-        case 'L': case 'N': case 't': case 'R': case 'u': case 'v': case 'D': case 'V':
+        case 'L': case 'N': case 't': case 'R': case 'u': case 'v': case 'D': case 'V': case 'X': case 'T':
             parse_numeric(c, job, g);
             break;
         case 'P': job->nonperiodic = 1; break;
@@ -324,7 +353,7 @@ static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_a
         if (optind < argc || g->acf || g->spec || g->size || g->spacing || g->given_L || g->given_N ||
             g->given_tol || g->given_vs || g->given_density || g->origin || job->nonperiodic || job->kernel ||
             job->exemplar || job->angle || job->radius || job->cell || job->wrap || job->octaves ||
-            job->seed_image || job->random_nb || !isnan(job->H))
+            job->seed_image || job->random_nb || !isnan(job->H) || g->given_disp || job->taps)
             cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
                     "and --json");
         apply_from(g->from, job, g);
@@ -388,6 +417,14 @@ static void check_method_options(const cli_synth_job *job, const cli_synth_args 
     only_for("--wrap", job->wrap, job->method, "sparse");
     only_for("--seed-image", job->seed_image != NULL, job->method, "subdiv");
     only_for("--random-neighborhoods", job->random_nb != 0, job->method, "subdiv");
+    only_for("--displacements", g->given_disp, job->method, "subdiv");
+    only_for("--taps", job->taps != 0, job->method, "subdiv");
+    if (job->random_nb && job->displacements)
+        cli_die(2, "--displacements correlated: expected the standard neighbourhoods, got --random-neighborhoods %d "
+                "(random neighbourhoods have no common error covariance)", job->random_nb);
+    if (job->taps && job->displacements != NL_SUBDIV_DISP_ERROR)
+        cli_die(2, "--taps %d: expected --displacements correlated (independent displacements have no filter)",
+                job->taps);
     only_for("--H", !isnan(job->H), job->method, "midpoint");
     only_for("--variance-scale", g->given_vs, job->method, "midpoint");
     only_for("--density", g->given_density, job->method, "faulting sparse");

@@ -21,6 +21,8 @@ typedef struct {
     long origin[2];        /* --origin, finest-grid indices */
     const char *seed_image;/* --seed-image */
     int random_nb;         /* --random-neighborhoods K, 0 = the standard block */
+    int displacements;     /* --displacements: NL_SUBDIV_DISP_INDEPENDENT or _ERROR (correlated) */
+    int taps;              /* --taps M, 0 = the default */
     double H;              /* midpoint: Hurst exponent, NAN if unset */
     double vscale;         /* midpoint: --variance-scale factor per level */
     double density;        /* faulting, sparse: --density */

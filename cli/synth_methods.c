@@ -44,8 +44,13 @@ static json_t *levels_report(const nl_subdiv_coeffs *c)
         for (int j = 0; j < l->nclass; j++)
             fl |= l->cls[j].flags, v = fmax(v, l->cls[j].variance);
         cli_subdiv_flags(fl, buf, sizeof buf);
-        json_array_append_new(a, json_pack("{s:i,s:f,s:i,s:f,s:s}", "level", k, "spacing", l->spacing, "N", l->N,
-                                           "max_variance", v, "flags", buf));
+        json_t *o = json_pack("{s:i,s:f,s:i,s:f,s:s}", "level", k, "spacing", l->spacing, "N", l->N,
+                              "max_variance", v, "flags", buf);
+        if (l->filt) {
+            json_object_set_new(o, "taps", json_integer(l->taps));
+            json_object_set_new(o, "filter_error", json_real(l->filt_error));
+        }
+        json_array_append_new(a, o);
     }
     return a;
 }
@@ -72,6 +77,8 @@ static nl_subdiv_plan *subdiv_plan(const cli_synth_job *job, nl_field **img)
     o.nonperiodic = job->nonperiodic;
     o.allow_not_pd = job->clamp;
     o.random_nb = job->random_nb;
+    o.displacements = job->displacements;
+    o.taps = job->taps;
     *img = NULL;
     if (job->dim > 2)
         cli_die(2, "synth subdiv: expected a 1D or 2D --size, got %dD", job->dim);
@@ -103,6 +110,9 @@ static void subdiv_describe(const cli_synth_job *job, const nl_subdiv_plan *p, c
                          job->seed_image ? ",seed-image" : "");
     if (job->random_nb)
         k += (size_t)snprintf(r->method + k, sizeof r->method - k, ",random-neighborhoods=%d", job->random_nb);
+    if (c->level[0].filt)
+        k += (size_t)snprintf(r->method + k, sizeof r->method - k, ",displacements=correlated,taps=%d",
+                              c->level[0].taps);
     if (job->nonperiodic)
         k += (size_t)snprintf(r->method + k, sizeof r->method - k, ",origin=%ld:%ld", job->origin[0],
                               job->origin[1]);
