@@ -1,8 +1,6 @@
 /* noiselab coeffs: midpoint estimation coefficients of generalized
  * stochastic subdivision, level by level. */
-#include "cli.h"
-#include "../core/model.h"
-#include "../synth/subdiv.h"
+#include "coeffs.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -11,7 +9,8 @@
 
 static const char help[] =
     "usage: noiselab coeffs --acf SPEC --dim 1|2 [--neighborhood N|auto] [--tol E] [--levels L]\n"
-    "                       [--spacing0 S] [--json]\n\n"
+    "                       [--spacing0 S] [--displacements independent|correlated [--taps M]]\n"
+    "                       [--error --size N[xM]] [--json]\n\n"
     "Solves the orthogonality equations of generalized stochastic subdivision\n"
     "(Lewis 1987, eqs. 4, 10, 12) at every level, with the displacement variance\n"
     "(eq. 7), the condition number and the flags of each point class.\n\n"
@@ -22,6 +21,18 @@ static const char help[] =
     "  --levels L        number of levels (default 10)\n"
     "  --spacing0 S      observation spacing at level 0, in lag units (default 1);\n"
     "                    level k uses S / 2^k\n"
+    "  --displacements correlated  the new points of a level displaced together (see synth\n"
+    "                    subdiv): each level also gets its filter, taps g[a][b][p] (1D: g[p],\n"
+    "                    p = -M..M; 2D: classes a, b, rows py = -M..M of columns px), and the\n"
+    "                    displacement covariance it realises against the error covariance it\n"
+    "                    approximates, at cell offsets 0..2M along x (and y, 2D)\n"
+    "  --taps M          correlated: the filter's half-width in cells (default 4 in 1D, 2 in 2D)\n"
+    "  --error           the exact expected ACF of a periodic field of --size samples made with\n"
+    "                    these levels (covariance propagated level by level) against the target:\n"
+    "                    per direction (x; 2D also y and the diagonal) \"lag\" (samples),\n"
+    "                    \"exact_acf\", \"target_acf\", and \"method_error\", the largest\n"
+    "                    |exact - R| / R(0); at most 4096 samples; --levels then defaults to a\n"
+    "                    coarse grid of 8 samples and the output spacing is S / 2^levels\n"
     "  --json            {\"levels\": [{\"level\", \"spacing\", \"N\", \"classes\": [{\"class\",\n"
     "                    \"coefficients\", \"variance\", \"condition\", \"flags\"}]}]}\n"
     "Coefficients are in neighbourhood order: k = 1-N..N in 1D; row-major over\n"
@@ -52,6 +63,8 @@ static void print_text(const nl_subdiv_coeffs *c, const char *spec)
                 snprintf(cond, sizeof cond, "%-10s", "unbounded");
             printf("level %2d  spacing %-10.6g N %d  %-6s variance %-12.6f condition %s flags %s\n", l->level,
                    l->spacing, l->N, nl_subdiv_class_name(cl->cls), cl->variance, cond, fl[0] ? fl : "-");
+            if (l->filt && j == l->nclass - 1)
+                printf("    correlated displacements: %d taps, filter error %.3g R(0)\n", l->taps, l->filt_error);
             if (c->dim == 1) {
                 /* the right half a_1..a_N, as in Lewis's Table 1 (a_k = a_{1-k}) */
                 printf("    a_1..a_N:");
@@ -90,75 +103,149 @@ static void check_finite(const nl_model *m, const nl_subdiv_coeffs *c, const cha
         }
 }
 
-int cli_cmd_coeffs(int argc, char **argv)
+typedef struct {
+    const char *spec, *size;
+    int dim, N, levels, json, disp, taps, error;
+    double tol, s0;
+} coeffs_args;
+
+/* Returns 1 when --help was printed. */
+static int parse(int argc, char **argv, coeffs_args *a)
 {
     static const struct option opts[] = {
         {"acf", required_argument, 0, 'a'},      {"dim", required_argument, 0, 'd'},
         {"neighborhood", required_argument, 0, 'N'}, {"tol", required_argument, 0, 't'},
         {"levels", required_argument, 0, 'L'},   {"spacing0", required_argument, 0, 's'},
         {"json", no_argument, 0, 'j'},           {"help", no_argument, 0, 'h'},
+        {"displacements", required_argument, 0, 'X'}, {"taps", required_argument, 0, 'T'},
+        {"error", no_argument, 0, 'e'},          {"size", required_argument, 0, 'n'},
         {0}};
-    const char *spec = NULL;
-    int c, dim = 0, N = 2, levels = 10, json = 0;
-    double tol = 1e-4, s0 = 1;
-    nl_model *m;
-    nl_subdiv_coeffs *co;
+    int c;
     while ((c = cli_getopt(argc, argv, ":h", opts, "coeffs")) != -1) {
         switch (c) {
-        case 'a': spec = optarg; break;
-        case 'd': dim = cli_parse_dim(optarg, 2); break;
+        case 'a': a->spec = optarg; break;
+        case 'd': a->dim = cli_parse_dim(optarg, 2); break;
         case 'N':
-            N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
+            a->N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
             break;
-        case 't':
-            tol = cli_parse_positive("--tol", optarg, "number");
+        case 't': a->tol = cli_parse_positive("--tol", optarg, "number"); break;
+        case 'L': a->levels = (int)cli_parse_count("--levels", optarg, 1); break;
+        case 's': a->s0 = cli_parse_positive("--spacing0", optarg, "number"); break;
+        case 'j': a->json = 1; break;
+        case 'X':
+            if (strcmp(optarg, "independent") && strcmp(optarg, "correlated"))
+                cli_die(2, "--displacements: expected independent or correlated, got \"%s\"", optarg);
+            a->disp = strcmp(optarg, "correlated") == 0;
             break;
-        case 'L': levels = (int)cli_parse_count("--levels", optarg, 1); break;
-        case 's':
-            s0 = cli_parse_positive("--spacing0", optarg, "number");
+        case 'T':
+            a->taps = (int)cli_parse_count("--taps", optarg, 1);
+            if (a->taps > NL_SUBDIV_MAX_TAPS)
+                cli_die(2, "--taps: expected 1 to %d, got \"%s\"", NL_SUBDIV_MAX_TAPS, optarg);
             break;
-        case 'j': json = 1; break;
-        case 'h': fputs(help, stdout); return 0;
+        case 'e': a->error = 1; break;
+        case 'n': a->size = optarg; break;
+        case 'h': fputs(help, stdout); return 1;
         }
     }
     cli_no_operands("coeffs", argc, argv);
-    if (!spec)
+    return 0;
+}
+
+/* The options against each other and the work they ask for. */
+static void check_args(coeffs_args *a, size_t *n)
+{
+    if (!a->spec)
         cli_die(2, "coeffs: --acf: expected an autocorrelation model (see noiselab models)");
-    if (!dim)
+    if (!a->dim)
         cli_die(2, "coeffs: --dim: expected 1 or 2");
-    if (levels > 40)
-        cli_die(2, "--levels: expected at most 40, got %d", levels);
-    if (N > (dim == 1 ? 64 : 8))
-        cli_die(2, "--neighborhood: expected at most %d in %dD, got %d", dim == 1 ? 64 : 8, dim, N);
+    if (a->taps && !a->disp)
+        cli_die(2, "--taps %d: expected --displacements correlated (independent displacements have no filter)",
+                a->taps);
+    if (a->size && !a->error)
+        cli_die(2, "--size %s: expected --error (the size of the field whose exact ACF it computes)", a->size);
+    if (a->error) {
+        if (!a->size)
+            cli_die(2, "--error: expected --size N%s", a->dim == 2 ? "xM" : "");
+        if (cli_parse_size("--size", a->size, n, 2) != a->dim)
+            cli_die(2, "--size %s: expected a %dD size like --dim", a->size, a->dim);
+        if (n[0] * (a->dim == 2 ? n[1] : 1) > 4096)
+            cli_die(2, "--size %s: expected at most 4096 samples for --error (the exact covariance is a "
+                    "matrix of samples^2 doubles)", a->size);
+        if (!a->levels && !(a->levels = nl_subdiv_default_levels(a->dim, n, 8)))
+            cli_die(2, "--size %s: expected a size divisible by 2 with a coarse grid of at least 8 samples",
+                    a->size);
+    }
+    if (!a->levels)
+        a->levels = 10;
+    if (a->levels > 40)
+        cli_die(2, "--levels: expected at most 40, got %d", a->levels);
+    if (a->N > (a->dim == 1 ? 64 : 8))
+        cli_die(2, "--neighborhood: expected at most %d in %dD, got %d", a->dim == 1 ? 64 : 8, a->dim, a->N);
     /* 2D: three (2N)^2 systems per level, O((2N)^6) each when singular (SVD):
      * N = 8 takes about 0.6 s a level, so levels (2N)^6 <= 1.2e8 keeps it to seconds */
-    if (dim == 2 && (double)levels * pow(2.0 * N, 6) > 1.2e8)
+    if (a->dim == 2 && (double)a->levels * pow(2.0 * a->N, 6) > 1.2e8)
         cli_die(2, "--neighborhood %d with --levels %d in 2D: expected levels (2N)^6 <= 1.2e8 (at most %d levels "
-                "with N = %d)", N, levels, (int)(1.2e8 / pow(2.0 * N, 6)), N);
-    cli_check(nl_model_parse(spec, &m));
-    cli_check(nl_subdiv_coeffs_alloc(m, dim, levels, s0, N, tol, dim == 1 ? 16 : 6, &co));
-    check_finite(m, co, spec);
-    if (json) {
-        json_t *lv = json_array();
-        for (int k = 0; k < co->levels; k++) {
-            const nl_subdiv_level *l = &co->level[k];
-            json_t *cls = json_array();
-            for (int j = 0; j < l->nclass; j++) {
-                const nl_subdiv_class *cl = &l->cls[j];
-                json_array_append_new(
-                    cls, json_pack("{s:s,s:o,s:f,s:f,s:o,s:f,s:o}", "class", nl_subdiv_class_name(cl->cls),
-                                   "coefficients", cli_json_array(cl->a, cl->n), "variance", cl->variance,
-                                   "raw_variance", cl->raw_variance,
-                                   "condition", isfinite(cl->condition) ? json_real(cl->condition) : json_null(),
-                                   "min_eigenvalue", cl->min_eigenvalue, "flags", flags_json(cl->flags)));
-            }
-            json_array_append_new(lv, json_pack("{s:i,s:f,s:i,s:o}", "level", l->level, "spacing", l->spacing, "N",
-                                                l->N, "classes", cls));
+                "with N = %d)", a->N, a->levels, (int)(1.2e8 / pow(2.0 * a->N, 6)), a->N);
+}
+
+static json_t *levels_json(const nl_subdiv_coeffs *co, const nl_model *m)
+{
+    json_t *lv = json_array();
+    for (int k = 0; k < co->levels; k++) {
+        const nl_subdiv_level *l = &co->level[k];
+        json_t *cls = json_array(), *o;
+        for (int j = 0; j < l->nclass; j++) {
+            const nl_subdiv_class *cl = &l->cls[j];
+            json_array_append_new(
+                cls, json_pack("{s:s,s:o,s:f,s:f,s:o,s:f,s:o}", "class", nl_subdiv_class_name(cl->cls),
+                               "coefficients", cli_json_array(cl->a, cl->n), "variance", cl->variance,
+                               "raw_variance", cl->raw_variance,
+                               "condition", isfinite(cl->condition) ? json_real(cl->condition) : json_null(),
+                               "min_eigenvalue", cl->min_eigenvalue, "flags", flags_json(cl->flags)));
         }
-        cli_json_print(json_pack("{s:s,s:i,s:f,s:o,s:o}", "model", spec, "dim", dim, "spacing0", s0, "flags",
-                                 flags_json(co->flags), "levels", lv));
+        o = json_pack("{s:i,s:f,s:i,s:o}", "level", l->level, "spacing", l->spacing, "N", l->N, "classes", cls);
+        if (l->filt)
+            json_object_set_new(o, "displacements", cli_coeffs_filter_json(l, m, co->dim));
+        json_array_append_new(lv, o);
+    }
+    return lv;
+}
+
+int cli_cmd_coeffs(int argc, char **argv)
+{
+    coeffs_args a = {NULL, NULL, 0, 2, 0, 0, 0, 0, 0, 1e-4, 1};
+    size_t n[3] = {0, 0, 0};
+    nl_model *m;
+    nl_subdiv_coeffs *co;
+    json_t *err = NULL;
+    double e = 0;
+    if (parse(argc, argv, &a))
+        return 0;
+    check_args(&a, n);
+    cli_check(nl_model_parse(a.spec, &m));
+    cli_check(nl_subdiv_coeffs_alloc(m, a.dim, a.levels, a.s0, a.N, a.tol, a.dim == 1 ? 16 : 6, &co));
+    check_finite(m, co, a.spec);
+    if (a.disp)
+        cli_check(nl_subdiv_coeffs_correlate(co, m, a.taps ? a.taps : a.dim == 1 ? 4 : 2, NL_SUBDIV_DISP_ERROR));
+    if (a.error)
+        err = cli_coeffs_error_json(co, m, n, &e);
+    if (a.json) {
+        json_t *o = json_pack("{s:s,s:i,s:f,s:s,s:o,s:o}", "model", a.spec, "dim", a.dim, "spacing0", a.s0,
+                              "displacements", a.disp ? "correlated" : "independent", "flags",
+                              flags_json(co->flags), "levels", levels_json(co, m));
+        if (err) {
+            json_object_set_new(o, "error", json_pack("{s:s,s:f,s:o,s:f}", "size", a.size, "spacing",
+                                                      ldexp(a.s0, -co->levels), "directions", err,
+                                                      "method_error", e));
+        }
+        cli_json_print(o);
     } else {
-        print_text(co, spec);
+        print_text(co, a.spec);
+        if (err) {
+            printf("# exact expected ACF of a periodic %s field: method error max |exact - R| / R(0) = %.3g\n",
+                   a.size, e);
+            json_decref(err);
+        }
     }
     nl_subdiv_coeffs_free(co);
     nl_model_free(m);

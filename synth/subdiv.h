@@ -163,6 +163,13 @@ int nl_subdiv_coeffs_correlate(nl_subdiv_coeffs *c, const nl_model *m, int taps,
  * eq. (7) variances when independent.  Pure. */
 double nl_subdiv_disp_realised(const nl_subdiv_level *l, int dim, int a, int b, int mx, int my);
 
+/* The covariance the displacements of a level are meant to have, for
+ * target NL_SUBDIV_DISP_ERROR or _NEWNEW (above), classes a, b, cell offset
+ * (mx, my), evaluated from m: what nl_subdiv_disp_realised approximates.
+ * NAN when out of memory.  As thread-safe as the model. */
+double nl_subdiv_disp_target(const nl_subdiv_level *l, const nl_model *m, int dim, int target, int a, int b, int mx,
+                             int my);
+
 /* Eq. (12) for any observation set: n points pts[i*dim..] and the target,
  * in lag units.  Fills cls (a must hold n doubles); `reset` gives the
  * nearest-neighbour coefficients to use when the pseudo-inverse is uniform

@@ -109,18 +109,42 @@ static int rtable_make(const nl_model *m, int dim, double s, int H, rtable *t)
 
 static inline double rt(const rtable *t, int x, int y) { return t->v[(y + t->HY) * t->W + x + t->H]; }
 
+/* The sign of the term (i, j) of C (points i of a's pattern, j of b's): the
+ * error covariance takes every term as weighted; new-new, R_nn - A R_oo A^T,
+ * drops the cross terms and negates the old-old ones. */
+static double term_sign(int i, int j, int target)
+{
+    if (target != NL_SUBDIV_DISP_NEWNEW)
+        return 1;
+    return (i == 0) != (j == 0) ? 0 : i > 0 ? -1 : 1;
+}
+
 /* C^{ab}(m) at cell offset (mx, my) for the chosen target (see the top). */
 static double disp_cov(const pattern *pa, const pattern *pb, const rtable *t, int mx, int my, int target)
 {
     double v = 0;
     for (int i = 0; i < pa->n; i++)
-        for (int j = 0; j < pb->n; j++) {
-            double r = pa->w[i] * pb->w[j] * rt(t, pb->hx[j] + 2 * mx - pa->hx[i], pb->hy[j] + 2 * my - pa->hy[i]);
-            if (target == NL_SUBDIV_DISP_NEWNEW && (i == 0) != (j == 0))
-                continue;
-            /* new-new: R_nn - A R_oo A^T */
-            v += target == NL_SUBDIV_DISP_NEWNEW && i > 0 ? -r : r;
-        }
+        for (int j = 0; j < pb->n; j++)
+            v += term_sign(i, j, target) * pa->w[i] * pb->w[j] *
+                 rt(t, pb->hx[j] + 2 * mx - pa->hx[i], pb->hy[j] + 2 * my - pa->hy[i]);
+    return v;
+}
+
+double nl_subdiv_disp_target(const nl_subdiv_level *l, const nl_model *m, int dim, int target, int a, int b, int mx,
+                             int my)
+{
+    pattern p[2] = {{0}};
+    double v = NAN;
+    if (pattern_make(l, dim, a, &p[0]) == NL_OK && pattern_make(l, dim, b, &p[1]) == NL_OK) {
+        v = 0;
+        for (int i = 0; i < p[0].n; i++)
+            for (int j = 0; j < p[1].n; j++) {
+                double lag[3] = {0.5 * l->spacing * (p[1].hx[j] + 2 * mx - p[0].hx[i]),
+                                 0.5 * l->spacing * (p[1].hy[j] + 2 * my - p[0].hy[i]), 0};
+                v += term_sign(i, j, target) * p[0].w[i] * p[1].w[j] * nl_model_acf(m, dim, lag);
+            }
+    }
+    pattern_free(&p[0]), pattern_free(&p[1]);
     return v;
 }
 
