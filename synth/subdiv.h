@@ -142,8 +142,10 @@ int nl_subdiv_coeffs_randomize(nl_subdiv_coeffs *c, const nl_model *m, int k, ui
  * 2i + 1; 2D: cell (i, j) holds face (2i+1, 2j+1), edge-x (2i+1, 2j) and
  * edge-y (2i, 2j+1), in cls[] order), get displacements
  *     d_a(i) = sum_b sum_{|p| <= M} g^{ab}(p) w_b(i + p),
- * w_b(i) the N(0, 1) number the independent construction draws for class
- * b's point of cell i (NL_SUBDIV_STREAM + level + 1 at its fine index), and
+ * w_b(i) the N(0, 1) number the independent construction with the standard
+ * neighbourhoods draws for class b's point of cell i (1D: nl_rng_gauss at
+ * the point's fine index; 2D: the pairs described under NL_SUBDIV_STREAM
+ * below), and
  * g a filter whose covariance approximates, over cell offsets m,
  *   NL_SUBDIV_DISP_ERROR   the covariance of the true estimation errors,
  *   NL_SUBDIV_DISP_NEWNEW  R_nn - A R_oo A^T, which makes the new points'

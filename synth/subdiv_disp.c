@@ -39,6 +39,7 @@
 
 #include <gsl/gsl_complex_math.h>
 #include <gsl/gsl_eigen.h>
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -157,11 +158,16 @@ static int filter_from_cov(int dim, int nc, int K, int L, int M, const double *C
     gsl_matrix_complex *V = gsl_matrix_complex_alloc((size_t)nc, (size_t)nc);
     gsl_vector *lam = gsl_vector_alloc((size_t)nc);
     gsl_eigen_hermv_workspace *ws = gsl_eigen_hermv_alloc((size_t)nc);
+    double *cs = malloc(2 * (size_t)L * sizeof *cs);
     int st = NL_OK;
-    if (!S || !V || !lam || !ws) {
+    if (!S || !V || !lam || !ws || !cs) {
         st = NL_ERROR(NL_ENOMEM, "out of memory");
         goto done;
     }
+    /* e^{2 pi i q / L}, q = 0..L-1: every phase below, 2 pi (fx x + fy y) / L,
+     * is one of these (L = ly in 2D, fy = 0 in 1D) */
+    for (int q = 0; q < L; q++)
+        cs[2 * q] = cos(2 * M_PI * q / L), cs[2 * q + 1] = sin(2 * M_PI * q / L);
     memset(g, 0, (size_t)(nc * nc * T * TY) * sizeof *g);
     for (int fy = 0; fy < ly; fy++)
         for (int fx = 0; fx < L; fx++) {
@@ -170,9 +176,10 @@ static int filter_from_cov(int dim, int nc, int K, int L, int M, const double *C
                     double re = 0, im = 0;
                     for (int y = -ky; y <= ky; y++)
                         for (int x = -K; x <= K; x++) {
-                            double ph = -2 * M_PI * ((double)fx * x / L + (double)fy * y / ly);
+                            /* phase -2 pi (fx x + fy y) / L */
+                            int q = ((-(fx * x + fy * y)) % L + L) % L;
                             double c = C[((a * nc + b) * (dim == 2 ? W : 1) + y + ky) * W + x + K];
-                            re += c * cos(ph), im += c * sin(ph);
+                            re += c * cs[2 * q], im += c * cs[2 * q + 1];
                         }
                     gsl_matrix_complex_set(S, (size_t)a, (size_t)b, gsl_complex_rect(re, im));
                 }
@@ -192,9 +199,9 @@ static int filter_from_cov(int dim, int nc, int K, int L, int M, const double *C
                     }
                     for (int py = -my; py <= my; py++)
                         for (int px = -M; px <= M; px++) {
-                            double ph = 2 * M_PI * ((double)fx * px / L + (double)fy * py / ly);
+                            int q = ((fx * px + fy * py) % L + L) % L;
                             g[((a * nc + b) * TY + py + my) * T + px + M] +=
-                                (GSL_REAL(G) * cos(ph) - GSL_IMAG(G) * sin(ph)) / ((double)L * ly);
+                                (GSL_REAL(G) * cs[2 * q] - GSL_IMAG(G) * cs[2 * q + 1]) / ((double)L * ly);
                         }
                 }
         }
@@ -203,6 +210,7 @@ done:
     gsl_matrix_complex_free(V);
     gsl_vector_free(lam);
     gsl_eigen_hermv_free(ws);
+    free(cs);
     return st;
 }
 
@@ -259,7 +267,7 @@ static int correlate_level(nl_subdiv_level *l, const nl_model *m, int dim, int M
     for (int a = 0; a < nc && !st; a++)
         st = pattern_make(l, dim, a, &p[a]);
     if (!st)
-        st = rtable_make(m, dim, l->spacing, 2 * K + 2 * l->N + 2, &t);
+        st = rtable_make(m, dim, l->spacing, 2 * K + 4 * l->N, &t); /* |pattern offsets| <= 4N - 2 half-cells */
     for (int a = 0; a < nc && !st; a++)
         for (int b = 0; b < nc; b++)
             for (int y = 0; y < WY; y++)
@@ -311,16 +319,36 @@ int nl_subdiv_coeffs_correlate(nl_subdiv_coeffs *c, const nl_model *m, int taps,
     return st;
 }
 
-/* The white number of class a's point in cell (i, j): the one the
- * independent construction draws there (fine index 2i + ox, 2j + oy). */
-static double white(int dim, int a_cls, uint64_t seed, unsigned lv, long i, long j)
-{
-    long I = 2 * i + (a_cls == NL_SUBDIV_EDGE_Y ? 0 : 1);
-    long J = dim == 2 ? 2 * j + (a_cls == NL_SUBDIV_EDGE_X ? 0 : 1) : 0;
-    return nl_rng_gauss(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
-}
-
 static long wrapc(long i, long n) { return n ? ((i % n) + n) % n : i; }
+
+/* The white numbers of one row of cells, per class: the numbers the
+ * independent construction draws for the same points (subdiv.h): 1D the
+ * midpoint 2i + 1's own; 2D the pairs of the standard neighbourhoods, on
+ * row 2j + 1 key i for (edge-y, face) of cell i, on row 2j key k for the
+ * edge-x points of cells 2k and 2k + 1.  x0 is the first cell, per the
+ * period in cells (0: none); w[b * stride + x]. */
+static void white_row(int dim, uint64_t seed, unsigned lv, long x0, long j, long n, long per, double *w,
+                      long stride)
+{
+    const uint32_t st = NL_SUBDIV_STREAM + lv + 1;
+    long cached = LONG_MIN;
+    double g[2], e[2] = {0, 0};
+    for (long x = 0; x < n; x++) {
+        long i = wrapc(x0 + x, per), k = i >= 0 ? i / 2 : -((-i + 1) / 2);
+        if (dim == 1) {
+            w[x] = nl_rng_gauss(seed, st, rng_index(1, 2 * i + 1, 0));
+            continue;
+        }
+        nl_rng_gauss_pair(seed, st, rng_index(2, i, 2 * j + 1), g);
+        if (k != cached) {
+            nl_rng_gauss_pair(seed, st, rng_index(2, k, 2 * j), e);
+            cached = k;
+        }
+        w[x] = g[1];                   /* face (2i + 1, 2j + 1) */
+        w[stride + x] = e[i - 2 * k];  /* edge-x (2i + 1, 2j) */
+        w[2 * stride + x] = g[0];      /* edge-y (2i, 2j + 1) */
+    }
+}
 
 int nl_subdiv_disp_fill(const nl_subdiv_level *l, int dim, uint64_t seed, unsigned lv, const long *c0,
                         const long *nc_, const long *per, double *out)
@@ -330,25 +358,27 @@ int nl_subdiv_disp_fill(const nl_subdiv_level *l, int dim, uint64_t seed, unsign
     double *w = malloc((size_t)(nc * wx * wy) * sizeof *w);
     if (!w)
         return NL_ERROR(NL_ENOMEM, "out of memory for the displacements of level %u", lv);
-    for (int b = 0; b < nc; b++)
-        for (long y = 0; y < wy; y++)
-            for (long x = 0; x < wx; x++)
-                w[(b * wy + y) * wx + x] = white(dim, l->cls[b].cls, seed, lv, wrapc(c0[0] - M + x, per[0]),
-                                                 dim == 2 ? wrapc(c0[1] - yM + y, per[1]) : 0);
+    /* w[(b wy + y) wx + x]: class b, cell (c0 - M + x, c1 - M + y) */
+#pragma omp parallel for schedule(static) if (wx * wy > 16384)
+    for (long y = 0; y < wy; y++)
+        white_row(dim, seed, lv, c0[0] - M, dim == 2 ? wrapc(c0[1] - yM + y, per[1]) : 0, wx, per[0],
+                  w + y * wx, wx * wy);
+    /* d_a = sum_b g^{ab} * w_b, a row of cells at a time, the taps outside
+     * so that the innermost loop runs along the row */
 #pragma omp parallel for schedule(static) if (nx * ny > 16384)
     for (long y = 0; y < ny; y++)
-        for (int a = 0; a < nc; a++)
-            for (long x = 0; x < nx; x++) {
-                double s = 0;
-                for (int b = 0; b < nc; b++)
-                    for (int py = 0; py < TY; py++) {
-                        const double *gr = l->filt + ((a * nc + b) * TY + py) * T;
-                        const double *wr = w + (b * wy + y + py) * wx + x;
-                        for (int px = 0; px < T; px++)
-                            s += gr[px] * wr[px];
+        for (int a = 0; a < nc; a++) {
+            double *o = out + (a * ny + y) * nx;
+            memset(o, 0, (size_t)nx * sizeof *o);
+            for (int b = 0; b < nc; b++)
+                for (int py = 0; py < TY; py++)
+                    for (int px = 0; px < T; px++) {
+                        const double gv = l->filt[((a * nc + b) * TY + py) * T + px];
+                        const double *wr = w + (b * wy + y + py) * wx + px;
+                        for (long x = 0; x < nx; x++)
+                            o[x] += gv * wr[x];
                     }
-                out[(a * ny + y) * nx + x] = s;
-            }
+        }
     free(w);
     return NL_OK;
 }
