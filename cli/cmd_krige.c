@@ -85,8 +85,16 @@ static void parse(int argc, char **argv, opts_t *a)
         }
     }
     cli_no_operands("krige", argc, argv);
-    if (!a->data || !a->spec || !a->grid || !a->ext || !a->out)
-        cli_die(2, "krige: expected --data, --acf, --grid, --extent and -o");
+    if (!a->data)
+        cli_die(2, "krige: --data: expected a table of points (x, y[, z], value)");
+    if (!a->spec)
+        cli_die(2, "krige: --acf: expected a covariance model (see noiselab models)");
+    if (!a->grid)
+        cli_die(2, "krige: --grid: expected the output grid WxH[xD]");
+    if (!a->ext)
+        cli_die(2, "krige: --extent: expected the grid's extent a:b,c:d[,e:f]");
+    if (!a->out)
+        cli_die(2, "krige: -o: expected an output file (.exr or .tsv)");
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);
     parse_extent(a);
     if (!cli_has_ext(a->out, ".exr") && !cli_has_ext(a->out, ".tsv"))

@@ -30,6 +30,7 @@ static const struct {
     {"noiselab.size", offsetof(nl_meta, size), sizeof(((nl_meta *)0)->size)},
     {"noiselab.version", offsetof(nl_meta, version), sizeof(((nl_meta *)0)->version)},
     {"noiselab.flags", offsetof(nl_meta, flags), sizeof(((nl_meta *)0)->flags)},
+    {"noiselab.origin", offsetof(nl_meta, origin), sizeof(((nl_meta *)0)->origin)},
 };
 enum { NATTR = sizeof attrs / sizeof *attrs };
 

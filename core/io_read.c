@@ -56,7 +56,7 @@ int nl_io_slurp(const char *path, unsigned char **buf, size_t *len)
     int st, fd = open(path, O_RDONLY | O_CLOEXEC);
     *buf = NULL, *len = 0;
     if (fd < 0)
-        return NL_ERROR(NL_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+        return NL_ERROR(NL_EINPUT, "cannot open %s: %s", path, strerror(errno));
     if (fstat(fd, &sb) == 0 && S_ISDIR(sb.st_mode)) {
         close(fd);
         return NL_ERROR(NL_EINPUT, "%s: is a folder; expected a file", path);
@@ -83,7 +83,7 @@ int nl_io_slurp(const char *path, unsigned char **buf, size_t *len)
 }
 
 /* A TSV table in memory, through a stream (the parser reads lines). */
-static int tsv_mem(const char *path, unsigned char *buf, size_t len, nl_field **out)
+static int tsv_mem(const char *path, unsigned char *buf, size_t len, nl_field **out, nl_meta *meta)
 {
     FILE *fp;
     int st;
@@ -92,7 +92,7 @@ static int tsv_mem(const char *path, unsigned char *buf, size_t len, nl_field **
         return NL_ERROR(NL_EINPUT, "%s: expected a TSV header line, found none", path);
     if (!(fp = fmemopen(buf, len, "r")))
         return NL_ERROR(NL_ENOMEM, "out of memory reading %s", path);
-    st = nl_tsv_read_stream(fp, path, out);
+    st = nl_tsv_read_stream(fp, path, out, meta);
     fclose(fp);
     return st;
 }
@@ -120,7 +120,7 @@ int nl_field_read(const char *path, nl_field **out, nl_meta *meta)
     } else if (len >= 4 && memcmp(buf, png_magic, 4) == 0)
         st = nl_png_read_mem(path, buf, len, out);
     else
-        st = tsv_mem(path, buf, len, out);
+        st = tsv_mem(path, buf, len, out, meta);
     free(buf);
     return st;
 }

@@ -22,6 +22,6 @@ int nl_io_slurp(const char *path, unsigned char **buf, size_t *len);
  * messages); same results and codes. */
 int nl_exr_read_mem(const char *path, const unsigned char *buf, size_t len, nl_field **out, nl_meta *meta);
 int nl_png_read_mem(const char *path, const unsigned char *buf, size_t len, nl_field **out);
-int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out);
+int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out, nl_meta *meta);
 
 #endif

@@ -2,7 +2,9 @@
 #include "cloud_scene.h"
 #include "../core/nl_error.h"
 
+#include <errno.h>
 #include <jansson.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -123,9 +125,14 @@ static int scene_rest(json_t *j, const char *path, nl_cloud_scene *s)
 int nl_cloud_scene_read(const char *path, nl_cloud_scene *s)
 {
     json_error_t je;
-    json_t *j = json_load_file(path, 0, &je);
+    FILE *fp = fopen(path, "r");
+    json_t *j;
     int st;
     memset(s, 0, sizeof *s);
+    if (!fp)
+        return NL_ERROR(NL_EINPUT, "cannot open %s: %s", path, strerror(errno));
+    j = json_loadf(fp, 0, &je);
+    fclose(fp);
     if (!j)
         return NL_ERROR(NL_EINPUT, "%s:%d: not valid JSON: %s", path, je.line, je.text);
     if (!json_is_object(j))
