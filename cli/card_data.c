@@ -174,13 +174,19 @@ static void write_radial(const cli_card *c, const nl_field *W, const nl_field *S
     free(cnt), free(r), free(rr);
 }
 
-/* 1D: per.tsv (f, periodogram, model) and welch.tsv (f, Welch), f > 0. */
+/* 1D: per.tsv (f, periodogram, model) and welch.tsv (f, Welch), f > 0.
+ * Ordinates below 1e-12 of the largest (rounding where the spectrum is 0,
+ * e.g. below a power law's fmin) and a zero model are left out (NAN): a
+ * log axis would spend twenty decades on them. */
 static void write_lines(const cli_card *c, const nl_field *P, const nl_field *W, const nl_field *S)
 {
     FILE *fp = open_data(c, "per.tsv");
+    double mx = 0;
     for (size_t k = 1; k <= P->n[0] / 2; k++)
-        fprintf(fp, "%.8g\t%.8g\t%.8g\n", (double)k / ((double)P->n[0] * P->h[0]), P->data[k],
-                S ? S->data[k] : NAN);
+        mx = P->data[k] > mx ? P->data[k] : mx;
+    for (size_t k = 1; k <= P->n[0] / 2; k++)
+        fprintf(fp, "%.8g\t%.8g\t%.8g\n", (double)k / ((double)P->n[0] * P->h[0]),
+                P->data[k] > 1e-12 * mx ? P->data[k] : NAN, S && S->data[k] > 0 ? S->data[k] : NAN);
     close_data(fp);
     fp = open_data(c, "welch.tsv");
     for (size_t k = 1; k <= W->n[0] / 2; k++)

@@ -110,10 +110,12 @@ static void script_1d(FILE *fp, const cli_card *c)
             c->dir, c->spec ? ", '' using 1:5 with lines dt 2 lw 2 lc rgb 'black' title 'model'" : "");
     fprintf(fp, "unset xzeroaxis\nset logscale xy\nset format y '10^{%%L}'\nset key bottom left\n"
                 "set title 'spectrum'\nset xlabel 'cycles per unit'\nset ylabel 'S (two-sided density)'\n"
-                "plot '%s/per.tsv' using 1:2 with points pt 7 ps 0.15 lc rgb '#a0a0a0' title 'periodogram'%s, "
-                "'%s/welch.tsv' using 1:2 with lines lw 2 lc rgb '#1f4e99' title 'Welch, %zu segments of %zu'\n",
-            c->dir, c->spec ? ", '' using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'model'" : "", c->dir,
-            c->nseg, c->seg);
+                "plot '%s/per.tsv' using 1:2 with points pt 7 ps 0.15 lc rgb '#a0a0a0' title 'periodogram', "
+                "'%s/welch.tsv' using 1:2 with lines lw 2 lc rgb '#1f4e99' title 'Welch, %zu segments of %zu'",
+            c->dir, c->dir, c->nseg, c->seg);
+    if (c->spec)
+        fprintf(fp, ", '%s/per.tsv' using 1:3 with lines dt 2 lw 2 lc rgb 'black' title 'model'", c->dir);
+    fprintf(fp, "\n");
     fprintf(fp, "unset logscale\nset format y '%%g'\nset key top right\nset title 'histogram'\n"
                 "set xlabel 'value'\nset ylabel 'density'\n"
                 "plot '%s/hist.tsv' using 1:2 with boxes lc rgb '#9fb6cd' title 'field', "

@@ -14,7 +14,7 @@ static const char help[] =
     "                       [--zscale Z] [--step K] [--colorbar]\n\n"
     "Grey levels: values from LO to HI map onto 0..255 (default: mean +- 3 sd);\n"
     "--colorbar adds the scale to the right: a ramp from LO to HI with their values\n"
-    "and the middle one (96 more columns).\n"
+    "and the middle one (112 more columns).\n"
     "--shade AZ,EL: the field as an obliquely illuminated height field (Lambert),\n"
     "light from azimuth AZ (degrees from +x toward +y) and elevation EL (degrees);\n"
     "heights are multiplied by Z (default 1) in units of the grid spacing.\n"

@@ -13,8 +13,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Columns the bar adds to the right of the field. */
-#define NL_COLORBAR_WIDTH 96
+/* Columns the bar adds to the right of the field: room for numbers of
+ * ten characters ("-1.23e+04", %.3g). */
+#define NL_COLORBAR_WIDTH 112
 
 /* *pix (released by free) receives a (*w) x (*h) 8-bit grey image, row-major,
  * top row first: the first slice of f (n0 x n1) mapped linearly from lo..hi

@@ -372,7 +372,7 @@ Test(cli, render_colorbar)
     cr_assert_eq(nl_png_read(path, &plain), 0);
     snprintf(path, sizeof path, "%s/cb2.png", scratch_dir());
     cr_assert_eq(nl_png_read(path, &bar), 0);
-    cr_assert_eq(bar->n[0], 64 + 96);
+    cr_assert_eq(bar->n[0], 64 + 112);
     cr_assert_eq(bar->n[1], 48);
     for (size_t j = 0; j < 48; j++)
         for (size_t i = 0; i < 64; i++)
