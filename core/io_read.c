@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -81,6 +82,12 @@ int nl_io_slurp(const char *path, unsigned char **buf, size_t *len)
     }
     return st;
 }
+
+#define FIELD(k) {#k, offsetof(nl_meta, k), sizeof(((nl_meta *)0)->k)}
+const nl_meta_field nl_meta_fields[NL_META_NFIELDS] = {
+    FIELD(model), FIELD(method), FIELD(seed), FIELD(spacing), FIELD(size), FIELD(version), FIELD(flags), FIELD(origin),
+};
+#undef FIELD
 
 /* A TSV table in memory, through a stream (the parser reads lines). */
 static int tsv_mem(const char *path, unsigned char *buf, size_t len, nl_field **out, nl_meta *meta)

@@ -10,23 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The provenance keys of a 1D field's TSV, in the order written: the EXR
- * attributes (core/io_exr.c) without their "noiselab." prefix. */
-static const struct {
-    const char *key; /* name in "# key: value" */
-    size_t off;      /* offset of the string in nl_meta */
-    size_t len;      /* its capacity */
-} keys[] = {
-    {"model", offsetof(nl_meta, model), sizeof(((nl_meta *)0)->model)},
-    {"method", offsetof(nl_meta, method), sizeof(((nl_meta *)0)->method)},
-    {"seed", offsetof(nl_meta, seed), sizeof(((nl_meta *)0)->seed)},
-    {"size", offsetof(nl_meta, size), sizeof(((nl_meta *)0)->size)},
-    {"spacing", offsetof(nl_meta, spacing), sizeof(((nl_meta *)0)->spacing)},
-    {"origin", offsetof(nl_meta, origin), sizeof(((nl_meta *)0)->origin)},
-    {"version", offsetof(nl_meta, version), sizeof(((nl_meta *)0)->version)},
-    {"flags", offsetof(nl_meta, flags), sizeof(((nl_meta *)0)->flags)},
-};
-enum { NKEYS = sizeof keys / sizeof *keys };
 
 int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *names, size_t nrows,
                   const double *const *cols)
@@ -60,12 +43,12 @@ int nl_tsv_write(const char *path, const char *comment, int ncols, const char *c
  * character in a value (a path with a newline) is written as a space. */
 static void write_meta(FILE *fp, const nl_meta *meta)
 {
-    for (int i = 0; meta && i < NKEYS; i++) {
-        const char *v = (const char *)meta + keys[i].off;
-        size_t n = strnlen(v, keys[i].len);
+    for (int i = 0; meta && i < NL_META_NFIELDS; i++) {
+        const char *v = (const char *)meta + nl_meta_fields[i].off;
+        size_t n = strnlen(v, nl_meta_fields[i].len);
         if (!n)
             continue;
-        fprintf(fp, "# %s: ", keys[i].key);
+        fprintf(fp, "# %s: ", nl_meta_fields[i].key);
         for (size_t k = 0; k < n; k++)
             fputc((unsigned char)v[k] < 0x20 ? ' ' : v[k], fp);
         fputc('\n', fp);
@@ -113,11 +96,11 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta)
  * is one of nl_meta's; anything else is a comment. */
 static void read_meta_line(const char *line, nl_meta *meta)
 {
-    for (int i = 0; i < NKEYS; i++) {
-        size_t k = strlen(keys[i].key);
-        if (line[1] == ' ' && strncmp(line + 2, keys[i].key, k) == 0 && line[2 + k] == ':' && line[3 + k] == ' ') {
+    for (int i = 0; i < NL_META_NFIELDS; i++) {
+        size_t k = strlen(nl_meta_fields[i].key);
+        if (line[1] == ' ' && strncmp(line + 2, nl_meta_fields[i].key, k) == 0 && line[2 + k] == ':' && line[3 + k] == ' ') {
             const char *v = line + 4 + k;
-            snprintf((char *)meta + keys[i].off, keys[i].len, "%.*s", (int)strcspn(v, "\r\n"), v);
+            snprintf((char *)meta + nl_meta_fields[i].off, nl_meta_fields[i].len, "%.*s", (int)strcspn(v, "\r\n"), v);
             return;
         }
     }

@@ -10,7 +10,10 @@
 # PATH. A command must exit 0 unless its line's comment announces otherwise
 # with the words `exits N` (`# refused: exits 2`), and then it must exit N. A page opts a block out with
 # `<!-- doc-test: skip REASON -->` just before it. Each command may run
-# CMD_SECONDS (default 120); the time of each is printed, never asserted.
+# CMD_SECONDS (default 120); failures and commands of 5 s or more are
+# printed with their time (every command with DOC_VERBOSE=1), never asserted.
+# The page's links to files of the tree, `](path)` and `](path#anchor)`,
+# must name files that exist (pictures of paper-figures/ included).
 set -u
 top=$(cd "$(dirname "$0")/../.." && pwd)
 bin=$(cd "$1" && pwd)
@@ -23,9 +26,14 @@ PATH="$bin:$PATH"
 export PATH
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 tab=$(printf '\t')
-n=0 fail=0
+n=0 links=0 fail=0
 for page in "$@"; do
     name=$(basename "$page")
+    pdir=$(cd "$(dirname "$page")" && pwd)
+    for link in $(grep -o '](\([^)#: ]*\)[)#]' "$page" | sed 's/^](//; s/[)#]$//'); do
+        links=$((links + 1))
+        [ -e "$pdir/$link" ] || { fail=$((fail + 1)); printf 'FAIL %s: links to %s, which does not exist\n' "$name" "$link"; }
+    done
     rm -rf "$work/page" && mkdir -p "$work/page/try"
     ln -s "$top/experiments" "$work/page/experiments"
     ln -s "$bin" "$work/page/bin"
@@ -40,7 +48,7 @@ for page in "$@"; do
         rc=$?
         took=$(( $(date +%s) - start ))
         if [ "$rc" = "$want" ]; then
-            printf 'ok   %s:%s (%ss) %s\n' "$name" "$line" "$took" "$cmd"
+            [ -z "${DOC_VERBOSE:-}" ] && [ "$took" -lt 5 ] || printf 'ok   %s:%s (%ss) %s\n' "$name" "$line" "$took" "$cmd"
         else
             fail=$((fail + 1))
             printf 'FAIL %s:%s exit %s, expected %s (%ss): %s\n' "$name" "$line" "$rc" "$want" "$took" "$cmd"
@@ -48,5 +56,5 @@ for page in "$@"; do
         fi
     done <"$work/cmds"
 done
-echo "documentation: $n commands, $fail failed"
+echo "documentation: $n commands and $links links, $fail failed"
 [ "$fail" -eq 0 ]
