@@ -133,13 +133,11 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
         check_float("--variance", a->vout, vf);
     if (cli_has_ext(a->out, ".exr"))
         st = nl_exr_write(tmp, f, &meta);
-    else {
-        static const char *const names[] = {"x", "value"};
+    else { /* 1D: the record as in EXR, and cell centres as x */
         double *xs = cli_malloc(a->g[0] * sizeof *xs);
         for (size_t i = 0; i < a->g[0]; i++)
             xs[i] = a->lo[0] + ((double)i + 0.5) * f->h[0];
-        const double *cols[2] = {xs, f->data};
-        st = nl_tsv_write(tmp, NULL, 2, names, a->g[0], cols);
+        st = nl_tsv_write_field(tmp, f, &meta, "x", xs);
         free(xs);
     }
     if (!st && vf)

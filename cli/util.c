@@ -236,7 +236,7 @@ void cli_write_field(const char *path, const char *tmp, const nl_field *f, const
     if (cli_has_ext(path, ".exr"))
         cli_check(nl_exr_write(tmp, f, meta));
     else
-        cli_check(nl_tsv_write_field(tmp, f, meta));
+        cli_check(nl_tsv_write_field(tmp, f, meta, NULL, NULL));
 }
 
 nl_field *cli_field_alloc(int dim, const size_t *n, const double *h)

@@ -86,13 +86,16 @@ int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *n
                   const double *const *cols);
 
 /* Write a 1D field as a TSV table: the non-empty fields of `meta` (may be
- * NULL) as comment lines "# key: value" (model, method, seed, size,
- * spacing, origin, version, flags: the EXR attributes without "noiselab."),
- * then the header "t<TAB>value" and one row per sample, t = (X + i) h with
- * X the first number of meta->origin (0 when empty) and h = f->h[0], both
- * columns printed with %.10g.  NL_EINVAL for a field that is not 1D or an
- * origin that is not an integer; NL_EIO as nl_tsv_write. */
-int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta);
+ * NULL) as comment lines "# key: value" (model, method, seed, spacing,
+ * size, version, flags, origin: the EXR attributes without "noiselab."),
+ * then the header "COORD<TAB>value" (coord NULL: "t") and one row per
+ * sample, both columns printed with %.10g.  The coordinates are t[0..n-1]
+ * when t is not NULL, else t_i = (X + i) h with X the first number of
+ * meta->origin (0 when empty) and h = f->h[0].  NL_EINVAL for a field that
+ * is not 1D or an origin that is not an integer (nothing written); NL_EIO
+ * as nl_tsv_write. */
+int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta, const char *coord,
+                       const double *t);
 
 /* Read a 1D field from a TSV table with a header line: the column named
  * "value", and at most one other, a first column named "t" or "x" that

@@ -70,7 +70,8 @@ static int origin_index(const nl_meta *meta, long long *x)
     return NL_OK;
 }
 
-int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta)
+int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta, const char *coord,
+                       const double *t)
 {
     long long x0;
     FILE *fp;
@@ -82,9 +83,9 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta)
     if (!(fp = fopen(path, "w")))
         return NL_ERROR(NL_EIO, "%s: cannot write: %s", path, strerror(errno));
     write_meta(fp, meta);
-    fputs("t\tvalue\n", fp);
+    fprintf(fp, "%s\tvalue\n", coord ? coord : "t");
     for (size_t i = 0; i < f->count; i++) /* t = (X + i) h: the window's own coordinates */
-        fprintf(fp, "%.10g\t%.10g\n", (double)(x0 + (long long)i) * f->h[0], f->data[i]);
+        fprintf(fp, "%.10g\t%.10g\n", t ? t[i] : (double)(x0 + (long long)i) * f->h[0], f->data[i]);
     if ((fflush(fp) || ferror(fp)) && !st)
         st = NL_ERROR(NL_EIO, "%s: writing the table failed: %s", path, strerror(errno));
     if (fclose(fp) && !st)

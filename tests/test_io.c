@@ -197,7 +197,7 @@ Test(io, tsv_round_trip_with_provenance)
     strcpy(meta.version, "0.1.0");
     for (size_t i = 0; i < n; i++)
         f->data[i] = sin(2.385 * (double)i) * 1e3;
-    cr_assert_eq(nl_tsv_write_field(path("p.tsv"), f, &meta), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_tsv_write_field(path("p.tsv"), f, &meta, NULL, NULL), 0, "%s", nl_errmsg());
     cr_assert_eq(nl_field_read(path("p.tsv"), &g, &back), 0, "%s", nl_errmsg());
     cr_assert_eq(g->count, n);
     cr_assert_eq(g->h[0], h, "spacing %.17g", g->h[0]);
@@ -216,7 +216,7 @@ Test(io, tsv_round_trip_with_provenance)
     fclose(fp);
     strcpy(meta.origin, "x");
     unlink(path("q.tsv"));
-    cr_assert_eq(nl_tsv_write_field(path("q.tsv"), f, &meta), NL_EINVAL);
+    cr_assert_eq(nl_tsv_write_field(path("q.tsv"), f, &meta, NULL, NULL), NL_EINVAL);
     cr_assert_eq(access(path("q.tsv"), F_OK), -1);
     nl_field_free(f);
     nl_field_free(g);
