@@ -58,7 +58,8 @@ static void draw_bar(uint8_t *pix, size_t w, size_t h, size_t x0, double lo, dou
         double u = (double)t / (nt - 1);
         long y = lrint((double)bot - u * (double)(bot - top));
         char s[32];
-        snprintf(s, sizeof s, "%.3g", lo + u * (hi - lo));
+        double v = lo + u * (hi - lo);
+        snprintf(s, sizeof s, "%.3g", fabs(v) < 1e-9 * (hi - lo) ? 0.0 : v); /* 0, not -1.2e-12 */
         for (long x = bx + BAR; x < bx + BAR + TICK; x++)
             put(pix, w, h, x, y, 0);
         text(pix, w, h, bx + BAR + TICK + 2, y - 5 * SCALE / 2, s);

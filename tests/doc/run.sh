@@ -10,7 +10,8 @@
 # PATH. A command must exit 0 unless its line's comment announces otherwise
 # with the words `exits N` (`# refused: exits 2`), and then it must exit N. A page opts a block out with
 # `<!-- doc-test: skip REASON -->` just before it. Each command may run
-# CMD_SECONDS (default 120); failures and commands of 5 s or more are
+# CMD_SECONDS (default 120); DOC_KEEP=DIR keeps each page's folder in DIR
+# (DIR/README/try, DIR/tour/try) instead of removing it.  Failures and commands of 5 s or more are
 # printed with their time (every command with DOC_VERBOSE=1), never asserted.
 # The page's links to files of the tree, `](path)` and `](path#anchor)`,
 # must name files that exist (pictures of paper-figures/ included).
@@ -20,8 +21,12 @@ bin=$(cd "$1" && pwd)
 shift
 [ $# -gt 0 ] || set -- "$top/README.md" "$top/docs/tour.md"
 secs=${CMD_SECONDS:-120}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT INT TERM
+if [ -n "${DOC_KEEP:-}" ]; then # keep each page's folder there, to look at what it made
+    mkdir -p "$DOC_KEEP" && work=$(cd "$DOC_KEEP" && pwd)
+else
+    work=$(mktemp -d)
+    trap 'rm -rf "$work"' EXIT INT TERM
+fi
 PATH="$bin:$PATH"
 export PATH
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
@@ -34,9 +39,10 @@ for page in "$@"; do
         links=$((links + 1))
         [ -e "$pdir/$link" ] || { fail=$((fail + 1)); printf 'FAIL %s: links to %s, which does not exist\n' "$name" "$link"; }
     done
-    rm -rf "$work/page" && mkdir -p "$work/page/try"
-    ln -s "$top/experiments" "$work/page/experiments"
-    ln -s "$bin" "$work/page/bin"
+    pw="$work/${name%.md}"
+    rm -rf "$pw" && mkdir -p "$pw/try"
+    ln -s "$top/experiments" "$pw/experiments"
+    ln -s "$bin" "$pw/bin"
     awk -f "$top/tests/doc/extract.awk" "$page" >"$work/cmds" || exit 1
     while IFS="$tab" read -r line cmd; do
         case "$cmd" in '#'*) continue ;; esac
@@ -44,7 +50,7 @@ for page in "$@"; do
         want=0
         case "$cmd" in *'#'*'exits '[0-9]*) want=$(echo "$cmd" | sed 's/.*#.*exits \([0-9]*\).*/\1/') ;; esac
         start=$(date +%s)
-        (cd "$work/page/try" && timeout -k 5 "$secs" sh -c "$cmd" >"$work/out" 2>"$work/err" </dev/null)
+        (cd "$pw/try" && timeout -k 5 "$secs" sh -c "$cmd" >"$work/out" 2>"$work/err" </dev/null)
         rc=$?
         took=$(( $(date +%s) - start ))
         if [ "$rc" = "$want" ]; then
