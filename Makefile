@@ -94,11 +94,13 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # Unit, error-path, CLI and statistical tests (Criterion). Each test is a
 # fresh process, so measured FFTW plans would be paid for again and again:
 # tests plan with FFTW_ESTIMATE, except the one comparing the two planners.
+# tests/doc/run.sh runs every command of README.md and docs/tour.md.
 # Then tools/test-install.sh installs into a scratch DESTDIR and builds the
 # examples and the README's example against it with pkg-config alone.
 test: all $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
 	NOISELAB_FFTW=estimate sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite
+	NOISELAB_FFTW=estimate sh tests/doc/run.sh $(BINDIR)
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
 	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) sh tools/test-install.sh

@@ -85,8 +85,16 @@ static void parse(int argc, char **argv, opts_t *a)
         }
     }
     cli_no_operands("krige", argc, argv);
-    if (!a->data || !a->spec || !a->grid || !a->ext || !a->out)
-        cli_die(2, "krige: expected --data, --acf, --grid, --extent and -o");
+    if (!a->data)
+        cli_die(2, "krige: --data: expected a table of points (x, y[, z], value)");
+    if (!a->spec)
+        cli_die(2, "krige: --acf: expected a covariance model (see noiselab models)");
+    if (!a->grid)
+        cli_die(2, "krige: --grid: expected the output grid WxH[xD]");
+    if (!a->ext)
+        cli_die(2, "krige: --extent: expected the grid's extent a:b,c:d[,e:f]");
+    if (!a->out)
+        cli_die(2, "krige: -o: expected an output file (.exr or .tsv)");
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);
     parse_extent(a);
     if (!cli_has_ext(a->out, ".exr") && !cli_has_ext(a->out, ".tsv"))
@@ -125,13 +133,11 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
         check_float("--variance", a->vout, vf);
     if (cli_has_ext(a->out, ".exr"))
         st = nl_exr_write(tmp, f, &meta);
-    else {
-        static const char *const names[] = {"x", "value"};
+    else { /* 1D: the record as in EXR, and cell centres as x */
         double *xs = cli_malloc(a->g[0] * sizeof *xs);
         for (size_t i = 0; i < a->g[0]; i++)
             xs[i] = a->lo[0] + ((double)i + 0.5) * f->h[0];
-        const double *cols[2] = {xs, f->data};
-        st = nl_tsv_write(tmp, NULL, 2, names, a->g[0], cols);
+        st = nl_tsv_write_field(tmp, f, &meta, "x", xs);
         free(xs);
     }
     if (!st && vf)

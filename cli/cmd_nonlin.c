@@ -65,13 +65,20 @@ static void parse(int argc, char **argv, opts_t *a)
     }
     cli_no_operands("nonlin", argc, argv);
     if (a->design) {
-        if (!a->tspec || !a->gspec || a->spec)
-            cli_die(2, "nonlin --design: expected --target SPEC and --g DIST (not --acf)");
+        if (a->spec)
+            cli_die(2, "nonlin --design: --acf: not taken by --design (the wanted output is --target), got \"%s\"",
+                    a->spec);
+        if (!a->tspec)
+            cli_die(2, "nonlin --design: --target: expected the wanted output model (see noiselab models)");
+        if (!a->gspec)
+            cli_die(2, "nonlin --design: --g: expected a distribution (e.g. --g laplace)");
         a->spec = a->tspec;
         if (a->pout)
             cli_die(2, "--psd: not written by --design (its table goes to -o), got \"%s\"", a->pout);
-    } else if (!a->spec || !a->gspec)
-        cli_die(2, "nonlin: expected --acf SPEC and --g DIST");
+    } else if (!a->spec)
+        cli_die(2, "nonlin: --acf: expected the input's autocorrelation model (see noiselab models)");
+    else if (!a->gspec)
+        cli_die(2, "nonlin: --g: expected a distribution (e.g. --g laplace)");
     else if (a->verify)
         cli_die(2, "--verify: goes with --design, got --verify %zu without it", a->verify);
     if (a->verify > 1000)

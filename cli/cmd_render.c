@@ -1,5 +1,6 @@
 /* noiselab render: a 2D field as an 8-bit picture, grey levels or shaded relief. */
 #include "cli.h"
+#include "../render/colorbar.h"
 #include "../render/shade.h"
 #include "../render/terrain.h"
 
@@ -10,8 +11,10 @@
 
 static const char help[] =
     "usage: noiselab render IN (-o OUT.png | --matrix OUT.txt) [--range LO:HI] [--shade AZ,EL]\n"
-    "                       [--zscale Z] [--step K]\n\n"
-    "Grey levels: values from LO to HI map onto 0..255 (default: mean +- 3 sd).\n"
+    "                       [--zscale Z] [--step K] [--colorbar]\n\n"
+    "Grey levels: values from LO to HI map onto 0..255 (default: mean +- 3 sd);\n"
+    "--colorbar adds the scale to the right: a ramp from LO to HI with their values\n"
+    "and the middle one (112 more columns).\n"
     "--shade AZ,EL: the field as an obliquely illuminated height field (Lambert),\n"
     "light from azimuth AZ (degrees from +x toward +y) and elevation EL (degrees);\n"
     "heights are multiplied by Z (default 1) in units of the grid spacing.\n"
@@ -68,7 +71,7 @@ typedef struct {
     double plane[2];                                           /* --cloud-plane */
     size_t step;                                               /* --step */
     double lo, hi, az, el, zs, fov, sun[2], haze, water;       /* NAN: not given */
-    int persp, tile, sea, given_zs, view_opts;                 /* flags; view options given */
+    int persp, tile, sea, given_zs, view_opts, colorbar;       /* flags; view options given */
 } opts_t;
 
 static void parse(int argc, char **argv, opts_t *a)
@@ -82,7 +85,8 @@ static void parse(int argc, char **argv, opts_t *a)
                                          {"haze", required_argument, 0, 'H'},   {"water", required_argument, 0, 'w'},
                                          {"tile", no_argument, 0, 't'},         {"sea", no_argument, 0, 'e'},
                                          {"clouds", required_argument, 0, 'C'}, {"cloud-plane", required_argument, 0, 'Z'},
-                                         {"help", no_argument, 0, 'h'},         {0}};
+                                         {"colorbar", no_argument, 0, 'b'},     {"help", no_argument, 0, 'h'},
+                                         {0}};
     int c;
     char junk;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "render")) != -1) {
@@ -121,6 +125,7 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'o': a->out = optarg; break;
         case 'm': a->matrix = optarg; break;
         case 'k': a->step = cli_parse_count("--step", optarg, 1); break;
+        case 'b': a->colorbar = 1; break;
         case 'h': fputs(help, stdout); exit(0);
         }
     }
@@ -140,6 +145,8 @@ static void check(int argc, char **argv, const opts_t *a)
         cli_die(2, "render: --perspective takes none of --matrix, --shade, --range");
     if (a->persp && !a->out)
         cli_die(2, "render: --perspective: expected -o OUT.png");
+    if (a->colorbar && (a->persp || !isnan(a->az) || !a->out))
+        cli_die(2, "render: --colorbar: goes with grey levels into -o OUT.png (not --shade or --perspective)");
 }
 
 /* The view of the options over the defaults for x. */
@@ -201,7 +208,14 @@ static void write_picture(const opts_t *a, const nl_field *x)
     } else {
         if (isnan(lo) && (st = nl_render_grey_range(x, &lo, &hi)))
             cli_die_status(st);
-        st = nl_png_write_field(tmp, x, lo, hi);
+        if (a->colorbar) {
+            uint8_t *pix;
+            size_t w, h;
+            if (!(st = nl_render_grey_colorbar(x, lo, hi, &pix, &w, &h)))
+                st = nl_png_write_gray8(tmp, w, h, pix);
+            free(pix);
+        } else
+            st = nl_png_write_field(tmp, x, lo, hi);
     }
     cli_check(st);
     cli_out_commit(a->out);

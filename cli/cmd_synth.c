@@ -77,8 +77,11 @@ static const char help[] =
     "  --json           print the synthesis report as JSON\n"
     "  --from FILE      regenerate FILE from what it records (method, options, model,\n"
     "                   seed, size, spacing): bit for bit for every method\n"
-    "  -o               EXR (any dimension) or TSV (1D: columns t, value); nothing is\n"
-    "                   written unless every sample is finite (and, in EXR, within float32)\n";
+    "  -o               EXR (any dimension; attributes noiselab.model, .method, .seed,\n"
+    "                   .size, .spacing, .origin, .version, .flags) or TSV (1D: the same as\n"
+    "                   \"# key: value\" lines, then columns t, value, t = (origin + i) h);\n"
+    "                   nothing is written unless every sample is finite (and, in EXR,\n"
+    "                   within float32)\n";
 
 /* What the command line gave, beyond the job itself. */
 typedef struct {
@@ -492,6 +495,9 @@ static void fill_meta(const cli_synth_job *job, const nl_field *f, const cli_syn
         k += snprintf(meta->spacing + k, sizeof meta->spacing - (size_t)k, "%s%.17g", a ? "," : "", f->h[a]);
         l += snprintf(meta->size + l, sizeof meta->size - (size_t)l, "%s%zu", a ? "x" : "", job->n[a]);
     }
+    if (job->nonperiodic || (!job->wrap && (job->origin[0] || job->origin[1]))) /* a window: where it starts */
+        snprintf(meta->origin, sizeof meta->origin, job->dim == 1 ? "%ld" : "%ld,%ld", job->origin[0],
+                 job->origin[1]);
 }
 
 static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res)

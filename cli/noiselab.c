@@ -18,7 +18,8 @@ static const struct {
     {"validate", cli_cmd_validate, "check a model and test every method on it: a report with a verdict"},
     {"check", cli_cmd_check, "is a model positive definite, how smooth, where singular"},
     {"coeffs", cli_cmd_coeffs, "subdivision coefficients, variances and flags per level"},
-    {"synth", cli_cmd_synth, "synthesise a field (methods: fft, subdiv, midpoint)"},
+    {"synth", cli_cmd_synth, "synthesise a field by one of the methods fft, subdiv, midpoint,\n"
+                               "           circulant, cholesky, faulting, sparse, lattice"},
     {"acf", cli_cmd_acf, "estimate the autocorrelation of a field"},
     {"psd", cli_cmd_psd, "estimate the power spectral density of a field (periodogram)"},
     {"hist", cli_cmd_hist, "histogram, moments and goodness of fit of a field"},
@@ -28,8 +29,8 @@ static const struct {
     {"cloud", cli_cmd_cloud, "render a cloud: kriged shape plus noise, ray-marched"},
     {"krige", cli_cmd_krige, "kriging of scattered data onto a grid (Stam and Fiume)"},
     {"ocean", cli_cmd_ocean, "Tessendorf ocean waves on a Fibonacci lattice or a grid"},
-    {"card", cli_cmd_card, "one picture of a field: field, spectra, radial spectrum, histogram"},
-    {"render", cli_cmd_render, "a 2D field as a picture: grey levels or shaded relief"},
+    {"card", cli_cmd_card, "one picture of a field (1D or 2D): field, ACF, spectra, histogram"},
+    {"render", cli_cmd_render, "a 2D field as a picture: grey levels, shaded relief or landscape"},
     {"detect", cli_cmd_detect, "creases and aliasing in a subdivision field"},
     {"bench", cli_cmd_bench, "speed of the methods against this machine's floor (TSV)"},
 };

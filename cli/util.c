@@ -233,17 +233,10 @@ json_t *cli_json_array(const double *v, size_t n)
 
 void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta)
 {
-    static const char *const names[] = {"t", "value"};
-    double *t;
-    if (cli_has_ext(path, ".exr")) {
+    if (cli_has_ext(path, ".exr"))
         cli_check(nl_exr_write(tmp, f, meta));
-        return;
-    }
-    t = cli_malloc(f->count * sizeof *t);
-    for (size_t i = 0; i < f->count; i++)
-        t[i] = (double)i * f->h[0];
-    cli_check(nl_tsv_write(tmp, NULL, 2, names, f->count, (const double *const[]){t, f->data}));
-    free(t);
+    else
+        cli_check(nl_tsv_write_field(tmp, f, meta, NULL, NULL));
 }
 
 nl_field *cli_field_alloc(int dim, const size_t *n, const double *h)

@@ -5,6 +5,7 @@
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_randist.h>
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -67,7 +68,7 @@ static int load_table(nl_dist *d, const char *path)
     size_t cap = 256, lineno = 0;
     int header = 1;
     if (!fp)
-        return NL_ERROR(NL_EINPUT, "table:%s: cannot open", path);
+        return NL_ERROR(NL_EINPUT, "cannot open %s: %s", path, strerror(errno));
     d->u = malloc(cap * sizeof *d->u);
     d->y = malloc(cap * sizeof *d->y);
     while (d->u && d->y && fgets(line, sizeof line, fp)) {

@@ -37,6 +37,7 @@ typedef struct {
     char size[64];      /* noiselab.size: "N[xM[xK]]" */
     char version[32];   /* noiselab.version */
     char flags[256];    /* noiselab.flags: comma-separated detector flags */
+    char origin[64];    /* noiselab.origin: a window's first sample "X[,Y]", in samples */
 } nl_meta;
 
 /* Write `f` as EXR with the attributes of `meta` (may be NULL).  Samples
@@ -84,11 +85,25 @@ int nl_tsv_write(const char *path, const char *comment, int ncols, const char *c
 int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *names, size_t nrows,
                   const double *const *cols);
 
+/* Write a 1D field as a TSV table: the non-empty fields of `meta` (may be
+ * NULL) as comment lines "# key: value" (model, method, seed, spacing,
+ * size, version, flags, origin: the EXR attributes without "noiselab."),
+ * then the header "COORD<TAB>value" (coord NULL: "t") and one row per
+ * sample, both columns printed with %.10g.  The coordinates are t[0..n-1]
+ * when t is not NULL, else t_i = (X + i) h with X the first number of
+ * meta->origin (0 when empty) and h = f->h[0].  NL_EINVAL for a field that
+ * is not 1D or an origin that is not an integer (nothing written); NL_EIO
+ * as nl_tsv_write. */
+int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta, const char *coord,
+                       const double *t);
+
 /* Read a 1D field from a TSV table with a header line: the column named
  * "value", and at most one other, a first column named "t" or "x" that
  * gives the spacing (t1 - t0) and must be finite, increasing and regular
  * (each t within a thousandth of a step of t0 + i step).  Lines starting
- * with '#' are skipped.  NL_EINPUT: no file, no header, no "value" column,
+ * with '#' are skipped; those before the header of the form "# key: value"
+ * with a key of nl_meta fill it (nl_field_read), and a "spacing" within
+ * 1e-6 of t1 - t0 is taken as the spacing (t0 need not be 0).  NL_EINPUT: no file, no header, no "value" column,
  * more than two columns (scattered points are not a series), a row with a
  * different column count, a value or coordinate that is not a finite
  * number, a coordinate column that is constant, decreasing or irregular, a
@@ -102,7 +117,7 @@ int nl_tsv_read_field(const char *path, nl_field **out);
  * read once too); NL_ETOOBIG when it grows beyond the memory available,
  * NL_EINPUT for a folder.  Samples
  * must be finite (NL_EINPUT names the first that is not).  `meta` (may be
- * NULL) is zeroed, then filled from EXR attributes. */
+ * NULL) is zeroed, then filled from EXR attributes or TSV comment lines. */
 int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
 
 #endif

@@ -18,20 +18,12 @@ static void quiet_handler(exr_const_context_t ctxt, exr_result_t code, const cha
     snprintf(exr_msg, sizeof exr_msg, "%s", msg ? msg : "");
 }
 
-static const struct {
-    const char *name;
-    size_t off;
-    size_t len;
-} attrs[] = {
-    {"noiselab.model", offsetof(nl_meta, model), sizeof(((nl_meta *)0)->model)},
-    {"noiselab.method", offsetof(nl_meta, method), sizeof(((nl_meta *)0)->method)},
-    {"noiselab.seed", offsetof(nl_meta, seed), sizeof(((nl_meta *)0)->seed)},
-    {"noiselab.spacing", offsetof(nl_meta, spacing), sizeof(((nl_meta *)0)->spacing)},
-    {"noiselab.size", offsetof(nl_meta, size), sizeof(((nl_meta *)0)->size)},
-    {"noiselab.version", offsetof(nl_meta, version), sizeof(((nl_meta *)0)->version)},
-    {"noiselab.flags", offsetof(nl_meta, flags), sizeof(((nl_meta *)0)->flags)},
-};
-enum { NATTR = sizeof attrs / sizeof *attrs };
+/* The EXR attribute of provenance field i: "noiselab." and its key. */
+static const char *attr_name(int i, char *buf, size_t len)
+{
+    snprintf(buf, len, "noiselab.%s", nl_meta_fields[i].key);
+    return buf;
+}
 
 /* Image layout of a field: width n0, height n1 * n2. */
 static int image_size(const nl_field *f, int32_t *w, int32_t *h)
@@ -73,10 +65,11 @@ int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta)
         rv = exr_initialize_required_attr_simple(ctx, part, w, h, EXR_COMPRESSION_NONE);
     if (!rv)
         rv = exr_add_channel(ctx, part, "Y", EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR, 1, 1);
-    for (int i = 0; meta && i < NATTR && !rv; i++) {
-        const char *s = (const char *)meta + attrs[i].off;
+    for (int i = 0; meta && i < NL_META_NFIELDS && !rv; i++) {
+        const char *s = (const char *)meta + nl_meta_fields[i].off;
+        char name[64];
         if (*s)
-            rv = exr_attr_set_string(ctx, part, attrs[i].name, s);
+            rv = exr_attr_set_string(ctx, part, attr_name(i, name, sizeof name), s);
     }
     if (!rv)
         rv = exr_write_header(ctx);
@@ -290,11 +283,12 @@ int nl_exr_read_mem(const char *path, const unsigned char *file, size_t len, nl_
         exr_finish(&ctx);
         return NL_ERROR(NL_EINPUT, "%s: EXR data window is empty", path);
     }
-    for (int i = 0; i < NATTR; i++) {
+    for (int i = 0; i < NL_META_NFIELDS; i++) {
         const char *s = NULL;
+        char name[64];
         int32_t len = 0;
-        if (exr_attr_get_string(ctx, 0, attrs[i].name, &len, &s) == EXR_ERR_SUCCESS && s)
-            snprintf((char *)&m + attrs[i].off, attrs[i].len, "%.*s", (int)len, s);
+        if (exr_attr_get_string(ctx, 0, attr_name(i, name, sizeof name), &len, &s) == EXR_ERR_SUCCESS && s)
+            snprintf((char *)&m + nl_meta_fields[i].off, nl_meta_fields[i].len, "%.*s", (int)len, s);
     }
     if ((st = layout(path, &m, w, hh, &dim, n, h))) {
         exr_finish(&ctx);

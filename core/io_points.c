@@ -109,7 +109,7 @@ int nl_points_read(const char *path, nl_points **out)
     int st;
     *out = NULL;
     if (!fp)
-        return NL_ERROR(NL_EINPUT, "cannot open \"%s\": %s", path, strerror(errno));
+        return NL_ERROR(NL_EINPUT, "cannot open %s: %s", path, strerror(errno));
     while (!cols && fgets(line, sizeof line, fp)) {
         lineno++;
         if (line[0] != '#' && line[0] != '\n')

@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -56,7 +57,7 @@ int nl_io_slurp(const char *path, unsigned char **buf, size_t *len)
     int st, fd = open(path, O_RDONLY | O_CLOEXEC);
     *buf = NULL, *len = 0;
     if (fd < 0)
-        return NL_ERROR(NL_EINPUT, "%s: cannot open: %s", path, strerror(errno));
+        return NL_ERROR(NL_EINPUT, "cannot open %s: %s", path, strerror(errno));
     if (fstat(fd, &sb) == 0 && S_ISDIR(sb.st_mode)) {
         close(fd);
         return NL_ERROR(NL_EINPUT, "%s: is a folder; expected a file", path);
@@ -82,8 +83,14 @@ int nl_io_slurp(const char *path, unsigned char **buf, size_t *len)
     return st;
 }
 
+#define FIELD(k) {#k, offsetof(nl_meta, k), sizeof(((nl_meta *)0)->k)}
+const nl_meta_field nl_meta_fields[NL_META_NFIELDS] = {
+    FIELD(model), FIELD(method), FIELD(seed), FIELD(spacing), FIELD(size), FIELD(version), FIELD(flags), FIELD(origin),
+};
+#undef FIELD
+
 /* A TSV table in memory, through a stream (the parser reads lines). */
-static int tsv_mem(const char *path, unsigned char *buf, size_t len, nl_field **out)
+static int tsv_mem(const char *path, unsigned char *buf, size_t len, nl_field **out, nl_meta *meta)
 {
     FILE *fp;
     int st;
@@ -92,7 +99,7 @@ static int tsv_mem(const char *path, unsigned char *buf, size_t len, nl_field **
         return NL_ERROR(NL_EINPUT, "%s: expected a TSV header line, found none", path);
     if (!(fp = fmemopen(buf, len, "r")))
         return NL_ERROR(NL_ENOMEM, "out of memory reading %s", path);
-    st = nl_tsv_read_stream(fp, path, out);
+    st = nl_tsv_read_stream(fp, path, out, meta);
     fclose(fp);
     return st;
 }
@@ -120,7 +127,7 @@ int nl_field_read(const char *path, nl_field **out, nl_meta *meta)
     } else if (len >= 4 && memcmp(buf, png_magic, 4) == 0)
         st = nl_png_read_mem(path, buf, len, out);
     else
-        st = tsv_mem(path, buf, len, out);
+        st = tsv_mem(path, buf, len, out, meta);
     free(buf);
     return st;
 }

@@ -18,10 +18,21 @@
  * (nl_mem_available), NL_ENOMEM.  Thread-safe. */
 int nl_io_slurp(const char *path, unsigned char **buf, size_t *len);
 
+/* The provenance fields of nl_meta, in the order files record them: the
+ * key (EXR attribute "noiselab.KEY", TSV comment line "# KEY: value"), the
+ * offset of its string in nl_meta and the string's capacity. */
+typedef struct {
+    const char *key; /* "model", "method", ... */
+    size_t off;      /* offsetof(nl_meta, ...) */
+    size_t len;      /* sizeof the field */
+} nl_meta_field;
+extern const nl_meta_field nl_meta_fields[];
+enum { NL_META_NFIELDS = 8 };
+
 /* The readers of io.h on a file already in memory (`path` only names it in
  * messages); same results and codes. */
 int nl_exr_read_mem(const char *path, const unsigned char *buf, size_t len, nl_field **out, nl_meta *meta);
 int nl_png_read_mem(const char *path, const unsigned char *buf, size_t len, nl_field **out);
-int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out);
+int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out, nl_meta *meta);
 
 #endif

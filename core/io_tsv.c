@@ -1,13 +1,15 @@
-/* TSV tables: write columns, read a 1D field. */
+/* TSV tables: write columns, write and read a 1D field with its provenance. */
 #include "io.h"
 #include "io_read_internal.h"
 #include "nl_error.h"
 
 #include <errno.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
 
 int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *names, size_t nrows,
                   const double *const *cols)
@@ -35,6 +37,87 @@ int nl_tsv_write(const char *path, const char *comment, int ncols, const char *c
     if (fclose(fp) && !st)
         st = NL_ERROR(NL_EIO, "%s: write failed: %s", path, strerror(errno));
     return st;
+}
+
+/* "# key: value" lines of the non-empty fields of meta; a control
+ * character in a value (a path with a newline) is written as a space. */
+static void write_meta(FILE *fp, const nl_meta *meta)
+{
+    for (int i = 0; meta && i < NL_META_NFIELDS; i++) {
+        const char *v = (const char *)meta + nl_meta_fields[i].off;
+        size_t n = strnlen(v, nl_meta_fields[i].len);
+        if (!n)
+            continue;
+        fprintf(fp, "# %s: ", nl_meta_fields[i].key);
+        for (size_t k = 0; k < n; k++)
+            fputc((unsigned char)v[k] < 0x20 ? ' ' : v[k], fp);
+        fputc('\n', fp);
+    }
+}
+
+/* The first sample's index from meta->origin ("X" or "X,Y"; 0 when empty). */
+static int origin_index(const nl_meta *meta, long long *x)
+{
+    char *end;
+    *x = 0;
+    if (!meta || !meta->origin[0])
+        return NL_OK;
+    errno = 0;
+    *x = strtoll(meta->origin, &end, 10);
+    if (end == meta->origin || (*end && *end != ',') || errno == ERANGE)
+        return NL_ERROR(NL_EINVAL, "TSV: origin \"%.*s\": expected an integer X or X,Y", (int)sizeof meta->origin,
+                        meta->origin);
+    return NL_OK;
+}
+
+int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta, const char *coord,
+                       const double *t)
+{
+    long long x0;
+    FILE *fp;
+    int st;
+    if (f->dim != 1)
+        return NL_ERROR(NL_EINVAL, "%s: a TSV holds a 1D field, got %dD", path, f->dim);
+    if ((st = origin_index(meta, &x0)))
+        return st;
+    if (!(fp = fopen(path, "w")))
+        return NL_ERROR(NL_EIO, "%s: cannot write: %s", path, strerror(errno));
+    write_meta(fp, meta);
+    fprintf(fp, "%s\tvalue\n", coord ? coord : "t");
+    for (size_t i = 0; i < f->count; i++) /* t = (X + i) h: the window's own coordinates */
+        fprintf(fp, "%.10g\t%.10g\n", t ? t[i] : (double)(x0 + (long long)i) * f->h[0], f->data[i]);
+    if ((fflush(fp) || ferror(fp)) && !st)
+        st = NL_ERROR(NL_EIO, "%s: writing the table failed: %s", path, strerror(errno));
+    if (fclose(fp) && !st)
+        st = NL_ERROR(NL_EIO, "%s: write failed: %s", path, strerror(errno));
+    return st;
+}
+
+/* A comment line before the header: "# key: value" into meta when the key
+ * is one of nl_meta's; anything else is a comment. */
+static void read_meta_line(const char *line, nl_meta *meta)
+{
+    for (int i = 0; i < NL_META_NFIELDS; i++) {
+        size_t k = strlen(nl_meta_fields[i].key);
+        if (line[1] == ' ' && strncmp(line + 2, nl_meta_fields[i].key, k) == 0 && line[2 + k] == ':' && line[3 + k] == ' ') {
+            const char *v = line + 4 + k;
+            snprintf((char *)meta + nl_meta_fields[i].off, nl_meta_fields[i].len, "%.*s", (int)strcspn(v, "\r\n"), v);
+            return;
+        }
+    }
+}
+
+/* The spacing of a series with a coordinate column: t1 - t0, or the
+ * recorded spacing when it agrees (t1 - t0 of a window far from 0 carries
+ * the rounding of the printed coordinates). */
+static double series_spacing(const nl_meta *meta, int tcol, double t0, double t1)
+{
+    double h = (tcol >= 0 && t1 - t0 > 0) ? t1 - t0 : 1.0, hs;
+    char *end;
+    if (tcol < 0 || !meta->spacing[0])
+        return h;
+    hs = strtod(meta->spacing, &end);
+    return (end != meta->spacing && !*end && isfinite(hs) && hs > 0 && fabs(hs - h) <= 1e-6 * hs) ? hs : h;
 }
 
 /* Split a line at tabs into at most `max` fields; returns the count. */
@@ -160,22 +243,28 @@ int nl_tsv_read_field(const char *path, nl_field **out)
     int st;
     *out = NULL;
     if (!fp)
-        return NL_ERROR(NL_EINPUT, "%s: cannot open: %s", path, strerror(errno));
-    st = nl_tsv_read_stream(fp, path, out);
+        return NL_ERROR(NL_EINPUT, "cannot open %s: %s", path, strerror(errno));
+    st = nl_tsv_read_stream(fp, path, out, NULL);
     fclose(fp);
     return st;
 }
 
-int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out)
+int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out, nl_meta *meta)
 {
     char line[4096], *fld[64];
     int ncol = 0, vcol = -1, tcol = -1, st = NL_OK;
     size_t cap = 1024, n = 0, lineno = 0;
     double *v = NULL, t0 = 0, t1 = 0;
+    nl_meta own;
 
     *out = NULL;
+    if (!meta)
+        meta = &own;
+    memset(meta, 0, sizeof *meta);
     while (get_line(line, sizeof line, fp, path, lineno + 1, &st)) {
         lineno++;
+        if (line[0] == '#')
+            read_meta_line(line, meta);
         if (line[0] == '#' || line[0] == '\n')
             continue;
         ncol = split(line, fld, 64);
@@ -198,7 +287,7 @@ int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out)
     if (!st && n < 2)
         st = NL_ERROR(NL_EINPUT, "%s: expected at least 2 samples, got %zu", path, n);
     if (!st) {
-        double h = (tcol >= 0 && t1 - t0 > 0) ? t1 - t0 : 1.0;
+        double h = series_spacing(meta, tcol, t0, t1);
         nl_field *f = nl_field_alloc(1, &n, &h, &st);
         if (f) {
             memcpy(f->data, v, n * sizeof *v);

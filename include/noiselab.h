@@ -78,6 +78,7 @@ extern "C" {
 #include "noiselab/render/shade.h"
 #include "noiselab/render/cloud.h"
 #include "noiselab/render/cloud_scene.h"
+#include "noiselab/render/colorbar.h"
 
 #ifdef __cplusplus
 }

@@ -2,9 +2,12 @@
 #include "cloud_scene.h"
 #include "../core/nl_error.h"
 
+#include <errno.h>
 #include <jansson.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* An optional number in [lo, hi] (def when absent) into *x. */
 static int num(json_t *o, const char *key, double def, double lo, double hi, const char *path, double *x)
@@ -123,9 +126,19 @@ static int scene_rest(json_t *j, const char *path, nl_cloud_scene *s)
 int nl_cloud_scene_read(const char *path, nl_cloud_scene *s)
 {
     json_error_t je;
-    json_t *j = json_load_file(path, 0, &je);
+    FILE *fp = fopen(path, "r");
+    json_t *j;
+    struct stat sb;
     int st;
     memset(s, 0, sizeof *s);
+    if (!fp)
+        return NL_ERROR(NL_EINPUT, "cannot open %s: %s", path, strerror(errno));
+    if (fstat(fileno(fp), &sb) == 0 && S_ISDIR(sb.st_mode)) {
+        fclose(fp);
+        return NL_ERROR(NL_EINPUT, "%s: is a folder; expected a file", path);
+    }
+    j = json_loadf(fp, 0, &je);
+    fclose(fp);
     if (!j)
         return NL_ERROR(NL_EINPUT, "%s:%d: not valid JSON: %s", path, je.line, je.text);
     if (!json_is_object(j))

@@ -1,6 +1,7 @@
 /* The command line: success paths, and every error path giving exit 2, one
  * line on stderr naming the bad value, and no output file. */
 #include "../core/io.h"
+#include "../core/nl_error.h"
 #include "../core/version.h"
 #include "util.h"
 
@@ -348,8 +349,94 @@ Test(cli, card)
     cr_assert_eq(run_noiselab("card card.exr --acf markov:scale=4 -o card.png", 0, 0, err, sizeof err), 0, "%s", err);
     snprintf(path, sizeof path, "%s/card.png", scratch_dir());
     cr_expect(file_exists(path));
-    cr_assert_eq(run_noiselab("synth fft --acf markov --size 64 -o card1.tsv", 0, 0, err, sizeof err), 0);
-    bad("card card1.tsv -o out.png", "2D field");
+    /* 1D fields have a card too; shorter ones are refused */
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 256 -o card1.tsv", 0, 0, err, sizeof err), 0);
+    cr_assert_eq(run_noiselab("card card1.tsv --acf markov:scale=4 -o card1.png", 0, 0, err, sizeof err), 0, "%s",
+                 err);
+    snprintf(path, sizeof path, "%s/card1.png", scratch_dir());
+    cr_expect(file_exists(path));
+    cr_assert_eq(run_noiselab("synth fft --acf markov --size 32 -o card2.tsv", 0, 0, err, sizeof err), 0);
+    bad("card card2.tsv -o out.png", "at least 64");
+}
+
+/* render --colorbar: the picture grows by the bar's width, the field's
+ * pixels are those of the plain picture. */
+Test(cli, render_colorbar)
+{
+    char path[512];
+    nl_field *plain, *bar;
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 64x48 -o cb.exr", 0, 0, err, sizeof err), 0);
+    cr_assert_eq(run_noiselab("render cb.exr -o cb.png", 0, 0, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(run_noiselab("render cb.exr --colorbar -o cb2.png", 0, 0, err, sizeof err), 0, "%s", err);
+    snprintf(path, sizeof path, "%s/cb.png", scratch_dir());
+    cr_assert_eq(nl_png_read(path, &plain), 0);
+    snprintf(path, sizeof path, "%s/cb2.png", scratch_dir());
+    cr_assert_eq(nl_png_read(path, &bar), 0);
+    cr_assert_eq(bar->n[0], 64 + 112);
+    cr_assert_eq(bar->n[1], 48);
+    for (size_t j = 0; j < 48; j++)
+        for (size_t i = 0; i < 64; i++)
+            cr_assert_eq(bar->data[j * bar->n[0] + i], plain->data[j * 64 + i]);
+    nl_field_free(plain), nl_field_free(bar);
+    bad("render cb.exr --colorbar --shade 315,30 -o out.png", "--colorbar");
+}
+
+/* A 1D TSV records what an EXR records, as "# key: value" lines; a window's
+ * t starts at its origin; reading it back gives the provenance, and
+ * --from regenerates it. */
+Test(cli, tsv_provenance_and_origin)
+{
+    char path[512], line[256];
+    nl_field *f;
+    nl_meta meta;
+    FILE *fp;
+    cr_assert_eq(run_noiselab("synth subdiv --acf markov:scale=8 --size 64 --nonperiodic --origin 5000 --seed 3 "
+                              "--spacing 0.5 -o w.tsv", 0, 0, err, sizeof err), 0, "%s", err);
+    snprintf(path, sizeof path, "%s/w.tsv", scratch_dir());
+    cr_assert_eq(nl_field_read(path, &f, &meta), 0, "%s", nl_errmsg());
+    cr_assert_str_eq(meta.model, "markov:scale=8");
+    cr_assert(strncmp(meta.method, "subdiv:", 7) == 0, "%s", meta.method);
+    cr_assert_str_eq(meta.seed, "3");
+    cr_assert_str_eq(meta.spacing, "0.5");
+    cr_assert_str_eq(meta.origin, "5000");
+    cr_assert_str_eq(meta.version, NL_VERSION_STRING);
+    cr_assert_eq(f->h[0], 0.5);
+    nl_field_free(f);
+    fp = fopen(path, "r");
+    cr_assert_not_null(fp);
+    while (fgets(line, sizeof line, fp) && line[0] == '#')
+        ;
+    cr_assert_str_eq(line, "t\tvalue\n");
+    cr_assert(fgets(line, sizeof line, fp) != NULL);
+    cr_assert(strncmp(line, "2500\t", 5) == 0, "t = origin * spacing: %s", line);
+    fclose(fp);
+    cr_assert_eq(run_noiselab("synth --from w.tsv -o w2.tsv", 0, 0, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(run_noiselab("acf w.tsv --max-lag 4", out, sizeof out, err, sizeof err), 0, "%s", err);
+    cr_assert(strstr(out, "\n0.5\t") != NULL, "lags in length units: %s", out);
+}
+
+/* Every reader says "cannot open FILE: reason" for a missing file. */
+Test(cli, missing_files_are_named)
+{
+    bad("acf /nonexistent/f.exr", "cannot open /nonexistent/f.exr: No such file");
+    bad("cloud /nonexistent/s.json -o out.png", "cannot open /nonexistent/s.json: No such file");
+    bad("synth sparse --exemplar /nonexistent/e.png --size 64x64 -o out.exr", "cannot open /nonexistent/e.png:");
+    bad("synth subdiv --acf markov --size 64x64 --seed-image /nonexistent/i.png -o out.exr",
+        "cannot open /nonexistent/i.png:");
+    bad("krige --data /nonexistent/p.tsv --acf markov --grid 8x8 --extent 0:1,0:1 -o out.exr",
+        "cannot open /nonexistent/p.tsv:");
+    bad("synth fft --acf image:/nonexistent/m.png --size 64x64 -o out.exr", "cannot open /nonexistent/m.png:");
+    bad("synth --from /nonexistent/f.exr -o out.tsv", "cannot open /nonexistent/f.exr:");
+}
+
+/* A missing required option is named alone. */
+Test(cli, missing_options_named_alone)
+{
+    bad("krige --data p.tsv --grid 8x8 --extent 0:1,0:1 -o out.exr", "krige: --acf:");
+    bad("krige --data p.tsv --acf markov --extent 0:1,0:1 -o out.exr", "krige: --grid:");
+    bad("nonlin --acf markov", "nonlin: --g:");
+    bad("nonlin --g laplace", "nonlin: --acf:");
+    bad("nonlin --design --g laplace", "--target:");
 }
 
 Test(cli, json_outputs)
@@ -400,6 +487,11 @@ Test(cli, help_and_version)
         run_noiselab("--help", out, sizeof out, 0, 0);
     }
     cr_assert_eq(run_noiselab("", 0, 0, 0, 0), 2);
+    /* the top-level help names every synthesis method */
+    const char *methods[] = {"fft", "subdiv", "midpoint", "circulant", "cholesky", "faulting", "sparse", "lattice"};
+    cr_assert_eq(run_noiselab("--help", out, sizeof out, 0, 0), 0);
+    for (int i = 0; i < 8; i++)
+        cr_expect(strstr(out, methods[i]) != NULL, "--help names the method %s", methods[i]);
 }
 
 /* Progress goes to a terminal only: with progress due at once
