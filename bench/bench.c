@@ -37,6 +37,8 @@ static const char help[] =
     "  fft, circulant  fill the c2r input with Gaussian numbers + FFTW c2r, of the\n"
     "                  size the method transforms (circulant: its embedding)\n"
     "  subdiv, sparse  draw one Gaussian number per sample + one pass over the field\n"
+    "  subdiv correlated  subdivision with independent displacements, same N and size\n"
+    "                  (2 taps: the cost of correlating the displacements)\n"
     "  acf             FFTW r2c + c2r of the zero-padded field\n"
     "  psd             FFTW r2c of the field\n"
     "  krige           one covariance evaluation per (grid point, data point)\n"
@@ -162,8 +164,9 @@ static void bench_circulant(const nl_model *m, size_t n, int reps)
     nl_synth_circulant_plan_free(p), nl_field_free(f);
 }
 
-/* 4x4 neighbourhood, coarse grid 8x8, coefficients made once */
-static void bench_subdiv(const nl_model *m, size_t n, int reps)
+/* A 2N x 2N neighbourhood, coarse grid 8x8, coefficients (and with taps
+ * > 0 the correlated displacements' filters) made once; the median time. */
+static double subdiv_time(const nl_model *m, size_t n, int N, int taps, int reps)
 {
     size_t nn[2] = {n, n};
     double t[16];
@@ -172,15 +175,30 @@ static void bench_subdiv(const nl_model *m, size_t n, int reps)
     while ((n >> (L + 1)) >= 8)
         L++;
     nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-    if (!f || (st = nl_subdiv_coeffs_alloc(m, 2, L, (double)(1 << L), 2, 1e-4, 6, &co)))
+    if (!f || (st = nl_subdiv_coeffs_alloc(m, 2, L, (double)(1 << L), N, 1e-4, 6, &co)) ||
+        (taps && (st = nl_subdiv_coeffs_correlate(co, m, taps, NL_SUBDIV_DISP_ERROR))))
         cli_die_status(st);
     for (int r = 0; r < reps; r++) {
         double t0 = now();
         nl_subdiv_synth_periodic(co, m, (uint64_t)r + 1, 0, f);
         t[r] = now() - t0;
     }
-    row("subdiv N=2", n * n, median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps));
     nl_subdiv_coeffs_free(co), nl_field_free(f);
+    return median(t, reps);
+}
+
+/* Independent displacements against the Gaussian floor; correlated ones
+ * (2 taps) against independent ones of the same N in the same run. */
+static void bench_subdiv(const nl_model *m, size_t n, int reps)
+{
+    for (int N = 2; N <= 4; N += 2) {
+        char name[64];
+        double ti = subdiv_time(m, n, N, 0, reps), tc = subdiv_time(m, n, N, 2, reps);
+        snprintf(name, sizeof name, "subdiv N=%d", N);
+        row(name, n * n, ti, "gaussian rng + one pass", rng_floor(n * n, reps));
+        snprintf(name, sizeof name, "subdiv N=%d correlated", N);
+        row(name, n * n, tc, "subdiv, independent displacements", ti);
+    }
 }
 
 static void bench_sparse(const nl_model *m, size_t n, int reps)
