@@ -368,13 +368,13 @@ int nl_subdiv_disp_fill(const nl_subdiv_level *l, int dim, uint64_t seed, unsign
 #pragma omp parallel for schedule(static) if (nx * ny > 16384)
     for (long y = 0; y < ny; y++)
         for (int a = 0; a < nc; a++) {
-            double *o = out + (a * ny + y) * nx;
+            double *restrict o = out + (a * ny + y) * nx;
             memset(o, 0, (size_t)nx * sizeof *o);
             for (int b = 0; b < nc; b++)
                 for (int py = 0; py < TY; py++)
                     for (int px = 0; px < T; px++) {
                         const double gv = l->filt[((a * nc + b) * TY + py) * T + px];
-                        const double *wr = w + (b * wy + y + py) * wx + px;
+                        const double *restrict wr = w + (b * wy + y + py) * wx + px;
                         for (long x = 0; x < nx; x++)
                             o[x] += gv * wr[x];
                     }

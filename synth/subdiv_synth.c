@@ -33,92 +33,6 @@ static int grid_alloc(grid *g, long x0, long y0, long nx, long ny)
 
 static inline double at(const grid *g, long i, long j) { return g->v[(j - g->y0) * g->nx + (i - g->x0)]; }
 
-/* One row J of a 2D level with the standard 2N x 2N neighbourhoods: the
- * same arithmetic as the general loop in refine() (coefficients in the
- * same order), with the class fixed by the parities of I and J and the
- * source rows looked up once. */
-static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, long J, uint64_t seed, unsigned lv)
-{
-    const int N = l->N, w = 2 * N;
-    const long j = fdiv2(J), oy = J - 2 * j;
-    const double *rows[2 * NL_SUBDIV_MAX_N];
-    double *out = dst->v + (J - dst->y0) * dst->nx - dst->x0;
-    const nl_subdiv_class *odd = &l->cls[oy ? 0 : 1], *even = &l->cls[2];
-    const double sd_odd = sqrt(odd->variance), sd_even = sqrt(even->variance);
-    for (int r = 0; r < w; r++)
-        rows[r] = src->v + (j + 1 - N + r - src->y0) * src->nx - src->x0 + 1 - N;
-    long cached = LONG_MIN;
-    double g[2] = {0, 0};
-    if (w == 4 && dst->x0 % 2 == 0 && dst->nx % 2 == 0) {
-        /* N = 2 over whole pairs (2i, 2i + 1): both points read the same
-         * 4 x 4 window, so one pass of loads serves both stencils; the
-         * sums, their order and the random numbers are those of the
-         * general loop below */
-        const double *ae = even->a, *ao = odd->a;
-        for (long i = dst->x0 / 2; i < (dst->x0 + dst->nx) / 2; i++) {
-            double se = 0, so = 0;
-            for (int r = 0; r < 4; r++) {
-                const double *x = rows[r] + i, *pe = ae + 4 * r, *po = ao + 4 * r;
-                se += pe[0] * x[0];
-                so += po[0] * x[0];
-                se += pe[1] * x[1];
-                so += po[1] * x[1];
-                se += pe[2] * x[2];
-                so += po[2] * x[2];
-                se += pe[3] * x[3];
-                so += po[3] * x[3];
-            }
-            if (oy) {
-                nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, i, J), g);
-                out[2 * i] = se + sd_even * g[0];
-                out[2 * i + 1] = so + sd_odd * g[1];
-            } else {
-                long key = fdiv2(i);
-                if (key != cached) {
-                    nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
-                    cached = key;
-                }
-                out[2 * i] = rows[N - 1][i + N - 1];
-                out[2 * i + 1] = so + sd_odd * g[i - 2 * key];
-            }
-        }
-        return;
-    }
-    for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
-        long i = fdiv2(I);
-        const nl_subdiv_class *cl;
-        double s = 0, z;
-        if (I == 2 * i) {
-            if (!oy) {
-                out[I] = rows[N - 1][i + N - 1];
-                continue;
-            }
-            cl = even;
-        } else {
-            cl = odd;
-        }
-        for (int r = 0; r < w; r++) {
-            const double *a = cl->a + r * w, *x = rows[r] + i;
-            for (int q = 0; q < w; q++)
-                s += a[q] * x[q];
-        }
-        {
-            /* odd rows draw at every I: samples 2i and 2i + 1 share a pair;
-             * even rows at odd I: samples 4k + 1 and 4k + 3 share one */
-            long key = oy ? i : fdiv2(i);
-            if (key != cached) {
-                nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
-                cached = key;
-            }
-            z = g[oy ? I - 2 * i : i - 2 * key];
-        }
-        out[I] = s + (cl == odd ? sd_odd : sd_even) * z;
-    }
-}
-
-/* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
- * the finer grid is old point I/2 when I is even, else the midpoint of old
- * points (I-1)/2 and (I+1)/2.  Eq. (3) in 1D, eq. (9) in 2D. */
 /* Correlated displacements of one level, per class and cell (subdiv.h). */
 typedef struct {
     double *v;     /* v[(a ny + y) nx + x] for the cell (c0 + x, c1 + y) */
@@ -158,16 +72,117 @@ static inline double disp_at(const disp *d, int a, long i, long j)
     return d->v[(a * d->ny + (j - d->c1)) * d->nx + (i - d->c0)];
 }
 
+/* One row J of a 2D level with the standard 2N x 2N neighbourhoods: the
+ * same arithmetic as the general loop in refine() (coefficients in the
+ * same order), with the class fixed by the parities of I and J and the
+ * source rows looked up once. */
+static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, long J, uint64_t seed, unsigned lv,
+                          const disp *dp)
+{
+    const int N = l->N, w = 2 * N;
+    const long j = fdiv2(J), oy = J - 2 * j;
+    const double *rows[2 * NL_SUBDIV_MAX_N];
+    double *out = dst->v + (J - dst->y0) * dst->nx - dst->x0;
+    const nl_subdiv_class *odd = &l->cls[oy ? 0 : 1], *even = &l->cls[2];
+    const double sd_odd = sqrt(odd->variance), sd_even = sqrt(even->variance);
+    for (int r = 0; r < w; r++)
+        rows[r] = src->v + (j + 1 - N + r - src->y0) * src->nx - src->x0 + 1 - N;
+    long cached = LONG_MIN;
+    double g[2] = {0, 0};
+    /* correlated: this row's displacements by cell, odd I (face on odd
+     * rows, edge-x on even ones) and even I (edge-y) */
+    const double *dodd = NULL, *deven = NULL;
+    if (dp->v) {
+        dodd = dp->v + ((oy ? 0 : 1) * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
+        deven = dp->v + (2 * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
+    }
+    if (w == 4 && dst->x0 % 2 == 0 && dst->nx % 2 == 0) {
+        /* N = 2 over whole pairs (2i, 2i + 1): both points read the same
+         * 4 x 4 window, so one pass of loads serves both stencils; the
+         * sums, their order and the random numbers are those of the
+         * general loop below */
+        const double *ae = even->a, *ao = odd->a;
+        for (long i = dst->x0 / 2; i < (dst->x0 + dst->nx) / 2; i++) {
+            double se = 0, so = 0;
+            for (int r = 0; r < 4; r++) {
+                const double *x = rows[r] + i, *pe = ae + 4 * r, *po = ao + 4 * r;
+                se += pe[0] * x[0];
+                so += po[0] * x[0];
+                se += pe[1] * x[1];
+                so += po[1] * x[1];
+                se += pe[2] * x[2];
+                so += po[2] * x[2];
+                se += pe[3] * x[3];
+                so += po[3] * x[3];
+            }
+            if (dodd) {
+                out[2 * i] = oy ? se + deven[i] : rows[N - 1][i + N - 1];
+                out[2 * i + 1] = so + dodd[i];
+            } else if (oy) {
+                nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, i, J), g);
+                out[2 * i] = se + sd_even * g[0];
+                out[2 * i + 1] = so + sd_odd * g[1];
+            } else {
+                long key = fdiv2(i);
+                if (key != cached) {
+                    nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
+                    cached = key;
+                }
+                out[2 * i] = rows[N - 1][i + N - 1];
+                out[2 * i + 1] = so + sd_odd * g[i - 2 * key];
+            }
+        }
+        return;
+    }
+    for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
+        long i = fdiv2(I);
+        const nl_subdiv_class *cl;
+        double s = 0, z;
+        if (I == 2 * i) {
+            if (!oy) {
+                out[I] = rows[N - 1][i + N - 1];
+                continue;
+            }
+            cl = even;
+        } else {
+            cl = odd;
+        }
+        for (int r = 0; r < w; r++) {
+            const double *a = cl->a + r * w, *x = rows[r] + i;
+            for (int q = 0; q < w; q++)
+                s += a[q] * x[q];
+        }
+        if (dodd) {
+            out[I] = s + (cl == odd ? dodd[i] : deven[i]);
+            continue;
+        }
+        {
+            /* odd rows draw at every I: samples 2i and 2i + 1 share a pair;
+             * even rows at odd I: samples 4k + 1 and 4k + 3 share one */
+            long key = oy ? i : fdiv2(i);
+            if (key != cached) {
+                nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
+                cached = key;
+            }
+            z = g[oy ? I - 2 * i : i - 2 * key];
+        }
+        out[I] = s + (cl == odd ? sd_odd : sd_even) * z;
+    }
+}
+
+/* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
+ * the finer grid is old point I/2 when I is even, else the midpoint of old
+ * points (I-1)/2 and (I+1)/2.  Eq. (3) in 1D, eq. (9) in 2D. */
 static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv,
                    const disp *dp)
 {
     const int N = l->N, w = 2 * N;
-    const int standard = dim == 2 && !l->cls[0].nalt && !l->cls[1].nalt && !l->cls[2].nalt && !dp->v;
+    const int standard = dim == 2 && !l->cls[0].nalt && !l->cls[1].nalt && !l->cls[2].nalt;
 #pragma omp parallel for schedule(static) if (dst->nx * dst->ny > 65536)
     for (long J = dst->y0; J < dst->y0 + dst->ny; J++) {
         double *row = dst->v + (J - dst->y0) * dst->nx;
         if (standard) {
-            refine_row_2d(l, src, dst, J, seed, lv);
+            refine_row_2d(l, src, dst, J, seed, lv, dp);
             continue;
         }
         for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
