@@ -72,6 +72,99 @@ static inline double disp_at(const disp *d, int a, long i, long j)
     return d->v[(a * d->ny + (j - d->c1)) * d->nx + (i - d->c0)];
 }
 
+/* One row J of a level being refined (refine_row_2d). */
+typedef struct {
+    const double *rows[2 * NL_SUBDIV_MAX_N]; /* source rows j+1-N..j+N, indexed by i + column */
+    double *out;                             /* the row, indexed by I */
+    const nl_subdiv_class *odd, *even;       /* classes at odd and even I */
+    double sd_odd, sd_even;                  /* their displacement deviations */
+    const double *dodd, *deven;              /* correlated: displacements by cell i, or NULL */
+    long J, oy;                              /* the row and its parity */
+    uint64_t seed;
+    unsigned lv;
+    int N;
+} row_job;
+
+/* N = 2 over whole pairs (2i, 2i + 1), i = i0..i1-1: both points read the
+ * same 4 x 4 window, so one pass of loads serves both stencils; the sums,
+ * their order and the random numbers are those of the general loop. */
+static void row_n2(const row_job *r, long i0, long i1)
+{
+    const double *ae = r->even->a, *ao = r->odd->a;
+    long cached = LONG_MIN;
+    double g[2] = {0, 0};
+    for (long i = i0; i < i1; i++) {
+        double se = 0, so = 0;
+        for (int k = 0; k < 4; k++) {
+            const double *x = r->rows[k] + i, *pe = ae + 4 * k, *po = ao + 4 * k;
+            se += pe[0] * x[0];
+            so += po[0] * x[0];
+            se += pe[1] * x[1];
+            so += po[1] * x[1];
+            se += pe[2] * x[2];
+            so += po[2] * x[2];
+            se += pe[3] * x[3];
+            so += po[3] * x[3];
+        }
+        if (r->dodd) {
+            r->out[2 * i] = r->oy ? se + r->deven[i] : r->rows[1][i + 1];
+            r->out[2 * i + 1] = so + r->dodd[i];
+        } else if (r->oy) {
+            nl_rng_gauss_pair(r->seed, NL_SUBDIV_STREAM + r->lv + 1, rng_index(2, i, r->J), g);
+            r->out[2 * i] = se + r->sd_even * g[0];
+            r->out[2 * i + 1] = so + r->sd_odd * g[1];
+        } else {
+            long key = fdiv2(i);
+            if (key != cached) {
+                nl_rng_gauss_pair(r->seed, NL_SUBDIV_STREAM + r->lv + 1, rng_index(2, key, r->J), g);
+                cached = key;
+            }
+            r->out[2 * i] = r->rows[1][i + 1];
+            r->out[2 * i + 1] = so + r->sd_odd * g[i - 2 * key];
+        }
+    }
+}
+
+/* Any N, samples I = I0..I1-1. */
+static void row_any(const row_job *r, long I0, long I1)
+{
+    const int w = 2 * r->N;
+    long cached = LONG_MIN;
+    double g[2] = {0, 0};
+    for (long I = I0; I < I1; I++) {
+        long i = fdiv2(I);
+        const nl_subdiv_class *cl;
+        double s = 0, z;
+        if (I == 2 * i) {
+            if (!r->oy) {
+                r->out[I] = r->rows[r->N - 1][i + r->N - 1];
+                continue;
+            }
+            cl = r->even;
+        } else {
+            cl = r->odd;
+        }
+        for (int k = 0; k < w; k++) {
+            const double *a = cl->a + k * w, *x = r->rows[k] + i;
+            for (int q = 0; q < w; q++)
+                s += a[q] * x[q];
+        }
+        if (r->dodd) {
+            r->out[I] = s + (cl == r->odd ? r->dodd[i] : r->deven[i]);
+            continue;
+        }
+        /* odd rows draw at every I: samples 2i and 2i + 1 share a pair;
+         * even rows at odd I: samples 4k + 1 and 4k + 3 share one */
+        long key = r->oy ? i : fdiv2(i);
+        if (key != cached) {
+            nl_rng_gauss_pair(r->seed, NL_SUBDIV_STREAM + r->lv + 1, rng_index(2, key, r->J), g);
+            cached = key;
+        }
+        z = g[r->oy ? I - 2 * i : i - 2 * key];
+        r->out[I] = s + (cl == r->odd ? r->sd_odd : r->sd_even) * z;
+    }
+}
+
 /* One row J of a 2D level with the standard 2N x 2N neighbourhoods: the
  * same arithmetic as the general loop in refine() (coefficients in the
  * same order), with the class fixed by the parities of I and J and the
@@ -79,95 +172,25 @@ static inline double disp_at(const disp *d, int a, long i, long j)
 static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, long J, uint64_t seed, unsigned lv,
                           const disp *dp)
 {
-    const int N = l->N, w = 2 * N;
-    const long j = fdiv2(J), oy = J - 2 * j;
-    const double *rows[2 * NL_SUBDIV_MAX_N];
-    double *out = dst->v + (J - dst->y0) * dst->nx - dst->x0;
-    const nl_subdiv_class *odd = &l->cls[oy ? 0 : 1], *even = &l->cls[2];
-    const double sd_odd = sqrt(odd->variance), sd_even = sqrt(even->variance);
-    for (int r = 0; r < w; r++)
-        rows[r] = src->v + (j + 1 - N + r - src->y0) * src->nx - src->x0 + 1 - N;
-    long cached = LONG_MIN;
-    double g[2] = {0, 0};
+    const long j = fdiv2(J);
+    row_job r;
+    r.N = l->N, r.J = J, r.oy = J - 2 * j, r.seed = seed, r.lv = lv;
+    r.out = dst->v + (J - dst->y0) * dst->nx - dst->x0;
+    r.odd = &l->cls[r.oy ? 0 : 1], r.even = &l->cls[2];
+    r.sd_odd = sqrt(r.odd->variance), r.sd_even = sqrt(r.even->variance);
+    for (int k = 0; k < 2 * r.N; k++)
+        r.rows[k] = src->v + (j + 1 - r.N + k - src->y0) * src->nx - src->x0 + 1 - r.N;
     /* correlated: this row's displacements by cell, odd I (face on odd
      * rows, edge-x on even ones) and even I (edge-y) */
-    const double *dodd = NULL, *deven = NULL;
+    r.dodd = r.deven = NULL;
     if (dp->v) {
-        dodd = dp->v + ((oy ? 0 : 1) * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
-        deven = dp->v + (2 * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
+        r.dodd = dp->v + ((r.oy ? 0 : 1) * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
+        r.deven = dp->v + (2 * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
     }
-    if (w == 4 && dst->x0 % 2 == 0 && dst->nx % 2 == 0) {
-        /* N = 2 over whole pairs (2i, 2i + 1): both points read the same
-         * 4 x 4 window, so one pass of loads serves both stencils; the
-         * sums, their order and the random numbers are those of the
-         * general loop below */
-        const double *ae = even->a, *ao = odd->a;
-        for (long i = dst->x0 / 2; i < (dst->x0 + dst->nx) / 2; i++) {
-            double se = 0, so = 0;
-            for (int r = 0; r < 4; r++) {
-                const double *x = rows[r] + i, *pe = ae + 4 * r, *po = ao + 4 * r;
-                se += pe[0] * x[0];
-                so += po[0] * x[0];
-                se += pe[1] * x[1];
-                so += po[1] * x[1];
-                se += pe[2] * x[2];
-                so += po[2] * x[2];
-                se += pe[3] * x[3];
-                so += po[3] * x[3];
-            }
-            if (dodd) {
-                out[2 * i] = oy ? se + deven[i] : rows[N - 1][i + N - 1];
-                out[2 * i + 1] = so + dodd[i];
-            } else if (oy) {
-                nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, i, J), g);
-                out[2 * i] = se + sd_even * g[0];
-                out[2 * i + 1] = so + sd_odd * g[1];
-            } else {
-                long key = fdiv2(i);
-                if (key != cached) {
-                    nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
-                    cached = key;
-                }
-                out[2 * i] = rows[N - 1][i + N - 1];
-                out[2 * i + 1] = so + sd_odd * g[i - 2 * key];
-            }
-        }
-        return;
-    }
-    for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
-        long i = fdiv2(I);
-        const nl_subdiv_class *cl;
-        double s = 0, z;
-        if (I == 2 * i) {
-            if (!oy) {
-                out[I] = rows[N - 1][i + N - 1];
-                continue;
-            }
-            cl = even;
-        } else {
-            cl = odd;
-        }
-        for (int r = 0; r < w; r++) {
-            const double *a = cl->a + r * w, *x = rows[r] + i;
-            for (int q = 0; q < w; q++)
-                s += a[q] * x[q];
-        }
-        if (dodd) {
-            out[I] = s + (cl == odd ? dodd[i] : deven[i]);
-            continue;
-        }
-        {
-            /* odd rows draw at every I: samples 2i and 2i + 1 share a pair;
-             * even rows at odd I: samples 4k + 1 and 4k + 3 share one */
-            long key = oy ? i : fdiv2(i);
-            if (key != cached) {
-                nl_rng_gauss_pair(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(2, key, J), g);
-                cached = key;
-            }
-            z = g[oy ? I - 2 * i : i - 2 * key];
-        }
-        out[I] = s + (cl == odd ? sd_odd : sd_even) * z;
-    }
+    if (r.N == 2 && dst->x0 % 2 == 0 && dst->nx % 2 == 0)
+        row_n2(&r, dst->x0 / 2, (dst->x0 + dst->nx) / 2);
+    else
+        row_any(&r, dst->x0, dst->x0 + dst->nx);
 }
 
 /* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
