@@ -158,13 +158,15 @@ static void output(const psd_opts *o, int dim, const double *freq, const double 
     cli_out_commit(o->out);
 }
 
-/* The model's profile on the field's grid. */
-static void target_profile(const psd_opts *o, const nl_field *x, double *tgt)
+/* The model's profile on the estimate's grid P (the field's for a
+ * periodogram, S samples per axis for Welch), so that row i of the target
+ * stands for the same frequency as row i of the estimate. */
+static void target_profile(const psd_opts *o, const nl_field *P, double *tgt)
 {
     nl_model *m;
     size_t nt;
     int st;
-    if ((st = nl_model_parse(o->target, &m)) || (st = nl_psd_model_profile(m, x->dim, x->n, x->h, tgt, &nt)))
+    if ((st = nl_model_parse(o->target, &m)) || (st = nl_psd_model_profile(m, P->dim, P->n, P->h, tgt, &nt)))
         cli_die_status(st);
     nl_model_free(m);
 }
@@ -200,7 +202,7 @@ int cli_cmd_psd(int argc, char **argv)
     if (o.target)
         tgt = cli_malloc(maxn * sizeof *tgt);
     if (o.target)
-        target_profile(&o, x, tgt);
+        target_profile(&o, P, tgt);
     cli_check(nl_psd_profile(P, freq, val, cnt, &nf));
     if (o.slope && (st = x->dim == 1 ? nl_psd_slope(freq, val, nf, o.f1, o.f2, 1, &o.sl)
                                      : nl_psd_slope_grid(P, o.f1, o.f2, &o.sl)) == NL_OK &&
