@@ -10,6 +10,9 @@
  * process whose marginal is DIST (shape standardises each field by its own
  * mean and deviation, which removes most of the slow fluctuation of the
  * empirical CDF: the test is then conservative).
+ * The tests are those of noiselab hist --against: the field thinned
+ * (analysis/gof_dep.h), KS with the effective n, chi-square on at most
+ * n_eff / 5 equal-probability bins counting each kept sample once.
  * usage: hist_false_alarm MODEL SIZE K DIST WRONG ALPHA BINS shape|exact
  * prints one line per test: name, rate corrected, rate uncorrected, and
  * the mean effective n and design effect. */
@@ -48,7 +51,7 @@ static int count(const nl_field *f, const nl_dist *d, size_t bins, double alpha,
     if (!st) {
         nl_gof_thin(f, dep.stride, t);
         b = (size_t)(dep.n_eff / 5) < bins ? (size_t)(dep.n_eff / 5) : bins;
-        st = nl_gof_test_dep(t, dep.kept, d, b < 2 ? 2 : b, dep.n_eff, dep.tau, &g) ||
+        st = nl_gof_test_dep(t, dep.kept, d, b < 2 ? 2 : b, dep.n_eff, 1, &g) ||
              nl_gof_test(f->data, f->count, d, bins, &g0);
     }
     free(t);
