@@ -121,3 +121,38 @@ size_t nl_gof_thin(const nl_field *x, size_t stride, double *out)
                 out[m++] = x->data[(k * x->n[1] + j) * x->n[0] + i];
     return m;
 }
+
+int nl_gof_test_thinned(const nl_field *const *x, size_t K, const nl_dist *d, size_t bins, nl_gof_dep *sum,
+                        size_t *smin, nl_gof *out)
+{
+    size_t total = 0, lo = (size_t)-1, B;
+    double *pool;
+    nl_gof_dep dep, s = {0};
+    int st = NL_OK;
+    if (K == 0)
+        return NL_ERROR(NL_EINVAL, "thinned test: expected at least one field");
+    for (size_t k = 0; k < K; k++)
+        total += x[k]->count;
+    if (!(pool = nl_alloc(total * sizeof *pool)))
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu samples", total);
+    for (size_t k = 0; k < K && !st; k++) {
+        if ((st = nl_gof_dependence(x[k], d, &dep)))
+            break;
+        s.kept += nl_gof_thin(x[k], dep.stride, pool + s.kept);
+        s.n += dep.n, s.n_eff += dep.n_eff, s.rho_stride = dep.rho_stride, s.radius = dep.radius;
+        s.stride = dep.stride > s.stride ? dep.stride : s.stride, lo = dep.stride < lo ? dep.stride : lo;
+    }
+    if (!st) {
+        s.n_eff = s.n_eff < (double)s.kept ? s.n_eff : (double)s.kept;
+        s.tau = (double)s.kept / s.n_eff;
+        B = (size_t)(s.n_eff / 5) < bins ? (size_t)(s.n_eff / 5) : bins;
+        st = nl_gof_test_dep(pool, s.kept, d, B < 2 ? 2 : B, s.n_eff, 1, out);
+    }
+    nl_free(pool);
+    if (!st) {
+        *sum = s;
+        if (smin)
+            *smin = lo;
+    }
+    return st;
+}

@@ -31,6 +31,7 @@
 #ifndef NL_GOF_DEP_H
 #define NL_GOF_DEP_H
 
+#include "gof.h"
 #include "../core/dist.h"
 #include "../core/field.h"
 
@@ -60,5 +61,18 @@ int nl_gof_dependence(const nl_field *x, const nl_dist *d, nl_gof_dep *out);
 /* The kept samples of x for a stride (>= 1), in row-major order, into out
  * (prod_a ceil(n_a / stride) values, the caller's); returns their number. */
 size_t nl_gof_thin(const nl_field *x, size_t stride, double *out);
+
+/* The test of noiselab hist --against on K >= 1 fields (an ensemble's
+ * realizations are independent of each other): every field thinned by its
+ * own nl_gof_dependence, the kept samples pooled and tested by
+ * nl_gof_test_dep with n_eff the sum of the fields' and chi-square on
+ * min(bins, n_eff / 5) (at least 2) equal-probability bins, each kept
+ * sample counted once.  *sum receives the totals: n, kept, n_eff, tau =
+ * kept / n_eff, stride the largest stride (*smin, may be NULL, the
+ * smallest), rho_stride and radius those of the last field.  Returns NL_OK
+ * and the codes of nl_gof_dependence and nl_gof_test_dep (NL_EINVAL also
+ * for K = 0, or fewer than 2 samples kept in all), NL_ENOMEM. */
+int nl_gof_test_thinned(const nl_field *const *x, size_t K, const nl_dist *d, size_t bins, nl_gof_dep *sum,
+                        size_t *smin, nl_gof *out);
 
 #endif

@@ -81,7 +81,7 @@ static void parse(int argc, char **argv, acf_opts *o)
         }
     }
     if (optind >= argc)
-        cli_die(2, "acf: expected at least one input file, got none");
+        cli_die(2, "acf: expected one input file or more, got none");
     o->in = argv + optind, o->nin = (size_t)(argc - optind), o->in0 = o->in[0];
     if (o->nin > 1 && (o->bands || (o->out && cli_has_ext(o->out, ".exr"))))
         cli_die(2, "acf: %s takes one input file, got %zu", o->bands ? "--bands" : "-o OUT.exr", o->nin);

@@ -84,7 +84,7 @@ static void parse(int argc, char **argv, hist_opts *o)
         }
     }
     if (optind >= argc)
-        cli_die(2, "hist: expected at least one input file, got none");
+        cli_die(2, "hist: expected one input file or more, got none");
     o->in = argv + optind, o->nin = (size_t)(argc - optind);
     if (o->out && !cli_has_ext(o->out, ".tsv"))
         cli_die(2, "-o: expected a .tsv file (the histogram is a table), got \"%s\"", o->out);
@@ -257,34 +257,27 @@ static void histogram(const hist_opts *o, nl_field **x, const hist_moments *mo, 
     free(c), nl_field_free(span);
 }
 
-/* Every field's kept samples, pooled, and the test against dist. */
+/* The test against dist: thinned (analysis/gof_dep.h), or every sample as independent. */
 static void test(const hist_opts *o, nl_field **x, const nl_dist *dist, hist_test *t)
 {
-    size_t total = 0, B;
-    double *pool, teff = 0;
-    nl_gof_dep dep;
+    nl_gof_dep sum;
+    double *pool;
     int st;
-    for (size_t k = 0; k < o->nin; k++)
-        total += x[k]->count;
-    pool = cli_malloc(total * sizeof *pool);
-    t->n = total, t->kept = 0, t->smin = (size_t)-1, t->smax = 0;
-    for (size_t k = 0; k < o->nin; k++) {
-        if (o->independent)
-            dep.stride = 1, dep.n_eff = (double)x[k]->count;
-        else if ((st = nl_gof_dependence(x[k], dist, &dep)))
-            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: --against: %s", o->in[k], nl_errmsg());
-        t->kept += nl_gof_thin(x[k], dep.stride, pool + t->kept);
-        teff += dep.n_eff;
-        t->smin = dep.stride < t->smin ? dep.stride : t->smin, t->smax = dep.stride > t->smax ? dep.stride : t->smax;
+    if (!o->independent) {
+        if ((st = nl_gof_test_thinned((const nl_field *const *)x, o->nin, dist, o->bins, &sum, &t->smin, &t->g)))
+            cli_die(nl_error_is_input(st) ? 2 : 1, "--against %s: %s", o->against, nl_errmsg());
+        t->n = sum.n, t->kept = sum.kept, t->smax = sum.stride, t->n_eff = sum.n_eff, t->tau = sum.tau;
+        return;
     }
-    t->n_eff = teff < (double)t->kept ? teff : (double)t->kept;
-    t->tau = (double)t->kept / t->n_eff;
-    B = o->independent ? o->bins : (size_t)(t->n_eff / 5) < o->bins ? (size_t)(t->n_eff / 5) : o->bins;
-    if (o->independent)
-        st = nl_gof_test(pool, t->kept, dist, B < 2 ? 2 : B, &t->g);
-    else
-        st = nl_gof_test_dep(pool, t->kept, dist, B < 2 ? 2 : B, t->n_eff, 1, &t->g);
-    if (st)
+    t->n = 0;
+    for (size_t k = 0; k < o->nin; k++)
+        t->n += x[k]->count;
+    pool = cli_malloc(t->n * sizeof *pool);
+    t->kept = 0, t->smin = t->smax = 1, t->tau = 1;
+    for (size_t k = 0; k < o->nin; k++)
+        t->kept += nl_gof_thin(x[k], 1, pool + t->kept);
+    t->n_eff = (double)t->n;
+    if ((st = nl_gof_test(pool, t->kept, dist, o->bins < 2 ? 2 : o->bins, &t->g)))
         cli_die(nl_error_is_input(st) ? 2 : 1, "--against %s: %s", o->against, nl_errmsg());
     free(pool);
 }

@@ -92,7 +92,7 @@ static void parse(int argc, char **argv, psd_opts *o)
         }
     }
     if (optind >= argc)
-        cli_die(2, "psd: expected at least one input file, got none");
+        cli_die(2, "psd: expected one input file or more, got none");
     o->in = argv + optind, o->nin = (size_t)(argc - optind);
     if (o->slope && o->nin > 1)
         cli_die(2, "--slope: expected one input file (the interval is that of one periodogram), got %zu", o->nin);

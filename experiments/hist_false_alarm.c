@@ -45,17 +45,7 @@ static int count(const nl_field *f, const nl_dist *d, size_t bins, double alpha,
 {
     nl_gof_dep dep;
     nl_gof g, g0;
-    double *t = malloc(f->count * sizeof *t);
-    size_t b;
-    int st = !t || nl_gof_dependence(f, d, &dep);
-    if (!st) {
-        nl_gof_thin(f, dep.stride, t);
-        b = (size_t)(dep.n_eff / 5) < bins ? (size_t)(dep.n_eff / 5) : bins;
-        st = nl_gof_test_dep(t, dep.kept, d, b < 2 ? 2 : b, dep.n_eff, 1, &g) ||
-             nl_gof_test(f->data, f->count, d, bins, &g0);
-    }
-    free(t);
-    if (st)
+    if (nl_gof_test_thinned(&f, 1, d, bins, &dep, NULL, &g) || nl_gof_test(f->data, f->count, d, bins, &g0))
         return 1;
     rej[0] += g.p_ks < alpha, rej[1] += g.p_chi2 < alpha, rej[2] += g0.p_ks < alpha, rej[3] += g0.p_chi2 < alpha;
     *neff += g.n_eff, *stride += (double)dep.stride;
