@@ -166,8 +166,8 @@ static void print_text(const hist_opts *o, const hist_moments *mo, const hist_te
     else
         printf("# against %s: n = %zu, effective n = %.1f (thinned to strides of %zu to %zu samples per axis: %zu "
                "kept, correlation left %.3g)\n", o->against, t->n, t->n_eff, t->smin, t->smax, t->kept, t->tau);
-    printf("# against %s: KS D %.6g p %.4g; chi-square %.6g on %zu equal-probability bins, p %.4g\n", o->against,
-           t->g.D, t->g.p_ks, t->g.chi2, t->g.bins - 1, t->g.p_chi2);
+    printf("# against %s: KS D %.6g p %.4g; chi-square %.6g on %zu equal-probability bins (%zu degrees of freedom), "
+           "p %.4g\n", o->against, t->g.D, t->g.p_ks, t->g.chi2, t->g.bins, t->g.bins - 1, t->g.p_chi2);
 }
 
 static void output(const hist_opts *o, const hist_moments *mo, const double *edges, const double *counts,

@@ -40,18 +40,10 @@ static void white_files(int K, size_t n)
     }
 }
 
-static json_t *cli_json(const char *args)
+static double at(json_t *j, const char *key, size_t i)
 {
-    static char out[1 << 20], err[4096];
-    json_error_t je;
-    json_t *j;
-    cr_assert_eq(run_noiselab(args, out, sizeof out, err, sizeof err), 0, "%s: %s", args, err);
-    j = json_loads(out, 0, &je);
-    cr_assert(j, "%s: not JSON: %s", args, je.text);
-    return j;
+    return json_real_value(json_array_get(json_object_get(j, key), i));
 }
-
-static double at(json_t *j, const char *key, size_t i) { return json_real_value(json_array_get(json_object_get(j, key), i)); }
 
 /* The two-sided periodogram of white noise of variance s^2 = 1.69 (unit
  * spacing) has level s^2 at every frequency, each ordinate exponential
@@ -69,7 +61,7 @@ Test(ensemble, psd_of_white_noise)
     for (int k = 0; k < 16; k++)
         p += sprintf(p, " w%d.tsv", k);
     sprintf(p, " --json");
-    json_t *j = cli_json(args);
+    json_t *j = run_noiselab_json(args);
     cr_assert_eq(json_integer_value(json_object_get(j, "fields")), 16);
     cr_assert_eq(json_array_size(json_object_get(j, "se")), 513);
     for (size_t i = 1; i < 512; i++)
@@ -90,11 +82,11 @@ Test(ensemble, two_inputs_average_the_single_estimates)
     for (int c = 0; c < 3; c++) {
         json_t *a, *b, *e;
         snprintf(args, sizeof args, cmd[c], "w0.tsv");
-        a = cli_json(args);
+        a = run_noiselab_json(args);
         snprintf(args, sizeof args, cmd[c], "w1.tsv");
-        b = cli_json(args);
+        b = run_noiselab_json(args);
         snprintf(args, sizeof args, cmd[c], "w0.tsv w1.tsv");
-        e = cli_json(args);
+        e = run_noiselab_json(args);
         size_t n = json_array_size(json_object_get(e, key[c]));
         cr_assert(n > 0);
         for (size_t i = 0; i < n && c < 2; i++) {

@@ -163,18 +163,6 @@ Test(estimators, slope_interval_on_a_2d_periodogram_is_honest)
     nl_field_free(x), nl_synth_fft_plan_free(p), nl_model_free(m);
 }
 
-/* Run the CLI and parse its JSON (the test fails on a non-zero exit). */
-static json_t *cli_json(const char *args)
-{
-    static char out[1 << 20], err[4096];
-    json_error_t je;
-    json_t *j;
-    cr_assert_eq(run_noiselab(args, out, sizeof out, err, sizeof err), 0, "%s: %s", args, err);
-    j = json_loads(out, 0, &je);
-    cr_assert(j, "%s: not JSON: %s", args, je.text);
-    return j;
-}
-
 /* psd --welch S --target: row i of the target stands for the frequency of
  * row i of the estimate, i / (S h): the model's profile on the S-point grid
  * (nl_psd_model_profile), to the 10 digits of the JSON.  On 65536 samples
@@ -195,7 +183,7 @@ Test(estimators, welch_target_on_the_segment_grid)
     char err[4096];
     cr_assert_eq(run_noiselab("synth fft --acf markov:scale=8 --size 65536 --seed 11 -o w.tsv", 0, 0, err, sizeof err), 0,
                  "%s", err);
-    json_t *j = cli_json("psd w.tsv --welch 256 --target markov:scale=8 --json");
+    json_t *j = run_noiselab_json("psd w.tsv --welch 256 --target markov:scale=8 --json");
     json_t *fr = json_object_get(j, "freq"), *ps = json_object_get(j, "psd"), *tj = json_object_get(j, "target");
     cr_assert_eq(nl_psd_model_profile(m, 1, &S, &h, tg, &nt), 0);
     cr_assert_eq(json_array_size(tj), nt);
@@ -213,7 +201,7 @@ Test(estimators, welch_target_on_the_segment_grid)
     json_decref(j);
     cr_assert_eq(run_noiselab("synth fft --acf markov:scale=8 --size 128x128 --seed 11 -o w2.exr", 0, 0, err, sizeof err),
                  0, "%s", err);
-    j = cli_json("psd w2.exr --welch 32 --target markov:scale=8 --json");
+    j = run_noiselab_json("psd w2.exr --welch 32 --target markov:scale=8 --json");
     tj = json_object_get(j, "target");
     cr_assert_eq(nl_psd_model_profile(m, 2, S2, h2, tg2, &nt), 0);
     cr_assert_eq(json_array_size(tj), nt);
