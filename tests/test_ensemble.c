@@ -75,7 +75,8 @@ Test(ensemble, psd_of_white_noise)
  * the JSON; the standard error of two values is |a - b| / 2. */
 Test(ensemble, two_inputs_average_the_single_estimates)
 {
-    static const char *const cmd[] = {"acf %s --max-lag 8 --json", "psd %s --welch 64 --json", "hist %s --bins 7 --json"};
+    static const char *const cmd[] = {"acf %s --max-lag 8 --json", "psd %s --welch 64 --json",
+                                      "hist %s --bins 7 --json"};
     static const char *const key[] = {"acf", "psd", "counts"}, *const sek[] = {"se", "se", "counts_se"};
     char args[256];
     white_files(2, 512);
@@ -90,18 +91,17 @@ Test(ensemble, two_inputs_average_the_single_estimates)
         size_t n = json_array_size(json_object_get(e, key[c]));
         cr_assert(n > 0);
         for (size_t i = 0; i < n && c < 2; i++) {
-            double x = at(a, key[c], i), y = at(b, key[c], i);
-            cr_expect_float_eq(at(e, key[c], i), (x + y) / 2, 1e-9 * (fabs(x) + fabs(y)) + 1e-300, "%s row %zu", cmd[c], i);
-            cr_expect_float_eq(at(e, sek[c], i), fabs(x - y) / 2, 1e-9 * (fabs(x) + fabs(y)) + 1e-300, "%s se %zu", cmd[c], i);
+            double x = at(a, key[c], i), y = at(b, key[c], i), tol = 1e-9 * (fabs(x) + fabs(y)) + 1e-300;
+            cr_expect_float_eq(at(e, key[c], i), (x + y) / 2, tol, "%s row %zu", cmd[c], i);
+            cr_expect_float_eq(at(e, sek[c], i), fabs(x - y) / 2, tol, "%s se %zu", cmd[c], i);
         }
         if (c == 2) { /* common bins over both ranges: the mean counts add up to the mean n */
             double t = 0;
             for (size_t i = 0; i < n; i++)
                 t += at(e, key[c], i);
             cr_expect_float_eq(t, 512, 1e-9);
-            cr_expect_float_eq(json_real_value(json_object_get(e, "mean")),
-                               (json_real_value(json_object_get(a, "mean")) + json_real_value(json_object_get(b, "mean"))) / 2,
-                               1e-9);
+            double ma = json_real_value(json_object_get(a, "mean")), mb = json_real_value(json_object_get(b, "mean"));
+            cr_expect_float_eq(json_real_value(json_object_get(e, "mean")), (ma + mb) / 2, 1e-9);
         }
         json_decref(a), json_decref(b), json_decref(e);
     }

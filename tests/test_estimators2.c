@@ -181,8 +181,8 @@ Test(estimators, welch_target_on_the_segment_grid)
     int cnt = 0;
     nl_model *m = test_model("markov:scale=8");
     char err[4096];
-    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=8 --size 65536 --seed 11 -o w.tsv", 0, 0, err, sizeof err), 0,
-                 "%s", err);
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=8 --size 65536 --seed 11 -o w.tsv", 0, 0, err, sizeof err),
+                 0, "%s", err);
     json_t *j = run_noiselab_json("psd w.tsv --welch 256 --target markov:scale=8 --json");
     json_t *fr = json_object_get(j, "freq"), *ps = json_object_get(j, "psd"), *tj = json_object_get(j, "target");
     cr_assert_eq(nl_psd_model_profile(m, 1, &S, &h, tg, &nt), 0);
@@ -199,8 +199,8 @@ Test(estimators, welch_target_on_the_segment_grid)
     }
     cr_expect(fabs(sum / cnt - 1) < 0.05, "mean Welch / target over the band: %g", sum / cnt);
     json_decref(j);
-    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=8 --size 128x128 --seed 11 -o w2.exr", 0, 0, err, sizeof err),
-                 0, "%s", err);
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=8 --size 128x128 --seed 11 -o w2.exr", 0, 0, err,
+                              sizeof err), 0, "%s", err);
     j = run_noiselab_json("psd w2.exr --welch 32 --target markov:scale=8 --json");
     tj = json_object_get(j, "target");
     cr_assert_eq(nl_psd_model_profile(m, 2, S2, h2, tg2, &nt), 0);
