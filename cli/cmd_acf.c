@@ -1,5 +1,6 @@
 /* noiselab acf: estimate the autocorrelation of a field. */
 #include "cli.h"
+#include "inputs.h"
 #include "../analysis/acf.h"
 #include "../analysis/ensemble.h"
 #include "../analysis/fftshift.h"
@@ -14,7 +15,7 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: noiselab acf IN... [--max-lag L] [--axis x|y|z] [--radial] [--unbiased]\n"
+    "usage: noiselab acf IN...|--realizations K --acf SPEC --size N [--seed S] [--max-lag L] [--axis x|y|z] [--radial] [--unbiased]\n"
     "                    [--mean M] [--target SPEC] [--json] [-o OUT.tsv|OUT.exr]\n\n"
     "Estimates the autocorrelation of IN (EXR, PNG or 1D TSV) by FFT with zero\n"
     "padding.  Lags are in spacing units.  Biased estimate (divisor N) by default;\n"
@@ -34,13 +35,15 @@ static const char help[] =
     "different seeds) make an ensemble: acf is the mean of their estimates and\n"
     "se its standard error (their scatter over the square root of their\n"
     "number), to set one realization's wander against the target.  --bands and\n"
-    "-o OUT.exr take one input.\n";
+    "-o OUT.exr take one input.  --realizations K --acf SPEC --size N [--seed S]\n"
+    "analyses, in place of files, the K fields of noiselab synth fft --acf SPEC\n"
+    "--size N with seeds S (default 1) to S + K - 1.\n";
 
 /* Options of noiselab acf. */
 typedef struct {
-    char **in;                           /* inputs */
+    cli_inputs src;                      /* files or realizations */
     size_t nin;                          /* their number (2 or more: an ensemble) */
-    const char *in0, *out, *tmp, *target; /* first input, output (and its temporary), model */
+    const char *in0, *out, *tmp, *target; /* first input's name, output (and its temporary), model */
     double maxlag, mean;                 /* NAN: default */
     int axis, radial, unbiased, json, direct, bands;
     size_t nl;                           /* lags 0 .. nl - 1 */
@@ -54,7 +57,7 @@ static void parse(int argc, char **argv, acf_opts *o)
         {"mean", required_argument, 0, 'm'},    {"target", required_argument, 0, 't'},
         {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
         {"help", no_argument, 0, 'h'},          {"direct", no_argument, 0, 'D'},
-        {"bands", no_argument, 0, 'B'},          {0}};
+        {"bands", no_argument, 0, 'B'},          CLI_INPUTS_OPTIONS, {0}};
     int c;
     o->maxlag = o->mean = NAN;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "acf")) != -1) {
@@ -77,12 +80,14 @@ static void parse(int argc, char **argv, acf_opts *o)
         case 'D': o->direct = 1; break;
         case 'B': o->bands = 1; break;
         case 'o': o->out = optarg; break;
+        case CLI_IN_REALIZATIONS: case CLI_IN_ACF: case CLI_IN_SIZE: case CLI_IN_SEED:
+            cli_inputs_option(&o->src, c, optarg);
+            break;
         case 'h': fputs(help, stdout); exit(0);
         }
     }
-    if (optind >= argc)
-        cli_die(2, "acf: expected one input file or more, got none");
-    o->in = argv + optind, o->nin = (size_t)(argc - optind), o->in0 = o->in[0];
+    cli_inputs_operands(&o->src, "acf", argc, argv);
+    o->nin = o->src.count;
     if (o->nin > 1 && (o->bands || (o->out && cli_has_ext(o->out, ".exr"))))
         cli_die(2, "acf: %s takes one input file, got %zu", o->bands ? "--bands" : "-o OUT.exr", o->nin);
 }
@@ -203,7 +208,7 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
 
 /* An ensemble: the estimates of the other inputs, and the mean and
  * standard error of all of them (val holds the first one on entry). */
-static void ensemble(const acf_opts *o, const nl_field *x0, double *lag, double *val, double *se)
+static void ensemble(acf_opts *o, const nl_field *x0, double *lag, double *val, double *se)
 {
     size_t K = o->nin, nl = o->nl;
     double *rows = cli_malloc(K * nl * sizeof *rows);
@@ -211,15 +216,9 @@ static void ensemble(const acf_opts *o, const nl_field *x0, double *lag, double 
     for (size_t i = 0; i < nl; i++)
         rows[i] = val[i];
     for (size_t k = 1; k < K; k++) {
-        nl_field *x = cli_read_field(o->in[k], NULL), *full;
-        int same = x->dim == x0->dim;
-        for (int a = 0; a < 3 && same; a++)
-            same = x->n[a] == x0->n[a] && (a >= x->dim || x->h[a] == x0->h[a]);
-        if (!same)
-            cli_die(2, "acf: %s: expected a field of the size and spacing of %s (an ensemble), got %dD of %zu samples",
-                    o->in[k], o->in0, x->dim, x->count);
+        nl_field *x = cli_inputs_read(&o->src, k, x0), *full;
         if ((st = nl_acf_full(x, o->mean, o->unbiased, &full)))
-            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o->in[k], nl_errmsg());
+            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, k), nl_errmsg());
         estimate(o, x, full, lag, rows + k * nl, NULL, NULL);
         nl_field_free(full), nl_field_free(x);
     }
@@ -235,7 +234,8 @@ int cli_cmd_acf(int argc, char **argv)
     int st;
 
     parse(argc, argv, &o);
-    x = cli_read_field(o.in0, NULL);
+    x = cli_inputs_read(&o.src, 0, NULL);
+    o.in0 = o.src.K ? "the realizations" : o.src.files[0];
     check_field(&o, x);
     o.tmp = cli_out_begin(o.out);
     if ((st = nl_acf_full(x, o.mean, o.unbiased, &full)))
@@ -273,5 +273,6 @@ int cli_cmd_acf(int argc, char **argv)
     free(lag), free(val), free(tgt), free(blo), free(bhi), free(se);
     nl_field_free(full);
     nl_field_free(x);
+    cli_inputs_free(&o.src);
     return 0;
 }

@@ -1,5 +1,6 @@
 /* noiselab hist: histogram and moments of a field, or of an ensemble of fields. */
 #include "cli.h"
+#include "inputs.h"
 #include "../core/field.h"
 #include "../analysis/ensemble.h"
 #include "../analysis/gof.h"
@@ -14,7 +15,7 @@
 #include <stdlib.h>
 
 static const char help[] =
-    "usage: noiselab hist IN... [--bins B] [--against DIST] [--independent] [--json] [-o OUT.tsv]\n\n"
+    "usage: noiselab hist IN...|--realizations K --acf SPEC --size N [--seed S] [--bins B] [--against DIST] [--independent] [--json] [-o OUT.tsv]\n\n"
     "Histogram of the samples of IN (EXR, PNG or 1D TSV) in B equal bins over\n"
     "[min, max] (default 50), with the mean, the unbiased variance, the skewness\n"
     "and the excess kurtosis (0 for a Gaussian).\n\n"
@@ -39,11 +40,14 @@ static const char help[] =
     "Several inputs make an ensemble: the histogram on common bins over the\n"
     "range of all of them, with the mean count per field and its standard\n"
     "error (column se), and each moment's mean over the fields +- its standard\n"
-    "error; --against tests the kept samples of every field together.\n";
+    "error; --against tests the kept samples of every field together.\n"
+    "--realizations K --acf SPEC --size N [--seed S] analyses, in place of files,\n"
+    "the K fields of noiselab synth fft --acf SPEC --size N with seeds S\n"
+    "(default 1) to S + K - 1.\n";
 
 /* Options of noiselab hist. */
 typedef struct {
-    char **in;                            /* inputs */
+    cli_inputs src;                       /* files or realizations */
     size_t nin;                           /* their number */
     const char *out, *tmp, *against;      /* output (and its temporary), distribution spec */
     size_t bins;                          /* equal bins over [min, max] */
@@ -70,7 +74,7 @@ static void parse(int argc, char **argv, hist_opts *o)
                                          {"against", required_argument, 0, 'a'},
                                          {"independent", no_argument, 0, 'I'},
                                          {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
-                                         {0}};
+                                         CLI_INPUTS_OPTIONS, {0}};
     int c;
     o->bins = 50;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "hist")) != -1) {
@@ -80,12 +84,14 @@ static void parse(int argc, char **argv, hist_opts *o)
         case 'I': o->independent = 1; break;
         case 'j': o->json = 1; break;
         case 'o': o->out = optarg; break;
+        case CLI_IN_REALIZATIONS: case CLI_IN_ACF: case CLI_IN_SIZE: case CLI_IN_SEED:
+            cli_inputs_option(&o->src, c, optarg);
+            break;
         case 'h': fputs(help, stdout); exit(0);
         }
     }
-    if (optind >= argc)
-        cli_die(2, "hist: expected one input file or more, got none");
-    o->in = argv + optind, o->nin = (size_t)(argc - optind);
+    cli_inputs_operands(&o->src, "hist", argc, argv);
+    o->nin = o->src.count;
     if (o->out && !cli_has_ext(o->out, ".tsv"))
         cli_die(2, "-o: expected a .tsv file (the histogram is a table), got \"%s\"", o->out);
     if (o->bins > 10000000)
@@ -192,12 +198,12 @@ static void output(const hist_opts *o, const hist_moments *mo, const double *edg
 
 /* Read every input; an ensemble's fields are held together, checked
  * against the memory available as a whole. */
-static nl_field **read_all(const hist_opts *o)
+static nl_field **read_all(hist_opts *o)
 {
     nl_field **x = cli_malloc(o->nin * sizeof *x);
     size_t total = 0;
     for (size_t k = 0; k < o->nin; k++) {
-        x[k] = cli_read_field(o->in[k], NULL);
+        x[k] = cli_inputs_read(&o->src, k, NULL);
         total += x[k]->count;
         if (nl_size_check(1, &total, sizeof(double), 1, NULL))
             cli_die(2, "hist: %zu fields of %zu samples in all do not fit in the memory available; expected fewer "
@@ -207,7 +213,7 @@ static nl_field **read_all(const hist_opts *o)
 }
 
 /* The moments of each field; their means and standard errors over an ensemble. */
-static void moments(const hist_opts *o, nl_field **x, hist_moments *mo)
+static void moments(hist_opts *o, nl_field **x, hist_moments *mo)
 {
     size_t K = o->nin;
     double *v = cli_malloc(4 * K * sizeof *v), mean[4], se[4];
@@ -216,7 +222,7 @@ static void moments(const hist_opts *o, nl_field **x, hist_moments *mo)
     mo->m.n = 0, mo->m.min = INFINITY, mo->m.max = -INFINITY;
     for (size_t k = 0; k < K; k++) {
         if ((st = nl_moments_compute(x[k], &m)))
-            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o->in[k], nl_errmsg());
+            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, k), nl_errmsg());
         if (K == 1)
             mo->m = m;
         v[4 * k] = m.mean, v[4 * k + 1] = m.variance, v[4 * k + 2] = m.skewness, v[4 * k + 3] = m.kurtosis;
@@ -232,7 +238,7 @@ static void moments(const hist_opts *o, nl_field **x, hist_moments *mo)
 }
 
 /* The histogram; an ensemble's on the bins of the overall range, as mean counts per field with their se. */
-static void histogram(const hist_opts *o, nl_field **x, const hist_moments *mo, double *edges, double *counts,
+static void histogram(hist_opts *o, nl_field **x, const hist_moments *mo, double *edges, double *counts,
                       double *se)
 {
     size_t K = o->nin, one = 2, B = o->bins;
@@ -241,7 +247,7 @@ static void histogram(const hist_opts *o, nl_field **x, const hist_moments *mo, 
     int st;
     if (K == 1) {
         if ((st = nl_hist(x[0], B, edges, counts)))
-            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o->in[0], nl_errmsg());
+            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, 0), nl_errmsg());
         return;
     }
     span = nl_field_alloc(1, &one, NULL, &st);  /* the edges a field of the overall range would have */
@@ -314,5 +320,6 @@ int cli_cmd_hist(int argc, char **argv)
     for (size_t k = 0; k < o.nin; k++)
         nl_field_free(x[k]);
     free(x);
+    cli_inputs_free(&o.src);
     return 0;
 }

@@ -1,5 +1,6 @@
 /* noiselab psd: estimate the power spectral density of a field. */
 #include "cli.h"
+#include "inputs.h"
 #include "../analysis/ensemble.h"
 #include "../analysis/fftshift.h"
 #include "../analysis/psd.h"
@@ -15,7 +16,7 @@
 #include <stdlib.h>
 
 static const char help[] =
-    "usage: noiselab psd IN... [--radial] [--mean M] [--welch S] [--target SPEC] [--slope F1:F2]\n"
+    "usage: noiselab psd IN...|--realizations K --acf SPEC --size N [--seed S] [--radial] [--mean M] [--welch S] [--target SPEC] [--slope F1:F2]\n"
     "                    [--angular] [--json] [-o OUT.tsv|OUT.exr] [--preview P.png]\n\n"
     "Periodogram of IN (EXR, PNG or 1D TSV): P(f) = (h/N) |DFT(x - mean)|^2, a\n"
     "TWO-SIDED density in variance per (cycles per unit length)^dim, so that the sum\n"
@@ -46,11 +47,13 @@ static const char help[] =
     "their number), and --angular, -o OUT.exr and --preview show the mean\n"
     "spectrum.  One periodogram scatters by 100% of its value at every\n"
     "frequency; K realizations or Welch's segments bring that down to about\n"
-    "1/sqrt(K).  --slope takes one input.\n";
+    "1/sqrt(K).  --slope takes one input.  --realizations K --acf SPEC --size N\n"
+    "[--seed S] analyses, in place of files, the K fields of noiselab synth fft\n"
+    "--acf SPEC --size N with seeds S (default 1) to S + K - 1.\n";
 
 /* Options of noiselab psd and what it found. */
 typedef struct {
-    char **in;                             /* inputs */
+    cli_inputs src;                        /* files or realizations */
     size_t nin;                            /* their number (2 or more: an ensemble) */
     const char *out, *tmp, *target;        /* output (and its temporary), model */
     const char *preview, *pvtmp;           /* picture (and its temporary) */
@@ -68,7 +71,7 @@ static void parse(int argc, char **argv, psd_opts *o)
         {"target", required_argument, 0, 't'}, {"json", no_argument, 0, 'j'},
         {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
         {"slope", required_argument, 0, 's'},  {"welch", required_argument, 0, 'W'},
-        {"angular", no_argument, 0, 'A'},      {"preview", required_argument, 0, 'p'}, {0}};
+        {"angular", no_argument, 0, 'A'},      {"preview", required_argument, 0, 'p'}, CLI_INPUTS_OPTIONS, {0}};
     int c;
     char *end;
     o->mean = NAN, o->nseg = 1, o->aniso = NAN;
@@ -88,12 +91,14 @@ static void parse(int argc, char **argv, psd_opts *o)
             break;
         case 'j': o->json = 1; break;
         case 'o': o->out = optarg; break;
+        case CLI_IN_REALIZATIONS: case CLI_IN_ACF: case CLI_IN_SIZE: case CLI_IN_SEED:
+            cli_inputs_option(&o->src, c, optarg);
+            break;
         case 'h': fputs(help, stdout); exit(0);
         }
     }
-    if (optind >= argc)
-        cli_die(2, "psd: expected one input file or more, got none");
-    o->in = argv + optind, o->nin = (size_t)(argc - optind);
+    cli_inputs_operands(&o->src, "psd", argc, argv);
+    o->nin = o->src.count;
     if (o->slope && o->nin > 1)
         cli_die(2, "--slope: expected one input file (the interval is that of one periodogram), got %zu", o->nin);
 }
@@ -213,9 +218,9 @@ static nl_field *estimate(psd_opts *o, size_t k, const nl_field *x)
     nl_field *P;
     int st;
     if (o->welch && (st = nl_psd_welch(x, o->welch, o->mean, &P, &o->nseg)))
-        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: --welch %zu: %s", o->in[k], o->welch, nl_errmsg());
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: --welch %zu: %s", cli_inputs_name(&o->src, k), o->welch, nl_errmsg());
     if (!o->welch && (st = nl_psd_periodogram(x, o->mean, &P)))
-        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o->in[k], nl_errmsg());
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, k), nl_errmsg());
     return P;
 }
 
@@ -227,13 +232,7 @@ static void ensemble(psd_opts *o, const nl_field *x0, nl_field *P, psd_table *t,
     double *rows = cli_malloc(K * nf * sizeof *rows);
     cli_check(nl_psd_profile(P, t->freq, rows, cnt, &nf));
     for (size_t k = 1; k < K; k++) {
-        nl_field *x = cli_read_field(o->in[k], NULL), *Pk;
-        int same = x->dim == x0->dim;
-        for (int a = 0; a < 3 && same; a++)
-            same = x->n[a] == x0->n[a] && (a >= x->dim || x->h[a] == x0->h[a]);
-        if (!same)
-            cli_die(2, "psd: %s: expected a field of the size and spacing of %s (an ensemble), got %dD of %zu samples",
-                    o->in[k], o->in[0], x->dim, x->count);
+        nl_field *x = cli_inputs_read(&o->src, k, x0), *Pk;
         Pk = estimate(o, k, x);
         cli_check(nl_psd_profile(Pk, t->freq, rows + k * nf, cnt, &nf));
         for (size_t i = 0; i < P->count; i++)
@@ -256,9 +255,9 @@ int cli_cmd_psd(int argc, char **argv)
     int st;
 
     parse(argc, argv, &o);
-    x = cli_read_field(o.in[0], NULL);
+    x = cli_inputs_read(&o.src, 0, NULL);
     if ((o.angular || o.preview || (o.out && cli_has_ext(o.out, ".exr"))) && x->dim != 2)
-        cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o.in[0], x->dim);
+        cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", cli_inputs_name(&o.src, 0), x->dim);
     if (o.preview && !cli_has_ext(o.preview, ".png"))
         cli_die(2, "--preview: expected a .png file, got \"%s\"", o.preview);
     o.tmp = cli_out_begin(o.out);
@@ -294,5 +293,6 @@ int cli_cmd_psd(int argc, char **argv)
     free(t.freq), free(t.val), free(cnt), free(t.tgt), free(t.se);
     nl_field_free(P);
     nl_field_free(x);
+    cli_inputs_free(&o.src);
     return 0;
 }
