@@ -15,7 +15,8 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: noiselab acf IN...|--realizations K --acf SPEC --size N [--seed S] [--max-lag L] [--axis x|y|z] [--radial] [--unbiased]\n"
+    "usage: noiselab acf IN...|--realizations K --acf SPEC --size N [--seed S]\n"
+    "                    [--max-lag L] [--axis x|y|z] [--radial] [--unbiased]\n"
     "                    [--mean M] [--target SPEC] [--json] [-o OUT.tsv|OUT.exr]\n\n"
     "Estimates the autocorrelation of IN (EXR, PNG or 1D TSV) by FFT with zero\n"
     "padding.  Lags are in spacing units.  Biased estimate (divisor N) by default;\n"

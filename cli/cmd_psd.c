@@ -16,7 +16,8 @@
 #include <stdlib.h>
 
 static const char help[] =
-    "usage: noiselab psd IN...|--realizations K --acf SPEC --size N [--seed S] [--radial] [--mean M] [--welch S] [--target SPEC] [--slope F1:F2]\n"
+    "usage: noiselab psd IN...|--realizations K --acf SPEC --size N [--seed S]\n"
+    "                    [--radial] [--mean M] [--welch S] [--target SPEC] [--slope F1:F2]\n"
     "                    [--angular] [--json] [-o OUT.tsv|OUT.exr] [--preview P.png]\n\n"
     "Periodogram of IN (EXR, PNG or 1D TSV): P(f) = (h/N) |DFT(x - mean)|^2, a\n"
     "TWO-SIDED density in variance per (cycles per unit length)^dim, so that the sum\n"
