@@ -211,9 +211,12 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
  * standard error of all of them (val holds the first one on entry). */
 static void ensemble(acf_opts *o, const nl_field *x0, double *lag, double *val, double *se)
 {
-    size_t K = o->nin, nl = o->nl;
-    double *rows = cli_malloc(K * nl * sizeof *rows);
+    size_t K = o->nin, nl = o->nl, dims[2] = {nl, K};
+    double *rows;
     int st;
+    if (nl_size_check(2, dims, sizeof *rows, 1, NULL))
+        cli_die(2, "acf: %zu estimates of %zu lags do not fit in the memory available; expected fewer inputs", K, nl);
+    rows = cli_malloc(K * nl * sizeof *rows);
     for (size_t i = 0; i < nl; i++)
         rows[i] = val[i];
     for (size_t k = 1; k < K; k++) {

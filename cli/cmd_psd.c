@@ -229,8 +229,12 @@ static nl_field *estimate(psd_opts *o, size_t k, const nl_field *x)
  * the mean and standard error of the profiles into t. */
 static void ensemble(psd_opts *o, const nl_field *x0, nl_field *P, psd_table *t, size_t *cnt)
 {
-    size_t K = o->nin, nf = t->nf;
-    double *rows = cli_malloc(K * nf * sizeof *rows);
+    size_t K = o->nin, nf = t->nf, dims[2] = {nf, K};
+    double *rows;
+    if (nl_size_check(2, dims, sizeof *rows, 1, NULL))
+        cli_die(2, "psd: %zu estimates of %zu frequencies do not fit in the memory available; expected fewer inputs",
+                K, nf);
+    rows = cli_malloc(K * nf * sizeof *rows);
     cli_check(nl_psd_profile(P, t->freq, rows, cnt, &nf));
     for (size_t k = 1; k < K; k++) {
         nl_field *x = cli_inputs_read(&o->src, k, x0), *Pk;
