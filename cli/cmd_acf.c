@@ -81,10 +81,8 @@ static void parse(int argc, char **argv, acf_opts *o)
         case 'D': o->direct = 1; break;
         case 'B': o->bands = 1; break;
         case 'o': o->out = optarg; break;
-        case CLI_IN_REALIZATIONS: case CLI_IN_ACF: case CLI_IN_SIZE: case CLI_IN_SEED:
-            cli_inputs_option(&o->src, c, optarg);
-            break;
         case 'h': fputs(help, stdout); exit(0);
+        default: cli_inputs_option(&o->src, c, optarg); /* --realizations, --acf, --size, --seed */
         }
     }
     cli_inputs_operands(&o->src, "acf", argc, argv);

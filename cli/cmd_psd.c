@@ -92,10 +92,8 @@ static void parse(int argc, char **argv, psd_opts *o)
             break;
         case 'j': o->json = 1; break;
         case 'o': o->out = optarg; break;
-        case CLI_IN_REALIZATIONS: case CLI_IN_ACF: case CLI_IN_SIZE: case CLI_IN_SEED:
-            cli_inputs_option(&o->src, c, optarg);
-            break;
         case 'h': fputs(help, stdout); exit(0);
+        default: cli_inputs_option(&o->src, c, optarg); /* --realizations, --acf, --size, --seed */
         }
     }
     cli_inputs_operands(&o->src, "psd", argc, argv);

@@ -34,7 +34,8 @@ typedef struct {
     char name[96];             /* the name of the last field asked for */
 } cli_inputs;
 
-/* Take option c (one of CLI_IN_*) with its argument; exits 2 on a bad value. */
+/* Take option c (one of CLI_IN_*; other codes are ignored) with its argument;
+ * exits 2 on a bad value. */
 void cli_inputs_option(cli_inputs *in, int c, const char *arg);
 
 /* After the options: the operands are the files, unless --realizations was
