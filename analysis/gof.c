@@ -26,7 +26,8 @@ static double q_ks(double l)
     return fmin(fmax(2 * s, 0), 1);
 }
 
-static int gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl_gof *out)
+static int gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, double n_eff, double deff,
+                    nl_gof *out)
 {
     double *s, D = 0, en;
     size_t *count;
@@ -46,7 +47,7 @@ static int gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl
         size_t b = (size_t)(F * (double)bins);
         count[b < bins ? b : bins - 1]++;
     }
-    en = sqrt((double)n);
+    en = sqrt(n_eff);
     out->D = D;
     out->p_ks = q_ks((en + 0.12 + 0.11 / en) * D);
     out->chi2 = 0;
@@ -55,7 +56,8 @@ static int gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl
         out->chi2 += ((double)count[b] - e) * ((double)count[b] - e) / e;
     }
     out->bins = bins;
-    out->p_chi2 = gsl_cdf_chisq_Q(out->chi2, (double)(bins - 1));
+    out->p_chi2 = gsl_cdf_chisq_Q(deff == 1 ? out->chi2 : out->chi2 / deff, (double)(bins - 1));
+    out->n_eff = n_eff, out->deff = deff;
     free(s);
     free(count);
     return NL_OK;
@@ -78,7 +80,20 @@ int nl_gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, nl_gof
 {
     int st;
     nl_gsl_enter();
-    st = gof_test(x, n, d, bins, out);
+    st = gof_test(x, n, d, bins, (double)n, 1, out);
+    nl_gsl_leave();
+    return st;
+}
+
+int nl_gof_test_dep(const double *x, size_t n, const nl_dist *d, size_t bins, double n_eff, double deff,
+                    nl_gof *out)
+{
+    int st;
+    if (!(n_eff >= 1 && n_eff <= (double)n && deff >= 1 && isfinite(deff)))
+        return NL_ERROR(NL_EINVAL, "goodness of fit: expected 1 <= effective n <= %zu and a design effect >= 1, got "
+                        "%g and %g", n, n_eff, deff);
+    nl_gsl_enter();
+    st = gof_test(x, n, d, bins, n_eff, deff, out);
     nl_gsl_leave();
     return st;
 }

@@ -112,3 +112,23 @@ int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts)
     nl_gsl_leave();
     return st;
 }
+
+int nl_hist_count(const nl_field *x, const double *edges, size_t bins, double *counts)
+{
+    if (bins < 1)
+        return NL_ERROR(NL_EINVAL, "bins: expected at least 1, got %zu", bins);
+    for (size_t b = 0; b < bins; b++)
+        counts[b] = 0;
+    for (size_t i = 0; i < x->count; i++) {
+        size_t lo = 0, hi = bins; /* the last edge <= v, by bisection: edges[lo] <= v < edges[hi] */
+        while (hi - lo > 1) {
+            size_t mid = lo + (hi - lo) / 2;
+            if (x->data[i] >= edges[mid])
+                lo = mid;
+            else
+                hi = mid;
+        }
+        counts[lo] += 1;
+    }
+    return NL_OK;
+}

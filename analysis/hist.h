@@ -33,6 +33,14 @@ int nl_moments_compute(const nl_field *x, nl_moments *m);
  * overflows) or NL_ENOMEM. */
 int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
 
+/* Counts of the samples of x in given bins: edges[0..bins] increasing (as
+ * nl_hist makes them); a sample v goes to bin b when edges[b] <= v <
+ * edges[b+1], below edges[0] to the first bin and from edges[bins] on to
+ * the last, so that fields binned on common edges (an ensemble's) are
+ * counted whole.  counts[0..bins-1] (doubles) are overwritten.  Returns
+ * NL_OK or NL_EINVAL (bins = 0). */
+int nl_hist_count(const nl_field *x, const double *edges, size_t bins, double *counts);
+
 /* The histogram of nl_hist as a density against the Gaussian of the
  * moments mo (from nl_moments_compute): for each of the bins, its midpoint,
  * count / (N width) and the Gaussian density of mean mo->mean and variance

@@ -1,6 +1,8 @@
 /* noiselab acf: estimate the autocorrelation of a field. */
 #include "cli.h"
+#include "inputs.h"
 #include "../analysis/acf.h"
+#include "../analysis/ensemble.h"
 #include "../analysis/fftshift.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
@@ -13,7 +15,8 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: noiselab acf IN [--max-lag L] [--axis x|y|z] [--radial] [--unbiased]\n"
+    "usage: noiselab acf IN...|--realizations K --acf SPEC --size N [--seed S]\n"
+    "                    [--max-lag L] [--axis x|y|z] [--radial] [--unbiased]\n"
     "                    [--mean M] [--target SPEC] [--json] [-o OUT.tsv|OUT.exr]\n\n"
     "Estimates the autocorrelation of IN (EXR, PNG or 1D TSV) by FFT with zero\n"
     "padding.  Lags are in spacing units.  Biased estimate (divisor N) by default;\n"
@@ -26,13 +29,22 @@ static const char help[] =
     "  --direct      the direct sum of eq. (15) instead of the FFT (same numbers to rounding)\n"
     "  --bands       1D: a 95% band lo, hi from Bartlett's formula for the variance of the\n"
     "                (biased) estimate, with the estimate in place of R up to 4 max-lag\n"
-    "  --json        {\"lag\": [...], \"acf\": [...], ...} on stdout\n"
-    "  -o            TSV with columns lag, acf[, target] (default: TSV on stdout), or .exr:\n"
-    "                the whole 2D/3D estimate with lag 0 at the centre\n";
+    "  --json        {\"lag\": [...], \"acf\": [...], ...} on stdout: every number of the table\n"
+    "  -o            TSV with columns lag, acf[, se][, target][, lo, hi] (default: TSV on\n"
+    "                stdout), or .exr: the whole 2D/3D estimate with lag 0 at the centre\n\n"
+    "Several inputs (fields of one size and spacing, e.g. realizations with\n"
+    "different seeds) make an ensemble: acf is the mean of their estimates and\n"
+    "se its standard error (their scatter over the square root of their\n"
+    "number), to set one realization's wander against the target.  --bands and\n"
+    "-o OUT.exr take one input.  --realizations K --acf SPEC --size N [--seed S]\n"
+    "analyses, in place of files, the K fields of noiselab synth fft --acf SPEC\n"
+    "--size N with seeds S (default 1) to S + K - 1.\n";
 
 /* Options of noiselab acf. */
 typedef struct {
-    const char *in, *out, *tmp, *target; /* input, output (and its temporary), model */
+    cli_inputs src;                      /* files or realizations */
+    size_t nin;                          /* their number (2 or more: an ensemble) */
+    const char *in0, *out, *tmp, *target; /* first input's name, output (and its temporary), model */
     double maxlag, mean;                 /* NAN: default */
     int axis, radial, unbiased, json, direct, bands;
     size_t nl;                           /* lags 0 .. nl - 1 */
@@ -46,7 +58,7 @@ static void parse(int argc, char **argv, acf_opts *o)
         {"mean", required_argument, 0, 'm'},    {"target", required_argument, 0, 't'},
         {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
         {"help", no_argument, 0, 'h'},          {"direct", no_argument, 0, 'D'},
-        {"bands", no_argument, 0, 'B'},          {0}};
+        {"bands", no_argument, 0, 'B'},          CLI_INPUTS_OPTIONS, {0}};
     int c;
     o->maxlag = o->mean = NAN;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "acf")) != -1) {
@@ -70,9 +82,13 @@ static void parse(int argc, char **argv, acf_opts *o)
         case 'B': o->bands = 1; break;
         case 'o': o->out = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
+        default: cli_inputs_option(&o->src, c, optarg); /* --realizations, --acf, --size, --seed */
         }
     }
-    o->in = cli_one_operand("acf", "input file", argc, argv);
+    cli_inputs_operands(&o->src, "acf", argc, argv);
+    o->nin = o->src.count;
+    if (o->nin > 1 && (o->bands || (o->out && cli_has_ext(o->out, ".exr"))))
+        cli_die(2, "acf: %s takes one input file, got %zu", o->bands ? "--bands" : "-o OUT.exr", o->nin);
 }
 
 /* Checks that need the field; sets the number of lags. */
@@ -81,7 +97,7 @@ static void check_field(acf_opts *o, const nl_field *x)
     if (o->axis >= x->dim)
         cli_die(2, "--axis: the field is %dD, got axis \"%c\"", x->dim, 'x' + o->axis);
     if (o->radial && x->dim == 1)
-        cli_die(2, "--radial: expected a 2D or 3D field, %s is 1D", o->in);
+        cli_die(2, "--radial: expected a 2D or 3D field, %s is 1D", o->in0);
     if (isnan(o->maxlag))
         o->nl = x->n[o->axis] / 4;
     else if (!(o->maxlag / x->h[o->axis] < (double)x->n[o->axis]) ||
@@ -150,12 +166,16 @@ static long target_not_finite(const acf_opts *o, const double *lag, const double
     return -1;
 }
 
-static void output(const acf_opts *o, const double *lag, const double *val, const double *tgt, const double *blo,
-                   const double *bhi)
+static void output(const acf_opts *o, const double *lag, const double *val, const double *se, const double *tgt,
+                   const double *blo, const double *bhi)
 {
     size_t nl = o->nl;
     if (o->json) {
         json_t *j = json_pack("{s:o,s:o}", "lag", cli_json_array(lag, nl), "acf", cli_json_array(val, nl));
+        if (se) {
+            json_object_set_new(j, "se", cli_json_array(se, nl));
+            json_object_set_new(j, "fields", json_integer((json_int_t)o->nin));
+        }
         if (tgt)
             json_object_set_new(j, "target", cli_json_array(tgt, nl));
         if (o->bands) {
@@ -171,30 +191,57 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
         const double *cols[5] = {lag, val};
         int ncol = 2;
         char comment[256];
+        if (se)
+            names[ncol] = "se", cols[ncol++] = se;
         if (tgt)
             names[ncol] = "target", cols[ncol++] = tgt;
         if (o->bands)
             names[ncol] = "lo", cols[ncol++] = blo, names[ncol] = "hi", cols[ncol++] = bhi;
-        snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in spacing units",
-                 o->unbiased ? "unbiased" : "biased", o->radial ? "radial average" : "along one axis");
+        snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in spacing units%s",
+                 o->unbiased ? "unbiased" : "biased", o->radial ? "radial average" : "along one axis",
+                 se ? ", mean over the fields with its standard error" : "");
         cli_check(cli_write_table(o->out ? o->tmp : NULL, comment, ncol, names, nl, cols));
     }
     cli_out_commit(o->out);
 }
 
+/* An ensemble: the estimates of the other inputs, and the mean and
+ * standard error of all of them (val holds the first one on entry). */
+static void ensemble(acf_opts *o, const nl_field *x0, double *lag, double *val, double *se)
+{
+    size_t K = o->nin, nl = o->nl, dims[2] = {nl, K};
+    double *rows;
+    int st;
+    if (nl_size_check(2, dims, sizeof *rows, 1, NULL))
+        cli_die(2, "acf: %zu estimates of %zu lags do not fit in the memory available; expected fewer inputs", K, nl);
+    rows = cli_malloc(K * nl * sizeof *rows);
+    for (size_t i = 0; i < nl; i++)
+        rows[i] = val[i];
+    for (size_t k = 1; k < K; k++) {
+        nl_field *x = cli_inputs_read(&o->src, k, x0), *full;
+        if ((st = nl_acf_full(x, o->mean, o->unbiased, &full)))
+            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, k), nl_errmsg());
+        estimate(o, x, full, lag, rows + k * nl, NULL, NULL);
+        nl_field_free(full), nl_field_free(x);
+    }
+    cli_check(nl_ensemble_mean_se(rows, K, nl, val, se));
+    free(rows);
+}
+
 int cli_cmd_acf(int argc, char **argv)
 {
     acf_opts o = {0};
-    double *lag, *val, *tgt = NULL, *blo = NULL, *bhi = NULL;
+    double *lag, *val, *se = NULL, *tgt = NULL, *blo = NULL, *bhi = NULL;
     nl_field *x, *full;
     int st;
 
     parse(argc, argv, &o);
-    x = cli_read_field(o.in, NULL);
+    x = cli_inputs_read(&o.src, 0, NULL);
+    o.in0 = o.src.K ? "the realizations" : o.src.files[0];
     check_field(&o, x);
     o.tmp = cli_out_begin(o.out);
     if ((st = nl_acf_full(x, o.mean, o.unbiased, &full)))
-        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o.in, nl_errmsg());
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o.in0, nl_errmsg());
     if (o.out && cli_has_ext(o.out, ".exr")) {
         write_centred(&o, full);
         nl_field_free(full), nl_field_free(x);
@@ -210,19 +257,24 @@ int cli_cmd_acf(int argc, char **argv)
     if (o.target)
         tgt = cli_malloc(o.nl * sizeof *tgt);
     estimate(&o, x, full, lag, val, blo, bhi);
+    if (o.nin > 1) {
+        se = cli_malloc(o.nl * sizeof *se);
+        ensemble(&o, x, lag, val, se);
+    }
     if (o.target)
         target_values(&o, x, lag, tgt);
     long bad = o.target ? target_not_finite(&o, lag, tgt) : -1;
     if (bad >= 0) {
         double b = tgt[bad], l = lag[bad];
-        free(lag), free(val), free(tgt), free(blo), free(bhi);
+        free(lag), free(val), free(tgt), free(blo), free(bhi), free(se);
         nl_field_free(full), nl_field_free(x);
         cli_die(2, "--target: %s is %g at lag %g; expected a model finite at every lag of the estimate", o.target,
                 b, l);
     }
-    output(&o, lag, val, tgt, blo, bhi);
-    free(lag), free(val), free(tgt), free(blo), free(bhi);
+    output(&o, lag, val, se, tgt, blo, bhi);
+    free(lag), free(val), free(tgt), free(blo), free(bhi), free(se);
     nl_field_free(full);
     nl_field_free(x);
+    cli_inputs_free(&o.src);
     return 0;
 }

@@ -1,5 +1,7 @@
 /* noiselab psd: estimate the power spectral density of a field. */
 #include "cli.h"
+#include "inputs.h"
+#include "../analysis/ensemble.h"
 #include "../analysis/fftshift.h"
 #include "../analysis/psd.h"
 #include "../analysis/slope.h"
@@ -14,7 +16,8 @@
 #include <stdlib.h>
 
 static const char help[] =
-    "usage: noiselab psd IN [--radial] [--mean M] [--welch S] [--target SPEC] [--slope F1:F2]\n"
+    "usage: noiselab psd IN...|--realizations K --acf SPEC --size N [--seed S]\n"
+    "                    [--radial] [--mean M] [--welch S] [--target SPEC] [--slope F1:F2]\n"
     "                    [--angular] [--json] [-o OUT.tsv|OUT.exr] [--preview P.png]\n\n"
     "Periodogram of IN (EXR, PNG or 1D TSV): P(f) = (h/N) |DFT(x - mean)|^2, a\n"
     "TWO-SIDED density in variance per (cycles per unit length)^dim, so that the sum\n"
@@ -36,12 +39,24 @@ static const char help[] =
     "                is stated for profiles); in 2D/3D the fit is to every periodogram\n"
     "                ordinate in the band (each Hermitian pair once), not to the radial\n"
     "                average, whose interval would be too narrow\n"
-    "  --json        {\"freq\": [...], \"psd\": [...], \"sided\": \"two-sided\"} on stdout\n"
-    "  -o            TSV with columns freq, psd[, target] (default: TSV on stdout)\n";
+    "  --json        {\"freq\": [...], \"psd\": [...], \"sided\": \"two-sided\", ...} on stdout:\n"
+    "                every number of the table and of the comment lines\n"
+    "  -o            TSV with columns freq, psd[, se][, target] (default: TSV on stdout)\n\n"
+    "Several inputs (fields of one size and spacing, e.g. realizations with\n"
+    "different seeds) make an ensemble: psd is the mean of their estimates and\n"
+    "se its standard error (the scatter of one estimate over the square root of\n"
+    "their number), and --angular, -o OUT.exr and --preview show the mean\n"
+    "spectrum.  One periodogram scatters by 100% of its value at every\n"
+    "frequency; K realizations or Welch's segments bring that down to about\n"
+    "1/sqrt(K).  --slope takes one input.  --realizations K --acf SPEC --size N\n"
+    "[--seed S] analyses, in place of files, the K fields of noiselab synth fft\n"
+    "--acf SPEC --size N with seeds S (default 1) to S + K - 1.\n";
 
 /* Options of noiselab psd and what it found. */
 typedef struct {
-    const char *in, *out, *tmp, *target;   /* input, output (and its temporary), model */
+    cli_inputs src;                        /* files or realizations */
+    size_t nin;                            /* their number (2 or more: an ensemble) */
+    const char *out, *tmp, *target;        /* output (and its temporary), model */
     const char *preview, *pvtmp;           /* picture (and its temporary) */
     double mean, f1, f2;                   /* known mean (NAN: sample), slope band */
     int json, slope, angular;
@@ -57,7 +72,7 @@ static void parse(int argc, char **argv, psd_opts *o)
         {"target", required_argument, 0, 't'}, {"json", no_argument, 0, 'j'},
         {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
         {"slope", required_argument, 0, 's'},  {"welch", required_argument, 0, 'W'},
-        {"angular", no_argument, 0, 'A'},      {"preview", required_argument, 0, 'p'}, {0}};
+        {"angular", no_argument, 0, 'A'},      {"preview", required_argument, 0, 'p'}, CLI_INPUTS_OPTIONS, {0}};
     int c;
     char *end;
     o->mean = NAN, o->nseg = 1, o->aniso = NAN;
@@ -78,9 +93,13 @@ static void parse(int argc, char **argv, psd_opts *o)
         case 'j': o->json = 1; break;
         case 'o': o->out = optarg; break;
         case 'h': fputs(help, stdout); exit(0);
+        default: cli_inputs_option(&o->src, c, optarg); /* --realizations, --acf, --size, --seed */
         }
     }
-    o->in = cli_one_operand("psd", "input file", argc, argv);
+    cli_inputs_operands(&o->src, "psd", argc, argv);
+    o->nin = o->src.count;
+    if (o->slope && o->nin > 1)
+        cli_die(2, "--slope: expected one input file (the interval is that of one periodogram), got %zu", o->nin);
 }
 
 /* The 2D spectrum with zero frequency at the centre: EXR and/or picture. */
@@ -109,11 +128,22 @@ static void write_centred(psd_opts *o, const nl_field *P)
 /* A JSON number, or null where it is undefined. */
 static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
 
-static void print_json(const psd_opts *o, int dim, const double *freq, const double *val, const double *tgt, size_t nf)
+/* The estimate's columns. */
+typedef struct {
+    double *freq, *val, *se, *tgt;  /* frequency, estimate, its standard error (ensembles), model */
+    size_t nf;                      /* rows */
+} psd_table;
+
+static void print_json(const psd_opts *o, int dim, const psd_table *t)
 {
-    json_t *j = json_pack("{s:o,s:o}", "freq", cli_json_array(freq, nf), "psd", cli_json_array(val, nf));
-    if (tgt)
-        json_object_set_new(j, "target", cli_json_array(tgt, nf));
+    size_t nf = t->nf;
+    json_t *j = json_pack("{s:o,s:o}", "freq", cli_json_array(t->freq, nf), "psd", cli_json_array(t->val, nf));
+    if (t->se) {
+        json_object_set_new(j, "se", cli_json_array(t->se, nf));
+        json_object_set_new(j, "fields", json_integer((json_int_t)o->nin));
+    }
+    if (t->tgt)
+        json_object_set_new(j, "target", cli_json_array(t->tgt, nf));
     json_object_set_new(j, "sided", json_string("two-sided"));
     json_object_set_new(j, "average", json_string(dim == 1 ? "none" : "radial"));
     if (o->angular) {
@@ -129,11 +159,11 @@ static void print_json(const psd_opts *o, int dim, const double *freq, const dou
     cli_json_print(j);
 }
 
-static void output(const psd_opts *o, int dim, const double *freq, const double *val, const double *tgt, size_t nf)
+static void output(const psd_opts *o, int dim, const psd_table *t)
 {
     int st;
     if (o->json)
-        print_json(o, dim, freq, val, tgt, nf);
+        print_json(o, dim, t);
     if (o->angular && !o->json) {
         printf("# sector power (0.05..0.45 cycles/sample), 10-degree sectors from +x:");
         for (int b = 0; b < 18; b++)
@@ -147,74 +177,125 @@ static void output(const psd_opts *o, int dim, const double *freq, const double 
         printf("# slope %.4f +- %.4f (95%%, %zu frequencies in [%g, %g]); fractal dimension "
                 "%.4f\n", o->sl.slope, o->sl.ci95, o->sl.points, o->f1, o->f2, o->sl.fractal_dim);
     if (o->out || (!o->json && !o->angular && !o->preview)) {
-        static const char *const names[] = {"freq", "psd", "target"};
-        const double *cols[] = {freq, val, tgt};
-        st = cli_write_table(o->out ? o->tmp : NULL, dim == 1 ? "noiselab psd: two-sided periodogram density, freq in cycles per unit"
-                                      : "noiselab psd: two-sided periodogram density, radial average, freq in "
-                                        "cycles per unit",
-                          tgt ? 3 : 2, names, nf, cols);
+        const char *names[4] = {"freq", "psd"};
+        const double *cols[4] = {t->freq, t->val};
+        int nc = 2;
+        char comment[200];
+        if (t->se)
+            names[nc] = "se", cols[nc++] = t->se;
+        if (t->tgt)
+            names[nc] = "target", cols[nc++] = t->tgt;
+        snprintf(comment, sizeof comment, "noiselab psd: two-sided %s density%s, freq in cycles per unit%s",
+                 o->welch ? "Welch" : "periodogram", dim == 1 ? "" : ", radial average",
+                 t->se ? ", mean over the fields with its standard error" : "");
+        if (!t->se) /* one field: the comment as it always was */
+            snprintf(comment, sizeof comment, "%s", dim == 1 ? "noiselab psd: two-sided periodogram density, freq in "
+                     "cycles per unit" : "noiselab psd: two-sided periodogram density, radial average, freq in "
+                     "cycles per unit");
+        st = cli_write_table(o->out ? o->tmp : NULL, comment, nc, names, t->nf, cols);
         cli_check(st);
     }
     cli_out_commit(o->out);
 }
 
-/* The model's profile on the field's grid. */
-static void target_profile(const psd_opts *o, const nl_field *x, double *tgt)
+/* The model's profile on the estimate's grid P (the field's for a
+ * periodogram, S samples per axis for Welch), so that row i of the target
+ * stands for the same frequency as row i of the estimate. */
+static void target_profile(const psd_opts *o, const nl_field *P, double *tgt)
 {
     nl_model *m;
     size_t nt;
     int st;
-    if ((st = nl_model_parse(o->target, &m)) || (st = nl_psd_model_profile(m, x->dim, x->n, x->h, tgt, &nt)))
+    if ((st = nl_model_parse(o->target, &m)) || (st = nl_psd_model_profile(m, P->dim, P->n, P->h, tgt, &nt)))
         cli_die_status(st);
     nl_model_free(m);
+}
+
+/* The periodogram or Welch estimate of input k. */
+static nl_field *estimate(psd_opts *o, size_t k, const nl_field *x)
+{
+    nl_field *P;
+    int st;
+    if (o->welch && (st = nl_psd_welch(x, o->welch, o->mean, &P, &o->nseg)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: --welch %zu: %s", cli_inputs_name(&o->src, k), o->welch, nl_errmsg());
+    if (!o->welch && (st = nl_psd_periodogram(x, o->mean, &P)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, k), nl_errmsg());
+    return P;
+}
+
+/* An ensemble: the mean estimate into P (which holds the first one), and
+ * the mean and standard error of the profiles into t. */
+static void ensemble(psd_opts *o, const nl_field *x0, nl_field *P, psd_table *t, size_t *cnt)
+{
+    size_t K = o->nin, nf = t->nf, dims[2] = {nf, K};
+    double *rows;
+    if (nl_size_check(2, dims, sizeof *rows, 1, NULL))
+        cli_die(2, "psd: %zu estimates of %zu frequencies do not fit in the memory available; expected fewer inputs",
+                K, nf);
+    rows = cli_malloc(K * nf * sizeof *rows);
+    cli_check(nl_psd_profile(P, t->freq, rows, cnt, &nf));
+    for (size_t k = 1; k < K; k++) {
+        nl_field *x = cli_inputs_read(&o->src, k, x0), *Pk;
+        Pk = estimate(o, k, x);
+        cli_check(nl_psd_profile(Pk, t->freq, rows + k * nf, cnt, &nf));
+        for (size_t i = 0; i < P->count; i++)
+            P->data[i] += Pk->data[i];
+        nl_field_free(Pk), nl_field_free(x);
+    }
+    for (size_t i = 0; i < P->count; i++)
+        P->data[i] /= (double)K;
+    t->se = cli_malloc(nf * sizeof *t->se);
+    cli_check(nl_ensemble_mean_se(rows, K, nf, t->val, t->se));
+    free(rows);
 }
 
 int cli_cmd_psd(int argc, char **argv)
 {
     psd_opts o = {0};
-    double *freq, *val, *tgt = NULL;
-    size_t nf, maxn, *cnt;
+    psd_table t = {0};
+    size_t maxn, *cnt;
     nl_field *x, *P;
     int st;
 
     parse(argc, argv, &o);
-    x = cli_read_field(o.in, NULL);
+    x = cli_inputs_read(&o.src, 0, NULL);
     if ((o.angular || o.preview || (o.out && cli_has_ext(o.out, ".exr"))) && x->dim != 2)
-        cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o.in, x->dim);
+        cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", cli_inputs_name(&o.src, 0), x->dim);
     if (o.preview && !cli_has_ext(o.preview, ".png"))
         cli_die(2, "--preview: expected a .png file, got \"%s\"", o.preview);
     o.tmp = cli_out_begin(o.out);
     o.pvtmp = cli_out_begin(o.preview);
-    if (o.welch && (st = nl_psd_welch(x, o.welch, o.mean, &P, &o.nseg))) {
-        nl_field_free(x);
-        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: --welch %zu: %s", o.in, o.welch, nl_errmsg());
-    }
-    if (!o.welch && (st = nl_psd_periodogram(x, o.mean, &P)))
-        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", o.in, nl_errmsg());
+    P = estimate(&o, 0, x);
+    maxn = x->n[0] + x->n[1] + x->n[2];
+    t.freq = cli_malloc(maxn * sizeof *t.freq), t.val = cli_malloc(maxn * sizeof *t.val);
+    cnt = cli_malloc(maxn * sizeof *cnt);
+    t.nf = nl_psd_profile_size(P);
+    if (o.nin > 1)
+        ensemble(&o, x, P, &t, cnt);
     if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
         write_centred(&o, P);
     if (o.angular && (st = nl_psd_sectors(P, 18, 0.05, 0.45, o.sector, &o.aniso)))
         cli_die_status(st);
-    maxn = x->n[0] + x->n[1] + x->n[2];
-    freq = cli_malloc(maxn * sizeof *freq), val = cli_malloc(maxn * sizeof *val), cnt = cli_malloc(maxn * sizeof *cnt);
     if (o.target)
-        tgt = cli_malloc(maxn * sizeof *tgt);
+        t.tgt = cli_malloc(maxn * sizeof *t.tgt);
     if (o.target)
-        target_profile(&o, x, tgt);
-    cli_check(nl_psd_profile(P, freq, val, cnt, &nf));
-    if (o.slope && (st = x->dim == 1 ? nl_psd_slope(freq, val, nf, o.f1, o.f2, 1, &o.sl)
+        target_profile(&o, P, t.tgt);
+    if (o.nin == 1)
+        cli_check(nl_psd_profile(P, t.freq, t.val, cnt, &t.nf));
+    if (o.slope && (st = x->dim == 1 ? nl_psd_slope(t.freq, t.val, t.nf, o.f1, o.f2, 1, &o.sl)
                                      : nl_psd_slope_grid(P, o.f1, o.f2, &o.sl)) == NL_OK &&
         !(isfinite(o.sl.slope) && isfinite(o.sl.ci95)))
         st = NL_ERROR(NL_EINVAL, "the fit is undefined (slope %g +- %g); expected a band where the periodogram "
                       "varies", o.sl.slope, o.sl.ci95);
     if (o.slope && st) {
-        free(freq), free(val), free(cnt), free(tgt);
+        free(t.freq), free(t.val), free(cnt), free(t.tgt), free(t.se);
         nl_field_free(P), nl_field_free(x);
         cli_die(nl_error_is_input(st) ? 2 : 1, "--slope %g:%g: %s", o.f1, o.f2, nl_errmsg());
     }
-    output(&o, x->dim, freq, val, tgt, nf);
-    free(freq), free(val), free(cnt), free(tgt);
+    output(&o, x->dim, &t);
+    free(t.freq), free(t.val), free(cnt), free(t.tgt), free(t.se);
     nl_field_free(P);
     nl_field_free(x);
+    cli_inputs_free(&o.src);
     return 0;
 }

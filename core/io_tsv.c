@@ -153,8 +153,13 @@ static int header_columns(const char *path, size_t lineno, char **fld, int ncol,
                         "%s:%zu: expected a 1D series (columns t value), got %d columns: scattered points "
                         "or several coordinates are not a series",
                         path, lineno, ncol);
-    if (ncol == 2 && *vcol == 1 && (strcmp(fld[0], "t") == 0 || strcmp(fld[0], "x") == 0))
-        *tcol = 0;
+    if (ncol == 2) {
+        int c = 1 - *vcol; /* the other column: the coordinate of a series, t or x, in either order */
+        if (strcmp(fld[c], "t") != 0 && strcmp(fld[c], "x") != 0)
+            return NL_ERROR(NL_EINPUT, "%s:%zu: expected a 1D series (columns t value, or x value), got a column "
+                            "\"%s\" beside \"value\"", path, lineno, fld[c]);
+        *tcol = c;
+    }
     return NL_OK;
 }
 

@@ -67,6 +67,8 @@ extern "C" {
 #include "noiselab/analysis/slope.h"
 #include "noiselab/analysis/hist.h"
 #include "noiselab/analysis/gof.h"
+#include "noiselab/analysis/gof_dep.h"
+#include "noiselab/analysis/ensemble.h"
 #include "noiselab/analysis/check.h"
 #include "noiselab/analysis/nonlin.h"
 #include "noiselab/analysis/krige.h"

@@ -4,13 +4,17 @@
 #include "../analysis/acf.h"
 #include "../analysis/psd.h"
 #include "../analysis/slope.h"
+#include "../analysis/spectral.h"
 #include "../core/model.h"
 #include "../synth/fft.h"
 #include "../analysis/welch.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
+#include "util.h"
+
 #include <criterion/criterion.h>
+#include <jansson.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -157,4 +161,52 @@ Test(estimators, slope_interval_on_a_2d_periodogram_is_honest)
     cr_expect_geq(cover, 33, "coverage %d of %d", cover, M);
     cr_expect(se / sd >= 0.69 && se / sd <= 1.45, "reported se %g against the slopes' sd %g (mean %g)", se, sd, mean);
     nl_field_free(x), nl_synth_fft_plan_free(p), nl_model_free(m);
+}
+
+/* psd --welch S --target: row i of the target stands for the frequency of
+ * row i of the estimate, i / (S h): the model's profile on the S-point grid
+ * (nl_psd_model_profile), to the 10 digits of the JSON.  On 65536 samples
+ * (511 segments of 256) each Welch ordinate has a relative sd of about
+ * 1/sqrt(511 * 0.95) = 4.5% (Hann windows overlapping by half keep ~95% of
+ * the segments' worth); over 0.05..0.45 cycles per sample the window's
+ * smoothing of this markov spectrum is below 1%, so every ordinate lies
+ * within 25% (5.5 sd) of the target and their mean ratio, over ~100
+ * ordinates of which neighbours share half their information, within 5%
+ * (7 sd).  The target sampled on the full 65536-point grid instead is off
+ * by up to 75x near Nyquist.  2D: the radial profile of the S x S grid. */
+Test(estimators, welch_target_on_the_segment_grid)
+{
+    size_t S = 256, S2[2] = {32, 32}, nt;
+    double h = 1, h2[2] = {1, 1}, tg[129], tg2[64], sum = 0;
+    int cnt = 0;
+    nl_model *m = test_model("markov:scale=8");
+    char err[4096];
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=8 --size 65536 --seed 11 -o w.tsv", 0, 0, err, sizeof err),
+                 0, "%s", err);
+    json_t *j = run_noiselab_json("psd w.tsv --welch 256 --target markov:scale=8 --json");
+    json_t *fr = json_object_get(j, "freq"), *ps = json_object_get(j, "psd"), *tj = json_object_get(j, "target");
+    cr_assert_eq(nl_psd_model_profile(m, 1, &S, &h, tg, &nt), 0);
+    cr_assert_eq(json_array_size(tj), nt);
+    for (size_t i = 0; i < nt; i++) {
+        double f = json_real_value(json_array_get(fr, i)), p = json_real_value(json_array_get(ps, i));
+        double t = json_real_value(json_array_get(tj, i));
+        cr_expect_float_eq(f, (double)i / 256, 1e-12);
+        cr_expect_float_eq(t, tg[i], 1e-9 * tg[i], "row %zu: target %g, the model on the segment grid %g", i, t, tg[i]);
+        if (f >= 0.05 && f <= 0.45) {
+            cr_expect(fabs(p / t - 1) < 0.25, "f %g: Welch %g, target %g", f, p, t);
+            sum += p / t, cnt++;
+        }
+    }
+    cr_expect(fabs(sum / cnt - 1) < 0.05, "mean Welch / target over the band: %g", sum / cnt);
+    json_decref(j);
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=8 --size 128x128 --seed 11 -o w2.exr", 0, 0, err,
+                              sizeof err), 0, "%s", err);
+    j = run_noiselab_json("psd w2.exr --welch 32 --target markov:scale=8 --json");
+    tj = json_object_get(j, "target");
+    cr_assert_eq(nl_psd_model_profile(m, 2, S2, h2, tg2, &nt), 0);
+    cr_assert_eq(json_array_size(tj), nt);
+    for (size_t i = 0; i < nt; i++)
+        cr_expect_float_eq(json_real_value(json_array_get(tj, i)), tg2[i], 1e-9 * tg2[i], "2D row %zu", i);
+    json_decref(j);
+    nl_model_free(m);
 }

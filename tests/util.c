@@ -51,6 +51,17 @@ int run_noiselab(const char *args, char *out, size_t outlen, char *err, size_t e
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
 
+json_t *run_noiselab_json(const char *args)
+{
+    static char out[1 << 20], err[4096];
+    json_error_t je;
+    json_t *j;
+    cr_assert_eq(run_noiselab(args, out, sizeof out, err, sizeof err), 0, "%s: %s", args, err);
+    j = json_loads(out, 0, &je);
+    cr_assert(j, "%s: not JSON: %s", args, je.text);
+    return j;
+}
+
 int file_exists(const char *path)
 {
     struct stat st;

@@ -4,12 +4,18 @@
 
 #include "../core/model.h"
 
+#include <jansson.h>
 #include <stddef.h>
 
 /* Run the noiselab binary ($NOISELAB) with the shell words of `args`; the
  * exit status is returned, stdout and stderr go to the buffers (NUL
  * terminated, truncated to their size). */
 int run_noiselab(const char *args, char *out, size_t outlen, char *err, size_t errlen);
+
+/* Run noiselab with `args` (as run_noiselab) and parse its stdout as JSON;
+ * the test fails on a non-zero exit or output that is not JSON.  Release
+ * with json_decref. */
+json_t *run_noiselab_json(const char *args);
 
 /* A fresh scratch directory for this test process; path is static. */
 const char *scratch_dir(void);

@@ -1,0 +1,56 @@
+/* The inputs of the analysis commands (acf, psd, hist): fields read from
+ * files, or realizations made on the spot by FFT synthesis (--realizations
+ * K --acf SPEC --size N [--seed S]: the fields `noiselab synth fft --acf SPEC
+ * --size N --seed S`, S + 1, ... computes, before a file rounds them to its
+ * 10 digits (TSV) or float32 (EXR)), so that an ensemble needs no shell
+ * loop. */
+#ifndef NL_CLI_INPUTS_H
+#define NL_CLI_INPUTS_H
+
+#include "cli.h"
+#include "../core/model.h"
+#include "../synth/fft.h"
+
+/* The getopt codes of the options cli_inputs_option takes. */
+enum { CLI_IN_REALIZATIONS = 0x1000, CLI_IN_ACF, CLI_IN_SIZE, CLI_IN_SEED };
+
+/* getopt_long entries for the options above, to put in a command's table. */
+#define CLI_INPUTS_OPTIONS                                                                                          \
+    {"realizations", required_argument, 0, CLI_IN_REALIZATIONS}, {"acf", required_argument, 0, CLI_IN_ACF},       \
+        {"size", required_argument, 0, CLI_IN_SIZE}, {"seed", required_argument, 0, CLI_IN_SEED}
+
+/* Where a command's fields come from. */
+typedef struct {
+    char **files;              /* operands */
+    size_t count;              /* fields: operands, or --realizations */
+    size_t K;                  /* --realizations (0: files) */
+    const char *spec;          /* --acf SPEC of the realizations */
+    int dim;                   /* from --size (0: not given) */
+    size_t n[3];               /* --size */
+    uint64_t seed;             /* first seed (--seed, default 1) */
+    int seed_set;              /* --seed given */
+    nl_model *m;               /* the model, parsed once */
+    nl_synth_fft_plan *plan;   /* planned on first use */
+    char name[96];             /* the name of the last field asked for */
+} cli_inputs;
+
+/* Take option c (one of CLI_IN_*; other codes are ignored) with its argument;
+ * exits 2 on a bad value. */
+void cli_inputs_option(cli_inputs *in, int c, const char *arg);
+
+/* After the options: the operands are the files, unless --realizations was
+ * given (then there must be none, and --acf and --size are required).
+ * Exits 2 naming what is missing or extra. */
+void cli_inputs_operands(cli_inputs *in, const char *cmd, int argc, char **argv);
+
+/* Field k (0 .. count - 1), released by nl_field_free.  When `like` is not
+ * NULL the field must have its dim, size and spacing (an ensemble), or the
+ * command exits 2. */
+nl_field *cli_inputs_read(cli_inputs *in, size_t k, const nl_field *like);
+
+/* The name of field k for messages: its file, or "realization (seed S)". */
+const char *cli_inputs_name(cli_inputs *in, size_t k);
+
+void cli_inputs_free(cli_inputs *in);
+
+#endif
