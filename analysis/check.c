@@ -164,19 +164,20 @@ static int eigen_check(const nl_model *m, int dim, nl_check *c)
     return st;
 }
 
-/* Subdivision singularity, 1D N = 2 along x: the largest spacing L / 2^k,
- * k <= 24, whose matrix is flagged singular (0: none). */
-double nl_check_singular_spacing(const nl_model *m, double L)
+/* Subdivision singularity, N = 2 along x (4 points on the x axis of the
+ * model in dim dimensions): the largest spacing L / 2^k, k <= 24, whose
+ * matrix is flagged singular (0: none). */
+double nl_check_singular_spacing(const nl_model *m, int dim, double L)
 {
     nl_subdiv_class cl;
-    double a[4], pts[4], tgt[1];
+    double a[4], pts[12] = {0}, tgt[3] = {0};
     cl.a = a;
     for (int k = 0; k <= 24; k++) {
         double s = ldexp(L, -k);
         for (int i = 0; i < 4; i++)
-            pts[i] = (i - 1) * s;
+            pts[i * dim] = (i - 1) * s;
         tgt[0] = 0.5 * s;
-        if (nl_subdiv_solve(m, 1, 4, pts, tgt, NULL, &cl))
+        if (nl_subdiv_solve(m, dim, 4, pts, tgt, NULL, &cl))
             break;
         if (cl.flags & NL_SUBDIV_SINGULAR)
             return s;
@@ -302,7 +303,7 @@ static int check_model(const nl_model *m, int dim, nl_check *c)
     c->isotropic_bound_ok = !c->isotropic || c->min_r >= -1.0 / dim - 1e-12;
     smoothness(m, dim, c);
     c->singular_checked = 1;
-    c->singular_below = nl_check_singular_spacing(m, c->scale);
+    c->singular_below = nl_check_singular_spacing(m, dim, c->scale);
     nl_check_verdict(c);
     return NL_OK;
 }

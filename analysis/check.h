@@ -42,13 +42,14 @@
  * the zone's corners.
  *
  * singular_below_spacing is the largest spacing s = L / 2^k, k <= 24, at
- * which the N = 2 subdivision matrix of the 1D profile has condition number
- * above NL_SUBDIV_COND_MAX (0 when it never does): within 24 octaves below
- * the correlation length, smooth (singular) processes lose rank while rough
- * ones such as exp(-|t|) keep it (their matrices lose rank too, but only at
- * spacings near 1e-10 L, below any sampling that resolves them).  It is
- * computed for models defined by R, and for power: in 1D (whose R is a 1D
- * quadrature); not for spectrum: models (singular_checked = 0). */
+ * which the N = 2 subdivision matrix of 4 points on the x axis (in dim
+ * dimensions) has condition number above NL_SUBDIV_COND_MAX (0 when it
+ * never does): within 24 octaves below the correlation length, smooth
+ * (singular) processes lose rank while rough ones such as exp(-|t|) keep it
+ * (their matrices lose rank too, but only at spacings near 1e-10 L, below
+ * any sampling that resolves them).  It is computed for models defined by
+ * R and for power: (whose R is a quadrature), not for spectrum: models
+ * (singular_checked = 0). */
 #ifndef NL_CHECK_H
 #define NL_CHECK_H
 

@@ -14,9 +14,10 @@ int nl_check_spectral(const nl_model *m, int dim, nl_check *c);
  * 0.05 of slack for the fit; -1 (infinitely) for b = INFINITY. */
 int nl_check_order(double b);
 
-/* The subdivision singularity of the 1D profile (check.c): the largest
- * spacing L / 2^k, k <= 24, whose N = 2 matrix is singular, 0 if none. */
-double nl_check_singular_spacing(const nl_model *m, double L);
+/* The subdivision singularity along x (check.c): the largest spacing
+ * L / 2^k, k <= 24, whose N = 2 matrix of 4 points on the x axis is
+ * singular, 0 if none. */
+double nl_check_singular_spacing(const nl_model *m, int dim, double L);
 
 /* The first failed test, from the fields of c (positive_definite is set
  * from it). */

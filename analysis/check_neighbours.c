@@ -44,8 +44,10 @@ static void scale_var(const nl_model *m, char *out, size_t size)
 
 /* oscillatory, gauss-osc: the largest omega valid in dim, by bisection
  * (validity is lost as omega grows: the d-dimensional spectrum of
- * cos(omega r) times a decay turns negative near k = 0), rounded down to 3
- * significant digits and verified. */
+ * cos(omega r) times a decay turns negative near k = 0; gauss-osc in 3D at
+ * omega = sqrt(2), oscillatory in 2D at omega = 1 / scale), less 2% for the
+ * grid's resolution of the boundary, rounded down to 3 significant digits
+ * and verified. */
 static void largest_omega(const nl_model *m, int dim, char *buf, size_t size)
 {
     const char *fam = nl_model_get_kind(m) == NL_MODEL_OSCILLATORY ? "oscillatory" : "gauss-osc";
@@ -61,6 +63,7 @@ static void largest_omega(const nl_model *m, int dim, char *buf, size_t size)
         else
             hi = mid;
     }
+    lo *= 0.98;  /* a margin for the grid's resolution of the boundary */
     if (!(lo > 0))
         return;
     for (int t = 0; t < 4; t++) {
@@ -114,7 +117,9 @@ static void spherical(const nl_model *m, int dim, double L, char *buf, size_t si
     a = hi;
     if (!(a > 0))
         return;
-    if (v == 1)
+    if (v == 1 && a == 1)
+        snprintf(s, sizeof s, "expr:step(1-r)*(1-1.5*r+0.5*r^3)");
+    else if (v == 1)
         snprintf(s, sizeof s, "expr:step(%.6g-r)*(1-1.5*r/%.6g+0.5*(r/%.6g)^3)", a, a, a);
     else
         snprintf(s, sizeof s, "expr:%.15g*step(%.6g-r)*(1-1.5*r/%.6g+0.5*(r/%.6g)^3)", v, a, a, a);

@@ -270,9 +270,9 @@ int nl_check_spectral(const nl_model *m, int dim, nl_check *c)
         return st;
     if (c->variance > 0)
         c->min_eigenvalue = aliased_min(m, dim) / c->variance;
-    if (power && dim == 1) {
+    if (power) {  /* its R is a quadrature: the 4 points of the matrix on the x axis */
         c->singular_checked = 1;
-        c->singular_below = nl_check_singular_spacing(m, c->scale);
+        c->singular_below = nl_check_singular_spacing(m, dim, c->scale);
     }
     nl_check_verdict(c);
     return NL_OK;

@@ -111,12 +111,14 @@ static void print_why(const nl_check *k, const char *nb)
         break;
     default: break;
     }
-    if (k->why != NL_CHECK_VALID)
-        printf("  valid neighbours       %s\n", *nb ? "" : "none obvious");
+    if (k->why == NL_CHECK_VALID)
+        return;
+    if (!*nb)
+        printf("  valid neighbours       none obvious\n");
     for (const char *p = nb; *p;) {
         const char *e = strchr(p, '\n');
         int n = e ? (int)(e - p) : (int)strlen(p);
-        printf("    %.*s\n", n, p);
+        printf("  %-22s %.*s\n", p == nb ? "valid neighbours" : "", n, p);
         p += n + (e != NULL);
     }
 }
@@ -168,7 +170,7 @@ static void print_text(const char *spec, const nl_check *k, const char *nb)
     int d = k->dim;
     printf("%s in %dD: %s\n", spec, d, k->positive_definite ? "positive definite" : "NOT positive definite");
     print_why(k, nb);
-    printf("  min spectrum / max     %.3g (the %dD density, %s to |k| = %.3g cycles per unit)\n", k->min_spectrum,
+    printf("  min spectrum / max     %.3g (the %dD density, %s to |k| = %.3g cycles per unit along each axis)\n", k->min_spectrum,
            d, k->spectral ? "scanned" : "sampled", k->spectrum_kmax);
     if (k->spectral)
         printf("  variance R(0)          %.6g (the integral of S)\n", k->variance);
@@ -180,12 +182,11 @@ static void print_text(const char *spec, const nl_check *k, const char *nb)
         printf("  3D line spectrum       %s\n", k->monotone_3d ? "non-increasing" : "rises");
     print_smooth(k);
     if (!k->singular_checked)
-        printf("  subdivision            not checked (the 1D profile of a spectral model is sampled for power: in "
-               "1D only)\n");
+        printf("  subdivision            not checked (a spectrum: model's R is not sampled)\n");
     else if (k->singular_below > 0)
-        printf("  numerically singular below spacing %.3g (subdivision, N = 2, the 1D profile)\n", k->singular_below);
+        printf("  numerically singular below spacing %.3g (subdivision, N = 2, along x)\n", k->singular_below);
     else
-        printf("  never numerically singular (down to spacing %.3g; subdivision, N = 2, the 1D profile)\n",
+        printf("  never numerically singular (down to spacing %.3g; subdivision, N = 2, along x)\n",
                ldexp(k->scale, -24));
 }
 
