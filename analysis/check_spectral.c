@@ -41,10 +41,12 @@ static double radial_integrand(double k, void *p)
 static double sphere(int dim) { return dim == 1 ? 2 : dim == 2 ? 2 * M_PI : 4 * M_PI; }
 
 /* Omega_d int_lo^hi k^pw S(k) dk of an isotropic S: QAG over [lo, 1e-6]
- * and then over factors of 10 up to K (so that a peak near 0 and a long
- * tail are both resolved), QAGIU beyond K when hi is infinite.  NAN when
- * GSL fails (a divergent integral). */
-static double radial_moment(const nl_model *m, int dim, double pw, double lo, double K, double hi)
+ * and then over factors of 10 up to min(K, hi) (so that a peak near 0 and
+ * a long tail are both resolved); for hi infinite the tail beyond K from
+ * the fitted decay S ~ k^-b, S(K) K^(pw + 1) / (b - pw - 1) (nothing when
+ * S falls faster than any power: S(K) < 1e-12 of its peak there).  NAN
+ * when GSL fails or the tail diverges (b <= pw + 1). */
+static double radial_moment(const nl_model *m, int dim, double pw, double lo, double K, double hi, double b)
 {
     radial r = {m, dim, 0, pw};
     gsl_function F = {radial_integrand, &r};
@@ -54,15 +56,13 @@ static double radial_moment(const nl_model *m, int dim, double pw, double lo, do
     if (!w)
         return NAN;
     while (!st && a < top) {
-        double b = fmin(a < SCAN_K0 ? SCAN_K0 : 10 * a, top);
-        st = gsl_integration_qag(&F, a, b, 0, 1e-10, 2000, GSL_INTEG_GAUSS61, w, &v, &err);
-        sum += v, a = b;
-    }
-    if (!st && isinf(hi)) {
-        st = gsl_integration_qagiu(&F, top, 0, 1e-10, 2000, w, &v, &err);
-        sum += v;
+        double e = fmin(a < SCAN_K0 ? SCAN_K0 : 10 * a, top);
+        st = gsl_integration_qag(&F, a, e, 0, 1e-10, 2000, GSL_INTEG_GAUSS61, w, &v, &err);
+        sum += v, a = e;
     }
     gsl_integration_workspace_free(w);
+    if (isinf(hi) && isfinite(b))
+        sum = b > pw + 1 ? sum + radial_integrand(K, &r) * K / (b - pw - 1) : NAN;
     return st ? NAN : sphere(dim) * sum;
 }
 
@@ -194,7 +194,7 @@ static int moments(const nl_model *m, int dim, nl_check *c, double K, double gva
         nl_model_param(m, "fmin", &fmin);
         nl_model_param(m, "fmax", &fmax);
     } else if (dim == 1 || c->isotropic) {
-        c->variance = radial_moment(m, dim, dim - 1, 0, K, INFINITY);
+        c->variance = radial_moment(m, dim, dim - 1, 0, K, INFINITY, c->density_decay);
     } else {
         c->variance = gvar;
     }
@@ -213,8 +213,9 @@ static int moments(const nl_model *m, int dim, nl_check *c, double K, double gva
                         "are relative to R(0): rescale the model)", nl_model_spec(m), v);
     c->r2 = -INFINITY;
     if (c->differentiable_order != 0) {
-        double mom = dim == 1 || c->isotropic ? radial_moment(m, dim, dim + 1, fmin, fmin > 0 ? fmax : K, fmax) / dim
-                                              : gm2;
+        double mom = dim == 1 || c->isotropic
+                         ? radial_moment(m, dim, dim + 1, fmin, fmin > 0 ? fmax : K, fmax, c->density_decay) / dim
+                         : gm2;
         c->r2 = isfinite(mom) ? -4 * M_PI * M_PI * mom : -INFINITY;
     }
     return NL_OK;
@@ -263,6 +264,12 @@ int nl_check_spectral(const nl_model *m, int dim, nl_check *c)
     }
     c->band_limited = isfinite(c->band_edge);
     free(s);
+    /* int k^(d-1) k^-b dk diverges for b <= d (0.02 of slack for the fit;
+     * the quadrature of a divergent tail can stop at a finite value) */
+    if (b <= dim + 0.02)
+        return NL_ERROR(NL_EINVAL, "%s: S falls as |k|^-%.3g, so its integral over %dD frequencies (the "
+                        "variance) diverges; expected a density that falls faster than |k|^-%d",
+                        nl_model_spec(m), b, dim, dim);
     c->spectral_decay = isinf(b) ? b : b - (dim - 1);
     c->differentiable_order = nl_check_order(c->spectral_decay);
     c->eig_spacing = 1;

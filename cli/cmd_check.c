@@ -70,7 +70,7 @@ static void print_json(const char *spec, const nl_check *k, const char *nb)
     json_object_update_new(
         o, json_pack("{s:b,s:b,s:o,s:o,s:b,s:o,s:o,s:o,s:o,s:o,s:b,s:o,s:b,s:o,s:o,s:o}", "isotropic", k->isotropic,
                      "isotropic_bound_ok", k->isotropic_bound_ok, "min_r", num(k->min_r), "min_r_lag",
-                     num(k->min_r), "monotone_3d", k->monotone_3d, "line_rise_f", num(k->line_rise_f),
+                     num(k->min_r_lag), "monotone_3d", k->monotone_3d, "line_rise_f", num(k->line_rise_f),
                      "differentiable_order",
                      k->differentiable_order < 0 ? json_null() : json_integer(k->differentiable_order), "r2",
                      num(k->r2), "spectral_decay", num(k->spectral_decay), "density_decay", num(k->density_decay),
