@@ -164,3 +164,148 @@ Test(check_cli, every_kind_every_dim, .timeout = 600)
             json_decref(o);
         }
 }
+
+static json_t *must(const char *spec, int dim)
+{
+    json_t *o = check_cli(spec, dim);
+    cr_assert_not_null(o, "%s %dD refused: %s", spec, dim, err);
+    return o;
+}
+
+static double jnum(json_t *o, const char *key)
+{
+    json_t *v = json_object_get(o, key);
+    cr_assert(json_is_number(v), "%s is not a number", key);
+    return json_number_value(v);
+}
+
+/* power: in 1D exited 2 ("expected at least 3 frequencies"), in 2D it
+ * printed min spectrum -inf and "NOT positive definite" after tens of
+ * seconds: its R was sampled by quadrature over 2^20 lags and its spectrum
+ * on a grid that missed its band.  A power spectrum is non-negative and
+ * band-limited: positive definite, infinitely differentiable, the band's
+ * exponent d as the density's decay. */
+Test(check_cli, power_in_every_dim, .timeout = 300)
+{
+    for (int dim = 1; dim <= 3; dim++) {
+        json_t *o = must("power:d=3", dim);
+        cr_expect(json_is_true(json_object_get(o, "positive_definite")), "power:d=3 %dD", dim);
+        cr_expect(json_is_true(json_object_get(o, "band_limited")));
+        cr_expect_float_eq(jnum(o, "band_edge"), 0.5, 1e-12);
+        cr_expect_float_eq(jnum(o, "density_decay"), 3.0, 1e-12);
+        cr_expect_float_eq(jnum(o, "variance"), 1.0, 1e-12);
+        cr_expect(json_is_null(json_object_get(o, "differentiable_order")));
+        json_decref(o);
+    }
+    cr_expect_eq(run_noiselab("check --spectrum power:d=3 --dim 2", out, sizeof out, err, sizeof err), 0, "%s", err);
+    cr_expect_not(has_nonfinite(out), "%s", out);
+}
+
+/* S = 1/(1 + k^2)^2 is the Matern density with nu = 2 - d/2: once
+ * mean-square differentiable in 1D (nu = 1.5), not in 2D (nu = 1) or 3D
+ * (nu = 0.5).  Before, 2D printed nan for the eigenvalue and R''(0) and
+ * "infinitely differentiable".  The tail's fitted exponent is 4 k^2 /
+ * (1 + k^2) > 3.999 over the fit band (k > 31), hence 0.01.  In 1D,
+ * R''(0) = -4 pi^2 int f^2 S df = -2 pi^3; the quadrature is good to 1e-10
+ * and the analytic tail beyond k = 1e3 (1e-3 of the moment) to 1e-3 of
+ * itself, hence 1e-5 relative. */
+Test(check_cli, k4_spectrum_smoothness)
+{
+    json_t *o = must("spectrum:1/(1+k*k)^2", 2);
+    double l = jnum(o, "min_eigenvalue");
+    cr_expect(l > 0 && l <= 1, "min eigenvalue %g", l);
+    cr_expect_eq(json_integer_value(json_object_get(o, "differentiable_order")), 0);
+    cr_expect(json_is_integer(json_object_get(o, "differentiable_order")));
+    cr_expect(json_is_null(json_object_get(o, "r2")), "R''(0) does not exist in 2D");
+    cr_expect_float_eq(jnum(o, "density_decay"), 4.0, 0.01);
+    cr_expect_float_eq(jnum(o, "variance"), M_PI, 1e-8);  /* 2 pi int k / (1 + k^2)^2 dk */
+    json_decref(o);
+    o = must("spectrum:1/(1+k*k)^2", 1);
+    cr_expect_eq(json_integer_value(json_object_get(o, "differentiable_order")), 1);
+    cr_expect_float_eq(jnum(o, "r2"), -2 * pow(M_PI, 3), 2 * pow(M_PI, 3) * 1e-5);
+    json_decref(o);
+    o = must("spectrum:1/(1+k*k)^2", 3);
+    cr_expect_eq(json_integer_value(json_object_get(o, "differentiable_order")), 0);
+    json_decref(o);
+}
+
+/* markov: the line spectrum (of R along x) falls as f^-2 in every
+ * dimension, the d-dimensional density (1 + (2 pi k)^2)^-(d+1)/2 as
+ * k^-(d+1); before, only "spectrum ~ f^-1.99" was printed, the same in 1D,
+ * 2D, 3D.  The fit over 16/L..128/L sees local slopes from 2 x^2 / (1 + x^2)
+ * = 1.9 (x = 2 pi f = 4.4) to 2: 0.05 of tolerance.  The eigenvalue names
+ * its matrix: side^d points spaced L / 16. */
+Test(check_cli, markov_says_which_spectrum)
+{
+    static const int side[] = {0, 64, 16, 6};
+    for (int dim = 1; dim <= 3; dim++) {
+        json_t *o = must("markov", dim), *g;
+        char needle[64];
+        cr_expect_float_eq(jnum(o, "spectral_decay"), 2.0, 0.05);
+        cr_expect_float_eq(jnum(o, "density_decay"), dim + 1.0, 0.05);
+        g = json_object_get(o, "eigen_grid");
+        cr_expect_eq(json_integer_value(json_object_get(g, "side")), side[dim]);
+        cr_expect_float_eq(jnum(g, "spacing"), jnum(o, "scale") / 16, 1e-8 * jnum(o, "scale"));  /* JSON: 10 digits */
+        json_decref(o);
+        cr_assert_eq(run_noiselab(dim == 1 ? "check --acf markov --dim 1"
+                                  : dim == 2 ? "check --acf markov --dim 2" : "check --acf markov --dim 3",
+                                  out, sizeof out, err, sizeof err), 0);
+        cr_expect(strstr(out, "line spectrum of R along x ~ f^-"), "%s", out);
+        snprintf(needle, sizeof needle, "%d-point grid", side[dim]);
+        cr_expect(strstr(out, needle), "%s", out);
+        snprintf(needle, sizeof needle, "%dD density ~ |k|^-", dim);
+        cr_expect(dim == 1 || strstr(out, needle), "%s", out);
+    }
+}
+
+/* The neighbour of each is checked valid by check itself. */
+static void neighbour_valid(json_t *o, int dim)
+{
+    json_t *a = json_object_get(o, "neighbours");
+    cr_assert(json_array_size(a) > 0, "no neighbour");
+    for (size_t i = 0; i < json_array_size(a); i++) {
+        const char *s = json_string_value(json_array_get(a, i));
+        json_t *n = must(s, dim);
+        cr_expect(json_is_true(json_object_get(n, "positive_definite")), "neighbour %s not valid in %dD", s, dim);
+        json_decref(n);
+    }
+}
+
+/* The omega of the suggested neighbour, from "FAMILY:omega=W...". */
+static double neighbour_omega(json_t *o)
+{
+    const char *s = json_string_value(json_array_get(json_object_get(o, "neighbours"), 0)), *p;
+    cr_assert(s && (p = strstr(s, "omega=")), "first neighbour: %s", s ? s : "none");
+    return strtod(p + 6, NULL);
+}
+
+/* Why, in words, and a valid neighbour.  Exact boundaries: cos(omega r)
+ * e^-r^2 in 3D has S(0) proportional to (1 - omega^2/2) e^-omega^2/4, valid
+ * up to omega = sqrt 2; cos(omega r) e^-r in 2D up to omega = tan(pi/4) = 1.
+ * The neighbour is 2% inside the boundary found on the grid, 3 digits,
+ * rounded down: within 5% below the exact boundary. */
+Test(check_cli, says_why_and_a_valid_neighbour, .timeout = 300)
+{
+    json_t *o = must("gauss-osc:omega=10", 3);
+    double w;
+    cr_expect_str_eq(json_string_value(json_object_get(o, "why")), "negative-spectrum");
+    w = neighbour_omega(o);
+    cr_expect(w <= sqrt(2) && w >= 0.95 * sqrt(2), "gauss-osc neighbour omega %g", w);
+    neighbour_valid(o, 3);
+    json_decref(o);
+    o = must("oscillatory:omega=3", 2);
+    w = neighbour_omega(o);
+    cr_expect(w <= 1 && w >= 0.95, "oscillatory neighbour omega %g", w);
+    json_decref(o);
+    o = must("expr:step(1-abs(t))*(1-abs(t))", 2);  /* a triangle: valid in 1D only */
+    cr_expect_str_eq(json_string_value(json_array_get(json_object_get(o, "neighbours"), 0)),
+                     "expr:step(1-r)*(1-1.5*r+0.5*r^3)");
+    neighbour_valid(o, 2);
+    json_decref(o);
+    o = must("spectrum:-exp(-k*k)", 2);
+    cr_expect_str_eq(json_string_value(json_object_get(o, "why")), "negative-integral");
+    json_decref(o);
+    cr_assert_eq(run_noiselab("check --acf 'expr:cos(10*r)*exp(-r)' --dim 2", out, sizeof out, err, sizeof err), 0);
+    cr_expect(strstr(out, "why") && strstr(out, "2D spectrum") && strstr(out, "is negative at |k| ="), "%s", out);
+    cr_expect(strstr(out, "expr:cos(10*r)*exp(-r);sep"), "%s", out);
+}
