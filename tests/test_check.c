@@ -61,6 +61,42 @@ Test(check, singular_below_a_spacing)
     cr_expect_eq(m.singular_below, 0, "markov: %g", m.singular_below);
 }
 
+/* The spectral path against closed forms of named models: markov's 1D
+ * density 2 / (1 + (2 pi f)^2) and 3D density 8 pi / (1 + (2 pi k)^2)^2
+ * (variance 1, not differentiable, decays f^-2 and k^-4), and the
+ * Gaussian's sqrt(pi) exp(-pi^2 f^2) with R''(0) = -2.  Variances and
+ * R''(0) are quadratures to 1e-10 with an analytic tail beyond the band
+ * (the tail of markov's 1D density beyond K = 1e5 is 1e-6 of the variance,
+ * taken with the fitted exponent, good to 1e-3 of itself): 1e-6.  The tail
+ * exponents are fitted where (2 pi k)^2 > 1e6, so within 1e-5 of 2 and 4:
+ * 0.01 is loose. */
+Test(check, spectral_path_agrees_with_named)
+{
+    nl_check c = run("spectrum:2/(1+(6.283185307179586*f)^2)", 1);
+    cr_expect(c.spectral && c.positive_definite);
+    cr_expect_float_eq(c.variance, 1.0, 1e-6);
+    cr_expect_eq(c.differentiable_order, 0);
+    cr_expect_float_eq(c.spectral_decay, 2.0, 0.01);
+    c = run("spectrum:25.132741228718345/(1+(6.283185307179586*k)^2)^2", 3);
+    cr_expect(c.positive_definite);
+    cr_expect_float_eq(c.variance, 1.0, 1e-6);
+    cr_expect_eq(c.differentiable_order, 0);
+    cr_expect_float_eq(c.density_decay, 4.0, 0.01);
+    cr_expect_float_eq(c.spectral_decay, 2.0, 0.01);
+    c = run("spectrum:1.7724538509055159*exp(-9.869604401089358*f*f)", 1);
+    cr_expect_eq(c.differentiable_order, -1);
+    cr_expect_float_eq(c.variance, 1.0, 1e-6);
+    cr_expect_float_eq(c.r2, -2.0, 1e-6);
+    /* S = exp(-f^2): R(j) = sqrt(pi) exp(-pi^2 j^2) at unit spacing, so by
+     * Poisson's sum the aliased spectrum is sum_j R(j) cos(2 pi j f), least
+     * at f = 1/2 (on the zone's grid): 1 - 2 e^-pi^2 of R(0), the terms
+     * j >= 2 (e^-4pi^2 = 7e-18) and aliases beyond 64 negligible; the
+     * variance's quadrature is good to 1e-10. */
+    c = run("spectrum:exp(-f*f)", 1);
+    cr_expect_float_eq(c.min_eigenvalue, 1 - 2 * exp(-M_PI * M_PI), 1e-9);
+    cr_expect_eq(c.eig_side, 0);
+}
+
 /* ---- Through the command line: every model kind in 1D, 2D and 3D. ---- */
 
 #include "util.h"
