@@ -29,11 +29,14 @@
  * known in closed form and is the evidence: it is scanned along the radius
  * (isotropic) or sampled on a d-dimensional grid over the band that holds
  * it (anisotropic spectrum: expressions) for its sign; the variance
- * R(0) = int S and R''(0) = -4 pi^2 int fx^2 S are integrals of S (GSL
- * adaptive quadrature, relative error 1e-9); the decay k^-b of S comes from
- * its tail (power: the band's exponent d, and S vanishes above fmax:
- * band-limited, so infinitely differentiable), the line spectrum's from
- * b - (d - 1).  The smallest eigenvalue is that of the covariance of an
+ * R(0) = int S and R''(0) = -4 pi^2 int fx^2 S are radial integrals of S
+ * (GSL adaptive quadrature, relative error 1e-10, and beyond the scanned
+ * band the tail of the fitted power law; anisotropic spectra: Riemann sums
+ * on the grid); the decay k^-b of S is fitted along x where S has fallen
+ * below 1e-6 of its peak (power: the band's exponent d, and S vanishes
+ * above fmax: band-limited, so infinitely differentiable), the line
+ * spectrum's is b - (d - 1) (exact for isotropic tails); b <= d (an
+ * infinite variance) is refused.  The smallest eigenvalue is that of the covariance of an
  * infinite grid of unit spacing (the one synthesis samples), the smallest
  * value over the Brillouin zone of the aliased spectrum sum_m S(f + m),
  * aliases |m_i| <= 64 (1D), 16 (2D), 4 (3D): a lower bound for every finite
