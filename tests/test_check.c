@@ -51,6 +51,11 @@ Test(check, differentiability)
     cr_expect_float_eq(run("gauss", 1).r2, -2.0, 1e-6);
     cr_expect_float_eq(run("expr:exp(-t^2)", 1).r2, -2.0, 1e-9);  /* symbolic */
     cr_expect(isinf(run("markov", 1).r2));
+    /* along x, exp(-x^2 - 4 y^2) is exp(-x^2): R''(0) = -2 (it was 0, the
+     * symbolic derivative in t of an expression in x); the finite
+     * difference at d = 1e-4 L is off by d^2 < 1e-6 */
+    cr_expect_float_eq(run("expr:exp(-x*x-4*y*y)", 2).r2, -2.0, 1e-6);
+    cr_expect_float_eq(run("expr:exp(-x*x-4*y*y)", 3).r2, -2.0, 1e-6);
 }
 
 Test(check, singular_below_a_spacing)
