@@ -36,7 +36,10 @@ static int spectrum_checks(const nl_model *m, int dim, nl_check *c)
         if (S->data[i] < smin)
             smin = S->data[i], imin = i;
     }
-    c->min_spectrum = smax > 0 ? smin / smax : -INFINITY;
+    /* relative to the largest magnitude: finite even for a spectrum
+     * negative everywhere (the same as smax for any valid model) */
+    smax = fmax(smax, -smin);
+    c->min_spectrum = smin / smax;
     c->spectrum_kmax = 0.5 / h;
     {
         double k2 = 0;

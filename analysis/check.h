@@ -75,7 +75,7 @@ typedef struct {
     int spectral;            /* the spectral path (power:, spectrum:) was taken */
     double scale;            /* L (spectral models: 16, the matrix's reach in unit spacings) */
     double variance;         /* R(0) */
-    double min_spectrum;     /* smallest sampled d-dimensional spectrum value / largest */
+    double min_spectrum;     /* smallest sampled d-dimensional spectrum value / largest magnitude */
     double min_spectrum_k;   /* |k| (cycles per unit) where it is reached */
     double spectrum_kmax;    /* the sampled frequencies reach |k| = this along each axis */
     double min_eigenvalue;   /* smallest covariance eigenvalue / R(0) */

@@ -90,12 +90,12 @@ static void print_why(const nl_check *k, const char *nb)
     switch (k->why) {
     case NL_CHECK_NEG_INTEGRAL:
         printf("  why                    the integral of R over the %s is negative (the %dD spectrum at k = 0 is "
-               "%.3g of its peak): no field has this covariance\n", whole[d], d, k->min_spectrum);
+               "%.3g times its largest magnitude): no field has this covariance\n", whole[d], d, k->min_spectrum);
         break;
     case NL_CHECK_NEG_SPECTRUM:
         printf("  why                    its %dD spectrum (the density over %dD frequencies) is negative at |k| = "
-               "%.3g cycles per unit (%.3g of its peak): no field has this covariance\n", d, d, k->min_spectrum_k,
-               k->min_spectrum);
+               "%.3g cycles per unit (%.3g times its largest magnitude): no field has this covariance\n", d, d,
+               k->min_spectrum_k, k->min_spectrum);
         break;
     case NL_CHECK_BOUND:
         printf("  why                    R falls to %.3f R(0) at lag %.3g, below the -1/%d an isotropic covariance "
@@ -171,8 +171,8 @@ static void print_text(const char *spec, const nl_check *k, const char *nb)
     int d = k->dim;
     printf("%s in %dD: %s\n", spec, d, k->positive_definite ? "positive definite" : "NOT positive definite");
     print_why(k, nb);
-    printf("  min spectrum / max     %.3g (the %dD density, %s to |k| = %.3g cycles per unit along each axis)\n", k->min_spectrum,
-           d, k->spectral ? "scanned" : "sampled", k->spectrum_kmax);
+    printf("  min spectrum / max     %.3g (the %dD density, %s to |k| = %.3g cycles per unit along each axis)\n",
+           k->min_spectrum, d, k->spectral ? "scanned" : "sampled", k->spectrum_kmax);
     if (k->spectral)
         printf("  variance R(0)          %.6g (the integral of S)\n", k->variance);
     print_eigen(k);
