@@ -215,7 +215,9 @@ void nl_check_verdict(nl_check *c)
 static int scale_of(const nl_model *m, int dim, nl_check *c)
 {
     double zero[3] = {0, 0, 0}, r0 = nl_model_acf(m, dim, zero);
-    if (!(r0 > 0) || !isfinite(r0))
+    if (!isfinite(r0))
+        return NL_ERROR(NL_EINVAL, "%s: R(0) is not a finite number; expected a positive variance", nl_model_spec(m));
+    if (!(r0 > 0))
         return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a positive variance", nl_model_spec(m), r0);
     /* the checks reach 1e-13 R(0) and square covariances: far from 1
      * they run through subnormal numbers (minutes) or overflow */

@@ -74,8 +74,8 @@ static int scan_axis(const nl_model *m, int dim, int axis, double *s)
         double kk = j == SCAN_N ? 0 : k;
         s[j] = s_axis(m, dim, axis, kk);
         if (!isfinite(s[j]))
-            return NL_ERROR(NL_EINVAL, "%s: S = %g at |k| = %g in %dD; expected a finite density at every "
-                            "frequency", nl_model_spec(m), s[j], kk, dim);
+            return NL_ERROR(NL_EINVAL, "%s: S is not a finite number at |k| = %g in %dD; expected a finite "
+                            "density at every frequency", nl_model_spec(m), kk, dim);
     }
     return NL_OK;
 }
