@@ -8,9 +8,13 @@
  * (searched by factors of 1.25, along x) beyond which |R| < 1e-8 R(0) for
  * good.  Positive definiteness (Bochner) is judged on the d-dimensional
  * spectrum of R sampled on a periodic grid of extent 8 L (spacing L / 512 in
- * 1D, L / 32 in 2D, L / 8 in 3D): values below -1e-6 of its largest (beyond
- * the sampling and truncation error, which is under 1e-8 R(0) in
- * covariance) make the model not positive definite; and on the smallest
+ * 1D, L / 32 in 2D, L / 8 in 3D) and, for isotropic models in 2D and 3D, on
+ * the radial spectrum by Hankel quadrature (nl_model_spectrum_iso) at k = 0
+ * and 128 frequencies from 0.01 / L to 64 / L (the grid's Riemann sums are
+ * off by a few percent of the peak where R has a kink; the quadrature
+ * resolves the boundary of validity, e.g. omega = 1 for cos(omega r) e^-r
+ * in 2D): values below -1e-6 of the largest magnitude make the model not
+ * positive definite; and on the smallest
  * eigenvalue of the covariance matrix of a small grid (64 samples in 1D,
  * 16x16 in 2D, 6x6x6 in 3D) spaced L / 16.  Isotropic models must also keep
  * R >= -R(0)/D (the -1/n bound) and, in 3D, a non-increasing line spectrum
