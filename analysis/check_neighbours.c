@@ -46,8 +46,8 @@ static void scale_var(const nl_model *m, char *out, size_t size)
  * (validity is lost as omega grows: the d-dimensional spectrum of
  * cos(omega r) times a decay turns negative near k = 0; gauss-osc in 3D at
  * omega = sqrt(2), oscillatory in 2D at omega = 1 / scale), less 2% for the
- * grid's resolution of the boundary, rounded down to 3 significant digits
- * and verified. */
+ * frequency resolution of check's scans, rounded down to 3 significant
+ * digits and verified. */
 static void largest_omega(const nl_model *m, int dim, char *buf, size_t size)
 {
     const char *fam = nl_model_get_kind(m) == NL_MODEL_OSCILLATORY ? "oscillatory" : "gauss-osc";
@@ -63,7 +63,7 @@ static void largest_omega(const nl_model *m, int dim, char *buf, size_t size)
         else
             hi = mid;
     }
-    lo *= 0.98;  /* a margin for the grid's resolution of the boundary */
+    lo *= 0.98;  /* a margin for the scans' resolution of the boundary */
     if (!(lo > 0))
         return;
     for (int t = 0; t < 4; t++) {
