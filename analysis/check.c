@@ -38,36 +38,50 @@ static void radial_spectrum(const nl_model *m, int dim, double L, double *smin, 
     }
 }
 
+int nl_check_grid_spectrum(const nl_model *m, int dim, double h, nl_field **out)
+{
+    size_t n = dim == 1 ? 4096 : dim == 2 ? 256 : 64, nn[3] = {n, n, n};
+    double hh[3] = {h, h, h};
+    int st;
+    *out = nl_field_alloc(dim, nn, hh, NULL);
+    if (!*out)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    if ((st = nl_wk_sample_spectrum(m, *out))) {
+        nl_field_free(*out);
+        *out = NULL;
+    }
+    return st;
+}
+
+double nl_check_grid_k(const nl_field *S, size_t i)
+{
+    size_t n = S->n[0];
+    double k2 = 0, df = 1 / ((double)n * S->h[0]);
+    for (int a = 0; a < S->dim; a++, i /= n) {
+        double w = (double)nl_wrap(i % n, n) * df;
+        k2 += w * w;
+    }
+    return sqrt(k2);
+}
+
 /* The d-dimensional spectrum of R on a periodic grid of extent 8 L (and
  * radially, radial_spectrum): its smallest value relative to its largest
  * magnitude and the |k| where it is reached. */
 static int spectrum_checks(const nl_model *m, int dim, nl_check *c)
 {
-    size_t n = dim == 1 ? 4096 : dim == 2 ? 256 : 64, nn[3] = {n, n, n}, imin = 0;
-    double h = 8 * c->scale / (double)n, hh[3] = {h, h, h}, smax = 0, smin = INFINITY, kr = 0, sr = INFINITY;
-    nl_field *S = nl_field_alloc(dim, nn, hh, NULL);
+    size_t n = dim == 1 ? 4096 : dim == 2 ? 256 : 64, imin = 0;
+    double h = 8 * c->scale / (double)n, smax = 0, smin = INFINITY, kr = 0, sr = INFINITY;
+    nl_field *S;
     int st;
-    if (!S)
-        return NL_ERROR(NL_ENOMEM, "out of memory");
-    if ((st = nl_wk_sample_spectrum(m, S))) {
-        nl_field_free(S);
+    if ((st = nl_check_grid_spectrum(m, dim, h, &S)))
         return st;
-    }
     for (size_t i = 0; i < S->count; i++) {
         smax = fmax(smax, S->data[i]);
         if (S->data[i] < smin)
             smin = S->data[i], imin = i;
     }
     c->spectrum_kmax = 0.5 / h;
-    {
-        double k2 = 0;
-        for (int a = 0; a < dim; a++) {
-            long w = nl_wrap(imin % n, n);
-            k2 += (double)w * (double)w;
-            imin /= n;
-        }
-        c->min_spectrum_k = sqrt(k2) / (n * h);
-    }
+    c->min_spectrum_k = nl_check_grid_k(S, imin);
     nl_field_free(S);
     if (dim > 1 && c->isotropic)
         radial_spectrum(m, dim, c->scale, &sr, &smax, &kr);

@@ -94,23 +94,17 @@ static void take_min(double v, double k, double *smin, double *kmin)
  * Riemann sums of S and fx^2 S. */
 static int grid_sums(const nl_model *m, int dim, double K, double *smin, double *kmin, double *var, double *m2)
 {
-    size_t n = dim == 1 ? 4096 : dim == 2 ? 256 : 64, nn[3] = {n, n, n};
-    double h = 0.5 / K, hh[3] = {h, h, h}, df = 1 / (n * h), cell = pow(df, dim);
-    nl_field *S = nl_field_alloc(dim, nn, hh, NULL);
+    nl_field *S;
+    double df, cell;
     int st;
-    if (!S)
-        return NL_ERROR(NL_ENOMEM, "out of memory");
-    if ((st = nl_wk_sample_spectrum(m, S))) {
-        nl_field_free(S);
+    if ((st = nl_check_grid_spectrum(m, dim, 0.5 / K, &S)))
         return st;
-    }
+    df = 1 / ((double)S->n[0] * S->h[0]);
+    cell = pow(df, dim);
     *var = *m2 = 0;
     for (size_t i = 0; i < S->count; i++) {
-        size_t q = i;
-        double k2 = 0, fx = (double)nl_wrap(i % n, n) * df;
-        for (int a = 0; a < dim; a++, q /= n)
-            k2 += (double)nl_wrap(q % n, n) * (double)nl_wrap(q % n, n) * df * df;
-        take_min(S->data[i], sqrt(k2), smin, kmin);
+        double fx = (double)nl_wrap(i % S->n[0], S->n[0]) * df;
+        take_min(S->data[i], nl_check_grid_k(S, i), smin, kmin);
         *var += S->data[i] * cell;
         *m2 += fx * fx * S->data[i] * cell;
     }
