@@ -1,5 +1,5 @@
-/* Validity, smoothness and singularity of a model. */
-#include "check.h"
+/* Validity, smoothness and singularity of a model defined by R. */
+#include "check_internal.h"
 #include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
@@ -17,29 +17,94 @@ static double acf_x(const nl_model *m, int dim, double t)
     return nl_model_acf(m, dim, lag);
 }
 
-static int spectrum_checks(const nl_model *m, int dim, nl_check *c)
+/* Isotropic models in 2D and 3D: the radial spectrum by the Hankel
+ * transform (Lewis 1987, eq. (13), nl_model_spectrum_iso) at k = 0 and 128
+ * frequencies spaced by a constant factor from 0.01 / L to 64 / L.  Exact
+ * where the grid is not: the grid's Riemann sum of R misses S(0) by a few
+ * percent of the peak when R has a kink, which blurs the boundary of
+ * validity (cos(omega r) e^-r in 2D is valid up to omega = 1 exactly; the
+ * grid alone passed 1.02).  Frequencies whose quadrature fails are skipped. */
+#define RADIAL_N 128
+static void radial_spectrum(const nl_model *m, int dim, double L, double *smin, double *smax, double *kmin)
+{
+    double q = pow(6400.0, 1.0 / (RADIAL_N - 1));
+    for (int j = 0; j <= RADIAL_N; j++) {
+        double k = j == 0 ? 0 : 0.01 / L * pow(q, j - 1), v = nl_model_spectrum_iso(m, dim, k);
+        if (isnan(v))
+            continue;
+        *smax = fmax(*smax, v);
+        if (v < *smin)
+            *smin = v, *kmin = k;
+    }
+}
+
+int nl_check_grid_spectrum(const nl_model *m, int dim, double h, nl_field **out)
 {
     size_t n = dim == 1 ? 4096 : dim == 2 ? 256 : 64, nn[3] = {n, n, n};
-    double h = 8 * c->scale / (double)n, hh[3] = {h, h, h}, smax = 0, smin = INFINITY;
-    nl_field *S = nl_field_alloc(dim, nn, hh, NULL);
+    double hh[3] = {h, h, h};
     int st;
-    if (!S)
+    *out = nl_field_alloc(dim, nn, hh, NULL);
+    if (!*out)
         return NL_ERROR(NL_ENOMEM, "out of memory");
-    if ((st = nl_wk_sample_spectrum(m, S))) {
-        nl_field_free(S);
-        return st;
+    if ((st = nl_wk_sample_spectrum(m, *out))) {
+        nl_field_free(*out);
+        *out = NULL;
     }
-    for (size_t i = 0; i < S->count; i++)
-        smax = fmax(smax, S->data[i]), smin = fmin(smin, S->data[i]);
-    c->min_spectrum = smax > 0 ? smin / smax : -INFINITY;
-    /* 3D isotropic: non-increasing along the x axis of the spectrum */
-    c->monotone_3d = 1;
-    if (dim == 3 && c->isotropic)
-        for (size_t k = 1; k < n / 2; k++)
-            if (S->data[k] > S->data[k - 1] + 1e-6 * smax)
-                c->monotone_3d = 0;
+    return st;
+}
+
+double nl_check_grid_k(const nl_field *S, size_t i)
+{
+    size_t n = S->n[0];
+    double k2 = 0, df = 1 / ((double)n * S->h[0]);
+    for (int a = 0; a < S->dim; a++, i /= n) {
+        double w = (double)nl_wrap(i % n, n) * df;
+        k2 += w * w;
+    }
+    return sqrt(k2);
+}
+
+/* The d-dimensional spectrum of R on a periodic grid of extent 8 L (and
+ * radially, radial_spectrum): its smallest value relative to its largest
+ * magnitude and the |k| where it is reached. */
+static int spectrum_checks(const nl_model *m, int dim, nl_check *c)
+{
+    size_t n = dim == 1 ? 4096 : dim == 2 ? 256 : 64, imin = 0;
+    double h = 8 * c->scale / (double)n, smax = 0, smin = INFINITY, kr = 0, sr = INFINITY;
+    nl_field *S;
+    int st;
+    if ((st = nl_check_grid_spectrum(m, dim, h, &S)))
+        return st;
+    for (size_t i = 0; i < S->count; i++) {
+        smax = fmax(smax, S->data[i]);
+        if (S->data[i] < smin)
+            smin = S->data[i], imin = i;
+    }
+    c->spectrum_kmax = 0.5 / h;
+    c->min_spectrum_k = nl_check_grid_k(S, imin);
     nl_field_free(S);
+    if (dim > 1 && c->isotropic)
+        radial_spectrum(m, dim, c->scale, &sr, &smax, &kr);
+    if (sr < smin)
+        smin = sr, c->min_spectrum_k = kr;
+    /* relative to the largest magnitude: finite even for a spectrum
+     * negative everywhere (the same as smax for any valid model) */
+    smax = fmax(smax, -smin);
+    c->min_spectrum = smin / smax;
     return NL_OK;
+}
+
+/* 3D isotropic: the line spectrum S1(f) = 2 pi int_f^inf S(k) k dk must not
+ * rise (S >= 0); the first f where it does, beyond 1e-6 of its peak. */
+static void line_monotone(const double *S1, size_t n, double df, double peak, nl_check *c)
+{
+    c->monotone_3d = 1;
+    for (size_t k = 1; k < n; k++)
+        if (S1[k] > S1[k - 1] + 1e-6 * peak) {
+            c->monotone_3d = 0;
+            c->line_rise_f = (double)k * df;
+            return;
+        }
 }
 
 /* Decay exponent b of the spectrum of the 1D profile R(t): 65536 samples
@@ -48,10 +113,10 @@ static int spectrum_checks(const nl_model *m, int dim, nl_check *c)
  * add well under 1%); INFINITY when the spectrum at 128/L is below 1e-13 of
  * its peak (the rounding floor) and its decay steepens across the band
  * (faster than any power). */
-static int profile_decay(const nl_model *m, int dim, double L, double *b)
+static int profile_decay(const nl_model *m, int dim, nl_check *c)
 {
     size_t n = 65536, n1[1] = {n};
-    double h = 8 * L / (double)n, *f = malloc(n / 2 * sizeof *f), peak = 0;
+    double L = c->scale, h = 8 * L / (double)n, *f = malloc(n / 2 * sizeof *f), peak = 0, *b = &c->spectral_decay;
     nl_field *R = nl_field_alloc(1, n1, &h, NULL), *S = nl_field_alloc(1, n1, &h, NULL);
     nl_slope sl;
     int st = NL_OK;
@@ -65,6 +130,9 @@ static int profile_decay(const nl_model *m, int dim, double L, double *b)
         goto done;
     for (size_t k = 0; k < n / 2; k++)
         f[k] = (double)k / (8 * L), peak = fmax(peak, fabs(S->data[k]));
+    c->monotone_3d = 1;
+    if (dim == 3 && c->isotropic)
+        line_monotone(S->data, n / 2, 1 / (8 * L), peak, c);
     for (size_t k = 0; k < n / 2; k++)
         S->data[k] = fabs(S->data[k]);
     if (S->data[128 * 8] < 1e-13 * peak) {
@@ -90,47 +158,69 @@ done:
     return st;
 }
 
+/* R at every offset of a side^dim grid, once: offsets (o0, o1, o2) with
+ * o_a in 1-side..side-1 stored at sum (o_a + side - 1) (2 side - 1)^a. */
+static double *offset_table(const nl_model *m, int dim, size_t side, double h)
+{
+    size_t w = 2 * side - 1, cnt = dim == 1 ? w : dim == 2 ? w * w : w * w * w;
+    double *T = malloc(cnt * sizeof *T);
+    if (!T)
+        return NULL;
+    for (size_t i = 0; i < cnt; i++) {
+        size_t p[3] = {i % w, (i / w) % w, i / (w * w)};
+        double lag[3] = {0, 0, 0};
+        for (int a = 0; a < dim; a++)
+            lag[a] = ((double)p[a] - (double)(side - 1)) * h;
+        T[i] = nl_model_acf(m, dim, lag);
+    }
+    return T;
+}
+
 static int eigen_check(const nl_model *m, int dim, nl_check *c)
 {
     size_t side = dim == 1 ? 64 : dim == 2 ? 16 : 6, N = dim == 1 ? side : dim == 2 ? side * side : side * side * side;
-    double h = c->scale / 16, r0 = acf_x(m, dim, 0), lmin = INFINITY;
+    size_t w = 2 * side - 1;
+    double h = c->scale / 16, r0 = acf_x(m, dim, 0), lmin = INFINITY, *T = offset_table(m, dim, side, h);
     gsl_matrix *A = gsl_matrix_alloc(N, N);
     gsl_vector *ev = gsl_vector_alloc(N);
-    gsl_eigen_symm_workspace *w = gsl_eigen_symm_alloc(N);
+    gsl_eigen_symm_workspace *ws = gsl_eigen_symm_alloc(N);
     int st = NL_OK;
-    if (!A || !ev || !w)
+    c->eig_side = side;
+    c->eig_spacing = h;
+    if (!A || !ev || !ws || !T)
         st = NL_ERROR(NL_ENOMEM, "out of memory");
     for (size_t i = 0; !st && i < N; i++)
         for (size_t j = 0; j < N; j++) {
             size_t pi[3] = {i % side, (i / side) % side, i / (side * side)}, pj[3] = {j % side, (j / side) % side,
                                                                                       j / (side * side)};
-            double lag[3] = {0, 0, 0};
-            for (int a = 0; a < dim; a++)
-                lag[a] = ((double)pi[a] - (double)pj[a]) * h;
-            gsl_matrix_set(A, i, j, nl_model_acf(m, dim, lag));
+            size_t idx = 0, stride = 1;
+            for (int a = 0; a < dim; a++, stride *= w)
+                idx += (pi[a] + side - 1 - pj[a]) * stride;
+            gsl_matrix_set(A, i, j, T[idx]);
         }
-    if (!st && (st = gsl_eigen_symm(A, ev, w)))
+    if (!st && (st = gsl_eigen_symm(A, ev, ws)))
         st = NL_ERROR(NL_EFAIL, "check: the eigenvalues did not converge: %s", nl_gsl_reason(st));
     for (size_t i = 0; !st && i < N; i++)
         lmin = fmin(lmin, gsl_vector_get(ev, i));
     c->min_eigenvalue = lmin / r0;
-    gsl_matrix_free(A), gsl_vector_free(ev), gsl_eigen_symm_free(w);
+    gsl_matrix_free(A), gsl_vector_free(ev), gsl_eigen_symm_free(ws), free(T);
     return st;
 }
 
-/* Subdivision singularity, 1D N = 2 along x: the largest spacing L / 2^k,
- * k <= 24, whose matrix is flagged singular (0: none). */
-static double singular_spacing(const nl_model *m, double L)
+/* Subdivision singularity, N = 2 along x (4 points on the x axis of the
+ * model in dim dimensions): the largest spacing L / 2^k, k <= 24, whose
+ * matrix is flagged singular (0: none). */
+double nl_check_singular_spacing(const nl_model *m, int dim, double L)
 {
     nl_subdiv_class cl;
-    double a[4], pts[4], tgt[1];
+    double a[4], pts[12] = {0}, tgt[3] = {0};
     cl.a = a;
     for (int k = 0; k <= 24; k++) {
         double s = ldexp(L, -k);
         for (int i = 0; i < 4; i++)
-            pts[i] = (i - 1) * s;
+            pts[i * dim] = (i - 1) * s;
         tgt[0] = 0.5 * s;
-        if (nl_subdiv_solve(m, 1, 4, pts, tgt, NULL, &cl))
+        if (nl_subdiv_solve(m, dim, 4, pts, tgt, NULL, &cl))
             break;
         if (cl.flags & NL_SUBDIV_SINGULAR)
             return s;
@@ -138,74 +228,129 @@ static double singular_spacing(const nl_model *m, double L)
     return 0;
 }
 
-static int check_model(const nl_model *m, int dim, nl_check *c)
+int nl_check_order(double b)
 {
-    double r0, zero[3] = {0, 0, 0};
-    int st;
-    memset(c, 0, sizeof *c);
-    c->dim = dim;
-    if ((st = nl_model_check_dim(m, dim)))
-        return st;
-    r0 = nl_model_acf(m, dim, zero);
-    if (nl_model_get_kind(m) == NL_MODEL_SPECTRUM) {
-        /* R from the spectrum on a grid: a scale cannot be searched; use 1 */
-        c->scale = 64;
-        r0 = NAN;
-    } else {
-        if (!(r0 > 0) || !isfinite(r0))
-            return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a positive variance", nl_model_spec(m), r0);
-        /* the checks reach 1e-13 R(0) and square covariances: far from 1
-         * they run through subnormal numbers (minutes) or overflow */
-        if (r0 < 1e-200 || r0 > 1e200)
-            return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a variance between 1e-200 and 1e200 (the checks "
-                            "are relative to R(0): rescale the model)", nl_model_spec(m), r0);
-        /* the lag beyond which |R| < 1e-8 R(0): the last such crossing below 2^20 */
-        c->scale = 1e-3;
-        for (double t = 1e-3; t < 1048576; t *= 1.25)
-            if (fabs(acf_x(m, dim, t)) >= 1e-8 * r0)
-                c->scale = t * 1.25;
+    int m;
+    if (isinf(b))
+        return -1;
+    m = (int)ceil((b - 1) / 2 - 0.05) - 1;
+    return m < 0 ? 0 : m;
+}
+
+void nl_check_verdict(nl_check *c)
+{
+    c->why = NL_CHECK_VALID;
+    if (c->min_spectrum < -1e-6)
+        c->why = c->min_spectrum_k == 0 ? NL_CHECK_NEG_INTEGRAL : NL_CHECK_NEG_SPECTRUM;
+    else if (!c->isotropic_bound_ok)
+        c->why = NL_CHECK_BOUND;
+    else if (c->min_eigenvalue < -1e-9)
+        c->why = NL_CHECK_NEG_EIGENVALUE;
+    else if (!c->monotone_3d)
+        c->why = NL_CHECK_LINE_RISES;
+    c->positive_definite = c->why == NL_CHECK_VALID;
+}
+
+/* R(0) within the range the checks handle, and L. */
+static int scale_of(const nl_model *m, int dim, nl_check *c)
+{
+    double zero[3] = {0, 0, 0}, r0 = nl_model_acf(m, dim, zero);
+    if (!isfinite(r0))
+        return NL_ERROR(NL_EINVAL, "%s: R(0) is not a finite number; expected a positive variance", nl_model_spec(m));
+    if (!(r0 > 0))
+        return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a positive variance", nl_model_spec(m), r0);
+    /* the checks reach 1e-13 R(0) and square covariances: far from 1
+     * they run through subnormal numbers (minutes) or overflow */
+    if (r0 < 1e-200 || r0 > 1e200)
+        return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a variance between 1e-200 and 1e200 (the checks "
+                        "are relative to R(0): rescale the model)", nl_model_spec(m), r0);
+    c->variance = r0;
+    /* the lag beyond which |R| < 1e-8 R(0): the last such crossing below 2^20 */
+    c->scale = 1e-3;
+    for (double t = 1e-3; t < 1048576; t *= 1.25)
+        if (fabs(acf_x(m, dim, t)) >= 1e-8 * r0)
+            c->scale = t * 1.25;
+    return NL_OK;
+}
+
+/* Was the model made separable ("sep" among the keys of its spec)? */
+static int is_separable(const nl_model *m)
+{
+    const char *s = nl_model_spec(m), *p = s;
+    while ((p = strstr(p, "sep")) != NULL) {
+        if (p > s && strchr(":;,", p[-1]) && (p[3] == ',' || p[3] == '\0'))
+            return 1;
+        p += 3;
     }
-    c->isotropic = dim > 1 && nl_model_is_isotropic(m);
-    if ((st = spectrum_checks(m, dim, c)))
-        return st;
-    c->spectral_decay = INFINITY;
-    if (!isnan(r0) && (st = profile_decay(m, dim, c->scale, &c->spectral_decay)))
-        return st;
-    if (!isnan(r0) && (st = eigen_check(m, dim, c)))
-        return st;
-    if (isnan(r0))
-        c->min_eigenvalue = NAN;
-    c->positive_definite = c->min_spectrum >= -1e-6 && !(c->min_eigenvalue < -1e-9);
-    /* the -1/n bound */
-    c->min_r = 1;
-    if (!isnan(r0))
-        for (double t = c->scale / 4096; t <= c->scale; t += c->scale / 4096)
-            c->min_r = fmin(c->min_r, acf_x(m, dim, t) / r0);
-    c->isotropic_bound_ok = !c->isotropic || c->min_r >= -1.0 / dim - 1e-12;
-    if (!c->isotropic_bound_ok || !c->monotone_3d)
-        c->positive_definite = 0;
-    /* smoothness */
+    return 0;
+}
+
+/* The exponent of the d-dimensional density from the line spectrum's: an
+ * isotropic or ellipsoidal S(k) ~ k^-B has S1 ~ f^-(B - d + 1); along an
+ * axis of a separable product S ~ S1.  NAN where neither holds (exemplars,
+ * expressions in x, y, z). */
+static double density_decay(const nl_model *m, int dim, double b)
+{
+    nl_model_kind k = nl_model_get_kind(m);
+    if (dim == 1 || isinf(b))
+        return b;
+    if (is_separable(m))
+        return b;
+    if (k == NL_MODEL_IMAGE || (k == NL_MODEL_EXPR && !nl_model_is_isotropic(m)))
+        return NAN;
+    return b + dim - 1;
+}
+
+static void smoothness(const nl_model *m, int dim, nl_check *c)
+{
+    double r0 = c->variance;
+    c->density_decay = density_decay(m, dim, c->spectral_decay);
     /* a 1D spectrum ~ f^-b has finite moments of order 2m < b - 1; the
      * order is a property of R near 0, the same along any line */
-    c->differentiable_order = isinf(c->spectral_decay) ? -1 : (int)ceil((c->spectral_decay - 1) / 2 - 0.05) - 1;
-    if (c->differentiable_order < -1)
-        c->differentiable_order = 0;
+    c->differentiable_order = nl_check_order(c->spectral_decay);
     /* a kink at the origin (R(0) - R(d) ~ d^a with a < 1.9) rules out any
      * derivative whatever the spectral fit says */
-    if (!isnan(r0)) {
+    {
         double d = c->scale * 1e-5, a = log((r0 - acf_x(m, dim, 2 * d)) / (r0 - acf_x(m, dim, d))) / M_LN2;
         if (isfinite(a) && a < 1.9)
             c->differentiable_order = 0;
     }
-    c->r2 = NAN;
-    if (!isnan(r0)) {
-        double d = c->scale * 1e-4, sym = nl_model_acf_d2(m, 1e-9 * c->scale);
+    {
+        /* the symbolic derivative is d/dt (t, r): not for expressions in x, y, z */
+        double d = c->scale * 1e-4, sym = nl_model_is_isotropic(m) ? nl_model_acf_d2(m, 1e-9 * c->scale) : NAN;
         c->r2 = isfinite(sym) ? sym : 2 * (acf_x(m, dim, d) - r0) / (d * d);
         if (c->differentiable_order == 0)
             c->r2 = -INFINITY;
     }
-    if (!isnan(r0) && dim == 1)
-        c->singular_below = singular_spacing(m, c->scale);
+}
+
+static int check_model(const nl_model *m, int dim, nl_check *c)
+{
+    int st;
+    memset(c, 0, sizeof *c);
+    c->dim = dim;
+    c->monotone_3d = 1;
+    c->isotropic_bound_ok = 1;
+    if ((st = nl_model_check_dim(m, dim)))
+        return st;
+    c->isotropic = dim > 1 && nl_model_is_isotropic(m);
+    if (nl_model_is_spectral(m))
+        return nl_check_spectral(m, dim, c);
+    if ((st = scale_of(m, dim, c)) || (st = spectrum_checks(m, dim, c)) || (st = profile_decay(m, dim, c)) ||
+        (st = eigen_check(m, dim, c)))
+        return st;
+    /* the -1/n bound */
+    c->min_r = 1;
+    for (double t = c->scale / 4096; t <= c->scale; t += c->scale / 4096) {
+        double r = acf_x(m, dim, t) / c->variance;
+        if (r < c->min_r)
+            c->min_r = r, c->min_r_lag = t;
+    }
+    c->isotropic_bound_ok = !c->isotropic || c->min_r >= -1.0 / dim - 1e-12;
+    smoothness(m, dim, c);
+    c->singular_checked = 1;
+    c->singular_below = nl_check_singular_spacing(m, dim, c->scale);
+    nl_check_verdict(c);
     return NL_OK;
 }
 

@@ -2,47 +2,105 @@
  * does it become numerically singular?  (Lewis 1987, "Singular Processes",
  * "Multi-dimensional Autocorrelation and Spectrum".)
  *
- * Scale: L is the smallest lag (searched by doubling, along x) beyond which
- * |R| < 1e-8 R(0) for good.  Positive definiteness is judged on the spectrum
- * of R sampled on a periodic grid of extent 8 L (spacing L / 512 in 1D,
- * L / 32 in 2D, L / 8 in 3D): negative values below -1e-6 of its largest
- * (beyond the sampling and truncation error, which is under 1e-8 R(0) in
- * covariance) make the model not positive definite; and on the smallest
+ * Two paths, by what the model gives exactly.
+ *
+ * Models defined by R (named, expr:, image:).  Scale: L is the smallest lag
+ * (searched by factors of 1.25, along x) beyond which |R| < 1e-8 R(0) for
+ * good.  Positive definiteness (Bochner) is judged on the d-dimensional
+ * spectrum of R sampled on a periodic grid of extent 8 L (spacing L / 512 in
+ * 1D, L / 32 in 2D, L / 8 in 3D) and, for isotropic models in 2D and 3D, on
+ * the radial spectrum by Hankel quadrature (nl_model_spectrum_iso) at k = 0
+ * and 128 frequencies from 0.01 / L to 64 / L (the grid's Riemann sums are
+ * off by a few percent of the peak where R has a kink; the quadrature
+ * resolves the boundary of validity, e.g. omega = 1 for cos(omega r) e^-r
+ * in 2D): values below -1e-6 of the largest magnitude make the model not
+ * positive definite; and on the smallest
  * eigenvalue of the covariance matrix of a small grid (64 samples in 1D,
  * 16x16 in 2D, 6x6x6 in 3D) spaced L / 16.  Isotropic models must also keep
- * R >= -R(0)/D (the -1/n bound) and, in 3D, a non-increasing radial
- * spectrum.  Smoothness: the order m of mean-square differentiability is
- * the largest m with a finite spectral moment of order 2m of the 1D
- * profile (the same along any line), judged from the decay of its spectrum
- * S ~ f^-b between 16/L and 128/L: m = ceil((b - 1)/2) - 1 (with 0.05 of
- * slack for the fit), -1 meaning infinitely differentiable when the
- * spectrum falls faster than any power, and 0 whenever R has a kink at the
- * origin (R(0) - R(d) ~ d^a, a < 1.9, at d = 1e-5 L); R''(0) is libmatheval's
- * symbolic second derivative for expressions, a finite difference
- * otherwise.  singular_below_spacing is the largest spacing s = L / 2^k,
- * k <= 24, at which the 1D N = 2 subdivision matrix has condition number
- * above NL_SUBDIV_COND_MAX (0 when it never does): within 24 octaves below the
- * correlation length, smooth (singular) processes lose rank while rough
- * ones such as exp(-|t|) keep it (their matrices lose rank too, but only at
- * spacings near 1e-10 L, below any sampling that resolves them). */
+ * R >= -R(0)/D (the -1/n bound) and, in 3D, a non-increasing line spectrum
+ * (the spectrum of R along a line, S1(f) = 2 pi int_f^inf S(k) k dk).
+ * Smoothness: the line spectrum of the profile R(t) along x falls as f^-b
+ * between 16/L and 128/L; the order m of mean-square differentiability is
+ * the largest m with a finite moment of order 2m, m = ceil((b - 1)/2) - 1
+ * (with 0.05 of slack for the fit), -1 meaning infinitely differentiable
+ * when the spectrum falls faster than any power, and 0 whenever R has a
+ * kink at the origin (R(0) - R(d) ~ d^a, a < 1.9, at d = 1e-5 L); the
+ * d-dimensional density of an isotropic or ellipsoidal model falls as
+ * k^-(b + d - 1); R''(0) is libmatheval's symbolic second derivative for
+ * expressions, a finite difference otherwise.
+ *
+ * Spectral models (power:, spectrum:).  The d-dimensional density S is
+ * known in closed form and is the evidence: it is scanned along the radius
+ * (isotropic) or sampled on a d-dimensional grid over the band that holds
+ * it (anisotropic spectrum: expressions) for its sign; the variance
+ * R(0) = int S and R''(0) = -4 pi^2 int fx^2 S are radial integrals of S
+ * (GSL adaptive quadrature, relative error 1e-10, and beyond the scanned
+ * band the tail of the fitted power law; anisotropic spectra: Riemann sums
+ * on the grid); the decay k^-b of S is fitted along x where S has fallen
+ * below 1e-6 of its peak (power: the band's exponent d, and S vanishes
+ * above fmax: band-limited, so infinitely differentiable), the line
+ * spectrum's is b - (d - 1) (exact for isotropic tails); b <= d (an
+ * infinite variance) is refused.  The smallest eigenvalue is that of the covariance of an
+ * infinite grid of unit spacing (the one synthesis samples), the smallest
+ * value over the Brillouin zone of the aliased spectrum sum_m S(f + m),
+ * aliases |m_i| <= 64 (1D), 16 (2D), 4 (3D): a lower bound for every finite
+ * grid of unit spacing, exact as the grid grows (Szego); zero when S
+ * vanishes on part of the zone, as a band-limited power spectrum does in
+ * the zone's corners.
+ *
+ * singular_below_spacing is the largest spacing s = L / 2^k, k <= 24, at
+ * which the N = 2 subdivision matrix of 4 points on the x axis (in dim
+ * dimensions) has condition number above NL_SUBDIV_COND_MAX (0 when it
+ * never does): within 24 octaves below the correlation length, smooth
+ * (singular) processes lose rank while rough ones such as exp(-|t|) keep it
+ * (their matrices lose rank too, but only at spacings near 1e-10 L, below
+ * any sampling that resolves them).  It is computed for models defined by
+ * R and for power: (whose R is a quadrature), not for spectrum: models
+ * (singular_checked = 0). */
 #ifndef NL_CHECK_H
 #define NL_CHECK_H
 
 #include "../core/model.h"
 
+#include <stddef.h>
+
+/* Why a model is not positive definite (the first that applies). */
+typedef enum {
+    NL_CHECK_VALID = 0,       /* it is */
+    NL_CHECK_NEG_INTEGRAL,    /* S(0) < 0: the integral of R over R^d is negative */
+    NL_CHECK_NEG_SPECTRUM,    /* S < 0 at |k| = why_k */
+    NL_CHECK_BOUND,           /* isotropic R below -R(0)/d at lag why_lag */
+    NL_CHECK_NEG_EIGENVALUE,  /* the grid's covariance matrix has a negative eigenvalue */
+    NL_CHECK_LINE_RISES       /* 3D isotropic: the line spectrum rises at f = why_k */
+} nl_check_reason;
+
 typedef struct {
     int dim;
-    double scale;            /* L */
-    double min_spectrum;     /* smallest sampled spectrum value / largest */
+    int spectral;            /* the spectral path (power:, spectrum:) was taken */
+    double scale;            /* L (spectral models: 16, the matrix's reach in unit spacings) */
+    double variance;         /* R(0) */
+    double min_spectrum;     /* smallest sampled d-dimensional spectrum value / largest magnitude */
+    double min_spectrum_k;   /* |k| (cycles per unit) where it is reached */
+    double spectrum_kmax;    /* the sampled frequencies reach |k| = this along each axis */
     double min_eigenvalue;   /* smallest covariance eigenvalue / R(0) */
-    int positive_definite;   /* both above their tolerances */
+    size_t eig_side;         /* the matrix's grid: eig_side^dim points; 0 = infinite grid */
+    double eig_spacing;      /* the grid's spacing */
+    int positive_definite;   /* every test below passed */
+    nl_check_reason why;     /* the first failure, NL_CHECK_VALID if none */
     int isotropic;           /* the model is isotropic in dim */
-    double min_r;            /* min R / R(0) over lags */
+    double min_r;            /* min R / R(0) over lags 0..L along x (NAN: not sampled, spectral models) */
+    double min_r_lag;        /* the lag where it is reached */
     int isotropic_bound_ok;  /* min_r >= -1/dim (always 1 if not isotropic) */
-    int monotone_3d;         /* 3D isotropic: radial spectrum non-increasing (1 if not applicable) */
-    double spectral_decay;   /* b in S ~ f^-b at high frequency (INFINITY: faster) */
+    int monotone_3d;         /* 3D isotropic: line spectrum non-increasing (1 if not applicable) */
+    double line_rise_f;      /* where it rises (0 if it does not) */
+    double spectral_decay;   /* b in S1 ~ f^-b, the line spectrum of R along x (INFINITY: faster) */
+    double density_decay;    /* b in S ~ |k|^-b, the d-dimensional density (INFINITY: faster; NAN: not
+                                estimated, anisotropic models other than ellipsoids) */
+    int band_limited;        /* S = 0 above |k| = band_edge */
+    double band_edge;        /* cycles per unit */
     int differentiable_order;/* m; -1 infinitely */
-    double r2;               /* R''(0) (-INFINITY when it does not exist) */
+    double r2;               /* R''(0) along x (-INFINITY when it does not exist) */
+    int singular_checked;    /* singular_below was computed */
     double singular_below;   /* spacing, or 0 */
 } nl_check;
 
@@ -50,11 +108,25 @@ typedef struct {
  * Returns NL_OK, NL_EINVAL (m not defined in dim, nl_model_check_dim, or
  * R(0) not a positive finite variance or outside [1e-200, 1e200], or a
  * spectrum without a measurable decay), NL_ENOMEM, NL_EFAIL (the
- * eigenvalues did not converge), or the codes of nl_wk_sample_spectrum and
- * nl_wk_acf_to_spectrum (core/wk.h).  "Not positive definite" is a result
- * (out->positive_definite = 0), not an error.  Thread safety: as the model
+ * eigenvalues or an integral of the spectrum did not converge), or the
+ * codes of nl_wk_sample_spectrum and nl_wk_acf_to_spectrum (core/wk.h).
+ * "Not positive definite" is a result (out->positive_definite = 0, the
+ * reason in out->why), not an error.  Thread safety: as the model
  * (core/model.h: expression models are not thread-safe); the FFTs it runs
  * plan FFTW, so not concurrently with other planning. */
 int nl_check_model(const nl_model *m, int dim, nl_check *out);
+
+/* Valid neighbours of a model m whose check c (nl_check_model of m) found
+ * it not positive definite, as specs separated by '\n' into buf (size
+ * bytes, NUL-terminated; "" when there is no obvious one: valid models,
+ * spectral, anisotropic and exemplar models), each verified positive
+ * definite in c->dim by nl_check_model: for oscillatory and gauss-osc the
+ * largest omega (3 significant digits, rounded down) valid in c->dim; for
+ * an isotropic expr: that vanishes beyond a lag a, the spherical model of
+ * range a (valid up to 3D); for an isotropic model valid in 1D, its
+ * separable product (",sep" or ";sep"), valid in every dimension.  Runs up
+ * to 16 checks.  Returns NL_OK (a candidate that cannot be checked is left
+ * out).  Thread safety: as nl_check_model. */
+int nl_check_neighbours(const nl_model *m, const nl_check *c, char *buf, size_t size);
 
 #endif

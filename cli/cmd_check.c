@@ -6,74 +6,189 @@
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static const char help[] =
-    "usage: noiselab check --acf SPEC --dim D [--json]\n\n"
-    "Positive definiteness (the sampled spectrum, the smallest eigenvalue of a\n"
-    "covariance matrix, the -1/n bound and the 3D monotone spectrum for isotropic\n"
-    "models), smoothness (R''(0), the order of mean-square differentiability) and\n"
-    "the spacing below which subdivision's matrix is numerically singular.\n"
-    "JSON keys: positive_definite, min_spectrum, min_eigenvalue, isotropic_bound_ok,\n"
-    "differentiable_order (null: infinitely), r2, singular_below_spacing (null:\n"
-    "never), scale, spectral_decay, flags.  Exit status 0 whatever the verdict.\n";
+    "usage: noiselab check --acf SPEC --dim D [--json]\n"
+    "       noiselab check --spectrum SPEC --dim D [--json]\n\n"
+    "Positive definiteness (the sign of the D-dimensional spectrum, the smallest\n"
+    "eigenvalue of a covariance matrix, the -1/n bound and the 3D non-increasing\n"
+    "line spectrum for isotropic models), smoothness (R''(0), the order of\n"
+    "mean-square differentiability, the decay of the line spectrum -- the\n"
+    "spectrum of R along a line -- and of the D-dimensional density) and the\n"
+    "spacing below which subdivision's matrix is numerically singular.  A model\n"
+    "that is not positive definite is told why, with valid neighbours where there\n"
+    "is an obvious one.  Models defined by R are sampled; spectral models (power:,\n"
+    "spectrum:) are judged from their density (the eigenvalue is then that of the\n"
+    "infinite grid of unit spacing, the smallest aliased spectrum value).\n"
+    "JSON keys: model, dim, positive_definite, why (null when valid),\n"
+    "neighbours, spectral (the path taken), variance, min_spectrum,\n"
+    "min_spectrum_k, spectrum_kmax, min_eigenvalue, eigen_grid {side (null:\n"
+    "infinite), spacing}, isotropic,\n"
+    "isotropic_bound_ok, min_r, min_r_lag, monotone_3d, line_rise_f,\n"
+    "differentiable_order (null: infinitely), r2 (null: does not exist),\n"
+    "spectral_decay (the line spectrum's b in f^-b; null: faster than any\n"
+    "power), density_decay (the D-dimensional density's), band_limited,\n"
+    "band_edge, singular_checked, singular_below_spacing (null: never), scale,\n"
+    "flags.  Exit status 0 whatever the verdict.\n";
+
+static const char *why_key[] = {NULL, "negative-integral", "negative-spectrum", "isotropic-bound",
+                                "negative-eigenvalue", "line-spectrum-rises"};
 
 /* A JSON number, or null where it is undefined or unbounded. */
 static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
 
-static void print_json(const char *spec, int dim, const nl_check *k)
+static json_t *json_lists(const nl_check *k, const char *nb, json_t **flags)
 {
-    json_t *fl = json_array();
+    json_t *a = json_array();
+    char buf[4096];
+    *flags = json_array();
     if (!k->positive_definite)
-        json_array_append_new(fl, json_string("not-positive-definite"));
+        json_array_append_new(*flags, json_string("not-positive-definite"));
     if (k->singular_below > 0)
-        json_array_append_new(fl, json_string("singular"));
+        json_array_append_new(*flags, json_string("singular"));
     if (!k->isotropic_bound_ok)
-        json_array_append_new(fl, json_string("isotropic-bound"));
+        json_array_append_new(*flags, json_string("isotropic-bound"));
     if (!k->monotone_3d)
-        json_array_append_new(fl, json_string("not-monotone-3d"));
-    json_t *o = json_pack("{s:s,s:i,s:b,s:o,s:o,s:b,s:b,s:o,s:o,s:o,s:o,s:o,s:o,s:o}", "model", spec, "dim", dim,
-                          "positive_definite", k->positive_definite, "min_spectrum", num(k->min_spectrum),
-                          "min_eigenvalue", isfinite(k->min_eigenvalue) ? json_real(k->min_eigenvalue) : json_null(),
-                          "isotropic_bound_ok", k->isotropic_bound_ok, "isotropic", k->isotropic, "min_r", num(k->min_r),
-                          "differentiable_order",
-                          k->differentiable_order < 0 ? json_null() : json_integer(k->differentiable_order), "r2",
-                          isfinite(k->r2) ? json_real(k->r2) : json_null(), "singular_below_spacing",
-                          k->singular_below > 0 ? json_real(k->singular_below) : json_null(), "scale", num(k->scale),
-                          "spectral_decay", isfinite(k->spectral_decay) ? json_real(k->spectral_decay) : json_null(),
-                          "flags", fl);
+        json_array_append_new(*flags, json_string("not-monotone-3d"));
+    snprintf(buf, sizeof buf, "%s", nb);
+    for (char *save = NULL, *s = strtok_r(buf, "\n", &save); s; s = strtok_r(NULL, "\n", &save))
+        json_array_append_new(a, json_string(s));
+    return a;
+}
+
+static void print_json(const char *spec, const nl_check *k, const char *nb)
+{
+    json_t *fl, *nbs = json_lists(k, nb, &fl);
+    json_t *grid = json_pack("{s:o,s:o}", "side", k->eig_side ? json_integer((json_int_t)k->eig_side) : json_null(),
+                             "spacing", num(k->eig_spacing));
+    json_t *o = json_pack("{s:s,s:i,s:b,s:o,s:o,s:b,s:o,s:o,s:o,s:o,s:o,s:o}", "model", spec, "dim", k->dim,
+                          "positive_definite", k->positive_definite, "why",
+                          why_key[k->why] ? json_string(why_key[k->why]) : json_null(), "neighbours", nbs,
+                          "spectral", k->spectral, "variance", num(k->variance), "min_spectrum", num(k->min_spectrum),
+                          "min_spectrum_k", num(k->min_spectrum_k), "spectrum_kmax", num(k->spectrum_kmax),
+                          "min_eigenvalue", num(k->min_eigenvalue), "eigen_grid", grid);
+    json_object_update_new(
+        o, json_pack("{s:b,s:b,s:o,s:o,s:b,s:o,s:o,s:o,s:o,s:o,s:b,s:o,s:b,s:o,s:o,s:o}", "isotropic", k->isotropic,
+                     "isotropic_bound_ok", k->isotropic_bound_ok, "min_r", num(k->min_r), "min_r_lag",
+                     num(k->min_r_lag), "monotone_3d", k->monotone_3d, "line_rise_f", num(k->line_rise_f),
+                     "differentiable_order",
+                     k->differentiable_order < 0 ? json_null() : json_integer(k->differentiable_order), "r2",
+                     num(k->r2), "spectral_decay", num(k->spectral_decay), "density_decay", num(k->density_decay),
+                     "band_limited", k->band_limited, "band_edge", num(k->band_edge), "singular_checked",
+                     k->singular_checked, "singular_below_spacing",
+                     k->singular_below > 0 ? json_real(k->singular_below) : json_null(), "scale", num(k->scale),
+                     "flags", fl));
     cli_json_print(o);
 }
 
-static void print_text(const char *spec, int dim, const nl_check *k)
+/* Why the model is not positive definite, in words the user can act on. */
+static void print_why(const nl_check *k, const char *nb)
 {
-    printf("%s in %dD: %s\n", spec, dim, k->positive_definite ? "positive definite" : "NOT positive definite");
-    printf("  min spectrum / max     %.3g\n", k->min_spectrum);
-    if (isfinite(k->min_eigenvalue))
-        printf("  min eigenvalue / R(0)  %.3g\n", k->min_eigenvalue);
+    static const char *whole[] = {"", "line", "plane", "space"};
+    int d = k->dim;
+    switch (k->why) {
+    case NL_CHECK_NEG_INTEGRAL:
+        printf("  why                    the integral of R over the %s is negative (the %dD spectrum at k = 0 is "
+               "%.3g times its largest magnitude): no field has this covariance\n", whole[d], d, k->min_spectrum);
+        break;
+    case NL_CHECK_NEG_SPECTRUM:
+        printf("  why                    its %dD spectrum (the density over %dD frequencies) is negative at |k| = "
+               "%.3g cycles per unit (%.3g times its largest magnitude): no field has this covariance\n", d, d,
+               k->min_spectrum_k, k->min_spectrum);
+        break;
+    case NL_CHECK_BOUND:
+        printf("  why                    R falls to %.3f R(0) at lag %.3g, below the -1/%d an isotropic covariance "
+               "allows in %dD\n", k->min_r, k->min_r_lag, d, d);
+        break;
+    case NL_CHECK_NEG_EIGENVALUE:
+        printf("  why                    the covariance matrix of a grid of %zu^%d points spaced %.3g has a negative "
+               "eigenvalue (%.3g R(0)): sampled there, no field has it\n", k->eig_side, d, k->eig_spacing,
+               k->min_eigenvalue);
+        break;
+    case NL_CHECK_LINE_RISES:
+        printf("  why                    its line spectrum (of R along a line) rises at f = %.3g; an isotropic 3D "
+               "covariance needs it non-increasing\n", k->line_rise_f);
+        break;
+    default: break;
+    }
+    if (k->why == NL_CHECK_VALID)
+        return;
+    if (!*nb)
+        printf("  valid neighbours       none obvious\n");
+    for (const char *p = nb; *p;) {
+        const char *e = strchr(p, '\n');
+        int n = e ? (int)(e - p) : (int)strlen(p);
+        printf("  %-22s %.*s\n", p == nb ? "valid neighbours" : "", n, p);
+        p += n + (e != NULL);
+    }
+}
+
+static void print_eigen(const nl_check *k)
+{
+    if (!isfinite(k->min_eigenvalue))
+        printf("  min eigenvalue / R(0)  not computed (the integral of S, R(0), is not positive)\n");
+    else if (k->eig_side)
+        printf("  min eigenvalue / R(0)  %.3g (the %zu x %zu covariance matrix of a %zu-point grid per axis, "
+               "spacing %.3g)\n", k->min_eigenvalue, (size_t)pow((double)k->eig_side, k->dim),
+               (size_t)pow((double)k->eig_side, k->dim), k->eig_side, k->eig_spacing);
     else
-        printf("  min eigenvalue / R(0)  not computed (a spectrum: model has no R(0) here)\n");
-    if (k->isotropic)
-        printf("  min R / R(0)           %.4f (isotropic bound -1/%d: %s)\n", k->min_r, dim,
-               k->isotropic_bound_ok ? "ok" : "violated");
-    if (dim == 3 && k->isotropic)
-        printf("  3D spectrum monotone   %s\n", k->monotone_3d ? "yes" : "no");
-    if (k->differentiable_order < 0)
-        printf("  differentiable         infinitely (spectrum decays faster than any power)\n");
+        printf("  min eigenvalue / R(0)  %.3g (the covariance of the infinite grid of unit spacing: the smallest "
+               "aliased spectrum%s)\n", k->min_eigenvalue,
+               k->min_eigenvalue == 0 ? "; 0 where S vanishes on part of the band" : "");
+}
+
+static void print_smooth(const nl_check *k)
+{
+    char dens[128] = "";
+    int d = k->dim;
+    if (d > 1 && isfinite(k->density_decay))
+        snprintf(dens, sizeof dens, "; %dD density ~ |k|^-%.2f", d, k->density_decay);
+    else if (d > 1 && isnan(k->density_decay))
+        snprintf(dens, sizeof dens, "; %dD density's decay not estimated (anisotropic)", d);
+    if (k->band_limited)
+        printf("  differentiable         infinitely (band-limited: the %dD density is 0 above |k| = %.3g%s%.2f "
+               "below)\n", d, k->band_edge, isfinite(k->density_decay) ? " and ~ |k|^-" : "",
+               isfinite(k->density_decay) ? k->density_decay : 0.0);
+    else if (k->differentiable_order < 0)
+        printf("  differentiable         infinitely (the spectrum decays faster than any power)\n");
     else if (isfinite(k->spectral_decay))
-        printf("  differentiable         %d times (spectrum ~ f^-%.2f)\n", k->differentiable_order,
-               k->spectral_decay);
+        printf("  differentiable         %d times (line spectrum of R along x ~ f^-%.2f%s)\n",
+               k->differentiable_order, k->spectral_decay, dens);
     else /* the spectral fit saw no power law, but R has a kink at lag 0 */
         printf("  differentiable         %d times (R has a kink at lag 0)\n", k->differentiable_order);
     if (isfinite(k->r2))
         printf("  R''(0)                 %.6g\n", k->r2);
     else if (k->r2 < 0)
-        printf("  R''(0)                 unbounded below (a kink at lag 0)\n");
+        printf("  R''(0)                 unbounded below (%s)\n",
+               k->spectral ? "the moment of f^2 S diverges" : "a kink at lag 0");
     else
-        printf("  R''(0)                 not computed (a spectrum: model)\n");
-    if (k->singular_below > 0)
-        printf("  numerically singular below spacing %.3g (subdivision, N = 2)\n", k->singular_below);
+        printf("  R''(0)                 not computed (the integral of S, R(0), is not positive)\n");
+}
+
+static void print_text(const char *spec, const nl_check *k, const char *nb)
+{
+    int d = k->dim;
+    printf("%s in %dD: %s\n", spec, d, k->positive_definite ? "positive definite" : "NOT positive definite");
+    print_why(k, nb);
+    printf("  min spectrum / max     %.3g (the %dD density, %s to |k| = %.3g cycles per unit along each axis)\n",
+           k->min_spectrum, d, k->spectral ? "scanned" : "sampled", k->spectrum_kmax);
+    if (k->spectral)
+        printf("  variance R(0)          %.6g (the integral of S)\n", k->variance);
+    print_eigen(k);
+    if (k->isotropic && isfinite(k->min_r))
+        printf("  min R / R(0)           %.4f at lag %.3g (isotropic bound -1/%d: %s)\n", k->min_r, k->min_r_lag, d,
+               k->isotropic_bound_ok ? "ok" : "violated");
+    if (d == 3 && k->isotropic && !k->spectral)
+        printf("  3D line spectrum       %s\n", k->monotone_3d ? "non-increasing" : "rises");
+    print_smooth(k);
+    if (!k->singular_checked)
+        printf("  subdivision            not checked (a spectrum: model's R is not sampled)\n");
+    else if (k->singular_below > 0)
+        printf("  numerically singular below spacing %.3g (subdivision, N = 2, along x)\n", k->singular_below);
     else
-        printf("  never numerically singular (down to spacing %.3g)\n", ldexp(k->scale, -24));
+        printf("  never numerically singular (down to spacing %.3g; subdivision, N = 2, along x)\n",
+               ldexp(k->scale, -24));
 }
 
 int cli_cmd_check(int argc, char **argv)
@@ -85,6 +200,7 @@ int cli_cmd_check(int argc, char **argv)
     int c, dim = 0, json = 0, st;
     nl_model *m;
     nl_check k;
+    char nb[4096];
     while ((c = cli_getopt(argc, argv, ":h", opts, "check")) != -1) {
         switch (c) {
         case 'a': spec = optarg; break;
@@ -98,12 +214,13 @@ int cli_cmd_check(int argc, char **argv)
         cli_die(2, "check: --acf: expected a model (see noiselab models)");
     if (!dim)
         cli_die(2, "check: --dim: expected 1, 2 or 3");
-    if ((st = nl_model_parse(spec, &m)) || (st = nl_check_model(m, dim, &k)))
+    if ((st = nl_model_parse(spec, &m)) || (st = nl_check_model(m, dim, &k)) ||
+        (st = nl_check_neighbours(m, &k, nb, sizeof nb)))
         cli_die_status(st);
     if (json)
-        print_json(spec, dim, &k);
+        print_json(spec, &k, nb);
     else
-        print_text(spec, dim, &k);
+        print_text(spec, &k, nb);
     nl_model_free(m);
     return 0;
 }
