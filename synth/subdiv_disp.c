@@ -371,13 +371,15 @@ int nl_subdiv_disp_fill(const nl_subdiv_level *l, int dim, uint64_t seed, unsign
             double *restrict o = out + (a * ny + y) * nx;
             memset(o, 0, (size_t)nx * sizeof *o);
             for (int b = 0; b < nc; b++)
-                for (int py = 0; py < TY; py++)
+                for (int py = 0; py < TY; py++) {
+                    const double *restrict gr = l->filt + ((a * nc + b) * TY + py) * T;
                     for (int px = 0; px < T; px++) {
-                        const double gv = l->filt[((a * nc + b) * TY + py) * T + px];
-                        const double *restrict wr = w + (b * wy + y + py) * wx + px;
+                        const double gv = gr[px], *restrict wr = w + (b * wy + y + py) * wx + px;
+#pragma omp simd
                         for (long x = 0; x < nx; x++)
                             o[x] += gv * wr[x];
                     }
+                }
         }
     free(w);
     return NL_OK;
