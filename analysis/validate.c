@@ -141,6 +141,8 @@ static void exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, nl_validate_
             v->exact[i][l] = flat[k++];
     for (size_t i = 0, k = v->ntests - v->nmap; v->have_exact && i < v->nmap; i++)
         v->exact_map[i] = flat[k + i];
+    if (v->have_exact)
+        nl_validate_exact_effect(v, flat);
     free(l3), free(l2), free(flat);
 }
 

@@ -185,6 +185,8 @@ typedef struct {
     int have_exact;                 /* exact[] and exact_map[] are set */
     double exact[NL_VALIDATE_DIRS][NL_VALIDATE_MAXLAG + 1]; /* subdivision's exact expected ACF */
     double exact_map[NL_VALIDATE_MAPLAGS];
+    double exact_effect;            /* max |exact - R| / R(0) over the tested lags: subdivision's error by construction */
+    long exact_worst[3];            /* where */
     nl_validate_method_result method[NL_VALIDATE_METHODS]; /* by NL_VALIDATE_* */
 } nl_validate_result;
 

@@ -157,6 +157,18 @@ static void lag_of(const nl_validate_result *v, size_t i, long *lag)
     memcpy(lag, v->map[i], 3 * sizeof *lag);
 }
 
+void nl_validate_exact_effect(nl_validate_result *v, const double *exact)
+{
+    double target[NL_VALIDATE_DIRS * (NL_VALIDATE_MAXLAG + 1) + NL_VALIDATE_MAPLAGS], dmax = 0;
+    size_t w = 0;
+    nl_validate_flatten(v, v->target, v->map_target, target);
+    for (size_t i = 0; i < v->ntests; i++)
+        if (fabs(exact[i] - target[i]) > dmax)
+            dmax = fabs(exact[i] - target[i]), w = i;
+    v->exact_effect = dmax / v->target[NL_VALIDATE_X][0];
+    lag_of(v, w, v->exact_worst);
+}
+
 void nl_validate_summarise(const nl_validate_result *v, const double *mean, const double *se, const double *b1,
                            const double *b2, const double *expected, const double *exact, nl_validate_method_result *r)
 {

@@ -27,6 +27,9 @@ void nl_validate_summarise(const nl_validate_result *v, const double *mean, cons
                            const double *b2, const double *expected, const double *exact,
                            nl_validate_method_result *r);
 
+/* v->exact_effect and exact_worst from the exact ACF (flat). */
+void nl_validate_exact_effect(nl_validate_result *v, const double *exact);
+
 /* The expected band means of the periodogram (band_periodic, band_fejer). */
 int nl_validate_spectrum_targets(const nl_model *m, nl_validate_result *v);
 
