@@ -3,6 +3,7 @@
 #include "validate_impl.h"
 #include "verdict.h"
 #include "../core/nl_error.h"
+#include "../core/wk.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -27,15 +28,42 @@ void nl_validate_dir_lag(int dim, int dir, long l, long *lag)
         lag[dir] = l;
 }
 
-static double acf_at(const nl_model *m, int dim, const long *lag)
+/* R at a lag: the model's, or read from G, R sampled on a grid longer
+ * than the field (spectrum: models, whose R has no closed form). */
+static double acf_at(const nl_model *m, int dim, const long *lag, const nl_field *G)
 {
     double t[3] = {(double)lag[0], (double)lag[1], (double)lag[2]};
-    return nl_model_acf(m, dim, t);
+    size_t at = 0;
+    if (!G)
+        return nl_model_acf(m, dim, t);
+    for (int a = dim - 1; a >= 0; a--)
+        at = at * G->n[a] + (size_t)((lag[a] + (long)G->n[a]) % (long)G->n[a]);
+    return G->data[at];
+}
+
+/* spectrum: models: R on a grid of 8 n (1D), 4 n (2D) or 2 n (3D) per
+ * axis from the sampled spectrum (core/wk.h), so that lags up to a quarter
+ * of the field are far from the grid's period; NULL in *G for other
+ * models. */
+static int spectral_acf(const nl_model *m, int dim, const size_t *n, nl_field **G)
+{
+    size_t g[3] = {1, 1, 1};
+    int st = NL_OK;
+    *G = NULL;
+    if (nl_model_get_kind(m) != NL_MODEL_SPECTRUM)
+        return NL_OK;
+    for (int a = 0; a < dim; a++)
+        g[a] = n[a] * (dim == 1 ? 8 : dim == 2 ? 4 : 2);
+    if ((*G = nl_field_alloc(dim, g, NULL, &st)) && (st = nl_wk_sample_acf(m, *G))) {
+        nl_field_free(*G);
+        *G = NULL;
+    }
+    return st;
 }
 
 /* Lags along dir: up to one past the last |R| > 5% R(0), within a quarter
  * of the shortest axis crossed, at least 4; R finite at each. */
-static int dir_lags(const nl_model *m, nl_validate_result *v, int dir)
+static int dir_lags(const nl_model *m, const nl_field *G, nl_validate_result *v, int dir)
 {
     size_t q = SIZE_MAX, last = 0;
     double r0 = v->target[NL_VALIDATE_X][0];
@@ -47,7 +75,7 @@ static int dir_lags(const nl_model *m, nl_validate_result *v, int dir)
     for (size_t l = 0; l <= q; l++) {
         long lag[3];
         nl_validate_dir_lag(v->dim, dir, (long)l, lag);
-        v->target[dir][l] = acf_at(m, v->dim, lag);
+        v->target[dir][l] = acf_at(m, v->dim, lag, G);
         if (!isfinite(v->target[dir][l]))
             return NL_ERROR(NL_EINVAL, "validate: the model is not finite at lag (%ld, %ld, %ld)", lag[0], lag[1],
                             lag[2]);
@@ -60,7 +88,7 @@ static int dir_lags(const nl_model *m, nl_validate_result *v, int dir)
 }
 
 /* The half box of half-width W: l and -l estimate the same sum. */
-static int map_lags(const nl_model *m, nl_validate_result *v)
+static int map_lags(const nl_model *m, const nl_field *G, nl_validate_result *v)
 {
     long W = 0, w[3] = {0, 0, 0};
     for (int d = 0; d < NL_VALIDATE_DIRS; d++)
@@ -78,7 +106,7 @@ static int map_lags(const nl_model *m, nl_validate_result *v)
                 if (v->nmap == NL_VALIDATE_MAPLAGS)
                     return NL_ERROR(NL_EINVAL, "validate: more than %d lags in the map", NL_VALIDATE_MAPLAGS);
                 l[0] = x, l[1] = y, l[2] = z;
-                v->map_target[v->nmap] = acf_at(m, v->dim, l);
+                v->map_target[v->nmap] = acf_at(m, v->dim, l, G);
                 if (!isfinite(v->map_target[v->nmap]))
                     return NL_ERROR(NL_EINVAL, "validate: the model is not finite at lag (%ld, %ld, %ld)", x, y, z);
                 v->nmap++;
@@ -125,6 +153,7 @@ int nl_validate_init(const nl_model *m, int dim, const size_t *n, int positive_d
                      const nl_validate_options *o, nl_validate_result *v)
 {
     int st = check_options(dim, n, o);
+    nl_field *G;
     double r0;
     if (st)
         return st;
@@ -134,14 +163,17 @@ int nl_validate_init(const nl_model *m, int dim, const size_t *n, int positive_d
         v->n[a] = a < dim ? n[a] : 1;
     v->realizations = o->realizations, v->alpha = o->alpha, v->tolerance = o->tolerance;
     v->positive_definite = positive_definite;
-    r0 = v->target[NL_VALIDATE_X][0] = acf_at(m, dim, (long[3]){0, 0, 0});
+    if ((st = spectral_acf(m, dim, v->n, &G)))
+        return st;
+    r0 = v->target[NL_VALIDATE_X][0] = acf_at(m, dim, (long[3]){0, 0, 0}, G);
     if (!(r0 > 0 && isfinite(r0)))
-        return NL_ERROR(NL_EINVAL, "validate: expected R(0) positive and finite, got %g", r0);
+        st = NL_ERROR(NL_EINVAL, "validate: expected R(0) positive and finite, got %g", r0);
     for (int d = 0; d < NL_VALIDATE_DIRS && !st; d++)
         if (d < dim || (d == NL_VALIDATE_DIAG && dim > 1))
-            st = dir_lags(m, v, d);
+            st = dir_lags(m, G, v, d);
     if (!st && dim > 1)
-        st = map_lags(m, v);
+        st = map_lags(m, G, v);
+    nl_field_free(G);
     if (st)
         return st;
     for (int d = 0; d < NL_VALIDATE_DIRS; d++)

@@ -30,7 +30,7 @@ static const char help[] =
     "Subdivision is also compared with its own exact expected ACF on grids up to 64x64\n"
     "(2D) or 2048 (1D); its verdict, like every method's, is against the model's R.\n\n"
     "  --size N          samples per axis, a power of two (default 2048 in 1D, 128 in 2D,\n"
-    "                    64 in 3D); N^dim M at most 2^24\n"
+    "                    32 in 3D); N^dim M at most 2^24\n"
     "  --realizations M  ensemble size, 4..1000 (default 64)\n"
     "  --tolerance E     largest effect size accepted (default 0.1): a method is \"within\"\n"
     "                    when the whole interval is at most E, \"off\" when all of it is\n"
@@ -100,7 +100,7 @@ static void check_size(cli_validate *v)
     if (v->M > 1000)
         cli_die(2, "--realizations: expected at most 1000, got %zu", v->M);
     if (!v->N)
-        v->N = v->dim == 1 ? 2048 : v->dim == 2 ? 128 : 64;
+        v->N = v->dim == 1 ? 2048 : v->dim == 2 ? 128 : 32;
     if (v->N & (v->N - 1))
         cli_die(2, "--size: expected a power of two, got %zu", v->N);
     if ((double)v->M * pow((double)v->N, v->dim) > 16777216.0)
