@@ -150,6 +150,7 @@ typedef struct {
      * (variance units of the model); lags 0..nlag[dir] - 1 of the result */
     double mean[NL_VALIDATE_DIRS][NL_VALIDATE_MAXLAG + 1];
     double se[NL_VALIDATE_DIRS][NL_VALIDATE_MAXLAG + 1];
+    double map_mean[NL_VALIDATE_MAPLAGS], map_se[NL_VALIDATE_MAPLAGS]; /* the same at the map's lags */
     nl_validate_effect dir[NL_VALIDATE_DIRS]; /* against R, per direction */
     nl_validate_effect map;         /* against R over the lag map */
     nl_validate_effect all;         /* against R over every tested lag: the verdict's */
@@ -164,7 +165,7 @@ typedef struct {
 } nl_validate_method_result;
 
 /* Everything validation found; caller-owned, nothing to free (large:
- * about 400 kB; keep it static or on the heap). */
+ * about 550 kB; keep it static or on the heap). */
 typedef struct {
     int dim;                        /* 1..3 */
     size_t n[3];                    /* grid (1 beyond dim) */

@@ -188,6 +188,8 @@ void nl_validate_summarise(const nl_validate_result *v, const double *mean, cons
         off += v->nlag[d];
     }
     memset(&r->map, 0, sizeof r->map);
+    for (size_t i = 0; i < v->nmap; i++)
+        r->map_mean[i] = mean[off + i], r->map_se[i] = se[off + i];
     if (v->nmap) {
         nl_validate_effect_of(v->nmap, mean + off, se + off, target + off, r0, c, k, &r->map, &w);
         lag_of(v, off + w, r->map.worst);

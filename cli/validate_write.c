@@ -94,6 +94,65 @@ static void write_spectrum_tsv(const cli_validate *v)
     close_in(fp, v, "spectrum.tsv");
 }
 
+/* DIR/map.tsv (2D and 3D): the lag map's plane lz = 0, both l and its
+ * mirror -l (the same estimate), as (mean - R) / R(0) per method; rows of
+ * one ly, blank lines between (gnuplot's grid order).  Returns the largest
+ * |error| over the methods that ran (the colour range). */
+static double write_map_tsv(const cli_validate *v)
+{
+    const nl_validate_result *r = &v->r;
+    double r0 = r->target[NL_VALIDATE_X][0], top = 0;
+    long W = 0;
+    FILE *fp;
+    for (size_t i = 0; i < r->nmap; i++)
+        W = r->map[i][0] > W ? r->map[i][0] : W;
+    fp = open_in(v, "map.tsv");
+    fprintf(fp, "lx\tly\ttarget");
+    for (int meth = 0; meth < NM; meth++)
+        fprintf(fp, "\t%s_error", r->method[meth].name);
+    for (long y = -W; y <= W; y++) {
+        fprintf(fp, "\n");
+        for (long x = -W; x <= W; x++)
+            for (size_t i = 0; i < r->nmap; i++) {
+                const long *l = r->map[i];
+                if (l[2] != 0 || !((l[0] == x && l[1] == y) || (l[0] == -x && l[1] == -y)))
+                    continue;
+                fprintf(fp, "%ld\t%ld", x, y);
+                cell(fp, 1, r->map_target[i]);
+                for (int meth = 0; meth < NM; meth++) {
+                    double e = (r->method[meth].map_mean[i] - r->map_target[i]) / r0;
+                    cell(fp, r->method[meth].ran, e);
+                    if (r->method[meth].ran && isfinite(e))
+                        top = fmax(top, fabs(e));
+                }
+                fprintf(fp, "\n");
+                break;
+            }
+    }
+    close_in(fp, v, "map.tsv");
+    return top > 0 ? top : 1;
+}
+
+/* One heat map of the error over the lag map per method that ran. */
+static void map_plot(FILE *fp, const cli_validate *v, double top)
+{
+    int np = 0, k = 0;
+    for (int meth = 0; meth < NM; meth++)
+        np += v->r.method[meth].ran;
+    if (!np)
+        return;
+    fprintf(fp, "set terminal pngcairo size %d,470 font 'DejaVu Sans,10'\nset output '%s/map.png'\nunset logscale\n"
+                "unset key\nunset grid\nset autoscale fix\nset size ratio -1\nset palette defined (-1 '#2166ac', 0 'white', 1 '#b2182b')\n"
+                "set cbrange [%g:%g]\nset xlabel 'lag x'\nset ylabel 'lag y'\nset multiplot layout 1,%d title "
+                "'%s, %dD: (ensemble mean - R) / R(0) over the lag map%s'\n",
+            60 + 420 * np, v->dir, -top, top, np, v->spec, v->dim, v->dim > 2 ? " (plane lz = 0)" : "");
+    for (int meth = 0; meth < NM; meth++)
+        if (v->r.method[meth].ran)
+            fprintf(fp, "set title '%s'\n%splot '%s/map.tsv' using 1:2:%d with image\n", v->r.method[meth].name,
+                    ++k == np ? "set colorbox\n" : "unset colorbox\n", v->dir, 4 + meth);
+    fprintf(fp, "unset multiplot\n");
+}
+
 /* One panel per direction: the ACF (kind 0) or its error over R(0) with
  * the simultaneous 95% half-width and the tolerance (kind 1). */
 static void panels(FILE *fp, const cli_validate *v, int kind)
@@ -103,8 +162,9 @@ static void panels(FILE *fp, const cli_validate *v, int kind)
     int np = 0, block = 0;
     for (int d = 0; d < ND; d++)
         np += r->nlag[d] > 0;
-    fprintf(fp, "set multiplot layout 1,%d title '%s, %dD, %zu realizations of %zu^%d: %s'\n", np, v->spec, v->dim,
-            v->M, v->N, v->dim, kind ? "(ensemble mean - R) / R(0), 95% simultaneous intervals" : "ensemble ACF");
+    fprintf(fp, "set multiplot layout 1,%d title '%s, %dD, %zu realizations of %zu%s%.0d: %s'\n", np, v->spec, v->dim,
+            v->M, v->N, v->dim > 1 ? "^" : "", v->dim > 1 ? v->dim : 0,
+            kind ? "(ensemble mean - R) / R(0), 95% simultaneous intervals" : "ensemble ACF");
     for (int d = 0; d < ND; d++) {
         if (!r->nlag[d])
             continue;
@@ -162,6 +222,8 @@ static int write_plots(const cli_validate *v)
     panels(fp, v, 1);
     fprintf(fp, "set terminal pngcairo size 900,560 font 'DejaVu Sans,11'\n");
     spectrum_plot(fp, v);
+    if (v->r.nmap)
+        map_plot(fp, v, write_map_tsv(v));
     close_in(fp, v, "plots.gp");
     snprintf(cmd, sizeof cmd, "gnuplot '%s/plots.gp' 2>/dev/null", v->dir);
     return system(cmd) == 0;
@@ -265,6 +327,8 @@ static void directions_md(FILE *fp, const cli_validate *v)
         }
     }
     fprintf(fp, "\n![acf](acf.png)\n\n![error](error.png)\n\n");
+    if (res->nmap)
+        fprintf(fp, "The lag map (map.tsv, the plane of lag z = 0 in 3D):\n\n![map](map.png)\n\n");
 }
 
 static void subdiv_md(FILE *fp, const cli_validate *v)
