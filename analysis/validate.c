@@ -1,6 +1,6 @@
 /* Validation of a model's synthesis: each method's ensemble against the
  * target (analysis/validate.h). */
-#include "validate_impl.h"
+#include "validate_internal.h"
 #include "psd.h"
 #include "subdiv_exact.h"
 #include "verdict.h"
@@ -64,7 +64,8 @@ static int ensemble_alloc(const nl_validate_result *v, ensemble *e)
         !(st = nl_psd_plan_alloc(v->dim, v->n, &e->pp)) && !(st = nl_validate_lags_alloc(v, &lags)))
         st = nl_verdict_alloc3(v->dim, v->n, v->ntests, (const long (*)[3])lags, &e->vd);
     free(lags);
-    if (!st && !(e->band = malloc(e->f->count * sizeof *e->band)))
+    if (!st && !(st = nl_size_check(v->dim, v->n, sizeof *e->band, 1, NULL)) &&
+        !(e->band = malloc(e->f->count * sizeof *e->band)))
         st = NL_ERROR(NL_ENOMEM, "out of memory for %zu frequencies", e->f->count);
     if (!st)
         nl_validate_bands_of(v, e->band);

@@ -1,6 +1,6 @@
 /* Validation: effect sizes with their intervals, detectable error, the
  * spectrum by octave bands, the verdict (analysis/validate.h). */
-#include "validate_impl.h"
+#include "validate_internal.h"
 #include "verdict.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
@@ -102,7 +102,7 @@ int nl_validate_spectrum_targets(const nl_model *m, nl_validate_result *v)
 {
     int st = NL_OK, *band = NULL;
     nl_field *S = nl_field_alloc(v->dim, v->n, NULL, &st);
-    if (S && !(band = malloc(S->count * sizeof *band)))
+    if (S && !(st = nl_size_check(v->dim, v->n, sizeof *band, 1, NULL)) && !(band = malloc(S->count * sizeof *band)))
         st = NL_ERROR(NL_ENOMEM, "out of memory for %zu frequencies", S->count);
     if (band) {
         nl_validate_bands_of(v, band);

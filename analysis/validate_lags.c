@@ -1,6 +1,6 @@
 /* Validation: the lags tested, their target, the thresholds
  * (analysis/validate.h). */
-#include "validate_impl.h"
+#include "validate_internal.h"
 #include "verdict.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
@@ -93,7 +93,8 @@ static int map_lags(const nl_model *m, const nl_field *G, nl_validate_result *v)
     long W = 0, w[3] = {0, 0, 0};
     for (int d = 0; d < NL_VALIDATE_DIRS; d++)
         W = v->nlag[d] && (long)v->nlag[d] - 1 > W ? (long)v->nlag[d] - 1 : W;
-    W = W < (v->dim == 2 ? NL_VALIDATE_MAP_2D : NL_VALIDATE_MAP_3D) ? W : v->dim == 2 ? NL_VALIDATE_MAP_2D : NL_VALIDATE_MAP_3D;
+    if (W > (v->dim == 2 ? NL_VALIDATE_MAP_2D : NL_VALIDATE_MAP_3D))
+        W = v->dim == 2 ? NL_VALIDATE_MAP_2D : NL_VALIDATE_MAP_3D;
     for (int a = 0; a < v->dim; a++)
         w[a] = W < (long)v->n[a] / 4 ? W : (long)v->n[a] / 4;
     v->nmap = 0;

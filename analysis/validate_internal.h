@@ -1,6 +1,6 @@
 /* Internals shared by the validation sources (analysis/validate.h). */
-#ifndef NL_VALIDATE_IMPL_H
-#define NL_VALIDATE_IMPL_H
+#ifndef NL_VALIDATE_INTERNAL_H
+#define NL_VALIDATE_INTERNAL_H
 
 #include "validate.h"
 
