@@ -96,7 +96,7 @@ static int run_ensemble(const nl_validate_result *v, int meth, run_fn fn, const 
     for (size_t s = 1; s <= v->realizations && !st; s++) {
         if (o->progress)
             o->progress(o->progress_ctx, meth, s - 1, v->realizations);
-        if (!(st = fn(plan, s, e->f)) && !(st = nl_verdict_add(e->vd, e->f)))
+        if (!(st = fn(plan, v->seed + (s - 1), e->f)) && !(st = nl_verdict_add(e->vd, e->f)))
             st = add_bands(v, e);
     }
     return st ? st : nl_verdict_stats(e->vd, mean, se);
@@ -203,9 +203,9 @@ int nl_validate_method(const nl_model *m, int meth, const nl_validate_options *o
     double t0 = now();
     if (meth < 0 || meth >= NL_VALIDATE_METHODS)
         return NL_ERROR(NL_EINVAL, "validate: expected a method 0..%d, got %d", NL_VALIDATE_METHODS - 1, meth);
-    if (o->realizations != v->realizations)
-        return NL_ERROR(NL_EINVAL, "validate: %zu realizations, but the result was prepared for %zu",
-                        o->realizations, v->realizations);
+    if (o->realizations != v->realizations || o->seed != v->seed)
+        return NL_ERROR(NL_EINVAL, "validate: %zu realizations from seed %llu, but the result was prepared for %zu from %llu",
+                        o->realizations, (unsigned long long)o->seed, v->realizations, (unsigned long long)v->seed);
     if (!v->positive_definite)
         st = NL_ERROR(NL_ENOTPD, "the model is not positive definite");
     else if (meth == NL_VALIDATE_FFT)

@@ -3,7 +3,7 @@
  *
  * For each method (periodic FFT, circulant embedding, periodic generalized
  * subdivision, sparse convolution) the model is planned once and M
- * realizations (seeds 1..M) are synthesised on a grid of unit spacing (lags
+ * realizations (seeds S..S+M-1, S = 1 by default) are synthesised on a grid of unit spacing (lags
  * in samples, frequencies in cycles per sample).  Each realization gives
  * the unbiased ACF with known mean 0 (analysis/acf.h, E r(l) = C(l)) and the
  * periodogram with known mean 0 (analysis/psd.h); the ensemble gives their
@@ -75,6 +75,7 @@
 #include "../core/model.h"
 
 #include <stddef.h>
+#include <stdint.h>
 
 /* Lags 0..NL_VALIDATE_MAXLAG along a direction at most. */
 #define NL_VALIDATE_MAXLAG 512
@@ -105,7 +106,8 @@ const char *nl_validate_dir_name(int dir);
 const char *nl_validate_verdict_name(int verdict);
 
 typedef struct {
-    size_t realizations;  /* M >= 2: seeds 1..M */
+    size_t realizations;  /* M >= 2 */
+    uint64_t seed;        /* S: seeds S..S+M-1 (wrapping modulo 2^64) */
     double alpha;         /* family-wise false-alarm rate of the z test, in (0, 1) */
     double tolerance;     /* E > 0: largest |mean ACF - R| / R(0) accepted */
     int subdiv_levels;    /* 0: a coarse grid of at least 16 samples per axis */
@@ -121,7 +123,7 @@ typedef struct {
     void *progress_ctx;   /* passed to progress */
 } nl_validate_options;
 
-/* The defaults: 32 realizations, alpha = 1e-3, tolerance 0.1, subdivision
+/* The defaults: 32 realizations from seed 1, alpha = 1e-3, tolerance 0.1, subdivision
  * with N = 2, tol 1e-4 and default levels, sparse convolution at density 32
  * with the default radius and cell, no progress. */
 void nl_validate_options_default(nl_validate_options *o);
@@ -170,6 +172,7 @@ typedef struct {
     int dim;                        /* 1..3 */
     size_t n[3];                    /* grid (1 beyond dim) */
     size_t realizations;            /* M */
+    uint64_t seed;                  /* S */
     double alpha, tolerance;        /* as given */
     int positive_definite;          /* as given to nl_validate_init */
     size_t nlag[NL_VALIDATE_DIRS];  /* lags 0..nlag - 1 per direction; 0: direction not tested */
@@ -208,7 +211,7 @@ int nl_validate_init(const nl_model *m, int dim, const size_t *n, int positive_d
  * exact and exact_map when it can).  The effect sizes are against
  * out->target and out->map_target, which the caller may replace after
  * nl_validate_init (e.g. to judge against another model).  o must give the
- * realizations given to nl_validate_init; its method options are read here,
+ * realizations and seed given to nl_validate_init; its method options are read here,
  * its alpha and tolerance are not (out's are).  The time it took is in
  * out->method[method].seconds.  Returns
  * NL_OK (ran or refused: see ran and status), or NL_EINVAL (method out of

@@ -117,7 +117,7 @@ static int map_lags(const nl_model *m, const nl_field *G, nl_validate_result *v)
 
 void nl_validate_options_default(nl_validate_options *o)
 {
-    *o = (nl_validate_options){.realizations = 32, .alpha = 1e-3, .tolerance = 0.1, .subdiv_N = 2,
+    *o = (nl_validate_options){.realizations = 32, .seed = 1, .alpha = 1e-3, .tolerance = 0.1, .subdiv_N = 2,
                                .subdiv_tol = 1e-4, .sparse_density = 32};
 }
 
@@ -162,7 +162,7 @@ int nl_validate_init(const nl_model *m, int dim, const size_t *n, int positive_d
     v->dim = dim;
     for (int a = 0; a < 3; a++)
         v->n[a] = a < dim ? n[a] : 1;
-    v->realizations = o->realizations, v->alpha = o->alpha, v->tolerance = o->tolerance;
+    v->realizations = o->realizations, v->seed = o->seed, v->alpha = o->alpha, v->tolerance = o->tolerance;
     v->positive_definite = positive_definite;
     if ((st = spectral_acf(m, dim, v->n, &G)))
         return st;

@@ -11,7 +11,7 @@
 static const char help[] =
     "usage: noiselab validate (--acf SPEC | --spectrum SPEC) --dim 1|2|3 (-o DIR | --json)\n"
     "                         [--size N] [--realizations M] [--tolerance E] [method options]\n\n"
-    "Checks the model (noiselab check), synthesises M realizations (seeds 1..M) with every\n"
+    "Checks the model (noiselab check), synthesises M realizations (seeds S..S+M-1) with every\n"
     "applicable method (fft, circulant; subdiv and sparse in 1D and 2D) on an N^dim grid,\n"
     "and measures how far each ensemble is from the model:\n"
     "  effect size      the largest |mean ACF - R| / R(0) over the lags tested, with a\n"
@@ -32,6 +32,7 @@ static const char help[] =
     "  --size N          samples per axis, a power of two (default 2048 in 1D, 128 in 2D,\n"
     "                    32 in 3D); N^dim M at most 2^24\n"
     "  --realizations M  ensemble size, 4..1000 (default 64)\n"
+    "  --seed S          the first seed (default 1): another S gives an independent ensemble\n"
     "  --tolerance E     largest effect size accepted (default 0.1): a method is \"within\"\n"
     "                    when the whole interval is at most E, \"off\" when all of it is\n"
     "                    above E, \"unresolved\" otherwise (more realizations or a larger\n"
@@ -71,7 +72,8 @@ static int parse_options(int argc, char **argv, cli_validate *v, const char **ac
         {"levels", required_argument, 0, 'L'},       {"neighborhood", required_argument, 0, 'N'},
         {"tol", required_argument, 0, 't'},          {"random-neighborhoods", required_argument, 0, 'R'},
         {"density", required_argument, 0, 'D'},      {"radius", required_argument, 0, 'r'},
-        {"cell", required_argument, 0, 'C'},         {"help", no_argument, 0, 'h'},
+        {"cell", required_argument, 0, 'C'},         {"seed", required_argument, 0, 's'},
+        {"help", no_argument, 0, 'h'},
         {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "validate")) != -1) {
@@ -84,6 +86,7 @@ static int parse_options(int argc, char **argv, cli_validate *v, const char **ac
         case 'M': v->M = cli_parse_count("--realizations", optarg, 4); break;
         case 'E': v->o.tolerance = cli_parse_positive("--tolerance", optarg, "relative error"); break;
         case 'j': v->json = 1; break;
+        case 's': v->o.seed = cli_parse_u64("--seed", optarg); break;
         case 'h': fputs(help, stdout); return 1;
         default: parse_method_option(c, v);
         }

@@ -2,6 +2,7 @@
 #include "validate_report.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -128,6 +129,13 @@ json_t *cli_validate_json(const cli_validate *v)
     json_decref(setup);
     for (int meth = 0; meth < NM; meth++)
         json_object_set_new(methods, nl_validate_method_name(meth), method_json(v, meth));
+    /* JSON integers are signed 64-bit: a larger seed is given as its decimal string */
+    if (res->seed > (uint64_t)INT64_MAX) {
+        char buf[32];
+        snprintf(buf, sizeof buf, "%llu", (unsigned long long)res->seed);
+        json_object_set_new(o, "first_seed", json_string(buf));
+    } else
+        json_object_set_new(o, "first_seed", json_integer((json_int_t)res->seed));
     json_object_set_new(o, "methods", methods);
     json_object_set_new(o, "exit_status", json_integer(cli_validate_status(v)));
     return o;

@@ -308,7 +308,8 @@ static void directions_md(FILE *fp, const cli_validate *v)
     fprintf(fp, "## By direction\n\n%zu realizations of %zu", res->realizations, res->n[0]);
     for (int a = 1; a < v->dim; a++)
         fprintf(fp, " x %zu", res->n[a]);
-    fprintf(fp, " samples (seeds 1..%zu), unbiased ACF with known mean 0. Lags:", res->realizations);
+    fprintf(fp, " samples (seeds %llu..+%zu), unbiased ACF with known mean 0. Lags:", (unsigned long long)res->seed,
+            res->realizations - 1);
     for (int d = 0; d < ND; d++)
         if (res->nlag[d])
             fprintf(fp, " %s 0..%zu,", nl_validate_dir_name(d), res->nlag[d] - 1);
