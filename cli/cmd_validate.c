@@ -10,7 +10,8 @@
 
 static const char help[] =
     "usage: noiselab validate (--acf SPEC | --spectrum SPEC) --dim 1|2|3 (-o DIR | --json)\n"
-    "                         [--size N] [--realizations M] [--tolerance E] [method options]\n\n"
+    "                         [--size N] [--realizations M] [--seed S] [--tolerance E]\n"
+    "                         [method options]\n\n"
     "Checks the model (noiselab check), synthesises M realizations (seeds S..S+M-1) with every\n"
     "applicable method (fft, circulant; subdiv and sparse in 1D and 2D) on an N^dim grid,\n"
     "and measures how far each ensemble is from the model:\n"
@@ -39,8 +40,9 @@ static const char help[] =
     "                    grid narrow the interval)\n"
     "  --json            print every number of the report as JSON on stdout\n"
     "  -o DIR            DIR/index.md (the report, led by a table of the methods),\n"
-    "                    verdict.json (as --json), acf.tsv, spectrum.tsv, and with gnuplot\n"
-    "                    acf.png, error.png and spectrum.png\n"
+    "                    verdict.json (as --json), acf.tsv, spectrum.tsv, map.tsv (2D\n"
+    "                    and 3D), and with gnuplot acf.png, error.png, spectrum.png and\n"
+    "                    map.png\n"
     "method options, as for noiselab synth:\n"
     "  --levels L, --neighborhood N|auto, --tol E, --random-neighborhoods K   subdiv\n"
     "  --density D (default 32), --radius R, --cell C                          sparse\n\n"
