@@ -38,8 +38,11 @@
  *     periodic grid (nl_wk_sample_spectrum) for the periodic methods (fft,
  *     subdiv, sparse wrapped), the Fejer-smoothed one (the transform of R
  *     times the Bartlett window) for circulant embedding.  Relative error
- *     per band with a 95% interval simultaneous over the bands, and the
- *     largest over the bands; bands whose expectation is below 1e-6 of the
+ *     per band with a 95% interval simultaneous over the bands (Bonferroni),
+ *     from a Gamma law of the band mean: shape M (sum S)^2 / (2 sum S^2)
+ *     over the band's expected spectrum (independent exponential ordinates),
+ *     or (mean / se)^2 from the ensemble when smaller (ordinates correlated
+ *     by leakage); and the largest over the bands; bands whose expectation is below 1e-6 of the
  *     largest band are not compared (NAN).  Reported, not part of the verdict.
  *   - verdict against the tolerance E on the effect size over all T lags:
  *     NL_VALIDATE_WITHIN when hi <= E (shown to be within E), NL_VALIDATE_OFF
@@ -186,6 +189,7 @@ typedef struct {
     size_t nbands;                  /* bands compared, 0..nbands - 1 */
     double band_lo[NL_VALIDATE_BANDS], band_hi[NL_VALIDATE_BANDS]; /* band edges, cycles per sample */
     double band_periodic[NL_VALIDATE_BANDS], band_fejer[NL_VALIDATE_BANDS]; /* expected band means */
+    double band_shape_periodic[NL_VALIDATE_BANDS], band_shape_fejer[NL_VALIDATE_BANDS]; /* their Gamma shapes */
     int have_exact;                 /* exact[] and exact_map[] are set */
     double exact[NL_VALIDATE_DIRS][NL_VALIDATE_MAXLAG + 1]; /* subdivision's exact expected ACF */
     double exact_map[NL_VALIDATE_MAPLAGS];

@@ -2,9 +2,11 @@
  * spectrum by octave bands, the verdict (analysis/validate.h). */
 #include "validate_internal.h"
 #include "verdict.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,10 +50,16 @@ void nl_validate_bands_of(const nl_validate_result *v, int *band)
 }
 
 /* Band means of S at the n-grid frequencies; S has `stride` times the
- * grid's samples per axis (its frequency k stands at index stride k). */
-static void band_means(const nl_validate_result *v, const int *band, const nl_field *S, size_t stride, double *out)
+ * grid's samples per axis (its frequency k stands at index stride k).  With
+ * them the shape (sum S)^2 / (2 sum S^2) of each band: a periodogram
+ * ordinate of a Gaussian field is S_k times an exponential variable (chi^2_2
+ * / 2), P(-k) = P(k), so the band mean of one realization is close to a
+ * Gamma variable of that shape (the number of independent ordinates,
+ * weighted by S). */
+static void band_means(const nl_validate_result *v, const int *band, const nl_field *S, size_t stride, double *out,
+                       double *shape)
 {
-    double cnt[NL_VALIDATE_BANDS] = {0};
+    double cnt[NL_VALIDATE_BANDS] = {0}, sq[NL_VALIDATE_BANDS] = {0};
     size_t j = 0;
     memset(out, 0, NL_VALIDATE_BANDS * sizeof *out);
     for (size_t z = 0; z < v->n[2]; z++)
@@ -65,11 +73,12 @@ static void band_means(const nl_validate_result *v, const int *band, const nl_fi
                     iy = (size_t)(nl_wrap(y, v->n[1]) * 2 + (long)S->n[1]) % S->n[1];
                     iz = (size_t)(nl_wrap(z, v->n[2]) * 2 + (long)S->n[2]) % S->n[2];
                 }
-                out[band[j]] += S->data[(iz * S->n[1] + iy) * S->n[0] + ix];
+                double s = S->data[(iz * S->n[1] + iy) * S->n[0] + ix];
+                out[band[j]] += s, sq[band[j]] += s * s;
                 cnt[band[j]]++;
             }
     for (size_t b = 0; b < v->nbands; b++)
-        out[b] = cnt[b] > 0 ? out[b] / cnt[b] : NAN;
+        shape[b] = sq[b] > 0 ? out[b] * out[b] / (2 * sq[b]) : NAN, out[b] = cnt[b] > 0 ? out[b] / cnt[b] : NAN;
 }
 
 /* R on the 2n grid times the Bartlett window prod_a (1 - |l_a| / n_a), the
@@ -92,7 +101,7 @@ static int fejer_targets(const nl_model *m, nl_validate_result *v, const int *ba
                     R->data[j] *= w;
                 }
         if (!(st = nl_wk_acf_to_spectrum(R, S)))
-            band_means(v, band, S, 2, v->band_fejer);
+            band_means(v, band, S, 2, v->band_fejer, v->band_shape_fejer);
     }
     nl_field_free(R), nl_field_free(S);
     return st;
@@ -107,40 +116,56 @@ int nl_validate_spectrum_targets(const nl_model *m, nl_validate_result *v)
     if (band) {
         nl_validate_bands_of(v, band);
         if (!(st = nl_wk_sample_spectrum(m, S))) {
-            band_means(v, band, S, 1, v->band_periodic);
+            band_means(v, band, S, 1, v->band_periodic, v->band_shape_periodic);
             st = fejer_targets(m, v, band);
         }
     }
     for (size_t b = 0; b < v->nbands && !st; b++)
-        if (!isfinite(v->band_periodic[b]) || !isfinite(v->band_fejer[b]))
+        if (!isfinite(v->band_periodic[b]) || !isfinite(v->band_fejer[b]) || !(v->band_shape_periodic[b] > 0) ||
+            !(v->band_shape_fejer[b] > 0))
             st = NL_ERROR(NL_EINVAL, "validate: the model's spectrum is not finite in band %zu", b);
     free(band);
     nl_field_free(S);
     return st;
 }
 
+/* The interval of a band's expectation mu from its ensemble mean b: under
+ * a Gaussian field with the expected spectrum b / mu follows Gamma(K, 1/K)
+ * with K = M times the band's shape (band_means), so mu lies in
+ * [b / q(1 - a/2), b / q(a/2)] with a = 0.05 / bands (Bonferroni); the
+ * band values are skewed (a band of few frequencies is close to an
+ * exponential's mean), which an interval b +- t se would ignore. */
+static void band_interval(double b, double K, size_t nbands, double *lo, double *hi)
+{
+    double a = 0.05 / (double)nbands;
+    nl_gsl_enter();
+    *lo = b / gsl_cdf_gamma_Qinv(a / 2, K, 1 / K);
+    *hi = b / gsl_cdf_gamma_Pinv(a / 2, K, 1 / K);
+    nl_gsl_leave();
+}
+
 /* The periodogram's bands against their expectation. */
 static void spectrum_summary(const nl_validate_result *v, const double *b1, const double *b2, const double *expected,
-                             nl_validate_method_result *r)
+                             const double *shape, nl_validate_method_result *r)
 {
-    double M = (double)v->realizations, top = 0, c;
+    double M = (double)v->realizations, top = 0;
     r->spectrum_error = (nl_validate_interval){0, 0, 0};
-    c = nl_verdict_threshold(0.05, v->nbands ? v->nbands : 1, v->realizations - 1);
     for (size_t b = 0; b < v->nbands; b++)
         top = fmax(top, expected[b]);
     for (size_t b = 0; b < NL_VALIDATE_BANDS; b++) {
         double mu = b < v->nbands ? b1[b] / M : NAN, se = b < v->nbands ? sqrt(fmax(0, (b2[b] - M * mu * mu) / (M - 1)) / M) : NAN;
-        double d;
+        double d, lo, hi, e = expected[b];
         r->band_mean[b] = mu, r->band_se[b] = se;
         r->band_error[b] = (nl_validate_interval){NAN, NAN, NAN};
-        if (b >= v->nbands || !(expected[b] > 1e-6 * top))
+        if (b >= v->nbands || !(e > 1e-6 * top))
             continue;
-        d = (mu - expected[b]) / expected[b];
-        r->band_error[b] = (nl_validate_interval){d, d - c * se / expected[b], d + c * se / expected[b]};
-        if (fabs(d) >= r->spectrum_error.est)
-            r->spectrum_error.est = fabs(d);
-        r->spectrum_error.lo = fmax(r->spectrum_error.lo, fabs(d) - c * se / expected[b]);
-        r->spectrum_error.hi = fmax(r->spectrum_error.hi, fabs(d) + c * se / expected[b]);
+        band_interval(mu, fmin(M * shape[b], se > 0 ? (mu / se) * (mu / se) : INFINITY), v->nbands, &lo, &hi);
+        d = (mu - e) / e;
+        r->band_error[b] = (nl_validate_interval){d, (lo - e) / e, (hi - e) / e};
+        r->spectrum_error.est = fmax(r->spectrum_error.est, fabs(d));
+        /* the interval of |error|: 0 when the band's interval holds 0 */
+        r->spectrum_error.lo = fmax(r->spectrum_error.lo, lo > e ? (lo - e) / e : hi < e ? (e - hi) / e : 0);
+        r->spectrum_error.hi = fmax(r->spectrum_error.hi, fmax(fabs(lo - e), fabs(hi - e)) / e);
     }
 }
 
@@ -205,7 +230,7 @@ void nl_validate_summarise(const nl_validate_result *v, const double *mean, cons
         double t = nl_verdict_threshold(0.05, 1, v->realizations - 1);
         r->variance = (nl_validate_interval){mean[0] / r0, (mean[0] - t * se[0]) / r0, (mean[0] + t * se[0]) / r0};
     }
-    spectrum_summary(v, b1, b2, expected, r);
+    spectrum_summary(v, b1, b2, expected, expected == v->band_fejer ? v->band_shape_fejer : v->band_shape_periodic, r);
     r->pass = r->all.zmax <= v->threshold;
     r->verdict = r->all.effect.hi <= v->tolerance  ? NL_VALIDATE_WITHIN
                  : r->all.effect.lo > v->tolerance ? NL_VALIDATE_OFF

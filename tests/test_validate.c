@@ -146,12 +146,11 @@ Test(validate, subdivision_error_is_measured)
  * band of a Gaussian spectrum (0.0045 against 0.0016 for gauss:scale=3 on
  * 256 samples).  Each method's top band must hold 0 error against its own
  * expectation.  The band mean is dominated by its lowest frequencies (the
- * spectrum falls by orders of magnitude across the band), so its relative
- * se is large: the simultaneous half-width is 0.75 of the Fejer expectation
- * at 16 realizations (measured), about 0.37 at the 64 used here, while the
- * periodic expectation would put circulant's band 0 off by 0.0045 / 0.0016
- * - 1 = +1.8: breaking the choice on purpose gave 1.64 [0.95, 2.32], 0
- * excluded. */
+ * spectrum falls by orders of magnitude across the band: its Gamma shape is
+ * 10 ordinates of 64), so its interval is wide: circulant's band 0 gave
+ * -0.07 [-0.27, 0.22] with 64 realizations, while the periodic expectation
+ * would put it off by 0.0045 / 0.0016 - 1 = +1.8: breaking the choice on
+ * purpose gave 1.64 [1.08, 2.44], 0 excluded. */
 Test(validate, spectrum_expectation_per_method)
 {
     nl_model *m = test_model("gauss:scale=3");
