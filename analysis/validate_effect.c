@@ -137,11 +137,15 @@ int nl_validate_spectrum_targets(const nl_model *m, nl_validate_result *v)
  * exponential's mean), which an interval b +- t se would ignore. */
 static void band_interval(double b, double K, size_t nbands, double *lo, double *hi)
 {
-    double a = 0.05 / (double)nbands;
+    double a = 0.05 / (double)nbands, qlo, qhi;
     nl_gsl_enter();
-    *lo = b / gsl_cdf_gamma_Qinv(a / 2, K, 1 / K);
-    *hi = b / gsl_cdf_gamma_Pinv(a / 2, K, 1 / K);
+    if (K > 1000) { /* Wilson-Hilferty: GSL's inverse does not converge for large shapes */
+        double z = gsl_cdf_ugaussian_Qinv(a / 2), c = 1 - 1 / (9 * K), w = 1 / (3 * sqrt(K));
+        qhi = pow(c + z * w, 3), qlo = pow(c - z * w, 3);
+    } else
+        qhi = gsl_cdf_gamma_Qinv(a / 2, K, 1 / K), qlo = gsl_cdf_gamma_Pinv(a / 2, K, 1 / K);
     nl_gsl_leave();
+    *lo = b / qhi, *hi = b / qlo;
 }
 
 /* The periodogram's bands against their expectation. */

@@ -21,6 +21,14 @@ int cli_validate_status(const cli_validate *v)
     return ran ? 0 : 3;
 }
 
+double cli_validate_to_resolve(const nl_validate_result *res, const nl_validate_method_result *r)
+{
+    double half = r->all.effect.hi - r->all.effect.est, gap = fabs(res->tolerance - r->all.effect.est);
+    if (!r->ran || r->verdict != NL_VALIDATE_UNRESOLVED || !(gap > 0))
+        return 0;
+    return ceil((double)res->realizations * (half / gap) * (half / gap));
+}
+
 /* A JSON number, or null where it is undefined. */
 static json_t *num(double x) { return isfinite(x) ? json_real(x) : json_null(); }
 
@@ -79,6 +87,8 @@ static json_t *method_json(const cli_validate *v, int meth)
     o = json_pack("{s:b,s:s,s:o,s:o,s:b,s:o,s:o}", "ran", 1, "verdict", nl_validate_verdict_name(r->verdict),
                   "seconds", num(r->seconds), "effect", effect_json(&r->all, v->dim), "error_detected", !r->pass,
                   "variance_ratio", interval(&r->variance), "directions", dirs);
+    if (r->verdict == NL_VALIDATE_UNRESOLVED)
+        json_object_set_new(o, "realizations_to_resolve", num(cli_validate_to_resolve(res, r)));
     if (res->nmap)
         json_object_set_new(o, "map", effect_json(&r->map, v->dim));
     if (r->have_exact)

@@ -24,6 +24,11 @@ typedef struct {
  * otherwise. */
 int cli_validate_status(const cli_validate *v);
 
+/* For an unresolved verdict, the realizations that would likely resolve it:
+ * the interval's half-width hi - est shrinks as 1 / sqrt(M), so about
+ * M (half-width / |E - est|)^2; 0 when resolved or est = E. */
+double cli_validate_to_resolve(const nl_validate_result *res, const nl_validate_method_result *r);
+
 /* Everything found, as JSON (owned by the caller). */
 json_t *cli_validate_json(const cli_validate *v);
 

@@ -285,7 +285,10 @@ static void summary_md(FILE *fp, const cli_validate *v)
                     v->k.positive_definite ? r->why : "the model is not positive definite", r->seconds);
             continue;
         }
-        fprintf(fp, "| %s | %s | ", r->name, verdict_words(r->verdict));
+        fprintf(fp, "| %s | %s", r->name, verdict_words(r->verdict));
+        if (cli_validate_to_resolve(res, r) > 0)
+            fprintf(fp, " (about %.0f realizations would resolve it)", cli_validate_to_resolve(res, r));
+        fprintf(fp, " | ");
         interval_md(fp, &r->all.effect);
         fprintf(fp, " | %.3g | %.2f%s | ", r->all.detectable, r->all.zmax, r->pass ? "" : " (detected)");
         interval_md(fp, &r->variance);
