@@ -5,7 +5,7 @@
  * circulant, sparse up to its kernel's truncation) and subdivision's
  * exact-ACF error for subdiv (analysis/subdiv_exact.h).
  *
- * usage: validate_coverage SPEC METHOD N M K
+ * usage: validate_coverage SPEC METHOD N M K [DIM]  (N^DIM grid, DIM 1 by default)
  *   prints, tab-separated: ensembles, coverage of the effect-size interval
  *   (nominal >= 0.95), false alarms of the z test at 1e-3 (exact methods;
  *   nominal <= 0.001), the share of intervals excluding 0 (the resolution of
@@ -34,20 +34,20 @@ int main(int argc, char **argv)
 {
     nl_model *m;
     nl_validate_options o;
-    int meth = argc == 6 ? method_of(argv[2]) : -1;
-    size_t n, K, cover = 0, alarms = 0, resolved = 0, exact_cover = 0, spectrum_cover = 0, runs = 0;
+    int meth = argc == 6 || argc == 7 ? method_of(argv[2]) : -1, dim = argc == 7 ? atoi(argv[6]) : 1;
+    size_t n[3], K, cover = 0, alarms = 0, resolved = 0, exact_cover = 0, spectrum_cover = 0, runs = 0;
     if (meth < 0 || nl_model_parse(argv[1], &m)) {
-        fprintf(stderr, "usage: validate_coverage SPEC fft|circulant|subdiv|sparse N M K\n%s\n", nl_errmsg());
+        fprintf(stderr, "usage: validate_coverage SPEC fft|circulant|subdiv|sparse N M K [DIM]\n%s\n", nl_errmsg());
         return 2;
     }
-    n = strtoul(argv[3], NULL, 10), K = strtoul(argv[5], NULL, 10);
+    n[0] = n[1] = n[2] = strtoul(argv[3], NULL, 10), K = strtoul(argv[5], NULL, 10);
     nl_validate_options_default(&o);
     o.realizations = strtoul(argv[4], NULL, 10);
     for (size_t k = 0; k < K; k++) {
         const nl_validate_method_result *r = &res.method[meth];
         double truth;
         o.seed = 1 + k * o.realizations;
-        if (nl_validate_init(m, 1, &n, 1, &o, &res) || nl_validate_method(m, meth, &o, &res) || !r->ran) {
+        if (nl_validate_init(m, dim, n, 1, &o, &res) || nl_validate_method(m, meth, &o, &res) || !r->ran) {
             fprintf(stderr, "validate_coverage: %s\n", r->ran ? nl_errmsg() : r->why);
             return 1;
         }
