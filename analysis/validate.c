@@ -1,6 +1,7 @@
-/* Validation of a model's synthesis: each method's ensemble ACF against the
+/* Validation of a model's synthesis: each method's ensemble against the
  * target (analysis/validate.h). */
-#include "validate.h"
+#include "validate_internal.h"
+#include "psd.h"
 #include "subdiv_exact.h"
 #include "verdict.h"
 #include "../core/nl_error.h"
@@ -11,20 +12,15 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
-
-#define L NL_VALIDATE_LAGS
+#include <time.h>
 
 static const char *const names[NL_VALIDATE_METHODS] = {"fft", "circulant", "subdiv", "sparse"};
 
 const char *nl_validate_method_name(int method)
 {
     return method >= 0 && method < NL_VALIDATE_METHODS ? names[method] : NULL;
-}
-
-void nl_validate_options_default(nl_validate_options *o)
-{
-    *o = (nl_validate_options){.realizations = 32, .alpha = 1e-3};
 }
 
 /* One realization of a planned method. */
@@ -42,46 +38,113 @@ static void refuse(nl_validate_method_result *r, int st)
     snprintf(r->why, sizeof r->why, "%s", nl_errmsg());
 }
 
-/* M realizations of one planned method into its ensemble verdict. */
-static void run_ensemble(const nl_validate_result *v, int meth, run_fn fn, const void *plan,
-                         const nl_validate_options *o, nl_validate_method_result *r)
+/* What an ensemble accumulates besides the ACF: the periodogram's bands. */
+typedef struct {
+    nl_verdict *vd;    /* ACF at every tested lag */
+    nl_psd_plan *pp;   /* periodogram */
+    nl_field *f, *P;   /* a realization and its periodogram */
+    int *band;         /* band of each frequency */
+    double b1[NL_VALIDATE_BANDS], b2[NL_VALIDATE_BANDS]; /* sums of band means and of their squares */
+} ensemble;
+
+static void ensemble_free(ensemble *e)
 {
-    nl_field *f = nl_field_alloc(v->dim, v->n, NULL, NULL);
-    long lags[L][2];
-    nl_verdict *vd = NULL;
-    int st;
-    for (int i = 0; i < L; i++)
-        lags[i][0] = i, lags[i][1] = 0;
-    st = f ? nl_verdict_alloc(v->dim, v->n, L, (const long (*)[2])lags, &vd) : NL_ENOMEM;
+    nl_verdict_free(e->vd);
+    nl_psd_plan_free(e->pp);
+    nl_field_free(e->f), nl_field_free(e->P);
+    free(e->band);
+}
+
+static int ensemble_alloc(const nl_validate_result *v, ensemble *e)
+{
+    long (*lags)[3] = NULL;
+    int st = NL_OK;
+    memset(e, 0, sizeof *e);
+    if ((e->f = nl_field_alloc(v->dim, v->n, NULL, &st)) && (e->P = nl_field_alloc(v->dim, v->n, NULL, &st)) &&
+        !(st = nl_psd_plan_alloc(v->dim, v->n, &e->pp)) && !(st = nl_validate_lags_alloc(v, &lags)))
+        st = nl_verdict_alloc3(v->dim, v->n, v->ntests, (const long (*)[3])lags, &e->vd);
+    free(lags);
+    if (!st && !(st = nl_size_check(v->dim, v->n, sizeof *e->band, 1, NULL)) &&
+        !(e->band = malloc(e->f->count * sizeof *e->band)))
+        st = NL_ERROR(NL_ENOMEM, "out of memory for %zu frequencies", e->f->count);
+    if (!st)
+        nl_validate_bands_of(v, e->band);
+    return st;
+}
+
+/* The periodogram of e->f into the band sums. */
+static int add_bands(const nl_validate_result *v, ensemble *e)
+{
+    double s[NL_VALIDATE_BANDS] = {0}, c[NL_VALIDATE_BANDS] = {0};
+    int st = nl_psd_plan_execute(e->pp, e->f, 0.0, e->P);
+    for (size_t j = 0; j < e->P->count && !st; j++)
+        if (e->band[j] >= 0)
+            s[e->band[j]] += e->P->data[j], c[e->band[j]]++;
+    for (size_t b = 0; b < v->nbands && !st; b++) {
+        double x = c[b] > 0 ? s[b] / c[b] : 0;
+        e->b1[b] += x, e->b2[b] += x * x;
+    }
+    return st;
+}
+
+/* M realizations of one planned method: their mean and se at every tested
+ * lag (mean, se: v->ntests each) and band sums in e. */
+static int run_ensemble(const nl_validate_result *v, int meth, run_fn fn, const void *plan,
+                        const nl_validate_options *o, ensemble *e, double *mean, double *se)
+{
+    int st = ensemble_alloc(v, e);
     for (size_t s = 1; s <= v->realizations && !st; s++) {
         if (o->progress)
             o->progress(o->progress_ctx, meth, s - 1, v->realizations);
-        if ((st = fn(plan, s, f)) || (st = nl_verdict_add(vd, f)))
-            break;
+        if (!(st = fn(plan, v->seed + (s - 1), e->f)) && !(st = nl_verdict_add(e->vd, e->f)))
+            st = add_bands(v, e);
     }
-    if (!st)
-        st = nl_verdict_stats(vd, r->mean, r->se);
+    return st ? st : nl_verdict_stats(e->vd, mean, se);
+}
+
+/* Synthesise, summarise, time. */
+static void run_method(nl_validate_result *v, int meth, run_fn fn, const void *plan, const nl_validate_options *o)
+{
+    nl_validate_method_result *r = &v->method[meth];
+    double *mean = malloc(v->ntests * sizeof *mean), *se = malloc(v->ntests * sizeof *se), *exact = NULL;
+    ensemble e;
+    int st = mean && se ? run_ensemble(v, meth, fn, plan, o, &e, mean, se) : NL_ERROR(NL_ENOMEM, "out of memory");
+    if (!st && meth == NL_VALIDATE_SUBDIV && v->have_exact && (exact = malloc(v->ntests * sizeof *exact)))
+        nl_validate_flatten(v, v->exact, v->exact_map, exact);
     if (st)
         refuse(r, st);
     else {
         r->ran = 1, r->status = NL_OK, r->why[0] = '\0';
-        r->zmax = nl_verdict_zmax(L, r->mean, r->se, v->target, NULL);
-        r->pass = r->zmax <= v->threshold;
+        nl_validate_summarise(v, mean, se, e.b1, e.b2,
+                              meth == NL_VALIDATE_CIRCULANT ? v->band_fejer : v->band_periodic, exact, r);
     }
-    nl_verdict_free(vd);
-    nl_field_free(f);
+    if (mean && se)
+        ensemble_free(&e);
+    free(mean), free(se), free(exact);
 }
 
-/* Subdivision's exact expected ACF on grids small enough for its
- * (n_x n_y)^2 covariance. */
+/* Subdivision's exact expected ACF at every tested lag, on grids small
+ * enough for its (n_x n_y)^2 covariance. */
 static void exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, nl_validate_result *v)
 {
-    long lags[2 * L];
-    if (v->n[0] > (v->dim == 1 ? 2048u : 64u) || v->n[1] > 64)
+    long (*l3)[3] = NULL, *l2 = NULL;
+    double *flat = NULL;
+    if (v->dim > 2 || v->n[0] > (v->dim == 1 ? 2048u : 64u) || v->n[1] > 64)
         return;
-    for (int i = 0; i < L; i++)
-        lags[2 * i] = i, lags[2 * i + 1] = 0;
-    v->have_exact = nl_subdiv_exact_acf(c, m, v->n[0], v->n[1], L, lags, v->exact) == 0;
+    if (!nl_validate_lags_alloc(v, &l3) && (l2 = malloc(2 * v->ntests * sizeof *l2)) &&
+        (flat = malloc(v->ntests * sizeof *flat))) {
+        for (size_t i = 0; i < v->ntests; i++)
+            l2[2 * i] = l3[i][0], l2[2 * i + 1] = l3[i][1];
+        v->have_exact = nl_subdiv_exact_acf(c, m, v->n[0], v->n[1], v->ntests, l2, flat) == 0;
+    }
+    for (size_t i = 0, k = 0; v->have_exact && i < NL_VALIDATE_DIRS; i++)
+        for (size_t l = 0; l < v->nlag[i]; l++)
+            v->exact[i][l] = flat[k++];
+    for (size_t i = 0, k = v->ntests - v->nmap; v->have_exact && i < v->nmap; i++)
+        v->exact_map[i] = flat[k + i];
+    if (v->have_exact)
+        nl_validate_exact_effect(v, flat);
+    free(l3), free(l2), free(flat);
 }
 
 /* A subdivision plan that was refused still shows the exact ACF of its
@@ -92,7 +155,7 @@ static int refused_subdiv(const nl_model *m, const nl_subdiv_options *so, int st
     nl_validate_method_result *r = &v->method[NL_VALIDATE_SUBDIV];
     nl_subdiv_coeffs *c;
     refuse(r, st);
-    if (nl_subdiv_coeffs_alloc(m, v->dim, so->levels, ldexp(1.0, so->levels), so->N, so->tol, so->nmax, &c))
+    if (v->dim > 2 || nl_subdiv_coeffs_alloc(m, v->dim, so->levels, ldexp(1.0, so->levels), so->N, so->tol, so->nmax, &c))
         return st;
     if (c->flags & NL_SUBDIV_NOT_PD)
         refuse(r, st = NL_ERROR(NL_ENOTPD, "not positive definite at some level"));
@@ -102,21 +165,30 @@ static int refused_subdiv(const nl_model *m, const nl_subdiv_options *so, int st
     return st;
 }
 
-/* Periodic subdivision at unit spacing, N = 2, a coarse grid of at least
- * 16 samples per axis, and its exact ACF. */
-static int plan_subdiv(const nl_model *m, nl_validate_result *v, nl_subdiv_plan **p)
+/* Periodic subdivision at unit spacing with the options' neighbourhood
+ * and levels, and its exact ACF. */
+static int plan_subdiv(const nl_model *m, const nl_validate_options *o, nl_validate_result *v, nl_subdiv_plan **p)
 {
     nl_subdiv_options so;
     int st;
     nl_subdiv_options_default(&so);
-    so.levels = nl_subdiv_default_levels(v->dim, v->n, 16);
-    so.N = 2, so.tol = 1e-4, so.nmax = 6;
+    so.levels = o->subdiv_levels ? o->subdiv_levels : nl_subdiv_default_levels(v->dim, v->n, 16);
+    so.N = o->subdiv_N, so.tol = o->subdiv_tol, so.nmax = 6, so.random_nb = o->subdiv_random;
+    if (v->dim > 2)
+        return NL_ERROR(NL_EINVAL, "subdivision: expected a 1D or 2D grid, got %dD", v->dim);
     if (!so.levels)
         return NL_ERROR(NL_EINVAL, "subdivision: expected sizes divisible by 2 with at least 32 samples");
     if ((st = nl_subdiv_plan_alloc(m, v->dim, v->n, 1.0, &so, p)))
         return refused_subdiv(m, &so, st, v);
     exact_acf(nl_subdiv_plan_coeffs(*p), m, v);
     return NL_OK;
+}
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
 int nl_validate_method(const nl_model *m, int meth, const nl_validate_options *o, nl_validate_result *v)
@@ -128,55 +200,32 @@ int nl_validate_method(const nl_model *m, int meth, const nl_validate_options *o
     const void *plan = NULL;
     run_fn fn = NULL;
     int st = NL_OK;
+    double t0 = now();
     if (meth < 0 || meth >= NL_VALIDATE_METHODS)
         return NL_ERROR(NL_EINVAL, "validate: expected a method 0..%d, got %d", NL_VALIDATE_METHODS - 1, meth);
-    if (o->realizations != v->realizations)
-        return NL_ERROR(NL_EINVAL, "validate: %zu realizations, but the result was prepared for %zu",
-                        o->realizations, v->realizations);
-    if (meth == NL_VALIDATE_FFT)
-        st = nl_synth_fft_plan_alloc(m, v->dim, v->n, NULL, 0, &pf), plan = pf, fn = run_fft;
-    if (meth == NL_VALIDATE_CIRCULANT)
-        st = nl_synth_circulant_plan_alloc(m, v->dim, v->n, NULL, 0, 16, &pc), plan = pc, fn = run_circ;
-    if (meth == NL_VALIDATE_SUBDIV)
-        st = plan_subdiv(m, v, &pd), plan = pd, fn = run_sub;
-    if (meth == NL_VALIDATE_SPARSE)
-        st = nl_synth_sparse_plan_model(m, v->dim, NULL, 0, 0, 32, &ps), plan = ps, fn = run_sparse;
+    if (o->realizations != v->realizations || o->seed != v->seed)
+        return NL_ERROR(NL_EINVAL, "validate: %zu realizations from seed %llu, but the result was prepared for %zu from %llu",
+                        o->realizations, (unsigned long long)o->seed, v->realizations, (unsigned long long)v->seed);
     if (!v->positive_definite)
-        refuse(&v->method[meth], NL_ERROR(NL_ENOTPD, "the model is not positive definite"));
-    else if (st)
+        st = NL_ERROR(NL_ENOTPD, "the model is not positive definite");
+    else if (meth == NL_VALIDATE_FFT)
+        st = nl_synth_fft_plan_alloc(m, v->dim, v->n, NULL, 0, &pf), plan = pf, fn = run_fft;
+    else if (meth == NL_VALIDATE_CIRCULANT)
+        st = nl_synth_circulant_plan_alloc(m, v->dim, v->n, NULL, 0, 16, &pc), plan = pc, fn = run_circ;
+    else if (meth == NL_VALIDATE_SUBDIV)
+        st = plan_subdiv(m, o, v, &pd), plan = pd, fn = run_sub;
+    else if (v->dim > 2)
+        st = NL_ERROR(NL_EINVAL, "sparse convolution: expected a 1D or 2D grid, got %dD", v->dim);
+    else
+        st = nl_synth_sparse_plan_model(m, v->dim, NULL, o->sparse_radius, o->sparse_cell, o->sparse_density, &ps),
+        plan = ps, fn = run_sparse;
+    if (st)
         refuse(&v->method[meth], st);
     else
-        run_ensemble(v, meth, fn, plan, o, &v->method[meth]);
+        run_method(v, meth, fn, plan, o);
     nl_synth_fft_plan_free(pf), nl_synth_circulant_plan_free(pc), nl_synth_sparse_plan_free(ps);
     nl_subdiv_plan_free(pd);
-    return NL_OK;
-}
-
-int nl_validate_init(const nl_model *m, int dim, const size_t *n, int positive_definite,
-                     const nl_validate_options *o, nl_validate_result *v)
-{
-    if (dim != 1 && dim != 2)
-        return NL_ERROR(NL_EINVAL, "validate: expected a 1D or 2D grid, got %dD", dim);
-    if (n[0] < L || (dim == 2 && n[1] < L))
-        return NL_ERROR(NL_EINVAL, "validate: expected at least %d samples per axis", L);
-    if (o->realizations < 2)
-        return NL_ERROR(NL_EINVAL, "validate: expected at least 2 realizations, got %zu", o->realizations);
-    if (!(o->alpha > 0 && o->alpha < 1))
-        return NL_ERROR(NL_EINVAL, "validate: expected a false-alarm rate in (0, 1), got %g", o->alpha);
-    memset(v, 0, sizeof *v);
-    v->dim = dim;
-    v->n[0] = n[0], v->n[1] = dim == 2 ? n[1] : 1;
-    v->realizations = o->realizations;
-    v->positive_definite = positive_definite;
-    for (int i = 0; i < L; i++) {
-        double lag1[3] = {i * 1.0, 0, 0};
-        v->target[i] = nl_model_acf(m, dim, lag1);
-    }
-    v->threshold = nl_verdict_threshold(o->alpha, L, o->realizations - 1);
-    for (int meth = 0; meth < NL_VALIDATE_METHODS; meth++) {
-        v->method[meth].name = names[meth];
-        snprintf(v->method[meth].why, sizeof v->method[meth].why, "not run");
-    }
+    v->method[meth].seconds = now() - t0;
     return NL_OK;
 }
 

@@ -1,27 +1,70 @@
-/* Validation of a model's synthesis: does each method reproduce the target?
+/* Validation of a model's synthesis: does each method reproduce the target,
+ * and by how much does it miss?
  *
  * For each method (periodic FFT, circulant embedding, periodic generalized
  * subdivision, sparse convolution) the model is planned once and M
- * realizations (seeds 1..M) are synthesised on an n[0] x n[1] grid of unit
- * spacing (lags in samples).  Their unbiased ACF with known mean 0 along x at
- * the NL_VALIDATE_LAGS lags 0..32 is averaged, with the standard error from
- * the ensemble's spread, and the verdict is the ensemble verdict of
- * analysis/verdict.h: max |z| = |mean - R| / se against the Bonferroni
- * threshold of Student's t(M - 1) for a family-wise false-alarm rate alpha
- * over the NL_VALIDATE_LAGS lags (nl_verdict_threshold).
+ * realizations (seeds S..S+M-1, S = 1 by default) are synthesised on a grid of unit spacing (lags
+ * in samples, frequencies in cycles per sample).  Each realization gives
+ * the unbiased ACF with known mean 0 (analysis/acf.h, E r(l) = C(l)) and the
+ * periodogram with known mean 0 (analysis/psd.h); the ensemble gives their
+ * means and standard errors se = sd / sqrt(M) (analysis/verdict.h).
+ *
+ * Lags tested: along each direction (x; x, y and the diagonal (1, 1) in 2D;
+ * x, y, z and the diagonal (1, 1, 1) in 3D) from 0 to the last lag at which
+ * |R| > 5% of R(0), plus one, but at most a quarter of the shortest axis
+ * the direction crosses (at least 4 lags); and the lag map: every lag of
+ * the half box 0 <= |l_a| <= W (l and -l estimate the same sum, so one of
+ * each pair), W = the longest direction's last lag, at most
+ * NL_VALIDATE_MAP_2D (2D) or NL_VALIDATE_MAP_3D (3D).  T lags in all.
+ *
+ * Per method, with d(l) = mean(l) - R(l) and everything divided by R(0):
+ *   - z(l) = |d(l)| / se(l); max |z| against the Bonferroni threshold of
+ *     Student's t(M - 1) at family-wise rate alpha over the T lags
+ *     (nl_verdict_threshold): `detected` says whether any error was found.
+ *   - effect size e = max_l |d(l)| / R(0) over a set of lags, with a
+ *     conservative 95% interval from simultaneous intervals
+ *     d(l) +- c se(l), c = nl_verdict_threshold(0.05, T, M - 1):
+ *         lo = max_l max(0, |d(l)| - c se(l)),  hi = max_l (|d(l)| + c se(l))
+ *     (each over R(0)); whenever every d(l) lies in its interval, which has
+ *     probability >= 95%, the true largest error lies in [lo, hi].
+ *   - detectable error: (t_thr + t_0.8) max_l se(l) / R(0), t_thr the
+ *     verdict's threshold and t_0.8 the 80% quantile of t(M - 1): an error
+ *     of this size at any tested lag is detected with about 80% power.
+ *   - variance ratio mean r(0) / R(0) +- t_0.975 se(0) / R(0).
+ *   - spectrum: the periodogram averaged over octave bands of radial
+ *     frequency |f|, band b holding 0.5 2^-(b+1) < |f| <= 0.5 2^-b (band 0
+ *     also the corners above 0.5), against the band mean of its expectation
+ *     for the method's covariance: the model's spectrum sampled on the
+ *     periodic grid (nl_wk_sample_spectrum) for the periodic methods (fft,
+ *     subdiv, sparse wrapped), the Fejer-smoothed one (the transform of R
+ *     times the Bartlett window) for circulant embedding.  Relative error
+ *     per band with a 95% interval simultaneous over the bands (Bonferroni),
+ *     from a Gamma law of the band mean: shape M (sum S)^2 / (2 sum S^2)
+ *     over the band's expected spectrum (independent exponential ordinates),
+ *     or (mean / se)^2 from the ensemble when smaller (ordinates correlated
+ *     by leakage); and the largest over the bands; bands whose expectation is below 1e-6 of the
+ *     largest band are not compared (NAN).  Reported, not part of the verdict.
+ *   - verdict against the tolerance E on the effect size over all T lags:
+ *     NL_VALIDATE_WITHIN when hi <= E (shown to be within E), NL_VALIDATE_OFF
+ *     when lo > E (shown to exceed E), NL_VALIDATE_UNRESOLVED otherwise (the
+ *     interval straddles E: more realizations or a larger grid resolve it).
  *
  * The plans: FFT (synth/fft.h) and circulant embedding up to 16 n per axis
- * (synth/circulant.h) without clamping; subdivision (synth/subdiv.h) with
- * N = 2 and nl_subdiv_default_levels(dim, n, 16) levels (a coarse grid of at
- * least 16 samples per axis); sparse convolution (synth/sparse.h) of the
- * model's kernel at its default radius and cell, density 32, wrapped.
+ * (synth/circulant.h) without clamping; subdivision (synth/subdiv.h, 1D and
+ * 2D) periodic, with the options' neighbourhood, levels (0: a coarse grid of
+ * at least 16 samples per axis), tol and random neighbourhoods; sparse
+ * convolution (synth/sparse.h, 1D and 2D) of the model's kernel at the
+ * options' radius and cell (0: the defaults) and density, wrapped.
  *
  * Subdivision (Lewis 1987) estimates new points from earlier levels only, so
- * its covariance differs from R except for Markovian models in 1D; on small
- * grids (1D up to 2048 samples, 2D up to 64 x 64) the result also holds its
- * exact expected ACF (analysis/subdiv_exact.h), computed whenever its
- * coefficients exist and are positive definite, even when the model or the
- * coarse FFT is refused.
+ * its covariance differs from R except for Markovian models in 1D.  Its
+ * verdict is against the target R like every method's; on grids small
+ * enough for its exact expected ACF (analysis/subdiv_exact.h: 1D up to 2048
+ * samples, 2D up to 64 x 64, at most 4 neighbours per side, no random
+ * neighbourhoods) the result also holds that ACF at every tested lag and the
+ * method's effect size against it (vs_exact): a correct implementation
+ * matches its own exact ACF, and the difference between the two is the
+ * method's error by construction.
  *
  * A method that cannot run (its plan fails, a realization fails, or the
  * caller says the model is not positive definite) is "refused": a result
@@ -35,27 +78,71 @@
 #include "../core/model.h"
 
 #include <stddef.h>
+#include <stdint.h>
 
-/* Lags 0..NL_VALIDATE_LAGS - 1 along x. */
-#define NL_VALIDATE_LAGS 33
+/* Lags 0..NL_VALIDATE_MAXLAG along a direction at most. */
+#define NL_VALIDATE_MAXLAG 512
+/* Largest half-width of the lag map in 2D and 3D, and its largest size. */
+#define NL_VALIDATE_MAP_2D 32
+#define NL_VALIDATE_MAP_3D 10
+#define NL_VALIDATE_MAPLAGS 4700
+/* Octave bands of the spectrum. */
+#define NL_VALIDATE_BANDS 16
 
 /* The methods, in the order nl_validate_model runs them. */
 enum { NL_VALIDATE_FFT, NL_VALIDATE_CIRCULANT, NL_VALIDATE_SUBDIV, NL_VALIDATE_SPARSE, NL_VALIDATE_METHODS };
 
+/* The directions: lag l stands for (l, 0, 0), (0, l, 0), (0, 0, l) and
+ * (l, l, 0) in 2D or (l, l, l) in 3D. */
+enum { NL_VALIDATE_X, NL_VALIDATE_Y, NL_VALIDATE_Z, NL_VALIDATE_DIAG, NL_VALIDATE_DIRS };
+
+/* Verdicts against the tolerance. */
+enum { NL_VALIDATE_WITHIN, NL_VALIDATE_OFF, NL_VALIDATE_UNRESOLVED };
+
 /* "fft", "circulant", "subdiv", "sparse"; NULL outside 0..NL_VALIDATE_METHODS - 1. */
 const char *nl_validate_method_name(int method);
 
+/* "x", "y", "z", "diagonal"; NULL outside 0..NL_VALIDATE_DIRS - 1. */
+const char *nl_validate_dir_name(int dir);
+
+/* "within", "off", "unresolved"; NULL otherwise. */
+const char *nl_validate_verdict_name(int verdict);
+
 typedef struct {
-    size_t realizations;  /* M >= 2: seeds 1..M */
-    double alpha;         /* family-wise false-alarm rate of the verdict, in (0, 1) */
+    size_t realizations;  /* M >= 2 */
+    uint64_t seed;        /* S: seeds S..S+M-1 (wrapping modulo 2^64) */
+    double alpha;         /* family-wise false-alarm rate of the z test, in (0, 1) */
+    double tolerance;     /* E > 0: largest |mean ACF - R| / R(0) accepted */
+    int subdiv_levels;    /* 0: a coarse grid of at least 16 samples per axis */
+    int subdiv_N;         /* neighbourhood half-width >= 1, or 0: grow until eq. (7) improves by < subdiv_tol */
+    double subdiv_tol;    /* > 0 */
+    int subdiv_random;    /* 2D: random neighbourhoods per point class, 0: the standard block */
+    int sparse_radius;    /* 0: the model kernel's default */
+    int sparse_cell;      /* 0: the radius */
+    double sparse_density;/* impulses per cell, > 0 */
     /* NULL, or called before each realization: `done` of `total` realizations
      * of `method` are finished */
     void (*progress)(void *ctx, int method, size_t done, size_t total);
     void *progress_ctx;   /* passed to progress */
 } nl_validate_options;
 
-/* The defaults: 32 realizations, alpha = 1e-3, no progress. */
+/* The defaults: 32 realizations from seed 1, alpha = 1e-3, tolerance 0.1, subdivision
+ * with N = 2, tol 1e-4 and default levels, sparse convolution at density 32
+ * with the default radius and cell, no progress. */
 void nl_validate_options_default(nl_validate_options *o);
+
+/* An estimate with its 95% confidence interval (lo <= est <= hi). */
+typedef struct {
+    double est, lo, hi;
+} nl_validate_interval;
+
+/* An effect size over a set of lags (module comment). */
+typedef struct {
+    nl_validate_interval effect; /* max |d| / R(0), conservative 95% interval */
+    double zmax;                 /* max |z| */
+    double detectable;           /* error detected with ~80% power */
+    long worst[3];               /* the lag of the largest |d| */
+} nl_validate_effect;
 
 /* One method's ensemble against the target. */
 typedef struct {
@@ -63,47 +150,89 @@ typedef struct {
     int ran;                        /* 1: the ensemble ran and the numbers below are set; 0: refused */
     int status;                     /* the NL_E* code of a refusal; NL_OK when ran or not run yet */
     char why[256];                  /* the refusal's one-line message ("" when ran, "not run" before) */
-    double mean[NL_VALIDATE_LAGS];  /* ensemble mean ACF, variance units of the model */
-    double se[NL_VALIDATE_LAGS];    /* its standard error, sd / sqrt(M) */
-    double zmax;                    /* max |z| over the lags */
-    int pass;                       /* zmax <= threshold */
+    double seconds;                 /* wall time of planning and the ensemble */
+    /* ensemble mean ACF and its standard error by direction and lag
+     * (variance units of the model); lags 0..nlag[dir] - 1 of the result */
+    double mean[NL_VALIDATE_DIRS][NL_VALIDATE_MAXLAG + 1];
+    double se[NL_VALIDATE_DIRS][NL_VALIDATE_MAXLAG + 1];
+    double map_mean[NL_VALIDATE_MAPLAGS], map_se[NL_VALIDATE_MAPLAGS]; /* the same at the map's lags */
+    nl_validate_effect dir[NL_VALIDATE_DIRS]; /* against R, per direction */
+    nl_validate_effect map;         /* against R over the lag map */
+    nl_validate_effect all;         /* against R over every tested lag: the verdict's */
+    int have_exact;                 /* vs_exact is set (subdiv only) */
+    nl_validate_effect vs_exact;    /* against the exact expected ACF, every tested lag */
+    nl_validate_interval variance;  /* mean r(0) / R(0) */
+    double band_mean[NL_VALIDATE_BANDS], band_se[NL_VALIDATE_BANDS]; /* periodogram band means */
+    nl_validate_interval band_error[NL_VALIDATE_BANDS]; /* (mean - expected) / expected; NAN: not compared */
+    nl_validate_interval spectrum_error; /* max |band_error| over the bands */
+    int pass;                       /* max |z| over all lags <= threshold: no error detected */
+    int verdict;                    /* NL_VALIDATE_WITHIN, _OFF or _UNRESOLVED */
 } nl_validate_method_result;
 
-/* Everything validation found; caller-owned, nothing to free. */
+/* Everything validation found; caller-owned, nothing to free (large:
+ * about 550 kB; keep it static or on the heap). */
 typedef struct {
-    int dim;                        /* 1 or 2 */
-    size_t n[2];                    /* grid (n[1] = 1 in 1D) */
+    int dim;                        /* 1..3 */
+    size_t n[3];                    /* grid (1 beyond dim) */
     size_t realizations;            /* M */
+    uint64_t seed;                  /* S */
+    double alpha, tolerance;        /* as given */
     int positive_definite;          /* as given to nl_validate_init */
-    double target[NL_VALIDATE_LAGS];/* R(i, 0) */
-    double threshold;               /* Bonferroni threshold of t(M - 1) */
-    int have_exact;                 /* exact[] is set */
-    double exact[NL_VALIDATE_LAGS]; /* subdivision's exact expected ACF */
+    size_t nlag[NL_VALIDATE_DIRS];  /* lags 0..nlag - 1 per direction; 0: direction not tested */
+    double target[NL_VALIDATE_DIRS][NL_VALIDATE_MAXLAG + 1]; /* R along each direction */
+    size_t nmap;                    /* lags in the map */
+    long map[NL_VALIDATE_MAPLAGS][3];   /* the map's lags */
+    double map_target[NL_VALIDATE_MAPLAGS]; /* R there */
+    size_t ntests;                  /* T: every tested lag */
+    double threshold;               /* Bonferroni threshold of t(M - 1) at alpha over T lags */
+    double ci_factor;               /* c: simultaneous 95% over T lags */
+    size_t nbands;                  /* bands compared, 0..nbands - 1 */
+    double band_lo[NL_VALIDATE_BANDS], band_hi[NL_VALIDATE_BANDS]; /* band edges, cycles per sample */
+    double band_periodic[NL_VALIDATE_BANDS], band_fejer[NL_VALIDATE_BANDS]; /* expected band means */
+    double band_shape_periodic[NL_VALIDATE_BANDS], band_shape_fejer[NL_VALIDATE_BANDS]; /* their Gamma shapes */
+    int have_exact;                 /* exact[] and exact_map[] are set */
+    double exact[NL_VALIDATE_DIRS][NL_VALIDATE_MAXLAG + 1]; /* subdivision's exact expected ACF */
+    double exact_map[NL_VALIDATE_MAPLAGS];
+    double exact_effect;            /* max |exact - R| / R(0) over the tested lags: subdivision's error by construction */
+    long exact_worst[3];            /* where */
     nl_validate_method_result method[NL_VALIDATE_METHODS]; /* by NL_VALIDATE_* */
 } nl_validate_result;
 
-/* Prepare *out for model m in dim (1 or 2) on an n[0..dim-1] grid, each
- * n[a] > NL_VALIDATE_LAGS - 1 (n[1] ignored in 1D): the target, the
- * threshold, every method not yet run.  positive_definite is the caller's
- * verdict on the model (nl_check_model, analysis/check.h): 0 refuses every
- * method (NL_ENOTPD).  m is read, not kept.  Returns NL_OK or NL_EINVAL
- * (dim, a size, realizations or alpha out of range; *out is then
- * unspecified). */
+/* Prepare *out for model m in dim (1..3) on an n[0..dim-1] grid, each
+ * n[a] >= 16: the lags, the target, the thresholds, the spectrum's
+ * expectations, every method not yet run.  positive_definite is the
+ * caller's verdict on the model (nl_check_model, analysis/check.h): 0
+ * refuses every method (NL_ENOTPD).  m is read, not kept.  Returns NL_OK;
+ * NL_EINVAL (dim, a size, realizations, alpha or tolerance out of range;
+ * R(0) not positive and finite; R or the spectrum not finite at a tested
+ * lag or grid frequency); or the codes of nl_wk_sample_spectrum and
+ * nl_wk_sample_acf (NL_ETOOBIG, NL_ENOMEM).  *out is then unspecified. */
 int nl_validate_init(const nl_model *m, int dim, const size_t *n, int positive_definite,
                      const nl_validate_options *o, nl_validate_result *out);
 
 /* Plan `method` for m (the model given to nl_validate_init), synthesise the
- * ensemble and fill out->method[method] (subdivision also sets have_exact
- * and exact).  The verdict is against out->target, which the caller may
- * replace after nl_validate_init (e.g. to judge against another model).  o must give the realizations given to nl_validate_init
- * (its alpha is not read here).  Returns NL_OK (ran or refused: see ran and status), or
- * NL_EINVAL (method out of range, realizations differing from out's; out
- * untouched). */
+ * ensemble and fill out->method[method] (subdivision also sets have_exact,
+ * exact and exact_map when it can).  The effect sizes are against
+ * out->target and out->map_target, which the caller may replace after
+ * nl_validate_init (e.g. to judge against another model).  o must give the
+ * realizations and seed given to nl_validate_init; its method options are read here,
+ * its alpha and tolerance are not (out's are).  The time it took is in
+ * out->method[method].seconds.  Returns
+ * NL_OK (ran or refused: see ran and status), or NL_EINVAL (method out of
+ * range, options differing from out's; out untouched). */
 int nl_validate_method(const nl_model *m, int method, const nl_validate_options *o, nl_validate_result *out);
 
 /* nl_validate_init, then nl_validate_method for every method in order.
- * Returns NL_OK or NL_EINVAL as nl_validate_init. */
+ * Returns what nl_validate_init returns. */
 int nl_validate_model(const nl_model *m, int dim, const size_t *n, int positive_definite,
                       const nl_validate_options *o, nl_validate_result *out);
+
+/* The effect size of mean +- se against target over L lags (se > 0 where
+ * the ensemble varies), with the interval factor c and the detectability
+ * factor k = t_thr + t_0.8: e = max |mean - target| / r0, interval and
+ * detectable error as in the module comment, zmax = max |z|; *worst = the
+ * index of the largest |mean - target|.  Reentrant. */
+void nl_validate_effect_of(size_t L, const double *mean, const double *se, const double *target, double r0,
+                           double c, double k, nl_validate_effect *e, size_t *worst);
 
 #endif

@@ -6,6 +6,7 @@
 
 #include <gsl/gsl_cdf.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,7 +28,23 @@ void nl_verdict_free(nl_verdict *v)
     free(v->at), free(v->s1), free(v->s2), free(v);
 }
 
-int nl_verdict_alloc(int dim, const size_t *n, size_t nlags, const long (*lags)[2], nl_verdict **out)
+/* Index of lag (lx, ly, lz) in the full estimate of m[0] x m[1] x m[2]
+ * samples, or SIZE_MAX outside it. */
+static size_t lag_index(int dim, const size_t *m, const long *l)
+{
+    size_t at = 0;
+    for (int a = dim - 1; a >= 0; a--) {
+        if (labs(l[a]) >= (long)(m[a] / 2))
+            return SIZE_MAX;
+        at = at * m[a] + (size_t)(l[a] < 0 ? l[a] + (long)m[a] : l[a]);
+    }
+    for (int a = dim; a < 3; a++)
+        if (l[a])
+            return SIZE_MAX;
+    return at;
+}
+
+int nl_verdict_alloc3(int dim, const size_t *n, size_t nlags, const long (*lags)[3], nl_verdict **out)
 {
     nl_verdict *v;
     int st;
@@ -48,17 +65,30 @@ int nl_verdict_alloc(int dim, const size_t *n, size_t nlags, const long (*lags)[
         nl_verdict_free(v);
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu lags", nlags);
     }
-    for (size_t i = 0; i < nlags; i++) {
-        size_t m0 = v->full->n[0], m1 = v->full->n[1];
-        long lx = lags[i][0], ly = lags[i][1];
-        if (labs(lx) >= (long)(m0 / 2) || (ly && (dim < 2 || labs(ly) >= (long)(m1 / 2)))) {
+    for (size_t i = 0; i < nlags; i++)
+        if ((v->at[i] = lag_index(dim, v->full->n, lags[i])) == SIZE_MAX) {
             nl_verdict_free(v);
-            return NL_ERROR(NL_EINVAL, "verdict: lag (%ld, %ld) is outside the field", lx, ly);
+            return NL_ERROR(NL_EINVAL, "verdict: lag (%ld, %ld, %ld) is outside the field", lags[i][0], lags[i][1],
+                            lags[i][2]);
         }
-        v->at[i] = (size_t)(ly < 0 ? ly + (long)m1 : ly) * m0 + (size_t)(lx < 0 ? lx + (long)m0 : lx);
-    }
     *out = v;
     return NL_OK;
+}
+
+int nl_verdict_alloc(int dim, const size_t *n, size_t nlags, const long (*lags)[2], nl_verdict **out)
+{
+    long (*l3)[3];
+    int st;
+    *out = NULL;
+    if (nlags == 0)
+        return NL_ERROR(NL_EINVAL, "verdict: expected at least one lag");
+    if (!(l3 = malloc(nlags * sizeof *l3)))
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu lags", nlags);
+    for (size_t i = 0; i < nlags; i++)
+        l3[i][0] = lags[i][0], l3[i][1] = lags[i][1], l3[i][2] = 0;
+    st = nl_verdict_alloc3(dim, n, nlags, (const long (*)[3])l3, out);
+    free(l3);
+    return st;
 }
 
 int nl_verdict_add(nl_verdict *v, const nl_field *x)

@@ -18,8 +18,9 @@
  * noiselab validate, experiments/fft_acf.c and the statistical tests use
  * this module.
  *
- * Lags are in samples, (lx, ly) with ly = 0 in 1D; negative lags are read
- * at their wrapped index of the full estimate (core/autocorr.h).
+ * Lags are in samples, (lx, ly) with ly = 0 in 1D, or (lx, ly, lz) with
+ * nl_verdict_alloc3; negative lags are read at their wrapped index of the
+ * full estimate (core/autocorr.h).
  * Thread safety: nl_verdict_alloc and nl_verdict_free plan FFTW (not
  * thread-safe: one thread at a time); nl_verdict_add on distinct
  * accumulators may run concurrently; the rest is reentrant. */
@@ -38,6 +39,9 @@ typedef struct nl_verdict nl_verdict;
  * failure).  Returns NL_OK, NL_EINVAL (dim, nlags or a lag out of range),
  * NL_ETOOBIG, NL_ENOMEM, NL_EFAIL (FFTW could not plan). */
 int nl_verdict_alloc(int dim, const size_t *n, size_t nlags, const long (*lags)[2], nl_verdict **out);
+
+/* The same with lags (lx, ly, lz) (ly = 0 in 1D, lz = 0 below 3D). */
+int nl_verdict_alloc3(int dim, const size_t *n, size_t nlags, const long (*lags)[3], nl_verdict **out);
 
 /* Add one realization (the dim and n of the accumulator).  Returns NL_OK or
  * NL_EINVAL (x does not match; nothing added). */

@@ -125,10 +125,7 @@ static void parse_origin(const char *s, long *o)
 /* An integer option in min..max, checked before it is narrowed to int. */
 static int parse_int(const char *opt, const char *s, int min, int max)
 {
-    size_t v = cli_parse_count(opt, s, (size_t)min);
-    if (v > (size_t)max)
-        cli_die(2, "%s: expected %d to %d, got \"%s\"", opt, min, max, s);
-    return (int)v;
+    return cli_synth_parse_int(opt, s, min, max);
 }
 
 static int parse_displacements(const char *opt, const char *s)
@@ -261,7 +258,7 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
         g->given_L = 1;
         break;
     case 'N':
-        job->N = strcmp(optarg, "auto") == 0 ? 0 : parse_int("--neighborhood", optarg, 1, INT_MAX);
+        job->N = cli_synth_parse_neighborhood(optarg);
         g->given_N = 1;
         break;
     case 't':

@@ -45,6 +45,12 @@ typedef struct {
     json_t *report;        /* method-specific JSON report (owned) */
 } cli_synth_result;
 
+/* An integer option in min..max, checked before it is narrowed to int
+ * (exit 2 naming opt otherwise). */
+int cli_synth_parse_int(const char *opt, const char *s, int min, int max);
+/* --neighborhood N|auto: N >= 1, or 0 for auto (exit 2 otherwise). */
+int cli_synth_parse_neighborhood(const char *s);
+
 /* Each exits through cli_die on bad input; returns only on success. */
 void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
 void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);

@@ -317,27 +317,29 @@ Test(cli, nl_synth_from_regenerates)
     bad("synth --from from-a.exr --size 8 -o out.exr", "--from");
 }
 
-/* validate writes a complete report; a model that is not positive definite
- * is refused by every method. */
+/* validate writes a complete report (a tolerance far above what 16
+ * realizations resolve, so that every method is within it); a model that is
+ * not positive definite is refused by every method: exit 3, report kept. */
 Test(cli, validate_reports)
 {
     char path[512];
     json_error_t je;
     json_t *j;
-    int rc = run_noiselab("validate --acf markov:scale=5 --dim 1 --size 1024 --realizations 16 -o v1", out, sizeof out,
+    int rc = run_noiselab("validate --acf markov:scale=5 --dim 1 --size 1024 --realizations 16 --tolerance 10 -o v1", out, sizeof out,
                           err, sizeof err);
     cr_assert_eq(rc, 0, "%s", err);
     snprintf(path, sizeof path, "%s/v1/verdict.json", scratch_dir());
     j = json_load_file(path, 0, &je);
     cr_assert_not_null(j, "%s", je.text);
     cr_expect(json_is_true(json_object_get(j, "positive_definite")));
-    cr_expect(json_is_true(json_object_get(json_object_get(json_object_get(j, "methods"), "fft"), "pass")));
+    cr_expect_str_eq(json_string_value(json_object_get(json_object_get(json_object_get(j, "methods"), "fft"), "verdict")),
+                     "within");
     json_decref(j);
     snprintf(path, sizeof path, "%s/v1/index.md", scratch_dir());
     cr_expect(file_exists(path));
     rc = run_noiselab("validate --acf 'expr:cos(4*r)*exp(-r)' --dim 2 --size 64 --realizations 4 -o v2", out, sizeof out,
                       err, sizeof err);
-    cr_assert_eq(rc, 0, "%s", err);
+    cr_assert_eq(rc, 3, "%s", err);
     cr_expect(strstr(out, "NOT positive definite") != NULL, "%s", out);
     cr_expect(strstr(out, "fft refused") != NULL, "%s", out);
 }

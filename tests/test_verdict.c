@@ -3,6 +3,7 @@
  * itself passing a correct target and failing a wrong one. */
 #include "../analysis/acf.h"
 #include "../analysis/verdict.h"
+#include "../core/nl_error.h"
 #include "../core/rng.h"
 
 #include <criterion/criterion.h>
@@ -98,5 +99,33 @@ Test(verdict, passes_truth_fails_a_wrong_target)
     cr_expect_gt(nl_verdict_zmax(11, mean, se, wrong, &worst), zcrit);
     cr_expect_eq(worst, 0);
     nl_verdict_free(v);
+    nl_field_free(x);
+}
+
+/* Lags in 3D (nl_verdict_alloc3): the accumulator reads the full estimate
+ * at each lag's wrapped index, negative components included; a lag at or
+ * beyond the field's extent, or a z lag below 3D, is refused. */
+Test(verdict, lags_in_3d)
+{
+    size_t n[3] = {8, 6, 5};
+    long lags[3][3] = {{0, 0, 0}, {1, -2, 3}, {-3, 1, -4}}, bad[1][3] = {{0, 0, 5}}, flat[1][3] = {{0, 0, 1}};
+    double mean[3];
+    nl_field *x = nl_field_alloc(3, n, NULL, NULL), *full;
+    nl_verdict *v;
+    white(x, 7);
+    cr_assert_eq(nl_verdict_alloc3(3, n, 3, (const long (*)[3])lags, &v), 0);
+    cr_assert_eq(nl_verdict_add(v, x), 0);
+    cr_assert_eq(nl_verdict_stats(v, mean, NULL), 0);
+    cr_assert_eq(nl_acf_full(x, 0.0, NL_ACF_UNBIASED, &full), 0);
+    for (int i = 0; i < 3; i++) {
+        size_t at = 0;
+        for (int a = 2; a >= 0; a--)
+            at = at * full->n[a] + (size_t)(lags[i][a] + (lags[i][a] < 0 ? (long)full->n[a] : 0));
+        cr_expect_eq(mean[i], full->data[at], "lag %d", i);
+    }
+    cr_expect_eq(nl_verdict_alloc3(3, n, 1, (const long (*)[3])bad, &(nl_verdict *){NULL}), NL_EINVAL);
+    cr_expect_eq(nl_verdict_alloc3(2, n, 1, (const long (*)[3])flat, &(nl_verdict *){NULL}), NL_EINVAL);
+    nl_verdict_free(v);
+    nl_field_free(full);
     nl_field_free(x);
 }
