@@ -16,7 +16,7 @@
 #include <string.h>
 #include <time.h>
 
-static const char *const names[NL_VALIDATE_METHODS] = {"fft", "circulant", "subdiv", "sparse"};
+static const char *const names[NL_VALIDATE_METHODS] = {"fft", "circulant", "subdiv", "subdiv-correlated", "sparse"};
 
 const char *nl_validate_method_name(int method)
 {
@@ -152,10 +152,11 @@ static void exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, nl_validate_
  * from the coarse FFT); levels that are not are reported as such. */
 static int refused_subdiv(const nl_model *m, const nl_subdiv_options *so, int st, nl_validate_result *v)
 {
-    nl_validate_method_result *r = &v->method[NL_VALIDATE_SUBDIV];
+    nl_validate_method_result *r = &v->method[so->displacements ? NL_VALIDATE_SUBDIV_CORR : NL_VALIDATE_SUBDIV];
     nl_subdiv_coeffs *c;
     refuse(r, st);
-    if (v->dim > 2 || nl_subdiv_coeffs_alloc(m, v->dim, so->levels, ldexp(1.0, so->levels), so->N, so->tol, so->nmax, &c))
+    if (v->dim > 2 || so->displacements ||
+        nl_subdiv_coeffs_alloc(m, v->dim, so->levels, ldexp(1.0, so->levels), so->N, so->tol, so->nmax, &c))
         return st;
     if (c->flags & NL_SUBDIV_NOT_PD)
         refuse(r, st = NL_ERROR(NL_ENOTPD, "not positive definite at some level"));
@@ -166,21 +167,28 @@ static int refused_subdiv(const nl_model *m, const nl_subdiv_options *so, int st
 }
 
 /* Periodic subdivision at unit spacing with the options' neighbourhood
- * and levels, and its exact ACF. */
-static int plan_subdiv(const nl_model *m, const nl_validate_options *o, nl_validate_result *v, nl_subdiv_plan **p)
+ * and levels, and (independent displacements) its exact ACF; correlated:
+ * displacements with the filter's default taps, compared with the target
+ * only. */
+static int plan_subdiv(const nl_model *m, const nl_validate_options *o, int correlated, nl_validate_result *v,
+                       nl_subdiv_plan **p)
 {
     nl_subdiv_options so;
     int st;
     nl_subdiv_options_default(&so);
     so.levels = o->subdiv_levels ? o->subdiv_levels : nl_subdiv_default_levels(v->dim, v->n, 16);
     so.N = o->subdiv_N, so.tol = o->subdiv_tol, so.nmax = 6, so.random_nb = o->subdiv_random;
+    so.displacements = correlated ? NL_SUBDIV_DISP_ERROR : NL_SUBDIV_DISP_INDEPENDENT;
+    if (correlated && so.random_nb)
+        return NL_ERROR(NL_EINVAL, "correlated displacements: not with random neighbourhoods");
     if (v->dim > 2)
         return NL_ERROR(NL_EINVAL, "subdivision: expected a 1D or 2D grid, got %dD", v->dim);
     if (!so.levels)
         return NL_ERROR(NL_EINVAL, "subdivision: expected sizes divisible by 2 with at least 32 samples");
     if ((st = nl_subdiv_plan_alloc(m, v->dim, v->n, 1.0, &so, p)))
         return refused_subdiv(m, &so, st, v);
-    exact_acf(nl_subdiv_plan_coeffs(*p), m, v);
+    if (!correlated)
+        exact_acf(nl_subdiv_plan_coeffs(*p), m, v);
     return NL_OK;
 }
 
@@ -212,8 +220,8 @@ int nl_validate_method(const nl_model *m, int meth, const nl_validate_options *o
         st = nl_synth_fft_plan_alloc(m, v->dim, v->n, NULL, 0, &pf), plan = pf, fn = run_fft;
     else if (meth == NL_VALIDATE_CIRCULANT)
         st = nl_synth_circulant_plan_alloc(m, v->dim, v->n, NULL, 0, 16, &pc), plan = pc, fn = run_circ;
-    else if (meth == NL_VALIDATE_SUBDIV)
-        st = plan_subdiv(m, o, v, &pd), plan = pd, fn = run_sub;
+    else if (meth == NL_VALIDATE_SUBDIV || meth == NL_VALIDATE_SUBDIV_CORR)
+        st = plan_subdiv(m, o, meth == NL_VALIDATE_SUBDIV_CORR, v, &pd), plan = pd, fn = run_sub;
     else if (v->dim > 2)
         st = NL_ERROR(NL_EINVAL, "sparse convolution: expected a 1D or 2D grid, got %dD", v->dim);
     else

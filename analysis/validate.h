@@ -90,7 +90,14 @@
 #define NL_VALIDATE_BANDS 16
 
 /* The methods, in the order nl_validate_model runs them. */
-enum { NL_VALIDATE_FFT, NL_VALIDATE_CIRCULANT, NL_VALIDATE_SUBDIV, NL_VALIDATE_SPARSE, NL_VALIDATE_METHODS };
+enum {
+    NL_VALIDATE_FFT,
+    NL_VALIDATE_CIRCULANT,
+    NL_VALIDATE_SUBDIV,
+    NL_VALIDATE_SUBDIV_CORR, /* subdivision with correlated displacements (synth/subdiv.h) */
+    NL_VALIDATE_SPARSE,
+    NL_VALIDATE_METHODS
+};
 
 /* The directions: lag l stands for (l, 0, 0), (0, l, 0), (0, 0, l) and
  * (l, l, 0) in 2D or (l, l, l) in 3D. */
@@ -99,7 +106,8 @@ enum { NL_VALIDATE_X, NL_VALIDATE_Y, NL_VALIDATE_Z, NL_VALIDATE_DIAG, NL_VALIDAT
 /* Verdicts against the tolerance. */
 enum { NL_VALIDATE_WITHIN, NL_VALIDATE_OFF, NL_VALIDATE_UNRESOLVED };
 
-/* "fft", "circulant", "subdiv", "sparse"; NULL outside 0..NL_VALIDATE_METHODS - 1. */
+/* "fft", "circulant", "subdiv", "subdiv-correlated", "sparse"; NULL outside
+ * 0..NL_VALIDATE_METHODS - 1. */
 const char *nl_validate_method_name(int method);
 
 /* "x", "y", "z", "diagonal"; NULL outside 0..NL_VALIDATE_DIRS - 1. */
