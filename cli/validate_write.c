@@ -9,7 +9,7 @@
 #define NM NL_VALIDATE_METHODS
 #define ND NL_VALIDATE_DIRS
 
-static const char *const colour[NM] = {"#1f4e99", "#2e8b57", "#b22222", "#8b6914"};
+static const char *const colour[NM] = {"#1f4e99", "#2e8b57", "#b22222", "#d2691e", "#8b6914"};
 
 static FILE *open_in(const cli_validate *v, const char *name)
 {

@@ -337,6 +337,12 @@ Test(cli, validate_reports)
     json_decref(j);
     snprintf(path, sizeof path, "%s/v1/index.md", scratch_dir());
     cr_expect(file_exists(path));
+    /* every method has its line in the plots: gnuplot made all of them */
+    for (int k = 0; k < 3; k++) {
+        static const char *const png[] = {"acf.png", "error.png", "spectrum.png"};
+        snprintf(path, sizeof path, "%s/v1/%s", scratch_dir(), png[k]);
+        cr_expect(file_exists(path), "%s missing", png[k]);
+    }
     rc = run_noiselab("validate --acf 'expr:cos(4*r)*exp(-r)' --dim 2 --size 64 --realizations 4 -o v2", out, sizeof out,
                       err, sizeof err);
     cr_assert_eq(rc, 3, "%s", err);
