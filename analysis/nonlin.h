@@ -11,7 +11,10 @@
  * (a symmetric target density) has only odd n: a narrow band at f0 spreads
  * to 3 f0, 5 f0, ... (GI '86 Fig. 7).
  * The c_n are computed by Gauss-Hermite quadrature (GSL fixed quadrature,
- * 400 nodes); the variance left out by K terms, Var(y) - sum_{n<K} c_n^2 n!,
+ * 400 nodes) for a distribution, by adaptive quadrature (GSL QAGS) for an
+ * expr: nonlinearity G(z) (core/dist.h: any memoryless g, GI '86 section 4,
+ * e.g. z^2, exp(z), sign), whose jumps and kinks fixed nodes resolve
+ * slowly; the variance left out by K terms, Var(y) - sum_{n<K} c_n^2 n!,
  * is reported as the truncation error. */
 #ifndef NL_NONLIN_H
 #define NL_NONLIN_H

@@ -301,6 +301,9 @@ int cli_cmd_hist(int argc, char **argv)
     parse(argc, argv, &o);
     if (o.against && (st = nl_dist_parse(o.against, &dist)))
         cli_die_status(st);
+    if (dist && nl_dist_is_function(dist))
+        cli_die(2, "--against %s: expected a distribution (an expr: nonlinearity has no CDF to test against)",
+                o.against);
     x = read_all(&o);
     o.tmp = cli_out_begin(o.out);
     edges = cli_malloc((o.bins + 1) * sizeof *edges);

@@ -13,7 +13,10 @@
 static const char help[] =
     "usage: noiselab nonlin --acf SPEC --g DIST [--size N] [--spacing H] [--terms K]\n"
     "                       [--json] [-o ACF.tsv] [--psd PSD.tsv]\n\n"
-    "Predicts what the shaping y = F_DIST^-1(Phi(x / sd)) (noiselab shape) does to a\n"
+    "Predicts what the shaping y = F_DIST^-1(Phi(x / sd)) (noiselab shape), or any\n"
+    "memoryless nonlinearity y = G(x / sd) given as --g expr:G (a function of x, e.g.\n"
+    "expr:x^2, expr:exp(x), expr:2*step(x)-1; its Hermite coefficients by adaptive\n"
+    "quadrature, which finds jumps and kinks), does to a\n"
     "Gaussian input with autocorrelation SPEC (Beckmann's Hermite series, GI '86\n"
     "section 4.1): output ACF sum_n c_n^2 n! rho^n and its spectrum, the sum of\n"
     "n-fold self-convolutions of the input's, on a periodic 1D grid of N samples\n"

@@ -18,7 +18,10 @@ static const char help[] =
     "--empirical the field's own ranks (exact for any input distribution).\n\n"
     "DIST: gauss[:mean=,sd=], uniform[:a=,b=], laplace[:a=], hyperbolic (sech density),\n"
     "      lognormal[:zeta=,sigma=], chi2-1 (squared Gaussian), power:p=P (U^P, the\n"
-    "      paper's y^2.5 terrains on the uniform rank), table:FILE (TSV columns u y)\n";
+    "      paper's y^2.5 terrains on the uniform rank), table:FILE (TSV columns u y),\n"
+    "      or any nonlinearity expr:G, y = G(z) of the standardised field z (e.g.\n"
+    "      expr:x^2, expr:exp(x), expr:2*step(x)-1; variable x; with --empirical z is\n"
+    "      the Gaussian score of the rank)\n";
 
 int cli_cmd_shape(int argc, char **argv)
 {

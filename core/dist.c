@@ -5,13 +5,14 @@
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_randist.h>
+#include <matheval.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-enum { D_GAUSS, D_UNIFORM, D_LAPLACE, D_HYPERBOLIC, D_LOGNORMAL, D_CHI2, D_POWER, D_TABLE };
+enum { D_GAUSS, D_UNIFORM, D_LAPLACE, D_HYPERBOLIC, D_LOGNORMAL, D_CHI2, D_POWER, D_TABLE, D_EXPR };
 
 struct nl_dist {
     int kind;         /* D_* */
@@ -19,7 +20,33 @@ struct nl_dist {
     double p1, p2;    /* parameters (mean/sd, a/b, a, zeta/sigma, P) */
     double *u, *y;    /* table: quantile samples */
     size_t n;         /* table length */
+    void *eval;       /* expr: libmatheval evaluator of g(x) */
 };
+
+/* An expression nonlinearity g(x) of the standardised Gaussian input x:
+ * one variable, x, and g finite wherever shaping and the Hermite
+ * quadrature evaluate it (|x| <= NL_DIST_XMAX, probed at 2001 points). */
+static int parse_expr(nl_dist *d, const char *text)
+{
+    char **names;
+    int count;
+    if (!*text)
+        return NL_ERROR(NL_EINVAL, "expr: expected a function of x after \"expr:\" (e.g. expr:x^2)");
+    if (!(d->eval = evaluator_create((char *)text)))
+        return NL_ERROR(NL_EINVAL, "%s: malformed expression \"%s\"", d->spec, text);
+    evaluator_get_variables(d->eval, &names, &count);
+    for (int i = 0; i < count; i++)
+        if (strcmp(names[i], "x"))
+            return NL_ERROR(NL_EINVAL, "%s: unknown variable \"%s\" (expected x, the standardised Gaussian input)",
+                            d->spec, names[i]);
+    for (int i = 0; i <= 2000; i++) {
+        double x = NL_DIST_XMAX * (i - 1000) / 1000.0, g = nl_dist_transform(d, x);
+        if (!isfinite(g))
+            return NL_ERROR(NL_EINVAL, "%s: g(%g) = %g; expected a function finite for |x| <= %g", d->spec, x, g,
+                            NL_DIST_XMAX);
+    }
+    return NL_OK;
+}
 
 static int param(const char *spec, const char *key, double def, double *v)
 {
@@ -143,6 +170,16 @@ int nl_dist_parse(const char *spec, nl_dist **out)
         return NL_ERROR(NL_ENOMEM, "out of memory");
     }
     d->kind = -1;
+    if (nl == 4 && strncmp(spec, "expr", 4) == 0 && spec[4] == ':') {
+        d->kind = D_EXPR;
+        st = parse_expr(d, spec + 5);
+        if (st) {
+            nl_dist_free(d);
+            return st;
+        }
+        *out = d;
+        return NL_OK;
+    }
     if (nl == 5 && strncmp(spec, "table", 5) == 0) {
         d->kind = D_TABLE;
         st = spec[5] == ':' && spec[6] ? load_table(d, spec + 6)
@@ -155,7 +192,7 @@ int nl_dist_parse(const char *spec, nl_dist **out)
             }
         if (d->kind < 0)
             st = NL_ERROR(NL_EINVAL, "distribution: unknown \"%.*s\" (expected gauss, uniform, laplace, hyperbolic, "
-                          "lognormal, chi2-1, power:p=P or table:FILE)", (int)nl, spec);
+                          "lognormal, chi2-1, power:p=P, table:FILE or expr:g(x))", (int)nl, spec);
     }
     if (!st) {
         switch (d->kind) {
@@ -197,7 +234,22 @@ void nl_dist_free(nl_dist *d)
 {
     if (!d)
         return;
+    if (d->eval)
+        evaluator_destroy(d->eval);
     free(d->u), free(d->y), free(d->spec), free(d);
+}
+
+int nl_dist_is_function(const nl_dist *d) { return d->kind == D_EXPR; }
+
+double nl_dist_transform(const nl_dist *d, double x)
+{
+    if (d->kind == D_EXPR) {
+        char *name = "x";
+        return evaluator_evaluate(d->eval, 1, &name, &x);
+    }
+    /* u inside (0, 1), so that every quantile is finite */
+    double u = fmin(fmax(gsl_cdf_ugaussian_P(x), 1e-300), 1 - 1e-16);
+    return nl_dist_quantile(d, u);
 }
 
 const char *nl_dist_spec(const nl_dist *d) { return d->spec; }
@@ -250,6 +302,7 @@ double nl_dist_cdf(const nl_dist *d, double y)
     case D_LOGNORMAL: return gsl_cdf_lognormal_P(y, d->p1, d->p2);
     case D_CHI2: return chi2_cdf(y);
     case D_POWER: return y <= 0 ? 0 : y >= 1 ? 1 : pow(y, 1 / d->p1);
+    case D_EXPR: return NAN;
     default: return table_interp(d->y, d->u, d->n, y);
     }
 }
@@ -278,6 +331,7 @@ double nl_dist_quantile(const nl_dist *d, double u)
     case D_LOGNORMAL: return gsl_cdf_lognormal_Pinv(u, d->p1, d->p2);
     case D_CHI2: return chi2_quantile(u);
     case D_POWER: return pow(u, d->p1);
+    case D_EXPR: return NAN;
     default: return table_interp(d->u, d->y, d->n, u);
     }
 }

@@ -13,6 +13,13 @@
  *   table:FILE                 a quantile table: TSV with header, columns u y,
  *                              u increasing from 0 to 1, y non-decreasing;
  *                              linear interpolation
+ *   expr:G                     not a distribution but a memoryless
+ *                              nonlinearity: y = g(x) of the standardised
+ *                              Gaussian input x (libmatheval syntax, e.g.
+ *                              expr:x^2, expr:exp(x), expr:sgn(x)); g must be
+ *                              finite for |x| <= NL_DIST_XMAX.  Its CDF, density,
+ *                              quantile, mean and variance are NAN (unknown in
+ *                              closed form); nl_dist_transform evaluates it.
  *
  * nl_dist_parse returns NL_OK and a new distribution in *out (release it
  * with nl_dist_free; NULL is a no-op), or NL_EINVAL (unknown name or key, a
@@ -39,6 +46,22 @@ const char *nl_dist_spec(const nl_dist *d);  /* owned by d */
 double nl_dist_cdf(const nl_dist *d, double y);
 double nl_dist_pdf(const nl_dist *d, double y);  /* NAN for table: */
 double nl_dist_quantile(const nl_dist *d, double u);
+
+/* The memoryless map of a standard Gaussian input x onto d (Lewis GI '86,
+ * section 4): g(x) = F^-1(Phi(x)) for a distribution, with Phi(x) kept in
+ * [1e-300, 1 - 1e-16] so that the quantile is finite; the expression's g(x)
+ * for expr:.  Thread-safe for distributions; for expr: as thread-safe as
+ * libmatheval's evaluator (not: one thread per nl_dist). */
+double nl_dist_transform(const nl_dist *d, double x);
+
+/* 1 for an expr: nonlinearity (no CDF: not a target for goodness of fit or
+ * rank shaping), 0 for a distribution. */
+int nl_dist_is_function(const nl_dist *d);
+
+/* Half-width of the input range over which expr: nonlinearities must be
+ * finite (that of shaping's table, synth/shape.h, and beyond the Hermite
+ * quadrature's effective nodes). */
+#define NL_DIST_XMAX 8.5
 
 /* Mean and variance (NAN where not finite or not known in closed form). */
 double nl_dist_mean(const nl_dist *d);

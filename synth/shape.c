@@ -18,8 +18,12 @@ static int synth_shape(nl_field *f, const nl_dist *to, int empirical)
         if (!rank)
             return NL_ERROR(NL_ENOMEM, "out of memory");
         gsl_sort_index(rank, f->data, 1, f->count);  /* rank[r] = index of the r-th smallest */
-        for (size_t r = 0; r < f->count; r++)
-            f->data[rank[r]] = nl_dist_quantile(to, ((double)r + 0.5) / (double)f->count);
+        for (size_t r = 0; r < f->count; r++) {
+            double u = ((double)r + 0.5) / (double)f->count;
+            /* a nonlinearity maps the Gaussian score of the rank */
+            f->data[rank[r]] = nl_dist_is_function(to) ? nl_dist_transform(to, gsl_cdf_ugaussian_Pinv(u))
+                                                       : nl_dist_quantile(to, u);
+        }
         free(rank);
         return NL_OK;
     }
@@ -31,12 +35,8 @@ static int synth_shape(nl_field *f, const nl_dist *to, int empirical)
         free(g);
         return NL_ERROR(NL_EINVAL, "shape: the field is constant; expected a random field");
     }
-    for (int i = 0; i <= NL_SHAPE_TABLE; i++) {
-        double u = gsl_cdf_ugaussian_P(-NL_SHAPE_ZMAX + i * step);
-        /* keep u inside (0, 1) so that every quantile is finite */
-        u = fmin(fmax(u, 1e-300), 1 - 1e-16);
-        g[i] = nl_dist_quantile(to, u);
-    }
+    for (int i = 0; i <= NL_SHAPE_TABLE; i++)
+        g[i] = nl_dist_transform(to, -NL_SHAPE_ZMAX + i * step);
     for (size_t i = 0; i < f->count; i++) {
         double t = ((f->data[i] - mean) / sd + NL_SHAPE_ZMAX) / step;
         if (t <= 0)

@@ -8,7 +8,9 @@
  * and linear interpolation (z beyond the range takes the end value), or
  * the field's empirical CDF (the rank (r + 1/2) / N of each sample; ties
  * keep their order), which gives the target histogram exactly whatever the
- * input distribution. */
+ * input distribution.  An expr: nonlinearity (core/dist.h) is applied as
+ * y = g(z) to the standardised z (the table) or to the Gaussian score
+ * Phi^-1((r + 1/2) / N) of the rank. */
 #ifndef NL_SYNTH_SHAPE_H
 #define NL_SYNTH_SHAPE_H
 
