@@ -172,6 +172,25 @@ double nl_subdiv_disp_realised(const nl_subdiv_level *l, int dim, int a, int b, 
 double nl_subdiv_disp_target(const nl_subdiv_level *l, const nl_model *m, int dim, int target, int a, int b, int mx,
                              int my);
 
+/* Levinson's recursion for the 1D midpoint equations (synth/subdiv_levinson.c,
+ * Lewis 1987: "the Levinson algorithm would need to be modified ... since
+ * only even neighborhood sizes are used"): at spacing s, for N = 1, 2, ...
+ * up to nmax (1..64), the 2N coefficients of eq. (4) in O(N) per step, and
+ * var[N-1] the error variance (7).  rule: NL_SUBDIV_STOP_NONE (every N to
+ * nmax), NL_SUBDIV_STOP_VARIANCE (the paper's: stop at the first N whose
+ * variance is below tol R(0)), NL_SUBDIV_STOP_IMPROVEMENT (stop when
+ * growing N improves the variance by less than tol R(0); *nout is then the
+ * smaller N).  *nout is the N whose coefficients are in a (2 nmax doubles,
+ * neighbourhood order) and whose variance is var[*nout - 1]; the recursion
+ * also stops, short of nmax, where the system stops being positive definite
+ * or its prediction error power falls below 1 / NL_SUBDIV_COND_MAX (then
+ * the condition number is above NL_SUBDIV_COND_MAX): the caller then solves directly (nl_subdiv_solve), which flags and
+ * pseudo-inverts.  *nout = 0 when even N = 1 fails.  NL_OK, NL_EINVAL (nmax
+ * out of range, R(0) not positive), NL_ENOMEM.  As thread-safe as m. */
+enum { NL_SUBDIV_STOP_NONE, NL_SUBDIV_STOP_IMPROVEMENT, NL_SUBDIV_STOP_VARIANCE };
+int nl_subdiv_levinson(const nl_model *m, double s, int nmax, int rule, double tol, double *a, double *var,
+                       int *nout);
+
 /* Eq. (12) for any observation set: n points pts[i*dim..] and the target,
  * in lag units.  Fills cls (a must hold n doubles); `reset` gives the
  * nearest-neighbour coefficients to use when the pseudo-inverse is uniform

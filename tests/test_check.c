@@ -196,7 +196,7 @@ static const struct {
     {"image:img.exr", "VVR", "not 3D"},
 };
 
-Test(check_cli, every_kind_every_dim, .timeout = 600)
+Test(check_cli, every_kind_every_dim)
 {
     cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 64x64 --seed 3 -o img.exr", NULL, 0, err,
                               sizeof err), 0, "%s", err);
@@ -239,7 +239,7 @@ static double jnum(json_t *o, const char *key)
  * on a grid that missed its band.  A power spectrum is non-negative and
  * band-limited: positive definite, infinitely differentiable, the band's
  * exponent d as the density's decay. */
-Test(check_cli, power_in_every_dim, .timeout = 300)
+Test(check_cli, power_in_every_dim)
 {
     for (int dim = 1; dim <= 3; dim++) {
         json_t *o = must("power:d=3", dim);
@@ -328,7 +328,7 @@ static void neighbour_valid(json_t *o, int dim)
 /* The omega of the suggested neighbour, from "FAMILY:omega=W...". */
 static double neighbour_omega(json_t *o)
 {
-    const char *s = json_string_value(json_array_get(json_object_get(o, "neighbours"), 0)), *p;
+    const char *s = json_string_value(json_array_get(json_object_get(o, "neighbours"), 0)), *p = NULL;
     cr_assert(s && (p = strstr(s, "omega=")), "first neighbour: %s", s ? s : "none");
     return strtod(p + 6, NULL);
 }
@@ -340,7 +340,7 @@ static double neighbour_omega(json_t *o)
  * exact at k = 0), 3 digits, rounded down: within 3% below the exact
  * boundary (5% allowed for gauss-osc, whose negative lobe the scan finds
  * with its frequency resolution). */
-Test(check_cli, says_why_and_a_valid_neighbour, .timeout = 300)
+Test(check_cli, says_why_and_a_valid_neighbour)
 {
     json_t *o = must("gauss-osc:omega=10", 3);
     double w;

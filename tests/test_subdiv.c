@@ -309,3 +309,56 @@ Test(subdiv, random_neighbourhoods)
     nl_field_free(a), nl_field_free(b);
     nl_model_free(m), nl_subdiv_coeffs_free(c), nl_subdiv_coeffs_free(nn);
 }
+
+/* Levinson's recursion equals the direct solve of eq. (4) for every N
+ * where the system is well conditioned (both are backward stable there;
+ * 1e-10 leaves room for condition numbers up to about 1e5), stops where
+ * the direct solve would call the system singular (the Gaussian at a fine
+ * spacing), and the paper's stopping rule stops at the first N whose error
+ * variance (7) is below tol R(0). */
+Test(subdiv, levinson_equals_direct)
+{
+    static const struct {
+        const char *spec;
+        double s;
+    } c[] = {{"markov:scale=8", 1}, {"markaussian:alpha=1.4,scale=8", 1},
+             {"expr:100*cos(10*t)*exp(-abs(t))", 0.05}, {"matern:nu=1.5,scale=4", 1}};
+    for (size_t i = 0; i < sizeof c / sizeof *c; i++) {
+        nl_model *m;
+        double a[32], var[16];
+        int nout;
+        cr_assert_eq(nl_model_parse(c[i].spec, &m), 0);
+        for (int N = 1; N <= 16; N++) {
+            double pts[32], tgt = 0.5 * c[i].s, ad[32];
+            nl_subdiv_class cl;
+            cl.a = ad;
+            cr_assert_eq(nl_subdiv_levinson(m, c[i].s, N, NL_SUBDIV_STOP_NONE, 0, a, var, &nout), NL_OK);
+            cr_assert_eq(nout, N, "%s: stopped at %d of %d", c[i].spec, nout, N);
+            for (int k = 0; k < 2 * N; k++)
+                pts[k] = (k + 1 - N) * c[i].s;
+            cr_assert_eq(nl_subdiv_solve(m, 1, (size_t)(2 * N), pts, &tgt, NULL, &cl), NL_OK);
+            for (int k = 0; k < 2 * N; k++)
+                cr_expect(fabs(a[k] - ad[k]) <= 1e-10, "%s N=%d a[%d]: %.15g vs %.15g", c[i].spec, N, k, a[k], ad[k]);
+            cr_expect(fabs(var[N - 1] - cl.raw_variance) <= 1e-10 * cl.raw_variance + 1e-14, "%s N=%d variance",
+                      c[i].spec, N);
+        }
+        {
+            double zero = 0, r0 = nl_model_acf(m, 1, &zero), t = 1.0001 * var[3] / r0;  /* reached at N <= 4 */
+            cr_assert_eq(nl_subdiv_levinson(m, c[i].s, 16, NL_SUBDIV_STOP_VARIANCE, t, a, var, &nout), NL_OK);
+            cr_expect(var[nout - 1] < t * r0 && (nout == 1 || var[nout - 2] >= t * r0), "%s: stopped at N=%d",
+                      c[i].spec, nout);
+        }
+        nl_model_free(m);
+    }
+}
+
+Test(subdiv, levinson_stops_where_singular)
+{
+    nl_model *m;
+    double a[32], var[16];
+    int nout;
+    cr_assert_eq(nl_model_parse("gauss:scale=3", &m), 0);
+    cr_assert_eq(nl_subdiv_levinson(m, 0.25, 16, NL_SUBDIV_STOP_NONE, 0, a, var, &nout), NL_OK);
+    cr_expect(nout >= 1 && nout < 16, "the Gaussian at spacing 0.25 is singular before N = 16, reached %d", nout);
+    nl_model_free(m);
+}
