@@ -50,7 +50,7 @@ typedef struct {
  * coordinates).  *out (NULL on failure) is released by nl_variogram_free.
  * Errors: NL_EINVAL for fewer than 2 points, a coordinate or value that is
  * not finite, all points at one place (no positive distance), a width or
- * cutoff that is negative or not finite, more than 10^7 bins, an unknown
+ * cutoff that is negative or not finite, more than 10^6 bins, an unknown
  * estimator, a direction or tolerance that is not finite (tolerance must lie
  * in [0, 90]), or no pair within the cutoff; NL_ETOOBIG or NL_ENOMEM when the
  * index outgrows memory.  Thread-safe. */
