@@ -37,11 +37,12 @@ int nl_vg_check_options(const nl_variogram_options *o)
     return NL_OK;
 }
 
-/* The bins of the cutoff diag / 3 (diag: bounding-box diagonal). */
+/* The bins; the default cutoff is gstat's: 0.33333 (its DEF_fraction, not
+ * 1/3) times the bounding-box diagonal diag, so that bins match to rounding. */
 int nl_vg_bins(const nl_variogram_options *o, double diag, nl_vg_acc *acc)
 {
     memset(acc, 0, sizeof *acc);
-    acc->cutoff = o->cutoff > 0 ? o->cutoff : diag / 3;
+    acc->cutoff = o->cutoff > 0 ? o->cutoff : NL_VG_FRACTION * diag;
     acc->width = o->width > 0 ? o->width : acc->cutoff / 15;
     if (!(acc->cutoff > 0) || !(acc->width > 0))
         return NL_ERROR(NL_EINVAL, "variogram: expected points at more than one place (the bounding-box diagonal is %g)",

@@ -9,7 +9,8 @@
  *     Cressie and Hawkins (1980):  gamma_k = (sum |d_ij|^(1/2) / N_k)^4
  *                / (2 (0.457 + 0.494 / N_k))
  * distance_k = mean h_ij of the bin's pairs.  Bins without a pair are left
- * out.  Directional variograms keep the pairs whose direction lies within
+ * out.  The default cutoff is gstat's: 0.33333 (gstat's constant, not
+ * exactly 1/3) times the diagonal of the points' bounding box.  Directional variograms keep the pairs whose direction lies within
  * `tolerance` degrees of `direction` (either sense): gstat's alpha (degrees
  * clockwise from the y axis, "north", towards x) and tol.hor, in the x-y
  * plane (for 3D points the pair's projection onto the x-y plane; a pair

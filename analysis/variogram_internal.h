@@ -5,6 +5,7 @@
 #include "variogram.h"
 
 #define NL_VG_MAXBINS 1000000
+#define NL_VG_FRACTION 0.33333 /* gstat's default cutoff over the diagonal */
 
 typedef struct {
     double cutoff, width; /* as resolved from the options */

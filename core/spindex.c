@@ -133,6 +133,7 @@ typedef struct {
     size_t *idx;            /* cap indices */
     double *d2;             /* cap squared distances */
     double bound;           /* squared radius (INFINITY for knn) */
+    int count_all;          /* count every point within the bound (no pruning by the heap) */
 } heap_t;
 
 static int worse(double da, size_t ia, double db, size_t ib) { return da > db || (da == db && ia > ib); }
@@ -201,7 +202,7 @@ static void search(const nl_spindex *s, size_t id, const double *x, heap_t *h)
     int first = dc[1] < dc[0];
     for (int k = 0; k < 2; k++) {
         int j = k ? !first : first;
-        double lim = h->len == h->cap && h->cap ? fmin(h->bound, h->d2[0]) : h->bound;
+        double lim = !h->count_all && h->len == h->cap && h->cap ? fmin(h->bound, h->d2[0]) : h->bound;
         if (dc[j] <= lim)
             search(s, c[j], x, h);
     }
@@ -248,7 +249,7 @@ size_t nl_spindex_knn(const nl_spindex *s, const double *x, size_t k, size_t *id
 
 size_t nl_spindex_within(const nl_spindex *s, const double *x, double r, size_t cap, size_t *idx, double *d2)
 {
-    heap_t h = {.cap = cap, .idx = idx, .d2 = d2, .bound = r * r};
+    heap_t h = {.cap = cap, .idx = idx, .d2 = d2, .bound = r * r, .count_all = 1};
     if (r >= 0)
         search(s, 0, x, &h);
     heap_sort(&h);
