@@ -6,6 +6,7 @@
 #include "../core/nl_error.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -160,18 +161,30 @@ static double cov(const nl_krige_local *k, const double *x, const double *y)
     return nl_model_acf(k->m, k->dim, lag);
 }
 
+const char *nl_kl_where(const nl_krige_local *k, const double *x, char *buf)
+{
+    if (k->dim == 1)
+        snprintf(buf, 64, "(%g)", x[0]);
+    else if (k->dim == 2)
+        snprintf(buf, 64, "(%g, %g)", x[0], x[1]);
+    else
+        snprintf(buf, 64, "(%g, %g, %g)", x[0], x[1], x[2]);
+    return buf;
+}
+
 /* Location x: estimate and variance from the neighbourhood of x (without
  * datum skip). */
 int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w, double *est, double *var)
 {
     size_t K = neighbours(k, x, skip, w), p = k->p;
     int st;
+    char at[64];
     if (w->overflow)
-        return NL_ERROR(NL_EINVAL, "kriging: more than %zu data within the radius %g of (%g, %g, %g); expected fewer "
-                        "(set nmax)", k->cap, k->o.radius, x[0], k->dim > 1 ? x[1] : 0, k->dim > 2 ? x[2] : 0);
+        return NL_ERROR(NL_EINVAL, "kriging: more than %zu data within the radius %g of %s; expected fewer (set nmax)",
+                        k->cap, k->o.radius, nl_kl_where(k, x, at));
     if (K < p || K == 0)
-        return NL_ERROR(NL_EINVAL, "kriging: %zu data within the radius %g of (%g, %g, %g); expected at least %zu",
-                        K, k->o.radius, x[0], k->dim > 1 ? x[1] : 0, k->dim > 2 ? x[2] : 0, p ? p : 1);
+        return NL_ERROR(NL_EINVAL, "kriging: %zu data within the radius %g of %s; expected at least %zu", K,
+                        k->o.radius, nl_kl_where(k, x, at), p ? p : 1);
     if (!(w->valid && K == w->K && memcmp(w->next, w->set, K * sizeof *w->set) == 0)) {
         memcpy(w->set, w->next, K * sizeof *w->set);
         w->K = K, w->valid = 0;

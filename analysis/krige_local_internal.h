@@ -35,6 +35,8 @@ void nl_kl_drift(const nl_krige_local *k, const double *x, double *f);
 int nl_kl_factor(const nl_krige_local *k, nl_kl_work *w, const double *x);
 /* x = L^-1 b for lower-triangular L (n x n, row-major). */
 void nl_kl_lsolve(const double *L, size_t n, const double *b, double *x);
+/* "(x, y)" of a location in buf (64 bytes). */
+const char *nl_kl_where(const nl_krige_local *k, const double *x, char *buf);
 int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w, double *est, double *var);
 
 #endif

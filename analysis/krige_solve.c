@@ -79,8 +79,9 @@ static int cholesky(double *A, size_t n, double tol)
 
 static int singular(const nl_krige_local *k, const double *x, const char *what)
 {
-    return NL_ERROR(NL_EINVAL, "kriging: the %s of the neighbourhood of (%g, %g, %g) is singular (%s); expected "
-                    "distinct data points", what, x[0], k->dim > 1 ? x[1] : 0, k->dim > 2 ? x[2] : 0,
+    char at[64];
+    return NL_ERROR(NL_EINVAL, "kriging: the %s of the neighbourhood of %s is singular (%s); expected "
+                    "distinct data points", what, nl_kl_where(k, x, at),
                     what[0] == 'c' ? "duplicate points, or a smooth model with points much closer than its scale"
                                    : "the data lie on a line or plane of the drift");
 }
