@@ -177,16 +177,14 @@ static int run(const nl_krige_local *k, const locs_t *L, size_t count, double *e
 #pragma omp atomic write
             nomem = 1;
         }
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(dynamic, 64) reduction(min : bad)
         for (size_t t = 0; t < count; t++) {
             double x[3];
             if (!ok)
                 continue;
             location(k, L, t, x);
-            if (nl_kl_point(k, x, L->cv ? t : SIZE_MAX, &w, &est[t], var ? &var[t] : NULL)) {
-#pragma omp critical(nl_krige_local_bad)
+            if (nl_kl_point(k, x, L->cv ? t : SIZE_MAX, &w, &est[t], var ? &var[t] : NULL))
                 bad = t < bad ? t : bad;
-            }
         }
         nl_kl_work_free(&w);
     }
