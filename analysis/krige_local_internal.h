@@ -26,6 +26,8 @@ typedef struct {
     double *L, *Q, *M;      /* chol(C) K x K, L^-1 X (p rows of K), chol(X' C^-1 X) p x p */
     double *beta, *r;       /* drift coefficients (p), dual weights C^-1 (z - X beta) (K) */
     double *c0, *v, *f, *u, *u2, *y; /* scratch */
+    double *C, *Cp;         /* covariances of the cached set and of the one before (K x K, lower) */
+    size_t *prev, Kp, *pos; /* the set before (Kp points; 0: none), positions of set in prev */
 } nl_kl_work;
 
 int nl_kl_work_init(nl_kl_work *w, size_t cap, size_t p);

@@ -13,6 +13,7 @@ void nl_kl_work_free(nl_kl_work *w)
 {
     free(w->next), free(w->set), free(w->d2), free(w->L), free(w->Q), free(w->M), free(w->beta), free(w->r);
     free(w->c0), free(w->v), free(w->f), free(w->u), free(w->u2), free(w->y);
+    free(w->C), free(w->Cp), free(w->prev), free(w->pos);
     memset(w, 0, sizeof *w);
 }
 
@@ -26,8 +27,10 @@ int nl_kl_work_init(nl_kl_work *w, size_t cap, size_t p)
     w->beta = malloc(q * sizeof(double)), w->r = malloc(c * sizeof(double)), w->c0 = malloc(c * sizeof(double));
     w->v = malloc(c * sizeof(double)), w->f = malloc(q * sizeof(double)), w->u = malloc(q * sizeof(double));
     w->u2 = malloc(q * sizeof(double)), w->y = malloc(c * sizeof(double));
+    w->C = malloc(c * c * sizeof(double)), w->Cp = malloc(c * c * sizeof(double));
+    w->prev = malloc(c * sizeof(size_t)), w->pos = malloc(c * sizeof(size_t));
     if (!w->next || !w->set || !w->d2 || !w->L || !w->Q || !w->M || !w->beta || !w->r || !w->c0 || !w->v || !w->f ||
-        !w->u || !w->u2 || !w->y) {
+        !w->u || !w->u2 || !w->y || !w->C || !w->Cp || !w->prev || !w->pos) {
         nl_kl_work_free(w);
         return NL_ERROR(NL_ENOMEM, "kriging: out of memory for neighbourhoods of %zu points", cap);
     }
@@ -86,20 +89,45 @@ static int singular(const nl_krige_local *k, const double *x, const char *what)
                                    : "the data lie on a line or plane of the drift");
 }
 
+/* C of the set w->set, taking the entries of pairs that were in the
+ * previous set from its matrix (neighbourhoods of adjacent locations
+ * share most of their points); the same numbers as evaluating them all. */
+static void covariances(const nl_krige_local *k, nl_kl_work *w)
+{
+    size_t K = w->K, Kp = w->Kp, a = 0;
+    int dim = k->dim;
+    double *t;
+    for (size_t i = 0; i < K; i++) {
+        while (a < Kp && w->prev[a] < w->set[i])
+            a++;
+        w->pos[i] = a < Kp && w->prev[a] == w->set[i] ? a : SIZE_MAX;
+    }
+    for (size_t i = 0; i < K; i++) {
+        const double *ti = k->pts + w->set[i] * dim;
+        for (size_t j = 0; j <= i; j++) {
+            if (w->pos[i] != SIZE_MAX && w->pos[j] != SIZE_MAX) {
+                w->Cp[i * K + j] = w->C[w->pos[i] * Kp + w->pos[j]];
+                continue;
+            }
+            double lag[3] = {0, 0, 0};
+            for (int b = 0; b < dim; b++)
+                lag[b] = ti[b] - k->pts[w->set[j] * dim + b];
+            w->Cp[i * K + j] = nl_model_acf(k->m, dim, lag);
+        }
+    }
+    t = w->C, w->C = w->Cp, w->Cp = t; /* C: this set's; Cp: scratch */
+    memcpy(w->prev, w->set, K * sizeof *w->set);
+    w->Kp = K;
+}
+
 int nl_kl_factor(const nl_krige_local *k, nl_kl_work *w, const double *x)
 {
     size_t K = w->K, p = k->p;
     int dim = k->dim;
     double *L = w->L, *y = w->y;
-    for (size_t i = 0; i < K; i++) {
-        const double *ti = k->pts + w->set[i] * dim;
-        for (size_t j = 0; j <= i; j++) {
-            double lag[3] = {0, 0, 0};
-            for (int a = 0; a < dim; a++)
-                lag[a] = ti[a] - k->pts[w->set[j] * dim + a];
-            L[i * K + j] = nl_model_acf(k->m, dim, lag);
-        }
-    }
+    covariances(k, w);
+    for (size_t i = 0; i < K; i++)
+        memcpy(L + i * K, w->C + i * K, (i + 1) * sizeof(double));
     if (cholesky(L, K, 1e-13 * k->r0))
         return singular(k, x, "covariance matrix");
     for (size_t i = 0; i < K; i++) /* X row by row into Q (column-major: Q[j * K + i]), then L^-1 X */
