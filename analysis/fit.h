@@ -99,6 +99,10 @@ typedef struct {
     int converged;                        /* the optimiser's test was met */
 } nl_fit_result;
 
+/* Check the options alone (family, fixes, dim) as the fits do: NL_OK or
+ * NL_EINVAL with the fits' message.  Thread-safe. */
+int nl_fit_check_options(const nl_fit_options *o, int dim);
+
 /* WLS fit to an empirical semivariogram of nbins bins: mean pair distance
  * distance[j] (> 0; the model is isotropic in those units), semivariance
  * gamma[j], pair count pairs[j] (bins with 0 pairs are skipped).  dim (1..3)

@@ -167,3 +167,12 @@ int nl_fit_params_result(const nl_fit_params *p, const double *cov, nl_fit_resul
     }
     return nl_fit_params_spec(p, res->spec, sizeof res->spec);
 }
+
+int nl_fit_check_options(const nl_fit_options *o, int dim)
+{
+    nl_fit_params p;
+    int st = nl_fit_params_init(o, dim, &p);
+    if (!st && p.nfree == 0)
+        st = NL_ERROR(NL_EINVAL, "fix: every parameter of %s is fixed; expected at least one free", p.family);
+    return st;
+}

@@ -123,7 +123,9 @@ static nl_points *read_points(const char *path)
 static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
 {
     nl_variogram *v;
-    int st = nl_variogram_points(p, &a->vo, &v);
+    int st = nl_fit_check_options(&a->o, p->dim);
+    if (!st)
+        st = nl_variogram_points(p, &a->vo, &v);
     if (st)
         return st;
     st = nl_fit_variogram(v->distance, v->gamma, v->pairs, v->nbins, p->dim, &a->o, r);
@@ -188,8 +190,14 @@ int cli_cmd_fit(int argc, char **argv)
     p = read_points(a.in);
     st = fit(&a, p, &r);
     nl_points_free(p);
-    if (st)
-        cli_die(st == NL_EINVAL || st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1, "%s: %s", a.in, nl_errmsg());
+    if (st) {
+        const char *msg = nl_errmsg();
+        int code = st == NL_EINVAL || st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1;
+        /* the options' own errors name the option, the data's name the file */
+        if (strncmp(msg, "model:", 6) == 0 || strncmp(msg, "fix:", 4) == 0)
+            cli_die(code, "--%s", msg);
+        cli_die(code, "%s: %s", a.in, msg);
+    }
     if (!isfinite(r.objective) || !isfinite(r.aic))
         cli_die(1, "%s: the fit's objective is not finite", a.in);
     if (a.json)
