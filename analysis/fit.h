@@ -12,7 +12,12 @@
  *
  * Semivariogram of a model: gamma(h) = var + nugget - R(h) for h > 0 (R(h)
  * excludes the nugget there), the convention of gstat and GSTools (nugget:
- * the jump at the origin; sill = var + nugget).
+ * the jump at the origin; sill = var + nugget).  Scales against theirs:
+ * markov's scale is gstat's Exp range and GSTools' Exponential len_scale;
+ * gauss's is gstat's Gau range (GSTools' Gaussian has exp(-pi/4 (r/l)^2):
+ * l = scale 2 / sqrt(pi)); spherical's is the range in both; matern's u =
+ * sqrt(2 nu) r / scale is GSTools' with len_scale = scale / sqrt(2) (GSTools
+ * uses sqrt(nu) r / l), gstat's Ste kappa = nu.
  *
  * WLS (nl_fit_variogram).  Minimises sum_j w_j (gamma_j - g(h_j))^2 over the
  * bins with pairs > 0, g the model's semivariogram, by GSL's nonlinear

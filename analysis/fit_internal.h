@@ -23,6 +23,12 @@ typedef struct {
 /* Check the family and the fixes, set names, fixed values, NaN elsewhere. */
 int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p);
 
+/* Start values of the free parameters: start[k] where given (finite and
+ * positive; NULL: none), else the sill split 9:1 between var and nugget
+ * (all of it to var without a nugget), the scale, omega = 1 / scale and
+ * other shape parameters 1. */
+void nl_fit_params_start(nl_fit_params *p, double sill, double scale, const double *start);
+
 /* Index of a parameter by name, or -1. */
 int nl_fit_params_find(const nl_fit_params *p, const char *name);
 

@@ -176,8 +176,7 @@ static int check_data(const double *x, const double *z, size_t n, int dim, size_
     return NL_OK;
 }
 
-/* Automatic start: the sample variance split 9:1 between var and nugget,
- * the scale a tenth of the bounding box's diagonal (a fifth for the
+/* Automatic start: the sample variance as the sill, the scale a tenth of the bounding box's diagonal (a fifth for the
  * spherical model's range), shape parameters 1. */
 static void ml_start(nl_fit_params *p, const double *x, const double *z, size_t n, const double *start)
 {
@@ -194,17 +193,7 @@ static void ml_start(nl_fit_params *p, const double *x, const double *z, size_t 
     }
     var = var > 0 ? var : 1;
     diag = sqrt(diag);
-    for (size_t k = 0; k < p->np; k++) {
-        const char *nm = p->name[k];
-        double sc = diag / (strcmp(p->family, "spherical") == 0 ? 5 : 10);
-        double v = strcmp(nm, "scale") == 0 ? sc : strcmp(nm, "nugget") == 0 ? 0.1 * var
-                 : strcmp(nm, "var") == 0 ? (nl_fit_params_find(p, "nugget") >= 0 ? 0.9 : 1) * var
-                 : strcmp(nm, "omega") == 0 ? 1 / sc : 1;
-        if (start && isfinite(start[k]) && start[k] > 0)
-            v = start[k];
-        if (!p->fixed[k])
-            p->value[k] = v;
-    }
+    nl_fit_params_start(p, var, diag / (strcmp(p->family, "spherical") == 0 ? 5 : 10), start);
 }
 
 static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_fit_options *o, nl_fit_result *res)

@@ -86,6 +86,21 @@ int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p)
     return NL_OK;
 }
 
+void nl_fit_params_start(nl_fit_params *p, double sill, double scale, const double *start)
+{
+    int nugget = nl_fit_params_find(p, "nugget") >= 0;
+    for (size_t k = 0; k < p->np; k++) {
+        const char *nm = p->name[k];
+        double v = strcmp(nm, "scale") == 0 ? scale : strcmp(nm, "nugget") == 0 ? 0.1 * sill
+                 : strcmp(nm, "var") == 0 ? (nugget ? 0.9 : 1) * sill
+                 : strcmp(nm, "omega") == 0 ? 1 / scale : 1;
+        if (start && isfinite(start[k]) && start[k] > 0)
+            v = start[k];
+        if (!p->fixed[k])
+            p->value[k] = v;
+    }
+}
+
 int nl_fit_params_find(const nl_fit_params *p, const char *name)
 {
     for (size_t k = 0; k < p->np; k++)

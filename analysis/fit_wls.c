@@ -55,8 +55,7 @@ static int residuals(const gsl_vector *x, void *params, gsl_vector *f)
     return GSL_SUCCESS;
 }
 
-/* Automatic start: the sill from the far half of the bins, the nugget a
- * tenth of it, the scale where gamma first reaches 1 - 1/e of the sill
+/* Automatic start: the sill from the far half of the bins, the scale where gamma first reaches 1 - 1/e of the sill
  * (twice that for the spherical model's range). */
 static void wls_start(nl_fit_params *p, const wls_data *d, const double *start)
 {
@@ -71,16 +70,7 @@ static void wls_start(nl_fit_params *p, const wls_data *d, const double *start)
         }
     if (strcmp(p->family, "spherical") == 0)
         scale *= 2;
-    for (size_t k = 0; k < p->np; k++) {
-        const char *nm = p->name[k];
-        double v = strcmp(nm, "scale") == 0 ? scale : strcmp(nm, "nugget") == 0 ? 0.1 * sill
-                 : strcmp(nm, "var") == 0 ? (nl_fit_params_find(p, "nugget") >= 0 ? 0.9 : 1) * sill
-                 : strcmp(nm, "omega") == 0 ? 1 / scale : 1;
-        if (start && isfinite(start[k]) && start[k] > 0)
-            v = start[k];
-        if (!p->fixed[k])
-            p->value[k] = v;
-    }
+    nl_fit_params_start(p, sill, scale, start);
 }
 
 static size_t used_bins(const double *h, const double *g, const double *n, size_t nbins, double *buf)
