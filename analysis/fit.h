@@ -15,7 +15,7 @@
  * the jump at the origin; sill = var + nugget).  Scales against theirs:
  * markov's scale is gstat's Exp range and GSTools' Exponential len_scale;
  * gauss's is gstat's Gau range (GSTools' Gaussian has exp(-pi/4 (r/l)^2):
- * l = scale 2 / sqrt(pi)); spherical's is the range in both; matern's u =
+ * l = scale sqrt(pi) / 2); spherical's is the range in both; matern's u =
  * sqrt(2 nu) r / scale is GSTools' with len_scale = scale / sqrt(2) (GSTools
  * uses sqrt(nu) r / l), gstat's Ste kappa = nu.
  *
