@@ -43,6 +43,7 @@ extern "C" {
 #include "noiselab/core/io.h"
 #include "noiselab/core/io_obj.h"
 #include "noiselab/core/io_points.h"
+#include "noiselab/core/spindex.h"
 
 #include "noiselab/synth/fft.h"
 #include "noiselab/synth/circulant.h"
@@ -56,6 +57,8 @@ extern "C" {
 #include "noiselab/synth/ocean.h"
 #include "noiselab/synth/rank1_model.h"
 
+#include "noiselab/analysis/variogram.h"
+#include "noiselab/analysis/krige_local.h"
 #include "noiselab/analysis/acf.h"
 #include "noiselab/analysis/psd.h"
 #include "noiselab/analysis/welch.h"
