@@ -29,6 +29,14 @@
  * k^-(b + d - 1); R''(0) is libmatheval's symbolic second derivative for
  * expressions, a finite difference otherwise.
  *
+ * A nugget (core/model.h) is white noise: its sampled spectra gain a
+ * constant, so the model is positive definite whenever its continuous part
+ * is; R jumps at 0, so the kink test gives differentiable_order 0 and
+ * R''(0) = -inf, and the fitted spectral decay flattens towards the
+ * constant (read it as a bound).  The spherical model is judged by the same
+ * tests: positive definite in 1, 2 and 3 dimensions (dim is at most 3 here;
+ * its 4D spectrum is negative, synth/rank1_model.h refuses it there).
+ *
  * Spectral models (power:, spectrum:).  The d-dimensional density S is
  * known in closed form and is the evidence: it is scanned along the radius
  * (isotropic) or sampled on a d-dimensional grid over the band that holds

@@ -78,6 +78,7 @@ extern "C" {
 #include "noiselab/analysis/creases.h"
 #include "noiselab/analysis/aliasing.h"
 #include "noiselab/analysis/subdiv_exact.h"
+#include "noiselab/analysis/fit.h"
 
 #include "noiselab/render/terrain.h"
 #include "noiselab/render/shade.h"
