@@ -27,7 +27,7 @@ static const char help[] =
     "by one method to one data set: lower is better).  --json keys: model,\n"
     "parameters, standard_errors, objective, aic, method, n.\n"
     "Standard errors: ml and reml's describe the spread of the estimates for\n"
-    "regular models (markov with a nugget: 95%% intervals cover 0.91-0.96 of the\n"
+    "regular models (markov with a nugget: 95% intervals cover 0.91-0.96 of the\n"
     "time); wls's treat correlated variogram bins as independent and understate it;\n"
     "the spherical range's understate it by about 2x even with ml (its likelihood\n"
     "is not smooth in the range), experiments/fit_coverage.c.\n";
