@@ -36,8 +36,8 @@ static int header(FILE *fp, const char *path, size_t *lineno, size_t *cols, int 
             continue;
         line[strcspn(line, "\r\n")] = 0;
         const char *last = line, *p = line;
-        for (*cols = 1; (p = strchr(p, '\t')); p++, last = p + 1)
-            ++*cols;
+        for (*cols = 1; (p = strchr(p, '\t')); ++*cols)
+            last = ++p;
         *has_value = strcmp(last, "value") == 0;
     }
     if (!*cols)
