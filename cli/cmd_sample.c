@@ -17,7 +17,8 @@ static const char help[] =
     "without -o), ready for noiselab krige --data and synth --condition.\n"
     "Coordinates are the field's: sample i of an axis sits at (origin + i) h, with h\n"
     "its spacing and origin its recorded window origin (noiselab.origin; 0 when\n"
-    "absent).\n"
+    "absent); a field made on an --extent a:b (synth --condition) has its samples at\n"
+    "the cell centres a + (i + 0.5) h.\n"
     "  --points PTS.tsv  a header x [y [z]] (and optionally value, ignored), then one\n"
     "                    row per point; every point must lie within the samples' span\n"
     "                    (the first one outside is refused, exit 2)\n"
@@ -70,9 +71,22 @@ static void parse(int argc, char **argv, opts_t *a)
 /* Coordinate of sample 0 per axis: the recorded origin (in samples) times the spacing. */
 static void first_sample(const opts_t *a, const nl_field *f, const nl_meta *meta, double *x0)
 {
-    const char *p = meta->origin;
+    const char *p = meta->origin, *e = strstr(meta->method, " conditioned:");
     for (int d = 0; d < 3; d++)
         x0[d] = 0;
+    if (e && (e = strstr(e, "extent="))) { /* made on an extent a:b (synth --condition): cell centres */
+        e += 7;
+        for (int d = 0; d < f->dim; d++) {
+            char *end;
+            double lo = strtod(e, &end);
+            if (end == e || *end != ':' || !isfinite(lo))
+                cli_die(2, "sample: %s records an extent \"%s\"; expected a:b per axis", a->field, e);
+            x0[d] = lo + 0.5 * f->h[d];
+            strtod(end + 1, &end);
+            e = end + (*end == ',');
+        }
+        return;
+    }
     for (int d = 0; d < f->dim && *p; d++) {
         char *end;
         double o = strtod(p, &end);

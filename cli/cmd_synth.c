@@ -547,12 +547,12 @@ static void check_output(const cli_synth_job *job, const cli_synth_args *g, cons
 
 /* Realization k: the method's field, conditioned when asked, written with its preview. */
 static void realization(cli_synth_job *job, cli_synth_args *g, cli_synth_run_fn run, nl_field *f,
-                        cli_synth_result *res, size_t k)
+                        cli_synth_result *res, size_t k, const char *const *tmps)
 {
     char obuf[4096], pbuf[4096];
     const char *out = cli_synth_cond_name(&g->cond, g->out, k, obuf, sizeof obuf);
     const char *prev = cli_synth_cond_name(&g->cond, g->preview, k, pbuf, sizeof pbuf);
-    const char *tmp = cli_out_begin(out), *ptmp = cli_out_begin(prev);
+    const char *tmp = tmps[0], *ptmp = tmps[1];
     nl_meta meta;
     int st;
     json_decref(res->report);
@@ -594,13 +594,20 @@ int cli_cmd_synth(int argc, char **argv)
     check_model_given(&job, &g);
     check_outputs_and_model(&job, &g);
     cli_synth_cond_prepare(&g.cond, &job, g.from != NULL, g.spacing != NULL);
+    const char **tmps = cli_malloc(2 * g.cond.K * sizeof *tmps);
+    for (size_t k = 0; k < g.cond.K; k++) { /* every output can be written, before the work */
+        char ob[4096], pb[4096];
+        tmps[2 * k] = cli_out_begin(cli_synth_cond_name(&g.cond, g.out, k, ob, sizeof ob));
+        tmps[2 * k + 1] = cli_out_begin(cli_synth_cond_name(&g.cond, g.preview, k, pb, sizeof pb));
+    }
     f = cli_field_alloc(job.dim, job.n, job.h);
     uint64_t seed0 = job.seed;
     for (size_t k = 0; k < g.cond.K; k++) {
         cli_phase("synth", job.method);
         job.seed = seed0 + k;
-        realization(&job, &g, run, f, &res, k);
+        realization(&job, &g, run, f, &res, k, tmps + 2 * k);
     }
+    free(tmps);
     cli_progress_done();
     cli_synth_cond_note(&g.cond);
     json_decref(res.report);

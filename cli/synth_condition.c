@@ -82,8 +82,9 @@ void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int
     if ((st = nl_points_read(c->data, &pt)))
         cli_die(nl_error_is_input(st) ? 2 : 1, "--condition: %s", nl_errmsg());
     if (pt->dim != job->dim) {
+        int d = pt->dim;
         nl_points_free(pt);
-        cli_die(2, "--condition: %s has %d coordinates per point, the grid %d", c->data, pt->dim, job->dim);
+        cli_die(2, "--condition: %s has %d coordinates per point, the grid %d", c->data, d, job->dim);
     }
     nl_field grid = {.dim = job->dim, .n = {job->n[0], job->n[1], job->n[2]},
                      .h = {job->h[0], job->h[1], job->h[2]}};
