@@ -2,6 +2,7 @@
 #include "../analysis/condsim.h"
 #include "../analysis/krige.h"
 #include "../core/field_sample.h"
+#include "../core/io.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -13,7 +14,9 @@
 #include <criterion/criterion.h>
 #include <gsl/gsl_cdf.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* n data on distinct grid samples (cell centres lo + (i + 0.5) h) of an
  * nx x ny grid, the samples drawn at random within columns c0 .. c1 - 1,
@@ -218,4 +221,46 @@ Test(condsim, states_the_interpolation_error)
     cr_expect_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NL_INTERP_LINEAR, 0, 0, &p), NL_EINVAL);
     cr_expect(strstr(nl_errmsg(), "datum 1") != NULL, "%s", nl_errmsg());
     nl_field_free(f), nl_model_free(m);
+}
+
+/* The command: K realizations in K files, each honouring data on samples
+ * to float32 rounding (EXR stores floats: |error| <= 2^-24 |d| < 1e-6 for
+ * |d| < 4), each from its own seed, and the report counts the data on
+ * samples. */
+Test(condsim, cli_realizations_honour_the_data)
+{
+    char cmd[1024], path[512];
+    const char *d = scratch_dir();
+    const size_t g[2] = {32, 32};
+    const double lo[2] = {-0.5, -0.5}, h[2] = {1, 1};
+    double pts[2 * 15], val[15];
+    data_on_samples(15, g, lo, h, 0, g[0], 8, pts, val);
+    snprintf(path, sizeof path, "%s/cond.tsv", d);
+    FILE *fp = fopen(path, "w");
+    fputs("x\ty\tvalue\n", fp);
+    for (int i = 0; i < 15; i++)
+        fprintf(fp, "%.17g\t%.17g\t%.17g\n", pts[2 * i], pts[2 * i + 1], val[i]);
+    fclose(fp);
+    snprintf(cmd, sizeof cmd, "synth circulant --acf markov:scale=3 --size 32x32 --condition %s --extent "
+             "-0.5:31.5,-0.5:31.5 --realizations 3 --seed 7 --json -o %s/z.exr", path, d);
+    json_t *j = run_noiselab_json(cmd);
+    cr_expect_eq(json_integer_value(json_object_get(json_object_get(j, "condition"), "on_samples")), 15);
+    json_decref(j);
+    double first[15];
+    for (int k = 1; k <= 3; k++) {
+        nl_field *f;
+        nl_meta meta;
+        double z[15];
+        snprintf(path, sizeof path, "%s/z-%d.exr", d, k);
+        cr_assert_eq(nl_field_read(path, &f, &meta), 0, "%s", nl_errmsg());
+        cr_expect_eq(strtoull(meta.seed, NULL, 10), 6 + (unsigned)k);
+        cr_assert_eq(nl_field_sample(f, (double[]){0, 0}, NL_INTERP_NEAREST, 15, pts, z), 0);
+        for (int i = 0; i < 15; i++)
+            cr_expect(fabs(z[i] - val[i]) < 1e-6, "realization %d datum %d: %.9g vs %.9g", k, i, z[i], val[i]);
+        if (k == 1)
+            memcpy(first, f->data, sizeof first);
+        else
+            cr_expect(memcmp(first, f->data, sizeof first) != 0, "realization %d repeats the first", k);
+        nl_field_free(f);
+    }
 }
