@@ -24,6 +24,8 @@ int cli_cmd_lattice(int argc, char **argv);
 int cli_cmd_ocean(int argc, char **argv);
 int cli_cmd_krige(int argc, char **argv);
 int cli_cmd_sample(int argc, char **argv);
+int cli_cmd_variogram(int argc, char **argv);
+int cli_cmd_fit(int argc, char **argv);
 int cli_cmd_cloud(int argc, char **argv);
 int cli_cmd_detect(int argc, char **argv);
 int cli_cmd_shape(int argc, char **argv);

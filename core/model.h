@@ -7,6 +7,7 @@
  *     oscillatory:omega=10[,scale=1]  R = var cos(omega t) exp(-|t|/scale)
  *     gauss-osc:omega=10[,scale=1]    R = var cos(omega t) exp(-(t/scale)^2)
  *     matern:nu=1.5[,scale=1]         R = var 2^(1-nu)/Gamma(nu) u^nu K_nu(u), u = sqrt(2 nu)|t|/scale
+ *     spherical[:scale=1]             R = var (1 - 1.5 a + 0.5 a^3), a = |t|/scale < 1; 0 beyond
  *     power:d=2.5[,fmin=,fmax=]       S = c |f|^-d for fmin <= |f| <= fmax, c such that the integral of S is var
  *     expr:EXPR                       R given by a libmatheval expression
  *     spectrum:EXPR                   S given by a libmatheval expression
@@ -17,6 +18,25 @@
  * (same for z) for the ellipsoidal stretch of Stam and Fiume; default is
  * isotropic, R(|lag|).  For expr:, spectrum: and image: these keys may follow
  * a final ';', e.g. "expr:exp(-abs(t));ratio=0.5".
+ *
+ * Spherical.  Its `scale` is the range a, the lag at which R reaches 0
+ * (as gstat's vgm(range = a) and GSTools' Spherical(len_scale = a); not a
+ * decay length as for markov).  It is positive definite in 1, 2 and 3
+ * dimensions only (its 4D Hankel transform is negative somewhere);
+ * nl_model_check_dim accepts dim 1..3, and the methods that reach 4D
+ * (rank-1 lattices) refuse it there.
+ *
+ * Nugget.  Every model defined by R (named, expr:, image:; not power: or
+ * spectrum:) takes nugget=N >= 0 (default 0): white noise of variance N
+ * independent of the rest, so R(0) = var + N and R(lag != 0) = var rho(lag)
+ * (gstat's vgm(nugget = N), GSTools' nugget: the semivariogram jumps from 0
+ * to N at the origin).  nl_model_acf adds N where every lag component is
+ * exactly 0, so a covariance sampled on a grid holds N on its diagonal.  Its
+ * spectrum on a grid of cell volume h_1...h_d is the constant N h_1...h_d
+ * over the Nyquist band (nl_wk_sample_spectrum* include it, since they
+ * transform the sampled R); nl_model_spectrum and nl_model_spectrum_iso
+ * return the spectrum of the continuous part alone (the nugget's density
+ * depends on the grid), so methods built on them refuse a nugget.
  *
  * Expression variables.  ACF expressions: t (the signed lag in 1D; the
  * stretched lag norm in n-D), x, y, z (lag components), r (the stretched lag
@@ -49,7 +69,8 @@ typedef enum {
     NL_MODEL_POWER,
     NL_MODEL_EXPR,
     NL_MODEL_SPECTRUM,
-    NL_MODEL_IMAGE
+    NL_MODEL_IMAGE,
+    NL_MODEL_SPHERICAL
 } nl_model_kind;
 
 typedef struct nl_model nl_model;
@@ -84,12 +105,13 @@ int nl_model_is_reentrant(const nl_model *m);
  * spectrum: models returns NAN (use the sampled conversion in wk.h).  NAN
  * too where power:'s quadrature fails (e.g. at lags of 1e6 in 2D: GSL runs
  * out of subdivisions).  dim is 1..3 (checked by nl_model_check_dim, not
- * here); R is in the model's variance units, R(0) = var. */
+ * here); R is in the model's variance units, R(0) = var + nugget. */
 double nl_model_acf(const nl_model *m, int dim, const double *lag);
 
 /* S at the frequency vector f[0..dim-1] (cycles per unit length) for spectral
  * models, and for the 1D analytic spectra of markov, gauss, oscillatory and
- * gauss-osc; NAN where no closed form is implemented. */
+ * gauss-osc; NAN where no closed form is implemented.  The continuous part
+ * only: a nugget is not included (see Nugget above). */
 double nl_model_spectrum(const nl_model *m, int dim, const double *f);
 
 /* The spectrum of an isotropic autocorrelation in dim = 1..4 dimensions at
@@ -97,7 +119,8 @@ double nl_model_spectrum(const nl_model *m, int dim, const double *f);
  * 1987 eq. (13) with GSL quadrature and Bessel functions (4D uses the model's
  * 3D profile, which is the same function of |lag|).  NAN on failure (dim
  * outside 1..4, R(0) not positive, quadrature not converged).  Slow: up to
- * thousands of evaluations of R per frequency. */
+ * thousands of evaluations of R per frequency.  The continuous part only
+ * (the nugget, a value at one lag, has no weight in the integral). */
 double nl_model_spectrum_iso(const nl_model *m, int dim, double w);
 
 /* Is R a function of |lag| alone in dim > 1 (no sep, angle or ratio, and
@@ -123,10 +146,14 @@ typedef struct {
 /* The catalogue (static storage: do not free); *count receives its length. */
 const nl_model_info *nl_model_catalogue(size_t *count);
 
-/* The value in effect of the parameter `name` (var, scale, alpha, omega, nu,
- * d, fmin, fmax, ratio, zratio: defaults included, in the spec's units) into
+/* The value in effect of the parameter `name` (var, scale, nugget, alpha,
+ * omega, nu, d, fmin, fmax, ratio, zratio: defaults included, in the spec's
+ * units; nugget is 0 unless given) into
  * *value.  Returns NL_OK, or NL_EINVAL when the model's family has no such
  * parameter (*value untouched).  Thread-safe (core/model_param.c). */
 int nl_model_param(const nl_model *m, const char *name, double *value);
+
+/* The nugget (0 for spectral models and when not given).  Thread-safe. */
+double nl_model_nugget(const nl_model *m);
 
 #endif

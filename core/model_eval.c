@@ -75,13 +75,31 @@ static double profile(const nl_model *m, double t)
     case NL_MODEL_OSCILLATORY: return m->var * cos(m->omega * t) * exp(-a);
     case NL_MODEL_GAUSS_OSC: return m->var * cos(m->omega * t) * exp(-a * a);
     case NL_MODEL_MATERN: return m->var * matern(m->nu, sqrt(2 * m->nu) * a);
+    /* the spherical model of range `scale` (Matheron 1971; gstat "Sph", GSTools Spherical with len_scale = a) */
+    case NL_MODEL_SPHERICAL: return a < 1 ? m->var * (1 - a * (1.5 - 0.5 * a * a)) : 0.0;
     case NL_MODEL_EXPR: return acf_expr(m, t, t, 0, 0, fabs(t));
     case NL_MODEL_IMAGE: return nl_model_image_acf(m, t, 0);
     default: return NAN;
     }
 }
 
+static double acf_continuous(const nl_model *m, int dim, const double *lag);
+
+/* The nugget is white noise: it adds to R at lag 0 exactly and nowhere else. */
 double nl_model_acf(const nl_model *m, int dim, const double *lag)
+{
+    double v = acf_continuous(m, dim, lag);
+    if (m->nugget != 0) {
+        int zero = 1;
+        for (int a = 0; a < dim; a++)
+            zero &= lag[a] == 0;
+        if (zero)
+            v += m->nugget;
+    }
+    return v;
+}
+
+static double acf_continuous(const nl_model *m, int dim, const double *lag)
 {
     double u, v, w, r;
     if (m->kind == NL_MODEL_POWER) {
@@ -172,18 +190,21 @@ double nl_model_spectrum(const nl_model *m, int dim, const double *f)
 }
 
 static const nl_model_info catalogue[] = {
-    {"markov", "[scale=1,var=1]", "R = var exp(-|t|/scale); 1D S = var 2 scale / (1 + (2 pi f scale)^2)"},
-    {"gauss", "[scale=1,var=1]", "R = var exp(-(t/scale)^2); 1D S = var scale sqrt(pi) exp(-(pi f scale)^2)"},
-    {"markaussian", "alpha=A [,scale=1,var=1]", "R = var exp(-|t/scale|^alpha), 0 < alpha <= 2"},
-    {"oscillatory", "omega=W [,scale=1,var=1]", "R = var cos(omega t) exp(-|t|/scale)"},
-    {"gauss-osc", "omega=W [,scale=1,var=1]", "R = var cos(omega t) exp(-(t/scale)^2)"},
-    {"matern", "nu=V [,scale=1,var=1]",
+    {"markov", "[scale=1,var=1,nugget=0]", "R = var exp(-|t|/scale) (+ nugget at t = 0, as every R model); 1D S = var 2 scale / (1 + (2 pi f scale)^2)"},
+    {"gauss", "[scale=1,var=1,nugget=0]", "R = var exp(-(t/scale)^2); 1D S = var scale sqrt(pi) exp(-(pi f scale)^2)"},
+    {"markaussian", "alpha=A [,scale=1,var=1,nugget=0]", "R = var exp(-|t/scale|^alpha), 0 < alpha <= 2"},
+    {"oscillatory", "omega=W [,scale=1,var=1,nugget=0]", "R = var cos(omega t) exp(-|t|/scale)"},
+    {"gauss-osc", "omega=W [,scale=1,var=1,nugget=0]", "R = var cos(omega t) exp(-(t/scale)^2)"},
+    {"matern", "nu=V [,scale=1,var=1,nugget=0]",
      "R = var 2^(1-nu)/Gamma(nu) u^nu K_nu(u), u = sqrt(2 nu) |t| / scale"},
+    {"spherical", "[scale=1,var=1,nugget=0]",
+     "R = var (1 - 1.5 a + 0.5 a^3) for a = |t|/scale < 1, else 0 (scale = range); valid in 1D to 3D"},
+
     {"power", "d=D [,fmin=1/1024,fmax=0.5,var=1]",
      "S = c |f|^-d for fmin <= |f| <= fmax (0 elsewhere), c such that the integral of S is var"},
-    {"expr:EXPR", "variables t, x, y, z, r", "R = EXPR (libmatheval syntax), e.g. expr:cos(10*t)*exp(-abs(t))"},
+    {"expr:EXPR", "variables t, x, y, z, r [;nugget=0]", "R = EXPR (libmatheval syntax), e.g. expr:cos(10*t)*exp(-abs(t))"},
     {"spectrum:EXPR", "variables f, fx, fy, fz, k", "S = EXPR, a non-negative two-sided density"},
-    {"image:FILE", "PNG (8/16-bit grey) or EXR", "R = empirical autocorrelation of the exemplar (Lewis 1987, eq. 15)"},
+    {"image:FILE", "PNG (8/16-bit grey) or EXR [;nugget=0]", "R = empirical autocorrelation of the exemplar (Lewis 1987, eq. 15)"},
 };
 
 const nl_model_info *nl_model_catalogue(size_t *count)

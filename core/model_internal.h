@@ -7,7 +7,8 @@
 struct nl_model {
     nl_model_kind kind;  /* which family */
     char *spec;          /* the spec as given */
-    double var;          /* R(0) for named models; target variance for power */
+    double var;          /* sill of the continuous part for R models; target variance for power */
+    double nugget;       /* white-noise variance added at lag 0 exactly (R models) */
     double scale;        /* correlation length */
     double alpha;        /* markaussian exponent */
     double omega;        /* oscillation frequency, radians per unit lag */

@@ -14,12 +14,13 @@ typedef struct {
 
 #define K(k) (1u << (k))
 #define NAMED (K(NL_MODEL_MARKOV) | K(NL_MODEL_GAUSS) | K(NL_MODEL_MARKAUSSIAN) | K(NL_MODEL_OSCILLATORY) | \
-               K(NL_MODEL_GAUSS_OSC) | K(NL_MODEL_MATERN))
+               K(NL_MODEL_GAUSS_OSC) | K(NL_MODEL_MATERN) | K(NL_MODEL_SPHERICAL))
 #define ACF (NAMED | K(NL_MODEL_EXPR) | K(NL_MODEL_IMAGE))
 
 static const param params[] = {
     {"var", offsetof(struct nl_model, var), NAMED | K(NL_MODEL_POWER)},
     {"scale", offsetof(struct nl_model, scale), NAMED},
+    {"nugget", offsetof(struct nl_model, nugget), ACF},
     {"alpha", offsetof(struct nl_model, alpha), K(NL_MODEL_MARKAUSSIAN)},
     {"omega", offsetof(struct nl_model, omega), K(NL_MODEL_OSCILLATORY) | K(NL_MODEL_GAUSS_OSC)},
     {"nu", offsetof(struct nl_model, nu), K(NL_MODEL_MATERN)},
@@ -41,3 +42,5 @@ int nl_model_param(const nl_model *m, const char *name, double *value)
         }
     return NL_ERROR(NL_EINVAL, "%s: has no parameter \"%s\"", m->spec, name);
 }
+
+double nl_model_nugget(const nl_model *m) { return m->nugget; }

@@ -15,12 +15,13 @@ typedef struct {
 } family;
 
 static const family families[] = {
-    {"markov", NL_MODEL_MARKOV, "scale var", NULL},
-    {"gauss", NL_MODEL_GAUSS, "scale var", NULL},
-    {"markaussian", NL_MODEL_MARKAUSSIAN, "alpha scale var", "alpha"},
-    {"oscillatory", NL_MODEL_OSCILLATORY, "omega scale var", "omega"},
-    {"gauss-osc", NL_MODEL_GAUSS_OSC, "omega scale var", "omega"},
-    {"matern", NL_MODEL_MATERN, "nu scale var", "nu"},
+    {"markov", NL_MODEL_MARKOV, "scale var nugget", NULL},
+    {"gauss", NL_MODEL_GAUSS, "scale var nugget", NULL},
+    {"markaussian", NL_MODEL_MARKAUSSIAN, "alpha scale var nugget", "alpha"},
+    {"oscillatory", NL_MODEL_OSCILLATORY, "omega scale var nugget", "omega"},
+    {"gauss-osc", NL_MODEL_GAUSS_OSC, "omega scale var nugget", "omega"},
+    {"matern", NL_MODEL_MATERN, "nu scale var nugget", "nu"},
+    {"spherical", NL_MODEL_SPHERICAL, "scale var nugget", NULL},
     {"power", NL_MODEL_POWER, "d fmin fmax var", "d"},
 };
 
@@ -85,6 +86,7 @@ static int parse_params(nl_model *m, const char *name, const char *keys, const c
                 return st;
             if (strcmp(key, "scale") == 0) m->scale = v;
             else if (strcmp(key, "var") == 0) m->var = v;
+            else if (strcmp(key, "nugget") == 0) m->nugget = v;
             else if (strcmp(key, "alpha") == 0) m->alpha = v;
             else if (strcmp(key, "omega") == 0) m->omega = v;
             else if (strcmp(key, "nu") == 0) m->nu = v;
@@ -117,6 +119,8 @@ static int validate(nl_model *m, const char *name)
     if ((st = check_positive(name, "scale", m->scale)) || (st = check_positive(name, "var", m->var)) ||
         (st = check_positive(name, "ratio", m->ratio)) || (st = check_positive(name, "zratio", m->zratio)))
         return st;
+    if (!(m->nugget >= 0))
+        return NL_ERROR(NL_EINVAL, "%s: nugget: expected a number >= 0, got %g", name, m->nugget);
     if (m->kind == NL_MODEL_MARKAUSSIAN && (st = check_positive(name, "alpha", m->alpha)))
         return st;
     /* exp(-|t|^alpha) is positive definite exactly for 0 < alpha <= 2 */
@@ -162,8 +166,9 @@ static int parse_expr_model(nl_model *m, const char *name, const char *rest, int
                               text, allowed);
     }
     free(text);
+    /* a spectrum is a density: its white-noise part is a constant in S, not a key */
     if (!st && semi)
-        st = parse_params(m, name, "", semi + 1);
+        st = parse_params(m, name, spectral ? "" : "nugget", semi + 1);
     return st;
 }
 
@@ -210,7 +215,7 @@ int nl_model_parse(const char *spec, nl_model **out)
             st = nl_model_image_load(m, path);
         free(path);
         if (!st && semi)
-            st = parse_params(m, "image", "", semi + 1);
+            st = parse_params(m, "image", "nugget", semi + 1);
     } else {
         const family *fam = NULL;
         for (size_t i = 0; i < sizeof families / sizeof *families; i++)
@@ -219,7 +224,7 @@ int nl_model_parse(const char *spec, nl_model **out)
         if (!fam) {
             st = NL_ERROR(NL_EINVAL,
                           "model: unknown model \"%.*s\" (expected markov, gauss, markaussian, oscillatory, "
-                          "gauss-osc, matern, power, expr:, spectrum: or image:; see noiselab models)",
+                          "gauss-osc, matern, spherical, power, expr:, spectrum: or image:; see noiselab models)",
                           (int)nlen, spec);
         } else {
             m->kind = fam->kind;

@@ -4,7 +4,9 @@
  * O(N^3) time and N^2 memory, so it is the ground truth for small grids.
  * A matrix that is not positive definite (Cholesky fails) is NL_ENOTPD; a
  * matrix that does not fit in memory (N^2 doubles) is refused before
- * allocation with NL_ETOOBIG. */
+ * allocation with NL_ETOOBIG.  A nugget (core/model.h) is represented
+ * exactly: it is on C's diagonal, so the field is the continuous part plus
+ * independent white noise of variance nugget per sample. */
 #ifndef NL_SYNTH_CHOLESKY_H
 #define NL_SYNTH_CHOLESKY_H
 

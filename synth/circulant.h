@@ -17,7 +17,10 @@
  * plan measures that loss against R(0) (variance_loss; the caller flags it
  * above NL_SYNTH_CIRCULANT_LOSS_TOL): a steep power law whose fmin is far
  * below 1/(m h) keeps only a fraction of its variance (power:d=2.424 on 64
- * samples, embedding 128: 0.10 of it). */
+ * samples, embedding 128: 0.10 of it).
+ *
+ * A nugget (core/model.h) is represented exactly, as by synth/fft.h: the
+ * wrapped R holds it at lag 0, which adds it to every eigenvalue. */
 #ifndef NL_SYNTH_CIRCULANT_H
 #define NL_SYNTH_CIRCULANT_H
 

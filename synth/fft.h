@@ -15,7 +15,12 @@
  * zero changes every covariance entry by at most E = sum|lambda_neg| / N;
  * when E <= 1e-6 R(0), a change no estimator on fewer than 1e12 samples can
  * resolve, they are set to zero silently; above that the plan is refused
- * (NL_ENOTPD) unless NL_SYNTH_FFT_CLAMP is given. */
+ * (NL_ENOTPD) unless NL_SYNTH_FFT_CLAMP is given.
+ *
+ * A nugget (core/model.h) is represented exactly: the sampled R holds it at
+ * lag 0, so every eigenvalue gains it, the spectrum the constant nugget
+ * h_1...h_d, and the field is the continuous part plus independent white
+ * noise of variance nugget per sample. */
 #ifndef NL_SYNTH_FFT_H
 #define NL_SYNTH_FFT_H
 

@@ -264,6 +264,9 @@ int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, i
         return NL_ERROR(NL_EINVAL, "octaves: expected 1 to %d, got %d", NL_LATTICE_MAX_OCTAVES, octaves);
     if (!(cell0 >= 2) || cell0 / pow(2, octaves - 1) < 2)
         return NL_ERROR(NL_EINVAL, "octaves: %d octaves from cell %g reach cells below 2 samples", octaves, cell0);
+    if (nl_model_nugget(m) != 0)
+        return NL_ERROR(NL_EINVAL, "lattice: %s: a nugget is not represented by lattice noise (its closed-form "
+                        "spectrum has no white-noise part); use fft, circulant or cholesky", nl_model_spec(m));
     if (!isfinite(nl_model_spectrum(m, dim, probe)))
         return NL_ERROR(NL_EINVAL, "%s: the lattice method needs the model's spectrum in closed form in %dD "
                         "(power:, spectrum:, or a 1D markov, gauss, oscillatory, gauss-osc)", nl_model_spec(m), dim);

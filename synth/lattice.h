@@ -56,7 +56,8 @@ typedef struct {
  * model's lags in samples): c_0 = cell0, `octaves` octaves (cell >= 2).
  * Errors: NL_EINVAL for dim not 1 or 2, octaves outside
  * 1..NL_LATTICE_MAX_OCTAVES, cells below 2 samples, or a model without a
- * closed-form spectrum in dim dimensions; NL_ENOMEM.  (GSL's weighted
+ * closed-form spectrum in dim dimensions or with a nugget (lattice noise is
+ * smooth between nodes: white noise has no closed form there); NL_ENOMEM.  (GSL's weighted
  * least squares, an SVD of finite values, does not fail; it would give
  * NL_EFAIL.) */
 int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);

@@ -35,8 +35,10 @@ typedef struct {
 double nl_rank1_model_spectrum(const long *k, int s, void *ctx);
 
 /* NL_OK when the model gives a spectrum in s dimensions; NL_EINVAL for a
- * spectral model in s > 3 or a model that is neither spectral nor
- * isotropic. */
+ * spectral model in s > 3, a model that is neither spectral nor
+ * isotropic, a model with a nugget (the Hankel transform of R has no
+ * white-noise part) or a spherical model in s > 3 (not positive definite
+ * there). */
 int nl_rank1_model_check(const nl_model *m, int s);
 
 /* The field of model m on lattice L (torus of side extent > 0): f (N

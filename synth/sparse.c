@@ -217,6 +217,9 @@ int nl_synth_sparse_plan_model_flags(const nl_model *m, int dim, const double *h
         return NL_ERROR(NL_EINVAL, "sparse: expected dimension 1 or 2, got %d", dim);
     if (radius > 4096)
         return NL_ERROR(NL_EINVAL, "radius: expected 1 to 4096 samples, got %d", radius);
+    if (nl_model_nugget(m) != 0)
+        return NL_ERROR(NL_EINVAL, "sparse: %s: a nugget is not represented by shot noise (its kernel would need a "
+                        "spike of white noise); use fft, circulant or cholesky", nl_model_spec(m));
     /* periodic grid for h = IDFT(sqrt(lambda)) / N: large enough that the
      * kernel has decayed where it wraps */
     span = radius > 0 ? (size_t)(4 * radius + 4) : (dim == 1 ? 8192 : 512);

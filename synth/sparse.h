@@ -80,7 +80,8 @@ typedef struct {
  *              above 4096, a zero kernel, a malformed expression or one
  *              with unknown variables or non-finite values, an image not 2D
  *              or constant, a model unusable in dim or not finite on the
- *              kernel's grid;
+ *              kernel's grid, a model with a nugget (shot noise of finite
+ *              density cannot carry white noise);
  *   NL_ENOTPD  a model not positive definite on the kernel's grid: the
  *              rule of FFT synthesis (synth/fft.h), the negative mass of
  *              the sampled spectrum above NL_SYNTH_FFT_CLAMP_TOL of its

@@ -116,7 +116,10 @@ typedef struct {
  * the model (not thread-safe for expression models).  Returns NL_OK, or
  * (*out = NULL) NL_EINVAL (dim not 1 or 2, levels outside 1..40, spacing0
  * or tol not positive, N outside 0..64 (1D) / 0..8 (2D), a spectral model
- * without R, R(0) <= 0), NL_EFAIL (an eigenvalue or SVD solve did not
+ * without R, R(0) <= 0, a model with a nugget: subdivision keeps the coarse
+ * nodes' values, so white noise would have to be added at every level and
+ * the finest-level-only alternative changes the coarse nodes' covariance;
+ * use fft, circulant or cholesky), NL_EFAIL (an eigenvalue or SVD solve did not
  * converge), NL_ENOMEM.  Non-positive-definite levels are not errors here:
  * they are flagged (NL_SUBDIV_NOT_PD) and refused by synthesis. */
 int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,

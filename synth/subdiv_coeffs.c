@@ -370,6 +370,9 @@ int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacin
     if (nl_model_get_kind(m) == NL_MODEL_SPECTRUM)
         return NL_ERROR(NL_EINVAL, "%s: subdivision needs R(lag); give the autocorrelation, or a power: model "
                         "(whose R is computed by quadrature)", nl_model_spec(m));
+    if (nl_model_nugget(m) != 0)
+        return NL_ERROR(NL_EINVAL, "subdiv: %s: a nugget is not represented by subdivision (coarse nodes would keep "
+                        "their white noise through every level); use fft, circulant or cholesky", nl_model_spec(m));
     c = calloc(1, sizeof *c);
     if (!c || !(c->level = calloc((size_t)levels, sizeof *c->level))) {
         free(c);

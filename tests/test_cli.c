@@ -470,7 +470,7 @@ Test(cli, json_outputs)
     json_decref(j);
     cr_assert_eq(run_noiselab("models --json", out, sizeof out, 0, 0), 0);
     j = json_loads(out, 0, &je);
-    cr_assert_eq(json_array_size(json_object_get(j, "models")), 10);
+    cr_assert_eq(json_array_size(json_object_get(j, "models")), 11);
     json_decref(j);
 }
 

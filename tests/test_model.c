@@ -232,9 +232,9 @@ Test(model, catalogue_lists_every_family)
 {
     size_t n;
     const nl_model_info *c = nl_model_catalogue(&n);
-    const char *names[] = {"markov", "gauss", "markaussian", "oscillatory", "gauss-osc", "matern", "power",
-                           "expr:EXPR", "spectrum:EXPR", "image:FILE"};
-    cr_assert_eq(n, 10);
+    const char *names[] = {"markov", "gauss", "markaussian", "oscillatory", "gauss-osc", "matern", "spherical",
+                           "power", "expr:EXPR", "spectrum:EXPR", "image:FILE"};
+    cr_assert_eq(n, 11);
     for (size_t i = 0; i < n; i++)
         cr_assert_str_eq(c[i].name, names[i]);
 }

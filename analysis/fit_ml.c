@@ -1,0 +1,249 @@
+/* Maximum likelihood and REML fits of a covariance model to scattered data
+ * (Patterson and Thompson 1971; Mardia and Marshall 1984), with GSL's
+ * Cholesky factorisation and Nelder-Mead simplex. */
+#include "fit_internal.h"
+#include "../core/field.h"
+#include "../core/gsl_guard_internal.h"
+#include "../core/nl_error.h"
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_multimin.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Above this -2 l the parameters are off the model's domain (C not
+ * positive definite): the simplex walks away from them. */
+#define ML_BAD 1e300
+/* Central-difference step of the Hessian in the transformed coordinates. */
+#define ML_HSTEP 2e-3
+
+typedef struct {
+    nl_fit_params *p;       /* parameters */
+    const double *x, *z;    /* coordinates (n x dim), values */
+    size_t n;               /* data */
+    nl_fit_likelihood lik;  /* ML or REML */
+    gsl_matrix *C;          /* n x n covariance, then its Cholesky factor */
+    gsl_vector *y, *a;      /* L^-1 z, L^-1 1 */
+    double beta;            /* GLS mean of the last evaluation */
+} ml_data;
+
+static int fill_cov(ml_data *d)
+{
+    nl_model *m;
+    int st = nl_fit_params_model(d->p, &m), dim = d->p->dim;
+    if (st)
+        return st;
+    for (size_t i = 0; i < d->n; i++)
+        for (size_t j = 0; j <= i; j++) {
+            double lag[3] = {0, 0, 0};
+            for (int a = 0; a < dim; a++)
+                lag[a] = d->x[i * (size_t)dim + (size_t)a] - d->x[j * (size_t)dim + (size_t)a];
+            gsl_matrix_set(d->C, i, j, nl_model_acf(m, dim, lag));
+        }
+    nl_model_free(m);
+    return NL_OK;
+}
+
+/* -2 l at the current parameters (ML_BAD where C is not positive definite). */
+static double minus2l(ml_data *d)
+{
+    double logdet = 0, aa, ay, yy, q, n = (double)d->n;
+    if (fill_cov(d) || gsl_linalg_cholesky_decomp1(d->C))
+        return ML_BAD;
+    for (size_t i = 0; i < d->n; i++) {
+        logdet += 2 * log(gsl_matrix_get(d->C, i, i));
+        gsl_vector_set(d->y, i, d->z[i]);
+        gsl_vector_set(d->a, i, 1);
+    }
+    gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, d->C, d->y);
+    gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, d->C, d->a);
+    gsl_blas_ddot(d->a, d->a, &aa);
+    gsl_blas_ddot(d->a, d->y, &ay);
+    gsl_blas_ddot(d->y, d->y, &yy);
+    d->beta = ay / aa;
+    q = yy - ay * ay / aa;
+    q = d->lik == NL_FIT_REML ? (n - 1) * log(2 * M_PI) + logdet + log(aa) + q : n * log(2 * M_PI) + logdet + q;
+    return isfinite(q) ? q : ML_BAD;
+}
+
+static double objective(const gsl_vector *u, void *params)
+{
+    ml_data *d = params;
+    nl_fit_params_from_u(d->p, u->data);
+    return minus2l(d);
+}
+
+static double at_u(ml_data *d, const double *u0, size_t i, double di, size_t j, double dj)
+{
+    double u[NL_FIT_MAX_PARAMS];
+    gsl_vector_view v = gsl_vector_view_array(u, d->p->nfree);
+    memcpy(u, u0, d->p->nfree * sizeof *u);
+    u[i] += di;
+    u[j] += dj;
+    return objective(&v.vector, d);
+}
+
+/* The covariance of u: the inverse of the Hessian of -l = (-2 l) / 2 by
+ * central differences; NaN where it is not positive definite. */
+static void ml_covariance(ml_data *d, const double *u0, double f0, double *cov)
+{
+    size_t k = d->p->nfree;
+    double h = ML_HSTEP, hh[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS];
+    gsl_matrix_view H = gsl_matrix_view_array(hh, k, k);
+    for (size_t i = 0; i < k; i++)
+        for (size_t j = 0; j <= i; j++) {
+            double v = i == j ? (at_u(d, u0, i, h, j, 0) - 2 * f0 + at_u(d, u0, i, -h, j, 0)) / (h * h)
+                              : (at_u(d, u0, i, h, j, h) - at_u(d, u0, i, h, j, -h) - at_u(d, u0, i, -h, j, h) +
+                                 at_u(d, u0, i, -h, j, -h)) / (4 * h * h);
+            hh[i * k + j] = hh[j * k + i] = v / 2;
+        }
+    if (gsl_linalg_cholesky_decomp1(&H.matrix) || gsl_linalg_cholesky_invert(&H.matrix)) {
+        for (size_t i = 0; i < k * k; i++)
+            cov[i] = NAN;
+        return;
+    }
+    memcpy(cov, hh, k * k * sizeof *cov);
+    /* restore the parameters of u0 */
+    {
+        gsl_vector_const_view v = gsl_vector_const_view_array(u0, k);
+        objective(&v.vector, d);
+    }
+}
+
+/* Nelder-Mead from the current parameters, restarted once from its optimum
+ * (a simplex can collapse before it reaches the minimum). */
+static int ml_minimise(ml_data *d, nl_fit_result *res, double *u_out)
+{
+    size_t k = d->p->nfree;
+    gsl_multimin_function F = {objective, k, d};
+    gsl_multimin_fminimizer *s = gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, k);
+    gsl_vector *u = gsl_vector_alloc(k), *step = gsl_vector_alloc(k);
+    int st = NL_OK;
+    if (!s || !u || !step) {
+        st = NL_ERROR(NL_ENOMEM, "out of memory");
+        goto done;
+    }
+    nl_fit_params_to_u(d->p, u->data);
+    for (int round = 0; round < 2; round++) {
+        int it = 0, test = GSL_CONTINUE;
+        gsl_vector_set_all(step, round ? 0.1 : 0.5);
+        gsl_multimin_fminimizer_set(s, &F, u, step);
+        while (test == GSL_CONTINUE && it++ < 2000) {
+            if (gsl_multimin_fminimizer_iterate(s))
+                break;
+            test = gsl_multimin_test_size(gsl_multimin_fminimizer_size(s), 1e-5);
+        }
+        res->iterations += it;
+        res->converged = test == GSL_SUCCESS;
+        gsl_vector_memcpy(u, gsl_multimin_fminimizer_x(s));
+    }
+    memcpy(u_out, u->data, k * sizeof *u_out);
+    res->objective = gsl_multimin_fminimizer_minimum(s);
+    if (!(res->objective < ML_BAD))
+        st = NL_ERROR(NL_EFAIL, "fit: no parameters of %s give a positive definite covariance of the data",
+                      d->p->family);
+done:
+    gsl_vector_free(step);
+    gsl_vector_free(u);
+    gsl_multimin_fminimizer_free(s);
+    return st;
+}
+
+static int check_data(const double *x, const double *z, size_t n, int dim, size_t nfree)
+{
+    int distinct = 0;
+    if (n < nfree + 2)
+        return NL_ERROR(NL_EINVAL, "fit: %zu data; expected at least %zu (the %zu free parameters and the mean + 1)",
+                        n, nfree + 2, nfree);
+    if (n > NL_FIT_ML_MAX)
+        return NL_ERROR(NL_ETOOBIG, "fit: %zu data for a likelihood fit; expected at most %d (use the variogram "
+                        "fit)", n, NL_FIT_ML_MAX);
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(z[i]))
+            return NL_ERROR(NL_EINVAL, "fit: value %zu is not finite (%g)", i + 1, z[i]);
+        for (int a = 0; a < dim; a++) {
+            double c = x[i * (size_t)dim + (size_t)a];
+            if (!isfinite(c))
+                return NL_ERROR(NL_EINVAL, "fit: coordinate %d of point %zu is not finite (%g)", a + 1, i + 1, c);
+            if (c != x[a])
+                distinct = 1;
+        }
+    }
+    if (!distinct)
+        return NL_ERROR(NL_EINVAL, "fit: all %zu points are identical; expected distinct locations", n);
+    return NL_OK;
+}
+
+/* Automatic start: the sample variance split 9:1 between var and nugget,
+ * the scale a tenth of the bounding box's diagonal (a fifth for the
+ * spherical model's range), shape parameters 1. */
+static void ml_start(nl_fit_params *p, const double *x, const double *z, size_t n, const double *start)
+{
+    double mean = 0, var = 0, diag = 0;
+    for (size_t i = 0; i < n; i++)
+        mean += z[i] / (double)n;
+    for (size_t i = 0; i < n; i++)
+        var += (z[i] - mean) * (z[i] - mean) / (double)(n - 1);
+    for (int a = 0; a < p->dim; a++) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (size_t i = 0; i < n; i++)
+            lo = fmin(lo, x[i * (size_t)p->dim + (size_t)a]), hi = fmax(hi, x[i * (size_t)p->dim + (size_t)a]);
+        diag += (hi - lo) * (hi - lo);
+    }
+    var = var > 0 ? var : 1;
+    diag = sqrt(diag);
+    for (size_t k = 0; k < p->np; k++) {
+        const char *nm = p->name[k];
+        double sc = diag / (strcmp(p->family, "spherical") == 0 ? 5 : 10);
+        double v = strcmp(nm, "scale") == 0 ? sc : strcmp(nm, "nugget") == 0 ? 0.1 * var
+                 : strcmp(nm, "var") == 0 ? (nl_fit_params_find(p, "nugget") >= 0 ? 0.9 : 1) * var
+                 : strcmp(nm, "omega") == 0 ? 1 / sc : 1;
+        if (start && isfinite(start[k]) && start[k] > 0)
+            v = start[k];
+        if (!p->fixed[k])
+            p->value[k] = v;
+    }
+}
+
+static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_fit_options *o, nl_fit_result *res)
+{
+    nl_fit_params p;
+    ml_data d;
+    double u[NL_FIT_MAX_PARAMS], cov[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS];
+    size_t nn[2] = {n, n};
+    int st;
+    memset(res, 0, sizeof *res);
+    if ((st = nl_fit_params_init(o, dim, &p)) || (st = check_data(x, z, n, dim, p.nfree)) ||
+        (st = nl_size_check(2, nn, sizeof(double), 1, NULL)))
+        return st;
+    if (p.nfree == 0)
+        return NL_ERROR(NL_EINVAL, "fix: every parameter of %s is fixed; expected at least one free", p.family);
+    ml_start(&p, x, z, n, o->start);
+    d = (ml_data){&p, x, z, n, o->likelihood, gsl_matrix_alloc(n, n), gsl_vector_alloc(n), gsl_vector_alloc(n), 0};
+    if (!d.C || !d.y || !d.a)
+        st = NL_ERROR(NL_ENOMEM, "out of memory for the %zu x %zu covariance matrix", n, n);
+    if (!st && !(st = ml_minimise(&d, res, u))) {
+        ml_covariance(&d, u, res->objective, cov);
+        res->mean = d.beta;
+        res->nobs = n;
+        /* ML: the free covariance parameters and the mean */
+        res->aic = res->objective + 2.0 * (double)(p.nfree + 1);
+        st = nl_fit_params_result(&p, cov, res);
+    }
+    gsl_vector_free(d.a);
+    gsl_vector_free(d.y);
+    gsl_matrix_free(d.C);
+    return st;
+}
+
+int nl_fit_ml(const double *coords, const double *values, size_t n, int dim, const nl_fit_options *o,
+              nl_fit_result *res)
+{
+    int st;
+    nl_gsl_enter();
+    st = fit_ml(coords, values, n, dim, o, res);
+    nl_gsl_leave();
+    return st;
+}

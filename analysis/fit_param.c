@@ -1,0 +1,169 @@
+/* The parameters of a fit: names by family, fixes, transforms, specs. */
+#include "fit_internal.h"
+#include "../core/nl_error.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+typedef struct {
+    const char *family;  /* as in a spec */
+    const char *shape;   /* its shape parameter, or NULL */
+} fit_family;
+
+static const fit_family families[] = {
+    {"markov", NULL},          {"gauss", NULL},   {"markaussian", "alpha"}, {"oscillatory", "omega"},
+    {"gauss-osc", "omega"},    {"matern", "nu"},  {"spherical", NULL},
+};
+
+static int fix_index(const nl_fit_options *o, const char *name)
+{
+    for (size_t i = 0; i < o->nfix; i++)
+        if (strcmp(o->fix_name[i], name) == 0)
+            return (int)i;
+    return -1;
+}
+
+static void add(nl_fit_params *p, const char *name, nl_fit_transform tr)
+{
+    p->name[p->np] = name;
+    p->tr[p->np] = tr;
+    p->value[p->np] = NAN;
+    p->np++;
+}
+
+static int apply_fixes(const nl_fit_options *o, nl_fit_params *p)
+{
+    for (size_t i = 0; i < o->nfix; i++) {
+        int k = nl_fit_params_find(p, o->fix_name[i]);
+        double v = o->fix_value[i];
+        if (k < 0) {
+            char list[64] = "";
+            for (size_t j = 0; j < p->np; j++)
+                snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", j ? ", " : "", p->name[j]);
+            return NL_ERROR(NL_EINVAL, "fix: %s has no parameter \"%s\" (expected one of: %s)", p->family,
+                            o->fix_name[i], list);
+        }
+        if (!isfinite(v) || v < 0 || (v == 0 && strcmp(p->name[k], "nugget") != 0) ||
+            (p->tr[k] == NL_FIT_LOGIT2 && v > 2))
+            return NL_ERROR(NL_EINVAL, "fix: %s=%g is out of range for %s", o->fix_name[i], v, p->family);
+        p->value[k] = v;
+        p->fixed[k] = 1;
+    }
+    return NL_OK;
+}
+
+int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p)
+{
+    const fit_family *f = NULL;
+    memset(p, 0, sizeof *p);
+    if (dim < 1 || dim > 3)
+        return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
+    if (o->nfix > NL_FIT_MAX_FIX)
+        return NL_ERROR(NL_EINVAL, "fix: expected at most %d fixed parameters, got %zu", NL_FIT_MAX_FIX, o->nfix);
+    for (size_t i = 0; o->family && i < sizeof families / sizeof *families; i++)
+        if (strcmp(o->family, families[i].family) == 0)
+            f = &families[i];
+    if (!f)
+        return NL_ERROR(NL_EINVAL, "model: expected markov, gauss, markaussian, oscillatory, gauss-osc, matern or "
+                        "spherical, got \"%s\"", o->family ? o->family : "");
+    p->family = f->family;
+    p->dim = dim;
+    add(p, "var", NL_FIT_LOG);
+    add(p, "scale", NL_FIT_LOG);
+    if (o->nugget || fix_index(o, "nugget") >= 0)
+        add(p, "nugget", NL_FIT_LOG);
+    if (f->shape)
+        add(p, f->shape, strcmp(f->shape, "alpha") == 0 ? NL_FIT_LOGIT2 : NL_FIT_LOG);
+    {
+        int st = apply_fixes(o, p);
+        if (st)
+            return st;
+    }
+    for (size_t k = 0; k < p->np; k++)
+        if (!p->fixed[k])
+            p->free_idx[p->nfree++] = k;
+    return NL_OK;
+}
+
+int nl_fit_params_find(const nl_fit_params *p, const char *name)
+{
+    for (size_t k = 0; k < p->np; k++)
+        if (strcmp(p->name[k], name) == 0)
+            return (int)k;
+    return -1;
+}
+
+void nl_fit_params_to_u(const nl_fit_params *p, double *u)
+{
+    for (size_t k = 0; k < p->nfree; k++) {
+        size_t i = p->free_idx[k];
+        double v = p->value[i];
+        u[k] = p->tr[i] == NL_FIT_LOG ? log(v) : -log(2 / v - 1);
+    }
+}
+
+/* Transformed coordinates are clamped so that values stay normal doubles
+ * (a nugget heading to 0 stops at e^-700 var-units instead of underflowing). */
+void nl_fit_params_from_u(nl_fit_params *p, const double *u)
+{
+    for (size_t k = 0; k < p->nfree; k++) {
+        size_t i = p->free_idx[k];
+        double x = fmax(-700, fmin(700, u[k]));
+        p->value[i] = p->tr[i] == NL_FIT_LOG ? exp(x) : 2 / (1 + exp(-x));
+    }
+}
+
+double nl_fit_params_dvalue(const nl_fit_params *p, size_t k)
+{
+    size_t i = p->free_idx[k];
+    double v = p->value[i];
+    return p->tr[i] == NL_FIT_LOG ? v : v * (1 - v / 2);
+}
+
+int nl_fit_params_spec(const nl_fit_params *p, char *buf, size_t size)
+{
+    size_t len = (size_t)snprintf(buf, size, "%s:", p->family);
+    /* the shape parameter first, as the catalogue writes it */
+    for (size_t pass = 0; pass < 2; pass++)
+        for (size_t k = 0; k < p->np; k++) {
+            int shape = k >= 2 && strcmp(p->name[k], "nugget") != 0;
+            if ((size_t)shape != 1 - pass)
+                continue;
+            if (len < size)
+                len += (size_t)snprintf(buf + len, size - len, "%s%s=%.8g", buf[len - 1] == ':' ? "" : ",",
+                                        p->name[k], p->value[k]);
+        }
+    if (len >= size)
+        return NL_ERROR(NL_EINVAL, "fit: the model spec does not fit in %zu bytes", size);
+    return NL_OK;
+}
+
+int nl_fit_params_model(const nl_fit_params *p, nl_model **m)
+{
+    char spec[512];
+    size_t len = (size_t)snprintf(spec, sizeof spec, "%s:", p->family);
+    for (size_t k = 0; k < p->np && len < sizeof spec; k++)
+        len += (size_t)snprintf(spec + len, sizeof spec - len, "%s%s=%.17g", k ? "," : "", p->name[k], p->value[k]);
+    *m = NULL;
+    if (len >= sizeof spec)
+        return NL_ERROR(NL_EINVAL, "fit: the model spec does not fit in %zu bytes", sizeof spec);
+    return nl_model_parse(spec, m);
+}
+
+int nl_fit_params_result(const nl_fit_params *p, const double *cov, nl_fit_result *res)
+{
+    res->np = p->np;
+    res->nfree = p->nfree;
+    for (size_t k = 0; k < p->np; k++) {
+        snprintf(res->name[k], sizeof res->name[k], "%s", p->name[k]);
+        res->value[k] = p->value[k];
+        res->fixed[k] = p->fixed[k];
+        res->se[k] = 0;
+    }
+    for (size_t k = 0; k < p->nfree; k++) {
+        double c = cov ? cov[k * p->nfree + k] : NAN;
+        res->se[p->free_idx[k]] = c >= 0 && isfinite(c) ? fabs(nl_fit_params_dvalue(p, k)) * sqrt(c) : NAN;
+    }
+    return nl_fit_params_spec(p, res->spec, sizeof res->spec);
+}

@@ -1,0 +1,187 @@
+/* Weighted least squares of a model semivariogram to an empirical one
+ * (Cressie 1985; gstat's fit.variogram, fit.method 1 and 2), by GSL's
+ * nonlinear least squares. */
+#include "fit_internal.h"
+#include "../core/gsl_guard_internal.h"
+#include "../core/nl_error.h"
+
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_multifit_nlinear.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    nl_fit_params *p;       /* parameters, updated at each evaluation */
+    const double *h, *g, *n;/* used bins: distance, semivariance, pairs */
+    size_t m;               /* used bins */
+    nl_fit_weights weights; /* Cressie or pairs */
+} wls_data;
+
+/* gamma(h) = R(0) - R(h) of the current parameters at the m distances. */
+static int model_gamma(nl_fit_params *p, const double *h, size_t m, double *out)
+{
+    nl_model *mod;
+    double zero[3] = {0, 0, 0}, r0;
+    int st = nl_fit_params_model(p, &mod);
+    if (st)
+        return st;
+    r0 = nl_model_acf(mod, p->dim, zero);
+    for (size_t j = 0; j < m; j++) {
+        double lag[3] = {h[j], 0, 0};
+        out[j] = r0 - nl_model_acf(mod, p->dim, lag);
+    }
+    nl_model_free(mod);
+    return NL_OK;
+}
+
+static int residuals(const gsl_vector *x, void *params, gsl_vector *f)
+{
+    wls_data *d = params;
+    double *gm = malloc(d->m * sizeof *gm);
+    if (!gm)
+        return GSL_ENOMEM;
+    nl_fit_params_from_u(d->p, x->data);
+    if (model_gamma(d->p, d->h, d->m, gm)) {
+        free(gm);
+        return GSL_EDOM;
+    }
+    for (size_t j = 0; j < d->m; j++) {
+        double r = d->weights == NL_FIT_CRESSIE ? sqrt(d->n[j]) * (d->g[j] / gm[j] - 1)
+                                                : sqrt(d->n[j]) * (gm[j] - d->g[j]);
+        gsl_vector_set(f, j, isfinite(r) ? r : 1e150);
+    }
+    free(gm);
+    return GSL_SUCCESS;
+}
+
+/* Automatic start: the sill from the far half of the bins, the nugget a
+ * tenth of it, the scale where gamma first reaches 1 - 1/e of the sill
+ * (twice that for the spherical model's range). */
+static void wls_start(nl_fit_params *p, const wls_data *d, const double *start)
+{
+    double sill = 0, cnt = 0, scale = d->h[d->m - 1] / 3;
+    for (size_t j = d->m / 2; j < d->m; j++)
+        sill += d->g[j], cnt++;
+    sill = cnt > 0 && sill > 0 ? sill / cnt : 1;
+    for (size_t j = 0; j < d->m; j++)
+        if (d->g[j] >= (1 - exp(-1)) * sill) {
+            scale = d->h[j];
+            break;
+        }
+    if (strcmp(p->family, "spherical") == 0)
+        scale *= 2;
+    for (size_t k = 0; k < p->np; k++) {
+        const char *nm = p->name[k];
+        double v = strcmp(nm, "scale") == 0 ? scale : strcmp(nm, "nugget") == 0 ? 0.1 * sill
+                 : strcmp(nm, "var") == 0 ? (nl_fit_params_find(p, "nugget") >= 0 ? 0.9 : 1) * sill
+                 : strcmp(nm, "omega") == 0 ? 1 / scale : 1;
+        if (start && isfinite(start[k]) && start[k] > 0)
+            v = start[k];
+        if (!p->fixed[k])
+            p->value[k] = v;
+    }
+}
+
+static size_t used_bins(const double *h, const double *g, const double *n, size_t nbins, double *buf)
+{
+    size_t m = 0;
+    for (size_t j = 0; j < nbins; j++)
+        if (n[j] > 0 && isfinite(h[j]) && h[j] > 0 && isfinite(g[j]) && g[j] >= 0) {
+            buf[m] = h[j];
+            buf[nbins + m] = g[j];
+            buf[2 * nbins + m] = n[j];
+            m++;
+        }
+    return m;
+}
+
+static int solve(wls_data *d, nl_fit_result *res, double *cov)
+{
+    const gsl_multifit_nlinear_type *T = gsl_multifit_nlinear_trust;
+    gsl_multifit_nlinear_parameters fp = gsl_multifit_nlinear_default_parameters();
+    gsl_multifit_nlinear_fdf fdf = {residuals, NULL, NULL, d->m, d->p->nfree, d, 0, 0, 0};
+    gsl_multifit_nlinear_workspace *w = gsl_multifit_nlinear_alloc(T, &fp, d->m, d->p->nfree);
+    gsl_vector *u = gsl_vector_alloc(d->p->nfree);
+    gsl_matrix *C = gsl_matrix_alloc(d->p->nfree, d->p->nfree);
+    int info = 0, st = NL_OK, gst;
+    if (!w || !u || !C) {
+        st = NL_ERROR(NL_ENOMEM, "out of memory");
+        goto done;
+    }
+    nl_fit_params_to_u(d->p, u->data);
+    if ((gst = gsl_multifit_nlinear_init(u, &fdf, w))) {
+        st = NL_ERROR(NL_EFAIL, "fit: the model cannot be evaluated at the start: %s", nl_gsl_reason(gst));
+        goto done;
+    }
+    gst = gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 1e-12, NULL, NULL, &info, w);
+    res->converged = gst == GSL_SUCCESS;
+    res->iterations = (int)gsl_multifit_nlinear_niter(w);
+    nl_fit_params_from_u(d->p, w->x->data);
+    {
+        gsl_vector *f = gsl_multifit_nlinear_residual(w);
+        double ss;
+        gsl_blas_ddot(f, f, &ss);
+        res->objective = ss;
+        if (!isfinite(ss) || ss >= 1e299) {
+            st = NL_ERROR(NL_EFAIL, "fit: no finite objective near the data (model %s)", d->p->family);
+            goto done;
+        }
+        if (gsl_multifit_nlinear_covar(gsl_multifit_nlinear_jac(w), 0.0, C) == GSL_SUCCESS) {
+            double s2 = d->m > d->p->nfree ? ss / (double)(d->m - d->p->nfree) : NAN;
+            for (size_t i = 0; i < d->p->nfree * d->p->nfree; i++)
+                cov[i] = s2 * C->data[i];
+        } else {
+            for (size_t i = 0; i < d->p->nfree * d->p->nfree; i++)
+                cov[i] = NAN;
+        }
+    }
+done:
+    gsl_matrix_free(C);
+    gsl_vector_free(u);
+    gsl_multifit_nlinear_free(w);
+    return st;
+}
+
+static int fit_variogram(const double *distance, const double *gamma, const double *pairs, size_t nbins, int dim,
+                         const nl_fit_options *o, nl_fit_result *res)
+{
+    nl_fit_params p;
+    wls_data d;
+    double cov[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS], *buf;
+    int st;
+    memset(res, 0, sizeof *res);
+    res->mean = NAN;
+    if ((st = nl_fit_params_init(o, dim, &p)))
+        return st;
+    if (p.nfree == 0)
+        return NL_ERROR(NL_EINVAL, "fix: every parameter of %s is fixed; expected at least one free", p.family);
+    if (!(buf = malloc((3 * nbins + 1) * sizeof *buf)))
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    d = (wls_data){&p, buf, buf + nbins, buf + 2 * nbins, used_bins(distance, gamma, pairs, nbins, buf),
+                   o->weights};
+    if (d.m < p.nfree + 1) {
+        free(buf);
+        return NL_ERROR(NL_EINVAL, "fit: %zu variogram bins with pairs; expected at least %zu (the %zu free "
+                        "parameters + 1)", d.m, p.nfree + 1, p.nfree);
+    }
+    wls_start(&p, &d, o->start);
+    st = solve(&d, res, cov);
+    if (!st) {
+        res->nobs = d.m;
+        res->aic = (double)d.m * log(res->objective / (double)d.m) + 2.0 * (double)p.nfree;
+        st = nl_fit_params_result(&p, cov, res);
+    }
+    free(buf);
+    return st;
+}
+
+int nl_fit_variogram(const double *distance, const double *gamma, const double *pairs, size_t nbins, int dim,
+                     const nl_fit_options *o, nl_fit_result *res)
+{
+    int st;
+    nl_gsl_enter();
+    st = fit_variogram(distance, gamma, pairs, nbins, dim, o, res);
+    nl_gsl_leave();
+    return st;
+}

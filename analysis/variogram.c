@@ -1,0 +1,215 @@
+/* Empirical variogram: Matheron's and Cressie and Hawkins' (1980)
+ * estimators over the pairs within the cutoff, binned as gstat's
+ * variogram(). */
+#include "variogram.h"
+#include "variogram_internal.h"
+#include "../core/nl_error.h"
+#include "../core/spindex.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void nl_variogram_options_default(nl_variogram_options *o)
+{
+    *o = (nl_variogram_options){.estimator = NL_VARIOGRAM_MATHERON};
+}
+
+void nl_variogram_free(nl_variogram *v)
+{
+    if (!v)
+        return;
+    free(v->distance), free(v->gamma), free(v->pairs), free(v);
+}
+
+int nl_vg_check_options(const nl_variogram_options *o)
+{
+    if (!(o->width >= 0) || !isfinite(o->width))
+        return NL_ERROR(NL_EINVAL, "variogram: width: expected a finite number >= 0 (0: cutoff / 15), got %g", o->width);
+    if (!(o->cutoff >= 0) || !isfinite(o->cutoff))
+        return NL_ERROR(NL_EINVAL, "variogram: cutoff: expected a finite number >= 0 (0: a third of the diagonal), got %g",
+                        o->cutoff);
+    if (o->estimator != NL_VARIOGRAM_MATHERON && o->estimator != NL_VARIOGRAM_CRESSIE)
+        return NL_ERROR(NL_EINVAL, "variogram: estimator: expected matheron or cressie, got %d", o->estimator);
+    if (o->directional && (!isfinite(o->direction) || !(o->tolerance >= 0 && o->tolerance <= 90)))
+        return NL_ERROR(NL_EINVAL, "variogram: expected a finite direction and a tolerance in [0, 90] degrees, got %g and %g",
+                        o->direction, o->tolerance);
+    return NL_OK;
+}
+
+/* The bins; the default cutoff is gstat's: 0.33333 (its DEF_fraction, not
+ * 1/3) times the bounding-box diagonal diag, so that bins match to rounding. */
+int nl_vg_bins(const nl_variogram_options *o, double diag, nl_vg_acc *acc)
+{
+    memset(acc, 0, sizeof *acc);
+    acc->cutoff = o->cutoff > 0 ? o->cutoff : NL_VG_FRACTION * diag;
+    acc->width = o->width > 0 ? o->width : acc->cutoff / 15;
+    if (!(acc->cutoff > 0) || !(acc->width > 0))
+        return NL_ERROR(NL_EINVAL, "variogram: expected points at more than one place (the bounding-box diagonal is %g)",
+                        diag);
+    double nb = ceil(acc->cutoff / acc->width);
+    if (!(nb <= NL_VG_MAXBINS))
+        return NL_ERROR(NL_EINVAL, "variogram: cutoff / width = %g / %g gives %g bins; expected at most %d", acc->cutoff,
+                        acc->width, nb, NL_VG_MAXBINS);
+    acc->nb = (size_t)nb;
+    acc->cressie = o->estimator == NL_VARIOGRAM_CRESSIE;
+    acc->directional = o->directional && o->tolerance < 90;
+    if (acc->directional) { /* gstat: the unit vector alpha degrees clockwise from +y */
+        double a = o->direction * M_PI / 180;
+        acc->ux = sin(a), acc->uy = cos(a), acc->costol = cos(o->tolerance * M_PI / 180);
+    }
+    return NL_OK;
+}
+
+int nl_vg_sums_alloc(size_t nb, double **s)
+{
+    *s = calloc(3 * nb, sizeof **s);
+    return *s ? NL_OK : NL_ERROR(NL_ENOMEM, "variogram: out of memory for %zu bins", nb);
+}
+
+/* Is the pair's direction (dx, dy) within the tolerance?  A pair with no
+ * horizontal extent counts, as in gstat. */
+static int in_direction(const nl_vg_acc *a, double dx, double dy)
+{
+    double h = sqrt(dx * dx + dy * dy);
+    return h == 0 || fabs(dx * a->ux + dy * a->uy) >= a->costol * h;
+}
+
+long nl_vg_bin(const nl_vg_acc *a, double d, const double *dx)
+{
+    if (a->directional && !in_direction(a, dx[0], dx[1]))
+        return -1;
+    double k = floor(d / a->width);
+    return d < a->cutoff && k < (double)a->nb ? (long)k : -1;
+}
+
+void nl_vg_add(const nl_vg_acc *a, double *sums, double d, const double *dx, double dz)
+{
+    long k = nl_vg_bin(a, d, dx);
+    if (k < 0)
+        return;
+    double *s = sums + 3 * (size_t)k;
+    s[0] += d, s[1] += a->cressie ? sqrt(fabs(dz)) : dz * dz, s[2] += 1;
+}
+
+int nl_vg_finish(const nl_vg_acc *a, const double *sums, nl_variogram **out)
+{
+    size_t m = 0;
+    for (size_t k = 0; k < a->nb; k++)
+        m += sums[3 * k + 2] > 0;
+    if (!m)
+        return NL_ERROR(NL_EINVAL, "variogram: no pair of points within the cutoff %g%s; expected at least one", a->cutoff,
+                        a->directional ? " and the direction's tolerance" : "");
+    nl_variogram *v = calloc(1, sizeof *v);
+    if (!v || !(v->distance = malloc(m * sizeof(double))) || !(v->gamma = malloc(m * sizeof(double))) ||
+        !(v->pairs = malloc(m * sizeof(double)))) {
+        nl_variogram_free(v);
+        return NL_ERROR(NL_ENOMEM, "variogram: out of memory");
+    }
+    for (size_t k = 0; k < a->nb; k++) {
+        const double *s = sums + 3 * k;
+        if (!(s[2] > 0))
+            continue;
+        size_t i = v->nbins++;
+        v->distance[i] = s[0] / s[2], v->pairs[i] = s[2];
+        if (a->cressie) { /* Cressie and Hawkins 1980, eq. (2.4) */
+            double q = s[1] / s[2];
+            v->gamma[i] = 0.5 * q * q * q * q / (0.457 + 0.494 / s[2]);
+        } else
+            v->gamma[i] = s[1] / (2 * s[2]);
+    }
+    *out = v;
+    return NL_OK;
+}
+
+typedef struct {
+    const nl_vg_acc *a;  /* binning */
+    const nl_points *p;  /* the data */
+    double *sums;        /* this block's sums */
+} pair_ctx;
+
+static int on_pair(void *ctx, size_t i, size_t j, double d2)
+{
+    pair_ctx *c = ctx;
+    int dim = c->p->dim;
+    double dx[3] = {0, 0, 0};
+    for (int k = 0; k < dim && k < 2; k++)
+        dx[k] = c->p->pts[i * dim + k] - c->p->pts[j * dim + k];
+    nl_vg_add(c->a, c->sums, sqrt(d2), dx, c->p->val[i] - c->p->val[j]);
+    return 0;
+}
+
+static int check_points(const nl_points *p, double *diag)
+{
+    double lo[3], hi[3], s = 0;
+    *diag = 0;
+    if (!p || p->n < 2)
+        return NL_ERROR(NL_EINVAL, "variogram: expected at least 2 points, got %zu", p ? p->n : 0);
+    int dim = p->dim;
+    for (int k = 0; k < dim; k++)
+        lo[k] = INFINITY, hi[k] = -INFINITY;
+    for (size_t i = 0; i < p->n; i++) {
+        if (!isfinite(p->val[i]))
+            return NL_ERROR(NL_EINVAL, "variogram: the value of point %zu is %g; expected a finite number", i + 1, p->val[i]);
+        for (int k = 0; k < dim; k++)
+            lo[k] = fmin(lo[k], p->pts[i * dim + k]), hi[k] = fmax(hi[k], p->pts[i * dim + k]);
+    }
+    for (int k = 0; k < dim; k++)
+        s += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    *diag = sqrt(s);
+    if (!isfinite(*diag))
+        return NL_ERROR(NL_EINVAL, "variogram: the points span a distance that is not finite; expected finite coordinates");
+    if (!(*diag > 0))
+        return NL_ERROR(NL_EINVAL, "variogram: all %zu points are at one place; expected points at two places at least", p->n);
+    return NL_OK;
+}
+
+/* Blocks of positions run in parallel; their sums are added in block order,
+ * so the result does not depend on the number of threads. */
+#define VG_BLOCK 256
+static int accumulate(const nl_spindex *s, const nl_points *p, const nl_vg_acc *a, double *sums)
+{
+    size_t n = p->n, nblk = (n + VG_BLOCK - 1) / VG_BLOCK;
+    int fail = 0;
+#pragma omp parallel if (n > 4 * VG_BLOCK)
+    {
+        double *loc = calloc(3 * a->nb, sizeof *loc);
+        if (!loc) {
+#pragma omp atomic write
+            fail = 1;
+        }
+#pragma omp for ordered schedule(dynamic, 1)
+        for (size_t b = 0; b < nblk; b++) {
+            pair_ctx c = {a, p, loc};
+            if (loc) {
+                memset(loc, 0, 3 * a->nb * sizeof *loc);
+                for (size_t k = b * VG_BLOCK; k < n && k < (b + 1) * VG_BLOCK; k++)
+                    nl_spindex_pairs_at(s, k, a->cutoff, on_pair, &c);
+            }
+#pragma omp ordered
+            if (loc)
+                for (size_t k = 0; k < 3 * a->nb; k++)
+                    sums[k] += loc[k];
+        }
+        free(loc);
+    }
+    return fail ? NL_ERROR(NL_ENOMEM, "variogram: out of memory for %zu bins per thread", a->nb) : NL_OK;
+}
+
+int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out)
+{
+    double diag, *sums = NULL;
+    nl_vg_acc a;
+    nl_spindex *s = NULL;
+    int st;
+    *out = NULL;
+    if ((st = check_points(p, &diag)) || (st = nl_vg_check_options(o)) || (st = nl_vg_bins(o, diag, &a)))
+        return st;
+    if ((st = nl_spindex_alloc(p->dim, p->n, p->pts, &s)))
+        return st;
+    if (!(st = nl_vg_sums_alloc(a.nb, &sums)) && !(st = accumulate(s, p, &a, sums)))
+        st = nl_vg_finish(&a, sums, out);
+    free(sums);
+    nl_spindex_free(s);
+    return st;
+}

@@ -1,0 +1,69 @@
+/* Empirical (semi)variogram of scattered points and of fields, binned as
+ * gstat's variogram() (Pebesma 2004).
+ *
+ * Pairs (i, j), i < j, at distance h_ij = |x_i - x_j| with 0 <= h_ij < cutoff
+ * fall into bin k = floor(h_ij / width) (bins [k W, (k + 1) W)); a pair at
+ * exactly the cutoff is dropped.  Per bin, with N_k pairs and
+ * d_ij = z_i - z_j:
+ *     Matheron:  gamma_k = sum d_ij^2 / (2 N_k)
+ *     Cressie and Hawkins (1980):  gamma_k = (sum |d_ij|^(1/2) / N_k)^4
+ *                / (2 (0.457 + 0.494 / N_k))
+ * distance_k = mean h_ij of the bin's pairs.  Bins without a pair are left
+ * out.  The default cutoff is gstat's: 0.33333 (gstat's constant, not
+ * exactly 1/3) times the diagonal of the points' bounding box.  Directional variograms keep the pairs whose direction lies within
+ * `tolerance` degrees of `direction` (either sense): gstat's alpha (degrees
+ * clockwise from the y axis, "north", towards x) and tol.hor, in the x-y
+ * plane (for 3D points the pair's projection onto the x-y plane; a pair
+ * with a zero projection is kept, as in gstat).
+ *
+ * Pairs are enumerated through a spatial index (core/spindex.h) with cells
+ * of the cutoff: memory O(n), time O(n + pairs within the cutoff). */
+#ifndef NL_VARIOGRAM_H
+#define NL_VARIOGRAM_H
+
+#include "../core/field.h"
+#include "../core/io_points.h"
+
+#include <stddef.h>
+
+enum { NL_VARIOGRAM_MATHERON, NL_VARIOGRAM_CRESSIE };
+
+typedef struct {
+    double width;     /* bin width; 0 = cutoff / 15 */
+    double cutoff;    /* 0 = a third of the bounding-box diagonal, gstat's default */
+    int estimator;    /* NL_VARIOGRAM_MATHERON or NL_VARIOGRAM_CRESSIE */
+    int directional;  /* 0 = omnidirectional */
+    double direction; /* degrees, gstat's alpha convention */
+    double tolerance; /* degrees, gstat's tol.hor */
+} nl_variogram_options;
+
+/* Omnidirectional Matheron with gstat's default width and cutoff. */
+void nl_variogram_options_default(nl_variogram_options *o);
+
+typedef struct {
+    size_t nbins;     /* bins holding at least one pair */
+    double *distance; /* mean pair distance */
+    double *gamma;    /* semivariance */
+    double *pairs;    /* pair counts */
+} nl_variogram;
+
+/* The variogram of the points p (nl_points from core/io_points.h, 1 to 3
+ * coordinates).  *out (NULL on failure) is released by nl_variogram_free.
+ * Errors: NL_EINVAL for fewer than 2 points, a coordinate or value that is
+ * not finite, all points at one place (no positive distance), a width or
+ * cutoff that is negative or not finite, more than 10^6 bins, an unknown
+ * estimator, a direction or tolerance that is not finite (tolerance must lie
+ * in [0, 90]), or no pair within the cutoff; NL_ETOOBIG or NL_ENOMEM when the
+ * index outgrows memory.  Thread-safe. */
+int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out);
+
+/* The variogram of a field: sample (i, j, k) at (i h[0], j h[1], k h[2]),
+ * all pairs of samples (same binning and errors as nl_variogram_points;
+ * non-finite samples are refused).  Time O(count x offsets within the
+ * cutoff).  Thread-safe. */
+int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_variogram **out);
+
+/* Release v and its arrays (NULL is a no-op). */
+void nl_variogram_free(nl_variogram *v);
+
+#endif

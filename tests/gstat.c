@@ -1,0 +1,50 @@
+/* Running R with gstat from the tests. */
+#include "gstat.h"
+#include "util.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+int gstat_available(const char *what)
+{
+    if (system("Rscript -e 'suppressMessages(library(gstat))' >/dev/null 2>&1") == 0)
+        return 1;
+    fprintf(stderr, "skip: %s: Rscript with gstat is not installed (Debian: r-cran-gstat)\n", what);
+    return 0;
+}
+
+long gstat_run(const char *script, double *v, size_t max)
+{
+    char path[512], cmd[1024];
+    snprintf(path, sizeof path, "%s/gstat.R", scratch_dir());
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    fputs(script, f);
+    fclose(f);
+    snprintf(cmd, sizeof cmd, "cd %s && Rscript gstat.R 2>/dev/null", scratch_dir());
+    FILE *p = popen(cmd, "r");
+    if (!p)
+        return -1;
+    size_t n = 0;
+    while (n < max && fscanf(p, "%lf", &v[n]) == 1)
+        n++;
+    return pclose(p) == 0 ? (long)n : -1;
+}
+
+void gstat_write_points(const char *path, int dim, size_t n, const double *pts, const double *val)
+{
+    static const char *names[] = {"x", "y", "z"};
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return;
+    for (int k = 0; k < dim; k++)
+        fprintf(f, "%s\t", names[k]);
+    fprintf(f, "value\n");
+    for (size_t i = 0; i < n; i++) {
+        for (int k = 0; k < dim; k++)
+            fprintf(f, "%.17g\t", pts[i * dim + k]);
+        fprintf(f, "%.17g\n", val[i]);
+    }
+    fclose(f);
+}
