@@ -80,7 +80,8 @@ static const char help[] =
     "                   data (conditional simulation, Journel: the field plus the ordinary\n"
     "                   kriging of data minus field; --mean M: simple); sample i at\n"
     "                   a + (i + 0.5)(b - a)/N; --interpolation bilinear|nearest reads the field\n"
-    "                   between samples; --realizations K: OUT-1.exr ... OUT-K.exr, seeds S..\n"
+    "                   between samples; --realizations K: OUT-1.exr ... OUT-K.exr, seeds S..;\n"
+    "                   --ensemble-mean M.exr, --ensemble-variance V.exr (divisor K - 1)\n"
     "  --from FILE      regenerate FILE from what it records (method, options, model,\n"
     "                   seed, size, spacing): bit for bit for every method\n"
     "  -o               EXR (any dimension; attributes noiselab.model, .method, .seed,\n"
@@ -323,7 +324,8 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         {"displacements", required_argument, 0, 'X'}, {"taps", required_argument, 0, 'T'},
         {"condition", required_argument, 0, 'Y'}, {"extent", required_argument, 0, 'Z'},
         {"realizations", required_argument, 0, 'k'}, {"mean", required_argument, 0, 'M'},
-        {"interpolation", required_argument, 0, 'Q'},
+        {"interpolation", required_argument, 0, 'Q'}, {"ensemble-mean", required_argument, 0, 'g'},
+        {"ensemble-variance", required_argument, 0, 'J'},
         {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "synth")) != -1) {
@@ -350,7 +352,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'C': job->cell = parse_int("--cell", optarg, 1, INT_MAX); break;
         case 'W': job->wrap = 1; break;
         case 'F': g->from = optarg; break;
-        case 'Y': case 'Z': case 'k': case 'M': case 'Q': cli_synth_cond_option(&g->cond, c, optarg); break;
+        case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': cli_synth_cond_option(&g->cond, c, optarg); break;
         case 'h': fputs(help, stdout); return 1;
         }
     }
@@ -555,6 +557,7 @@ static void realization(cli_synth_job *job, cli_synth_args *g, cli_synth_run_fn 
     memset(res, 0, sizeof *res);
     run(job, f, res);
     cli_synth_cond_apply(&g->cond, job, f, res, k);
+    cli_synth_cond_accumulate(&g->cond, f, k);
     fill_meta(job, f, res, &meta);
     check_output(job, g, f);
     cli_phase("synth", "writing");
@@ -563,9 +566,10 @@ static void realization(cli_synth_job *job, cli_synth_args *g, cli_synth_run_fn 
         cli_die_status(st);
     cli_out_commit(out);
     cli_out_commit(prev);
-    if (g->json && k + 1 == g->cond.K) {
+    if (k + 1 == g->cond.K)
+        cli_synth_cond_finish(&g->cond, &meta);
+    if (g->json && k + 1 == g->cond.K)
         print_json(job, &meta, res, &g->cond);
-    }
 }
 
 int cli_cmd_synth(int argc, char **argv)
@@ -596,6 +600,7 @@ int cli_cmd_synth(int argc, char **argv)
         tmps[2 * k] = cli_out_begin(cli_synth_cond_name(&g.cond, g.out, k, ob, sizeof ob));
         tmps[2 * k + 1] = cli_out_begin(cli_synth_cond_name(&g.cond, g.preview, k, pb, sizeof pb));
     }
+    cli_synth_cond_begin(&g.cond);
     f = cli_field_alloc(job.dim, job.n, job.h);
     uint64_t seed0 = job.seed;
     for (size_t k = 0; k < g.cond.K; k++) {

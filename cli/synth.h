@@ -62,6 +62,9 @@ typedef struct {
     double mean;                 /* --mean */
     int interp;                  /* NL_INTERP_* for reading U at the data (default bilinear) */
     double lo[3], hi[3];         /* --extent */
+    const char *emean, *evar;    /* --ensemble-mean, --ensemble-variance, or NULL */
+    const char *etmp[2];         /* their temporaries */
+    nl_field *s1, *s2;           /* running mean and sum of squared deviations (Welford) */
     nl_condsim_plan *plan;       /* made by cli_synth_cond_prepare */
     nl_condsim_info info;        /* its figures */
 } cli_synth_cond;
@@ -71,6 +74,12 @@ void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg);
 /* After the size and model are known: check the options, set job->h from
  * the extent, read the data and make the plan (exit 2 on bad input). */
 void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int spacing);
+/* Begin the ensemble outputs (after the realizations' own). */
+void cli_synth_cond_begin(cli_synth_cond *c);
+/* Add realization k (from 0) to the ensemble statistics. */
+void cli_synth_cond_accumulate(cli_synth_cond *c, const nl_field *f, size_t k);
+/* Write the ensemble mean and variance (meta: the last realization's record). */
+void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta);
 /* The output name of realization k (path itself unless K > 1; buf holds it). */
 const char *cli_synth_cond_name(const cli_synth_cond *c, const char *path, size_t k, char *buf, size_t len);
 /* Condition the unconditional field f (realization k) and say so in r->method. */

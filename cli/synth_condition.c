@@ -17,6 +17,8 @@ void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg)
     case 'Y': c->data = arg; break;
     case 'Z': c->extent = arg; break;
     case 'k': c->K = cli_parse_count("--realizations", arg, 1), c->given_K = 1; break;
+    case 'g': c->emean = arg; break;
+    case 'J': c->evar = arg; break;
     case 'M': c->mean = cli_parse_double("--mean", arg), c->simple = 1; break;
     case 'Q':
         if (!strcmp(arg, "nearest"))
@@ -34,8 +36,9 @@ void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg)
 static void check_given(const cli_synth_cond *c, const cli_synth_job *job, int from, int spacing)
 {
     if (!c->data) {
-        if (c->extent || c->given_K || c->simple || c->given_interp)
-            cli_die(2, "synth: --extent, --realizations, --mean and --interpolation apply to --condition only");
+        if (c->extent || c->given_K || c->simple || c->given_interp || c->emean || c->evar)
+            cli_die(2, "synth: --extent, --realizations, --mean, --interpolation, --ensemble-mean and "
+                    "--ensemble-variance apply to --condition only");
         return;
     }
     if (from)
@@ -49,6 +52,12 @@ static void check_given(const cli_synth_cond *c, const cli_synth_job *job, int f
         cli_die(2, "synth: --spacing and --extent exclude each other (the spacing is the extent over the size)");
     if (c->K > 9999)
         cli_die(2, "--realizations: expected at most 9999, got %zu", c->K);
+    if (c->evar && c->K < 2)
+        cli_die(2, "--ensemble-variance: expected --realizations K with K >= 2, got %zu", c->K);
+    if ((c->emean && !cli_has_ext(c->emean, ".exr")) || (c->evar && !cli_has_ext(c->evar, ".exr")))
+        cli_die(2, "%s: expected a file name ending in .exr, got \"%s\"",
+                c->emean && !cli_has_ext(c->emean, ".exr") ? "--ensemble-mean" : "--ensemble-variance",
+                c->emean && !cli_has_ext(c->emean, ".exr") ? c->emean : c->evar);
 }
 
 static void parse_extent(cli_synth_cond *c, const cli_synth_job *job)
@@ -159,7 +168,48 @@ void cli_synth_cond_note(const cli_synth_cond *c)
             c->info.max_error, c->info.worst + 1);
 }
 
+void cli_synth_cond_begin(cli_synth_cond *c)
+{
+    c->etmp[0] = cli_out_begin(c->emean);
+    c->etmp[1] = cli_out_begin(c->evar);
+}
+
+/* Welford's update: s1 the mean of the first k + 1, s2 their sum of squared deviations. */
+void cli_synth_cond_accumulate(cli_synth_cond *c, const nl_field *f, size_t k)
+{
+    if (!c->emean && !c->evar)
+        return;
+    if (!c->s1)
+        c->s1 = cli_field_alloc(f->dim, f->n, f->h), c->s2 = cli_field_alloc(f->dim, f->n, f->h);
+    for (size_t i = 0; i < f->count; i++) {
+        double d = f->data[i] - c->s1->data[i];
+        c->s1->data[i] += d / (double)(k + 1);
+        c->s2->data[i] += d * (f->data[i] - c->s1->data[i]);
+    }
+}
+
+void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta)
+{
+    nl_meta m = *meta;
+    if (!c->emean && !c->evar)
+        return;
+    for (size_t i = 0; i < c->s2->count; i++) /* the unbiased variance, divisor K - 1 */
+        c->s2->data[i] = c->K > 1 ? c->s2->data[i] / (double)(c->K - 1) : 0;
+    m.seed[0] = 0, m.flags[0] = 0;
+    snprintf(m.method, sizeof m.method, "ensemble mean of %zu conditional realizations (data=%s,extent=%s)", c->K,
+             c->data, c->extent);
+    if (c->emean)
+        cli_check(nl_exr_write(c->etmp[0], c->s1, &m));
+    snprintf(m.method, sizeof m.method, "ensemble variance of %zu conditional realizations (data=%s,extent=%s)",
+             c->K, c->data, c->extent);
+    if (c->evar)
+        cli_check(nl_exr_write(c->etmp[1], c->s2, &m));
+    cli_out_commit(c->emean);
+    cli_out_commit(c->evar);
+}
+
 void cli_synth_cond_free(cli_synth_cond *c)
 {
     nl_condsim_plan_free(c->plan);
+    nl_field_free(c->s1), nl_field_free(c->s2);
 }
