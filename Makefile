@@ -190,6 +190,7 @@ bench: $(BIN)
 	$(BIN) bench | tee $(BUILD)/bench/bench.tsv
 	gnuplot -e "in='$(BUILD)/bench/bench.tsv'; out='$(BUILD)/bench/bench.png'" tools/bench-plot.gp
 	sh tools/bench-r.sh $(BIN) $(BUILD)/bench/r | tee $(BUILD)/bench/bench-r.tsv
+	sh tools/bench-gstat.sh $(BIN) $(BUILD)/bench/gstat | tee $(BUILD)/bench/bench-gstat.tsv
 	@echo "bench: $(BUILD)/bench/bench.tsv, bench.png and (with R installed) bench-r.tsv"
 
 clean:

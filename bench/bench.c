@@ -6,6 +6,9 @@
 #include "../cli/cli.h"
 #include "../analysis/acf.h"
 #include "../analysis/krige.h"
+#include "../analysis/krige_local.h"
+#include "../analysis/variogram.h"
+#include "../core/spindex.h"
 #include "../analysis/psd.h"
 #include "../core/fftw_plan.h"
 #include "../core/mem.h"
@@ -26,7 +29,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <time.h>
+#include <unistd.h>
 
 static const char help[] =
     "usage: noiselab bench [--quick] [--repeat R]\n\n"
@@ -43,6 +49,10 @@ static const char help[] =
     "  psd             FFTW r2c of the field\n"
     "  krige           one covariance evaluation per (grid point, data point)\n"
     "  rank1           the tensor-product FFT with the same number of points\n"
+    "  variogram       the k-d tree's enumeration of the pairs within the cutoff\n"
+    "  krige nmax      the k-d tree's search of the 32 nearest data per cell\n"
+    "The variogram and local kriging rows run once each, in a child process whose\n"
+    "peak resident memory (getrusage) is given in the case's name.\n"
     "FFTW plans are measured once and kept (see the README); planning is not timed.\n";
 
 static double now(void)
@@ -341,6 +351,122 @@ static void bench_rank1(int quick, int reps)
     }
 }
 
+/* Uniform points in the unit square with Gaussian values (seeded). */
+static nl_points *bench_points(size_t n)
+{
+    nl_points *p = cli_malloc(sizeof *p);
+    p->dim = 2, p->n = n, p->pts = cli_malloc(2 * n * sizeof(double)), p->val = cli_malloc(n * sizeof(double));
+    for (size_t i = 0; i < n; i++)
+        p->pts[2 * i] = nl_rng_uniform(11, 0, 2 * i), p->pts[2 * i + 1] = nl_rng_uniform(11, 0, 2 * i + 1),
+        p->val[i] = nl_rng_gauss(11, 1, i);
+    return p;
+}
+
+static int count_pair(void *ctx, size_t i, size_t j, double d2)
+{
+    (void)i, (void)j, (void)d2;
+    ++*(size_t *)ctx;
+    return 0;
+}
+
+/* Run task(n, g) in a child: its seconds through a pipe, its peak resident
+ * memory from wait4. */
+static double in_child(double (*task)(size_t, size_t), size_t n, size_t g, double *mb)
+{
+    int fd[2];
+    double t = NAN;
+    struct rusage ru;
+    int status;
+    fflush(stdout);
+    if (pipe(fd))
+        cli_die(1, "bench: pipe failed");
+    pid_t pid = fork();
+    if (pid < 0)
+        cli_die(1, "bench: fork failed");
+    if (pid == 0) {
+        close(fd[0]);
+        t = task(n, g);
+        if (write(fd[1], &t, sizeof t) != (ssize_t)sizeof t)
+            _exit(1);
+        _exit(0);
+    }
+    close(fd[1]);
+    if (read(fd[0], &t, sizeof t) != (ssize_t)sizeof t)
+        t = NAN;
+    close(fd[0]);
+    if (wait4(pid, &status, 0, &ru) < 0 || !WIFEXITED(status) || WEXITSTATUS(status))
+        cli_die(1, "bench: the measured child failed");
+    *mb = (double)ru.ru_maxrss / 1024;
+    return t;
+}
+
+static double task_variogram(size_t n, size_t g)
+{
+    (void)g;
+    nl_points *p = bench_points(n);
+    nl_variogram_options o;
+    nl_variogram *v;
+    nl_variogram_options_default(&o);
+    double t0 = now();
+    cli_check(nl_variogram_points(p, &o, &v));
+    t0 = now() - t0;
+    nl_variogram_free(v), nl_points_free(p);
+    return t0;
+}
+
+static double task_krige(size_t n, size_t g)
+{
+    nl_points *p = bench_points(n);
+    nl_model *m;
+    nl_krige_local *k;
+    nl_krige_local_options o = {.nmax = 32, .drift = NL_DRIFT_CONSTANT};
+    size_t sz[2] = {g, g};
+    double h[2] = {1.0 / (double)g, 1.0 / (double)g}, lo[2] = {0, 0};
+    cli_check(nl_model_parse("markov:scale=0.05", &m));
+    nl_field *e = cli_field_alloc(2, sz, h), *var = cli_field_alloc(2, sz, h);
+    double t0 = now();
+    cli_check(nl_krige_local_alloc(m, 2, n, p->pts, p->val, &o, &k));
+    cli_check(nl_krige_local_grid(k, lo, e, var));
+    t0 = now() - t0;
+    nl_krige_local_free(k), nl_model_free(m), nl_field_free(e), nl_field_free(var), nl_points_free(p);
+    return t0;
+}
+
+/* The variogram of n scattered points (gstat's default cutoff and bins) and
+ * ordinary kriging of them onto g x g with the variance, nmax = 32. */
+static void bench_geo(size_t n, size_t g)
+{
+    char name[96];
+    double mb, mk, t, tk, t0;
+    size_t pairs = 0, idx[32];
+    double d2[32];
+    /* both children before any OpenMP loop of this process: libgomp's
+     * threads do not survive fork */
+    t = in_child(task_variogram, n, g, &mb);
+    tk = in_child(task_krige, n, g, &mk);
+    nl_points *p = bench_points(n);
+    nl_spindex *s;
+    cli_check(nl_spindex_alloc(2, n, p->pts, &s));
+    t0 = now();
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : pairs)
+    for (size_t a = 0; a < n; a++) {
+        size_t c = 0;
+        nl_spindex_pairs_at(s, a, 0.33333 * sqrt(2.0), count_pair, &c);
+        pairs += c;
+    }
+    snprintf(name, sizeof name, "variogram %zu points (peak %.0f MB)", n, mb);
+    row(name, pairs, t, "k-d tree pair enumeration", now() - t0);
+    t0 = now();
+#pragma omp parallel for schedule(dynamic, 256) private(idx, d2)
+    for (size_t q = 0; q < g * g; q++) {
+        double x[2] = {((double)(q % g) + 0.5) / (double)g, ((double)(q / g) + 0.5) / (double)g};
+        nl_spindex_knn(s, x, 32, idx, d2);
+    }
+    snprintf(name, sizeof name, "krige %zu points nmax 32 +variance (peak %.0f MB)", n, mk);
+    row(name, g * g, tk, "k-d tree 32-nearest search", now() - t0);
+    nl_spindex_free(s), nl_points_free(p);
+}
+
 int cli_cmd_bench(int argc, char **argv)
 {
     static const struct option opts[] = {{"quick", no_argument, 0, 'q'}, {"repeat", required_argument, 0, 'r'},
@@ -370,6 +496,7 @@ int cli_cmd_bench(int argc, char **argv)
         (st = nl_model_parse("markov:scale=16", &me)) || (st = nl_model_parse("markov:scale=0.2", &mk)))
         cli_die_status(st);
     printf("case\tsize\tseconds\tfloor\tfloor_seconds\tratio\tsamples_per_s\n");
+    bench_geo(100000 / (d * d), 1000 / d); /* first: the children's peak memory starts from a small parent */
     for (size_t n = 1024; n <= 4096; n *= 2)
         bench_fft(m, n / d, reps);
     for (size_t n = 1024; n <= 2048; n *= 2)

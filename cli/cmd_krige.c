@@ -1,6 +1,7 @@
 /* noiselab krige: ordinary or simple kriging of scattered data onto a grid. */
 #include "cli.h"
 #include "../analysis/krige.h"
+#include "../analysis/krige_local.h"
 #include "../core/io_points.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
@@ -15,19 +16,31 @@
 
 static const char help[] =
     "usage: noiselab krige --data PTS.tsv --acf SPEC --grid W[xH[xD]] --extent a:b[,c:d[,e:f]]\n"
-    "                      [--mean M] [--strict] [--json] -o OUT.exr|OUT.tsv [--variance VAR.exr]\n\n"
+    "                      [--mean M] [--strict] [--json] -o OUT.exr|OUT.tsv [--variance VAR.exr]\n"
+    "                      [--nmax K] [--radius D] [--drift constant|linear|quadratic]\n"
+    "       noiselab krige --data PTS.tsv --acf SPEC --cross-validate [--nmax K] [--radius D]\n"
+    "                      [--drift ...] [--mean M] [--json] [-o CV.tsv]\n\n"
     "Kriging (Stam and Fiume 1991, eqs. 19-22): ordinary (unknown mean, unbiased by a\n"
     "Lagrange multiplier) or, with --mean, simple.  PTS.tsv: a header line, then rows\n"
     "x [y [z]] value.  Grid cell centres are a + (i + 0.5)(b - a)/W.  A singular system\n"
     "(duplicate points, a smooth model with close points) is solved by the pseudo-\n"
     "inverse and flagged, or refused with --strict.  --variance writes the kriging\n"
-    "variance (O(n^2) per cell).\n";
+    "variance (O(n^2) per cell).\n"
+    "--nmax K: each cell from its K nearest data (as gstat's nmax); --radius D: from the\n"
+    "data within D (gstat's maxdist); --drift: universal kriging with a polynomial\n"
+    "drift in the coordinates (linear: as gstat's value ~ x + y).  --cross-validate:\n"
+    "leave-one-out (as gstat's krige.cv): per point observed, predicted, variance,\n"
+    "error = observed - predicted and zscore = error / sqrt(variance) to -o, and the\n"
+    "mean and variance of error and zscore on stdout.\n";
 
 /* The command's options. */
 typedef struct {
     const char *data, *spec, *grid, *ext, *out, *vout;  /* as given, or NULL */
     double mean, lo[3], hi[3];                          /* --mean (NAN: ordinary), --extent */
     int strict, json, gdim;                             /* --strict, --json, grid dimension */
+    int local, cv, drift;                               /* local/universal path, --cross-validate, --drift */
+    size_t nmax;                                        /* --nmax (0: all) */
+    double radius;                                      /* --radius (0: no limit) */
     size_t g[3];                                        /* --grid */
 } opts_t;
 
@@ -62,12 +75,41 @@ static void check_reach(const opts_t *a, const nl_points *pt)
     }
 }
 
+static int parse_drift(const char *s)
+{
+    if (strcmp(s, "constant") == 0)
+        return NL_DRIFT_CONSTANT;
+    if (strcmp(s, "linear") == 0)
+        return NL_DRIFT_LINEAR;
+    if (strcmp(s, "quadratic") == 0)
+        return NL_DRIFT_QUADRATIC;
+    cli_die(2, "--drift: expected constant, linear or quadratic, got \"%s\"", s);
+}
+
+/* --cross-validate: no grid; -o (optional) is a TSV of the points. */
+static void parse_cv(opts_t *a)
+{
+    if (!a->data)
+        cli_die(2, "krige: --data: expected a table of points (x, y[, z], value)");
+    if (!a->spec)
+        cli_die(2, "krige: --acf: expected a covariance model (see noiselab models)");
+    if (a->grid || a->ext || a->vout)
+        cli_die(2, "--cross-validate: expected no %s (it predicts the data points)",
+                a->grid ? "--grid" : a->ext ? "--extent" : "--variance");
+    if (a->out && !cli_has_ext(a->out, ".tsv"))
+        cli_die(2, "-o: expected a .tsv file with --cross-validate, got \"%s\"", a->out);
+    if (a->drift != NL_DRIFT_CONSTANT && !isnan(a->mean))
+        cli_die(2, "--mean: expected no --drift with a known mean, got --mean %g", a->mean);
+}
+
 static void parse(int argc, char **argv, opts_t *a)
 {
     static const struct option opts[] = {
         {"data", required_argument, 0, 'd'}, {"acf", required_argument, 0, 'a'},    {"grid", required_argument, 0, 'g'},
         {"extent", required_argument, 0, 'e'}, {"mean", required_argument, 0, 'm'}, {"strict", no_argument, 0, 's'},
         {"json", no_argument, 0, 'j'},       {"output", required_argument, 0, 'o'}, {"variance", required_argument, 0, 'v'},
+        {"nmax", required_argument, 0, 'n'}, {"radius", required_argument, 0, 'r'},
+        {"drift", required_argument, 0, 'D'}, {"cross-validate", no_argument, 0, 'c'},
         {"help", no_argument, 0, 'h'},       {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "krige")) != -1) {
@@ -81,10 +123,18 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'j': a->json = 1; break;
         case 'o': a->out = optarg; break;
         case 'v': a->vout = optarg; break;
+        case 'n': a->nmax = cli_parse_count("--nmax", optarg, 1), a->local = 1; break;
+        case 'r': a->radius = cli_parse_positive("--radius", optarg, "distance"), a->local = 1; break;
+        case 'D': a->drift = parse_drift(optarg), a->local = 1; break;
+        case 'c': a->cv = 1, a->local = 1; break;
         case 'h': fputs(help, stdout); exit(0);
         }
     }
     cli_no_operands("krige", argc, argv);
+    if (a->cv) {
+        parse_cv(a);
+        return;
+    }
     if (!a->data)
         cli_die(2, "krige: --data: expected a table of points (x, y[, z], value)");
     if (!a->spec)
@@ -95,6 +145,8 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "krige: --extent: expected the grid's extent a:b,c:d[,e:f]");
     if (!a->out)
         cli_die(2, "krige: -o: expected an output file (.exr or .tsv)");
+    if (a->drift != NL_DRIFT_CONSTANT && !isnan(a->mean))
+        cli_die(2, "--mean: expected no --drift with a known mean, got --mean %g", a->mean);
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);
     parse_extent(a);
     if (!cli_has_ext(a->out, ".exr") && !cli_has_ext(a->out, ".tsv"))
@@ -105,6 +157,15 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "--variance: expected a .exr file, got \"%s\"", a->vout);
     if (a->vout && strcmp(a->vout, a->out) == 0)
         cli_die(2, "--variance: expected a file other than -o, got \"%s\" for both -o and --variance", a->vout);
+}
+
+/* The kind of kriging, for the record and the report. */
+static const char *kind_name(const opts_t *a)
+{
+    if (!isnan(a->mean))
+        return "simple";
+    return a->drift == NL_DRIFT_LINEAR ? "universal-linear" : a->drift == NL_DRIFT_QUADRATIC ? "universal-quadratic"
+                                                                                                : "ordinary";
 }
 
 /* A field bound for a float32 EXR fits it. */
@@ -125,7 +186,11 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
     nl_meta meta = {0};
     int st;
     snprintf(meta.model, sizeof meta.model, "%s", a->spec);
-    snprintf(meta.method, sizeof meta.method, "krige:%s,points=%zu", isnan(a->mean) ? "ordinary" : "simple", n);
+    if (a->local)
+        snprintf(meta.method, sizeof meta.method, "krige:%s,nmax=%zu,radius=%g,points=%zu", kind_name(a), a->nmax,
+                 a->radius, n);
+    else
+        snprintf(meta.method, sizeof meta.method, "krige:%s,points=%zu", isnan(a->mean) ? "ordinary" : "simple", n);
     if (info->pseudo_inverse)
         snprintf(meta.flags, sizeof meta.flags, "singular,pseudo-inverse");
     check_float("-o", a->out, f);
@@ -160,6 +225,103 @@ static void report(const opts_t *a, const nl_krige_info *info, size_t n, double 
                 "pseudo-inverse (flagged in the output)\n", info->rcond);
 }
 
+static nl_krige_local *local_plan(const opts_t *a, const nl_points *pt, nl_model **m)
+{
+    nl_krige_local_options o = {.nmax = a->nmax, .radius = a->radius, .drift = a->drift, .mean = 0};
+    nl_krige_local *k;
+    if (!isnan(a->mean))
+        o.drift = NL_DRIFT_NONE, o.mean = a->mean;
+    cli_check(nl_model_parse(a->spec, m));
+    int st = nl_krige_local_alloc(*m, pt->dim, pt->n, pt->pts, pt->val, &o, &k);
+    if (st)
+        cli_die(st == NL_EINVAL || nl_error_is_input(st) ? 2 : 1, "--data: %s: %s", a->data, nl_errmsg());
+    return k;
+}
+
+/* Leave-one-out cross-validation: the table to -o, the summary to stdout. */
+static int krige_cv(const opts_t *a, const nl_points *pt)
+{
+    nl_model *m;
+    nl_krige_local *k = local_plan(a, pt, &m);
+    size_t n = pt->n;
+    int dim = pt->dim;
+    const char *tmp = cli_out_begin(a->out);
+    double *col[8], *pred = cli_malloc(n * sizeof *pred), *var = cli_malloc(n * sizeof *var);
+    nl_krige_cv_summary s;
+    int st = nl_krige_local_cv(k, pred, var, &s);
+    if (st)
+        cli_die(st == NL_EINVAL || nl_error_is_input(st) ? 2 : 1, "--cross-validate: %s", nl_errmsg());
+    if (a->out) {
+        static const char *xyz[] = {"x", "y", "z"};
+        const char *names[8];
+        for (int c = 0; c < dim + 5; c++)
+            col[c] = cli_malloc(n * sizeof(double)), names[c] = c < dim ? xyz[c] : NULL;
+        names[dim] = "observed", names[dim + 1] = "predicted", names[dim + 2] = "variance";
+        names[dim + 3] = "error", names[dim + 4] = "zscore";
+        for (size_t i = 0; i < n; i++) {
+            for (int c = 0; c < dim; c++)
+                col[c][i] = pt->pts[i * dim + c];
+            col[dim][i] = pt->val[i], col[dim + 1][i] = pred[i], col[dim + 2][i] = var[i];
+            col[dim + 3][i] = pt->val[i] - pred[i], col[dim + 4][i] = (pt->val[i] - pred[i]) / sqrt(var[i]);
+        }
+        cli_check(cli_write_table(tmp, NULL, dim + 5, names, n, (const double *const *)col));
+        cli_out_commit(a->out);
+        for (int c = 0; c < dim + 5; c++)
+            free(col[c]);
+    }
+    if (a->json)
+        cli_json_print(json_pack("{s:I,s:s,s:f,s:f,s:f,s:f,s:f}", "points", (json_int_t)n, "kind", kind_name(a),
+                                 "mean_error", s.mean_error, "var_error", s.var_error, "mean_zscore", s.mean_z,
+                                 "var_zscore", s.var_z, "rmse", s.rmse));
+    else
+        printf("points\t%zu\nmean_error\t%.10g\nvar_error\t%.10g\nmean_zscore\t%.10g\nvar_zscore\t%.10g\nrmse\t%.10g\n",
+               n, s.mean_error, s.var_error, s.mean_z, s.var_z, s.rmse);
+    free(pred), free(var);
+    nl_krige_local_free(k), nl_model_free(m);
+    return 0;
+}
+
+/* --nmax, --radius, --drift: local or universal kriging onto the grid. */
+static int cli_krige_local(opts_t *a, nl_points *pt)
+{
+    if (a->cv) {
+        krige_cv(a, pt);
+        nl_points_free(pt);
+        return 0;
+    }
+    if (pt->dim != a->gdim)
+        cli_die(2, "--data: %s has %d coordinates per point, the grid %d", a->data, pt->dim, a->gdim);
+    check_reach(a, pt);
+    nl_model *m;
+    nl_krige_local *k = local_plan(a, pt, &m);
+    const char *tmp = cli_out_begin(a->out), *vtmp = cli_out_begin(a->vout);
+    double h[3];
+    int st;
+    for (int d = 0; d < 3; d++)
+        h[d] = (a->hi[d] - a->lo[d]) / (double)a->g[d];
+    if ((st = nl_size_check(a->gdim, a->g, sizeof(double), a->vout ? 2 : 1, NULL))) {
+        char why[256];
+        snprintf(why, sizeof why, "%s", nl_errmsg());
+        cli_die(st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1, "--grid %s: %s", a->grid, why);
+    }
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    nl_field *f = cli_field_alloc(a->gdim, a->g, h), *vf = a->vout ? cli_field_alloc(a->gdim, a->g, h) : NULL;
+    if ((st = nl_krige_local_grid(k, a->lo, f, vf)))
+        cli_die(st == NL_EINVAL ? 2 : 1, "--grid: %s", nl_errmsg());
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    nl_krige_info info = {.n = pt->n, .mean = NAN};
+    write_outputs(a, f, vf, &info, pt->n, tmp, vtmp);
+    if (a->json)
+        cli_json_print(json_pack("{s:I,s:s,s:I,s:f,s:I,s:f}", "points", (json_int_t)pt->n, "kind", kind_name(a), "nmax",
+                                 (json_int_t)a->nmax, "radius", a->radius, "terms",
+                                 (json_int_t)nl_krige_local_terms(k), "seconds", secs));
+    nl_krige_local_free(k), nl_model_free(m), nl_field_free(f), nl_field_free(vf);
+    nl_points_free(pt);
+    return 0;
+}
+
 int cli_cmd_krige(int argc, char **argv)
 {
     opts_t a = {.mean = NAN, .lo = {0, 0, 0}, .hi = {1, 1, 1}, .g = {1, 1, 1}};
@@ -170,6 +332,8 @@ int cli_cmd_krige(int argc, char **argv)
     nl_points *pt;
     if ((st = nl_points_read(a.data, &pt)))
         cli_die(nl_error_is_input(st) ? 2 : 1, "--data: %s", nl_errmsg());
+    if (a.local)
+        return cli_krige_local(&a, pt);
     if (pt->dim != a.gdim)
         cli_die(2, "--data: %s has %d coordinates per point, the grid %d", a.data, pt->dim, a.gdim);
     n = pt->n;

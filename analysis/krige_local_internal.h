@@ -1,0 +1,42 @@
+/* Internals of local kriging shared by krige_local.c and krige_solve.c. */
+#ifndef NL_KRIGE_LOCAL_INTERNAL_H
+#define NL_KRIGE_LOCAL_INTERNAL_H
+
+#include "krige_local.h"
+#include "../core/spindex.h"
+
+struct nl_krige_local {
+    const nl_model *m;        /* covariance (borrowed) */
+    int dim;                  /* 1..3 */
+    size_t n, p, cap;         /* data, drift terms, neighbours at most */
+    nl_krige_local_options o; /* as given */
+    double r0;                /* R(0) */
+    double centre[3], scale[3]; /* drift coordinates (x - centre) / scale */
+    double *pts, *val;        /* copies of the data */
+    nl_spindex *index;        /* k-d tree of pts */
+};
+
+/* Per-thread workspace: the cached neighbourhood and its factors. */
+typedef struct {
+    size_t cap, p;          /* sizes allocated for */
+    size_t *next, *set;     /* candidate and cached neighbour sets (cap + 1) */
+    double *d2;             /* squared distances (cap + 1) */
+    int overflow, valid;    /* too many within the radius; cache valid */
+    size_t K;               /* cached set size */
+    double *L, *Q, *M;      /* chol(C) K x K, L^-1 X (p rows of K), chol(X' C^-1 X) p x p */
+    double *beta, *r;       /* drift coefficients (p), dual weights C^-1 (z - X beta) (K) */
+    double *c0, *v, *f, *u, *u2, *y; /* scratch */
+} nl_kl_work;
+
+int nl_kl_work_init(nl_kl_work *w, size_t cap, size_t p);
+void nl_kl_work_free(nl_kl_work *w);
+void nl_kl_drift(const nl_krige_local *k, const double *x, double *f);
+/* Factor the cached set w->set (w->K points); x names the location in messages. */
+int nl_kl_factor(const nl_krige_local *k, nl_kl_work *w, const double *x);
+/* x = L^-1 b for lower-triangular L (n x n, row-major). */
+void nl_kl_lsolve(const double *L, size_t n, const double *b, double *x);
+/* "(x, y)" of a location in buf (64 bytes). */
+const char *nl_kl_where(const nl_krige_local *k, const double *x, char *buf);
+int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w, double *est, double *var);
+
+#endif
