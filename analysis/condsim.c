@@ -2,6 +2,7 @@
  * field (Journel 1974): Z = U + K[d - U(t)]. */
 #include "condsim.h"
 #include "krige.h"
+#include "krige_local.h"
 #include "../core/field_sample.h"
 #include "../core/nl_error.h"
 
@@ -21,6 +22,7 @@ struct nl_condsim_plan {
     double *w;           /* n * NL_STENCIL_MAX weights (0 beyond the stencil) */
     int simple;          /* simple kriging with `mean`, else ordinary */
     double mean;         /* the known mean (simple) */
+    size_t nmax;         /* local kriging from the nmax nearest data; 0: global */
     nl_condsim_info info;/* the figures */
 };
 
@@ -113,7 +115,8 @@ static int build(nl_condsim_plan *p, const double *pts, const double *val, const
 }
 
 int nl_condsim_plan_alloc(const nl_model *m, size_t n, const double *pts, const double *val, const double *lo,
-                          const nl_field *grid, int interp, int simple, double mean, nl_condsim_plan **out)
+                          const nl_field *grid, int interp, int simple, double mean, size_t nmax,
+                          nl_condsim_plan **out)
 {
     nl_condsim_plan *p;
     nl_krige_plan *kp;
@@ -128,12 +131,19 @@ int nl_condsim_plan_alloc(const nl_model *m, size_t n, const double *pts, const 
         if (!isfinite(lo[a]) || !isfinite(lo[a] + (double)grid->n[a] * grid->h[a]))
             return NL_ERROR(NL_EINVAL, "the grid's extent on axis %d: expected finite bounds", a + 1);
     /* what kriging refuses in the model and the data, refused now, once */
-    if ((st = nl_krige_plan_alloc(m, grid->dim, n, pts, val, simple, mean, 0, &kp)))
+    if (nmax) {
+        nl_krige_local *kl;
+        nl_krige_local_options o = {nmax, 0, simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, mean};
+        if ((st = nl_krige_local_alloc(m, grid->dim, n, pts, val, &o, &kl)))
+            return st;
+        nl_krige_local_free(kl);
+    } else if ((st = nl_krige_plan_alloc(m, grid->dim, n, pts, val, simple, mean, 0, &kp)))
         return st;
-    nl_krige_plan_free(kp);
+    else
+        nl_krige_plan_free(kp);
     if (!(p = calloc(1, sizeof *p)))
         return NL_ERROR(NL_ENOMEM, "out of memory");
-    p->m = m, p->dim = grid->dim, p->n = n, p->simple = simple, p->mean = mean;
+    p->m = m, p->dim = grid->dim, p->n = n, p->simple = simple, p->mean = mean, p->nmax = nmax;
     p->info.n = n;
     for (int a = 0; a < 3; a++)
         p->gn[a] = grid->n[a], p->h[a] = grid->h[a], p->lo[a] = a < grid->dim ? lo[a] : 0;
@@ -143,6 +153,27 @@ int nl_condsim_plan_alloc(const nl_model *m, size_t n, const double *pts, const 
     }
     *out = p;
     return NL_OK;
+}
+
+/* K[r] on the grid into k: global (krige.h) or from the nmax nearest (krige_local.h). */
+static int krige_residual(const nl_condsim_plan *p, const double *r, nl_field *k)
+{
+    int st;
+    if (p->nmax) {
+        nl_krige_local *kl;
+        nl_krige_local_options o = {p->nmax, 0, p->simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, p->mean};
+        if ((st = nl_krige_local_alloc(p->m, p->dim, p->n, p->pts, r, &o, &kl)))
+            return st;
+        st = nl_krige_local_grid(kl, p->lo, k, NULL);
+        nl_krige_local_free(kl);
+        return st;
+    }
+    nl_krige_plan *kp;
+    if ((st = nl_krige_plan_alloc(p->m, p->dim, p->n, p->pts, r, p->simple, p->mean, 0, &kp)))
+        return st;
+    st = nl_krige_eval_grid(kp, p->lo, k, NULL);
+    nl_krige_plan_free(kp);
+    return st;
 }
 
 int nl_condsim_execute(const nl_condsim_plan *p, nl_field *f)
@@ -165,16 +196,12 @@ int nl_condsim_execute(const nl_condsim_plan *p, nl_field *f)
                             i + 1);
         }
     }
-    nl_krige_plan *kp;
-    st = nl_krige_plan_alloc(p->m, p->dim, p->n, p->pts, r, p->simple, p->mean, 0, &kp);
-    free(r);
-    if (st)
-        return st;
     nl_field *k = nl_field_alloc(p->dim, p->gn, p->h, &st);
-    if (k && !(st = nl_krige_eval_grid(kp, p->lo, k, NULL)))
-        for (size_t i = 0; i < f->count; i++)
-            f->data[i] += k->data[i];
+    if (k)
+        st = krige_residual(p, r, k);
+    free(r);
+    for (size_t i = 0; !st && i < f->count; i++)
+        f->data[i] += k->data[i];
     nl_field_free(k);
-    nl_krige_plan_free(kp);
     return st;
 }

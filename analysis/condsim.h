@@ -52,14 +52,18 @@ typedef struct {
  * values val, on a grid of grid->n samples of spacing grid->h (grid->data
  * is not read) whose cell centres start at lo + h / 2; interp: NL_INTERP_*
  * (core/field_sample.h) for reading U at the data; simple: simple kriging
- * with the known mean `mean`, else ordinary.  *out is NULL on failure.
+ * with the known mean `mean`, else ordinary; nmax > 0: local kriging from
+ * the nmax nearest data (analysis/krige_local.h; the ensemble's mean and
+ * variance are then that kriging's), 0: every datum (analysis/krige.h).
+ * *out is NULL on failure.
  * Errors: NL_EINVAL for n = 0, interp unknown, a datum outside
  * [lo, lo + n h] (the message names the first: its row from 1 and
  * coordinates), a non-finite lo or datum, or what nl_krige_plan_alloc
  * refuses in the model or data (checked here, once, on the data's values);
  * NL_ETOOBIG, NL_ENOMEM. */
 int nl_condsim_plan_alloc(const nl_model *m, size_t n, const double *pts, const double *val, const double *lo,
-                          const nl_field *grid, int interp, int simple, double mean, nl_condsim_plan **out);
+                          const nl_field *grid, int interp, int simple, double mean, size_t nmax,
+                          nl_condsim_plan **out);
 
 /* Replace the unconditional realization in f (the plan's grid: same dim, n
  * and h) by the conditional one, Z = U + K[d - U(t)].  Cost: one kriging

@@ -81,7 +81,8 @@ static const char help[] =
     "                   kriging of data minus field; --mean M: simple); sample i at\n"
     "                   a + (i + 0.5)(b - a)/N; --interpolation bilinear|nearest reads the field\n"
     "                   between samples; --realizations K: OUT-1.exr ... OUT-K.exr, seeds S..;\n"
-    "                   --ensemble-mean M.exr, --ensemble-variance V.exr (divisor K - 1)\n"
+    "                   --ensemble-mean M.exr, --ensemble-variance V.exr (divisor K - 1);\n"
+    "                   --nmax K: local kriging from the K nearest data (as krige)\n"
     "  --from FILE      regenerate FILE from what it records (method, options, model,\n"
     "                   seed, size, spacing): bit for bit for every method\n"
     "  -o               EXR (any dimension; attributes noiselab.model, .method, .seed,\n"
@@ -325,7 +326,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         {"condition", required_argument, 0, 'Y'}, {"extent", required_argument, 0, 'Z'},
         {"realizations", required_argument, 0, 'k'}, {"mean", required_argument, 0, 'M'},
         {"interpolation", required_argument, 0, 'Q'}, {"ensemble-mean", required_argument, 0, 'g'},
-        {"ensemble-variance", required_argument, 0, 'J'},
+        {"ensemble-variance", required_argument, 0, 'J'}, {"nmax", required_argument, 0, 'q'},
         {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "synth")) != -1) {
@@ -352,7 +353,8 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'C': job->cell = parse_int("--cell", optarg, 1, INT_MAX); break;
         case 'W': job->wrap = 1; break;
         case 'F': g->from = optarg; break;
-        case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': cli_synth_cond_option(&g->cond, c, optarg); break;
+        case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q':
+            cli_synth_cond_option(&g->cond, c, optarg); break;
         case 'h': fputs(help, stdout); return 1;
         }
     }

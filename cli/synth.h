@@ -60,6 +60,7 @@ typedef struct {
     int given_K, given_interp;   /* given explicitly */
     int simple;                  /* --mean given: simple kriging */
     double mean;                 /* --mean */
+    size_t nmax;                 /* --nmax: local kriging from the nmax nearest data; 0: all */
     int interp;                  /* NL_INTERP_* for reading U at the data (default bilinear) */
     double lo[3], hi[3];         /* --extent */
     const char *emean, *evar;    /* --ensemble-mean, --ensemble-variance, or NULL */

@@ -18,6 +18,7 @@ void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg)
     case 'Z': c->extent = arg; break;
     case 'k': c->K = cli_parse_count("--realizations", arg, 1), c->given_K = 1; break;
     case 'g': c->emean = arg; break;
+    case 'q': c->nmax = cli_parse_count("--nmax", arg, 1); break;
     case 'J': c->evar = arg; break;
     case 'M': c->mean = cli_parse_double("--mean", arg), c->simple = 1; break;
     case 'Q':
@@ -36,9 +37,9 @@ void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg)
 static void check_given(const cli_synth_cond *c, const cli_synth_job *job, int from, int spacing)
 {
     if (!c->data) {
-        if (c->extent || c->given_K || c->simple || c->given_interp || c->emean || c->evar)
-            cli_die(2, "synth: --extent, --realizations, --mean, --interpolation, --ensemble-mean and "
-                    "--ensemble-variance apply to --condition only");
+        if (c->extent || c->given_K || c->simple || c->given_interp || c->emean || c->evar || c->nmax)
+            cli_die(2, "synth: --extent, --realizations, --mean, --interpolation, --ensemble-mean, "
+                    "--ensemble-variance and --nmax apply to --condition only");
         return;
     }
     if (from)
@@ -98,7 +99,7 @@ void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int
     nl_field grid = {.dim = job->dim, .n = {job->n[0], job->n[1], job->n[2]},
                      .h = {job->h[0], job->h[1], job->h[2]}};
     st = nl_condsim_plan_alloc(job->m, pt->n, pt->pts, pt->val, c->lo, &grid, c->interp, c->simple, c->mean,
-                               &c->plan);
+                               c->nmax, &c->plan);
     nl_points_free(pt);
     if (st)
         cli_die(nl_error_is_input(st) ? 2 : 1, "--condition: %s: %s", c->data, nl_errmsg());
@@ -127,7 +128,8 @@ void cli_synth_cond_apply(const cli_synth_cond *c, const cli_synth_job *job, nl_
     size_t l = strlen(r->method);
     /* the space marks a field that --from cannot regenerate */
     snprintf(r->method + l, sizeof r->method - l, " conditioned:data=%s,points=%zu,kriging=%s,extent=%s,"
-             "realization=%zu/%zu", c->data, c->info.n, c->simple ? "simple" : "ordinary", c->extent, k + 1, c->K);
+             "nmax=%zu,realization=%zu/%zu", c->data, c->info.n, c->simple ? "simple" : "ordinary", c->extent, c->nmax,
+             k + 1, c->K);
     (void)job;
 }
 

@@ -1,6 +1,7 @@
 /* Conditional simulation by kriging (analysis/condsim.h, Journel 1974). */
 #include "../analysis/condsim.h"
 #include "../analysis/krige.h"
+#include "../analysis/krige_local.h"
 #include "../core/field_sample.h"
 #include "../core/io.h"
 #include "../core/model.h"
@@ -57,7 +58,7 @@ Test(condsim, honours_data_on_samples_exactly)
     nl_condsim_plan *p;
     nl_synth_fft_plan *fp;
     nl_synth_circulant_plan *cp;
-    cr_assert_eq(nl_condsim_plan_alloc(m, 25, pts, val, lo, f, NL_INTERP_LINEAR, 0, 0, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_condsim_plan_alloc(m, 25, pts, val, lo, f, NL_INTERP_LINEAR, 0, 0, 0, &p), 0, "%s", nl_errmsg());
     nl_condsim_info info;
     nl_condsim_plan_info(p, &info);
     cr_expect(info.on_samples == 25 && info.max_error == 0 && info.max_move < 1e-12, "%zu %g %g", info.on_samples,
@@ -92,8 +93,10 @@ Test(condsim, honours_data_on_samples_exactly)
  * false-alarm rate of 1e-3 (Bonferroni, valid under any dependence between
  * samples): |z| <= Phi^-1(1 - 1e-3 / (4 G)) and chi2_M quantiles
  * 1e-3 / (4 G) and 1 - 1e-3 / (4 G) (the 1e-3 split between the two
- * tests).  Ordinary and simple kriging. */
-static void ensemble_matches_kriging(int simple)
+ * tests).  Ordinary and simple kriging, global and local (nmax nearest
+ * data: still a linear unbiased predictor, so the same argument holds with
+ * that kriging's estimate and variance). */
+static void ensemble_matches_kriging(int simple, size_t nmax)
 {
     enum { M = 2000, N = 20 };
     nl_model *m = test_model("markov:scale=2.5");
@@ -108,9 +111,19 @@ static void ensemble_matches_kriging(int simple)
     nl_krige_plan *kp;
     nl_condsim_plan *p;
     nl_synth_circulant_plan *cp;
-    cr_assert_eq(nl_krige_plan_alloc(m, 2, N, pts, val, simple, mu, 1, &kp), 0, "%s", nl_errmsg());
-    cr_assert_eq(nl_krige_eval_grid(kp, lo, est, var), 0);
-    cr_assert_eq(nl_condsim_plan_alloc(m, N, pts, val, lo, f, NL_INTERP_LINEAR, simple, mu, &p), 0, "%s", nl_errmsg());
+    if (nmax) {
+        nl_krige_local *kl;
+        nl_krige_local_options o = {nmax, 0, simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, mu};
+        cr_assert_eq(nl_krige_local_alloc(m, 2, N, pts, val, &o, &kl), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_krige_local_grid(kl, lo, est, var), 0, "%s", nl_errmsg());
+        nl_krige_local_free(kl);
+        kp = NULL;
+    } else {
+        cr_assert_eq(nl_krige_plan_alloc(m, 2, N, pts, val, simple, mu, 1, &kp), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_krige_eval_grid(kp, lo, est, var), 0);
+    }
+    cr_assert_eq(nl_condsim_plan_alloc(m, N, pts, val, lo, f, NL_INTERP_LINEAR, simple, mu, nmax, &p), 0, "%s",
+                 nl_errmsg());
     cr_assert_eq(nl_synth_circulant_plan_alloc(m, 2, g, h, 0, 16, &cp), 0, "%s", nl_errmsg());
     for (uint64_t s = 1; s <= M; s++) {
         cr_assert_eq(nl_synth_circulant_execute(cp, s, f), 0);
@@ -135,8 +148,8 @@ static void ensemble_matches_kriging(int simple)
         cr_expect(r >= clo && r <= chi, "sample %zu: ensemble variance / kriging variance %.3f outside %.3f..%.3f", i,
                   r, clo, chi);
     }
-    cr_log_info("%s kriging, %zu samples, M = %d: max |z| of the mean %.2f (band %.2f); variance ratio %.3f..%.3f "
-                "(band %.3f..%.3f)", simple ? "simple" : "ordinary", used, M, zmax, zc, rlo, rhi, clo, chi);
+    cr_log_info("%s kriging (nmax %zu), %zu samples, M = %d: max |z| of the mean %.2f (band %.2f); variance ratio %.3f..%.3f "
+                "(band %.3f..%.3f)", simple ? "simple" : "ordinary", nmax, used, M, zmax, zc, rlo, rhi, clo, chi);
     nl_synth_circulant_plan_free(cp), nl_condsim_plan_free(p), nl_krige_plan_free(kp);
     nl_field_free(f), nl_field_free(est), nl_field_free(var), nl_model_free(m);
     free(s1), free(s2);
@@ -144,12 +157,17 @@ static void ensemble_matches_kriging(int simple)
 
 Test(condsim, ensemble_mean_and_variance_are_ordinary_kriging)
 {
-    ensemble_matches_kriging(0);
+    ensemble_matches_kriging(0, 0);
+}
+
+Test(condsim, ensemble_mean_and_variance_are_local_kriging)
+{
+    ensemble_matches_kriging(0, 6);
 }
 
 Test(condsim, ensemble_mean_and_variance_are_simple_kriging)
 {
-    ensemble_matches_kriging(1);
+    ensemble_matches_kriging(1, 0);
 }
 
 /* Far from the data, the conditional field is the unconditional one: with
@@ -192,7 +210,7 @@ Test(condsim, far_from_the_data_the_covariance_is_the_models)
     data_on_samples(30, g, lo, (double[]){1, 1}, 0, 16, 3, pts, val);
     c.full = nl_field_alloc(2, g, NULL, NULL);
     cr_assert_eq(nl_synth_circulant_plan_alloc(m, 2, g, NULL, 0, 16, &c.cp), 0, "%s", nl_errmsg());
-    cr_assert_eq(nl_condsim_plan_alloc(m, 30, pts, val, lo, c.full, NL_INTERP_LINEAR, 1, 0, &c.p), 0, "%s",
+    cr_assert_eq(nl_condsim_plan_alloc(m, 30, pts, val, lo, c.full, NL_INTERP_LINEAR, 1, 0, 0, &c.p), 0, "%s",
                  nl_errmsg());
     stat_check_acf("conditional, far window", far_window, &c, w, r_markov2, 0, 200, (const long(*)[2])lags, L);
     nl_synth_circulant_plan_free(c.cp), nl_condsim_plan_free(c.p), nl_field_free(c.full), nl_model_free(m);
@@ -211,14 +229,14 @@ Test(condsim, states_the_interpolation_error)
     nl_field *f = nl_field_alloc(2, g, NULL, NULL);
     nl_condsim_plan *p;
     nl_condsim_info info;
-    cr_assert_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NL_INTERP_LINEAR, 0, 0, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NL_INTERP_LINEAR, 0, 0, 0, &p), 0, "%s", nl_errmsg());
     nl_condsim_plan_info(p, &info);
     double s = 4, want = 1 - 2 * exp(-sqrt(0.5) / s) + 0.25 * (1 + 2 * exp(-1 / s) + exp(-sqrt(2.0) / s));
     cr_expect(fabs(info.max_error - sqrt(want)) < 1e-12, "%.17g vs %.17g", info.max_error, sqrt(want));
     cr_expect(info.on_samples == 0 && fabs(info.max_move - sqrt(0.5)) < 1e-12);
     nl_condsim_plan_free(p);
     pt[0] = 9; /* outside the extent 0:8 */
-    cr_expect_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NL_INTERP_LINEAR, 0, 0, &p), NL_EINVAL);
+    cr_expect_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NL_INTERP_LINEAR, 0, 0, 0, &p), NL_EINVAL);
     cr_expect(strstr(nl_errmsg(), "datum 1") != NULL, "%s", nl_errmsg());
     nl_field_free(f), nl_model_free(m);
 }
