@@ -94,7 +94,7 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # Unit, error-path, CLI and statistical tests (Criterion). Each test is a
 # fresh process, so measured FFTW plans would be paid for again and again:
 # tests plan with FFTW_ESTIMATE, except the one comparing the two planners.
-# tests/doc/run.sh runs every command of README.md and docs/tour.md.
+# tests/doc/run.sh runs every command of README.md, docs/tour.md and docs/geostatistics.md.
 # Then tools/test-install.sh installs into a scratch DESTDIR and builds the
 # examples and the README's example against it with pkg-config alone.
 test: all $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN)

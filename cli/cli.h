@@ -23,6 +23,7 @@ int cli_cmd_nonlin(int argc, char **argv);
 int cli_cmd_lattice(int argc, char **argv);
 int cli_cmd_ocean(int argc, char **argv);
 int cli_cmd_krige(int argc, char **argv);
+int cli_cmd_sample(int argc, char **argv);
 int cli_cmd_variogram(int argc, char **argv);
 int cli_cmd_fit(int argc, char **argv);
 int cli_cmd_cloud(int argc, char **argv);

@@ -1,5 +1,6 @@
 /* noiselab synth: synthesise a field with a prescribed model. */
 #include "synth.h"
+#include "../core/field_sample.h"
 #include "../core/nl_error.h"
 #include "../core/version.h"
 #include "../synth/subdiv.h"
@@ -75,6 +76,13 @@ static const char help[] =
     "                   (subdiv); flagged \"clamped\" in the output, the change in the report\n"
     "  --preview        8-bit PNG of a 2D field (the first slice of 3D), mean +- 3 sd\n"
     "  --json           print the synthesis report as JSON\n"
+    "  --condition DATA.tsv --extent a:b[,c:d[,e:f]]  fft, circulant, subdiv: honour the\n"
+    "                   data (conditional simulation, Journel: the field plus the ordinary\n"
+    "                   kriging of data minus field; --mean M: simple); sample i at\n"
+    "                   a + (i + 0.5)(b - a)/N; --interpolation bilinear|nearest reads the field\n"
+    "                   between samples; --realizations K: OUT-1.exr ... OUT-K.exr, seeds S..;\n"
+    "                   --ensemble-mean M.exr, --ensemble-variance V.exr (divisor K - 1);\n"
+    "                   --nmax K: local kriging from the K nearest data (as krige)\n"
     "  --from FILE      regenerate FILE from what it records (method, options, model,\n"
     "                   seed, size, spacing): bit for bit for every method\n"
     "  -o               EXR (any dimension; attributes noiselab.model, .method, .seed,\n"
@@ -88,6 +96,7 @@ typedef struct {
     const char *acf, *spec, *size, *spacing, *out, *preview, *origin, *from; /* option values or NULL */
     int json;                                        /* --json */
     int given_L, given_N, given_tol, given_vs, given_density, given_disp; /* explicitly given */
+    cli_synth_cond cond;                             /* --condition and its options */
 } cli_synth_args;
 
 /* Window origins stay within +-2^30 samples: the 2D generators index
@@ -314,6 +323,10 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         {"from", required_argument, 0, 'F'},
         {"octaves", required_argument, 0, 'V'},
         {"displacements", required_argument, 0, 'X'}, {"taps", required_argument, 0, 'T'},
+        {"condition", required_argument, 0, 'Y'}, {"extent", required_argument, 0, 'Z'},
+        {"realizations", required_argument, 0, 'k'}, {"mean", required_argument, 0, 'M'},
+        {"interpolation", required_argument, 0, 'Q'}, {"ensemble-mean", required_argument, 0, 'g'},
+        {"ensemble-variance", required_argument, 0, 'J'}, {"nmax", required_argument, 0, 'q'},
         {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "synth")) != -1) {
@@ -340,6 +353,8 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'C': job->cell = parse_int("--cell", optarg, 1, INT_MAX); break;
         case 'W': job->wrap = 1; break;
         case 'F': g->from = optarg; break;
+        case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q':
+            cli_synth_cond_option(&g->cond, c, optarg); break;
         case 'h': fputs(help, stdout); return 1;
         }
     }
@@ -497,7 +512,8 @@ static void fill_meta(const cli_synth_job *job, const nl_field *f, const cli_syn
                  job->origin[1]);
 }
 
-static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res)
+static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res,
+                       const cli_synth_cond *cond)
 {
     json_t *o = json_pack("{s:s,s:s,s:I,s:s,s:s}", "model", meta->model, "method", meta->method, "seed",
                           (json_int_t)job->seed, "size", meta->size, "spacing", meta->spacing);
@@ -514,6 +530,7 @@ static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_
     json_object_set_new(o, "flags", fl);
     if (res->report)
         json_object_update(o, res->report);
+    cli_synth_cond_report(cond, o);
     cli_json_print(o);
 }
 
@@ -528,20 +545,47 @@ static void check_output(const cli_synth_job *job, const cli_synth_args *g, cons
                 isfinite(f->data[k]) ? " of float32 EXR (lower the variance)" : "", g->out);
 }
 
+/* Realization k: the method's field, conditioned when asked, written with its preview. */
+static void realization(cli_synth_job *job, cli_synth_args *g, cli_synth_run_fn run, nl_field *f,
+                        cli_synth_result *res, size_t k, const char *const *tmps)
+{
+    char obuf[4096], pbuf[4096];
+    const char *out = cli_synth_cond_name(&g->cond, g->out, k, obuf, sizeof obuf);
+    const char *prev = cli_synth_cond_name(&g->cond, g->preview, k, pbuf, sizeof pbuf);
+    const char *tmp = tmps[0], *ptmp = tmps[1];
+    nl_meta meta;
+    int st;
+    json_decref(res->report);
+    memset(res, 0, sizeof *res);
+    run(job, f, res);
+    cli_synth_cond_apply(&g->cond, job, f, res, k);
+    cli_synth_cond_accumulate(&g->cond, f, k);
+    fill_meta(job, f, res, &meta);
+    check_output(job, g, f);
+    cli_phase("synth", "writing");
+    cli_synth_cond_write(&g->cond, out, tmp, f, &meta);
+    if (prev && (st = nl_png_write_field(ptmp, f, res->offset - 3 * res->sd, res->offset + 3 * res->sd)))
+        cli_die_status(st);
+    cli_out_commit(out);
+    cli_out_commit(prev);
+    if (k + 1 == g->cond.K)
+        cli_synth_cond_finish(&g->cond, &meta);
+    if (g->json && k + 1 == g->cond.K)
+        print_json(job, &meta, res, &g->cond);
+}
+
 int cli_cmd_synth(int argc, char **argv)
 {
-    const char *tmp, *ptmp = NULL;
-    int st;
     cli_synth_job job;
     cli_synth_args g;
     cli_synth_result res;
     cli_synth_run_fn run;
     nl_field *f;
-    nl_meta meta;
 
     job_defaults(&job);
     memset(&g, 0, sizeof g);
     memset(&res, 0, sizeof res);
+    g.cond.K = 1, g.cond.interp = NL_INTERP_LINEAR;
     if (parse_options(argc, argv, &job, &g))
         return 0;
     method_source(argc, argv, &job, &g);
@@ -551,23 +595,26 @@ int cli_cmd_synth(int argc, char **argv)
         parse_origin(g.origin, job.origin);
     check_model_given(&job, &g);
     check_outputs_and_model(&job, &g);
-    tmp = cli_out_begin(g.out);
-    ptmp = cli_out_begin(g.preview);
+    cli_synth_cond_prepare(&g.cond, &job, g.from != NULL, g.spacing != NULL);
+    const char **tmps = cli_malloc(2 * g.cond.K * sizeof *tmps);
+    for (size_t k = 0; k < g.cond.K; k++) { /* every output can be written, before the work */
+        char ob[4096], pb[4096];
+        tmps[2 * k] = cli_out_begin(cli_synth_cond_name(&g.cond, g.out, k, ob, sizeof ob));
+        tmps[2 * k + 1] = cli_out_begin(cli_synth_cond_name(&g.cond, g.preview, k, pb, sizeof pb));
+    }
+    cli_synth_cond_begin(&g.cond);
     f = cli_field_alloc(job.dim, job.n, job.h);
-    cli_phase("synth", job.method);
-    run(&job, f, &res);
-    fill_meta(&job, f, &res, &meta);
-    check_output(&job, &g, f);
-    cli_phase("synth", "writing");
-    cli_write_field(g.out, tmp, f, &meta);
-    if (g.preview && (st = nl_png_write_field(ptmp, f, res.offset - 3 * res.sd, res.offset + 3 * res.sd)))
-        cli_die_status(st);
+    uint64_t seed0 = job.seed;
+    for (size_t k = 0; k < g.cond.K; k++) {
+        cli_phase("synth", job.method);
+        job.seed = seed0 + k;
+        realization(&job, &g, run, f, &res, k, tmps + 2 * k);
+    }
+    free(tmps);
     cli_progress_done();
-    cli_out_commit(g.out);
-    cli_out_commit(g.preview);
-    if (g.json)
-        print_json(&job, &meta, &res);
+    cli_synth_cond_note(&g.cond);
     json_decref(res.report);
+    cli_synth_cond_free(&g.cond);
     nl_field_free(f);
     nl_model_free(job.m);
     return 0;

@@ -30,6 +30,7 @@ static const struct {
     {"krige", cli_cmd_krige, "kriging of scattered data onto a grid (Stam and Fiume)"},
     {"variogram", cli_cmd_variogram, "empirical variogram of scattered points or a field (as gstat)"},
     {"fit", cli_cmd_fit, "fit a covariance model to scattered data or a field (variogram WLS, ML, REML)"},
+    {"sample", cli_cmd_sample, "a field's values at given or random points (a data table)"},
     {"ocean", cli_cmd_ocean, "Tessendorf ocean waves on a Fibonacci lattice or a grid"},
     {"card", cli_cmd_card, "one picture of a field (1D or 2D): field, ACF, spectra, histogram"},
     {"render", cli_cmd_render, "a 2D field as a picture: grey levels, shaded relief or landscape"},
@@ -76,6 +77,6 @@ int cli_main(int argc, char **argv)
             cli_out_finish(rc == 0);
             return rc;
         }
-    cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, variogram, fit, cloud, lattice, ocean, card, render, detect, bench; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, variogram, fit, sample, cloud, lattice, ocean, card, render, detect, bench; see noiselab --help)",
             argv[1]);
 }

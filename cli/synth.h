@@ -4,6 +4,7 @@
 #define NL_CLI_SYNTH_H
 
 #include "cli.h"
+#include "../analysis/condsim.h"
 #include "../core/model.h"
 
 typedef struct {
@@ -50,6 +51,48 @@ typedef struct {
 int cli_synth_parse_int(const char *opt, const char *s, int min, int max);
 /* --neighborhood N|auto: N >= 1, or 0 for auto (exit 2 otherwise). */
 int cli_synth_parse_neighborhood(const char *s);
+
+/* --condition DATA.tsv --extent ... [--realizations K] [--mean M]
+ * [--interpolation nearest|bilinear] (cli/synth_condition.c). */
+typedef struct {
+    const char *data, *extent;   /* --condition, --extent, or NULL */
+    size_t K;                    /* --realizations (default 1) */
+    int given_K, given_interp;   /* given explicitly */
+    int simple;                  /* --mean given: simple kriging */
+    double mean;                 /* --mean */
+    size_t nmax;                 /* --nmax: local kriging from the nmax nearest data; 0: all */
+    int interp;                  /* NL_INTERP_* for reading U at the data (default bilinear) */
+    double lo[3], hi[3];         /* --extent */
+    const char *emean, *evar;    /* --ensemble-mean, --ensemble-variance, or NULL */
+    const char *etmp[2];         /* their temporaries */
+    nl_field *s1, *s2;           /* running mean and sum of squared deviations (Welford) */
+    nl_condsim_plan *plan;       /* made by cli_synth_cond_prepare */
+    nl_condsim_info info;        /* its figures */
+} cli_synth_cond;
+
+/* Take option `opt` (the getopt code of one of the options above). */
+void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg);
+/* After the size and model are known: check the options, set job->h from
+ * the extent, read the data and make the plan (exit 2 on bad input). */
+void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int spacing);
+/* Begin the ensemble outputs (after the realizations' own). */
+void cli_synth_cond_begin(cli_synth_cond *c);
+/* Add realization k (from 0) to the ensemble statistics. */
+void cli_synth_cond_accumulate(cli_synth_cond *c, const nl_field *f, size_t k);
+/* Write the ensemble mean and variance (meta: the last realization's record). */
+void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta);
+/* The output name of realization k (path itself unless K > 1; buf holds it). */
+const char *cli_synth_cond_name(const cli_synth_cond *c, const char *path, size_t k, char *buf, size_t len);
+/* Condition the unconditional field f (realization k) and say so in r->method. */
+void cli_synth_cond_apply(const cli_synth_cond *c, const cli_synth_job *job, nl_field *f, cli_synth_result *r,
+                          size_t k);
+/* Write f (a 1D TSV takes the cell centres as its x column when conditioned). */
+void cli_synth_cond_write(const cli_synth_cond *c, const char *path, const char *tmp, const nl_field *f,
+                          const nl_meta *meta);
+/* The "condition" object of the JSON report; a note on stderr about data between samples. */
+void cli_synth_cond_report(const cli_synth_cond *c, json_t *o);
+void cli_synth_cond_note(const cli_synth_cond *c);
+void cli_synth_cond_free(cli_synth_cond *c);
 
 /* Each exits through cli_die on bad input; returns only on success. */
 void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);

@@ -37,6 +37,8 @@ extern "C" {
 #include "noiselab/core/dist.h"
 #include "noiselab/core/rng.h"
 #include "noiselab/core/wk.h"
+#include "noiselab/core/field_sample.h"
+#include "noiselab/core/io_coords.h"
 #include "noiselab/core/autocorr.h"
 #include "noiselab/core/autocorr_plan.h"
 #include "noiselab/core/fftw_plan.h"
@@ -78,6 +80,7 @@ extern "C" {
 #include "noiselab/analysis/creases.h"
 #include "noiselab/analysis/aliasing.h"
 #include "noiselab/analysis/subdiv_exact.h"
+#include "noiselab/analysis/condsim.h"
 #include "noiselab/analysis/fit.h"
 
 #include "noiselab/render/terrain.h"

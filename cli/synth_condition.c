@@ -1,0 +1,217 @@
+/* noiselab synth --condition: conditional simulation (analysis/condsim.h)
+ * of the methods' unconditional fields, K realizations to K files. */
+#include "synth.h"
+#include "../core/field_sample.h"
+#include "../core/io_points.h"
+#include "../core/nl_error.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg)
+{
+    switch (opt) {
+    case 'Y': c->data = arg; break;
+    case 'Z': c->extent = arg; break;
+    case 'k': c->K = cli_parse_count("--realizations", arg, 1), c->given_K = 1; break;
+    case 'g': c->emean = arg; break;
+    case 'q': c->nmax = cli_parse_count("--nmax", arg, 1); break;
+    case 'J': c->evar = arg; break;
+    case 'M': c->mean = cli_parse_double("--mean", arg), c->simple = 1; break;
+    case 'Q':
+        if (!strcmp(arg, "nearest"))
+            c->interp = NL_INTERP_NEAREST;
+        else if (!strcmp(arg, "bilinear"))
+            c->interp = NL_INTERP_LINEAR;
+        else
+            cli_die(2, "--interpolation: expected nearest or bilinear, got \"%s\"", arg);
+        c->given_interp = 1;
+        break;
+    }
+}
+
+/* The options that only make sense together. */
+static void check_given(const cli_synth_cond *c, const cli_synth_job *job, int from, int spacing)
+{
+    if (!c->data) {
+        if (c->extent || c->given_K || c->simple || c->given_interp || c->emean || c->evar || c->nmax)
+            cli_die(2, "synth: --extent, --realizations, --mean, --interpolation, --ensemble-mean, "
+                    "--ensemble-variance and --nmax apply to --condition only");
+        return;
+    }
+    if (from)
+        cli_die(2, "synth: --from FILE and --condition exclude each other (a conditional field regenerates with "
+                "its data: give the options again)");
+    if (strcmp(job->method, "fft") && strcmp(job->method, "circulant") && strcmp(job->method, "subdiv"))
+        cli_die(2, "synth %s: --condition applies to fft, circulant and subdiv only", job->method);
+    if (!c->extent)
+        cli_die(2, "synth: --extent: expected the grid's extent a:b[,c:d[,e:f]] with --condition");
+    if (spacing)
+        cli_die(2, "synth: --spacing and --extent exclude each other (the spacing is the extent over the size)");
+    if (c->K > 9999)
+        cli_die(2, "--realizations: expected at most 9999, got %zu", c->K);
+    if (c->evar && c->K < 2)
+        cli_die(2, "--ensemble-variance: expected --realizations K with K >= 2, got %zu", c->K);
+    if ((c->emean && !cli_has_ext(c->emean, ".exr")) || (c->evar && !cli_has_ext(c->evar, ".exr")))
+        cli_die(2, "%s: expected a file name ending in .exr, got \"%s\"",
+                c->emean && !cli_has_ext(c->emean, ".exr") ? "--ensemble-mean" : "--ensemble-variance",
+                c->emean && !cli_has_ext(c->emean, ".exr") ? c->emean : c->evar);
+}
+
+static void parse_extent(cli_synth_cond *c, const cli_synth_job *job)
+{
+    const char *p = c->extent;
+    for (int d = 0; d < job->dim; d++) {
+        char *end;
+        c->lo[d] = strtod(p, &end);
+        if (end == p || *end != ':')
+            cli_die(2, "--extent: expected a:b per axis separated by commas, got \"%s\"", c->extent);
+        p = end + 1;
+        c->hi[d] = strtod(p, &end);
+        if (end == p || !(c->hi[d] > c->lo[d]) || (d + 1 < job->dim ? *end != ',' : *end != 0))
+            cli_die(2, "--extent: expected %d ranges a:b with a < b, got \"%s\"", job->dim, c->extent);
+        if (!isfinite(4 * (c->hi[d] - c->lo[d])) || !isfinite(c->lo[d]) || !isfinite(c->hi[d]))
+            cli_die(2, "--extent: expected finite ranges whose width does not overflow, got \"%s\"", c->extent);
+        p = end + 1;
+    }
+}
+
+void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int spacing)
+{
+    nl_points *pt;
+    int st;
+    check_given(c, job, from, spacing);
+    if (!c->data)
+        return;
+    parse_extent(c, job);
+    for (int a = 0; a < job->dim; a++)
+        job->h[a] = (c->hi[a] - c->lo[a]) / (double)job->n[a];
+    if ((st = nl_points_read(c->data, &pt)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--condition: %s", nl_errmsg());
+    if (pt->dim != job->dim) {
+        int d = pt->dim;
+        nl_points_free(pt);
+        cli_die(2, "--condition: %s has %d coordinates per point, the grid %d", c->data, d, job->dim);
+    }
+    nl_field grid = {.dim = job->dim, .n = {job->n[0], job->n[1], job->n[2]},
+                     .h = {job->h[0], job->h[1], job->h[2]}};
+    st = nl_condsim_plan_alloc(job->m, pt->n, pt->pts, pt->val, c->lo, &grid, c->interp, c->simple, c->mean,
+                               c->nmax, &c->plan);
+    nl_points_free(pt);
+    if (st)
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--condition: %s: %s", c->data, nl_errmsg());
+    nl_condsim_plan_info(c->plan, &c->info);
+}
+
+/* Realization k (from 0) of K: OUT itself when K = 1, else OUT with -k+1
+ * before its extension (out.exr: out-1.exr, out-2.exr, ...). */
+const char *cli_synth_cond_name(const cli_synth_cond *c, const char *path, size_t k, char *buf, size_t len)
+{
+    if (!path || !c->data || c->K == 1)
+        return path;
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    if (!dot || (slash && dot < slash))
+        dot = path + strlen(path);
+    snprintf(buf, len, "%.*s-%zu%s", (int)(dot - path), path, k + 1, dot);
+    return buf;
+}
+
+void cli_synth_cond_apply(const cli_synth_cond *c, const cli_synth_job *job, nl_field *f, cli_synth_result *r,
+                          size_t k)
+{
+    if (!c->data)
+        return;
+    cli_check(nl_condsim_execute(c->plan, f));
+    size_t l = strlen(r->method);
+    /* the space marks a field that --from cannot regenerate */
+    snprintf(r->method + l, sizeof r->method - l, " conditioned:data=%s,points=%zu,kriging=%s,extent=%s,"
+             "nmax=%zu,realization=%zu/%zu", c->data, c->info.n, c->simple ? "simple" : "ordinary", c->extent, c->nmax,
+             k + 1, c->K);
+    (void)job;
+}
+
+void cli_synth_cond_write(const cli_synth_cond *c, const char *path, const char *tmp, const nl_field *f,
+                          const nl_meta *meta)
+{
+    if (!c->data || !cli_has_ext(path, ".tsv")) {
+        cli_write_field(path, tmp, f, meta);
+        return;
+    }
+    double *xs = cli_malloc(f->n[0] * sizeof *xs); /* 1D: the cell centres as x */
+    for (size_t i = 0; i < f->n[0]; i++)
+        xs[i] = c->lo[0] + ((double)i + 0.5) * f->h[0];
+    int st = nl_tsv_write_field(tmp, f, meta, "x", xs);
+    free(xs);
+    cli_check(st);
+}
+
+void cli_synth_cond_report(const cli_synth_cond *c, json_t *o)
+{
+    if (!c->data)
+        return;
+    json_object_set_new(o, "condition",
+                        json_pack("{s:s,s:I,s:I,s:s,s:s,s:f,s:f,s:I}", "data", c->data, "points", (json_int_t)c->info.n,
+                                  "on_samples", (json_int_t)c->info.on_samples, "kriging",
+                                  c->simple ? "simple" : "ordinary", "interpolation",
+                                  c->interp == NL_INTERP_NEAREST ? "nearest" : "bilinear", "max_error",
+                                  c->info.max_error, "max_move", c->info.max_move, "realizations", (json_int_t)c->K));
+}
+
+void cli_synth_cond_note(const cli_synth_cond *c)
+{
+    if (!c->data || c->info.on_samples == c->info.n)
+        return;
+    fprintf(stderr, "noiselab: synth: %zu of %zu data lie between samples; the unconditional field is read there by "
+            "%s interpolation, whose error is at most %.3g standard deviations (datum %zu)\n",
+            c->info.n - c->info.on_samples, c->info.n, c->interp == NL_INTERP_NEAREST ? "nearest" : "bilinear",
+            c->info.max_error, c->info.worst + 1);
+}
+
+void cli_synth_cond_begin(cli_synth_cond *c)
+{
+    c->etmp[0] = cli_out_begin(c->emean);
+    c->etmp[1] = cli_out_begin(c->evar);
+}
+
+/* Welford's update: s1 the mean of the first k + 1, s2 their sum of squared deviations. */
+void cli_synth_cond_accumulate(cli_synth_cond *c, const nl_field *f, size_t k)
+{
+    if (!c->emean && !c->evar)
+        return;
+    if (!c->s1)
+        c->s1 = cli_field_alloc(f->dim, f->n, f->h), c->s2 = cli_field_alloc(f->dim, f->n, f->h);
+    for (size_t i = 0; i < f->count; i++) {
+        double d = f->data[i] - c->s1->data[i];
+        c->s1->data[i] += d / (double)(k + 1);
+        c->s2->data[i] += d * (f->data[i] - c->s1->data[i]);
+    }
+}
+
+void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta)
+{
+    nl_meta m = *meta;
+    if (!c->emean && !c->evar)
+        return;
+    for (size_t i = 0; i < c->s2->count; i++) /* the unbiased variance, divisor K - 1 */
+        c->s2->data[i] = c->K > 1 ? c->s2->data[i] / (double)(c->K - 1) : 0;
+    m.seed[0] = 0, m.flags[0] = 0;
+    snprintf(m.method, sizeof m.method, "ensemble mean of %zu conditional realizations (data=%s,extent=%s)", c->K,
+             c->data, c->extent);
+    if (c->emean)
+        cli_check(nl_exr_write(c->etmp[0], c->s1, &m));
+    snprintf(m.method, sizeof m.method, "ensemble variance of %zu conditional realizations (data=%s,extent=%s)",
+             c->K, c->data, c->extent);
+    if (c->evar)
+        cli_check(nl_exr_write(c->etmp[1], c->s2, &m));
+    cli_out_commit(c->emean);
+    cli_out_commit(c->evar);
+}
+
+void cli_synth_cond_free(cli_synth_cond *c)
+{
+    nl_condsim_plan_free(c->plan);
+    nl_field_free(c->s1), nl_field_free(c->s2);
+}
