@@ -21,7 +21,7 @@ static void quiet_handler(exr_const_context_t ctxt, exr_result_t code, const cha
 /* The EXR attribute of provenance field i: "noiselab." and its key. */
 static const char *attr_name(int i, char *buf, size_t len)
 {
-    snprintf(buf, len, "noiselab.%s", nl_meta_fields[i].key);
+    snprintf(buf, len, "noiselab.%s", nl_meta_field_table()[i].key);
     return buf;
 }
 
@@ -66,7 +66,7 @@ int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta)
     if (!rv)
         rv = exr_add_channel(ctx, part, "Y", EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR, 1, 1);
     for (int i = 0; meta && i < NL_META_NFIELDS && !rv; i++) {
-        const char *s = (const char *)meta + nl_meta_fields[i].off;
+        const char *s = (const char *)meta + nl_meta_field_table()[i].off;
         char name[64];
         if (*s)
             rv = exr_attr_set_string(ctx, part, attr_name(i, name, sizeof name), s);
@@ -288,7 +288,7 @@ int nl_exr_read_mem(const char *path, const unsigned char *file, size_t len, nl_
         char name[64];
         int32_t len = 0;
         if (exr_attr_get_string(ctx, 0, attr_name(i, name, sizeof name), &len, &s) == EXR_ERR_SUCCESS && s)
-            snprintf((char *)&m + nl_meta_fields[i].off, nl_meta_fields[i].len, "%.*s", (int)len, s);
+            snprintf((char *)&m + nl_meta_field_table()[i].off, nl_meta_field_table()[i].len, "%.*s", (int)len, s);
     }
     if ((st = layout(path, &m, w, hh, &dim, n, h))) {
         exr_finish(&ctx);

@@ -26,7 +26,9 @@ typedef struct {
     size_t off;      /* offsetof(nl_meta, ...) */
     size_t len;      /* sizeof the field */
 } nl_meta_field;
-extern const nl_meta_field nl_meta_fields[];
+/* The table (NL_META_NFIELDS entries); a function, not an exported array,
+ * so that no data symbol leaves the library's namespace rules. */
+const nl_meta_field *nl_meta_field_table(void);
 enum { NL_META_NFIELDS = 8 };
 
 /* The readers of io.h on a file already in memory (`path` only names it in

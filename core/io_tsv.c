@@ -44,11 +44,11 @@ int nl_tsv_write(const char *path, const char *comment, int ncols, const char *c
 static void write_meta(FILE *fp, const nl_meta *meta)
 {
     for (int i = 0; meta && i < NL_META_NFIELDS; i++) {
-        const char *v = (const char *)meta + nl_meta_fields[i].off;
-        size_t n = strnlen(v, nl_meta_fields[i].len);
+        const char *v = (const char *)meta + nl_meta_field_table()[i].off;
+        size_t n = strnlen(v, nl_meta_field_table()[i].len);
         if (!n)
             continue;
-        fprintf(fp, "# %s: ", nl_meta_fields[i].key);
+        fprintf(fp, "# %s: ", nl_meta_field_table()[i].key);
         for (size_t k = 0; k < n; k++)
             fputc((unsigned char)v[k] < 0x20 ? ' ' : v[k], fp);
         fputc('\n', fp);
@@ -98,10 +98,10 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
 static void read_meta_line(const char *line, nl_meta *meta)
 {
     for (int i = 0; i < NL_META_NFIELDS; i++) {
-        size_t k = strlen(nl_meta_fields[i].key);
-        if (line[1] == ' ' && strncmp(line + 2, nl_meta_fields[i].key, k) == 0 && line[2 + k] == ':' && line[3 + k] == ' ') {
+        size_t k = strlen(nl_meta_field_table()[i].key);
+        if (line[1] == ' ' && strncmp(line + 2, nl_meta_field_table()[i].key, k) == 0 && line[2 + k] == ':' && line[3 + k] == ' ') {
             const char *v = line + 4 + k;
-            snprintf((char *)meta + nl_meta_fields[i].off, nl_meta_fields[i].len, "%.*s", (int)strcspn(v, "\r\n"), v);
+            snprintf((char *)meta + nl_meta_field_table()[i].off, nl_meta_field_table()[i].len, "%.*s", (int)strcspn(v, "\r\n"), v);
             return;
         }
     }
