@@ -1,6 +1,7 @@
 /* Point coordinates from TSV. */
 #include "io_coords.h"
 #include "field.h"
+#include "io_read_internal.h"
 #include "nl_error.h"
 
 #include <errno.h>
@@ -8,22 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-/* One row of cols finite numbers into v; 0 when it is not that. */
-static int row(const char *line, size_t cols, double *v)
-{
-    const char *p = line;
-    char *end;
-    for (size_t c = 0; c < cols; c++) {
-        double x = strtod(p, &end);
-        if (end == p || !isfinite(x) || (c + 1 < cols && *end != '\t') ||
-            (c + 1 == cols && *end && *end != '\n' && *end != '\r'))
-            return 0;
-        v[c] = x;
-        p = end + 1;
-    }
-    return 1;
-}
 
 /* The header: its column count and whether the last is "value". */
 static int header(FILE *fp, const char *path, size_t *lineno, size_t *cols, int *has_value)
@@ -82,7 +67,7 @@ int nl_coords_read(const char *path, int *dim, size_t *n, double **pts)
             if (st)
                 break;
         }
-        if (!row(line, cols, r))
+        if (!nl_tsv_row(line, cols, r))
             st = NL_ERROR(NL_EINPUT, "%s:%zu: expected %zu tab-separated finite numbers", path, lineno, cols);
         else
             memcpy(v + *n * (size_t)*dim, r, (size_t)*dim * sizeof *v), ++*n;

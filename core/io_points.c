@@ -1,5 +1,6 @@
 /* Scattered data points from TSV. */
 #include "io_points.h"
+#include "io_read_internal.h"
 #include "nl_error.h"
 #include "field.h"
 
@@ -25,8 +26,7 @@ static size_t columns(const char *line)
     return cols;
 }
 
-/* One row of cols numbers into v; 0 when it is not that. */
-static int row(const char *line, size_t cols, double *v)
+int nl_tsv_row(const char *line, size_t cols, double *v)
 {
     const char *p = line;
     char *end;
@@ -67,7 +67,7 @@ static int read_rows(FILE *fp, const char *path, size_t cols, size_t lineno, dou
             }
             v = w, cap *= 2;
         }
-        if (!row(line, cols, v + *n * cols)) {
+        if (!nl_tsv_row(line, cols, v + *n * cols)) {
             free(v);
             return NL_ERROR(NL_EINPUT, "%s:%zu: expected %zu tab-separated finite numbers", path, lineno, cols);
         }

@@ -29,6 +29,10 @@ typedef struct {
 /* The table (NL_META_NFIELDS entries); a function, not an exported array,
  * so that no data symbol leaves the library's namespace rules. */
 const nl_meta_field *nl_meta_field_table(void);
+
+/* One tab-separated row of exactly cols finite numbers into v (ending at
+ * the line's end); 0 when the line is not that (core/io_points.c). */
+int nl_tsv_row(const char *line, size_t cols, double *v);
 enum { NL_META_NFIELDS = 8 };
 
 /* The readers of io.h on a file already in memory (`path` only names it in

@@ -138,6 +138,26 @@ typedef struct {
 
 static int worse(double da, size_t ia, double db, size_t ib) { return da > db || (da == db && ia > ib); }
 
+/* Where (d, i) goes when it replaces the root of the h->len entries:
+ * larger children move up along the way. */
+static size_t sift_down(heap_t *h, double d, size_t i)
+{
+    size_t c = 0;
+    for (;;) {
+        size_t l = 2 * c + 1, r = l + 1, b = c;
+        double bd = d;
+        size_t bi = i;
+        if (l < h->len && worse(h->d2[l], h->idx[l], bd, bi))
+            b = l, bd = h->d2[l], bi = h->idx[l];
+        if (r < h->len && worse(h->d2[r], h->idx[r], bd, bi))
+            b = r;
+        if (b == c)
+            return c;
+        h->d2[c] = h->d2[b], h->idx[c] = h->idx[b];
+        c = b;
+    }
+}
+
 static void heap_push(heap_t *h, double d, size_t i)
 {
     size_t c;
@@ -150,20 +170,7 @@ static void heap_push(heap_t *h, double d, size_t i)
     } else {
         if (h->cap == 0 || !worse(h->d2[0], h->idx[0], d, i))
             return;
-        c = 0; /* replace the root, sift down */
-        for (;;) {
-            size_t l = 2 * c + 1, r = l + 1, b = c;
-            double bd = d;
-            size_t bi = i;
-            if (l < h->len && worse(h->d2[l], h->idx[l], bd, bi))
-                b = l, bd = h->d2[l], bi = h->idx[l];
-            if (r < h->len && worse(h->d2[r], h->idx[r], bd, bi))
-                b = r;
-            if (b == c)
-                break;
-            h->d2[c] = h->d2[b], h->idx[c] = h->idx[b];
-            c = b;
-        }
+        c = sift_down(h, d, i); /* replace the root */
     }
     h->d2[c] = d, h->idx[c] = i;
 }
@@ -218,20 +225,7 @@ static void heap_sort(heap_t *h)
         double dl = h->d2[last];
         size_t il = h->idx[last];
         h->cap = h->len; /* sift dl down from the root over len - 1 entries */
-        size_t c = 0;
-        for (;;) {
-            size_t l = 2 * c + 1, r = l + 1, b = c;
-            double bd = dl;
-            size_t bi = il;
-            if (l < h->len && worse(h->d2[l], h->idx[l], bd, bi))
-                b = l, bd = h->d2[l], bi = h->idx[l];
-            if (r < h->len && worse(h->d2[r], h->idx[r], bd, bi))
-                b = r;
-            if (b == c)
-                break;
-            h->d2[c] = h->d2[b], h->idx[c] = h->idx[b];
-            c = b;
-        }
+        size_t c = sift_down(h, dl, il);
         h->d2[c] = dl, h->idx[c] = il;
         h->d2[last] = d, h->idx[last] = i;
     }
