@@ -21,6 +21,7 @@
 #ifndef NL_RNG_H
 #define NL_RNG_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 enum { NL_STREAM_WHITE = 0 };
@@ -39,6 +40,23 @@ double nl_rng_gauss2(uint64_t seed, uint32_t stream, uint64_t index, uint32_t su
 /* Two independent N(0, 1): g[0] = nl_rng_gauss(seed, stream, index) and its
  * sine branch g[1]. */
 void nl_rng_gauss_pair(uint64_t seed, uint32_t stream, uint64_t index, double g[2]);
+
+/* Bulk fill, the same numbers as nl_rng_gauss_pair: out[j], j < n, is
+ * g[j % 2] of nl_rng_gauss_pair(seed, stream, first + j / 2, g) (the last
+ * sine branch is dropped when n is odd; the index is 64-bit, with carry).
+ * From NL_RNG_FILL_PARALLEL numbers on, and outside any OpenMP parallel
+ * region, blocks of NL_RNG_FILL_BLOCK run on OpenMP threads; every thread
+ * count and every code path gives the same bits.  The code path is the
+ * fastest this CPU has (AVX-512, AVX2 or scalar) unless the environment
+ * variable NOISELAB_SIMD = scalar, avx2 or avx512 lowers it (read once; any
+ * other value is ignored).  out holds n doubles.  Thread-safe. */
+#define NL_RNG_FILL_PARALLEL ((size_t)1 << 16)
+#define NL_RNG_FILL_BLOCK ((size_t)1 << 14)
+void nl_rng_gauss_fill(uint64_t seed, uint32_t stream, uint64_t first, size_t n, double *out);
+
+/* The code path of nl_rng_gauss_fill: "scalar", "avx2" or "avx512" (a
+ * static string).  Thread-safe. */
+const char *nl_rng_simd(void);
 
 /* Poisson(mean) by inversion of its CDF (GSL) at nl_rng_uniform2(seed,
  * stream, index, sub); 0 for mean <= 0 or NAN; mean <= 1e8 (beyond, the
