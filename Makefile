@@ -62,6 +62,9 @@ $(BUILD)/%.o: %.c | $(DEPS_OK)
 # rebuilt when the Makefile, and so maybe their flags, changes).
 $(LIB_OBJ): CFLAGS += -fPIC -fno-semantic-interposition
 $(LIB_OBJ): Makefile
+# The Gaussian kernel gives the same bits on every SIMD path only without
+# fused multiply-adds (core/rng_kernel_internal.h).
+$(BUILD)/core/rng%.o: CFLAGS += -ffp-contract=off
 
 $(LIB): $(LIB_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
