@@ -210,14 +210,7 @@ int nl_synth_fft_execute(const nl_synth_fft_plan *p, uint64_t seed, nl_field *ou
     c = nl_alloc(p->half * sizeof *c);
     if (!c)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu complex samples", p->half);
-#pragma omp parallel for schedule(static) if (p->count > 65536)
-    for (size_t k = 0; k < (p->count + 1) / 2; k++) {
-        double g[2];
-        nl_rng_gauss_pair(seed, NL_STREAM_WHITE, k, g);
-        out->data[2 * k] = g[0];
-        if (2 * k + 1 < p->count)
-            out->data[2 * k + 1] = g[1];
-    }
+    nl_rng_gauss_fill(seed, NL_STREAM_WHITE, 0, p->count, out->data);
     fftw_execute_dft_r2c(p->fwd, out->data, c);
 #pragma omp parallel for schedule(static) if (p->count > 65536)
     for (size_t k = 0; k < p->half; k++)

@@ -6,7 +6,6 @@
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
-#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -85,83 +84,95 @@ typedef struct {
     int N;
 } row_job;
 
-/* N = 2 over whole pairs (2i, 2i + 1), i = i0..i1-1: both points read the
- * same 4 x 4 window, so one pass of loads serves both stencils; the sums,
- * their order and the random numbers are those of the general loop. */
+/* The pairs of keys k0..k1-1 on row J into g[2 (k - k0) + branch]: runs of
+ * consecutive counters, split where the key's low word wraps (at k = 0). */
+#define ROW_CHUNK 256
+static void row_gauss(const row_job *r, long k0, long k1, double *g)
+{
+    const uint32_t st = NL_SUBDIV_STREAM + r->lv + 1;
+    long mid = k0 < 0 && k1 > 0 ? 0 : k1;
+    nl_rng_gauss_fill(r->seed, st, rng_index(2, k0, r->J), 2 * (size_t)(mid - k0), g);
+    if (mid < k1)
+        nl_rng_gauss_fill(r->seed, st, rng_index(2, mid, r->J), 2 * (size_t)(k1 - mid), g + 2 * (mid - k0));
+}
+
+/* N = 2 over whole pairs (2i, 2i + 1), i = i0..i1-1, in chunks of
+ * ROW_CHUNK: both points read the same 4 x 4 window, so one pass of loads
+ * serves both stencils; the sums, their order and the random numbers are
+ * those of the general loop (odd rows: the pair of key i; even rows: key
+ * i / 2 for both odd points 4k + 1, 4k + 3). */
 static void row_n2(const row_job *r, long i0, long i1)
 {
     const double *ae = r->even->a, *ao = r->odd->a;
-    long cached = LONG_MIN;
-    double g[2] = {0, 0};
-    for (long i = i0; i < i1; i++) {
-        double se = 0, so = 0;
-        for (int k = 0; k < 4; k++) {
-            const double *x = r->rows[k] + i, *pe = ae + 4 * k, *po = ao + 4 * k;
-            se += pe[0] * x[0];
-            so += po[0] * x[0];
-            se += pe[1] * x[1];
-            so += po[1] * x[1];
-            se += pe[2] * x[2];
-            so += po[2] * x[2];
-            se += pe[3] * x[3];
-            so += po[3] * x[3];
-        }
-        if (r->dodd) {
-            r->out[2 * i] = r->oy ? se + r->deven[i] : r->rows[1][i + 1];
-            r->out[2 * i + 1] = so + r->dodd[i];
-        } else if (r->oy) {
-            nl_rng_gauss_pair(r->seed, NL_SUBDIV_STREAM + r->lv + 1, rng_index(2, i, r->J), g);
-            r->out[2 * i] = se + r->sd_even * g[0];
-            r->out[2 * i + 1] = so + r->sd_odd * g[1];
-        } else {
-            long key = fdiv2(i);
-            if (key != cached) {
-                nl_rng_gauss_pair(r->seed, NL_SUBDIV_STREAM + r->lv + 1, rng_index(2, key, r->J), g);
-                cached = key;
+    double g[2 * ROW_CHUNK];
+    for (long c0 = i0; c0 < i1; c0 += ROW_CHUNK) {
+        long c1 = i1 - c0 < ROW_CHUNK ? i1 : c0 + ROW_CHUNK, k0 = r->oy ? c0 : fdiv2(c0);
+        if (!r->dodd)
+            row_gauss(r, k0, r->oy ? c1 : fdiv2(c1 - 1) + 1, g);
+        for (long i = c0; i < c1; i++) {
+            double se = 0, so = 0;
+            for (int k = 0; k < 4; k++) {
+                const double *x = r->rows[k] + i, *pe = ae + 4 * k, *po = ao + 4 * k;
+                se += pe[0] * x[0];
+                so += po[0] * x[0];
+                se += pe[1] * x[1];
+                so += po[1] * x[1];
+                se += pe[2] * x[2];
+                so += po[2] * x[2];
+                se += pe[3] * x[3];
+                so += po[3] * x[3];
             }
-            r->out[2 * i] = r->rows[1][i + 1];
-            r->out[2 * i + 1] = so + r->sd_odd * g[i - 2 * key];
+            if (r->dodd) {
+                r->out[2 * i] = r->oy ? se + r->deven[i] : r->rows[1][i + 1];
+                r->out[2 * i + 1] = so + r->dodd[i];
+            } else if (r->oy) {
+                r->out[2 * i] = se + r->sd_even * g[2 * (i - c0)];
+                r->out[2 * i + 1] = so + r->sd_odd * g[2 * (i - c0) + 1];
+            } else {
+                r->out[2 * i] = r->rows[1][i + 1];
+                r->out[2 * i + 1] = so + r->sd_odd * g[i - 2 * k0];
+            }
         }
     }
 }
 
-/* Any N, samples I = I0..I1-1. */
+/* Any N, samples I = I0..I1-1, in chunks of 2 ROW_CHUNK. */
 static void row_any(const row_job *r, long I0, long I1)
 {
     const int w = 2 * r->N;
-    long cached = LONG_MIN;
-    double g[2] = {0, 0};
-    for (long I = I0; I < I1; I++) {
-        long i = fdiv2(I);
-        const nl_subdiv_class *cl;
-        double s = 0, z;
-        if (I == 2 * i) {
-            if (!r->oy) {
-                r->out[I] = r->rows[r->N - 1][i + r->N - 1];
+    double g[2 * (ROW_CHUNK + 2)];
+    for (long C0 = I0; C0 < I1; C0 += 2 * ROW_CHUNK) {
+        long C1 = I1 - C0 < 2 * ROW_CHUNK ? I1 : C0 + 2 * ROW_CHUNK;
+        /* odd rows draw at every I: samples 2i and 2i + 1 share the pair of
+         * key i; even rows at odd I: samples 4k + 1 and 4k + 3 share key k */
+        long k0 = r->oy ? fdiv2(C0) : fdiv2(fdiv2(C0)), k1 = r->oy ? fdiv2(C1 - 1) : fdiv2(fdiv2(C1 - 1));
+        if (!r->dodd)
+            row_gauss(r, k0, k1 + 1, g);
+        for (long I = C0; I < C1; I++) {
+            long i = fdiv2(I), key;
+            const nl_subdiv_class *cl;
+            double s = 0;
+            if (I == 2 * i) {
+                if (!r->oy) {
+                    r->out[I] = r->rows[r->N - 1][i + r->N - 1];
+                    continue;
+                }
+                cl = r->even;
+            } else {
+                cl = r->odd;
+            }
+            for (int k = 0; k < w; k++) {
+                const double *a = cl->a + k * w, *x = r->rows[k] + i;
+                for (int q = 0; q < w; q++)
+                    s += a[q] * x[q];
+            }
+            if (r->dodd) {
+                r->out[I] = s + (cl == r->odd ? r->dodd[i] : r->deven[i]);
                 continue;
             }
-            cl = r->even;
-        } else {
-            cl = r->odd;
+            key = r->oy ? i : fdiv2(i);
+            r->out[I] = s + (cl == r->odd ? r->sd_odd : r->sd_even) * g[2 * (key - k0) + (r->oy ? I - 2 * i : i - 2 * key)];
         }
-        for (int k = 0; k < w; k++) {
-            const double *a = cl->a + k * w, *x = r->rows[k] + i;
-            for (int q = 0; q < w; q++)
-                s += a[q] * x[q];
-        }
-        if (r->dodd) {
-            r->out[I] = s + (cl == r->odd ? r->dodd[i] : r->deven[i]);
-            continue;
-        }
-        /* odd rows draw at every I: samples 2i and 2i + 1 share a pair;
-         * even rows at odd I: samples 4k + 1 and 4k + 3 share one */
-        long key = r->oy ? i : fdiv2(i);
-        if (key != cached) {
-            nl_rng_gauss_pair(r->seed, NL_SUBDIV_STREAM + r->lv + 1, rng_index(2, key, r->J), g);
-            cached = key;
-        }
-        z = g[r->oy ? I - 2 * i : i - 2 * key];
-        r->out[I] = s + (cl == r->odd ? r->sd_odd : r->sd_even) * z;
     }
 }
 
