@@ -38,7 +38,8 @@ static const char help[] =
     "usage: noiselab bench [--quick] [--repeat R]\n\n"
     "Times each method and the floor it is measured against, in the same run, and\n"
     "prints TSV: case, size (samples), seconds (median of R runs; default 5, 3 with\n"
-    "--quick), floor, floor_seconds, ratio (ours / floor), samples_per_s.  --quick\n"
+    "--quick), floor, floor_seconds, ratio (ours / floor), samples_per_s, bare,\n"
+    "bare_seconds, ratio_bare (ours / bare; \"-\" where there is none).  --quick\n"
     "uses grids a quarter of the side.  Floors:\n"
     "  fft, circulant  fill the c2r input with Gaussian numbers + FFTW c2r, of the\n"
     "                  size the method transforms (circulant: its embedding)\n"
@@ -47,10 +48,14 @@ static const char help[] =
     "                  (2 taps: the cost of correlating the displacements)\n"
     "  acf             FFTW r2c + c2r of the zero-padded field\n"
     "  psd             FFTW r2c of the field\n"
+    "  gaussian fill   a streaming write of as many doubles (the memory bandwidth)\n"
     "  krige           one covariance evaluation per (grid point, data point)\n"
     "  rank1           the tensor-product FFT with the same number of points\n"
     "  variogram       the k-d tree's enumeration of the pairs within the cutoff\n"
     "  krige nmax      the k-d tree's search of the 32 nearest data per cell\n"
+    "Bare floors, without our random numbers: fft and circulant the FFTW c2r alone;\n"
+    "acf and psd their floor; subdiv, sparse and the Gaussian fill a streaming write\n"
+    "of the field (OpenMP threads writing one double per sample).\n"
     "The variogram and local kriging rows run once each, in a child process whose\n"
     "peak resident memory (getrusage) is given in the case's name.\n"
     "FFTW plans are measured once and kept (see the README); planning is not timed.\n";
@@ -68,32 +73,58 @@ static double median(double *v, int n)
     return gsl_stats_median_from_sorted_data(v, 1, (size_t)n);
 }
 
-static void row(const char *name, size_t samples, double t, const char *floor_name, double tf)
+/* A row with its bare floor (bare NULL: none, "-"). */
+static void row_bare(const char *name, size_t samples, double t, const char *floor_name, double tf, const char *bare,
+                     double tb)
 {
-    printf("%s\t%zu\t%.4f\t%s\t%.4f\t%.2f\t%.3g\n", name, samples, t, floor_name, tf, t / tf, (double)samples / t);
+    printf("%s\t%zu\t%.4f\t%s\t%.4f\t%.2f\t%.3g", name, samples, t, floor_name, tf, t / tf, (double)samples / t);
+    if (bare)
+        printf("\t%s\t%.4f\t%.2f\n", bare, tb, t / tb);
+    else
+        printf("\t-\t-\t-\n");
     fflush(stdout);
 }
 
-/* Gaussian numbers into the half spectrum, then c2r, on an n0 x n1 grid. */
-static double c2r_floor(size_t n0, size_t n1, int reps)
+static void row(const char *name, size_t samples, double t, const char *floor_name, double tf)
+{
+    row_bare(name, samples, t, floor_name, tf, NULL, 0);
+}
+
+/* Gaussian numbers into the half spectrum, then c2r, on an n0 x n1 grid:
+ * the median seconds, and in *bare those of the c2r alone. */
+static double c2r_floor(size_t n0, size_t n1, int reps, double *bare)
 {
     size_t half = n1 * (n0 / 2 + 1);
-    double *x = nl_alloc(n0 * n1 * sizeof *x), t[16];
+    double *x = nl_alloc(n0 * n1 * sizeof *x), t[16], tb[16];
     fftw_complex *c = nl_alloc(half * sizeof *c);
     fftw_plan b = fftw_plan_dft_c2r_2d((int)n1, (int)n0, c, x, nl_fftw_flags(n0 * n1));
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
-#pragma omp parallel for schedule(static)
-        for (size_t i = 0; i < half; i++)
-        {
-            double g[2];
-            nl_rng_gauss_pair(1, 0, i, g);
-            c[i] = g[0] + I * g[1];
-        }
+        double t0 = now(), t1;
+        nl_rng_gauss_fill(1, 0, 0, 2 * half, (double *)c);
+        t1 = now();
         fftw_execute(b);
-        t[r] = now() - t0;
+        t[r] = now() - t0, tb[r] = now() - t1;
     }
     fftw_destroy_plan(b), nl_free(x), nl_free(c);
+    *bare = median(tb, reps);
+    return median(t, reps);
+}
+
+/* A streaming write of count doubles by the OpenMP threads (pages touched
+ * before timing): this machine's memory bandwidth, the floor of any method
+ * that writes the field once. */
+static double stream_floor(size_t count, int reps)
+{
+    double *x = nl_alloc(count * sizeof *x), t[16];
+    memset(x, 0, count * sizeof *x);
+    for (int r = 0; r < reps; r++) {
+        double t0 = now(), v = (double)r + 0.5;
+#pragma omp parallel for schedule(static)
+        for (size_t i = 0; i < count; i++)
+            x[i] = v;
+        t[r] = now() - t0;
+    }
+    nl_free(x);
     return median(t, reps);
 }
 
@@ -123,22 +154,36 @@ static double rng_floor(size_t count, int reps)
     double *x = nl_alloc(count * sizeof *x), t[16];
     for (int r = 0; r < reps; r++) {
         double t0 = now();
-#pragma omp parallel for schedule(static)
-        for (size_t i = 0; i < count / 2; i++) {
-            double g[2];
-            nl_rng_gauss_pair(1, 0, i, g);
-            x[2 * i] = g[0], x[2 * i + 1] = g[1];
-        }
+        nl_rng_gauss_fill(1, 0, 0, count, x);
         t[r] = now() - t0;
     }
     nl_free(x);
     return median(t, reps);
 }
 
+/* The Gaussian fill alone (core/rng.h, its code path in the name) against a
+ * streaming write of as many doubles. */
+static void bench_gauss(size_t n, int reps)
+{
+    double t[16], tw = stream_floor(n * n, reps), *x = nl_alloc(n * n * sizeof *x);
+    char name[64];
+    if (!x)
+        cli_die(1, "out of memory");
+    memset(x, 0, n * n * sizeof *x);
+    for (int r = 0; r < reps; r++) {
+        double t0 = now();
+        nl_rng_gauss_fill((uint64_t)r + 1, 0, 0, n * n, x);
+        t[r] = now() - t0;
+    }
+    nl_free(x);
+    snprintf(name, sizeof name, "gaussian fill (%s)", nl_rng_simd());
+    row_bare(name, n * n, median(t, reps), "streaming write", tw, "streaming write", tw);
+}
+
 static void bench_fft(const nl_model *m, size_t n, int reps)
 {
     size_t nn[2] = {n, n};
-    double t[16];
+    double t[16], tb;
     int st;
     nl_synth_fft_plan *p;
     nl_field *f = nl_field_alloc(2, nn, NULL, &st);
@@ -149,7 +194,8 @@ static void bench_fft(const nl_model *m, size_t n, int reps)
         nl_synth_fft_execute(p, (uint64_t)r + 1, f);
         t[r] = now() - t0;
     }
-    row("fft", n * n, median(t, reps), "gaussian fill + c2r", c2r_floor(n, n, reps));
+    double tf = c2r_floor(n, n, reps, &tb);
+    row_bare("fft", n * n, median(t, reps), "gaussian fill + c2r", tf, "fftw c2r", tb);
     nl_synth_fft_plan_free(p), nl_field_free(f);
 }
 
@@ -160,6 +206,7 @@ static void bench_circulant(const nl_model *m, size_t n, int reps)
     int st;
     nl_synth_circulant_plan *p;
     nl_synth_circulant_info info;
+    double tb, tf;
     nl_field *f = nl_field_alloc(2, nn, NULL, &st);
     if (!f || (st = nl_synth_circulant_plan_alloc(m, 2, nn, NULL, 0, 16, &p)))
         cli_die_status(st);
@@ -169,8 +216,9 @@ static void bench_circulant(const nl_model *m, size_t n, int reps)
         nl_synth_circulant_execute(p, (uint64_t)r + 1, f);
         t[r] = now() - t0;
     }
-    row("circulant", n * n, median(t, reps), "gaussian fill + c2r of the embedding",
-        c2r_floor(info.m[0], info.m[1], reps));
+    tf = c2r_floor(info.m[0], info.m[1], reps, &tb);
+    row_bare("circulant", n * n, median(t, reps), "gaussian fill + c2r of the embedding", tf, "fftw c2r of the embedding",
+             tb);
     nl_synth_circulant_plan_free(p), nl_field_free(f);
 }
 
@@ -203,11 +251,11 @@ static void bench_subdiv(const nl_model *m, size_t n, int reps)
 {
     for (int N = 2; N <= 4; N += 2) {
         char name[64];
-        double ti = subdiv_time(m, n, N, 0, reps), tc = subdiv_time(m, n, N, 2, reps);
+        double ti = subdiv_time(m, n, N, 0, reps), tc = subdiv_time(m, n, N, 2, reps), tw = stream_floor(n * n, reps);
         snprintf(name, sizeof name, "subdiv N=%d", N);
-        row(name, n * n, ti, "gaussian rng + one pass", rng_floor(n * n, reps));
+        row_bare(name, n * n, ti, "gaussian rng + one pass", rng_floor(n * n, reps), "streaming write", tw);
         snprintf(name, sizeof name, "subdiv N=%d correlated", N);
-        row(name, n * n, tc, "subdiv, independent displacements", ti);
+        row_bare(name, n * n, tc, "subdiv, independent displacements", ti, "streaming write", tw);
     }
 }
 
@@ -225,34 +273,36 @@ static void bench_sparse(const nl_model *m, size_t n, int reps)
         nl_synth_sparse_execute(p, (uint64_t)r + 1, 1, NULL, f);
         t[r] = now() - t0;
     }
-    row("sparse", n * n, median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps));
+    row_bare("sparse", n * n, median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps), "streaming write",
+             stream_floor(n * n, reps));
     nl_synth_sparse_plan_free(p), nl_field_free(f);
 }
 
 static void bench_estimators(size_t n, int reps)
 {
     size_t nn[2] = {n, n};
-    double t[16];
+    double t[16], tf;
     int st;
     nl_field *f = nl_field_alloc(2, nn, NULL, &st), *out;
     if (!f)
         cli_die_status(st);
-    for (size_t i = 0; i < f->count; i++)
-        f->data[i] = nl_rng_gauss(3, 0, i);
+    nl_rng_gauss_fill(3, 0, 0, f->count, f->data);
     for (int r = 0; r < reps; r++) {
         double t0 = now();
         nl_acf_full(f, 0.0, 0, &out);
         t[r] = now() - t0;
         nl_field_free(out);
     }
-    row("acf", f->count, median(t, reps), "fftw r2c + c2r padded", fft_floor(2 * n, 1, reps));
+    tf = fft_floor(2 * n, 1, reps);
+    row_bare("acf", f->count, median(t, reps), "fftw r2c + c2r padded", tf, "fftw r2c + c2r padded", tf);
     for (int r = 0; r < reps; r++) {
         double t0 = now();
         nl_psd_periodogram(f, NAN, &out);
         t[r] = now() - t0;
         nl_field_free(out);
     }
-    row("psd", f->count, median(t, reps), "fftw r2c", fft_floor(n, 0, reps));
+    tf = fft_floor(n, 0, reps);
+    row_bare("psd", f->count, median(t, reps), "fftw r2c", tf, "fftw r2c", tf);
     nl_field_free(f);
 }
 
@@ -495,8 +545,10 @@ int cli_cmd_bench(int argc, char **argv)
     if ((st = nl_model_parse("markaussian:alpha=1.4,scale=16", &m)) ||
         (st = nl_model_parse("markov:scale=16", &me)) || (st = nl_model_parse("markov:scale=0.2", &mk)))
         cli_die_status(st);
-    printf("case\tsize\tseconds\tfloor\tfloor_seconds\tratio\tsamples_per_s\n");
+    printf("case\tsize\tseconds\tfloor\tfloor_seconds\tratio\tsamples_per_s\tbare\tbare_seconds\tratio_bare\n");
     bench_geo(100000 / (d * d), 1000 / d); /* first: the children's peak memory starts from a small parent */
+    for (size_t n = 1024; n <= 4096; n *= 2)
+        bench_gauss(n / d, reps);
     for (size_t n = 1024; n <= 4096; n *= 2)
         bench_fft(m, n / d, reps);
     for (size_t n = 1024; n <= 2048; n *= 2)

@@ -27,7 +27,7 @@ static inline double asd(uint64_t u)
 #define RK_VD double
 #define RK_VU uint64_t
 #define RK_VU_ZERO 0
-#define RK_MUL(a, b) ((a) * (uint64_t)(b))
+#define RK_MUL(a, b) (((a) & 0xffffffffu) * (uint64_t)(b))
 #define RK_ASU asu
 #define RK_ASD asd
 #define RK_SQRT sqrt

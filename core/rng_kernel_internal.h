@@ -3,7 +3,7 @@
  * transform with our own log and sincos.  A path includes this file after
  * defining
  *   RK_VD, RK_VU     its lane types (double and uint64_t: scalars or vectors)
- *   RK_MUL(a, b)     the 64-bit product of lanes that hold 32-bit values
+ *   RK_MUL(a, b)     the 64-bit product of the low 32 bits of a by b < 2^32
  *   RK_ASU, RK_ASD   bit casts double <-> uint64_t
  *   RK_SQRT(x)       the correctly rounded square root
  *   RK_VU_ZERO       the zero of RK_VU
@@ -39,7 +39,9 @@ static inline void RK_(keys)(uint64_t seed, RK_VU k0[10], RK_VU k1[10])
 }
 
 /* Philox4x32-10 of the counter (c0, c1, c2, c3), each lane holding 32 bits:
- * Random123's philox4x32round, ten times. */
+ * Random123's philox4x32round, ten times.  The low halves of the products
+ * keep their high 32 bits until the end: they only reach c0 and c2, whose
+ * high bits RK_MUL ignores. */
 static inline void RK_(philox)(RK_VU c[4], const RK_VU k0[10], const RK_VU k1[10])
 {
     RK_VU c0 = c[0], c1 = c[1], c2 = c[2], c3 = c[3];
@@ -47,11 +49,11 @@ static inline void RK_(philox)(RK_VU c[4], const RK_VU k0[10], const RK_VU k1[10
     for (int r = 0; r < 10; r++) {
         RK_VU p0 = RK_MUL(c0, 0xD2511F53u), p1 = RK_MUL(c2, 0xCD9E8D57u);
         c0 = (p1 >> 32) ^ c1 ^ k0[r];
-        c1 = p1 & RK_M32;
+        c1 = p1;
         c2 = (p0 >> 32) ^ c3 ^ k1[r];
-        c3 = p0 & RK_M32;
+        c3 = p0;
     }
-    c[0] = c0, c[1] = c1, c[2] = c2, c[3] = c3;
+    c[0] = c0 & RK_M32, c[1] = c1 & RK_M32, c[2] = c2 & RK_M32, c[3] = c3 & RK_M32;
 }
 
 /* Random123's u01fixedpt_open_open_64_double of the 64 bits hi:lo,

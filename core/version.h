@@ -8,7 +8,7 @@
 #define NL_VERSION_H
 
 #define NL_VERSION_MAJOR 0
-#define NL_VERSION_MINOR 1
+#define NL_VERSION_MINOR 2
 #define NL_VERSION_PATCH 0
 
 #define NL_VERSION_STR_(x) #x
