@@ -5,8 +5,13 @@
  * 64-bit seed and counter = (index low 32 bits, index high 32 bits, stream,
  * 0).  Its first two 64-bit halves are mapped to uniforms in (0, 1) and
  * turned into one standard normal by the Box-Muller transform (cosine
- * branch).  No state is carried between calls, so any sample of any field
- * can be recomputed on its own, in any order and with any thread count.
+ * branch), with our own log and sincos (core/rng_kernel_internal.h: within
+ * 2 ulp) so that the scalar, AVX2 and AVX-512 code paths give the same bits
+ * on every machine.  No state is carried between calls, so any sample of
+ * any field can be recomputed on its own, in any order and with any thread
+ * count.  (Before version 0.2 the transform used libm's log, sin and cos:
+ * numbers differ from those by about 1e-15, 2.7e-15 at most in 4 million
+ * draws.)
  *
  * nl_rng_gauss_pair returns both branches of one transform (cosine, sine):
  * two independent normals for the price of one, the first equal to
