@@ -10,6 +10,7 @@
  * leaves two orders of margin without hiding a wrong formula (a factor or
  * a missing Jacobian is off by far more). */
 #include "../analysis/check.h"
+#include "../analysis/subdiv_exact.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
 
@@ -17,6 +18,7 @@
 #include <gsl/gsl_sf_bessel.h>
 #include <gsl/gsl_sf_gamma.h>
 #include <math.h>
+#include <stdlib.h>
 
 /* L0(x) = sum_k (x/2)^(2k+1) / Gamma(k + 3/2)^2 */
 static double struve_l0(double x)
@@ -73,5 +75,58 @@ Test(lewis87, eq14_refuses)
     cr_assert_eq(nl_model_parse("spectrum:exp(-f^2)", &m), 0);
     r = 1;
     cr_expect_eq(nl_check_matheron_2d(m, 1, &r, &c), NL_EINVAL);
+    nl_model_free(m);
+}
+
+/* The exact covariance averaged over random neighbourhoods
+ * (analysis/subdiv_exact.c), on alternatives whose answer is known:
+ * (a) two copies of the standard 4x4 block give the standard result;
+ * (b) the block and a "predict zero, displace by R(0)" alternative: each
+ *     new point is, with probability 1/2, the standard one and otherwise
+ *     independent white noise of variance R(0), so its variance is the mean
+ *     (V_std + R(0)) / 2 and the lag-0 average over the field is
+ *     (lag0_std + R(0)) / 2 (a quarter of the points are kept, their
+ *     variance R(0) either way); the mean stencil alone would give
+ *     V_std / 4 + ... instead.
+ * Both are sums of the same products in another order: 1e-12. */
+static void set_alternatives(nl_subdiv_coeffs *c, int white)
+{
+    for (int j = 0; j < c->level[0].nclass; j++) {
+        nl_subdiv_class *cl = &c->level[0].cls[j];
+        int w = 2 * c->level[0].N, n = (int)cl->n;
+        cl->nalt = 2;
+        cl->offx = malloc(2 * n * sizeof *cl->offx), cl->offy = malloc(2 * n * sizeof *cl->offy);
+        cl->alt_a = malloc(2 * n * sizeof *cl->alt_a), cl->alt_var = malloc(2 * sizeof *cl->alt_var);
+        cr_assert(cl->offx && cl->offy && cl->alt_a && cl->alt_var);
+        for (int a = 0; a < 2; a++) {
+            for (int i = 0; i < n; i++) {
+                cl->offx[a * n + i] = i % w + 1 - c->level[0].N;
+                cl->offy[a * n + i] = i / w + 1 - c->level[0].N;
+                cl->alt_a[a * n + i] = a && white ? 0 : cl->a[i];
+            }
+            cl->alt_var[a] = a && white ? c->r0 : cl->variance;
+        }
+    }
+}
+
+Test(lewis87, exact_random_neighbourhoods)
+{
+    nl_model *m;
+    long lags[6] = {0, 0, 1, 0, 2, 1};
+    double std[3], same[3], half[3];
+    cr_assert_eq(nl_model_parse("markov:scale=3", &m), 0);
+    for (int white = -1; white <= 1; white++) {
+        nl_subdiv_coeffs *c;
+        cr_assert_eq(nl_subdiv_coeffs_alloc(m, 2, 1, 2.0, 2, 1e-4, 8, &c), NL_OK);
+        if (white >= 0)
+            set_alternatives(c, white);
+        cr_assert_eq(nl_subdiv_exact_acf(c, m, 8, 8, 3, lags, white < 0 ? std : white ? half : same), NL_OK, "%s",
+                     nl_errmsg());
+        nl_subdiv_coeffs_free(c);
+    }
+    for (int i = 0; i < 3; i++)
+        cr_expect(fabs(same[i] - std[i]) <= 1e-12, "lag %d: %.15g vs %.15g", i, same[i], std[i]);
+    cr_expect(fabs(half[0] - (std[0] + 1) / 2) <= 1e-12, "lag 0: %.15g vs %.15g", half[0], (std[0] + 1) / 2);
+    cr_expect(half[1] < std[1] - 0.05, "lag (1, 0) loses correlation: %g vs %g", half[1], std[1]);
     nl_model_free(m);
 }
