@@ -158,22 +158,22 @@ static void error_table(FILE *md, FILE *tsv, double *emk)
 }
 
 /* Lewis's "random quadrilateral" remedy (nl_subdiv_coeffs_randomize, as
- * synth subdiv --random-neighborhoods K): exp(-r/12), 64x64 from a 16x16
- * coarse grid in 2 levels (so every random neighbourhood fits the level it
- * refines, as synthesis requires), N = 2, the exact ACF averaged over the
- * random choice.  k = 0: the standard 4x4 block.  *bias: the largest
- * diagonal-minus-axis excess over distances k sqrt 2, k = 1..11; *aniso:
- * the largest |ACF - its x-axis profile at the same distance| over every
- * lag of the map within distance 20; *var: the variance (R(0) = 1). */
+ * synth subdiv --random-neighborhoods K): exp(-r/3), 64x64 from a 4x4
+ * coarse grid of spacing 16 (R = 0.005 there: nearly white, so the torus
+ * adds no anisotropy of its own) in 4 levels, N = 2, the exact ACF averaged
+ * over the random choice.  k = 0: the standard 4x4 block.  *bias: the
+ * largest diagonal-minus-axis excess over distances k sqrt 2, k = 1..7;
+ * *aniso: the largest |ACF - its x-axis profile at the same distance| over
+ * every lag within distance 10; *var: the variance (R(0) = 1). */
 static void random_quad(int k, uint64_t seed, double *bias, double *aniso, double *var)
 {
-    enum { L = 20, NL = (L + 1) * (2 * L + 1) };
+    enum { L = 10, NL = (L + 1) * (2 * L + 1) };
     nl_model *m;
     nl_subdiv_coeffs *c;
     static long lags[2 * NL];
     static double ex[NL];
-    nl_model_parse("markov:scale=12", &m);
-    nl_subdiv_coeffs_alloc(m, 2, 2, 4.0, 2, 1e-4, 8, &c);
+    nl_model_parse("markov:scale=3", &m);
+    nl_subdiv_coeffs_alloc(m, 2, 4, 16.0, 2, 1e-4, 8, &c);
     if (k)
         nl_subdiv_coeffs_randomize(c, m, k, seed);
     for (int x = 0; x <= L; x++)
@@ -192,7 +192,7 @@ static void random_quad(int k, uint64_t seed, double *bias, double *aniso, doubl
             an = ex[x * (2 * L + 1) + y + L] - axis;
             if (fabs(an) > fabs(*aniso))
                 *aniso = an;
-            if ((x == y || x == -y) && x >= 1 && x <= 11 && fabs(an) > fabs(*bias))
+            if ((x == y || x == -y) && x >= 1 && x <= 7 && fabs(an) > fabs(*bias))
                 *bias = an;
         }
     nl_subdiv_coeffs_free(c);
@@ -214,14 +214,17 @@ static int random_table(FILE *md)
                 "> The author has employed a \"random quadrilateral\" subdivision scheme, in which several random "
                 "neighborhoods are preselected using a non-biased random walk from the nearest neighbors of the "
                 "point to be estimated, and one of these neighborhoods is chosen at random for each estimation.\n\n"
-                "exp(-r/12), N = 2 (16 points), a 64x64 periodic field refined in 2 levels from a 16x16 FFT-exact "
-                "coarse grid (so each random neighbourhood fits the level it refines, as `synth subdiv "
-                "--random-neighborhoods K` requires), its exact ACF averaged over the random choice "
+                "exp(-r/3), N = 2 (16 points), a 64x64 periodic field refined in 4 levels from a 4x4 coarse grid "
+                "of spacing 16 (R = 0.005 there: the levels refine through the whole correlation scale, and "
+                "the torus adds no anisotropy of its own; on the two coarsest levels the random neighbourhoods "
+                "wrap on the 4- and 8-point grids, where `synth subdiv --random-neighborhoods` would refuse so "
+                "small a field, but their coefficients there are small), its exact ACF averaged over the random "
+                "choice "
                 "(analysis/subdiv_exact.c: a new point enters every covariance through the mean of its "
                 "alternatives and its own variance through their second moment; tests/test_lewis87.c). "
                 "\"Diagonal excess\": the largest ACF along the diagonal minus the x-axis ACF at the same "
                 "distance (the paper's bias, 0 if isotropic); \"anisotropy\": the same over every direction "
-                "within distance 20.\n\n| neighbourhoods | plan seed | diagonal excess | anisotropy (any "
+                "within distance 10. The triangular mesh on the same field is in the next section.\n\n| neighbourhoods | plan seed | diagonal excess | anisotropy (any "
                 "direction) | variance |\n|---|---|---|---|---|\n");
     for (size_t i = 0; i < sizeof rows / sizeof *rows; i++) {
         double b, a, v;
