@@ -39,7 +39,9 @@ static const char help[] =
     "                    |exact - R| / R(0); at most 4096 samples; --levels then defaults to a\n"
     "                    coarse grid of 8 samples and the output spacing is S / 2^levels\n"
     "  --json            {\"levels\": [{\"level\", \"spacing\", \"N\", \"classes\": [{\"class\",\n"
-    "                    \"coefficients\", \"variance\", \"condition\", \"flags\"}]}]}\n"
+    "                    \"coefficients\", \"variance\", \"condition\", \"flags\"}]}]}; with auto,\n"
+    "                    \"auto\" {\"stop\", \"tol\"} and, in 1D, each level's \"variance_by_N\"\n"
+    "                    (eq. 7 for N = 1.. its N, from the recursion)\n"
     "Coefficients are in neighbourhood order: k = 1-N..N in 1D; row-major over\n"
     "(r, c) = 1-N..N in 2D, r along y.  Classes: mid (1D); face, edge-x, edge-y (2D).\n";
 
@@ -193,7 +195,17 @@ static void check_args(coeffs_args *a, size_t *n)
                 "with N = %d)", a->N, a->levels, (int)(1.2e8 / pow(2.0 * a->N, 6)), a->N);
 }
 
-static json_t *levels_json(const nl_subdiv_coeffs *co, const nl_model *m)
+/* 1D auto: eq. (7) for N = 1 .. the level's N from Levinson's recursion
+ * (shorter where the recursion stops: singular from there on). */
+static json_t *variance_by_n(const nl_subdiv_level *l, const nl_model *m)
+{
+    double a[128], var[64];
+    int nout = 0;
+    cli_check(nl_subdiv_levinson(m, l->spacing, l->N, NL_SUBDIV_STOP_NONE, 0, a, var, &nout));
+    return cli_json_array(var, (size_t)nout);
+}
+
+static json_t *levels_json(const nl_subdiv_coeffs *co, const nl_model *m, int autoN)
 {
     json_t *lv = json_array();
     for (int k = 0; k < co->levels; k++) {
@@ -209,6 +221,8 @@ static json_t *levels_json(const nl_subdiv_coeffs *co, const nl_model *m)
                                "min_eigenvalue", cl->min_eigenvalue, "flags", flags_json(cl->flags)));
         }
         o = json_pack("{s:i,s:f,s:i,s:o}", "level", l->level, "spacing", l->spacing, "N", l->N, "classes", cls);
+        if (autoN && co->dim == 1)
+            json_object_set_new(o, "variance_by_N", variance_by_n(l, m));
         if (l->filt)
             json_object_set_new(o, "displacements", cli_coeffs_filter_json(l, m, co->dim));
         json_array_append_new(lv, o);
@@ -237,7 +251,7 @@ int cli_cmd_coeffs(int argc, char **argv)
     if (a.json) {
         json_t *o = json_pack("{s:s,s:i,s:f,s:s,s:o,s:o}", "model", a.spec, "dim", a.dim, "spacing0", a.s0,
                               "displacements", a.disp ? "correlated" : "independent", "flags",
-                              flags_json(co->flags), "levels", levels_json(co, m));
+                              flags_json(co->flags), "levels", levels_json(co, m, !a.N));
         if (!a.N)  /* auto: the rule that chose each level's N */
             json_object_set_new(o, "auto", json_pack("{s:s,s:f}", "stop", a.stop ? "variance" : "improvement",
                                                      "tol", a.tol));
