@@ -137,4 +137,16 @@ int nl_check_model(const nl_model *m, int dim, nl_check *out);
  * out).  Thread safety: as nl_check_model. */
 int nl_check_neighbours(const nl_model *m, const nl_check *c, char *buf, size_t size);
 
+/* Lewis 1987, eq. (14) (Matheron 1973): the isotropic 2D correlation made
+ * by sweeping m's 1D profile C_1 = R over every direction (turning bands),
+ *     C_2(r) = (2/pi) int_0^1 C_1(v r) (1 - v^2)^(-1/2) dv,
+ * at the n lags r[i] >= 0 (m's lag units) into c2[i] (variance units;
+ * C_2(0) = R(0), a nugget included only there).  Valid in 2D whenever m is
+ * valid in 1D.  Adaptive quadrature to 1e-12 relative, 1e-13 R(0)
+ * absolute (analysis/check_matheron.c).  NL_OK, NL_EINVAL (a spectral
+ * model or one not defined in 1D, R(0) not positive, a negative or
+ * non-finite lag), NL_EFAIL (the quadrature did not converge), NL_ENOMEM.
+ * Thread safety: as the model. */
+int nl_check_matheron_2d(const nl_model *m, size_t n, const double *r, double *c2);
+
 #endif

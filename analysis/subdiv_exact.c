@@ -7,17 +7,70 @@
 #include <string.h>
 
 /* New point I of a level: the old points and weights it is made of, and the
- * variance of its own displacement. */
+ * variance of its own displacement.  With random neighbourhoods, the mean
+ * over the alternatives (each drawn with probability 1/nalt). */
 typedef struct {
-    int n;          /* stencil size (1 for a kept point) */
-    long idx[256];  /* old flat indices */
-    double w[256];  /* weights */
+    int n, cap;     /* stencil size (1 for a kept point); capacity of idx, w */
+    long *idx;      /* old flat indices */
+    double *w;      /* weights */
     double var;     /* displacement variance */
     int cls;        /* class index into the level's cls[] (-1: a kept point) */
     long ci, cj;    /* its cell */
 } stencil;
 
 static long wrap(long i, long n) { return ((i % n) + n) % n; }
+
+/* Adds weight v of old point idx to the stencil, merging a repeated point. */
+static void add_point(stencil *s, long idx, double v)
+{
+    for (int q = 0; q < s->n; q++)
+        if (s->idx[q] == idx) {
+            s->w[q] += v;
+            return;
+        }
+    s->idx[s->n] = idx, s->w[s->n++] = v;
+}
+
+/* The old flat index of point p of alternative a of class cl, for the new
+ * point of cell (i, j). */
+static long alt_index(const nl_subdiv_class *cl, int a, size_t p, long i, long j, long cx, long cy)
+{
+    size_t k = (size_t)a * cl->n + p;
+    return wrap(j + cl->offy[k], cy) * cx + wrap(i + cl->offx[k], cx);
+}
+
+/* The mean stencil of a class with random neighbourhoods: the new point of
+ * an independent, uniform choice among the alternatives is, on average,
+ * their mean (its covariance with any other point is the mean's, the
+ * choices of two points being independent; its own variance is not:
+ * second_moment). */
+static void mean_stencil(const nl_subdiv_class *cl, long i, long j, long cx, long cy, stencil *s)
+{
+    s->var = 0;
+    for (int a = 0; a < cl->nalt; a++) {
+        for (size_t p = 0; p < cl->n; p++)
+            add_point(s, alt_index(cl, a, p, i, j, cx, cy), cl->alt_a[(size_t)a * cl->n + p] / cl->nalt);
+        s->var += cl->alt_var[a] / cl->nalt;
+    }
+}
+
+/* The variance of a new point of cell (i, j) of a class with random
+ * neighbourhoods: the mean over the alternatives of a^T C a plus their
+ * displacement variance (C the old level's n1 x n1 covariance). */
+static double second_moment(const nl_subdiv_class *cl, long i, long j, long cx, long cy, const double *C)
+{
+    const long n1 = cx * cy;
+    double v = 0;
+    for (int a = 0; a < cl->nalt; a++) {
+        const double *w = cl->alt_a + (size_t)a * cl->n;
+        double q = 0;
+        for (size_t p = 0; p < cl->n; p++)
+            for (size_t r = 0; r < cl->n; r++)
+                q += w[p] * w[r] * C[alt_index(cl, a, p, i, j, cx, cy) * n1 + alt_index(cl, a, r, i, j, cx, cy)];
+        v += (q + cl->alt_var[a]) / cl->nalt;
+    }
+    return v;
+}
 
 static void make_stencil(const nl_subdiv_level *l, int dim, long cx, long cy, long I, long J, stencil *s)
 {
@@ -31,6 +84,10 @@ static void make_stencil(const nl_subdiv_level *l, int dim, long cx, long cy, lo
         return;
     }
     s->cls = dim == 1 ? 0 : ox && oy ? 0 : ox ? 1 : 2;
+    if (l->cls[s->cls].nalt) {
+        mean_stencil(&l->cls[s->cls], i, j, cx, cy, s);
+        return;
+    }
     if (dim == 1) {
         cl = &l->cls[0];
         for (int k = 0; k < w; k++)
@@ -55,8 +112,8 @@ static int check_supported(const nl_subdiv_coeffs *c, size_t nx, size_t ny, long
             return NL_ERROR(NL_EINVAL, "exact covariance: 2D neighbourhoods up to 16x16");
     for (int k = 0; k < c->levels; k++)
         for (int j = 0; j < c->level[k].nclass; j++)
-            if (c->level[k].cls[j].nalt)
-                return NL_ERROR(NL_EINVAL, "exact covariance: random neighbourhoods are not supported");
+            if (c->level[k].cls[j].nalt && c->level[k].filt)
+                return NL_ERROR(NL_EINVAL, "exact covariance: random neighbourhoods with correlated displacements");
     if (nx * ny > 4096)
         return NL_ERROR(NL_ETOOBIG, "exact covariance: expected at most 4096 samples, got %zu", nx * ny);
     if ((size_t)cx << c->levels != nx || (dim == 2 && (size_t)cy << c->levels != ny) || cx < 2)
@@ -130,7 +187,7 @@ static int refine_level(const nl_subdiv_level *l, int dim, long cx, long cy, ste
         make_stencil(l, dim, cx, cy, P % nx2, P / nx2, st);
         cls[P] = st->cls, cell[P] = st->cj * cx + st->ci;
     }
-    for (long P = 0; P < n2; P++) {  /* T = M C */
+    for (long P = 0; P < n2; P++) {  /* T = M C (M: the mean stencils) */
         make_stencil(l, dim, cx, cy, P % nx2, P / nx2, st);
         for (int q = 0; q < st->n; q++)
             for (long j = 0; j < n1; j++)
@@ -149,11 +206,43 @@ static int refine_level(const nl_subdiv_level *l, int dim, long cx, long cy, ste
             C2[P * n2 + Q] = v;
         }
     }
+    for (long P = 0; P < n2; P++)  /* a random neighbourhood's own variance */
+        if (cls[P] >= 0 && l->cls[cls[P]].nalt)
+            C2[P * n2 + P] = second_moment(&l->cls[cls[P]], cell[P] % cx, cell[P] / cx, cx, cy, *C);
     free(D), free(cls), free(cell);
     free(T);
     free(*C);
     *C = C2;
     return NL_OK;
+}
+
+/* A stencil big enough for every class of c: n points, or nalt n for the
+ * mean of random neighbourhoods. */
+static stencil *stencil_alloc(const nl_subdiv_coeffs *c)
+{
+    size_t cap = 1;
+    stencil *s = calloc(1, sizeof *s);
+    for (int k = 0; k < c->levels; k++)
+        for (int j = 0; j < c->level[k].nclass; j++) {
+            const nl_subdiv_class *cl = &c->level[k].cls[j];
+            size_t n = cl->nalt ? (size_t)cl->nalt * cl->n : cl->n;
+            cap = n > cap ? n : cap;
+        }
+    if (!s || !(s->idx = malloc(cap * sizeof *s->idx)) || !(s->w = malloc(cap * sizeof *s->w))) {
+        if (s)
+            free(s->idx);
+        free(s);
+        return NULL;
+    }
+    s->cap = (int)cap;
+    return s;
+}
+
+static void stencil_free(stencil *s)
+{
+    if (s)
+        free(s->idx), free(s->w);
+    free(s);
 }
 
 /* The covariance at lag (lx, ly) averaged over the pairs inside the grid. */
@@ -183,13 +272,13 @@ int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx,
 
     if ((s = check_supported(c, nx, ny, cx, cy)) || (s = coarse_covariance(c, m, cx, cy, &C)))
         return s;
-    if (!(st = malloc(sizeof *st))) {
+    if (!(st = stencil_alloc(c))) {
         free(C);
         return NL_ERROR(NL_ENOMEM, "out of memory");
     }
     for (int k = 0; k < c->levels; k++) {
         if ((s = refine_level(&c->level[k], dim, cx, cy, st, &C))) {
-            free(C), free(st);
+            free(C), stencil_free(st);
             return s;
         }
         cx *= 2, cy = dim == 2 ? 2 * cy : 1;
@@ -197,6 +286,6 @@ int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx,
     for (size_t i = 0; i < nlags; i++)
         out[i] = lag_average(C, cx, cy, lags[2 * i], dim == 2 ? lags[2 * i + 1] : 0);
     free(C);
-    free(st);
+    stencil_free(st);
     return NL_OK;
 }

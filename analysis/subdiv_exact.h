@@ -26,9 +26,16 @@
  * mean 0.  m is the model the coefficients were made from.  out holds
  * nlags values (variance units of the model).  The subdivision must be
  * periodic with nx = cx 2^levels (and ny = cy 2^levels in 2D), cx, cy >= 2.
+ * Random neighbourhoods (nl_subdiv_coeffs_randomize): the covariance
+ * averaged over the random choice as well (each new point's alternative
+ * uniform and independent of every other point's, as the synthesis draws
+ * them): a new point enters every covariance with another point through
+ * the mean of its alternatives' stencils, and its own variance is the mean
+ * of a^T C a plus the displacement variance over its alternatives.  So the
+ * result is the expected ACF of an ensemble over seeds.
  * Returns NL_OK, NL_EINVAL (neighbourhood half-widths above 4 in 2D or
- * 128 in 1D; random neighbourhoods; a size that is not the coarse
- * size times 2^levels), NL_ETOOBIG (nx ny > 4096), NL_ENOMEM, or the codes
+ * 128 in 1D; random neighbourhoods with correlated displacements; a size
+ * that is not the coarse size times 2^levels), NL_ETOOBIG (nx ny > 4096), NL_ENOMEM, or the codes
  * of nl_wk_sample_acf.  Reentrant (c and m are only read; as thread-safe as
  * the model). */
 int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,

@@ -9,7 +9,7 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: noiselab check --acf SPEC --dim D [--json]\n"
+    "usage: noiselab check --acf SPEC --dim D [--profile-1d[=RMAX]] [--json]\n"
     "       noiselab check --spectrum SPEC --dim D [--json]\n\n"
     "Positive definiteness (the sign of the D-dimensional spectrum, the smallest\n"
     "eigenvalue of a covariance matrix, the -1/n bound and the 3D non-increasing\n"
@@ -30,7 +30,12 @@ static const char help[] =
     "spectral_decay (the line spectrum's b in f^-b; null: faster than any\n"
     "power), density_decay (the D-dimensional density's), band_limited,\n"
     "band_edge, singular_checked, singular_below_spacing (null: never), scale,\n"
-    "flags.  Exit status 0 whatever the verdict.\n";
+    "flags.  Exit status 0 whatever the verdict.\n"
+    "--profile-1d (--dim 2): also Lewis 1987 eq. (14) (Matheron): the isotropic 2D\n"
+    "correlation C2 made by sweeping the model's 1D profile C1 = R over every\n"
+    "direction (turning bands; valid in 2D whenever R is in 1D), at 33 lags from 0\n"
+    "to RMAX (default: a quarter of the reported scale): JSON profile_1d {lag, c1,\n"
+    "c2, min_c2 (relative to C2(0)), min_c2_lag}.\n";
 
 static const char *why_key[] = {NULL, "negative-integral", "negative-spectrum", "isotropic-bound",
                                 "negative-eigenvalue", "line-spectrum-rises"};
@@ -57,7 +62,36 @@ static json_t *json_lists(const nl_check *k, const char *nb, json_t **flags)
     return a;
 }
 
-static void print_json(const char *spec, const nl_check *k, const char *nb)
+/* Eq. (14) at 33 lags from 0 to rmax (0: the check's scale / 4): a table,
+ * or profile_1d in o. */
+static void profile_1d(const nl_model *m, const nl_check *k, double rmax, json_t *o)
+{
+    enum { NL = 33 };
+    double r[NL], c1[NL], c2[NL], lo = INFINITY, lolag = 0;
+    if (!(rmax > 0))
+        rmax = k->scale / 4;
+    for (int i = 0; i < NL; i++) {
+        r[i] = rmax * i / (NL - 1);
+        c1[i] = nl_model_acf(m, 1, &r[i]);
+    }
+    cli_check(nl_check_matheron_2d(m, NL, r, c2));
+    for (int i = 0; i < NL; i++)
+        if (c2[i] < lo)
+            lo = c2[i], lolag = r[i];
+    if (o) {
+        json_object_set_new(o, "profile_1d", json_pack("{s:o,s:o,s:o,s:f,s:f}", "lag", cli_json_array(r, NL), "c1",
+                                                       cli_json_array(c1, NL), "c2", cli_json_array(c2, NL),
+                                                       "min_c2", lo / c2[0], "min_c2_lag", lolag));
+        return;
+    }
+    printf("  eq. (14), the 2D isotropic correlation swept from the 1D profile (min C2/C2(0) %.4f at lag %.3g):\n"
+           "  %-12s %-12s %s\n", lo / c2[0], lolag, "lag", "C1 = R", "C2");
+    for (int i = 0; i < NL; i++)
+        printf("  %-12.6g %-12.6g %.6g\n", r[i], c1[i], c2[i]);
+}
+
+/* m non-NULL: with eq. (14) (--profile-1d). */
+static void print_json(const char *spec, const nl_check *k, const char *nb, const nl_model *m, double rmax)
 {
     json_t *fl, *nbs = json_lists(k, nb, &fl);
     json_t *grid = json_pack("{s:o,s:o}", "side", k->eig_side ? json_integer((json_int_t)k->eig_side) : json_null(),
@@ -79,6 +113,8 @@ static void print_json(const char *spec, const nl_check *k, const char *nb)
                      k->singular_checked, "singular_below_spacing",
                      k->singular_below > 0 ? json_real(k->singular_below) : json_null(), "scale", num(k->scale),
                      "flags", fl));
+    if (m)
+        profile_1d(m, k, rmax, o);
     cli_json_print(o);
 }
 
@@ -195,9 +231,11 @@ int cli_cmd_check(int argc, char **argv)
 {
     static const struct option opts[] = {{"acf", required_argument, 0, 'a'}, {"spectrum", required_argument, 0, 'a'},
                                          {"dim", required_argument, 0, 'd'}, {"json", no_argument, 0, 'j'},
-                                         {"help", no_argument, 0, 'h'},      {0}};
+                                         {"help", no_argument, 0, 'h'},      {"profile-1d", optional_argument, 0, 'p'},
+                                         {0}};
     const char *spec = NULL;
-    int c, dim = 0, json = 0, st;
+    int c, dim = 0, json = 0, st, prof = 0;
+    double rmax = 0;
     nl_model *m;
     nl_check k;
     char nb[4096];
@@ -206,6 +244,10 @@ int cli_cmd_check(int argc, char **argv)
         case 'a': spec = optarg; break;
         case 'd': dim = cli_parse_dim(optarg, 3); break;
         case 'j': json = 1; break;
+        case 'p':
+            prof = 1;
+            rmax = optarg ? cli_parse_positive("--profile-1d", optarg, "largest lag") : 0;
+            break;
         case 'h': fputs(help, stdout); return 0;
         }
     }
@@ -214,13 +256,19 @@ int cli_cmd_check(int argc, char **argv)
         cli_die(2, "check: --acf: expected a model (see noiselab models)");
     if (!dim)
         cli_die(2, "check: --dim: expected 1, 2 or 3");
-    if ((st = nl_model_parse(spec, &m)) || (st = nl_check_model(m, dim, &k)) ||
+    if (prof && dim != 2)
+        cli_die(2, "check: --profile-1d: expected --dim 2 (eq. (14) is the 2D sweep), got --dim %d", dim);
+    if (!(st = nl_model_parse(spec, &m)) && prof && nl_model_is_spectral(m))
+        cli_die(2, "check: --profile-1d: expected a model defined by R (eq. (14) sweeps R(t)), got %s", spec);
+    if (st || (st = nl_check_model(m, dim, &k)) ||
         (st = nl_check_neighbours(m, &k, nb, sizeof nb)))
         cli_die_status(st);
     if (json)
-        print_json(spec, &k, nb);
+        print_json(spec, &k, nb, prof ? m : NULL, rmax);
     else
         print_text(spec, &k, nb);
+    if (prof && !json)
+        profile_1d(m, &k, rmax, NULL);
     nl_model_free(m);
     return 0;
 }

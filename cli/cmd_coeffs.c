@@ -1,6 +1,7 @@
 /* noiselab coeffs: midpoint estimation coefficients of generalized
  * stochastic subdivision, level by level. */
 #include "coeffs.h"
+#include "synth.h"
 
 #include <getopt.h>
 #include <math.h>
@@ -8,8 +9,8 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: noiselab coeffs --acf SPEC --dim 1|2 [--neighborhood N|auto] [--tol E] [--levels L]\n"
-    "                       [--spacing0 S] [--displacements independent|correlated [--taps M]]\n"
+    "usage: noiselab coeffs --acf SPEC --dim 1|2 [--neighborhood N|auto] [--tol [variance:]E]\n"
+    "                       [--levels L] [--spacing0 S] [--displacements independent|correlated [--taps M]]\n"
     "                       [--error --size N[xM]] [--json]\n\n"
     "Solves the orthogonality equations of generalized stochastic subdivision\n"
     "(Lewis 1987, eqs. 4, 10, 12) at every level, with the displacement variance\n"
@@ -18,6 +19,10 @@ static const char help[] =
     "                    auto grows N per level until eq. (7) improves by less than\n"
     "                    E R(0) (--tol, default 1e-4), up to 16 in 1D and 6 in 2D;\n"
     "                    in 2D, levels (2N)^6 at most 1.2e8 (N = 8: 7 levels)\n"
+    "  --tol variance:E  auto by the paper's rule: the first N whose eq. (7) is below\n"
+    "                    E R(0) (else the largest).  1D grows N by Levinson's\n"
+    "                    recursion (O(N) a step), then solves the chosen N directly;\n"
+    "                    2D solves every N directly (a ring is no Toeplitz bordering)\n"
     "  --levels L        number of levels (default 10)\n"
     "  --spacing0 S      observation spacing at level 0, in lag units (default 1);\n"
     "                    level k uses S / 2^k\n"
@@ -34,7 +39,9 @@ static const char help[] =
     "                    |exact - R| / R(0); at most 4096 samples; --levels then defaults to a\n"
     "                    coarse grid of 8 samples and the output spacing is S / 2^levels\n"
     "  --json            {\"levels\": [{\"level\", \"spacing\", \"N\", \"classes\": [{\"class\",\n"
-    "                    \"coefficients\", \"variance\", \"condition\", \"flags\"}]}]}\n"
+    "                    \"coefficients\", \"variance\", \"condition\", \"flags\"}]}]}; with auto,\n"
+    "                    \"auto\" {\"stop\", \"tol\"} and, in 1D, each level's \"variance_by_N\"\n"
+    "                    (eq. 7 for N = 1.. its N, from the recursion)\n"
     "Coefficients are in neighbourhood order: k = 1-N..N in 1D; row-major over\n"
     "(r, c) = 1-N..N in 2D, r along y.  Classes: mid (1D); face, edge-x, edge-y (2D).\n";
 
@@ -105,7 +112,7 @@ static void check_finite(const nl_model *m, const nl_subdiv_coeffs *c, const cha
 
 typedef struct {
     const char *spec, *size;
-    int dim, N, levels, json, disp, taps, error;
+    int dim, N, levels, json, disp, taps, error, stop;
     double tol, s0;
 } coeffs_args;
 
@@ -128,7 +135,7 @@ static int parse(int argc, char **argv, coeffs_args *a)
         case 'N':
             a->N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
             break;
-        case 't': a->tol = cli_parse_positive("--tol", optarg, "number"); break;
+        case 't': a->tol = cli_synth_parse_tol("--tol", optarg, &a->stop); break;
         case 'L': a->levels = (int)cli_parse_count("--levels", optarg, 1); break;
         case 's': a->s0 = cli_parse_positive("--spacing0", optarg, "number"); break;
         case 'j': a->json = 1; break;
@@ -188,7 +195,17 @@ static void check_args(coeffs_args *a, size_t *n)
                 "with N = %d)", a->N, a->levels, (int)(1.2e8 / pow(2.0 * a->N, 6)), a->N);
 }
 
-static json_t *levels_json(const nl_subdiv_coeffs *co, const nl_model *m)
+/* 1D auto: eq. (7) for N = 1 .. the level's N from Levinson's recursion
+ * (shorter where the recursion stops: singular from there on). */
+static json_t *variance_by_n(const nl_subdiv_level *l, const nl_model *m)
+{
+    double a[128], var[64];
+    int nout = 0;
+    cli_check(nl_subdiv_levinson(m, l->spacing, l->N, NL_SUBDIV_STOP_NONE, 0, a, var, &nout));
+    return cli_json_array(var, (size_t)nout);
+}
+
+static json_t *levels_json(const nl_subdiv_coeffs *co, const nl_model *m, int autoN)
 {
     json_t *lv = json_array();
     for (int k = 0; k < co->levels; k++) {
@@ -204,6 +221,8 @@ static json_t *levels_json(const nl_subdiv_coeffs *co, const nl_model *m)
                                "min_eigenvalue", cl->min_eigenvalue, "flags", flags_json(cl->flags)));
         }
         o = json_pack("{s:i,s:f,s:i,s:o}", "level", l->level, "spacing", l->spacing, "N", l->N, "classes", cls);
+        if (autoN && co->dim == 1)
+            json_object_set_new(o, "variance_by_N", variance_by_n(l, m));
         if (l->filt)
             json_object_set_new(o, "displacements", cli_coeffs_filter_json(l, m, co->dim));
         json_array_append_new(lv, o);
@@ -213,7 +232,7 @@ static json_t *levels_json(const nl_subdiv_coeffs *co, const nl_model *m)
 
 int cli_cmd_coeffs(int argc, char **argv)
 {
-    coeffs_args a = {NULL, NULL, 0, 2, 0, 0, 0, 0, 0, 1e-4, 1};
+    coeffs_args a = {NULL, NULL, 0, 2, 0, 0, 0, 0, 0, NL_SUBDIV_STOP_IMPROVEMENT, 1e-4, 1};
     size_t n[3] = {0, 0, 0};
     nl_model *m;
     nl_subdiv_coeffs *co;
@@ -223,7 +242,7 @@ int cli_cmd_coeffs(int argc, char **argv)
         return 0;
     check_args(&a, n);
     cli_check(nl_model_parse(a.spec, &m));
-    cli_check(nl_subdiv_coeffs_alloc(m, a.dim, a.levels, a.s0, a.N, a.tol, a.dim == 1 ? 16 : 6, &co));
+    cli_check(nl_subdiv_coeffs_alloc_rule(m, a.dim, a.levels, a.s0, a.N, a.stop, a.tol, a.dim == 1 ? 16 : 6, &co));
     check_finite(m, co, a.spec);
     if (a.disp)
         cli_check(nl_subdiv_coeffs_correlate(co, m, a.taps ? a.taps : a.dim == 1 ? 4 : 2, NL_SUBDIV_DISP_ERROR));
@@ -232,7 +251,10 @@ int cli_cmd_coeffs(int argc, char **argv)
     if (a.json) {
         json_t *o = json_pack("{s:s,s:i,s:f,s:s,s:o,s:o}", "model", a.spec, "dim", a.dim, "spacing0", a.s0,
                               "displacements", a.disp ? "correlated" : "independent", "flags",
-                              flags_json(co->flags), "levels", levels_json(co, m));
+                              flags_json(co->flags), "levels", levels_json(co, m, !a.N));
+        if (!a.N)  /* auto: the rule that chose each level's N */
+            json_object_set_new(o, "auto", json_pack("{s:s,s:f}", "stop", a.stop ? "variance" : "improvement",
+                                                     "tol", a.tol));
         if (err) {
             json_object_set_new(o, "error", json_pack("{s:s,s:f,s:o,s:f}", "size", a.size, "spacing",
                                                       ldexp(a.s0, -co->levels), "directions", err,

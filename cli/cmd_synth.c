@@ -28,7 +28,7 @@ static const char help[] =
     "            --levels L          levels of refinement (default: down to a coarse grid\n"
     "                                of 8 samples, or 6 levels with --nonperiodic)\n"
     "            --neighborhood N|auto  half-width of the neighbourhood (default 2: 4 or 4x4)\n"
-    "            --tol E             auto: grow N until eq. (7) improves by < E R(0) (1e-4)\n"
+    "            --tol [variance:]E  auto: grow N until (7) improves by < E R(0) (1e-4), or is < E R(0)\n"
     "            --nonperiodic       a window of an infinite, spatially consistent field\n"
     "            --origin X[,Y]      the window's first sample, in output samples (default 0)\n"
     "            --seed-image FILE   start from this image as the coarse level (kept exactly)\n"
@@ -173,7 +173,7 @@ static void apply_keys(char *rest, cli_synth_job *job)
             if (!strcmp(kv, "levels")) job->levels = parse_int("--from: levels", v, 0, 40);
             else if (!strcmp(kv, "neighborhood"))
                 job->N = strcmp(v, "auto") ? parse_int("--from: neighborhood", v, 1, INT_MAX) : 0;
-            else if (!strcmp(kv, "tol")) job->tol = cli_parse_positive("--from: tol", v, "number");
+            else if (!strcmp(kv, "tol")) job->tol = cli_synth_parse_tol("--from: tol", v, &job->stop);
             else if (!strcmp(kv, "nonperiodic")) job->nonperiodic = 1;
             else if (!strcmp(kv, "origin")) {
                 errno = 0;
@@ -271,7 +271,7 @@ static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
         g->given_N = 1;
         break;
     case 't':
-        job->tol = cli_parse_positive("--tol", optarg, "number");
+        job->tol = cli_synth_parse_tol("--tol", optarg, &job->stop);
         g->given_tol = 1;
         break;
     case 'R':

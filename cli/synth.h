@@ -18,6 +18,7 @@ typedef struct {
     int levels;            /* --levels, 0 = default */
     int N;                 /* --neighborhood: -1 default, 0 auto */
     double tol;            /* --tol for auto */
+    int stop;              /* --tol's rule: NL_SUBDIV_STOP_IMPROVEMENT (default) or _VARIANCE */
     int nonperiodic;       /* --nonperiodic */
     long origin[2];        /* --origin, finest-grid indices */
     const char *seed_image;/* --seed-image */
@@ -51,6 +52,9 @@ typedef struct {
 int cli_synth_parse_int(const char *opt, const char *s, int min, int max);
 /* --neighborhood N|auto: N >= 1, or 0 for auto (exit 2 otherwise). */
 int cli_synth_parse_neighborhood(const char *s);
+/* --tol [variance:|improvement:]E: E > 0 finite, the rule in *rule
+ * (NL_SUBDIV_STOP_*; no prefix: improvement).  Exit 2 otherwise. */
+double cli_synth_parse_tol(const char *opt, const char *s, int *rule);
 
 /* --condition DATA.tsv --extent ... [--realizations K] [--mean M]
  * [--interpolation nearest|bilinear] (cli/synth_condition.c). */

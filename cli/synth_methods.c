@@ -74,6 +74,7 @@ static nl_subdiv_plan *subdiv_plan(const cli_synth_job *job, nl_field **img)
     o.levels = job->levels;
     o.N = job->N < 0 ? 2 : job->N;
     o.tol = job->tol;
+    o.stop = job->stop;
     o.nonperiodic = job->nonperiodic;
     o.allow_not_pd = job->clamp;
     o.random_nb = job->random_nb;
@@ -105,9 +106,9 @@ static void subdiv_describe(const cli_synth_job *job, const nl_subdiv_plan *p, c
     nl_subdiv_plan_info(p, &info);
     if (N)
         snprintf(nb, sizeof nb, "%d", N);
-    k = (size_t)snprintf(r->method, sizeof r->method, "subdiv:levels=%d,neighborhood=%s,tol=%g%s%s", info.levels,
-                         nb, job->tol, job->nonperiodic ? ",nonperiodic" : ",periodic",
-                         job->seed_image ? ",seed-image" : "");
+    k = (size_t)snprintf(r->method, sizeof r->method, "subdiv:levels=%d,neighborhood=%s,tol=%s%g%s%s",
+                         info.levels, nb, job->stop == NL_SUBDIV_STOP_VARIANCE ? "variance:" : "", job->tol,
+                         job->nonperiodic ? ",nonperiodic" : ",periodic", job->seed_image ? ",seed-image" : "");
     if (job->random_nb)
         k += (size_t)snprintf(r->method + k, sizeof r->method - k, ",random-neighborhoods=%d", job->random_nb);
     if (c->level[0].filt)

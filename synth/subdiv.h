@@ -111,7 +111,8 @@ typedef struct {
 /* Compute the coefficients of `levels` levels.  N > 0 fixes the
  * half-width; N = 0 chooses it per level ("auto"): N grows from 1 until the
  * displacement variance (7) of the mid (1D) or face (2D) class improves by
- * less than tol * R(0), up to nmax.  spacing0 in the model's lag units.
+ * less than tol * R(0), up to nmax (nl_subdiv_coeffs_alloc_rule below for
+ * the paper's rule).  spacing0 in the model's lag units.
  * *out is owned by the caller: free with nl_subdiv_coeffs_free.  Evaluates
  * the model (not thread-safe for expression models).  Returns NL_OK, or
  * (*out = NULL) NL_EINVAL (dim not 1 or 2, levels outside 1..40, spacing0
@@ -124,6 +125,27 @@ typedef struct {
  * they are flagged (NL_SUBDIV_NOT_PD) and refused by synthesis. */
 int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
                         nl_subdiv_coeffs **out);
+
+/* nl_subdiv_coeffs_alloc with the stopping rule of "auto" (N = 0) chosen:
+ *   NL_SUBDIV_STOP_IMPROVEMENT  N grows until (7) improves by < tol R(0)
+ *                               (nl_subdiv_coeffs_alloc's rule);
+ *   NL_SUBDIV_STOP_VARIANCE     Lewis 1987 ("increase the size until the
+ *                               expected error variance (7) is reduced below
+ *                               a specified threshold"): the first N whose
+ *                               (7) is below tol R(0), else nmax;
+ *   NL_SUBDIV_STOP_NONE         N = nmax.
+ * 1D: the sizes are grown by Levinson's recursion (nl_subdiv_levinson,
+ * O(N) per step); the chosen N's system is then solved once directly,
+ * which gives the condition number and flags reported and keeps the
+ * pseudo-inverse path.  Where the recursion breaks down before the rule
+ * stops it (singular or not positive definite from some N on), the growth
+ * continues from there by direct solves, pseudo-inverted, so the N chosen
+ * is the one the direct re-solve of every N would choose.  2D: the (2N)^2
+ * block grows by a ring, not a Toeplitz bordering; every N is solved
+ * directly.  Same codes as nl_subdiv_coeffs_alloc, and NL_EINVAL for an
+ * unknown rule. */
+int nl_subdiv_coeffs_alloc_rule(const nl_model *m, int dim, int levels, double spacing0, int N, int rule, double tol,
+                                int nmax, nl_subdiv_coeffs **out);
 
 /* Frees the coefficients (NULL: no-op). */
 void nl_subdiv_coeffs_free(nl_subdiv_coeffs *c);
@@ -190,7 +212,7 @@ double nl_subdiv_disp_target(const nl_subdiv_level *l, const nl_model *m, int di
  * the condition number is above NL_SUBDIV_COND_MAX): the caller then solves directly (nl_subdiv_solve), which flags and
  * pseudo-inverts.  *nout = 0 when even N = 1 fails.  NL_OK, NL_EINVAL (nmax
  * out of range, R(0) not positive), NL_ENOMEM.  As thread-safe as m. */
-enum { NL_SUBDIV_STOP_NONE, NL_SUBDIV_STOP_IMPROVEMENT, NL_SUBDIV_STOP_VARIANCE };
+enum { NL_SUBDIV_STOP_IMPROVEMENT = 0, NL_SUBDIV_STOP_VARIANCE = 1, NL_SUBDIV_STOP_NONE = 2 };
 int nl_subdiv_levinson(const nl_model *m, double s, int nmax, int rule, double tol, double *a, double *var,
                        int *nout);
 
@@ -238,7 +260,7 @@ typedef struct nl_subdiv_plan nl_subdiv_plan;
 typedef struct {
     int levels;           /* levels of refinement; 0 = the default policy (see nl_subdiv_plan_alloc) */
     int N;                /* neighbourhood half-width (2N points per axis); 0 = auto (see tol) */
-    double tol;           /* auto: grow N until eq. (7) improves by < tol R(0) */
+    double tol;           /* auto: the stopping rule's threshold, relative to R(0) */
     int nmax;             /* auto: largest N; 0 = 16 in 1D, 6 in 2D */
     int nonperiodic;      /* a window of the infinite field (nl_subdiv_plan_execute_window) */
     int allow_not_pd;     /* --clamp: negative variances become 0 instead of NL_ENOTPD (periodic) */
@@ -247,6 +269,8 @@ typedef struct {
     uint64_t random_seed; /* plan seed of the random neighbourhoods */
     int displacements;    /* NL_SUBDIV_DISP_INDEPENDENT (Lewis), _ERROR (correlated) or _NEWNEW */
     int taps;             /* correlated: filter half-width M, 1..NL_SUBDIV_MAX_TAPS; 0 = 4 in 1D, 2 in 2D */
+    int stop;             /* auto: NL_SUBDIV_STOP_IMPROVEMENT (0: eq. (7) improves by < tol R(0)) or
+                             _VARIANCE (the paper's: (7) below tol R(0)); nl_subdiv_coeffs_alloc_rule */
 } nl_subdiv_options;
 
 typedef struct {

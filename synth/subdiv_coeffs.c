@@ -346,26 +346,91 @@ void nl_subdiv_coeffs_free(nl_subdiv_coeffs *c)
     free(c);
 }
 
-int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
-                        nl_subdiv_coeffs **out)
+/* Grows N from n0 (solved here into l) by direct solves of every N until
+ * the rule stops it (nl_subdiv_coeffs_alloc_rule). */
+static int grow_direct(const nl_model *m, int dim, int rule, double tol, double r0, int n0, int nmax, double s,
+                       nl_subdiv_level *l, struct memo *mm)
 {
-    nl_subdiv_coeffs *c;
-    struct memo mm = {0, 0, NULL, NULL, NULL};
-    double zero[2] = {0, 0};
-    int st = NL_OK;
-    *out = NULL;
+    int st = solve_level(m, dim, n0, s, l, mm);
+    for (int n = n0 + 1; !st && n <= nmax; n++) {
+        nl_subdiv_level next;
+        if (rule == NL_SUBDIV_STOP_VARIANCE && l->cls[0].variance < tol * r0)
+            break;
+        next.level = l->level;
+        if ((st = solve_level(m, dim, n, s, &next, mm))) {
+            free_level(&next);
+            break;
+        }
+        if (rule == NL_SUBDIV_STOP_IMPROVEMENT && l->cls[0].variance - next.cls[0].variance < tol * r0) {
+            free_level(&next);
+            break;
+        }
+        free_level(l);
+        *l = next;
+    }
+    return st;
+}
+
+/* 1D auto: Levinson's recursion (synth/subdiv_levinson.c) grows N in O(N)
+ * per step and applies the rule; the chosen N is then solved directly (its
+ * condition number and flags).  Where the recursion broke down before the
+ * rule fired (singular or not positive definite from N + 1 on: var[N] is
+ * still NAN), the direct growth takes over from N, pseudo-inverting. */
+static int auto_1d(const nl_model *m, int rule, double tol, double r0, int nmax, double s, nl_subdiv_level *l,
+                   struct memo *mm)
+{
+    double *a = malloc((size_t)(2 * nmax) * sizeof *a), var[64];
+    int nout = 0, st, done;
+    if (!a)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    for (int i = 0; i < 64; i++)
+        var[i] = NAN;
+    st = nl_subdiv_levinson(m, s, nmax, rule, tol, a, var, &nout);
+    free(a);
+    if (st)
+        return st;
+    if (nout < 1)
+        return grow_direct(m, 1, rule, tol, r0, 1, nmax, s, l, mm);
+    done = nout == nmax || (rule == NL_SUBDIV_STOP_VARIANCE && var[nout - 1] < tol * r0) ||
+           (rule == NL_SUBDIV_STOP_IMPROVEMENT && !isnan(var[nout]));
+    if (done)
+        return solve_level(m, 1, nout, s, l, mm);
+    return grow_direct(m, 1, rule, tol, r0, nout, nmax, s, l, mm);
+}
+
+static int check_args(int dim, int levels, double spacing0, int N, int rule, double tol, int nmax)
+{
+    int wmax = dim == 1 ? 64 : NL_SUBDIV_MAX_N;
     if (dim != 1 && dim != 2)
         return NL_ERROR(NL_EINVAL, "subdivision: expected dimension 1 or 2, got %d", dim);
     if (levels < 1 || levels > 40)
         return NL_ERROR(NL_EINVAL, "levels: expected 1 to 40, got %d", levels);
     if (!(spacing0 > 0) || !isfinite(spacing0))
         return NL_ERROR(NL_EINVAL, "spacing0: expected a positive number, got %g", spacing0);
-    if (N < 0 || N > (dim == 1 ? 64 : NL_SUBDIV_MAX_N) || (N == 0 && (nmax < 1 || nmax > (dim == 1 ? 64 : NL_SUBDIV_MAX_N))))
-        return NL_ERROR(NL_EINVAL, "neighborhood: expected a half-width from 1 to %d, got %d", dim == 1 ? 64 : 8,
-                        N ? N : nmax);
+    if (N < 0 || N > wmax || (N == 0 && (nmax < 1 || nmax > wmax)))
+        return NL_ERROR(NL_EINVAL, "neighborhood: expected a half-width from 1 to %d, got %d", wmax, N ? N : nmax);
     if (N == 0 && !(tol > 0))
         return NL_ERROR(NL_EINVAL, "tol: expected a positive tolerance, got %g", tol);
-    if ((st = nl_model_check_dim(m, dim)))
+    if (rule != NL_SUBDIV_STOP_IMPROVEMENT && rule != NL_SUBDIV_STOP_VARIANCE && rule != NL_SUBDIV_STOP_NONE)
+        return NL_ERROR(NL_EINVAL, "stopping rule: expected improvement, variance or none, got %d", rule);
+    return NL_OK;
+}
+
+int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,
+                        nl_subdiv_coeffs **out)
+{
+    return nl_subdiv_coeffs_alloc_rule(m, dim, levels, spacing0, N, NL_SUBDIV_STOP_IMPROVEMENT, tol, nmax, out);
+}
+
+int nl_subdiv_coeffs_alloc_rule(const nl_model *m, int dim, int levels, double spacing0, int N, int rule, double tol,
+                                int nmax, nl_subdiv_coeffs **out)
+{
+    nl_subdiv_coeffs *c;
+    struct memo mm = {0, 0, NULL, NULL, NULL};
+    double zero[2] = {0, 0};
+    int st;
+    *out = NULL;
+    if ((st = check_args(dim, levels, spacing0, N, rule, tol, nmax)) || (st = nl_model_check_dim(m, dim)))
         return st;
     if (nl_model_get_kind(m) == NL_MODEL_SPECTRUM)
         return NL_ERROR(NL_EINVAL, "%s: subdivision needs R(lag); give the autocorrelation, or a power: model "
@@ -391,26 +456,12 @@ int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacin
         double s = ldexp(spacing0, -k);
         nl_subdiv_level *l = &c->level[k];
         l->level = k;
-        if (N > 0) {
+        if (N > 0)
             st = solve_level(m, dim, N, s, l, &mm);
-        } else {
-            /* grow N until eq. (7) improves by less than tol R(0) */
-            st = solve_level(m, dim, 1, s, l, &mm);
-            for (int n = 2; !st && n <= nmax; n++) {
-                nl_subdiv_level next;
-                next.level = k;
-                if ((st = solve_level(m, dim, n, s, &next, &mm))) {
-                    free_level(&next);
-                    break;
-                }
-                if (l->cls[0].variance - next.cls[0].variance < tol * c->r0) {
-                    free_level(&next);
-                    break;
-                }
-                free_level(l);
-                *l = next;
-            }
-        }
+        else if (dim == 1)
+            st = auto_1d(m, rule, tol, c->r0, nmax, s, l, &mm);
+        else
+            st = grow_direct(m, dim, rule, tol, c->r0, 1, nmax, s, l, &mm);
         for (int j = 0; !st && j < l->nclass; j++)
             c->flags |= l->cls[j].flags;
     }

@@ -108,14 +108,13 @@ int nl_subdiv_levinson(const nl_model *m, double s, int nmax, int rule, double t
         for (int j = 0; j < n; j++)
             v -= x[j] * y[lo + j];
         var[N - 1] = v * r0;
+        /* the improvement rule keeps N - 1 (a holds its coefficients) */
+        if (rule == NL_SUBDIV_STOP_IMPROVEMENT && N > 1 && var[N - 2] - var[N - 1] < tol * r0)
+            break;
         memcpy(a, x, (size_t)n * sizeof *a);
         *nout = N;
         if (rule == NL_SUBDIV_STOP_VARIANCE && var[N - 1] < tol * r0)
             break;
-        if (rule == NL_SUBDIV_STOP_IMPROVEMENT && N > 1 && var[N - 2] - var[N - 1] < tol * r0) {
-            *nout = N - 1;
-            break;
-        }
     }
     free(rho), free(y), free(f), free(g), free(x);
     return NL_OK;

@@ -120,7 +120,8 @@ static nl_subdiv_plan *plan_new(nl_subdiv_coeffs *c, int owns, const nl_model *m
 /* The coefficients for `o`, levels L at s_0 = h 2^L, randomised if asked. */
 static int coeffs_for(const nl_model *m, int dim, int L, double h, const nl_subdiv_options *o, nl_subdiv_coeffs **c)
 {
-    int st = nl_subdiv_coeffs_alloc(m, dim, L, ldexp(h, L), o->N, o->tol, o->nmax ? o->nmax : dim == 1 ? 16 : 6, c);
+    int st = nl_subdiv_coeffs_alloc_rule(m, dim, L, ldexp(h, L), o->N, o->stop, o->tol,
+                                         o->nmax ? o->nmax : dim == 1 ? 16 : 6, c);
     if (st)
         return st;
     if (o->random_nb) {
