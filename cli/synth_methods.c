@@ -10,11 +10,13 @@
 #include "../synth/faulting.h"
 #include "../synth/fft.h"
 #include "../synth/lattice.h"
+#include "../synth/midpoint.h"
 #include "../synth/sparse.h"
 #include "../synth/subdiv.h"
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
@@ -153,6 +155,18 @@ void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_res
         cli_die(2, "synth midpoint: expected a 1D or 2D --size, got %dD", job->dim);
     if (isnan(H) && (st = nl_subdiv_midpoint_hurst(job->m, job->dim, &H)))
         cli_die_status(st);
+    if (job->interpolant && strcmp(job->interpolant, "fournier")) {
+        if (strcmp(job->interpolant, "miller"))
+            cli_die(2, "--interpolant: expected fournier or miller for midpoint, got \"%s\"", job->interpolant);
+        int L = job->levels ? job->levels : nl_midpoint_miller_default_levels(job->dim, job->n);
+        cli_check(nl_midpoint_miller(L, H, 1.0, job->vscale, job->seed, f));
+        snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g,interpolant=miller",
+                 H, L, job->vscale);
+        r->sd = nl_field_rms(f) > 0 ? nl_field_rms(f) : 1;
+        r->report = json_pack("{s:f,s:i,s:f,s:s}", "H", H, "levels", L, "variance_scale", job->vscale,
+                              "interpolant", "miller");
+        return;
+    }
     cli_check(nl_subdiv_plan_alloc_midpoint(job->dim, job->n, job->h[0], job->levels, H, 1.0, job->vscale, &p));
     cli_check(nl_subdiv_plan_execute(p, job->seed, f));
     nl_subdiv_plan_info(p, &info);
