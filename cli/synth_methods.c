@@ -319,8 +319,38 @@ static void lattice_check_pd(const cli_synth_job *job, cli_synth_result *r)
         snprintf(r->flags, sizeof r->flags, "clamped");
 }
 
+/* --interpolant wiener: one lattice of the target's covariance, kriged. */
+static void lattice_wiener_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
+{
+    nl_synth_lattice_wiener_plan *p;
+    nl_synth_lattice_wiener_info info;
+    int cell = job->cell ? job->cell : 4;
+    if (job->octaves)
+        cli_die(2, "--octaves: the Wiener lattice has one lattice (no octaves), got --octaves %d", job->octaves);
+    cli_check(nl_synth_lattice_wiener_plan_alloc(job->m, job->dim, job->n, cell,
+                                                 job->clamp ? NL_SYNTH_LATTICE_CLAMP : 0, &p));
+    nl_synth_lattice_wiener_plan_info(p, &info);
+    cli_check(nl_synth_lattice_wiener_execute(p, job->seed, f, NULL));
+    nl_synth_lattice_wiener_plan_free(p);
+    snprintf(r->method, sizeof r->method, "lattice:cell=%d,interpolant=wiener", cell);
+    if (info.negatives)
+        snprintf(r->flags, sizeof r->flags, "clamped");
+    r->sd = sqrt(info.variance);
+    r->report = json_pack("{s:i,s:[I,I],s:f,s:f,s:f,s:i}", "cell", cell, "nodes", (json_int_t)info.nodes[0],
+                          (json_int_t)info.nodes[1], "variance", info.variance, "mean_error_variance",
+                          info.mean_error, "max_error_variance", info.max_error, "rank", info.rank);
+}
+
 void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
+    if (job->interpolant && strcmp(job->interpolant, "perlin")) {
+        if (strcmp(job->interpolant, "wiener"))
+            cli_die(2, "--interpolant: expected perlin or wiener for lattice, got \"%s\"", job->interpolant);
+        if (job->dim > 2)
+            cli_die(2, "synth lattice: expected a 1D or 2D --size, got %dD", job->dim);
+        lattice_wiener_run(job, f, r);
+        return;
+    }
     nl_synth_lattice_plan p;
     double c0 = job->cell ? job->cell : nl_synth_lattice_default_cell(f->n);
     int O = job->octaves, st;
