@@ -29,7 +29,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-enum { NS = 4096, M = 16, NL = 25 };
+enum { NS = 4096, M = 64, NL = 25 };
 
 Test(lattice_wiener, interpolates_the_lattice)
 {
