@@ -55,9 +55,12 @@ typedef struct {
 /* Plan the octaves for model m on a dim-D grid (spacing 1 sample; the
  * model's lags in samples): c_0 = cell0, `octaves` octaves (cell >= 2).
  * Errors: NL_EINVAL for dim not 1 or 2, octaves outside
- * 1..NL_LATTICE_MAX_OCTAVES, cells below 2 samples, or a model without a
+ * 1..NL_LATTICE_MAX_OCTAVES, cells below 2 samples, a model without a
  * closed-form spectrum in dim dimensions or with a nugget (lattice noise is
- * smooth between nodes: white noise has no closed form there); NL_ENOMEM.  (GSL's weighted
+ * smooth between nodes: white noise has no closed form there), or a fit
+ * whose octave sum carries less than 1e-3 of the target's power over the
+ * fit band (every weight 0: a spectrum falling faster than the basis, such
+ * as a Gaussian one); NL_ENOMEM.  (GSL's weighted
  * least squares, an SVD of finite values, does not fail; it would give
  * NL_EFAIL.) */
 int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);

@@ -153,5 +153,11 @@ Test(lattice_wiener, refusals)
     cr_expect_eq(nl_synth_lattice_wiener_plan_alloc(m, 3, n, 4, 0, &p), NL_EINVAL);
     cr_expect_eq(nl_synth_lattice_wiener_plan_alloc(s, 2, n, 4, 0, &p), NL_EINVAL);
     cr_expect_null(p);
+    /* the Perlin octave sum of a Gaussian spectrum: every weight 0, refused rather than a field of zeros */
+    nl_model *g;
+    nl_synth_lattice_plan pp;
+    cr_assert_eq(nl_model_parse("spectrum:pi*36*exp(-(6*pi*k)^2)", &g), 0);
+    cr_expect_eq(nl_synth_lattice_plan_init(g, 2, 16, 4, &pp), NL_EINVAL);
+    nl_model_free(g);
     nl_model_free(m), nl_model_free(s);
 }
