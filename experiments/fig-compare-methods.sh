@@ -83,12 +83,13 @@ EOF
 What the paper says beside what we measured:
 
 - *FFT: "global", "exact spectral control".* Its ensembles meet R on every target within
-  sampling error, and it is the cheapest method at 1024². (For the ring, R sampled on the 64-periodic
+  sampling error, and it is the cheapest of the methods that reach every target. (For the ring, R sampled on the 64-periodic
   grid is not positive definite, so it synthesises from the sampled spectrum, as Lewis's FFT method does.)
 - *Fellous et al.'s Cholesky method: "global and less efficient than FFT synthesis", with "an
   incremental refinement method that is local in a limited-precision implementation".* Our Cholesky
-  row is the global method: exact where it runs, its plan growing as N³ (the paper writes O(N²):
-  the cost of one realization once the factor exists), and refused for gauss and the ring, whose
+  row is the global method: exact where it runs, its plan O(N³) (here, at 256 to 1024 samples,
+  evaluating R at every pair still weighs: exponent 2.5 to 3.9 in our runs; the paper's O(N²)
+  is the cost of one realization once the factor exists), and refused for gauss and the ring, whose
   covariance matrices are numerically singular (the singular-process section). The local
   refinement is **not built**: the seeds hold neither Fellous et al.'s text nor its equations, and
   its limited-precision locality cannot be reproduced faithfully from one sentence. Exact
@@ -97,13 +98,15 @@ What the paper says beside what we measured:
 - *Stochastic subdivision: "local", "approximate f^-d", "creases"; Haruyama-Barsky variances
   widen the spectra, "oscillatory noises are not possible"; Miller "uses a higher quality
   interpolant ... alleviating the problem with creases".* Midpoint displacement and Miller's
-  square-square subdivision make only fBm (refused elsewhere); both miss the -3 slope (table), Miller's
-  B-spline averaging steepening it less than a point would suggest: the displacement variances are the
-  interpolant's error variances for fBm, Miller's mask averages the coarse detail away faster than
-  they put it back. Miller's field has no grid-aligned slope breaks (its noise-free limit is a C1
-  biquadratic spline); the crease index of analysis/creases.h does not apply to it, because its
-  grid moves by a quarter cell per level. `--variance-scale` is the Haruyama-Barsky-style knob,
-  geometric per level: it changes the slope, it cannot make the ring.
+  square-square subdivision (`synth midpoint --interpolant miller`) make only fBm and are refused
+  for the other targets. Both come out shallower than -3 (table): the coarse levels carry too little
+  power against the fine ones; Miller's more so, because every later level's B-spline averaging
+  smooths the detail of the earlier ones again, and the displacement variances (the interpolant's
+  error variances for fBm, as for midpoint displacement) do not make up for it. What Miller gains
+  is the absence of grid-aligned slope breaks (the noise-free limit is a C1 biquadratic spline,
+  not a bilinear surface); the crease index of analysis/creases.h does not apply to his scheme,
+  whose grid moves by a quarter cell per level. `--variance-scale` is the Haruyama-Barsky-style
+  knob, geometric per level: it changes the slope, it cannot make the ring.
 - *Poisson faulting: "Brownian noise" only.* Slope -3 within its interval, refused for the rest.
 - *Sparse convolution: "equivalent in efficiency to convolution", any spectrum that is the
   transform of the kernel's autocorrelation.* Right on average on every target; its intervals are
@@ -136,8 +139,13 @@ separates linear and n log n methods (exponent below 1.8) from quadratic ones an
 
 Verdicts (above): the methods that claim exactness (fft, circulant, Cholesky) show no ACF error
 on any target they run; every method that claims O(n) or O(n log n) grows below samples^1.8;
-Cholesky's plan grows at least as samples^2.5; the Wiener lattice reproduces gauss and the ring
-within 0.25 of R(0).
+Cholesky's plan grows at least as samples² (R at every pair of samples, then the O(N³)
+factorisation, which dominates only beyond these sizes); the Wiener lattice reproduces gauss and
+the ring within 0.25 of R(0). Broken on purpose: FFT amplitudes 10% high turn fft, circulant
+(whose embedding is synthesised by FFT) and the Wiener lattice red; the Wiener weights of the
+wrong offset turn its two verdicts red (0.27 and 0.39); an O(n²) term in Miller's refinement
+turns its cost verdict red once it dominates at 512² (exponent 2.10; a term 8 times smaller
+gave 1.72, not caught: the verdict tells linear from quadratic, not a small quadratic part).
 EOF
 } > "$md"
 echo "compare-methods: $(grep -c '^- PASS' "$d/compare-tables.frag") passed, $(grep -c '^- FAIL' "$d/compare-tables.frag") failed" >&2
