@@ -357,8 +357,9 @@ static void write_cost(FILE *o)
             fprintf(o, " %s | - | - | - |", c->why);
         else {
             double t = at1024(c, &meas);
-            fprintf(o, " %s%.3g | %.2f (%zu^2..%zu^2) | %.3g | %.1f |", meas ? "" : "≈ ", t, exponent(c), c->size[0],
-                    c->size[2], c->plan[2], c->rss_mb);
+            fprintf(o, " %s%.3g%s | %.2f (%zu^2..%zu^2) | %.3g | %.1f |", meas ? "" : "≈ ", t,
+                    methods[i].plan == p_chol ? " (refused: above 8192 samples; extrapolated)" : "", exponent(c),
+                    c->size[0], c->size[2], c->plan[2], c->rss_mb);
         }
         fprintf(o, " %s | %s | %s | %s, %s | %s | %s |\n", facts[i].local, facts[i].refine, capability(&acc[i][2]),
                 capability(&acc[i][0]), capability(&acc[i][1]), facts[i].exact, facts[i].paper);
