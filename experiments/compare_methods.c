@@ -15,9 +15,9 @@
  * along x, y and the diagonal, lags 0..16 (cholesky 0..8); the largest
  * |mean - R| / R(0) with its simultaneous 95% interval, and max |z|
  * against the Bonferroni threshold of t(M - 1) at 1e-3
- * (analysis/validate.h); the ensemble-mean periodogram over three octave
- * bands, |f| in (1/64, 1/32] (low), (1/16, 1/8] (mid), (1/4, 1/2] (high),
- * over its expectation (sampled spectrum for periodic methods, Fejer for
+ * (analysis/validate.h); the ensemble-mean periodogram over three of
+ * validate's bands, |f| in (0, 1/32] (low; (0, 1/16] on 32^2), (1/16, 1/8]
+ * (mid), (1/4, 1/2] and the corners (high), over its expectation (sampled spectrum for periodic methods, Fejer for
  * the others); for the fractal target the log-periodogram slope over
  * 1/32 <= |f| <= 1/4 against -3.
  * Cost: wall time of plan + one realization of markov (fractal methods:
@@ -79,26 +79,29 @@ static double lag_of(const nl_field *full, int d, long l)
     return full->data[(size_t)((ly + (long)ny) % (long)ny) * nx + (size_t)((lx + (long)nx) % (long)nx)];
 }
 
-/* Band b (octave, validate's numbering) mean of periodogram P. */
-static double band_mean(const nl_field *P, int b)
+/* Band b of v (analysis/validate.h: b = 0 is (1/4, 1/2] and the corners,
+ * the last one reaches down to 0, DC excluded) mean of periodogram P. */
+static double band_mean(const nl_field *P, const nl_validate_result *v, size_t b)
 {
     size_t n = P->n[0], cnt = 0;
-    double lo = 0.5 * ldexp(1, -(b + 1)), hi = 0.5 * ldexp(1, -b), s = 0;
+    double s = 0;
     for (size_t j = 0; j < n; j++)
         for (size_t i = 0; i < n; i++) {
             double fx = (double)(i <= n / 2 ? (long)i : (long)i - (long)n) / (double)n;
             double fy = (double)(j <= n / 2 ? (long)j : (long)j - (long)n) / (double)n, r = hypot(fx, fy);
-            if (r > lo && (r <= hi || b == 0))
+            if (r > v->band_lo[b] && (r <= v->band_hi[b] || b == 0))
                 s += P->data[j * n + i], cnt++;
         }
     return cnt ? s / (double)cnt : NAN;
 }
 
-static const int bands[3] = {4, 2, 0}; /* low (1/64, 1/32], mid (1/16, 1/8], high (1/4, 1/2] */
+/* low (the last band: (0, 1/32] on 64^2, (0, 1/16] on 32^2), mid (1/16, 1/8], high (1/4, 1/2] */
+static size_t band_index(const nl_validate_result *v, int k) { return k == 0 ? v->nbands - 1 : k == 1 ? 2 : 0; }
+
 
 /* Accumulate one realization's ACF and band means; fractal: its periodogram too. */
-static int measure_one(const nl_field *f, int L, double (*s1)[MAXL + 1], double (*s2)[MAXL + 1], double *b1,
-                       double *b2, nl_field *Pacc)
+static int measure_one(const nl_field *f, const nl_validate_result *vr, int L, double (*s1)[MAXL + 1],
+                       double (*s2)[MAXL + 1], double *b1, double *b2, nl_field *Pacc)
 {
     nl_field *full, *P;
     int e;
@@ -113,7 +116,7 @@ static int measure_one(const nl_field *f, int L, double (*s1)[MAXL + 1], double 
     if ((e = nl_psd_periodogram(f, 0, &P)))
         return e;
     for (int k = 0; k < 3; k++) {
-        double v = band_mean(P, bands[k]);
+        double v = band_mean(P, vr, band_index(vr, k));
         b1[k] += v, b2[k] += v * v;
     }
     for (size_t i = 0; i < P->count; i++)
@@ -145,8 +148,10 @@ static void summarise(const method *me, const target *t, const nl_validate_resul
     a->zmax = nl_verdict_zmax(T, mean, se, R, &worst);
     a->thr = nl_verdict_threshold(1e-3, T, M - 1);
     for (int k = 0; k < 3; k++) {
-        double ex = me->periodic ? v->band_periodic[bands[k]] : v->band_fejer[bands[k]], m = b1[k] / M;
-        double big = fmax(v->band_periodic[0], fmax(v->band_periodic[2], v->band_periodic[4]));
+        size_t b = band_index(v, k);
+        double ex = me->periodic ? v->band_periodic[b] : v->band_fejer[b], m = b1[k] / M, big = 0;
+        for (size_t q = 0; q < v->nbands; q++)
+            big = fmax(big, v->band_periodic[q]);
         int ok = ex > 1e-6 * big;
         a->band[k] = ok ? m / ex : NAN;
         a->band_se[k] = ok ? sqrt(fmax(b2[k] / M - m * m, 0) / (M - 1)) / ex : NAN;
@@ -172,7 +177,7 @@ static void run_accuracy(const method *me, const target *t, acc_t *a)
         goto done;
     }
     for (uint64_t s = 1; s <= M; s++)
-        if ((e = me->run(st, s, f)) || (e = measure_one(f, L, s1, s2, b1, b2, Pacc))) {
+        if ((e = me->run(st, s, f)) || (e = measure_one(f, &vres[chol], L, s1, s2, b1, b2, Pacc))) {
             snprintf(a->why, sizeof a->why, "%s", nl_errmsg());
             goto done;
         }

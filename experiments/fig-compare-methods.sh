@@ -65,8 +65,9 @@ lags 0..16 (Cholesky 0..8); **ACF error** = the largest |ensemble mean - R| / R(
 with its simultaneous 95% interval, "(z)" when the z test finds an error (Bonferroni threshold of
 t(31) at 1e-3; analysis/validate.h); **spectrum ratio** = ensemble-mean periodogram over its
 expectation (the sampled spectrum for periodic methods, Fejér-smoothed for circulant, Cholesky and
-faulting) in the octave bands (1/64, 1/32] (low), (1/16, 1/8] (mid), (1/4, 1/2] (high), ± 2
-standard errors, "-" where the target has no power. **Cost**: wall time of one realization (best of
+faulting) in the bands (0, 1/32] (low; Cholesky's 32x32: (0, 1/16]; DC excluded), (1/16, 1/8]
+(mid) and (1/4, 1/2] with the corners (high), as analysis/validate.h bins them, ± 2 standard
+errors, "-" where the target has no power. **Cost**: wall time of one realization (best of
 3, one thread, FFTW_ESTIMATE) after the plan, at 128², 256², 512² (`COMPARE_FULL=1`: 256² to
 1024²); the exponent is the least-squares slope of log time on log samples, the 1024² figure
 extrapolated with it (≈); the plan's time and the peak resident memory of the child process that
@@ -114,8 +115,8 @@ What the paper says beside what we measured:
   ACF estimate grows with the kurtosis). For markov the kernel was cut at the 64-sample tile
   (flagged truncated by the method).
 - *Interpolated noise lattice: "the low frequency power in the noise lattice is not removed and
-  cannot be removed in summation".* Measured: on markov the octave sum's spectrum is half the
-  target at low and high frequencies and its ACF error is detected; on gauss and the ring the octave
+  cannot be removed in summation".* Measured: on markov the octave sum's spectrum is 0.4 of the
+  target at low frequencies and 0.54 at high ones, and its ACF error is detected; on gauss and the ring the octave
   fit finds no positive weight at all (a spectrum falling faster than the basis), which before this
   comparison gave a field of zeros and is now refused.
 - *Wiener interpolation: "greater spectral control (with some restrictions) and eliminates the
