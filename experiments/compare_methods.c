@@ -322,11 +322,17 @@ static void band_cell(const acc_t *a, FILE *o)
     fprintf(o, " |");
 }
 
-static const char *capability(const acc_t *a)
+/* What a run says a method can do: refused, yes (no error detected; the
+ * interval's upper end), or approx. (an error detected; its estimate). */
+static const char *capability(const acc_t *a, char *buf, size_t len)
 {
     if (!a->ran)
-        return "refused";
-    return a->eff.effect.hi <= 0.1 ? "yes" : a->eff.effect.lo > 0.1 ? "approx. (error > 0.1)" : "approx.";
+        snprintf(buf, len, "refused");
+    else if (a->zmax <= a->thr)
+        snprintf(buf, len, "yes (error <= %.2f)", a->eff.effect.hi);
+    else
+        snprintf(buf, len, "approx. (error %.2f)", a->eff.effect.est);
+    return buf;
 }
 
 static void write_accuracy(FILE *o)
@@ -366,8 +372,10 @@ static void write_cost(FILE *o)
                     methods[i].plan == p_chol ? " (refused: above 8192 samples; extrapolated)" : "", exponent(c),
                     c->size[0], c->size[2], c->plan[2], c->rss_mb);
         }
-        fprintf(o, " %s | %s | %s | %s, %s | %s | %s |\n", facts[i].local, facts[i].refine, capability(&acc[i][2]),
-                capability(&acc[i][0]), capability(&acc[i][1]), facts[i].exact, facts[i].paper);
+        char c0[64], c1[64], c2[64];
+        fprintf(o, " %s | %s | %s | %s, %s | %s | %s |\n", facts[i].local, facts[i].refine,
+                capability(&acc[i][2], c2, sizeof c2), capability(&acc[i][0], c0, sizeof c0),
+                capability(&acc[i][1], c1, sizeof c1), facts[i].exact, facts[i].paper);
     }
 }
 
@@ -508,7 +516,7 @@ int main(int argc, char **argv)
     fprintf(o, "#### Accuracy (M = %d realizations, 64x64; cholesky 32x32)\n\n", M);
     write_accuracy(o);
     fprintf(o, "\n#### Cost and properties (%s)\n\n", full ? "measured at 256^2, 512^2, 1024^2" :
-            "measured at 128^2, 256^2, 512^2, 1024^2 extrapolated; `full` measures 1024^2");
+            "measured at 128^2, 256^2, 512^2, 1024^2 extrapolated; COMPARE_FULL=1 measures it");
     write_cost(o);
     fprintf(o, "\n#### Verdicts\n\n");
     fail = verdicts(o);

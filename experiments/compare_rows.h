@@ -280,7 +280,7 @@ static const struct {
     {"global", "no", "exact (periodic R)", "FFT: global; simple, efficient for a global method; exact spectral control"},
     {"global", "no", "exact (R on the grid)", "beyond the paper (Dietrich-Newsam, Wood-Chan)"},
     {"global", "no (an exact refinement is conditional simulation)", "exact",
-     "Fellous et al.: Cholesky factor of the correlation matrix; global, O(N^2) (sic); incremental local "
+     "Fellous et al.: Cholesky factor of the correlation matrix; global, \"O(N^2)\"; incremental local "
      "refinement in limited precision (not built: see notes)"},
     {"semi-local (N = 2: 4x4)", "yes, any level", "approximate (exact 1D Markov)",
      "generalized subdivision: semi-local; arbitrary spectrum to a chosen accuracy; refines an existing database"},
@@ -294,7 +294,8 @@ static const struct {
     {"global (each fault crosses the grid)", "no", "Brownian only (k^-3)",
      "Poisson faulting: random steps; Brownian (f^-2) only"},
     {"local (cells)", "no", "exact in expectation (kernel truncated)",
-     "sparse convolution: local, as efficient as convolution; any |H|^2 spectrum; superposition visible when sparse"},
+     "sparse convolution: local, as efficient as convolution; any spectrum that is a kernel's power spectrum; "
+     "superposition visible when sparse"},
     {"local", "no", "approximate (octave basis)",
      "interpolated noise lattice: local; low-frequency leakage cannot be removed in summation; axis bias"},
     {"local interpolation, lattice by FFT", "no", "exact at node lags only",

@@ -73,7 +73,8 @@ errors, "-" where the target has no power. **Cost**: wall time of one realizatio
 extrapolated with it (≈); the plan's time and the peak resident memory of the child process that
 ran the largest size are beside it. Descriptive columns (local, refinable, exact) state what each
 implementation is; "oscillatory" and "non-fractal" are what the ring, markov and gauss runs gave:
-yes (interval within 0.1 of R(0)), approx., or refused.
+yes (no error detected by the z test; the upper end of the error's interval beside it), approx.
+(an error detected; its estimate), or refused.
 
 EOF
     cat "$d/compare-tables.frag"
