@@ -61,11 +61,17 @@ static const char help[] =
     "  lattice   interpolated noise lattice (Perlin gradient noise) summed over octaves,\n"
     "            weighted to the target spectrum's power in each octave's band; --cell C\n"
     "            largest lattice cell (default size/4), --octaves O (default: down to cell\n"
-    "            2); the report gives each octave's weight and its low-frequency leakage\n"
+    "            2); the report gives each octave's weight and its low-frequency leakage;\n"
+    "            --interpolant wiener: one lattice of the target's own covariance (FFT on\n"
+    "            the lattice), every sample its simple-kriging (Wiener) estimate from the\n"
+    "            4 (1D) or 4x4 nearest nodes; --cell C the node spacing (default 4)\n"
     "  midpoint  midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
     "            only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
     "            (1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
-    "            by an extra Q (Haruyama-Barsky-style altered variances)\n\n"
+    "            by an extra Q (Haruyama-Barsky-style altered variances); --interpolant\n"
+    "            miller: Miller's square-square subdivision (each level a new grid of\n"
+    "            half the spacing, weights 9/16 3/16 3/16 1/16 of the parent square;\n"
+    "            1D 3/4 1/4) instead of the nearest-neighbour midpoint (fournier)\n\n"
     "  --acf SPEC       autocorrelation model (see noiselab models)\n"
     "  --spectrum SPEC  spectrum model: power:d=..., spectrum:EXPR, or a bare EXPR in f/fx/fy/k\n"
     "  --size           samples per axis, each >= 2 (fft: 1D, 2D or 3D; subdiv: 1D or 2D)\n"
@@ -197,6 +203,7 @@ static void apply_keys(char *rest, cli_synth_job *job)
             }
             else if (!strcmp(kv, "wrap")) job->wrap = 1;
             else if (!strcmp(kv, "octaves")) job->octaves = parse_int("--from: octaves", v, 1, 16);
+            else if (!strcmp(kv, "interpolant")) job->interpolant = v;
         }
     }
 }
@@ -321,7 +328,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         {"angle", required_argument, 0, 'A'},      {"radius", required_argument, 0, 'r'},
         {"cell", required_argument, 0, 'C'},       {"wrap", no_argument, 0, 'W'},
         {"from", required_argument, 0, 'F'},
-        {"octaves", required_argument, 0, 'V'},
+        {"octaves", required_argument, 0, 'V'},    {"interpolant", required_argument, 0, 'i'},
         {"displacements", required_argument, 0, 'X'}, {"taps", required_argument, 0, 'T'},
         {"condition", required_argument, 0, 'Y'}, {"extent", required_argument, 0, 'Z'},
         {"realizations", required_argument, 0, 'k'}, {"mean", required_argument, 0, 'M'},
@@ -352,6 +359,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'r': job->radius = parse_int("--radius", optarg, 1, 4096); break;
         case 'C': job->cell = parse_int("--cell", optarg, 1, INT_MAX); break;
         case 'W': job->wrap = 1; break;
+        case 'i': job->interpolant = optarg; break;
         case 'F': g->from = optarg; break;
         case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q':
             cli_synth_cond_option(&g->cond, c, optarg); break;
@@ -368,7 +376,7 @@ static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_a
         if (optind < argc || g->acf || g->spec || g->size || g->spacing || g->given_L || g->given_N ||
             g->given_tol || g->given_vs || g->given_density || g->origin || job->nonperiodic || job->kernel ||
             job->exemplar || job->angle || job->radius || job->cell || job->wrap || job->octaves ||
-            job->seed_image || job->random_nb || !isnan(job->H) || g->given_disp || job->taps)
+            job->seed_image || job->random_nb || !isnan(job->H) || g->given_disp || job->taps || job->interpolant)
             cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
                     "and --json");
         apply_from(g->from, job, g);
@@ -429,6 +437,7 @@ static void check_method_options(const cli_synth_job *job, const cli_synth_args 
     only_for("--radius", job->radius != 0, job->method, "sparse");
     only_for("--cell", job->cell != 0, job->method, "sparse lattice");
     only_for("--octaves", job->octaves != 0, job->method, "lattice");
+    only_for("--interpolant", job->interpolant != NULL, job->method, "midpoint lattice");
     only_for("--wrap", job->wrap, job->method, "sparse");
     only_for("--seed-image", job->seed_image != NULL, job->method, "subdiv");
     only_for("--random-neighborhoods", job->random_nb != 0, job->method, "subdiv");

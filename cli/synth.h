@@ -36,6 +36,7 @@ typedef struct {
     int wrap;              /* sparse: --wrap */
     int octaves;           /* lattice: --octaves, 0 = down to cell 2 */
     double cell0;          /* lattice: --cell (largest cell), 0 = size / 4 */
+    const char *interpolant; /* midpoint: fournier|miller; lattice: perlin|wiener; NULL = the first */
     int from;              /* the options come from a field's provenance (--from) */
 } cli_synth_job;
 

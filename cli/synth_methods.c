@@ -10,11 +10,13 @@
 #include "../synth/faulting.h"
 #include "../synth/fft.h"
 #include "../synth/lattice.h"
+#include "../synth/midpoint.h"
 #include "../synth/sparse.h"
 #include "../synth/subdiv.h"
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
@@ -154,6 +156,18 @@ void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_res
         cli_die(2, "synth midpoint: expected a 1D or 2D --size, got %dD", job->dim);
     if (isnan(H) && (st = nl_subdiv_midpoint_hurst(job->m, job->dim, &H)))
         cli_die_status(st);
+    if (job->interpolant && strcmp(job->interpolant, "fournier")) {
+        if (strcmp(job->interpolant, "miller"))
+            cli_die(2, "--interpolant: expected fournier or miller for midpoint, got \"%s\"", job->interpolant);
+        int L = job->levels ? job->levels : nl_midpoint_miller_default_levels(job->dim, job->n);
+        cli_check(nl_midpoint_miller(L, H, 1.0, job->vscale, job->seed, f));
+        snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g,interpolant=miller",
+                 H, L, job->vscale);
+        r->sd = nl_field_rms(f) > 0 ? nl_field_rms(f) : 1;
+        r->report = json_pack("{s:f,s:i,s:f,s:s}", "H", H, "levels", L, "variance_scale", job->vscale,
+                              "interpolant", "miller");
+        return;
+    }
     cli_check(nl_subdiv_plan_alloc_midpoint(job->dim, job->n, job->h[0], job->levels, H, 1.0, job->vscale, &p));
     cli_check(nl_subdiv_plan_execute(p, job->seed, f));
     nl_subdiv_plan_info(p, &info);
@@ -306,8 +320,38 @@ static void lattice_check_pd(const cli_synth_job *job, cli_synth_result *r)
         snprintf(r->flags, sizeof r->flags, "clamped");
 }
 
+/* --interpolant wiener: one lattice of the target's covariance, kriged. */
+static void lattice_wiener_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
+{
+    nl_synth_lattice_wiener_plan *p;
+    nl_synth_lattice_wiener_info info;
+    int cell = job->cell ? job->cell : 4;
+    if (job->octaves)
+        cli_die(2, "--octaves: the Wiener lattice has one lattice (no octaves), got --octaves %d", job->octaves);
+    cli_check(nl_synth_lattice_wiener_plan_alloc(job->m, job->dim, job->n, cell,
+                                                 job->clamp ? NL_SYNTH_LATTICE_CLAMP : 0, &p));
+    nl_synth_lattice_wiener_plan_info(p, &info);
+    cli_check(nl_synth_lattice_wiener_execute(p, job->seed, f, NULL));
+    nl_synth_lattice_wiener_plan_free(p);
+    snprintf(r->method, sizeof r->method, "lattice:cell=%d,interpolant=wiener", cell);
+    if (info.negatives)
+        snprintf(r->flags, sizeof r->flags, "clamped");
+    r->sd = sqrt(info.variance);
+    r->report = json_pack("{s:i,s:[I,I],s:f,s:f,s:f,s:i}", "cell", cell, "nodes", (json_int_t)info.nodes[0],
+                          (json_int_t)info.nodes[1], "variance", info.variance, "mean_error_variance",
+                          info.mean_error, "max_error_variance", info.max_error, "rank", info.rank);
+}
+
 void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
+    if (job->interpolant && strcmp(job->interpolant, "perlin")) {
+        if (strcmp(job->interpolant, "wiener"))
+            cli_die(2, "--interpolant: expected perlin or wiener for lattice, got \"%s\"", job->interpolant);
+        if (job->dim > 2)
+            cli_die(2, "synth lattice: expected a 1D or 2D --size, got %dD", job->dim);
+        lattice_wiener_run(job, f, r);
+        return;
+    }
     nl_synth_lattice_plan p;
     double c0 = job->cell ? job->cell : nl_synth_lattice_default_cell(f->n);
     int O = job->octaves, st;

@@ -51,6 +51,7 @@ extern "C" {
 #include "noiselab/synth/circulant.h"
 #include "noiselab/synth/cholesky.h"
 #include "noiselab/synth/subdiv.h"
+#include "noiselab/synth/midpoint.h"
 #include "noiselab/synth/sparse.h"
 #include "noiselab/synth/faulting.h"
 #include "noiselab/synth/lattice.h"

@@ -248,6 +248,33 @@ static int target_sign(int dim, const nl_model *m, double flo, unsigned flags, n
     return NL_OK;
 }
 
+static double s_target(const void *ctx, double f)
+{
+    const sctx *x = ctx;
+    double fv[2] = {f, 0}, t = nl_model_spectrum(x->m, x->dim, fv);
+    return t > 0 ? t : 0;
+}
+
+/* The relative-error fit can leave every weight at 0 (a target falling
+ * faster than any octave's basis, e.g. a Gaussian spectrum, whose relative
+ * error is dominated by frequencies where it is almost 0): a field of
+ * zeros.  Refused when the fitted sum carries less than 1e-3 of the
+ * target's power over the fit band. */
+static int check_power(int dim, const nl_model *m, const nl_synth_lattice_plan *p)
+{
+    sctx t = {dim, 0, m};
+    double want = band_power(dim, s_target, &t, p->peak[0] / 2, 0.5), got = 0;
+    for (int o = 0; o < p->octaves; o++) {
+        sctx b = {dim, p->cell[o], m};
+        got += p->weight[o] * p->weight[o] * band_power(dim, s_basis, &b, 1e-9, 0.5);
+    }
+    if (!(got >= 1e-3 * want))
+        return NL_ERROR(NL_EINVAL, "lattice: %s: the octave fit leaves %.2g of the target's power (every octave "
+                        "weight is 0 or nearly so: the spectrum falls faster than the lattice basis); use "
+                        "--interpolant wiener, fft or subdiv", nl_model_spec(m), want > 0 ? got / want : 0);
+    return NL_OK;
+}
+
 int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p)
 {
     return nl_synth_lattice_plan_init_flags(m, dim, cell0, octaves, 0, p);
@@ -289,9 +316,9 @@ int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, i
         p->peak[o] = fpk;
         p->leakage[o] = all > 0 ? below / all : 0;
     }
-    if ((st = target_sign(dim, m, p->peak[0] / 2, flags, p)))
+    if ((st = target_sign(dim, m, p->peak[0] / 2, flags, p)) || (st = fit_weights(dim, m, p, p->peak[0] / 2)))
         return st;
-    return fit_weights(dim, m, p, p->peak[0] / 2);
+    return check_power(dim, m, p);
 }
 
 int nl_synth_lattice_execute(const nl_synth_lattice_plan *p, uint64_t seed, nl_field *out)

@@ -55,9 +55,12 @@ typedef struct {
 /* Plan the octaves for model m on a dim-D grid (spacing 1 sample; the
  * model's lags in samples): c_0 = cell0, `octaves` octaves (cell >= 2).
  * Errors: NL_EINVAL for dim not 1 or 2, octaves outside
- * 1..NL_LATTICE_MAX_OCTAVES, cells below 2 samples, or a model without a
+ * 1..NL_LATTICE_MAX_OCTAVES, cells below 2 samples, a model without a
  * closed-form spectrum in dim dimensions or with a nugget (lattice noise is
- * smooth between nodes: white noise has no closed form there); NL_ENOMEM.  (GSL's weighted
+ * smooth between nodes: white noise has no closed form there), or a fit
+ * whose octave sum carries less than 1e-3 of the target's power over the
+ * fit band (every weight 0: a spectrum falling faster than the basis, such
+ * as a Gaussian one); NL_ENOMEM.  (GSL's weighted
  * least squares, an SVD of finite values, does not fail; it would give
  * NL_EFAIL.) */
 int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);
@@ -100,5 +103,67 @@ int nl_synth_lattice_default_octaves(double cell0);
  * finite or not even; NL_ETOOBIG, NL_ENOMEM).  Not thread-safe (it may plan
  * FFTW). */
 int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, int clamp, double *clamp_error);
+
+/* The Wiener-interpolated noise lattice (Lewis 1987, "Comparison of
+ * Stochastic Synthesis Methods": "a variation of the interpolated noise
+ * lattice method [17] substitutes Wiener interpolation, which provides
+ * greater spectral control (with some restrictions) and eliminates the
+ * spectral summation"; [17] is unpublished, so the construction is our
+ * reading).  One lattice of nodes every `cell` samples carries values with
+ * the target's own covariance R at the node lags (periodic FFT synthesis
+ * on the lattice, synth/fft.h, seed as given: exact there), and every
+ * sample is the simple-kriging (Wiener) estimate from the
+ * NL_LATTICE_WIENER_K nodes on each side (2K in 1D, (2K)^2 in 2D) of its
+ * cell:  x(t) = w(u)^T L, w(u) = C^+ r(u), C the nodes' covariance, r(u)
+ * their covariance with the sample at offset u in the cell (SVD
+ * pseudo-inverse, singular values below 1e-13 of the largest dropped, as
+ * for singular processes).  The weights depend on u only: c^dim solves at
+ * plan time.  At the nodes x equals the lattice (w = delta), so the ACF is
+ * exact at node lags; between nodes the estimate misses the error variance
+ * e(u) = R(0) - w(u)^T r(u) (reported), the "restriction": the spectrum
+ * above the lattice's Nyquist frequency 1 / (2 cell) is not synthesised. */
+#define NL_LATTICE_WIENER_K 2
+#define NL_LATTICE_WIENER_MAX_CELL 64
+
+typedef struct nl_synth_lattice_wiener_plan nl_synth_lattice_wiener_plan;
+
+typedef struct {
+    int cell;              /* node spacing, samples */
+    size_t nodes[2];       /* lattice nodes per axis (1 beyond dim) */
+    double variance;       /* R(0) */
+    double mean_error;     /* mean of e(u) / R(0) over the cell's offsets */
+    double max_error;      /* largest e(u) / R(0) */
+    int rank;              /* rank of C kept (of (2K)^dim) */
+    size_t negatives;      /* lattice FFT eigenvalues clamped (synth/fft.h) */
+} nl_synth_lattice_wiener_info;
+
+/* Plan for model m (needs R: models given by R, and power:) on a dim-D
+ * output grid n[] (1 or 2 axes, unit spacing in samples, each n[a] a
+ * multiple of cell with at least 2K nodes), nodes every cell samples
+ * (1..NL_LATTICE_WIENER_MAX_CELL).  flags: NL_SYNTH_LATTICE_CLAMP passes
+ * NL_SYNTH_FFT_CLAMP to the lattice's FFT plan.  Free with
+ * nl_synth_lattice_wiener_plan_free.  Errors: NL_EINVAL (dim, cell, sizes;
+ * a model without R in closed form or with a nugget, R not finite at a
+ * node lag), NL_ENOTPD (the lattice's FFT refuses the model, synth/fft.h),
+ * NL_ETOOBIG, NL_ENOMEM, NL_EFAIL.  Not thread-safe (plans FFTW). */
+int nl_synth_lattice_wiener_plan_alloc(const nl_model *m, int dim, const size_t *n, int cell, unsigned flags,
+                                       nl_synth_lattice_wiener_plan **out);
+
+void nl_synth_lattice_wiener_plan_info(const nl_synth_lattice_wiener_plan *p, nl_synth_lattice_wiener_info *info);
+
+/* The weights of offset u (u[0..dim-1] in 0..cell-1) into w ((2K)^dim
+ * doubles, node (d_x, d_y) at w[d_y 2K + d_x], node d at offset
+ * (d - K + 1) cell from the cell's first node).  Thread-safe. */
+void nl_synth_lattice_wiener_weights(const nl_synth_lattice_wiener_plan *p, const int *u, double *w);
+
+/* The realization for seed into out (the plan's dim and n); *lattice (may
+ * be NULL) receives a copy of the node values (nodes[0] x nodes[1],
+ * row-major) for inspection, allocated with nl_alloc (caller frees with
+ * nl_free).  NL_EINVAL (out does not match), NL_ENOMEM.  Executing one plan
+ * concurrently into distinct fields is safe. */
+int nl_synth_lattice_wiener_execute(const nl_synth_lattice_wiener_plan *p, uint64_t seed, nl_field *out,
+                                    double **lattice);
+
+void nl_synth_lattice_wiener_plan_free(nl_synth_lattice_wiener_plan *p);
 
 #endif
