@@ -36,26 +36,23 @@ view "$d/ls-6b.exr" lewis87-fig6b-landscape.png 6 30
 landscape "$d/ls-6c-dep.exr" "$dir/lewis87-fig6c-depressions.png" 5 --tile --camera 256,-40,90 --look 90,22 \
     --haze 700 --water -2.2
 view "$d/ls-6d.exr" lewis87-fig6d-landscape.png 8 30
-# 6b-6d verdicts.  Roughness: the slope of log(1 - rho(h)) against log h
-# over lags 1..4 along the axis of the shorter scale estimates alpha
-# (1 - exp(-(h/s)^alpha) ~ (h/s)^alpha); on one 512 field with scales 24..96
-# the estimate is biased low (FFT synthesis of the same models gives about
-# 1.14 and 1.55), so the claim judged is the order: 6b rougher than 6d by
-# at least 0.2.  Direction: the 1/e correlation length of 6d along x over
-# that along y, 4 in the model, at least 2 (the biased estimator shortens
-# the longer length more).  6c: the radial spectrum peaks in 0.012..0.1
-# cycles per sample within the ring's standard deviation (k0 / (2 sqrt 9) =
+# 6b-6d verdicts.  Roughness: a Markaussian exp(-(r/s)^alpha) has the 2D
+# spectrum's tail S ~ k^-(2 + alpha) (its kink at r = 0), reached where
+# 2 pi s k >> 1 (above 0.03 cycles per sample 2 pi s k >= 4.5 for s = 24);
+# the slope fitted over 0.03..0.3 must lie within 0.3 of -(2 + alpha): the
+# fit's own 95% interval is +-0.04, the rest is left to the method's
+# departure at small scales (the fractal surface above is steeper by 0.1 to
+# 0.2).  Direction: the 1/e correlation length of 6d along x over that
+# along y, 4 in the model, at least 2 (the biased estimator shortens the
+# longer length more).  6c: the radial spectrum peaks in 0.012..0.1 cycles
+# per sample within the ring's standard deviation (k0 / (2 sqrt 9) =
 # 0.0042) of the model's peak there, and the shaped heights are skewed down
-roughness() { # FIELD AXIS
-    "$nl" acf "$1" --max-lag 8 --axis "$2" | awk '$1 == 0 { r0 = $2 } $1 >= 1 && $1 <= 4 {
-        x = log($1); y = log(1 - $2 / r0); sx += x; sy += y; sxx += x * x; sxy += x * y; n++ }
-        END { printf "%.3f", (n * sxy - sx * sy) / (n * sxx - sx * sx) }'
-}
+tail() { "$nl" psd "$1" --slope 0.03:0.3 | sed -n 's/^# slope \([-0-9.e+]*\) .*/\1/p'; }
 elen() { # FIELD AXIS: first lag where the ACF falls below R(0)/e
     "$nl" acf "$1" --max-lag 200 --axis "$2" | awk '$1 == 0 { r0 = $2 } $1 > 0 && !k && $2 < r0 * exp(-1) { k = $1 } END { print k }'
 }
-a6b=$(roughness "$d/ls-6b.exr" y)
-a6d=$(roughness "$d/ls-6d.exr" y)
+a6b=$(printf '%.3f' "$(tail "$d/ls-6b.exr")")
+a6d=$(printf '%.3f' "$(tail "$d/ls-6d.exr")")
 lx=$(elen "$d/ls-6d.exr" x)
 ly=$(elen "$d/ls-6d.exr" y)
 set -- $("$nl" psd "$d/ls-6c.exr" --target "$a6c" --json | jq -r '[.freq, .psd, .target] | transpose |
@@ -64,7 +61,7 @@ pk6c=$(printf '%.4f' "$1")
 pkm6c=$(printf '%.4f' "$2")
 sk6c=$("$nl" hist "$d/ls-6c-dep.exr" | sed -n 's/^# skewness //p')
 v6=$(awk -v b="$a6b" -v dd="$a6d" -v x="$lx" -v y="$ly" -v p="$pk6c" -v q="$pkm6c" -v g="$sk6c" \
-    'BEGIN { print ((dd - b >= 0.2 && y > 0 && x >= 2 * y && (p - q) ^ 2 <= 0.0042 ^ 2 && g < 0) ? "pass" : "FAIL") }')
+    'BEGIN { print (((b + 3.2) ^ 2 <= 0.09 && (dd + 3.8) ^ 2 <= 0.09 && y > 0 && x >= 2 * y && (p - q) ^ 2 <= 0.0042 ^ 2 && g < 0) ? "pass" : "FAIL") }')
 # verdicts: the fractal surface has its slope and eq. (16) dimension; the
 # modified heights have the density of U^2.5 (KS) and are skewed upward
 sl=$("$nl" psd "$d/ls-fractal.exr" --slope 0.01:0.2 | sed -n 's/^# slope \([-0-9.e+]*\) +- \([0-9.e+-]*\) .*dimension \([0-9.]*\)$/\1 \2 \3/p')
@@ -133,10 +130,10 @@ Markaussian (0.4 of the variance) plus a component with a ring spectrum at 0.025
 sample (0.6: the Laguerre-Gauss correlation L₉((r/38.2)²) exp(-(r/38.2)²), times exp(-r/200),
 see the textures section), 6 x 6 neighbourhoods, whose lower tail is then stretched by
 g(z) = z - 0.3 exp(-0.8 z) so that the hollows, all of about one size, become depressions,
-shown with water below -2.2. Verdict (part of **$verdict**): roughness, the slope of
-log(1 - ρ(h)) over lags 1-4 along y, is $a6b for 6b and $a6d for 6d (α = 1.2 and 1.8; both
-estimates are biased low on a 512 field, so the order is judged: 6d smoother by at least
-0.2); 6d's 1/e correlation length is $lx samples along x against $ly along y (4:1 in the
+shown with water below -2.2. Verdict (part of **$verdict**): roughness, the spectral slope
+over 0.03-0.3 cycles per sample, is $a6b for 6b and $a6d for 6d against the Markaussian's tail
+k^-(2+α), -3.2 and -3.8 (bound 0.3: the fit's 95% interval is ±0.04, the rest the method's
+departure at small scales); 6d's 1/e correlation length is $lx samples along x against $ly along y (4:1 in the
 model, at least 2:1 required; the biased estimator shortens the long one); 6c's radial
 spectrum peaks (within 0.012-0.1 cycles per sample) at $pk6c against the model's $pkm6c (bound:
 the ring's standard deviation, 0.0042), and the shaped heights have skewness $sk6c (< 0:
