@@ -27,8 +27,10 @@ fpk=$(printf '%.4f' "$fpk")
 # (a wind turning across the scene), 512 x 512, seed 5; and the same kernel
 # unrotated, whose windows measure the estimator's own scatter
 th='1.0471976*(x/512-0.5)+0.5235988*sin(3.14159265*y/512)'
-"$nl" synth sparse --kernel "$k" --radius 64 --density 16 --angle "$th" --size 512x512 --seed 5 -o "$d/waves-rot.exr"
-"$nl" synth sparse --kernel "$k" --radius 64 --density 16 --size 512x512 --seed 5 -o "$d/waves-stat.exr"
+# (radius 48 = 4.8 L: 7e-4 of the kernel's energy left out, a rotated
+# kernel gathers over sqrt 2 of its radius)
+"$nl" synth sparse --kernel "$k" --radius 48 --density 16 --angle "$th" --size 512x512 --seed 5 -o "$d/waves-rot.exr"
+"$nl" synth sparse --kernel "$k" --radius 48 --density 16 --size 512x512 --seed 5 -o "$d/waves-stat.exr"
 "$nl" render "$d/waves-rot.exr" --shade 315,35 --zscale 1.2 -o "$d/waves-rot.png"
 "$xb/local_orient" "$d/waves-rot.exr" 64 0.02 0.12 > "$d/waves-rot-orient.tsv"
 "$xb/local_orient" "$d/waves-stat.exr" 64 0.02 0.12 > "$d/waves-stat-orient.tsv"
@@ -63,10 +65,11 @@ gnuplot -e "set terminal pngcairo size 1000,530 font 'DejaVu Sans,11'; set outpu
 v2=$(awk -v r="$erot" -v s="$estat" -v n="$enone" 'BEGIN { print ((r <= 2 * s && r <= 6 && n >= 15) ? "pass" : "FAIL") }')
 
 # band-limiting by depth: the printed kernel with its crests across the
-# view (a = 1, b = 3), on a plane in perspective, 400 x 225
-set -- $("$xb/sparse_depth" 'cos(x/10+3*y/10)*exp(-r/10)' 64 16 400x225 3 "$d/depth")
+# view (a = 1, b = 3), on a plane in perspective, 400 x 225; cells of 32
+# samples, 4 impulses each (the density of the textures above)
+set -- $("$xb/sparse_depth" 'cos(x/10+3*y/10)*exp(-r/10)' 64 32 4 400x225 3 "$d/depth")
 nfar=$1 rref=$2 eplain=$3 eband=$4
-gnuplot -e "set terminal pngcairo size 900,840 font 'DejaVu Sans,11'; set output '$dir/gi86-depth-bandlimit.png';
+gnuplot -e "set terminal pngcairo size 700,1100 font 'DejaVu Sans,11'; set output '$dir/gi86-depth-bandlimit.png';
     set multiplot layout 3,1; unset key; unset tics; unset border; set size ratio -1;
     set title 'point-sampled kernel: aliasing towards the horizon';
     plot '$d/depth-plain.png' binary filetype=png with rgbimage;
@@ -114,7 +117,7 @@ shaded picture; a Gaussian window gives smoother, more regular crests.
 
 ![rotating kernel](gi86-rotating-kernel.png)
 
-\`noiselab synth sparse --kernel '$k' --radius 64 --density 16 --angle '$th'\`: each impulse's
+\`noiselab synth sparse --kernel '$k' --radius 48 --density 16 --angle '$th'\`: each impulse's
 kernel is rotated by θ(x, y) = 60° (x/512 - 1/2) + 30° sin(πy/512) at the impulse. The direction
 of the waves in each 64 x 64 window is measured from the window's periodogram (Hann window,
 0.02-0.12 cycles per sample, doubled-angle mean; \`experiments/local_orient.c\`). Verdict (part of
@@ -131,7 +134,8 @@ most 6°), and the rotated field misses the unrotated direction by a median $eno
 
 ![band-limiting by depth](gi86-depth-bandlimit.png)
 
-The kernel cos(x/10 + 3y/10) exp(-r/10) (crests across the view) on a plane seen from 20
+The kernel cos(x/10 + 3y/10) exp(-r/10) (crests across the view; radius 64, cells of 32 samples
+with 4 impulses each) on a plane seen from 20
 samples up, 6° down, 60° across, 400 x 225 (\`experiments/sparse_depth.c\`). Each pixel's
 footprint is the longer edge of its quad on the plane; \`nl_synth_sparse_set_bands\` precomputes
 the kernel convolved with Gaussians of σ = 1, 2, 4, 8, 16 samples, and

@@ -1,7 +1,7 @@
 /* Experiment: sparse convolution noise on a plane seen in perspective,
  * point-sampled against band-limited by depth (Lewis GI '86, sec. 3.1).
  *
- * usage: sparse_depth KERNEL RADIUS DENSITY WxH SEED PREFIX
+ * usage: sparse_depth KERNEL RADIUS CELL DENSITY WxH SEED PREFIX
  * The camera stands HC = 20 samples above the plane z = 0 at the origin,
  * looks along +y 6 degrees down, 60 degrees across.  Each pixel's plane point
  * comes from its centre's ray; its footprint is the longer edge of its quad
@@ -110,18 +110,18 @@ int main(int argc, char **argv)
 {
     camera c;
     size_t npix, far = 0;
-    int radius, *ok, st;
+    int radius, cell, *ok, st;
     double density, *xy, *fp, *plain, *band, *ref, *lev, sd, e_plain = 0, e_band = 0, r_ref = 0;
     unsigned long long seed;
     nl_synth_sparse_plan *p;
-    if (argc != 7 || sscanf(argv[4], "%zux%zu", &c.w, &c.h) != 2 || sscanf(argv[5], "%llu", &seed) != 1 ||
+    if (argc != 8 || sscanf(argv[5], "%zux%zu", &c.w, &c.h) != 2 || sscanf(argv[6], "%llu", &seed) != 1 ||
         c.w < 16 || c.h < 16 || c.w > 4096 || c.h > 4096) {
-        fprintf(stderr, "usage: sparse_depth KERNEL RADIUS DENSITY WxH SEED PREFIX\n");
+        fprintf(stderr, "usage: sparse_depth KERNEL RADIUS CELL DENSITY WxH SEED PREFIX\n");
         return 2;
     }
-    radius = atoi(argv[2]), density = atof(argv[3]);
+    radius = atoi(argv[2]), cell = atoi(argv[3]), density = atof(argv[4]);
     c.f = (double)c.w / 2 / tan(FOV / 2);
-    if ((st = nl_synth_sparse_plan_expr(argv[1], 2, radius, 0, density, &p)) || (st = nl_synth_sparse_set_bands(p, 5))) {
+    if ((st = nl_synth_sparse_plan_expr(argv[1], 2, radius, cell, density, &p)) || (st = nl_synth_sparse_set_bands(p, 5))) {
         fprintf(stderr, "sparse_depth: %s\n", nl_errmsg());
         return 1;
     }
@@ -162,8 +162,8 @@ int main(int argc, char **argv)
             r_ref += ref[i] * ref[i];
         }
     }
-    if (save(argv[6], "plain", &c, plain, -3 * sd, 3 * sd) || save(argv[6], "band", &c, band, -3 * sd, 3 * sd) ||
-        save(argv[6], "ref", &c, ref, -3 * sd, 3 * sd) || save(argv[6], "level", &c, lev, 0, 5)) {
+    if (save(argv[7], "plain", &c, plain, -3 * sd, 3 * sd) || save(argv[7], "band", &c, band, -3 * sd, 3 * sd) ||
+        save(argv[7], "ref", &c, ref, -3 * sd, 3 * sd) || save(argv[7], "level", &c, lev, 0, 5)) {
         fprintf(stderr, "sparse_depth: %s\n", nl_errmsg());
         return 1;
     }
