@@ -46,7 +46,8 @@ int main(int argc, char **argv)
                     mean += f->data[(ty + j) * f->n[0] + tx + i] / (double)(W * W);
             for (size_t j = 0; j < W; j++)
                 for (size_t i = 0; i < W; i++) {
-                    double hann = (0.5 - 0.5 * cos(2 * M_PI * (i + 0.5) / W)) * (0.5 - 0.5 * cos(2 * M_PI * (j + 0.5) / W));
+                    double hann = (0.5 - 0.5 * cos(2 * M_PI * (i + 0.5) / W)) *
+                                  (0.5 - 0.5 * cos(2 * M_PI * (j + 0.5) / W));
                     buf[j * W + i] = hann * (f->data[(ty + j) * f->n[0] + tx + i] - mean);
                 }
             fftw_execute(plan);

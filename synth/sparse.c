@@ -547,7 +547,8 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
         for (long i = 0; i < nx; i++) {
             long X = ox + i, Y = oy + j;
             long a0 = nl_sparse_floordiv(X - reach, C), a1 = nl_sparse_floordiv(X + reach, C);
-            long b0 = dim == 2 ? nl_sparse_floordiv(Y - reach, C) : 0, b1 = dim == 2 ? nl_sparse_floordiv(Y + reach, C) : 0;
+            long b0 = dim == 2 ? nl_sparse_floordiv(Y - reach, C) : 0;
+            long b1 = dim == 2 ? nl_sparse_floordiv(Y + reach, C) : 0;
             double s = 0;
             for (long b = b0; b <= b1; b++)
                 for (long a = a0; a <= a1; a++) {

@@ -33,7 +33,8 @@ static void lattice_equal(const char *angle)
     cr_assert_eq(nl_synth_sparse_execute(p, 7, 0, origin, f), NL_OK, "%s", nl_errmsg());
     for (size_t j = 0; j < n[1]; j++)
         for (size_t i = 0; i < n[0]; i++)
-            xy[2 * (j * n[0] + i)] = (double)(origin[0] + (long)i), xy[2 * (j * n[0] + i) + 1] = (double)(origin[1] + (long)j);
+            xy[2 * (j * n[0] + i)] = (double)(origin[0] + (long)i),
+            xy[2 * (j * n[0] + i) + 1] = (double)(origin[1] + (long)j);
     cr_assert_eq(nl_synth_sparse_execute_points(p, 7, f->count, xy, NULL, out), NL_OK, "%s", nl_errmsg());
     for (size_t i = 0; i < f->count; i++)
         cr_assert_eq(out[i], f->data[i], "sample %zu: %.17g against %.17g", i, out[i], f->data[i]);
