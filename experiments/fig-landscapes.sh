@@ -59,7 +59,7 @@ set -- $("$nl" psd "$d/ls-6c.exr" --target "$a6c" --json | jq -r '[.freq, .psd, 
     map(select(.[0] >= 0.012 and .[0] <= 0.1)) | "\(max_by(.[1])[0]) \(max_by(.[2])[0])"')
 pk6c=$(printf '%.4f' "$1")
 pkm6c=$(printf '%.4f' "$2")
-sk6c=$("$nl" hist "$d/ls-6c-dep.exr" | sed -n 's/^# skewness //p')
+sk6c=$(printf '%.3f' "$("$nl" hist "$d/ls-6c-dep.exr" | sed -n 's/^# skewness //p')")
 v6=$(awk -v b="$a6b" -v dd="$a6d" -v x="$lx" -v y="$ly" -v p="$pk6c" -v q="$pkm6c" -v g="$sk6c" \
     'BEGIN { print (((b + 3.2) ^ 2 <= 0.09 && (dd + 3.8) ^ 2 <= 0.09 && y > 0 && x >= 2 * y && (p - q) ^ 2 <= 0.0042 ^ 2 && g < 0) ? "pass" : "FAIL") }')
 # verdicts: the fractal surface has its slope and eq. (16) dimension; the
