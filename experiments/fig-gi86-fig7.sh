@@ -51,7 +51,9 @@ average about 10000 periodogram ordinates, 1% sampling error, and each realizati
 with its own measured mean and deviation): $verdict.
 
 What differs: the paper's input bandwidth and centre frequency are not given; ours is a
-Gaussian band at 0.05 cycles per sample. The fifth harmonic, four orders of magnitude below the
+Gaussian band at 0.05 cycles per sample. Nor does it say which "hyperbolic probability density"
+it meant: the hyperbolic secant, f(y) = sech(πy/2)/2, is our reading (an odd, heavy-tailed
+density reached by a monotone pair of maps, as the caption describes). The fifth harmonic, four orders of magnitude below the
 fundamental, agrees with the prediction as well.
 MD
 [ "$ok" = 1 ]

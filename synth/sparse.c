@@ -1,5 +1,6 @@
 /* Sparse convolution on the lattice: kernels and gather evaluation. */
 #include "sparse.h"
+#include "sparse_internal.h"
 #include "../core/autocorr.h"
 #include "../core/fftw_plan.h"
 #include "../core/mem.h"
@@ -16,17 +17,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-struct nl_synth_sparse_plan {
-    int dim;            /* 1 or 2 */
-    int radius;         /* R: table covers offsets -R..R per axis */
-    int cell;           /* C */
-    double density;     /* impulses per cell */
-    double *h;          /* (2R+1)^dim kernel table, x fastest */
-    void *angle;        /* libmatheval theta(x, y) or NULL */
-    char *angle_expr;   /* its text, for messages */
-    nl_synth_sparse_info info;
-};
-
 void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p)
 {
     if (!p)
@@ -34,11 +24,12 @@ void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p)
     if (p->angle)
         evaluator_destroy(p->angle);
     free(p->angle_expr);
+    nl_sparse_bands_clear(p);
     free(p->h);
     free(p);
 }
 
-static int default_cell(int radius)
+int nl_sparse_default_cell(int radius)
 {
     int c;
     for (c = 4; c < radius; c *= 2)
@@ -101,7 +92,7 @@ static int new_plan(int dim, int radius, int cell, double density, nl_synth_spar
     }
     p->dim = dim;
     p->radius = radius;
-    p->cell = cell > 0 ? cell : default_cell(radius);
+    p->cell = cell > 0 ? cell : nl_sparse_default_cell(radius);
     p->density = density;
     *out = p;
     return NL_OK;
@@ -400,23 +391,15 @@ int nl_synth_sparse_plan_exemplar(const nl_field *img, int radius, int cell, dou
     return st;
 }
 
-/* The impulses of the cells cx0..cx1 x cy0..cy1 (absolute cell indices). */
-typedef struct {
-    long cx0, cy0, ncx, ncy;  /* cell range */
-    size_t *start;            /* ncx * ncy + 1 offsets into the arrays */
-    long *px, *py;            /* absolute lattice positions */
-    double *a, *c, *s;        /* amplitude, cos and sin of the kernel angle */
-} impulses;
-
-static void impulses_free(impulses *im)
+void nl_sparse_impulses_free(nl_sparse_impulses *im)
 {
     free(im->start), free(im->px), free(im->py), free(im->a), free(im->c), free(im->s);
 }
 
 static uint64_t cell_id(long cx, long cy) { return ((uint64_t)(uint32_t)cy << 32) | (uint32_t)cx; }
 
-static int make_impulses(const nl_synth_sparse_plan *p, uint64_t seed, long cx0, long cx1, long cy0, long cy1,
-                         impulses *im)
+int nl_sparse_impulses_make(const nl_synth_sparse_plan *p, uint64_t seed, long cx0, long cx1, long cy0, long cy1,
+                            nl_sparse_impulses *im)
 {
     static const char *const names[] = {"x", "y"};
     size_t ncell, total = 0, cap;
@@ -442,7 +425,7 @@ static int make_impulses(const nl_synth_sparse_plan *p, uint64_t seed, long cx0,
     im->px = malloc(cap * sizeof *im->px), im->py = malloc(cap * sizeof *im->py);
     im->a = malloc(cap * sizeof *im->a), im->c = malloc(cap * sizeof *im->c), im->s = malloc(cap * sizeof *im->s);
     if (!im->start || !im->px || !im->py || !im->a || !im->c || !im->s) {
-        impulses_free(im);
+        nl_sparse_impulses_free(im);
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu cells of impulses", ncell);
     }
     for (long cy = cy0; cy <= cy1; cy++)
@@ -462,7 +445,7 @@ static int make_impulses(const nl_synth_sparse_plan *p, uint64_t seed, long cx0,
                     if (nc) im->c = nc;
                     if (ns) im->s = ns;
                     if (!nx || !ny || !na || !nc || !ns) {
-                        impulses_free(im);
+                        nl_sparse_impulses_free(im);
                         return NL_ERROR(NL_ENOMEM, "out of memory for impulses");
                     }
                 }
@@ -477,7 +460,7 @@ static int make_impulses(const nl_synth_sparse_plan *p, uint64_t seed, long cx0,
                     double v[2] = {(double)im->px[total], (double)im->py[total]};
                     double th = evaluator_evaluate(p->angle, 2, (char **)names, v);
                     if (!isfinite(th)) {
-                        impulses_free(im);
+                        nl_sparse_impulses_free(im);
                         return NL_ERROR(NL_EINVAL, "angle: \"%s\" is not finite (%g) at the impulse (x %g, y %g)",
                                         p->angle_expr, th, v[0], v[1]);
                     }
@@ -490,24 +473,23 @@ static int make_impulses(const nl_synth_sparse_plan *p, uint64_t seed, long cx0,
     return NL_OK;
 }
 
-/* Bilinear lookup of the kernel at a non-integer offset; 0 outside. */
-static double kernel_at(const nl_synth_sparse_plan *p, double u, double v)
+double nl_sparse_table_at(const double *h, int R, double u, double v)
 {
-    int R = p->radius, w = 2 * R + 1;
+    int w = 2 * R + 1;
     double fu = floor(u), fv = floor(v), au = u - fu, av = v - fv, s = 0;
     for (int dv = 0; dv <= 1; dv++)
         for (int du = 0; du <= 1; du++) {
             long i = (long)fu + du, j = (long)fv + dv;
             if (i < -R || i > R || j < -R || j > R)
                 continue;
-            s += (du ? au : 1 - au) * (dv ? av : 1 - av) * p->h[(size_t)(j + R) * (size_t)w + (size_t)(i + R)];
+            s += (du ? au : 1 - au) * (dv ? av : 1 - av) * h[(size_t)(j + R) * (size_t)w + (size_t)(i + R)];
         }
     return s;
 }
 
 int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, int angle)
 {
-    double reach = angle ? ceil(radius * M_SQRT2) + 1 : radius, C = cell > 0 ? cell : default_cell(radius);
+    double reach = angle ? ceil(radius * M_SQRT2) + 1 : radius, C = cell > 0 ? cell : nl_sparse_default_cell(radius);
     double count = 1, cells = 1, per = 2 * reach / C + 2, work;
     for (int a = 0; a < dim; a++) {
         count *= (double)n[a];
@@ -522,7 +504,7 @@ int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, d
     return NL_OK;
 }
 
-static long floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+long nl_sparse_floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out)
 {
@@ -530,7 +512,7 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
     const long reach = p->angle ? (long)ceil(R * M_SQRT2) + 1 : R;
     long nx = (long)out->n[0], ny = dim == 2 ? (long)out->n[1] : 1, ox = 0, oy = 0;
     long cx0, cx1, cy0 = 0, cy1 = 0;
-    impulses im;
+    nl_sparse_impulses im;
     int st;
     if (out->dim != dim)
         return NL_ERROR(NL_EINVAL, "sparse: a %dD kernel cannot fill a %dD field", dim, out->dim);
@@ -552,20 +534,21 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
             oy > NL_SPARSE_ORIGIN_MAX - ny)
             return NL_ERROR(NL_EINVAL, "origin: the window (%ld, %ld) + %ldx%ld leaves +-%ld samples", ox, oy, nx, ny,
                             NL_SPARSE_ORIGIN_MAX);
-        cx0 = floordiv(ox - reach, C), cx1 = floordiv(ox + nx - 1 + reach, C);
+        cx0 = nl_sparse_floordiv(ox - reach, C), cx1 = nl_sparse_floordiv(ox + nx - 1 + reach, C);
         if (dim == 2)
-            cy0 = floordiv(oy - reach, C), cy1 = floordiv(oy + ny - 1 + reach, C);
+            cy0 = nl_sparse_floordiv(oy - reach, C), cy1 = nl_sparse_floordiv(oy + ny - 1 + reach, C);
     }
     if ((st = nl_synth_sparse_check_work(dim, out->n, R, C, p->density, p->angle != NULL)))
         return st;
-    if ((st = make_impulses(p, seed, cx0, cx1, cy0, cy1, &im)))
+    if ((st = nl_sparse_impulses_make(p, seed, cx0, cx1, cy0, cy1, &im)))
         return st;
 #pragma omp parallel for schedule(dynamic, 8) if (out->count > 65536)
     for (long j = 0; j < ny; j++)
         for (long i = 0; i < nx; i++) {
             long X = ox + i, Y = oy + j;
-            long a0 = floordiv(X - reach, C), a1 = floordiv(X + reach, C);
-            long b0 = dim == 2 ? floordiv(Y - reach, C) : 0, b1 = dim == 2 ? floordiv(Y + reach, C) : 0;
+            long a0 = nl_sparse_floordiv(X - reach, C), a1 = nl_sparse_floordiv(X + reach, C);
+            long b0 = dim == 2 ? nl_sparse_floordiv(Y - reach, C) : 0;
+            long b1 = dim == 2 ? nl_sparse_floordiv(Y + reach, C) : 0;
             double s = 0;
             for (long b = b0; b <= b1; b++)
                 for (long a = a0; a <= a1; a++) {
@@ -585,14 +568,14 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
                                 continue;
                             s += im.a[k] * p->h[(size_t)(dim == 2 ? (dy + R) * w + (dx + R) : dx + R)];
                         } else {
-                            s += im.a[k] * kernel_at(p, im.c[k] * (double)dx + im.s[k] * (double)dy,
+                            s += im.a[k] * nl_sparse_table_at(p->h, R, im.c[k] * (double)dx + im.s[k] * (double)dy,
                                                      -im.s[k] * (double)dx + im.c[k] * (double)dy);
                         }
                     }
                 }
             out->data[j * nx + i] = s;
         }
-    impulses_free(&im);
+    nl_sparse_impulses_free(&im);
     for (size_t i = 0; p->info.mean != 0 && i < out->count; i++)
         out->data[i] += p->info.mean;
     return NL_OK;

@@ -52,6 +52,9 @@
  * 32-bit coordinates (farther windows would repeat the field). */
 #define NL_SPARSE_ORIGIN_MAX (1L << 30)
 
+/* At most this many band-limited versions of a kernel (sigma up to 2^5). */
+#define NL_SPARSE_BANDS_MAX 6
+
 typedef struct nl_synth_sparse_plan nl_synth_sparse_plan;
 
 typedef struct {
@@ -141,6 +144,40 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
  * NL_ETOOBIG naming the values when the impulses drawn and gathered exceed
  * NL_SPARSE_WORK_MAX.  Thread-safe. */
 int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, int angle);
+
+/* Depth band-limiting (GI '86, sec. 3.1: "the noise can be accurately and
+ * efficiently anti-aliased by selecting appropriate precomputed bandlimited
+ * versions of the kernel as a function of depth").  Precomputes `levels`
+ * band-limited kernels of a 2D plan: level l = 1..levels is the kernel table
+ * convolved with the separable discrete Gaussian g(q) ~ exp(-q^2 / (2
+ * sigma_l^2)), |q| <= 4 sigma_l per axis, normalised to sum 1, sigma_l =
+ * 2^(l-1) samples; its table has half-width radius + 4 sigma_l.  Level 0 is
+ * the kernel itself.  Level l suits a footprint (the sample spacing on the
+ * field at that pixel) of 2^l samples: sigma = footprint / 2.  Replaces any
+ * earlier bands; levels 0 drops them.  NL_OK, or NL_EINVAL (a 1D plan,
+ * levels outside 0..NL_SPARSE_BANDS_MAX), NL_ETOOBIG (the tables exceed the
+ * memory available, checked before allocating), NL_ENOMEM (the plan then
+ * has no bands).  Not thread-safe (modifies the plan). */
+int nl_synth_sparse_set_bands(nl_synth_sparse_plan *p, int levels);
+
+/* The variance of the level-l band-limited field, lambda sum h_l^2 in the
+ * plan's units (level 0: info.variance); NAN for a level the plan lacks. */
+double nl_synth_sparse_band_variance(const nl_synth_sparse_plan *p, int level);
+
+/* The non-periodic field at n arbitrary points xy[2 i], xy[2 i + 1] (grid
+ * samples, any real values within +-NL_SPARSE_ORIGIN_MAX) into out[i].
+ * footprint NULL: the kernel itself, bilinear between table entries (at
+ * integer points equal to nl_synth_sparse_execute's samples without wrap,
+ * bit for bit); else footprint[i] >= 0 (samples) selects the band-limited
+ * kernels: level lambda = log2(footprint) clamped to 0..nbands, linear
+ * between the two nearest levels (footprint <= 1: level 0).  Requires a 2D
+ * plan.  NL_OK, or NL_EINVAL (a 1D plan, a point or footprint not finite or
+ * out of range, an angle not finite at an impulse), NL_ETOOBIG (the
+ * impulses of the points' bounding box exceed the memory available, or the
+ * work exceeds NL_SPARSE_WORK_MAX), NL_ENOMEM.  Thread safety as
+ * nl_synth_sparse_execute. */
+int nl_synth_sparse_execute_points(const nl_synth_sparse_plan *p, uint64_t seed, size_t n, const double *xy,
+                                   const double *footprint, double *out);
 
 /* Frees the plan (NULL: no-op). */
 void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p);
