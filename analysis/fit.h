@@ -53,6 +53,28 @@
  * covariance parameters plus the mean.  O(n^3) per step: n up to a few
  * thousand (NL_FIT_ML_MAX).
  *
+ * Intervals (ML and REML, nl_fit_options.intervals): the 95% profile-
+ * likelihood interval of each chosen free parameter, the parameter values
+ * theta_j whose profile -2 l_p(theta_j) = min over the other free
+ * parameters of -2 l stays within chi^2_1(0.95) = 3.841459 of the minimum
+ * (the likelihood-ratio interval, Cox and Hinkley 1974, 9.3; invariant
+ * under the log and logistic transforms).  Each end is bracketed from the
+ * optimum outwards (first step 1.96 standard errors of the transformed
+ * parameter, or 0.5 where that is not finite, doubled until -2 l_p exceeds
+ * the cutoff or the end lies 12 units away) and found by GSL's Brent
+ * solver (gsl_root_fsolver_brent) to 1e-3 in the transformed coordinate
+ * (0.1% of a positive parameter); the other parameters are re-optimised by
+ * Nelder-Mead (simplex size 1e-3, or a gain of -2 l under 1e-4 in 10 steps)
+ * from the previous profile point.  An end
+ * not reached within 12 units is the edge of the parameter's domain (0, or
+ * +infinity for var, scale, nugget, nu, omega; 0 or 2 for alpha): the
+ * data do not bound the parameter on that side.  Costs about 15 profile
+ * optimisations per end, each of some 10-60 likelihood evaluations.  These
+ * intervals are the ones to quote for the spherical range: its likelihood
+ * is not smooth in the range, and the Hessian's standard error understates
+ * the spread of the range by about 2x (experiments/fit_coverage.c measures
+ * both).  WLS fits report no intervals (lower, upper NaN).
+ *
  * Statuses: NL_OK; NL_EINVAL (a family that cannot be fitted, a fixed
  * parameter the family does not have or out of its range, fewer bins with
  * pairs than free parameters + 1, fewer data than free parameters + 2, a
@@ -74,6 +96,8 @@
 
 typedef enum { NL_FIT_CRESSIE = 0, NL_FIT_PAIRS = 1 } nl_fit_weights;
 typedef enum { NL_FIT_ML = 0, NL_FIT_REML = 1 } nl_fit_likelihood;
+/* Which profile-likelihood intervals an ML or REML fit computes. */
+typedef enum { NL_FIT_INTERVALS_NONE = 0, NL_FIT_INTERVALS_ALL = 1, NL_FIT_INTERVALS_SCALE = 2 } nl_fit_intervals;
 
 typedef struct {
     const char *family;                  /* markov, gauss, matern, spherical, ... */
@@ -85,6 +109,8 @@ typedef struct {
     nl_fit_likelihood likelihood;        /* ML or REML */
     const double *start;                 /* NULL, or a start value per parameter (the order of
                                             nl_fit_result.name; NaN: automatic) */
+    nl_fit_intervals intervals;          /* ML/REML: profile intervals of none, every free
+                                            parameter, or the scale alone */
 } nl_fit_options;
 
 typedef struct {
@@ -94,6 +120,8 @@ typedef struct {
     double value[NL_FIT_MAX_PARAMS];      /* fitted (or fixed) values */
     double se[NL_FIT_MAX_PARAMS];         /* standard errors (0 when fixed; NaN when the
                                              information matrix is singular) */
+    double lower[NL_FIT_MAX_PARAMS];      /* 95% profile-likelihood interval (see above): its ends, */
+    double upper[NL_FIT_MAX_PARAMS];      /*   NaN where not computed, upper +inf where unbounded */
     int fixed[NL_FIT_MAX_PARAMS];         /* held at the given value */
     size_t nfree;                         /* free parameters */
     double objective;                     /* WLS: weighted sum of squares; ML: -2 l at the optimum */

@@ -141,6 +141,8 @@ static int fit_variogram(const double *distance, const double *gamma, const doub
     double cov[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS], *buf;
     int st;
     memset(res, 0, sizeof *res);
+    for (size_t k = 0; k < NL_FIT_MAX_PARAMS; k++)
+        res->lower[k] = res->upper[k] = NAN;
     res->mean = NAN;
     if ((st = nl_fit_params_init(o, dim, &p)))
         return st;

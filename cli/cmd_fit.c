@@ -24,8 +24,12 @@ static const char help[] =
     "Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step\n"
     "(a few thousand data), started from the wls fit.  Prints the fitted model as a\n"
     "spec for --acf, standard errors, the objective and AIC (compare models fitted\n"
-    "by one method to one data set: lower is better).  --json keys: model,\n"
-    "parameters, standard_errors, objective, aic, method, n.\n"
+    "by one method to one data set: lower is better).  ml and reml also print each\n"
+    "free parameter's 95% profile-likelihood interval (the values within 3.841 of\n"
+    "the minimum -2 log likelihood, the others re-optimised; \"unbounded\" when the\n"
+    "data set no upper limit).  --json keys: model, parameters, standard_errors,\n"
+    "objective, aic, method, n, and for ml and reml mean and intervals ([lower,\n"
+    "upper] per free parameter, upper null when unbounded).\n"
     "Standard errors: ml and reml's describe the spread of the estimates for\n"
     "regular models (markov with a nugget: 95% intervals cover 0.91-0.96 of the\n"
     "time); wls's treat correlated variogram bins as independent and understate it;\n"
@@ -140,9 +144,20 @@ static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
         double start[NL_FIT_MAX_PARAMS];
         memcpy(start, r->value, sizeof start);
         ml.start = start;
+        ml.intervals = NL_FIT_INTERVALS_ALL;
         st = nl_fit_ml(p->pts, p->val, p->n, p->dim, &ml, r);
     }
     return st;
+}
+
+/* An interval's end for the text output ("unbounded" for +infinity). */
+static const char *end_text(double v, char *buf, size_t size)
+{
+    if (isfinite(v))
+        snprintf(buf, size, "%.4g", v);
+    else
+        snprintf(buf, size, "unbounded");
+    return buf;
 }
 
 static void print_text(const opts_t *a, const nl_fit_result *r)
@@ -152,16 +167,20 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
     printf("method      %s%s on %zu %s, %s after %d steps\n", mname[a->method],
            a->method ? "" : a->o.weights == NL_FIT_PAIRS ? " (pairs weights)" : " (cressie weights)", r->nobs,
            a->method ? "data" : "variogram bins", r->converged ? "converged" : "NOT converged", r->iterations);
-    printf("parameter   value         standard error\n");
+    printf("parameter   value         standard error%s\n", a->method ? "   95% profile-likelihood interval" : "");
     for (size_t k = 0; k < r->np; k++) {
-        char se[32];
+        char se[32], lo[32], hi[32];
         if (r->fixed[k])
             snprintf(se, sizeof se, "fixed");
         else if (isfinite(r->se[k]))
             snprintf(se, sizeof se, "%.4g", r->se[k]);
         else
             snprintf(se, sizeof se, "n/a (singular information)");
-        printf("%-11s %-13.6g %s\n", r->name[k], r->value[k], se);
+        if (isnan(r->lower[k]) || isnan(r->upper[k]))
+            printf("%-11s %-13.6g %s\n", r->name[k], r->value[k], se);
+        else
+            printf("%-11s %-13.6g %-16s %s to %s\n", r->name[k], r->value[k], se,
+                   end_text(r->lower[k], lo, sizeof lo), end_text(r->upper[k], hi, sizeof hi));
     }
     if (a->method)
         printf("mean        %.6g\n", r->mean);
@@ -180,8 +199,16 @@ static void print_json(const opts_t *a, const nl_fit_result *r)
     j = json_pack("{s:s,s:o,s:o,s:f,s:f,s:s,s:I,s:b,s:i}", "model", r->spec, "parameters", par, "standard_errors", se,
                   "objective", r->objective, "aic", r->aic, "method", mname[a->method], "n", (json_int_t)r->nobs,
                   "converged", r->converged, "iterations", r->iterations);
-    if (a->method)
+    if (a->method) {
+        json_t *iv = json_object();
+        for (size_t k = 0; k < r->np; k++)
+            if (!isnan(r->lower[k]) && !isnan(r->upper[k]))
+                json_object_set_new(iv, r->name[k], json_pack("[f,o]", r->lower[k],
+                                                              isfinite(r->upper[k]) ? json_real(r->upper[k])
+                                                                                    : json_null()));
         json_object_set_new(j, "mean", json_real(r->mean));
+        json_object_set_new(j, "intervals", iv);
+    }
     cli_json_print(j);
 }
 
