@@ -26,10 +26,17 @@
  *   NL_FIT_CRESSIE  w_j = N_j / g(h_j)^2, as gstat's fit.method = 2
  *                   (Cressie 1985), with g the model's value re-evaluated at
  *                   every step: the residual is sqrt(N_j) (gamma_j / g(h_j)
- *                   - 1), Cressie's criterion itself (gstat instead fixes the
- *                   weights within each of its iterations and converges to a
- *                   point close to this one);
- *   NL_FIT_PAIRS    w_j = N_j (gstat's fit.method = 1).
+ *                   - 1), Cressie's criterion itself;
+ *   NL_FIT_REWEIGHTED  w_j = N_j / g(h_j)^2 with g held at the previous
+ *                   solve's model, solved again until no transformed
+ *                   parameter moves by 1e-10 (at most 200 solves): the fixed
+ *                   point sum_j w_j (gamma_j - g_j) dg_j = 0 that gstat's
+ *                   fit.method = 2 iterates to.  It is not Cressie's
+ *                   minimum (whose gradient has the weights' derivative too):
+ *                   the two differ by a few percent of the scale on sampled
+ *                   variograms (tests/test_fit_gstat.c);
+ *   NL_FIT_PAIRS    w_j = N_j (gstat's fit.method = 1);
+ *   NL_FIT_DISTANCE w_j = N_j / h_j^2 (gstat's fit.method = 7, its default).
  * Standard errors: the covariance s^2 (J^T J)^-1 of the last step's Jacobian,
  * s^2 = objective / (bins - free parameters): the usual nonlinear
  * least-squares errors, which treat the bins as independent.  They are not
@@ -94,7 +101,7 @@
 #define NL_FIT_MAX_FIX 8
 #define NL_FIT_ML_MAX 10000     /* most data for a likelihood fit */
 
-typedef enum { NL_FIT_CRESSIE = 0, NL_FIT_PAIRS = 1 } nl_fit_weights;
+typedef enum { NL_FIT_CRESSIE = 0, NL_FIT_PAIRS = 1, NL_FIT_REWEIGHTED = 2, NL_FIT_DISTANCE = 3 } nl_fit_weights;
 typedef enum { NL_FIT_ML = 0, NL_FIT_REML = 1 } nl_fit_likelihood;
 /* Which profile-likelihood intervals an ML or REML fit computes. */
 typedef enum { NL_FIT_INTERVALS_NONE = 0, NL_FIT_INTERVALS_ALL = 1, NL_FIT_INTERVALS_SCALE = 2 } nl_fit_intervals;

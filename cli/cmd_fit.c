@@ -13,14 +13,17 @@
 
 static const char help[] =
     "usage: noiselab fit DATA.tsv|FIELD.exr --model FAMILY [--nugget] [--fix NAME=VALUE]...\n"
-    "                    [--method wls|ml|reml] [--weights cressie|pairs]\n"
+    "                    [--method wls|ml|reml]\n"
+    "                    [--weights cressie|pairs|reweighted|distance]\n"
     "                    [--width W] [--cutoff C] [--json]\n\n"
     "Fits a model family (markov, gauss, markaussian, oscillatory, gauss-osc, matern,\n"
     "spherical) to data: its var, scale (the spherical model's range), the nugget\n"
     "with --nugget, and its shape parameter (alpha, omega, nu), each unless fixed by\n"
     "--fix.  wls (default): weighted least squares on the empirical variogram (as\n"
-    "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2\n"
-    "(cressie, gstat's fit.method 2) or N (pairs, fit.method 1).  ml, reml: the\n"
+    "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2 of\n"
+    "the fitted model (cressie: Cressie's criterion; reweighted: the weights held\n"
+    "at the last fit and refitted to a fixed point, gstat's fit.method 2), N\n"
+    "(pairs, fit.method 1) or N/h^2 (distance, fit.method 7).  ml, reml: the\n"
     "Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step\n"
     "(a few thousand data), started from the wls fit.  Prints the fitted model as a\n"
     "spec for --acf, standard errors, the objective and AIC (compare models fitted\n"
@@ -63,11 +66,14 @@ static void parse_fix(opts_t *a, const char *s)
 
 static int pick(const char *opt, const char *s, const char *const *words, int n)
 {
+    char list[128] = "";
     for (int i = 0; i < n; i++)
         if (strcmp(s, words[i]) == 0)
             return i;
-    cli_die(2, "%s: expected %s or %s%s%s, got \"%s\"", opt, words[0], words[1], n > 2 ? " or " : "",
-            n > 2 ? words[2] : "", s);
+    for (int i = 0; i < n; i++)
+        snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", i == 0 ? "" : i < n - 1 ? ", " : " or ",
+                 words[i]);
+    cli_die(2, "%s: expected %s, got \"%s\"", opt, list, s);
 }
 
 static void parse(int argc, char **argv, opts_t *a)
@@ -78,7 +84,8 @@ static void parse(int argc, char **argv, opts_t *a)
         {"weights", required_argument, 0, 'W'},{"width", required_argument, 0, 'w'},
         {"cutoff", required_argument, 0, 'c'}, {"json", no_argument, 0, 'j'},
         {"help", no_argument, 0, 'h'},         {0}};
-    static const char *const methods[] = {"wls", "ml", "reml"}, *const weights[] = {"cressie", "pairs"};
+    static const char *const methods[] = {"wls", "ml", "reml"}, *const weights[] = {"cressie", "pairs", "reweighted",
+                                                                                       "distance"};
     int c;
     nl_variogram_options_default(&a->vo);
     while ((c = cli_getopt(argc, argv, ":h", opts, "fit")) != -1) {
@@ -87,7 +94,7 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'n': a->o.nugget = 1; break;
         case 'f': parse_fix(a, optarg); break;
         case 'M': a->method = pick("--method", optarg, methods, 3); break;
-        case 'W': a->o.weights = (nl_fit_weights)pick("--weights", optarg, weights, 2); break;
+        case 'W': a->o.weights = (nl_fit_weights)pick("--weights", optarg, weights, 4); break;
         case 'w': a->vo.width = cli_parse_positive("--width", optarg, "bin width"); break;
         case 'c': a->vo.cutoff = cli_parse_positive("--cutoff", optarg, "cutoff distance"); break;
         case 'j': a->json = 1; break;
@@ -163,9 +170,11 @@ static const char *end_text(double v, char *buf, size_t size)
 static void print_text(const opts_t *a, const nl_fit_result *r)
 {
     static const char *const mname[] = {"wls", "ml", "reml"};
+    static const char *const wname[] = {" (cressie weights)", " (pairs weights)", " (reweighted weights)",
+                                        " (distance weights)"};
     printf("model       %s\n", r->spec);
     printf("method      %s%s on %zu %s, %s after %d steps\n", mname[a->method],
-           a->method ? "" : a->o.weights == NL_FIT_PAIRS ? " (pairs weights)" : " (cressie weights)", r->nobs,
+           a->method ? "" : wname[a->o.weights], r->nobs,
            a->method ? "data" : "variogram bins", r->converged ? "converged" : "NOT converged", r->iterations);
     printf("parameter   value         standard error%s\n", a->method ? "   95% profile-likelihood interval" : "");
     for (size_t k = 0; k < r->np; k++) {
