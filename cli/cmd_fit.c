@@ -34,10 +34,10 @@ static const char help[] =
     "objective, aic, method, n, and for ml and reml mean and intervals ([lower,\n"
     "upper] per free parameter, upper null when unbounded).\n"
     "Standard errors: ml and reml's describe the spread of the estimates for\n"
-    "regular models (markov with a nugget: 95% intervals cover 0.91-0.96 of the\n"
-    "time); wls's treat correlated variogram bins as independent and understate it;\n"
-    "the spherical range's understate it by about 2x even with ml (its likelihood\n"
-    "is not smooth in the range), experiments/fit_coverage.c.\n";
+    "regular models (markov with a nugget); the spherical range's understate it by\n"
+    "about 2x (its likelihood is not smooth in the range): quote the profile\n"
+    "intervals, which need no curvature (experiments/fit_coverage.c measures both).\n"
+    "wls's treat correlated variogram bins as independent and understate the spread.\n";
 
 /* The command's options. */
 typedef struct {
