@@ -75,7 +75,7 @@
  * from the previous profile point.  An end
  * not reached within 12 units is the edge of the parameter's domain (0, or
  * +infinity for var, scale, nugget, nu, omega; 0 or 2 for alpha): the
- * data do not bound the parameter on that side.  Costs about 15 profile
+ * data do not bound the parameter on that side.  Costs about 7 profile
  * optimisations per end, each of some 10-60 likelihood evaluations.  These
  * intervals are the ones to quote for the spherical range: its likelihood
  * is not smooth in the range, and the Hessian's standard error understates
