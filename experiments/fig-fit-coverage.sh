@@ -17,7 +17,8 @@ fi
 "$xb/fit_coverage" spherical:scale=24 spherical 0 128 "$N" "$K" all > "$d/fit-coverage-spherical.tsv"
 rows() {
     awk -F'\t' -v m="$1" 'NR > 1 && $1 !~ /^#/ {
-        printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", m, $1, $2, $3, $4, $5, $6, $7, $8, $11 }' \
+        p = $11 == "-" ? "-" : $11 " of " $10
+        printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", m, $1, $2, $3, $4, $5, $6, $7, $8, p }' \
         "$d/fit-coverage-$1.tsv"
 }
 # The band.  If the intervals are exact, the count X of the K fields whose
@@ -46,9 +47,9 @@ $K fields of each model, 128 x 128 at unit spacing by circulant embedding (exact
 $K); from each, $N distinct grid nodes drawn at random are the data: the $size run. Each data set
 is fitted by WLS on its Matheron variogram (gstat's default width and cutoff, Cressie's weights
 N/gamma^2) and by ML started from the WLS fit. "sd" is the spread of the estimates over the
-fields, "mean se" the mean standard error the fits report; "Wald" is the share of fields whose
+fields, "mean se" the mean standard error the fits report ("fits": those with one); "Wald" is the share of fields whose
 interval est +- 1.96 se holds the true value, "profile" that of the 95% profile-likelihood
-interval (ML: the values within 3.841 of the minimum -2 log likelihood, the other parameters
+interval, "x of n" fits that returned one (ML: the values within 3.841 of the minimum -2 log likelihood, the other parameters
 re-optimised; analysis/fit.h). Nominal coverage 0.95.
 
 | model | method | parameter | true | fits | mean | sd | mean se | Wald | profile |
