@@ -85,8 +85,8 @@
  * is not smooth in the range, and the Hessian's standard error understates
  * the spread of the range by about 2x (experiments/fit_coverage.c, 100 data
  * sets of 500 points: the profile interval holds the spherical range 0.92
- * and var 0.93 of the time, the Wald interval 0.85 and 0.88; markov's scale
- * 0.93).  WLS fits report no intervals (lower, upper NaN).
+ * and var 0.93 of the time, the Wald interval 0.85 and 0.88; markov with a
+ * nugget: scale 0.93, var 0.98, nugget 0.96).  WLS fits report no intervals (lower, upper NaN).
  *
  * Statuses: NL_OK; NL_EINVAL (an unknown weighting, a family that cannot be fitted, a fixed
  * parameter the family does not have or out of its range, fewer bins with
