@@ -147,6 +147,8 @@ $(EXEMPLARS): tools/exemplars.sh | $(DEPS_OK)
 figures: $(BIN) $(EXP_BIN) $(EXEMPLARS)
 	@sh experiments/run-all.sh paper-figures
 
+# make experiments: the figures with the long runs (fig-fit-coverage.sh's full size).
+experiments: export NOISELAB_FULL := 1
 experiments: figures
 
 # The whole test suite under AddressSanitizer, UndefinedBehaviorSanitizer and

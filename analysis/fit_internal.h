@@ -6,6 +6,8 @@
 #include "fit.h"
 #include "../core/model.h"
 
+#include <gsl/gsl_matrix.h>
+
 typedef enum { NL_FIT_LOG, NL_FIT_LOGIT2 } nl_fit_transform;
 
 typedef struct {
@@ -19,6 +21,30 @@ typedef struct {
     size_t nfree;                                /* free parameters */
     size_t free_idx[NL_FIT_MAX_PARAMS];          /* their indices */
 } nl_fit_params;
+
+/* The likelihood of the data at the current parameters (analysis/fit_ml.c). */
+typedef struct {
+    nl_fit_params *p;       /* parameters */
+    const double *x, *z;    /* coordinates (n x dim), values */
+    size_t n;               /* data */
+    nl_fit_likelihood lik;  /* ML or REML */
+    gsl_matrix *C;          /* n x n covariance, then its Cholesky factor */
+    gsl_vector *y, *a;      /* L^-1 z, L^-1 1 */
+    double beta;            /* GLS mean of the last evaluation */
+} nl_fit_mldata;
+
+/* -2 l (ML or REML) at the free parameters u (p->value updated);
+ * NL_FIT_ML_BAD where the covariance is not positive definite. */
+#define NL_FIT_ML_BAD 1e300
+double nl_fit_ml_minus2l_u(nl_fit_mldata *d, const double *u);
+
+/* Profile-likelihood intervals (analysis/fit_profile.c) of the free
+ * parameters chosen by `which` (NL_FIT_INTERVALS_*) around the optimum
+ * u_hat (-2 l = f_hat), cov the Hessian's covariance of u (a first guess of
+ * the widths; NaN allowed).  Fills res->lower, res->upper (values, NaN for
+ * parameters not profiled) and leaves d at u_hat.  NL_OK or NL_ENOMEM. */
+int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const double *cov, int which,
+                   nl_fit_result *res);
 
 /* Check the family and the fixes, set names, fixed values, NaN elsewhere. */
 int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p);

@@ -13,21 +13,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Above this -2 l the parameters are off the model's domain (C not
- * positive definite): the simplex walks away from them. */
-#define ML_BAD 1e300
 /* Central-difference step of the Hessian in the transformed coordinates. */
 #define ML_HSTEP 2e-3
+#define ML_BAD NL_FIT_ML_BAD
 
-typedef struct {
-    nl_fit_params *p;       /* parameters */
-    const double *x, *z;    /* coordinates (n x dim), values */
-    size_t n;               /* data */
-    nl_fit_likelihood lik;  /* ML or REML */
-    gsl_matrix *C;          /* n x n covariance, then its Cholesky factor */
-    gsl_vector *y, *a;      /* L^-1 z, L^-1 1 */
-    double beta;            /* GLS mean of the last evaluation */
-} ml_data;
+typedef nl_fit_mldata ml_data;
 
 static int fill_cov(ml_data *d)
 {
@@ -68,11 +58,15 @@ static double minus2l(ml_data *d)
     return isfinite(q) ? q : ML_BAD;
 }
 
+double nl_fit_ml_minus2l_u(nl_fit_mldata *d, const double *u)
+{
+    nl_fit_params_from_u(d->p, u);
+    return minus2l(d);
+}
+
 static double objective(const gsl_vector *u, void *params)
 {
-    ml_data *d = params;
-    nl_fit_params_from_u(d->p, u->data);
-    return minus2l(d);
+    return nl_fit_ml_minus2l_u(params, u->data);
 }
 
 static double at_u(ml_data *d, const double *u0, size_t i, double di, size_t j, double dj)
@@ -99,17 +93,12 @@ static void ml_covariance(ml_data *d, const double *u0, double f0, double *cov)
                                  at_u(d, u0, i, -h, j, -h)) / (4 * h * h);
             hh[i * k + j] = hh[j * k + i] = v / 2;
         }
-    if (gsl_linalg_cholesky_decomp1(&H.matrix) || gsl_linalg_cholesky_invert(&H.matrix)) {
+    if (gsl_linalg_cholesky_decomp1(&H.matrix) || gsl_linalg_cholesky_invert(&H.matrix))
         for (size_t i = 0; i < k * k; i++)
             cov[i] = NAN;
-        return;
-    }
-    memcpy(cov, hh, k * k * sizeof *cov);
-    /* restore the parameters of u0 */
-    {
-        gsl_vector_const_view v = gsl_vector_const_view_array(u0, k);
-        objective(&v.vector, d);
-    }
+    else
+        memcpy(cov, hh, k * k * sizeof *cov);
+    nl_fit_ml_minus2l_u(d, u0); /* restore the parameters (and beta) of u0 */
 }
 
 /* Nelder-Mead from the current parameters, restarted once from its optimum
@@ -204,6 +193,8 @@ static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_
     size_t nn[2] = {n, n};
     int st;
     memset(res, 0, sizeof *res);
+    for (size_t k = 0; k < NL_FIT_MAX_PARAMS; k++)
+        res->lower[k] = res->upper[k] = NAN;
     if ((st = nl_fit_params_init(o, dim, &p)) || (st = check_data(x, z, n, dim, p.nfree)) ||
         (st = nl_size_check(2, nn, sizeof(double), 1, NULL)))
         return st;
@@ -215,12 +206,15 @@ static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_
         st = NL_ERROR(NL_ENOMEM, "out of memory for the %zu x %zu covariance matrix", n, n);
     if (!st && !(st = ml_minimise(&d, res, u))) {
         ml_covariance(&d, u, res->objective, cov);
+        if (o->intervals && (st = nl_fit_profile(&d, u, res->objective, cov, o->intervals, res)))
+            goto done;
         res->mean = d.beta;
         res->nobs = n;
         /* ML: the free covariance parameters and the mean */
         res->aic = res->objective + 2.0 * (double)(p.nfree + 1);
         st = nl_fit_params_result(&p, cov, res);
     }
+done:
     gsl_vector_free(d.a);
     gsl_vector_free(d.y);
     gsl_matrix_free(d.C);

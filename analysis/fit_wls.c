@@ -15,8 +15,14 @@ typedef struct {
     nl_fit_params *p;       /* parameters, updated at each evaluation */
     const double *h, *g, *n;/* used bins: distance, semivariance, pairs */
     size_t m;               /* used bins */
-    nl_fit_weights weights; /* Cressie or pairs */
+    nl_fit_weights weights; /* the weighting */
+    double *w;              /* m weights held fixed (reweighted, distance) */
 } wls_data;
+
+/* Outer steps of the reweighted fit at most, and its stop: every free
+ * transformed parameter moved less than this in one step. */
+#define WLS_REWEIGHT_STEPS 200
+#define WLS_REWEIGHT_TOL 1e-10
 
 /* gamma(h) = R(0) - R(h) of the current parameters at the m distances. */
 static int model_gamma(nl_fit_params *p, const double *h, size_t m, double *out)
@@ -48,7 +54,8 @@ static int residuals(const gsl_vector *x, void *params, gsl_vector *f)
     }
     for (size_t j = 0; j < d->m; j++) {
         double r = d->weights == NL_FIT_CRESSIE ? sqrt(d->n[j]) * (d->g[j] / gm[j] - 1)
-                                                : sqrt(d->n[j]) * (gm[j] - d->g[j]);
+                 : d->weights == NL_FIT_PAIRS   ? sqrt(d->n[j]) * (gm[j] - d->g[j])
+                                                : sqrt(d->w[j]) * (gm[j] - d->g[j]);
         gsl_vector_set(f, j, isfinite(r) ? r : 1e150);
     }
     free(gm);
@@ -133,6 +140,52 @@ done:
     return st;
 }
 
+/* Fixed weights: N_j / h_j^2 (distance), or N_j / g(h_j)^2 of the current
+ * parameters (reweighted); NL_EFAIL where the model's gamma is 0. */
+static int set_weights(wls_data *d)
+{
+    if (d->weights == NL_FIT_REWEIGHTED) {
+        int st = model_gamma(d->p, d->h, d->m, d->w);
+        if (st)
+            return st;
+    }
+    for (size_t j = 0; j < d->m; j++) {
+        double s = d->weights == NL_FIT_DISTANCE ? d->h[j] : d->w[j];
+        d->w[j] = d->n[j] / (s * s);
+        if (!isfinite(d->w[j]))
+            return NL_ERROR(NL_EFAIL, "fit: the model's semivariogram is 0 at distance %g: no weight N/gamma^2",
+                            d->h[j]);
+    }
+    return NL_OK;
+}
+
+/* Least squares with weights held fixed, re-computed from the fitted model
+ * after each solve until the parameters stop moving (gstat's fit.method 2
+ * fixed point); one solve for the other weightings. */
+static int solve_weighted(wls_data *d, nl_fit_result *res, double *cov)
+{
+    int st = NL_OK, steps = 0, moved = 1;
+    double u0[NL_FIT_MAX_PARAMS], u1[NL_FIT_MAX_PARAMS];
+    if (d->weights == NL_FIT_CRESSIE || d->weights == NL_FIT_PAIRS)
+        return solve(d, res, cov);
+    while (!st && moved && steps++ < WLS_REWEIGHT_STEPS) {
+        int before = res->iterations;
+        nl_fit_params_to_u(d->p, u0);
+        if ((st = set_weights(d)) || (st = solve(d, res, cov)))
+            break;
+        res->iterations += before;
+        nl_fit_params_to_u(d->p, u1);
+        moved = 0;
+        for (size_t k = 0; d->weights == NL_FIT_REWEIGHTED && k < d->p->nfree; k++)
+            moved |= fabs(u1[k] - u0[k]) >= WLS_REWEIGHT_TOL;
+    }
+    /* reweighted: converged when the weights' fixed point is (the last
+     * solve starts at its answer, where GSL may report no progress) */
+    if (d->weights == NL_FIT_REWEIGHTED)
+        res->converged = !moved;
+    return st;
+}
+
 static int fit_variogram(const double *distance, const double *gamma, const double *pairs, size_t nbins, int dim,
                          const nl_fit_options *o, nl_fit_result *res)
 {
@@ -141,22 +194,26 @@ static int fit_variogram(const double *distance, const double *gamma, const doub
     double cov[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS], *buf;
     int st;
     memset(res, 0, sizeof *res);
+    for (size_t k = 0; k < NL_FIT_MAX_PARAMS; k++)
+        res->lower[k] = res->upper[k] = NAN;
     res->mean = NAN;
     if ((st = nl_fit_params_init(o, dim, &p)))
         return st;
     if (p.nfree == 0)
         return NL_ERROR(NL_EINVAL, "fix: every parameter of %s is fixed; expected at least one free", p.family);
-    if (!(buf = malloc((3 * nbins + 1) * sizeof *buf)))
+    if ((unsigned)o->weights > NL_FIT_DISTANCE)
+        return NL_ERROR(NL_EINVAL, "weights: expected cressie, pairs, reweighted or distance, got %d", (int)o->weights);
+    if (!(buf = malloc((4 * nbins + 1) * sizeof *buf)))
         return NL_ERROR(NL_ENOMEM, "out of memory");
     d = (wls_data){&p, buf, buf + nbins, buf + 2 * nbins, used_bins(distance, gamma, pairs, nbins, buf),
-                   o->weights};
+                   o->weights, buf + 3 * nbins};
     if (d.m < p.nfree + 1) {
         free(buf);
         return NL_ERROR(NL_EINVAL, "fit: %zu variogram bins with pairs; expected at least %zu (the %zu free "
                         "parameters + 1)", d.m, p.nfree + 1, p.nfree);
     }
     wls_start(&p, &d, o->start);
-    st = solve(&d, res, cov);
+    st = solve_weighted(&d, res, cov);
     if (!st) {
         res->nobs = d.m;
         res->aic = (double)d.m * log(res->objective / (double)d.m) + 2.0 * (double)p.nfree;

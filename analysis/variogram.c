@@ -139,7 +139,22 @@ static int on_pair(void *ctx, size_t i, size_t j, double d2)
     return 0;
 }
 
-static int check_points(const nl_points *p, double *diag)
+/* The diagonal for gstat's default cutoff: its bounding box, except that in
+ * 3D gstat takes the z extent as the first point's z minus the smallest z
+ * (gstat's src/s.c updates minZ twice and never maxZ while it reads the
+ * points); followed so that default bins agree with gstat's.  Where that
+ * gives 0 (gstat then uses a cutoff of 1), the true diagonal. */
+static double gstat_diagonal(const nl_points *p, const double *lo, const double *hi, double diag)
+{
+    double s = 0;
+    for (int k = 0; k < p->dim; k++) {
+        double e = k == 2 ? p->pts[2] - lo[2] : hi[k] - lo[k];
+        s += e * e;
+    }
+    return s > 0 ? sqrt(s) : diag;
+}
+
+static int check_points(const nl_points *p, double *diag, double *gdiag)
 {
     double lo[3], hi[3], s = 0;
     *diag = 0;
@@ -161,6 +176,7 @@ static int check_points(const nl_points *p, double *diag)
         return NL_ERROR(NL_EINVAL, "variogram: the points span a distance that is not finite; expected finite coordinates");
     if (!(*diag > 0))
         return NL_ERROR(NL_EINVAL, "variogram: all %zu points are at one place; expected points at two places at least", p->n);
+    *gdiag = gstat_diagonal(p, lo, hi, *diag);
     return NL_OK;
 }
 
@@ -198,12 +214,12 @@ static int accumulate(const nl_spindex *s, const nl_points *p, const nl_vg_acc *
 
 int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out)
 {
-    double diag, *sums = NULL;
+    double diag = 0, gdiag = 0, *sums = NULL;
     nl_vg_acc a;
     nl_spindex *s = NULL;
     int st;
     *out = NULL;
-    if ((st = check_points(p, &diag)) || (st = nl_vg_check_options(o)) || (st = nl_vg_bins(o, diag, &a)))
+    if ((st = check_points(p, &diag, &gdiag)) || (st = nl_vg_check_options(o)) || (st = nl_vg_bins(o, gdiag, &a)))
         return st;
     if ((st = nl_spindex_alloc(p->dim, p->n, p->pts, &s)))
         return st;

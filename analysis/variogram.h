@@ -10,7 +10,11 @@
  *                / (2 (0.457 + 0.494 / N_k))
  * distance_k = mean h_ij of the bin's pairs.  Bins without a pair are left
  * out.  The default cutoff is gstat's: 0.33333 (gstat's constant, not
- * exactly 1/3) times the diagonal of the points' bounding box.  Directional variograms keep the pairs whose direction lies within
+ * exactly 1/3) times the diagonal of the points' bounding box, where for 3D
+ * points the box's z extent is, as in gstat, the first point's z minus the
+ * smallest z (gstat reads the points without tracking the largest z), so
+ * the default depends on the points' order in 3D; a field's default uses
+ * its whole box.  Directional variograms keep the pairs whose direction lies within
  * `tolerance` degrees of `direction` (either sense): gstat's alpha (degrees
  * clockwise from the y axis, "north", towards x) and tol.hor, in the x-y
  * plane (for 3D points the pair's projection onto the x-y plane; a pair

@@ -13,24 +13,31 @@
 
 static const char help[] =
     "usage: noiselab fit DATA.tsv|FIELD.exr --model FAMILY [--nugget] [--fix NAME=VALUE]...\n"
-    "                    [--method wls|ml|reml] [--weights cressie|pairs]\n"
+    "                    [--method wls|ml|reml]\n"
+    "                    [--weights cressie|pairs|reweighted|distance]\n"
     "                    [--width W] [--cutoff C] [--json]\n\n"
     "Fits a model family (markov, gauss, markaussian, oscillatory, gauss-osc, matern,\n"
     "spherical) to data: its var, scale (the spherical model's range), the nugget\n"
     "with --nugget, and its shape parameter (alpha, omega, nu), each unless fixed by\n"
     "--fix.  wls (default): weighted least squares on the empirical variogram (as\n"
-    "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2\n"
-    "(cressie, gstat's fit.method 2) or N (pairs, fit.method 1).  ml, reml: the\n"
+    "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2 of\n"
+    "the fitted model (cressie: Cressie's criterion; reweighted: the weights held\n"
+    "at the last fit and refitted to a fixed point, gstat's fit.method 2), N\n"
+    "(pairs, fit.method 1) or N/h^2 (distance, fit.method 7).  ml, reml: the\n"
     "Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step\n"
     "(a few thousand data), started from the wls fit.  Prints the fitted model as a\n"
     "spec for --acf, standard errors, the objective and AIC (compare models fitted\n"
-    "by one method to one data set: lower is better).  --json keys: model,\n"
-    "parameters, standard_errors, objective, aic, method, n.\n"
+    "by one method to one data set: lower is better).  ml and reml also print each\n"
+    "free parameter's 95% profile-likelihood interval (the values within 3.841 of\n"
+    "the minimum -2 log likelihood, the others re-optimised; \"unbounded\" when the\n"
+    "data set no upper limit).  --json keys: model, parameters, standard_errors,\n"
+    "objective, aic, method, n, and for ml and reml mean and intervals ([lower,\n"
+    "upper] per free parameter, upper null when unbounded).\n"
     "Standard errors: ml and reml's describe the spread of the estimates for\n"
-    "regular models (markov with a nugget: 95% intervals cover 0.91-0.96 of the\n"
-    "time); wls's treat correlated variogram bins as independent and understate it;\n"
-    "the spherical range's understate it by about 2x even with ml (its likelihood\n"
-    "is not smooth in the range), experiments/fit_coverage.c.\n";
+    "regular models (markov with a nugget); the spherical range's understate it by\n"
+    "about 2x (its likelihood is not smooth in the range): quote the profile\n"
+    "intervals, which need no curvature (experiments/fit_coverage.c measures both).\n"
+    "wls's treat correlated variogram bins as independent and understate the spread.\n";
 
 /* The command's options. */
 typedef struct {
@@ -59,11 +66,14 @@ static void parse_fix(opts_t *a, const char *s)
 
 static int pick(const char *opt, const char *s, const char *const *words, int n)
 {
+    char list[128] = "";
     for (int i = 0; i < n; i++)
         if (strcmp(s, words[i]) == 0)
             return i;
-    cli_die(2, "%s: expected %s or %s%s%s, got \"%s\"", opt, words[0], words[1], n > 2 ? " or " : "",
-            n > 2 ? words[2] : "", s);
+    for (int i = 0; i < n; i++)
+        snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", i == 0 ? "" : i < n - 1 ? ", " : " or ",
+                 words[i]);
+    cli_die(2, "%s: expected %s, got \"%s\"", opt, list, s);
 }
 
 static void parse(int argc, char **argv, opts_t *a)
@@ -74,7 +84,8 @@ static void parse(int argc, char **argv, opts_t *a)
         {"weights", required_argument, 0, 'W'},{"width", required_argument, 0, 'w'},
         {"cutoff", required_argument, 0, 'c'}, {"json", no_argument, 0, 'j'},
         {"help", no_argument, 0, 'h'},         {0}};
-    static const char *const methods[] = {"wls", "ml", "reml"}, *const weights[] = {"cressie", "pairs"};
+    static const char *const methods[] = {"wls", "ml", "reml"}, *const weights[] = {"cressie", "pairs", "reweighted",
+                                                                                       "distance"};
     int c;
     nl_variogram_options_default(&a->vo);
     while ((c = cli_getopt(argc, argv, ":h", opts, "fit")) != -1) {
@@ -83,7 +94,7 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'n': a->o.nugget = 1; break;
         case 'f': parse_fix(a, optarg); break;
         case 'M': a->method = pick("--method", optarg, methods, 3); break;
-        case 'W': a->o.weights = (nl_fit_weights)pick("--weights", optarg, weights, 2); break;
+        case 'W': a->o.weights = (nl_fit_weights)pick("--weights", optarg, weights, 4); break;
         case 'w': a->vo.width = cli_parse_positive("--width", optarg, "bin width"); break;
         case 'c': a->vo.cutoff = cli_parse_positive("--cutoff", optarg, "cutoff distance"); break;
         case 'j': a->json = 1; break;
@@ -140,28 +151,45 @@ static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
         double start[NL_FIT_MAX_PARAMS];
         memcpy(start, r->value, sizeof start);
         ml.start = start;
+        ml.intervals = NL_FIT_INTERVALS_ALL;
         st = nl_fit_ml(p->pts, p->val, p->n, p->dim, &ml, r);
     }
     return st;
 }
 
+/* An interval's end for the text output ("unbounded" for +infinity). */
+static const char *end_text(double v, char *buf, size_t size)
+{
+    if (isfinite(v))
+        snprintf(buf, size, "%.4g", v);
+    else
+        snprintf(buf, size, "unbounded");
+    return buf;
+}
+
 static void print_text(const opts_t *a, const nl_fit_result *r)
 {
     static const char *const mname[] = {"wls", "ml", "reml"};
+    static const char *const wname[] = {" (cressie weights)", " (pairs weights)", " (reweighted weights)",
+                                        " (distance weights)"};
     printf("model       %s\n", r->spec);
     printf("method      %s%s on %zu %s, %s after %d steps\n", mname[a->method],
-           a->method ? "" : a->o.weights == NL_FIT_PAIRS ? " (pairs weights)" : " (cressie weights)", r->nobs,
+           a->method ? "" : wname[a->o.weights], r->nobs,
            a->method ? "data" : "variogram bins", r->converged ? "converged" : "NOT converged", r->iterations);
-    printf("parameter   value         standard error\n");
+    printf("parameter   value         standard error%s\n", a->method ? "   95% profile-likelihood interval" : "");
     for (size_t k = 0; k < r->np; k++) {
-        char se[32];
+        char se[32], lo[32], hi[32];
         if (r->fixed[k])
             snprintf(se, sizeof se, "fixed");
         else if (isfinite(r->se[k]))
             snprintf(se, sizeof se, "%.4g", r->se[k]);
         else
             snprintf(se, sizeof se, "n/a (singular information)");
-        printf("%-11s %-13.6g %s\n", r->name[k], r->value[k], se);
+        if (isnan(r->lower[k]) || isnan(r->upper[k]))
+            printf("%-11s %-13.6g %s\n", r->name[k], r->value[k], se);
+        else
+            printf("%-11s %-13.6g %-16s %s to %s\n", r->name[k], r->value[k], se,
+                   end_text(r->lower[k], lo, sizeof lo), end_text(r->upper[k], hi, sizeof hi));
     }
     if (a->method)
         printf("mean        %.6g\n", r->mean);
@@ -180,8 +208,16 @@ static void print_json(const opts_t *a, const nl_fit_result *r)
     j = json_pack("{s:s,s:o,s:o,s:f,s:f,s:s,s:I,s:b,s:i}", "model", r->spec, "parameters", par, "standard_errors", se,
                   "objective", r->objective, "aic", r->aic, "method", mname[a->method], "n", (json_int_t)r->nobs,
                   "converged", r->converged, "iterations", r->iterations);
-    if (a->method)
+    if (a->method) {
+        json_t *iv = json_object();
+        for (size_t k = 0; k < r->np; k++)
+            if (!isnan(r->lower[k]) && !isnan(r->upper[k]))
+                json_object_set_new(iv, r->name[k], json_pack("[f,o]", r->lower[k],
+                                                              isfinite(r->upper[k]) ? json_real(r->upper[k])
+                                                                                    : json_null()));
         json_object_set_new(j, "mean", json_real(r->mean));
+        json_object_set_new(j, "intervals", iv);
+    }
     cli_json_print(j);
 }
 

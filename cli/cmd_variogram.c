@@ -18,11 +18,13 @@ static const char help[] =
     "[k W, (k + 1) W) for h < C; each bin reports the mean pair distance, gamma\n"
     "(Matheron: sum of squared differences / 2N; Cressie and Hawkins' robust\n"
     "estimator) and the pair count; empty bins are left out.  Defaults as gstat:\n"
-    "C = a third of the bounding-box diagonal, W = C / 15.  DATA.tsv: a header line\n"
-    "x [y [z]] value, then one row per point; a field (.exr, .png) is read as its\n"
-    "samples at i * spacing.  --direction: gstat's alpha, degrees clockwise from\n"
-    "+y towards +x, keeping pairs within T degrees (tol.hor) of it.  Writes a TSV\n"
-    "(distance, gamma, pairs) to -o or stdout; --json prints the three arrays.\n";
+    "C = a third of the bounding-box diagonal (for 3D points gstat's box, whose z\n"
+    "extent runs from the smallest z to the first point's), W = C / 15.  DATA.tsv:\n"
+    "a header line x [y [z]] value, then one row per point; a field (.exr, .png) is\n"
+    "read as its samples at i * spacing.  --direction: gstat's alpha, degrees\n"
+    "clockwise from +y towards +x, keeping pairs within T degrees (tol.hor) of it.\n"
+    "Writes a TSV (distance, gamma, pairs) to -o or stdout; --json prints the three\n"
+    "arrays.\n";
 
 /* The command's options. */
 typedef struct {

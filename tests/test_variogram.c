@@ -178,8 +178,7 @@ Test(variogram, equals_gstat_3d)
     make_points(3, n, 0, pts, val);
     snprintf(path, sizeof path, "%s/pts.tsv", scratch_dir());
     gstat_write_points(path, 3, n, pts, val);
-    /* explicit width and cutoff: gstat's default diagonal in 3D is not the
-     * bounding box's (0.33333 x a diagonal we could not identify) */
+    /* explicit width and cutoff (the default's 3D rule: tests/test_fit_gstat.c) */
     compare("variogram pts.tsv --json --cutoff 4.1 --width 0.29",
             "variogram(value ~ 1, locations = ~x + y + z, data = d, cutoff = 4.1, width = 0.29)", "3D");
 }

@@ -1,0 +1,155 @@
+/* Profile-likelihood intervals of ML and REML fits (Cox and Hinkley 1974,
+ * sec. 9.3; Venzon and Moolgavkar 1988): the values of one parameter whose
+ * profile -2 l, the other parameters re-optimised, stays within the 95%
+ * point of chi^2_1 of the minimum.  Each end is bracketed outwards from the
+ * optimum and found by GSL's Brent solver; the inner optimisations are
+ * GSL's Nelder-Mead simplex, warm-started from the previous profile point. */
+#include "fit_internal.h"
+#include "../core/nl_error.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multimin.h>
+#include <gsl/gsl_roots.h>
+#include <math.h>
+#include <string.h>
+
+#define PR_CHI2 3.841458820694124 /* chi^2_1's 0.95 quantile */
+#define PR_REACH 12.0             /* farthest end searched, transformed units */
+#define PR_TOL 1e-3               /* ends to this, transformed units */
+#define PR_SIMPLEX 1e-3           /* inner simplex size at convergence */
+#define PR_INNER_STEPS 500        /* inner simplex steps at most */
+#define PR_ROOT_STEPS 60          /* Brent steps at most */
+#define PR_WINDOW 10              /* inner steps between progress checks */
+#define PR_GAIN 1e-4              /* least gain of -2 l per window */
+
+typedef struct {
+    nl_fit_mldata *d;              /* the likelihood */
+    size_t j;                      /* the profiled free parameter */
+    double t;                      /* its transformed value */
+    double u[NL_FIT_MAX_PARAMS];   /* the last profile point (the others' warm start) */
+    double cutoff;                 /* minimum -2 l + chi^2_1(0.95) */
+    gsl_multimin_fminimizer *nm;   /* over the other free parameters; NULL when none */
+} profile;
+
+/* -2 l with the profiled parameter at t and the others at v. */
+static double inner(const gsl_vector *v, void *params)
+{
+    profile *pr = params;
+    double u[NL_FIT_MAX_PARAMS];
+    for (size_t i = 0, m = 0; i < pr->d->p->nfree; i++)
+        u[i] = i == pr->j ? pr->t : v->data[m++];
+    return nl_fit_ml_minus2l_u(pr->d, u);
+}
+
+/* The profile -2 l at t minus the cutoff (negative inside the interval). */
+static double excess(double t, void *params)
+{
+    profile *pr = params;
+    size_t k = pr->d->p->nfree;
+    double v[NL_FIT_MAX_PARAMS], step[NL_FIT_MAX_PARAMS], f;
+    pr->t = t;
+    if (!pr->nm) {
+        pr->u[pr->j] = t;
+        return nl_fit_ml_minus2l_u(pr->d, pr->u) - pr->cutoff;
+    }
+    for (size_t i = 0, m = 0; i < k; i++)
+        if (i != pr->j)
+            step[m] = 0.1, v[m++] = pr->u[i];
+    gsl_vector_view vv = gsl_vector_view_array(v, k - 1), sv = gsl_vector_view_array(step, k - 1);
+    gsl_multimin_function F = {inner, k - 1, pr};
+    gsl_multimin_fminimizer_set(pr->nm, &F, &vv.vector, &sv.vector);
+    /* until the simplex is small, or -2 l gained less than PR_GAIN over
+     * the last PR_WINDOW steps (a flat direction, such as a nugget heading
+     * to 0, would take the simplex far for nothing) */
+    for (int it = 1, prev = 0; it <= PR_INNER_STEPS; it++) {
+        double fm;
+        if (gsl_multimin_fminimizer_iterate(pr->nm) ||
+            gsl_multimin_test_size(gsl_multimin_fminimizer_size(pr->nm), PR_SIMPLEX) != GSL_CONTINUE)
+            break;
+        fm = gsl_multimin_fminimizer_minimum(pr->nm);
+        if (it % PR_WINDOW == 0) {
+            if (prev && f - fm < PR_GAIN)
+                break;
+            f = fm, prev = 1;
+        }
+    }
+    f = gsl_multimin_fminimizer_minimum(pr->nm);
+    if (f < NL_FIT_ML_BAD) {
+        const gsl_vector *x = gsl_multimin_fminimizer_x(pr->nm);
+        for (size_t i = 0, m = 0; i < k; i++)
+            pr->u[i] = i == pr->j ? t : gsl_vector_get(x, m++);
+    }
+    return f - pr->cutoff;
+}
+
+/* The end of the interval on side dir (+1 upper, -1 lower) in transformed
+ * units, or dir x infinity when the profile stays below the cutoff for
+ * PR_REACH units; se: the Hessian's standard error of u_j (a first step). */
+static double find_end(profile *pr, gsl_root_fsolver *rs, const double *u_hat, double se, int dir)
+{
+    size_t j = pr->j;
+    double step = isfinite(se) && se > 0 ? fmin(1.96 * se, PR_REACH) : 0.5, a = u_hat[j], b, lo, hi;
+    gsl_function F = {excess, pr};
+    memcpy(pr->u, u_hat, pr->d->p->nfree * sizeof *pr->u);
+    for (;;) {
+        b = u_hat[j] + dir * step;
+        if (excess(b, pr) >= 0)
+            break;
+        if (step >= PR_REACH)
+            return dir * INFINITY;
+        a = b;
+        step = fmin(2 * step, PR_REACH);
+    }
+    lo = fmin(a, b), hi = fmax(a, b);
+    if (gsl_root_fsolver_set(rs, &F, lo, hi))
+        return b; /* no sign change on a second look: the conservative end */
+    for (int it = 0; it < PR_ROOT_STEPS; it++) {
+        if (gsl_root_fsolver_iterate(rs))
+            break;
+        lo = gsl_root_fsolver_x_lower(rs), hi = gsl_root_fsolver_x_upper(rs);
+        if (gsl_root_test_interval(lo, hi, PR_TOL, 0) != GSL_CONTINUE)
+            break;
+    }
+    return gsl_root_fsolver_root(rs);
+}
+
+/* A transformed value back to the parameter's (infinities to the domain's
+ * edges). */
+static double value_of(const nl_fit_params *p, size_t k, double u)
+{
+    return p->tr[p->free_idx[k]] == NL_FIT_LOG ? exp(u) : 2 / (1 + exp(-u));
+}
+
+int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const double *cov, int which,
+                   nl_fit_result *res)
+{
+    nl_fit_params *p = d->p;
+    size_t k = p->nfree;
+    profile pr = {d, 0, 0, {0}, f_hat + PR_CHI2, NULL};
+    gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    int st = NL_OK;
+    for (size_t i = 0; i < NL_FIT_MAX_PARAMS; i++)
+        res->lower[i] = res->upper[i] = NAN;
+    if (k > 1)
+        pr.nm = gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, k - 1);
+    if (!rs || (k > 1 && !pr.nm)) {
+        st = NL_ERROR(NL_ENOMEM, "out of memory");
+        goto done;
+    }
+    for (size_t j = 0; j < k; j++) {
+        size_t q = p->free_idx[j];
+        double se = sqrt(cov[j * k + j]);
+        if (which == NL_FIT_INTERVALS_SCALE && strcmp(p->name[q], "scale") != 0)
+            continue;
+        pr.j = j;
+        res->lower[q] = value_of(p, j, find_end(&pr, rs, u_hat, se, -1));
+        res->upper[q] = value_of(p, j, find_end(&pr, rs, u_hat, se, +1));
+    }
+done:
+    if (pr.nm)
+        gsl_multimin_fminimizer_free(pr.nm);
+    if (rs)
+        gsl_root_fsolver_free(rs);
+    nl_fit_ml_minus2l_u(d, u_hat); /* back to the optimum (values and beta) */
+    return st;
+}

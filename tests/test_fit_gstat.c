@@ -1,0 +1,127 @@
+/* Against gstat (R): the default variogram of 3D points, and the weighted
+ * least-squares fits of fit.variogram (fit.method 1, 2 and 7) on the same
+ * empirical variogram.  Each test prints a skip line when R with gstat is
+ * not installed. */
+#include "gstat.h"
+#include "util.h"
+
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* Deterministic uniform numbers in [0, 1) (a 64-bit LCG's top bits). */
+static double unif(unsigned long long *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) / 9007199254740992.0;
+}
+
+/* gstat's default cutoff for 3D points is 0.33333 x a diagonal whose z
+ * extent is the first point's z minus the smallest z (analysis/variogram.h):
+ * the first point sits at z = 1.7 in [0, 3.1), so the rule differs from
+ * the true diagonal's.  Bins, distances, gammas and pair counts must be
+ * gstat's: the same pairs in the same bins (equal counts), sums of the
+ * same terms in another order (1e-9 relative, as tests/test_variogram.c). */
+Test(fit_gstat, variogram_default_3d)
+{
+    if (!gstat_available("default 3D variogram vs gstat"))
+        return;
+    enum { N = 300 };
+    static const double ext[3] = {10.37, 7.9, 3.1};
+    double pts[3 * N], val[N], r[3 * 64];
+    unsigned long long s = 4243;
+    char path[512];
+    for (int i = 0; i < N; i++) {
+        for (int k = 0; k < 3; k++)
+            pts[3 * i + k] = i == 0 && k == 2 ? 1.7 : ext[k] * unif(&s);
+        val[i] = 0.3 * pts[3 * i] + 2 * sin(pts[3 * i + 2]) + unif(&s) - 0.5;
+    }
+    snprintf(path, sizeof path, "%s/pts3.tsv", scratch_dir());
+    gstat_write_points(path, 3, N, pts, val);
+    long m = gstat_run("suppressMessages(library(gstat))\nd <- read.delim('pts3.tsv')\n"
+                       "v <- variogram(value ~ 1, locations = ~x + y + z, data = d)\n"
+                       "cat(sprintf('%d %.17g %.17g', v$np, v$dist, v$gamma), sep = '\\n')\n",
+                       r, 3 * 64);
+    cr_assert(m > 0 && m % 3 == 0, "R failed (%ld numbers)", m);
+    json_t *j = run_noiselab_json("variogram pts3.tsv --json");
+    json_t *jd = json_object_get(j, "distance"), *jg = json_object_get(j, "gamma"), *jp = json_object_get(j, "pairs");
+    cr_assert_eq(json_array_size(jd), (size_t)m / 3, "%zu bins, gstat %ld", json_array_size(jd), m / 3);
+    for (size_t k = 0; k < (size_t)m / 3; k++) {
+        double np = json_real_value(json_array_get(jp, k)), d = json_real_value(json_array_get(jd, k));
+        double g = json_real_value(json_array_get(jg, k));
+        cr_expect_eq(np, r[3 * k], "bin %zu: pairs %g, gstat %g", k, np, r[3 * k]);
+        cr_expect(fabs(d - r[3 * k + 1]) <= 1e-9 * r[3 * k + 1], "bin %zu: distance %.17g, gstat %.17g", k, d,
+                  r[3 * k + 1]);
+        cr_expect(fabs(g - r[3 * k + 2]) <= 1e-9 * r[3 * k + 2], "bin %zu: gamma %.17g, gstat %.17g", k, g,
+                  r[3 * k + 2]);
+    }
+    json_decref(j);
+}
+
+/* R: fit.variogram on gstat's variogram of DATA, for fit.method 1, 2 and 7,
+ * each repeated from its own result until a call changes no parameter by
+ * 1e-13 relative (one call stops when the weighted SS improves by less
+ * than 1e-5 relative, its fit_limit, which leaves methods 1 and 2 up to
+ * 1e-2 from their fixed point: measured 7% of the nugget).  Prints var,
+ * range, nugget per method. */
+static const char fit_script[] =
+    "suppressMessages(library(gstat))\nd <- read.delim('%s', comment.char = '#')\n"
+    "v <- variogram(value ~ 1, locations = ~x + y, data = d)\n"
+    "for (fm in c(1, 2, 7)) {\n"
+    "  f <- vgm(1, '%s', %g, 0.1)\n"
+    "  for (i in 1:200) {\n"
+    "    g <- suppressWarnings(fit.variogram(v, f, fit.method = fm))\n"
+    "    ch <- max(abs(c(g$psill, g$range[2]) / c(f$psill, f$range[2]) - 1)); f <- g\n"
+    "    if (ch < 1e-13) break\n"
+    "  }\n"
+    "  cat(sprintf('%%.17g %%.17g %%.17g', f$psill[2], f$range[2], f$psill[1]), sep = '\\n')\n"
+    "}\n";
+
+/* Our WLS fits equal gstat's fixed points: --weights pairs (fit.method 1),
+ * reweighted (fit.method 2: weights N / gamma_model^2 held within a solve,
+ * then refreshed) and distance (7: N / h^2); markov is gstat's Exp with
+ * range = scale, spherical its Sph.  Tolerance: both solvers stop on the
+ * objective, not on the parameters: ours when a step or the gradient is
+ * below 1e-10 (relative, log-parameters), gstat when a call changes
+ * nothing by 1e-13.  An objective resolved to 1e-10 relative resolves the
+ * parameters of a quadratic minimum to about sqrt(1e-10) = 1e-5 of their
+ * scale: 1e-5 of the sill (var + nugget) for var and nugget, 1e-5 relative
+ * for the range.  Data: 400 nearest-node samples of a circulant field with
+ * a nugget (a positive nugget for gstat's unconstrained fit to find). */
+Test(fit_gstat, wls_equals_fit_variogram)
+{
+    if (!gstat_available("fit vs gstat fit.variogram"))
+        return;
+    static const struct {
+        const char *spec, *family, *gstat, *file;
+        double range;
+    } cases[] = {{"markov:scale=8,nugget=0.3", "markov", "Exp", "pm.tsv", 8},
+                 {"spherical:scale=24,nugget=0.05", "spherical", "Sph", "ps.tsv", 25}};
+    static const char *weights[3] = {"pairs", "reweighted", "distance"};
+    for (int c = 0; c < 2; c++) {
+        char cmd[512], script[2048];
+        double r[9];
+        snprintf(cmd, sizeof cmd, "synth circulant --acf %s --size 128x128 --seed %d -o f.exr", cases[c].spec, 3 + c);
+        cr_assert_eq(run_noiselab(cmd, NULL, 0, NULL, 0), 0, "%s", cmd);
+        snprintf(cmd, sizeof cmd, "sample f.exr --random 400 --seed %d --interpolation nearest -o %s", 5 + c,
+                 cases[c].file);
+        cr_assert_eq(run_noiselab(cmd, NULL, 0, NULL, 0), 0, "%s", cmd);
+        snprintf(script, sizeof script, fit_script, cases[c].file, cases[c].gstat, cases[c].range);
+        cr_assert_eq(gstat_run(script, r, 9), 9, "%s: R failed", cases[c].family);
+        for (int w = 0; w < 3; w++) {
+            snprintf(cmd, sizeof cmd, "fit %s --model %s --nugget --weights %s --json", cases[c].file,
+                     cases[c].family, weights[w]);
+            json_t *j = run_noiselab_json(cmd), *p = json_object_get(j, "parameters");
+            double var = json_real_value(json_object_get(p, "var")), scale = json_real_value(json_object_get(p, "scale"));
+            double nug = json_real_value(json_object_get(p, "nugget")), *g = r + 3 * w, sill = g[0] + g[2];
+            cr_expect(json_is_true(json_object_get(j, "converged")), "%s: not converged", cmd);
+            cr_expect(fabs(var - g[0]) <= 1e-5 * sill, "%s: var %.10g, gstat %.10g", cmd, var, g[0]);
+            cr_expect(fabs(nug - g[2]) <= 1e-5 * sill, "%s: nugget %.10g, gstat %.10g", cmd, nug, g[2]);
+            cr_expect(fabs(scale - g[1]) <= 1e-5 * g[1], "%s: scale %.10g, gstat range %.10g", cmd, scale, g[1]);
+            fprintf(stderr, "fit vs gstat: %s %s: |d var| %.2g, |d scale|/scale %.2g, |d nugget| %.2g (sill %.4g)\n",
+                    cases[c].family, weights[w], fabs(var - g[0]), fabs(scale / g[1] - 1), fabs(nug - g[2]), sill);
+            json_decref(j);
+        }
+    }
+}
