@@ -199,12 +199,15 @@ fuzz: $(DEPS_OK)
 	done
 
 # Speed against this machine's floor, measured in the same run (TSV).
-bench: $(BIN)
+# Steady state: measured FFTW plans (the installed wisdom, or measured
+# here and kept in the cache); tools/bench-firstrun.sh times first runs.
+bench: $(BIN) $(WISDOM)
 	@mkdir -p $(BUILD)/bench
-	$(BIN) bench | tee $(BUILD)/bench/bench.tsv
+	NOISELAB_FFTW=measure NOISELAB_WISDOM=$(abspath $(WISDOM)) $(BIN) bench | tee $(BUILD)/bench/bench.tsv
 	gnuplot -e "in='$(BUILD)/bench/bench.tsv'; out='$(BUILD)/bench/bench.png'" tools/bench-plot.gp
-	sh tools/bench-r.sh $(BIN) $(BUILD)/bench/r | tee $(BUILD)/bench/bench-r.tsv
-	sh tools/bench-gstat.sh $(BIN) $(BUILD)/bench/gstat | tee $(BUILD)/bench/bench-gstat.tsv
+	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-r.sh $(BIN) $(BUILD)/bench/r | tee $(BUILD)/bench/bench-r.tsv
+	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-gstat.sh $(BIN) $(BUILD)/bench/gstat | tee $(BUILD)/bench/bench-gstat.tsv
+	sh tools/bench-firstrun.sh $(BIN) $(abspath $(WISDOM)) $(BUILD)/bench/first | tee $(BUILD)/bench/bench-firstrun.tsv
 	@echo "bench: $(BUILD)/bench/bench.tsv, bench.png and (with R installed) bench-r.tsv"
 
 clean:
