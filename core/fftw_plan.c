@@ -34,18 +34,20 @@ static void cache_path(void)
 /* Measured wisdom, later sources adding to earlier ones: FFTW's system
  * wisdom (/etc/fftw/wisdom, from fftw-wisdom), the wisdom installed with
  * noiselab (make wisdom), $NOISELAB_WISDOM, the user's cache.  A missing or
- * foreign file (another FFTW) is skipped. */
+ * foreign file (another FFTW) is skipped.  None under NOISELAB_FFTW=estimate. */
 static void setup(void)
 {
-    const char *extra = getenv("NOISELAB_WISDOM");
+    const char *extra = getenv("NOISELAB_WISDOM"), *e = getenv("NOISELAB_FFTW");
     ready = 1;
     fftw_init_threads();
     fftw_make_planner_thread_safe();
+    cache_path();
+    if (e && strcmp(e, "estimate") == 0)
+        return;
     fftw_import_system_wisdom();
     fftw_import_wisdom_from_filename(NL_WISDOM_FILE);
     if (extra && *extra)
         fftw_import_wisdom_from_filename(extra);
-    cache_path();
     if (cache[0])
         fftw_import_wisdom_from_filename(cache);
 }

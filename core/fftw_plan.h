@@ -11,7 +11,8 @@
  * $NOISELAB_WISDOM, and the user's cache $XDG_CACHE_HOME/noiselab/fftw-wisdom
  * (~/.cache/... by default).  NOISELAB_FFTW=measure plans every size with
  * FFTW_MEASURE and keeps the plans in that cache (nl_fftw_save), so later
- * runs at those sizes use them; NOISELAB_FFTW=estimate is the default.
+ * runs at those sizes use them; NOISELAB_FFTW=estimate plans as a machine
+ * without any wisdom does (none is loaded; the tests use it).
  * Either plan gives the same result to rounding (tests/test_fft_props.c,
  * tests/test_fftw_wisdom.c).
  *

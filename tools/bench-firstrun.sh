@@ -1,8 +1,9 @@
 #!/bin/sh
 # First run against steady state of `noiselab synth fft` (2D, N^2), end to
 # end, medians of REPS interleaved runs (each a new process):
-#   first:   a fresh machine: no wisdom anywhere (an empty cache folder and
-#            no installed wisdom), so FFTW_ESTIMATE plans;
+#   first:   a fresh machine: no wisdom anywhere (an empty cache folder;
+#            NOISELAB_FFTW=estimate loads no installed wisdom either), so
+#            FFTW_ESTIMATE plans;
 #   steady:  measured wisdom for the size (the file `make wisdom` makes,
 #            given as WISDOM), which the same FFTW_ESTIMATE planner takes;
 #   measure: the former policy's first run, FFTW_MEASURE planning into an
@@ -31,7 +32,7 @@ printf 'size\tfirst_s\tsteady_s\tfirst/steady\tmeasure_first_s\tmeasure_first/st
 for n in $sizes; do
     : > "$w/first" && : > "$w/steady" && : > "$w/measure"
     for r in $(seq "$reps"); do
-        one "$n" NOISELAB_WISDOM= >> "$w/first"
+        one "$n" NOISELAB_WISDOM= NOISELAB_FFTW=estimate >> "$w/first"
         one "$n" NOISELAB_WISDOM="$wis" >> "$w/steady"
         one "$n" NOISELAB_WISDOM= NOISELAB_FFTW=measure >> "$w/measure"
     done
