@@ -7,8 +7,10 @@
  * one.  The property checked is exact equality (memcmp), not a tolerance:
  * a thread count must not change a result.  The sizes are large enough that
  * OpenBLAS does split them (a 2304 x 2304 and a 1500 x 1500 factorisation,
- * dtrsm on 1500 x NL_KRIGE_BLOCK blocks). */
+ * dtrsm on 1500 x NL_KRIGE_BLOCK blocks, 600 x NL_KRIGE_BLOCK for universal
+ * kriging). */
 #include "../analysis/krige.h"
+#include "../analysis/krige_local.h"
 #include "../core/field.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -89,4 +91,41 @@ Test(blas_threads, kriging)
     for (int t = 0; t < T; t++)
         free(e[t]), free(v[t]), nl_field_free(ge[t]), nl_field_free(gv[t]);
     nl_model_free(m), free(pts), free(val), free(x);
+}
+
+/* Universal kriging (linear drift) with the global neighbourhood: blocks of
+ * locations solved together (dtrsm, dgemm) in an OpenMP region. */
+Test(blas_threads, universal_kriging_global_neighbourhood)
+{
+    enum { N = 600 };
+    size_t g[2] = {64, 48};
+    double *pts = malloc(2 * N * sizeof *pts), *val = malloc(N * sizeof *val), lo[2] = {0, 0};
+    double h[2] = {1.0 / 64, 1.0 / 48};
+    nl_field *ge[T], *gv[T];
+    nl_model *m = test_model("markov:scale=0.3");
+    nl_krige_local_options o = {.nmax = 0, .drift = NL_DRIFT_LINEAR};
+    int st, saved = omp_get_max_threads();
+    for (size_t i = 0; i < N; i++) {
+        pts[2 * i] = nl_rng_uniform(23, 1, 2 * i), pts[2 * i + 1] = nl_rng_uniform(23, 1, 2 * i + 1);
+        val[i] = 2.385 + pts[2 * i] + nl_rng_gauss(23, 2, i);
+    }
+    for (int t = 0; t < T; t++) {
+        nl_krige_local *k;
+        omp_set_num_threads(threads[t]);
+        cr_assert_eq(nl_krige_local_alloc(m, 2, N, pts, val, &o, &k), NL_OK);
+        ge[t] = nl_field_alloc(2, g, h, &st), gv[t] = nl_field_alloc(2, g, h, &st);
+        cr_assert(ge[t] && gv[t]);
+        cr_assert_eq(nl_krige_local_grid(k, lo, ge[t], gv[t]), NL_OK);
+        nl_krige_local_free(k);
+    }
+    omp_set_num_threads(saved);
+    for (int t = 1; t < T; t++) {
+        cr_expect_eq(memcmp(ge[0]->data, ge[t]->data, ge[0]->count * sizeof(double)), 0, "estimates, %d threads",
+                     threads[t]);
+        cr_expect_eq(memcmp(gv[0]->data, gv[t]->data, gv[0]->count * sizeof(double)), 0, "variances, %d threads",
+                     threads[t]);
+    }
+    for (int t = 0; t < T; t++)
+        nl_field_free(ge[t]), nl_field_free(gv[t]);
+    nl_model_free(m), free(pts), free(val);
 }
