@@ -299,15 +299,6 @@ static int krige_eval(const nl_krige_plan *p, const double *x, double *est, doub
     return NL_OK;
 }
 
-/* The variance of many points at once: with Z = L^-1 K for the n x B
- * cross-covariances K of a block, c0^T C^-1 c0 = |z_b|^2 (column norms) and
- * 1^T C^-1 c0 = (L^-1 1) . z_b, so one level-3 triangular solve (BLAS dtrsm,
- * n^2 B flops at GEMM speed) serves all NL_KRIGE_BLOCK points of a block.
- * A block always has NL_KRIGE_BLOCK columns (a short last block is padded
- * with zeros), so its arithmetic does not depend on the thread that runs it;
- * inside an OpenMP region BLAS runs on one thread (OpenBLAS's OpenMP build),
- * outside it splits the columns between threads, which gives the same bits
- * (tests/test_blas_threads.c). */
 /* cc_b = |z_b|^2 and uc_b = w . z_b over the columns of the n x
  * NL_KRIGE_BLOCK row-major z, row by row (each sum in the order i = 0..n-1). */
 static void column_sums(const nl_krige_plan *p, size_t n, const double *z, double *cc, double *uc)
@@ -322,6 +313,15 @@ static void column_sums(const nl_krige_plan *p, size_t n, const double *z, doubl
     }
 }
 
+/* The variance of many points at once: with Z = L^-1 K for the n x B
+ * cross-covariances K of a block, c0^T C^-1 c0 = |z_b|^2 (column norms) and
+ * 1^T C^-1 c0 = (L^-1 1) . z_b, so one level-3 triangular solve (BLAS dtrsm,
+ * n^2 B flops at GEMM speed) serves all NL_KRIGE_BLOCK points of a block.
+ * A block always has NL_KRIGE_BLOCK columns (a short last block is padded
+ * with zeros), so its arithmetic does not depend on the thread that runs it;
+ * inside an OpenMP region BLAS runs on one thread (OpenBLAS's OpenMP build),
+ * outside it splits the columns between threads, which gives the same bits
+ * (tests/test_blas_threads.c). */
 static int krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var)
 {
     size_t n = p->n, B = NL_KRIGE_BLOCK;
