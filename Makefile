@@ -10,7 +10,7 @@ CC        ?= gcc
 OPT       ?= -O2 -g
 CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
              -I/usr/include/OpenEXR
-LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lgslcblas -lpng -ljansson -lmatheval -lm
+LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lmatheval -lm
 BUILD     := build
 
 LIB_SRC   := $(wildcard core/*.c synth/*.c analysis/*.c render/*.c)
@@ -38,13 +38,14 @@ INCLUDEDIR ?= $(PREFIX)/include
 MANDIR    ?= $(PREFIX)/share/man
 DOCDIR    ?= $(PREFIX)/share/doc/noiselab
 PCDIR     ?= $(LIBDIR)/pkgconfig
+DATADIR   ?= $(PREFIX)/share
 # noiselab.pc names the folders under PREFIX relative to it (${prefix}/lib).
 PC_LIBDIR  = $(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))
 PC_INCLUDEDIR = $(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))
 # Public headers: every module header but the *_internal.h ones.
 PUB_HDR   := $(filter-out %_internal.h,$(wildcard core/*.h synth/*.h analysis/*.h render/*.h))
 
-.PHONY: all deps test figures experiments bench asan fuzz clean install uninstall
+.PHONY: all deps wisdom test figures experiments bench asan fuzz clean install uninstall
 .SECONDARY:
 all: $(BIN) $(LIB) $(SOLIB) $(MAN)
 
@@ -65,6 +66,8 @@ $(LIB_OBJ): Makefile
 # The Gaussian kernel gives the same bits on every SIMD path only without
 # fused multiply-adds (core/rng_kernel_internal.h).
 $(BUILD)/core/rng%.o: CFLAGS += -ffp-contract=off
+# Where the planner finds the measured FFTW wisdom that install puts there.
+$(BUILD)/core/fftw_plan.o: CFLAGS += -DNL_WISDOM_FILE='"$(DATADIR)/noiselab/fftw-wisdom"'
 
 $(LIB): $(LIB_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
@@ -106,14 +109,24 @@ test: all $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN)
 	NOISELAB_FFTW=estimate sh tests/doc/run.sh $(BINDIR)
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
-	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) sh tools/test-install.sh
+	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) WISDOM_SIZES=64 sh tools/test-install.sh
+
+# Measured FFTW wisdom for 2D fields of WISDOM_SIZES^2 (and circulant
+# embeddings of them), installed where the planner looks (core/fftw_plan.h),
+# so that first runs at these sizes use measured plans without planning.
+WISDOM_SIZES ?= 256 512 1024 2048 4096
+WISDOM    := $(BUILD)/fftw-wisdom-$(subst $() ,-,$(strip $(WISDOM_SIZES)))
+$(WISDOM): tools/wisdom.sh | $(BIN)
+	sh tools/wisdom.sh $(BIN) $@ $(WISDOM_SIZES)
+wisdom: $(WISDOM)
 
 # DESTDIR, PREFIX, LIBDIR, INCLUDEDIR, MANDIR, DOCDIR, PCDIR as usual, and
 # INSTALL_BINDIR (BINDIR is where the build puts the program).
 # Headers go to INCLUDEDIR/noiselab/{core,synth,analysis,render}/ (the tree's
 # layout, so their relative includes hold) and noiselab.h to INCLUDEDIR.
-install: all
+install: all $(WISDOM)
 	install -d $(DESTDIR)$(INSTALL_BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PCDIR) $(DESTDIR)$(MANDIR)/man1 \
+	    $(DESTDIR)$(DATADIR)/noiselab \
 	    $(DESTDIR)$(DOCDIR)/examples $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render)
 	install -m 755 $(BIN) $(DESTDIR)$(INSTALL_BINDIR)/noiselab
 	install -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libnoiselab.a
@@ -126,17 +139,18 @@ install: all
 	    -e 's|@VERSION@|$(VERSION)|; s|@LIBS_PRIVATE@|-fopenmp $(LDLIBS)|' noiselab.pc.in > $(DESTDIR)$(PCDIR)/noiselab.pc
 	install -m 644 $(MAN) $(DESTDIR)$(MANDIR)/man1/noiselab.1
 	install -m 644 examples/*.c $(DESTDIR)$(DOCDIR)/examples/
+	install -m 644 $(WISDOM) $(DESTDIR)$(DATADIR)/noiselab/fftw-wisdom
 	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ]; then ldconfig || true; fi
 
 # Removes exactly what install put there, then the folders it left empty.
 uninstall:
 	rm -f $(DESTDIR)$(INSTALL_BINDIR)/noiselab $(DESTDIR)$(LIBDIR)/libnoiselab.a $(DESTDIR)$(LIBDIR)/libnoiselab.so \
 	    $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/$(notdir $(SOLIB)) $(DESTDIR)$(PCDIR)/noiselab.pc \
-	    $(DESTDIR)$(MANDIR)/man1/noiselab.1 $(DESTDIR)$(INCLUDEDIR)/noiselab.h \
+	    $(DESTDIR)$(MANDIR)/man1/noiselab.1 $(DESTDIR)$(INCLUDEDIR)/noiselab.h $(DESTDIR)$(DATADIR)/noiselab/fftw-wisdom \
 	    $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,$(PUB_HDR)) \
 	    $(addprefix $(DESTDIR)$(DOCDIR)/examples/,$(notdir $(wildcard examples/*.c)))
 	rmdir $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render) $(DESTDIR)$(INCLUDEDIR)/noiselab \
-	    $(DESTDIR)$(DOCDIR)/examples $(DESTDIR)$(DOCDIR) 2>/dev/null || true
+	    $(DESTDIR)$(DOCDIR)/examples $(DESTDIR)$(DOCDIR) $(DESTDIR)$(DATADIR)/noiselab 2>/dev/null || true
 
 # Every experiment writes its data, picture and verdict into paper-figures/.
 # Exemplar images from Debian packages' data (python3-skimage, gimp-data; not committed).
@@ -190,12 +204,15 @@ fuzz: $(DEPS_OK)
 	done
 
 # Speed against this machine's floor, measured in the same run (TSV).
-bench: $(BIN)
+# Steady state: measured FFTW plans (the installed wisdom, or measured
+# here and kept in the cache); tools/bench-firstrun.sh times first runs.
+bench: $(BIN) $(WISDOM)
 	@mkdir -p $(BUILD)/bench
-	$(BIN) bench | tee $(BUILD)/bench/bench.tsv
+	NOISELAB_FFTW=measure NOISELAB_WISDOM=$(abspath $(WISDOM)) $(BIN) bench | tee $(BUILD)/bench/bench.tsv
 	gnuplot -e "in='$(BUILD)/bench/bench.tsv'; out='$(BUILD)/bench/bench.png'" tools/bench-plot.gp
-	sh tools/bench-r.sh $(BIN) $(BUILD)/bench/r | tee $(BUILD)/bench/bench-r.tsv
-	sh tools/bench-gstat.sh $(BIN) $(BUILD)/bench/gstat | tee $(BUILD)/bench/bench-gstat.tsv
+	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-r.sh $(BIN) $(BUILD)/bench/r | tee $(BUILD)/bench/bench-r.tsv
+	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-gstat.sh $(BIN) $(BUILD)/bench/gstat | tee $(BUILD)/bench/bench-gstat.tsv
+	sh tools/bench-firstrun.sh $(BIN) $(abspath $(WISDOM)) $(BUILD)/bench/first | tee $(BUILD)/bench/bench-firstrun.tsv
 	@echo "bench: $(BUILD)/bench/bench.tsv, bench.png and (with R installed) bench-r.tsv"
 
 clean:

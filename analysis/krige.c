@@ -7,6 +7,7 @@
 
 #include <float.h>
 #include <gsl/gsl_blas.h>
+#include <gsl/gsl_cblas.h>
 #include <gsl/gsl_linalg.h>
 #include <math.h>
 #include <stdlib.h>
@@ -298,63 +299,33 @@ static int krige_eval(const nl_krige_plan *p, const double *x, double *est, doub
     return NL_OK;
 }
 
-/* z <- L^-1 z for the n x NL_KRIGE_BLOCK matrix z (row-major), L lower
- * triangular with row stride tda.  Rows are solved four at a time, so each
- * solved row of z is loaded once per four updates; every row's updates are
- * still subtracted in the order k = 0, 1, ..., i - 1, so the result is the
- * same as row-by-row substitution.  Compiled for AVX-512, AVX2 and plain
- * x86-64, chosen at run time. */
-__attribute__((target_clones("avx512f", "avx2", "default"))) static void
-forward_block(const double *L, size_t tda, size_t n, double *restrict z)
+/* cc_b = |z_b|^2 and uc_b = w . z_b over the columns of the n x
+ * NL_KRIGE_BLOCK row-major z, row by row (each sum in the order i = 0..n-1). */
+static void column_sums(const nl_krige_plan *p, size_t n, const double *z, double *cc, double *uc)
 {
-    enum { B = NL_KRIGE_BLOCK, R = 4 };
-    size_t i0 = 0;
-    for (; i0 + R <= n; i0 += R) {
-        double acc[R][B];
-        const double *Lr[R];
-        for (int r = 0; r < R; r++) {
-            Lr[r] = L + (i0 + r) * tda;
-            memcpy(acc[r], z + (i0 + r) * B, sizeof acc[r]);
-        }
-        for (size_t k = 0; k < i0; k++) {
-            const double *restrict zk = z + k * B;
-            const double l0 = Lr[0][k], l1 = Lr[1][k], l2 = Lr[2][k], l3 = Lr[3][k];
-            for (int b = 0; b < B; b++) {
-                const double v = zk[b];
-                acc[0][b] -= l0 * v;
-                acc[1][b] -= l1 * v;
-                acc[2][b] -= l2 * v;
-                acc[3][b] -= l3 * v;
-            }
-        }
-        for (int r = 0; r < R; r++) {  /* the R x R triangle, in the same order */
-            for (int q = 0; q < r; q++)
-                for (int b = 0; b < B; b++)
-                    acc[r][b] -= Lr[r][i0 + q] * acc[q][b];
-            for (int b = 0; b < B; b++)
-                acc[r][b] /= Lr[r][i0 + r];
-            memcpy(z + (i0 + r) * B, acc[r], sizeof acc[r]);
-        }
-    }
-    for (size_t i = i0; i < n; i++) {
-        const double *Li = L + i * tda;
-        double *restrict zi = z + i * B;
-        for (size_t k = 0; k < i; k++)
-            for (int b = 0; b < B; b++)
-                zi[b] -= Li[k] * z[k * B + b];
+    enum { B = NL_KRIGE_BLOCK };
+    for (int b = 0; b < B; b++)
+        cc[b] = 0, uc[b] = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *zi = z + i * B, wi = p->w->data[i * p->w->stride];
         for (int b = 0; b < B; b++)
-            zi[b] /= Li[i];
+            cc[b] += zi[b] * zi[b], uc[b] += wi * zi[b];
     }
 }
 
-/* The variance of many points at once: with z = L^-1 c0, c0^T C^-1 c0 = |z|^2
- * and 1^T C^-1 c0 = (L^-1 1) . z, so one forward substitution serves all
- * NL_KRIGE_BLOCK points of a block, streaming L once per block instead of once
- * per point (the per-point solve is bound by memory bandwidth). */
+/* The variance of many points at once: with Z = L^-1 K for the n x B
+ * cross-covariances K of a block, c0^T C^-1 c0 = |z_b|^2 (column norms) and
+ * 1^T C^-1 c0 = (L^-1 1) . z_b, so one level-3 triangular solve (BLAS dtrsm,
+ * n^2 B flops at GEMM speed) serves all NL_KRIGE_BLOCK points of a block.
+ * A block always has NL_KRIGE_BLOCK columns (a short last block is padded
+ * with zeros), so its arithmetic does not depend on the thread that runs it;
+ * inside an OpenMP region BLAS runs on one thread (OpenBLAS's OpenMP build),
+ * outside it splits the columns between threads, which gives the same bits
+ * (tests/test_blas_threads.c). */
 static int krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var)
 {
     size_t n = p->n, B = NL_KRIGE_BLOCK;
-    double *z;
+    double *z, cc[NL_KRIGE_BLOCK], uc[NL_KRIGE_BLOCK];
     if (!p->L || !var) {
         for (size_t q = 0; q < count; q++) {
             int st = nl_krige_eval(p, x + q * (size_t)p->dim, &est[q], var ? &var[q] : NULL, NULL);
@@ -380,12 +351,11 @@ static int krige_eval_block(const nl_krige_plan *p, size_t count, const double *
         if (nb < B)  /* a short last block: the unused columns stay 0 */
             for (size_t i = 0; i < n; i++)
                 memset(z + i * B + nb, 0, (B - nb) * sizeof *z);
-        forward_block(p->L->data, p->L->tda, n, z);
+        cblas_dtrsm(CblasRowMajor, CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, (int)n, (int)B, 1.0,
+                    p->L->data, (int)p->L->tda, z, (int)B);
+        column_sums(p, n, z, cc, uc);
         for (size_t b = 0; b < nb; b++) {
-            double cc = 0, uc = 0, v;
-            for (size_t i = 0; i < n; i++)
-                cc += z[i * B + b] * z[i * B + b], uc += gsl_vector_get(p->w, i) * z[i * B + b];
-            v = p->r0 - cc + (p->simple ? 0 : (1 - uc) * (1 - uc) / p->s);
+            double v = p->r0 - cc[b] + (p->simple ? 0 : (1 - uc[b]) * (1 - uc[b]) / p->s);
             var[q0 + b] = v > 0 ? v : 0;
         }
     }

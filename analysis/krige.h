@@ -67,9 +67,10 @@ int nl_krige_eval(const nl_krige_plan *p, const double *x, double *est, double *
 
 /* nl_krige_eval for `count` points x (count * dim coordinates) at once: the
  * same estimates and variances (to rounding), with the variances of
- * NL_KRIGE_BLOCK points computed together (several times faster for large n).
- * var may be NULL.  Errors: NL_ENOMEM.  Blocks may run in parallel. */
-#define NL_KRIGE_BLOCK 64
+ * NL_KRIGE_BLOCK points computed together by one level-3 BLAS triangular
+ * solve (n^2 NL_KRIGE_BLOCK flops).  var may be NULL.  Errors: NL_ENOMEM.
+ * Blocks may run in parallel; the bits do not depend on the thread count. */
+#define NL_KRIGE_BLOCK 256
 int nl_krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var);
 
 /* Evaluate on the cell centres of a grid: sample i of axis a sits at

@@ -5,6 +5,8 @@
 #include "krige_local_internal.h"
 #include "../core/nl_error.h"
 
+#include <gsl/gsl_cblas.h>
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -214,4 +216,53 @@ int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_wor
     if (var)
         *var = fmax(k->r0 - s, 0);
     return NL_OK;
+}
+
+/* nb (<= NL_KRIGE_BLOCK) locations x whose neighbourhood is the factored
+ * set of w (the global one): the same estimator as nl_kl_point, with the
+ * K x nb covariances C0 solved at once, V = L^-1 C0 (level-3 BLAS dtrsm),
+ * and the drift residuals U = F - Q V by dgemm.  C0 is K x NL_KRIGE_BLOCK
+ * scratch (row-major), U p x NL_KRIGE_BLOCK; unused columns are zero, so a
+ * block's arithmetic does not depend on nb's neighbours or on the thread. */
+void nl_kl_batch(const nl_krige_local *k, const double *x, size_t nb, nl_kl_work *w, double *C0, double *U,
+                 double *est, double *var)
+{
+    enum { B = NL_KRIGE_BLOCK };
+    size_t K = w->K, p = k->p;
+    int dim = k->dim;
+    memset(C0, 0, K * B * sizeof *C0);
+    for (size_t b = 0; b < nb; b++) {
+        double e = p == 0 ? k->o.mean : 0;
+        for (size_t i = 0; i < K; i++) {
+            double c = cov(k, x + b * dim, k->pts + w->set[i] * dim);
+            C0[i * B + b] = c;
+            e += c * w->r[i];
+        }
+        nl_kl_drift(k, x + b * dim, w->f);
+        for (size_t j = 0; j < p; j++)
+            e += w->f[j] * w->beta[j];
+        est[b] = e;
+        for (size_t j = 0; j < p; j++)
+            U[j * B + b] = w->f[j];
+    }
+    for (size_t j = 0; j < p; j++)
+        memset(U + j * B + nb, 0, (B - nb) * sizeof *U);
+    cblas_dtrsm(CblasRowMajor, CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, (int)K, B, 1.0, w->L, (int)K, C0,
+                B);
+    if (p)
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, (int)p, B, (int)K, -1.0, w->Q, (int)K, C0, B, 1.0, U,
+                    B);
+    if (!var)
+        return;
+    for (size_t b = 0; b < nb; b++) {
+        double s = 0;
+        for (size_t i = 0; i < K; i++)
+            s += C0[i * B + b] * C0[i * B + b];
+        for (size_t j = 0; j < p; j++)
+            w->u[j] = U[j * B + b];
+        nl_kl_lsolve(w->M, p, w->u, w->u2);
+        for (size_t j = 0; j < p; j++)
+            s -= w->u2[j] * w->u2[j];
+        var[b] = fmax(k->r0 - s, 0);
+    }
 }

@@ -2,6 +2,7 @@
 #ifndef NL_KRIGE_LOCAL_INTERNAL_H
 #define NL_KRIGE_LOCAL_INTERNAL_H
 
+#include "krige.h"
 #include "krige_local.h"
 #include "../core/spindex.h"
 
@@ -40,5 +41,10 @@ void nl_kl_lsolve(const double *L, size_t n, const double *b, double *x);
 /* "(x, y)" of a location in buf (64 bytes). */
 const char *nl_kl_where(const nl_krige_local *k, const double *x, char *buf);
 int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w, double *est, double *var);
+/* Estimates (and variances, var may be NULL) at nb <= NL_KRIGE_BLOCK
+ * locations x that share the factored set of w; C0 (cap x NL_KRIGE_BLOCK)
+ * and U (p x NL_KRIGE_BLOCK) are scratch. */
+void nl_kl_batch(const nl_krige_local *k, const double *x, size_t nb, nl_kl_work *w, double *C0, double *U,
+                 double *est, double *var);
 
 #endif

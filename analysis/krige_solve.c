@@ -193,10 +193,76 @@ static void location(const nl_krige_local *k, const locs_t *L, size_t t, double 
         x[a] = L->lo[a] + ((double)ix[a] + 0.5) * L->g->h[a];
 }
 
+/* The status of a run: out of memory, or the error of the first location
+ * that failed (again on this thread, for the message). */
+static int outcome(const nl_krige_local *k, const locs_t *L, int nomem, size_t bad)
+{
+    if (nomem)
+        return NL_ERROR(NL_ENOMEM, "kriging: out of memory for the neighbourhoods");
+    if (bad != SIZE_MAX) {
+        nl_kl_work w;
+        double x[3], e, v;
+        int st = nl_kl_work_init(&w, k->cap, k->p);
+        if (!st) {
+            location(k, L, bad, x);
+            st = nl_kl_point(k, x, L->cv ? bad : SIZE_MAX, &w, &e, &v);
+            nl_kl_work_free(&w);
+        }
+        return st ? st : NL_ERROR(NL_EFAIL, "kriging: location %zu failed", bad);
+    }
+    return NL_OK;
+}
+
+/* Every location's neighbourhood is all the data (no radius, nmax 0 or at
+ * least n, not cross-validation): one factorisation per thread, then blocks
+ * of NL_KRIGE_BLOCK locations solved together (nl_kl_batch, level-3 BLAS).
+ * Blocks are fixed, so the bits do not depend on the thread count. */
+static int run_global(const nl_krige_local *k, const locs_t *L, size_t count, double *est, double *var)
+{
+    enum { B = NL_KRIGE_BLOCK };
+    size_t bad = SIZE_MAX, nblk = (count + B - 1) / B;
+    int nomem = 0;
+#pragma omp parallel if (count > 256 && nl_model_is_reentrant(k->m))
+    {
+        nl_kl_work w;
+        double *C0 = malloc(k->n * B * sizeof *C0), *U = malloc((k->p ? k->p : 1) * B * sizeof *U), x[3 * B];
+        int init = nl_kl_work_init(&w, k->cap, k->p) == NL_OK, ok = init && C0 && U, factored = 0;
+        if (!ok) {
+#pragma omp atomic write
+            nomem = 1;
+        } else {
+            for (size_t i = 0; i < k->n; i++)
+                w.set[i] = i;
+            w.K = k->n;
+            location(k, L, 0, x);
+            factored = nl_kl_factor(k, &w, x) == NL_OK;
+        }
+#pragma omp for schedule(dynamic, 1) reduction(min : bad)
+        for (size_t blk = 0; blk < nblk; blk++) {
+            size_t t0 = blk * B, nb = count - t0 < B ? count - t0 : B;
+            if (!ok)
+                continue;
+            if (!factored) {
+                bad = t0 < bad ? t0 : bad;
+                continue;
+            }
+            for (size_t q = 0; q < nb; q++)
+                location(k, L, t0 + q, x + q * (size_t)k->dim);
+            nl_kl_batch(k, x, nb, &w, C0, U, est + t0, var ? var + t0 : NULL);
+        }
+        if (init)
+            nl_kl_work_free(&w);
+        free(C0), free(U);
+    }
+    return outcome(k, L, nomem, bad);
+}
+
 static int run(const nl_krige_local *k, const locs_t *L, size_t count, double *est, double *var)
 {
     size_t bad = SIZE_MAX;
     int nomem = 0;
+    if (!L->cv && k->o.radius == 0 && k->cap >= k->n)
+        return run_global(k, L, count, est, var);
 #pragma omp parallel if (count > 256 && nl_model_is_reentrant(k->m))
     {
         nl_kl_work w;
@@ -216,20 +282,7 @@ static int run(const nl_krige_local *k, const locs_t *L, size_t count, double *e
         }
         nl_kl_work_free(&w);
     }
-    if (nomem)
-        return NL_ERROR(NL_ENOMEM, "kriging: out of memory for the neighbourhoods");
-    if (bad != SIZE_MAX) { /* again on this thread, for the message */
-        nl_kl_work w;
-        double x[3], e, v;
-        int st = nl_kl_work_init(&w, k->cap, k->p);
-        if (!st) {
-            location(k, L, bad, x);
-            st = nl_kl_point(k, x, L->cv ? bad : SIZE_MAX, &w, &e, &v);
-            nl_kl_work_free(&w);
-        }
-        return st ? st : NL_ERROR(NL_EFAIL, "kriging: location %zu failed", bad);
-    }
-    return NL_OK;
+    return outcome(k, L, nomem, bad);
 }
 
 int nl_krige_local_eval(const nl_krige_local *k, size_t count, const double *x, double *est, double *var)

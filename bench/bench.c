@@ -50,6 +50,7 @@ static const char help[] =
     "  psd             FFTW r2c of the field\n"
     "  gaussian fill   a streaming write of as many doubles (the memory bandwidth)\n"
     "  krige           one covariance evaluation per (grid point, data point)\n"
+    "  krige (grid)    n^2 m flops (its triangular solves) at the dgemm row's rate\n"
     "  rank1           the tensor-product FFT with the same number of points\n"
     "  variogram       the k-d tree's enumeration of the pairs within the cutoff\n"
     "  krige nmax      the k-d tree's search of the 32 nearest data per cell\n"
@@ -517,6 +518,8 @@ static void bench_geo(size_t n, size_t g)
     nl_spindex_free(s), nl_points_free(p);
 }
 
+void cli_bench_blas(const nl_model *m, size_t np, size_t g, int reps);
+
 int cli_cmd_bench(int argc, char **argv)
 {
     static const struct option opts[] = {{"quick", no_argument, 0, 'q'}, {"repeat", required_argument, 0, 'r'},
@@ -558,6 +561,7 @@ int cli_cmd_bench(int argc, char **argv)
     bench_sparse(m, 1024 / d, reps);
     bench_estimators(2048 / d, reps);
     bench_krige(mk, 1000 / d, 256 / d, reps);
+    cli_bench_blas(mk, 1000 / d, 256 / d, reps); /* bench/bench_blas.c */
     bench_rank1(quick, reps);
     nl_model_free(m), nl_model_free(me), nl_model_free(mk);
     return 0;

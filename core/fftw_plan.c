@@ -27,12 +27,27 @@ static void cache_path(void)
     snprintf(cache, sizeof cache, "%s/fftw-wisdom", dir);
 }
 
+#ifndef NL_WISDOM_FILE
+#define NL_WISDOM_FILE "/usr/local/share/noiselab/fftw-wisdom"
+#endif
+
+/* Measured wisdom, later sources adding to earlier ones: FFTW's system
+ * wisdom (/etc/fftw/wisdom, from fftw-wisdom), the wisdom installed with
+ * noiselab (make wisdom), $NOISELAB_WISDOM, the user's cache.  A missing or
+ * foreign file (another FFTW) is skipped.  None under NOISELAB_FFTW=estimate. */
 static void setup(void)
 {
+    const char *extra = getenv("NOISELAB_WISDOM"), *e = getenv("NOISELAB_FFTW");
     ready = 1;
     fftw_init_threads();
     fftw_make_planner_thread_safe();
     cache_path();
+    if (e && strcmp(e, "estimate") == 0)
+        return;
+    fftw_import_system_wisdom();
+    fftw_import_wisdom_from_filename(NL_WISDOM_FILE);
+    if (extra && *extra)
+        fftw_import_wisdom_from_filename(extra);
     if (cache[0])
         fftw_import_wisdom_from_filename(cache);
 }
@@ -45,19 +60,18 @@ int nl_threads_max(void)
     return want < 1 ? 1 : want < cap ? want : cap;
 }
 
+/* FFTW_ESTIMATE takes a measured plan from wisdom when there is one (the
+ * planner accepts wisdom of equal or greater rigour), so the default costs
+ * no planning time and still runs measured plans wherever they exist. */
 unsigned nl_fftw_flags(size_t count)
 {
     const char *e = getenv("NOISELAB_FFTW");
-    int measure = count >= NL_FFTW_MEASURE_MIN;
+    int measure = e && strcmp(e, "measure") == 0;
     if (!ready)
         setup();
     /* threads pay off only on large transforms; on small ones their start-up
      * and, when processes share the cores, their spinning cost more */
     fftw_plan_with_nthreads(count >= NL_FFTW_THREADS_MIN ? nl_threads_max() : 1);
-    if (e && strcmp(e, "estimate") == 0)
-        measure = 0;
-    else if (e && strcmp(e, "measure") == 0)
-        measure = 1;
     measured |= measure;
     return measure ? FFTW_MEASURE : FFTW_ESTIMATE;
 }

@@ -1,14 +1,21 @@
 /* The FFTW planning policy every transform in noiselab shares.
  *
- * Small transforms are planned with FFTW_ESTIMATE (planning is free, the
- * transform is cheap). From NL_FFTW_MEASURE_MIN samples on, FFTW_MEASURE plans
- * are 2-7x faster but cost seconds to make, so they are kept as FFTW wisdom in
- * $XDG_CACHE_HOME/noiselab/fftw-wisdom (~/.cache/... by default): the first
- * run at a size pays for planning, later runs reuse the plan. Either plan gives
- * the same result to rounding (tests/test_fft_props.c, the test comparing
- * the two planners).
+ * Transforms are planned with FFTW_ESTIMATE, which costs no time and, where
+ * FFTW holds measured wisdom for the transform, returns the measured plan
+ * (FFTW_ESTIMATE accepts wisdom of greater rigour): a first run at a new
+ * size never waits for planning (FFTW_MEASURE costs seconds at 4096^2,
+ * several times the transform).  Measured wisdom is loaded, on the first
+ * call, from FFTW's system wisdom (/etc/fftw/wisdom), the wisdom installed
+ * with noiselab (NL_WISDOM_FILE, made by `make wisdom` for the common
+ * power-of-two sizes and installed by `make install`), the file named by
+ * $NOISELAB_WISDOM, and the user's cache $XDG_CACHE_HOME/noiselab/fftw-wisdom
+ * (~/.cache/... by default).  NOISELAB_FFTW=measure plans every size with
+ * FFTW_MEASURE and keeps the plans in that cache (nl_fftw_save), so later
+ * runs at those sizes use them; NOISELAB_FFTW=estimate plans as a machine
+ * without any wisdom does (none is loaded; the tests use it).
+ * Either plan gives the same result to rounding (tests/test_fft_props.c,
+ * tests/test_fftw_wisdom.c).
  *
- * NOISELAB_FFTW=estimate or =measure overrides the policy for every size.
  * FFTW_MEASURE overwrites the arrays it plans on: callers plan before they
  * fill their input (or plan on scratch arrays and use the new-array execute).
  *
@@ -27,11 +34,10 @@
 
 #include <stddef.h>
 
-#define NL_FFTW_MEASURE_MIN ((size_t)1 << 18)
 #define NL_FFTW_THREADS_MIN ((size_t)1 << 16)
 
-/* Planner flags for a transform of `count` samples (FFTW_ESTIMATE or
- * FFTW_MEASURE, as above); the plan made next uses nl_threads_max() threads
+/* Planner flags for a transform of `count` samples (FFTW_ESTIMATE, or
+ * FFTW_MEASURE under NOISELAB_FFTW=measure); the plan made next uses nl_threads_max() threads
  * from NL_FFTW_THREADS_MIN samples on, else one (a process-wide FFTW
  * setting: call it right before planning).  The first call sets up FFTW's
  * threads and loads the wisdom cache.  Not thread-safe (see above). */

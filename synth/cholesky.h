@@ -1,4 +1,5 @@
-/* Direct simulation by the Cholesky factor of the covariance matrix (GSL):
+/* Direct simulation by the Cholesky factor of the covariance matrix (GSL,
+ * level-3 BLAS):
  * x = L z, L L^T = C, C_ij = R(p_i - p_j) over the N grid samples, z_j =
  * nl_rng_gauss(seed, NL_SYNTH_CHOLESKY_STREAM, j).  Exact and non-periodic;
  * O(N^3) time and N^2 memory, so it is the ground truth for small grids.
@@ -37,7 +38,9 @@ int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, co
                               nl_synth_cholesky_plan **out);
 
 /* x = L z for `seed` into out (count samples, the plan's layout; out->n is
- * not checked beyond its count).  Bit-identical for equal seeds.  Does not
+ * not checked beyond its count).  Bit-identical for equal seeds, whatever
+ * the number of threads (the plan's factorisation runs on BLAS threads, the
+ * product on one; tests/test_blas_threads.c).  Does not
  * allocate: z lives in the plan, so one plan serves ONE thread at a time
  * (give each thread its own plan).  NL_OK, or NL_EINVAL when out's count
  * differs from the plan's. */

@@ -7,7 +7,9 @@
 #     exponential covariance of range 0.2 on the unit square:
 #     noiselab krige --variance  vs  gstat krige (global neighbourhood)
 # Times are wall-clock seconds, medians of 5 runs of noiselab (each a new
-# process: reading the input, planning, writing the EXR output), 3 of
+# process: reading the input, planning (FFTW_ESTIMATE taking the measured
+# plans of the wisdom NOISELAB_WISDOM names, which `make bench` sets to the
+# file `make wisdom` makes), writing the EXR output), 3 of
 # RandomFields and 1 of gstat (a minute each; R's times are the call only).
 # First runs on this machine vary by up to 1.7x (page faults in a VM), so
 # single runs are not quoted.
