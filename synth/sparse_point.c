@@ -10,8 +10,8 @@
 
 struct nl_synth_sparse_point {
     uint64_t seed;          /* the impulses' seed */
-    double r, inv2s2, c;    /* cut radius, 1 / (2 s^2), normalisation */
-    double mean;            /* Poisson mean per cube, lambda r^3 */
+    double r, w, inv2s2, c; /* cut radius, cube side r / 2, 1 / (2 s^2), normalisation */
+    double mean;            /* Poisson mean per cube, lambda w^3 */
     long lo[3], n[3];       /* cached cube range: first cube, count per axis */
     size_t *start;          /* n0 n1 n2 + 1 offsets into q (cube order: i slowest) */
     double *q;              /* 4 per impulse: x y z amplitude */
@@ -39,7 +39,7 @@ static uint64_t cube_id(const long *i)
 static void impulse(const nl_synth_sparse_point *p, const long *i, uint64_t id, uint32_t k, double *q)
 {
     for (int a = 0; a < 3; a++)
-        q[a] = ((double)i[a] + nl_rng_uniform2(p->seed, NL_SPARSE_POINT_STREAM + 1 + (uint32_t)a, id, k)) * p->r;
+        q[a] = ((double)i[a] + nl_rng_uniform2(p->seed, NL_SPARSE_POINT_STREAM + 1 + (uint32_t)a, id, k)) * p->w;
     q[3] = nl_rng_gauss2(p->seed, NL_SPARSE_POINT_STREAM + 4, id, k);
 }
 
@@ -114,14 +114,14 @@ int nl_synth_sparse_point_alloc(const nl_model *m, double density, uint64_t seed
     if (!p)
         return NL_ERROR(NL_ENOMEM, "out of memory");
     double s = L / 2, lambda = density / (L * L * L);
-    p->seed = seed, p->r = 3.5 * s, p->inv2s2 = 1 / (2 * s * s), p->mean = lambda * pow(p->r, 3);
+    p->seed = seed, p->r = 3.5 * s, p->w = p->r / 2, p->inv2s2 = 1 / (2 * s * s), p->mean = lambda * pow(p->w, 3);
     /* the energy of h^2 (a normal of sd s/sqrt(2)) within r: 1 - tail */
     double R = p->r / (s / M_SQRT2), tail = erfc(R / M_SQRT2) + sqrt(2 / M_PI) * R * exp(-R * R / 2);
     p->c = sqrt(V / (lambda * pow(M_PI * s * s, 1.5) * (1 - tail)));
     p->info = (nl_synth_sparse_point_stats){L, V, p->r, lambda, 6 * M_SQRT2 / (density * pow(M_PI, 1.5)), 0};
     if (lo || hi) {
         for (int a = 0; a < 3; a++) {
-            double u0 = floor((lo[a] - p->r) / p->r), u1 = floor((hi[a] + p->r) / p->r);
+            double u0 = floor((lo[a] - p->r) / p->w), u1 = floor((hi[a] + p->r) / p->w);
             if (!(u0 <= u1) || !(fabs(u0) < NL_SPARSE_POINT_CELLS_MAX - 2) || !(fabs(u1) < NL_SPARSE_POINT_CELLS_MAX - 2)) {
                 double r = p->r;
                 nl_synth_sparse_point_free(p);
@@ -164,24 +164,40 @@ static double cube_sum(const nl_synth_sparse_point *p, const long *i, const doub
     return s;
 }
 
+/* The squared distance from x to the cube [i w, (i + 1) w) on one axis. */
+static double gap2(double x, long i, double w)
+{
+    double a = (double)i * w, b = a + w, g = x < a ? a - x : x > b ? x - b : 0;
+    return g * g;
+}
+
 int nl_synth_sparse_point_eval(const nl_synth_sparse_point *p, size_t count, const double *x, double *out)
 {
+    double r2 = p->r * p->r;
     for (size_t n = 0; n < count; n++) {
         const double *xp = x + 3 * n;
         long i0[3], i1[3], i[3];
         for (int a = 0; a < 3; a++) {
-            double u0 = floor((xp[a] - p->r) / p->r), u1 = floor((xp[a] + p->r) / p->r);
+            double u0 = floor((xp[a] - p->r) / p->w), u1 = floor((xp[a] + p->r) / p->w);
             if (!(fabs(u0) < NL_SPARSE_POINT_CELLS_MAX - 2) || !(fabs(u1) < NL_SPARSE_POINT_CELLS_MAX - 2))
                 return NL_ERROR(NL_EINVAL, "sparse point noise: point %zu: expected finite coordinates within %ld "
-                                "cubes of %g of the origin, got %g on axis %d", n, NL_SPARSE_POINT_CELLS_MAX - 2, p->r,
+                                "cubes of %g of the origin, got %g on axis %d", n, NL_SPARSE_POINT_CELLS_MAX - 2, p->w,
                                 xp[a], a + 1);
             i0[a] = (long)u0, i1[a] = (long)u1;
         }
         double s = 0;
-        for (i[0] = i0[0]; i[0] <= i1[0]; i[0]++)
-            for (i[1] = i0[1]; i[1] <= i1[1]; i[1]++)
+        /* only the cubes that come within r of x can hold a contributing impulse */
+        for (i[0] = i0[0]; i[0] <= i1[0]; i[0]++) {
+            double g0 = gap2(xp[0], i[0], p->w);
+            for (i[1] = i0[1]; i[1] <= i1[1]; i[1]++) {
+                double g1 = g0 + gap2(xp[1], i[1], p->w);
+                if (g1 >= r2)
+                    continue;
                 for (i[2] = i0[2]; i[2] <= i1[2]; i[2]++)
-                    s += cube_sum(p, i, xp);
+                    if (g1 + gap2(xp[2], i[2], p->w) < r2)
+                        s += cube_sum(p, i, xp);
+            }
+        }
         out[n] = p->c * s;
     }
     return NL_OK;

@@ -17,14 +17,14 @@
  * 1.52 / density (untruncated): the noise tends to a Gaussian as the density
  * grows.
  *
- * How the seed maps to the impulses: space is cut into cubes of side r,
- * cube (i, j, k) (|i|, |j|, |k| < 2^20) has id ((i + 2^20) << 42 | (j + 2^20)
- * << 21 | (k + 2^20)); its count is nl_rng_poisson(seed,
- * NL_SPARSE_POINT_STREAM, id, 0, lambda r^3), impulse q's position (i + u) r,
+ * How the seed maps to the impulses: space is cut into cubes of side w =
+ * r / 2; cube (i, j, k) (|i|, |j|, |k| < 2^20) has id ((i + 2^20) << 42 |
+ * (j + 2^20) << 21 | (k + 2^20)); its count is nl_rng_poisson(seed,
+ * NL_SPARSE_POINT_STREAM, id, 0, lambda w^3), impulse q's position (i + u) w,
  * u = nl_rng_uniform2(seed, NL_SPARSE_POINT_STREAM + 1..3, id, q) per axis,
  * its amplitude nl_rng_gauss2(seed, NL_SPARSE_POINT_STREAM + 4, id, q).  A
- * value sums the cubes that meet the ball of radius r around p in the order
- * of i, then j, then k (k fastest), impulses in order: a pure function of
+ * value sums the cubes that come within r of p in the order of i, then j,
+ * then k (k fastest), impulses in order: a pure function of
  * (seed, p), bit-identical whether the cubes come from the plan's cache or
  * are drawn on the fly. */
 #ifndef NL_SYNTH_SPARSE_POINT_H
@@ -37,7 +37,7 @@
 
 #define NL_SPARSE_POINT_STREAM 420u
 #define NL_SPARSE_POINT_TAIL 2.0e-5
-/* Cube coordinates stay below 2^20 in magnitude: points within 2^20 r of the origin. */
+/* Cube coordinates stay below 2^20 in magnitude: points within 2^20 w of the origin. */
 #define NL_SPARSE_POINT_CELLS_MAX (1L << 20)
 
 typedef struct nl_synth_sparse_point nl_synth_sparse_point;
@@ -68,7 +68,7 @@ int nl_synth_sparse_point_alloc(const nl_model *m, double density, uint64_t seed
 
 /* n at count points x (count * 3 coordinates, x y z) into out (count).
  * Errors: NL_EINVAL for a coordinate that is not finite or beyond
- * NL_SPARSE_POINT_CELLS_MAX - 2 cubes of the origin (out is then partly
+ * NL_SPARSE_POINT_CELLS_MAX - 2 cubes (of side w) of the origin (out is then partly
  * written).  The plan is only read: thread-safe. */
 int nl_synth_sparse_point_eval(const nl_synth_sparse_point *p, size_t count, const double *x, double *out);
 
