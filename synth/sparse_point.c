@@ -119,10 +119,10 @@ int nl_synth_sparse_point_alloc(const nl_model *m, double density, uint64_t seed
     double R = p->r / (s / M_SQRT2), tail = erfc(R / M_SQRT2) + sqrt(2 / M_PI) * R * exp(-R * R / 2);
     p->c = sqrt(V / (lambda * pow(M_PI * s * s, 1.5) * (1 - tail)));
     p->info = (nl_synth_sparse_point_stats){L, V, p->r, lambda, 6 * M_SQRT2 / (density * pow(M_PI, 1.5)), 0};
-    if (lo || hi) {
+    if (lo && hi) {
         for (int a = 0; a < 3; a++) {
             double u0 = floor((lo[a] - p->r) / p->w), u1 = floor((hi[a] + p->r) / p->w);
-            if (!(u0 <= u1) || !(fabs(u0) < NL_SPARSE_POINT_CELLS_MAX - 2) || !(fabs(u1) < NL_SPARSE_POINT_CELLS_MAX - 2)) {
+            if (!(lo[a] <= hi[a]) || !(fabs(u0) < NL_SPARSE_POINT_CELLS_MAX - 2) || !(fabs(u1) < NL_SPARSE_POINT_CELLS_MAX - 2)) {
                 double r = p->r;
                 nl_synth_sparse_point_free(p);
                 return NL_ERROR(NL_EINVAL, "sparse point noise: box: expected finite lo <= hi within %ld cubes of %g "

@@ -54,7 +54,7 @@ typedef struct {
 /* Plan the noise of model m (gauss:scale=L[,var=V], isotropic, no nugget)
  * with `density` impulses per volume L^3, seeded by seed; the impulses of
  * the cubes meeting the box [lo, hi] (3 doubles each; lo = hi = NULL: no
- * cache) grown by r are drawn once and kept (O(density * box volume / L^3)
+ * cache; either NULL: the same) grown by r are drawn once and kept (O(density * box volume / L^3)
  * memory); values elsewhere are drawn on the fly (slower, same bits).
  * *out (NULL on failure) is released by nl_synth_sparse_point_free.
  * Errors: NL_EINVAL for a model that is not an isotropic gauss: without a
