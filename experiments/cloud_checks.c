@@ -22,8 +22,8 @@
  *   aliasing error of the sum is exp(-2 pi^2 sigma^2 / h^2) ~ 1e-42).
  * usage: cloud_checks acf DENSITY
  *   point-evaluated sparse-convolution noise of gauss:scale=1 with DENSITY
- *   impulses per scale^3 (seed 7): at M = 20000 seeded base points p of a
- *   40^3 box and axis e (cycling x, y, z), r(d) = mean n(p) n(p + d e) for d
+ *   impulses per scale^3 (seed 7): at M = 30000 seeded base points p of a
+ *   56^3 box and axis e (cycling x, y, z), r(d) = mean n(p) n(p + d e) for d
  *   = 0, 0.25, ..., 2 against exp(-d^2).  Tolerance, per lag: 4 standard
  *   errors plus the truncation bound 4.4e-3 (sparse_point.h).  The
  *   variance of one product is 1 + rho^2 + kappa (Isserlis plus the excess
@@ -146,8 +146,8 @@ static int axes(const double *deg)
 
 static int acf(double density)
 {
-    enum { M = 20000, LAGS = 9 };
-    const double box = 40, kappa = 6 * M_SQRT2 / (density * pow(M_PI, 1.5));
+    enum { M = 30000, LAGS = 9 };
+    const double box = 56, kappa = 6 * M_SQRT2 / (density * pow(M_PI, 1.5));
     double lo[3] = {0, 0, 0}, hi[3] = {box + 2, box + 2, box + 2}, sum[LAGS] = {0};
     nl_model *m;
     nl_synth_sparse_point *p;
