@@ -127,11 +127,14 @@ static int axes(const double *deg)
     double worst = 0;
     printf("axis\tangle_error_deg\tlength_ratio\texpected\n");
     for (int a = 0; a < 3; a++) {
-        double c[3], dot = 0;
+        double c[3], v[3], dot = 0, cr[3];
         column(deg, a, c);
         for (int i = 0; i < 3; i++)
-            dot += c[i] * gsl_matrix_get(V, (size_t)i, (size_t)a);
-        double ang = acos(fmin(1, fabs(dot))) * 180 / M_PI, ratio = sqrt(gsl_vector_get(ev, (size_t)a) /
+            v[i] = gsl_matrix_get(V, (size_t)i, (size_t)a), dot += c[i] * v[i];
+        for (int i = 0; i < 3; i++)
+            cr[i] = c[(i + 1) % 3] * v[(i + 2) % 3] - c[(i + 2) % 3] * v[(i + 1) % 3];
+        /* the angle from |cross| and |dot|: accurate near 0, where acos is not */
+        double ang = atan2(sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]), fabs(dot)) * 180 / M_PI, ratio = sqrt(gsl_vector_get(ev, (size_t)a) /
                                                                           gsl_vector_get(ev, 0));
         double want = a == 0 ? 1 : a == 1 ? 0.5 : 0.25;
         printf("%c\t%.2e\t%.6f\t%g\n", "xyz"[a], ang, ratio, want);
