@@ -12,8 +12,8 @@
 sc=$top/experiments/scenes
 jq '.noise.amplitude = 0' "$sc/cumulus.json" > "$d/cumulus-shape.json"
 "$nl" cloud "$d/cumulus-shape.json" -o "$dir/stam91-cloud-shape.png"
-# the cumulus's own points without the sky points around the box, at half size
-jq '.points |= map(select(.[3] != -0.25)) | .size = [256, 192]' "$sc/cumulus.json" > "$d/cumulus-no-sky.json"
+# the cumulus's own points without the sky points around the box, small
+jq '.points |= map(select(.[3] != -0.25)) | .size = [192, 144] | .grid = 40' "$sc/cumulus.json" > "$d/cumulus-no-sky.json"
 "$nl" cloud "$d/cumulus-no-sky.json" -o "$dir/stam91-cloud-no-sky.png"
 fail=0
 exact=""

@@ -264,7 +264,8 @@ static int check_scene(const nl_cloud_scene *s)
                         s->kriging, s->noise_kind);
     /* the shape, light and noise volumes */
     size_t vs[3] = {s->grid, s->grid, s->grid}, vn[3] = {s->noise_grid, s->noise_grid, s->noise_grid};
-    if ((st = nl_size_check(3, vs, 2 * sizeof(double), 1, NULL)) ||
+    /* shape and light, and with point noise the density sampled for the light */
+    if ((st = nl_size_check(3, vs, (s->noise_kind == NL_CLOUD_NOISE_POINT ? 3 : 2) * sizeof(double), 1, NULL)) ||
         (st = nl_size_check(3, vn, 2 * sizeof(double), 1, NULL)))
         return st;
     return NL_OK;
