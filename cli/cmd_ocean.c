@@ -22,7 +22,9 @@ static const char help[] =
     "P metres (default 100), amplitude A (default 1e-4).  On the Fibonacci lattice\n"
     "(Keller 2001) the heights and gradients come from one FFT of length N (the\n"
     "gradient from one more per axis); on an M x M grid from 2D FFTs.\n"
-    "  -o       lattice: TSV x y h nx ny nz; grid: EXR of heights\n"
+    "  -o       lattice: TSV x y h nx ny nz, or with a name ending in .exr the field's\n"
+    "           heights on the W x W grid of --size (its series, as --draw series);\n"
+    "           grid: EXR of heights\n"
     "  --image  shaded height field, W x W (default 512); on the lattice the field itself,\n"
     "           its trigonometric series evaluated at every pixel by one W x W FFT\n"
     "           through the lattice's wave vectors (--draw series, the default), or\n"
@@ -170,6 +172,29 @@ static void write_lattice_tsv(const opts_t *a, const nl_rank1_lattice *L, const 
     free(nrm);
 }
 
+/* Frame fr's heights (M x M over the patch) as an EXR named after -o. */
+static void write_heights(const opts_t *a, int fr, double t, size_t M, double *h, const char *kind)
+{
+    for (size_t q = 0; q < M * M; q++)
+        if (!(fabs(h[q]) <= FLT_MAX))
+            cli_die(2, "--amplitude: %g makes heights of %g, beyond the float32 range of EXR (%g)", a->o.amplitude,
+                    h[q], FLT_MAX);
+    size_t n[2] = {M, M};
+    double sp[2] = {a->o.patch / (double)M, a->o.patch / (double)M};
+    nl_meta meta = {0};
+    char *name = frame_name(a->out, fr, a->frames);
+    const char *tmp = cli_out_begin(name);
+    nl_field *f = cli_field_alloc(2, n, sp);
+    memcpy(f->data, h, M * M * sizeof *h);
+    snprintf(meta.method, sizeof meta.method, "ocean:%s=%zu,wind=%g,%g,t=%g,patch=%g", kind, a->lat ? a->N : M, a->v,
+             a->ang, t, a->o.patch);
+    snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);
+    cli_check(nl_exr_write(tmp, f, &meta));
+    cli_out_commit(name);
+    nl_field_free(f);
+    free(name);
+}
+
 /* One lattice frame: its TSV and mesh, and the picture's W x W heights and
  * gradients (img, gx, gy) when one is wanted. */
 static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, double t, double *img, double *gx,
@@ -179,7 +204,7 @@ static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, do
     double *h = cli_malloc(N * sizeof *h), *g = cli_malloc(2 * N * sizeof *g);
     int st;
     cli_check(nl_ocean_lattice_frame(L, &a->o, a->seed, t, h, g));
-    if (a->out) {
+    if (a->out && !cli_has_ext(a->out, ".exr")) {
         char *name = frame_name(a->out, fr, a->frames);
         write_lattice_tsv(a, L, h, g, t, cli_out_begin(name));
         cli_out_commit(name);
@@ -198,6 +223,13 @@ static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, do
     if ((a->image || a->tile) && (st = a->delaunay ? nl_rank1_rasterize(L, h, g, a->W, img, gx, gy)
                                                    : nl_ocean_lattice_image(L, &a->o, a->seed, t, a->W, img, gx, gy)))
         cli_die_status(st);
+    if (a->out && cli_has_ext(a->out, ".exr")) {
+        size_t W = a->W;
+        double *hw = cli_malloc(W * W * sizeof *hw);
+        cli_check(nl_ocean_lattice_image(L, &a->o, a->seed, t, W, hw, NULL, NULL));
+        write_heights(a, fr, t, W, hw, "lattice");
+        free(hw);
+    }
     free(h), free(g);
 }
 
@@ -208,29 +240,8 @@ static void grid_frame(const opts_t *a, int fr, double t, double *img, double *g
     size_t M = a->M;
     double *h = cli_malloc(M * M * sizeof *h), *hx = cli_malloc(M * M * sizeof *hx), *hy = cli_malloc(M * M * sizeof *hy);
     cli_check(nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy));
-    for (size_t q = 0; a->out && q < M * M; q++)
-        if (!(fabs(h[q]) <= FLT_MAX)) {
-            double big = h[q];
-            free(h), free(hx), free(hy);
-            cli_die(2, "--amplitude: %g makes heights of %g, beyond the float32 range of EXR (%g)", a->o.amplitude,
-                    big, FLT_MAX);
-        }
-    if (a->out) {
-        size_t n[2] = {M, M};
-        double sp[2] = {a->o.patch / (double)M, a->o.patch / (double)M};
-        nl_meta meta = {0};
-        char *name = frame_name(a->out, fr, a->frames);
-        const char *tmp = cli_out_begin(name);
-        nl_field *f = cli_field_alloc(2, n, sp);
-        memcpy(f->data, h, M * M * sizeof *h);
-        snprintf(meta.method, sizeof meta.method, "ocean:grid=%zu,wind=%g,%g,t=%g,patch=%g", M, a->v, a->ang, t,
-                 a->o.patch);
-        snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);
-        cli_check(nl_exr_write(tmp, f, &meta));
-        cli_out_commit(name);
-        nl_field_free(f);
-        free(name);
-    }
+    if (a->out)
+        write_heights(a, fr, t, M, h, "grid");
     nl_render_nearest(M, h, a->W, img), nl_render_nearest(M, hx, a->W, gx), nl_render_nearest(M, hy, a->W, gy);
     free(h), free(hx), free(hy);
 }

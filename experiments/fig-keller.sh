@@ -67,6 +67,11 @@ spacetime=$("$xb/keller_spacetime" "$dir/keller-spacetime.png") || st=1
 "$nl" ocean --grid 256 --wind 20,30 --patch 1000 --amplitude 2e-7 -o "$d/ocean-256.exr"
 "$nl" render "$d/ocean-256.exr" --perspective --sea --tile --size 800x450 --zscale 0.256 --camera 128,-20,4 \
     --look 90,4 --sun 60,20 --haze 400 -o "$dir/keller-ocean-perspective.png"
+# the lattice sea, F23 = 28657 points (one FFT of that length), drawn from
+# its series on the same 256 x 256 grid, seen the same way
+"$nl" ocean --lattice fibonacci --points 28657 --wind 20,30 --patch 1000 --amplitude 2e-7 --size 256 -o "$d/ocean-lattice-256.exr"
+"$nl" render "$d/ocean-lattice-256.exr" --perspective --sea --tile --size 800x450 --zscale 0.256 --camera 128,-20,4 \
+    --look 90,4 --sun 60,20 --haze 400 -o "$dir/keller-ocean-lattice-perspective.png"
 verdict=pass
 [ "$bad" -eq 0 ] || verdict=FAIL
 verdict2=pass
@@ -115,9 +120,15 @@ The same Phillips sea on a 256 x 256 grid over the 1000 m patch (3.9 m a sample)
 above the mean level at true vertical scale, the periodic patch repeated to the horizon
 (\`noiselab render --perspective --sea --tile\`).
 
+![the lattice ocean in perspective](keller-ocean-lattice-perspective.png)
+
+The same sea on the Fibonacci lattice of F23 = 28657 points (one FFT of length 28657; wave
+vectors up to |k| of about 95 cycles per patch), its series evaluated on the 256 x 256 grid
+(\`noiselab ocean --lattice ... -o SEA.exr\`) and seen the same way: the lattice's band is
+a disc where the grid's is a square, with under half the grid's 65536 coefficients.
+
 What differs: the paper's images are rendered with lighting and colour we do not know; ours
-are grey shaded relief, and the perspective view is of the grid ocean. The wave-vector plot
-shows the same nested, roughly circular sets.
+are grey shaded relief. The wave-vector plot shows the same nested, roughly circular sets.
 
 ### The approximation claim: lattice against tensor grid at equal N
 
