@@ -20,6 +20,7 @@
 #include <criterion/criterion.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 static double sum_abs(const double *c, size_t N)
 {
@@ -144,4 +145,19 @@ Test(rank1_eval, ocean_image_and_refusals)
     c = calloc(2 * L.N, sizeof *c);
     cr_expect_eq(nl_rank1_grid(&L, c, 1.0, 8, NULL, h, NULL, NULL, NULL), NL_EINVAL, "a 1D lattice");
     nl_rank1_free(&L), free(c);
+}
+
+/* The model's coefficients, transformed, are exactly the one-call synthesis
+ * (the same operations in the same order: bit-identical). */
+Test(rank1_eval, model_coefficients_are_the_synthesis)
+{
+    nl_rank1_lattice L;
+    nl_model *m = test_model("matern:nu=1.5,scale=0.1");
+    cr_assert_eq(nl_rank1_korobov(3001, 3, 0, &L), NL_OK);
+    double *c = malloc(2 * L.N * sizeof *c), *f = malloc(L.N * sizeof *f), *g = malloc(L.N * sizeof *g);
+    cr_assert_eq(nl_rank1_model_coefficients(&L, m, 2.385, 9, 0, c, NULL), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_rank1_synthesize(&L, c, 2.385, f, NULL, NULL), NL_OK);
+    cr_assert_eq(nl_rank1_model_synthesize(&L, m, 2.385, 9, g, NULL, NULL), NL_OK);
+    cr_expect_eq(memcmp(f, g, L.N * sizeof *f), 0, "two steps differ from one");
+    free(c), free(f), free(g), nl_model_free(m), nl_rank1_free(&L);
 }
