@@ -9,17 +9,25 @@
 
 static const char help[] =
     "usage: noiselab cloud SCENE.json -o CLOUD.png [--exr CLOUD.exr]\n\n"
-    "Stam and Fiume's clouds: the density is the kriged global shape (simple kriging of\n"
-    "the scene's points with an ellipsoidal covariance) plus small-scale noise (a periodic\n"
-    "3D FFT field), thresholded so that edges thin out; rendered by marching rays with\n"
-    "absorption and single scattering toward the sun (a precomputed light volume) over\n"
-    "a sky gradient.  SCENE.json:\n"
+    "Stam and Fiume's clouds: the density is the kriged global shape (ordinary kriging,\n"
+    "as in the paper, of the scene's points with an ellipsoidal covariance, fully\n"
+    "oriented by three rotation angles) times small-scale noise (a periodic 3D FFT\n"
+    "volume, or sparse-convolution noise evaluated at every sample of every ray),\n"
+    "thresholded so that edges thin out; rendered by marching rays with absorption\n"
+    "and single scattering toward the sun (a precomputed light volume) over a sky\n"
+    "gradient.  SCENE.json:\n"
     "  {\"size\": [W, H], \"box\": [[x0, y0, z0], [x1, y1, z1]],\n"
     "   \"points\": [[x, y, z, value], ...], \"acf\": \"gauss:scale=..,ratio=..,zratio=..\",\n"
     "   \"noise\": {\"acf\": SPEC, \"amplitude\": A, \"period\": P, \"grid\": g, \"seed\": S},\n"
     "   \"threshold\": t, \"extinction\": sigma, \"grid\": G,\n"
     "   \"camera\": {\"position\": [..], \"look_at\": [..], \"fov\": degrees},\n"
-    "   \"sun\": [x, y, z]}   (y is up)\n";
+    "   \"sun\": [x, y, z]}   (y is up)\n"
+    "Optional: \"kriging\": \"ordinary\" (default; far from every datum the shape tends to\n"
+    "the data's estimated mean, so surround the cloud with points of value <= 0) or\n"
+    "\"simple\" (mean 0: scenes made before ordinary kriging render as they did);\n"
+    "\"rotation\": [ax, ay, az] degrees about x, y, z (the ellipsoid turned by\n"
+    "Rz Ry Rx); in \"noise\": \"kind\": \"grid\" (default) or \"point\" (a gauss: acf;\n"
+    "no period or grid) with \"density\": impulses per scale^3 (default 8).\n";
 
 static void progress(double f) { cli_progress("cloud", f); }
 

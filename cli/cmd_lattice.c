@@ -8,6 +8,7 @@
 #include <errno.h>
 #include <getopt.h>
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,7 +16,8 @@
 static const char help[] =
     "usage: noiselab lattice --points N --dim S [--generator fibonacci|korobov[:A]|G1,...,GS]\n"
     "                        [--acf SPEC | --spectrum SPEC] [--extent E] [--seed X]\n"
-    "                        [--wave-vectors] [--json] [-o OUT.tsv] [--mesh OUT.obj] [--clamp]\n\n"
+    "                        [--wave-vectors] [--json] [-o OUT.tsv] [--mesh OUT.obj] [--clamp]\n"
+    "                        [--image OUT.exr|OUT.png [--size W] [--at X3[,X4]]]\n\n"
     "Rank-1 lattice x_n = (n/N) g mod 1 (Keller 2001).  Generators: fibonacci (2D, N a\n"
     "Fibonacci number, g = (1, F_{k-1})), korobov (g = (1, a, a^2, ...) with a searched\n"
     "for the largest minimum distance, or given), or explicit.  Default: fibonacci in 2D\n"
@@ -26,11 +28,19 @@ static const char help[] =
     "  of side E (default 1): TSV columns x1..xS value grad1..gradS; a model that is\n"
     "  not positive definite on the lattice (negative spectrum) is refused, or with\n"
     "  --clamp its negative values are zeroed and the header gives the change\n"
-    "  --mesh OBJ      (2D) the periodic Delaunay triangulation of the height field\n";
+    "  --mesh OBJ      (2D) the periodic Delaunay triangulation of the height field\n"
+    "  --image         (2D to 4D, with a model) the field between the lattice points: its\n"
+    "                  trigonometric series on a W x W grid (default 256) over the first\n"
+    "                  two coordinates, by one W x W FFT through the wave vectors, the\n"
+    "                  others fixed by --at (unit torus coordinates, default 0); EXR of\n"
+    "                  the values, or PNG from -3 to +3 standard deviations\n";
 
 /* The command's options. */
 typedef struct {
     const char *gen, *spec, *out, *mesh;  /* as given, or NULL */
+    const char *image;                    /* --image, or NULL */
+    size_t W;                             /* --size */
+    double at[2];                         /* --at */
     size_t N;                             /* --points */
     int s, wv, json, spectral, clamp;     /* --dim, --wave-vectors, --json, --spectrum given, --clamp */
     char note[240];                       /* what the synthesis approximated, for the header */
@@ -47,7 +57,8 @@ static void parse(int argc, char **argv, opts_t *a)
         {"seed", required_argument, 0, 's'},    {"wave-vectors", no_argument, 0, 'w'},
         {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
         {"mesh", required_argument, 0, 'M'},    {"help", no_argument, 0, 'h'},
-        {"clamp", no_argument, 0, 'c'},
+        {"clamp", no_argument, 0, 'c'},         {"image", required_argument, 0, 'i'},
+        {"size", required_argument, 0, 'W'},    {"at", required_argument, 0, 'A'},
         {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "lattice")) != -1) {
@@ -66,6 +77,21 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'j': a->json = 1; break;
         case 'o': a->out = optarg; break;
         case 'M': a->mesh = optarg; break;
+        case 'i': a->image = optarg; break;
+        case 'W':
+            a->W = cli_parse_count("--size", optarg, 2);
+            if (a->W > 8192)
+                cli_die(2, "--size: expected at most 8192 pixels a side, got %zu", a->W);
+            break;
+        case 'A': {
+            char *e;
+            a->at[0] = strtod(optarg, &e);
+            if (*e == ',')
+                a->at[1] = strtod(e + 1, &e);
+            if (*e || !(fabs(a->at[0]) <= 1e9) || !(fabs(a->at[1]) <= 1e9))
+                cli_die(2, "--at: expected X3[,X4] within 1e9, got \"%s\"", optarg);
+            break;
+        }
         case 'h': fputs(help, stdout); exit(0);
         }
     }
@@ -78,6 +104,10 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "--points: expected at most 16777216, got %zu", a->N);
     if (a->mesh && a->s != 2)
         cli_die(2, "--mesh: expected --dim 2, got %d", a->s);
+    if (a->image && (a->s < 2 || !a->spec))
+        cli_die(2, "--image: expected --dim 2 to 4 and a model (--acf or --spectrum)");
+    if (a->image && !cli_has_ext(a->image, ".exr") && !cli_has_ext(a->image, ".png"))
+        cli_die(2, "--image: expected a file ending in .exr or .png, got \"%s\"", a->image);
 }
 
 /* The lattice of --generator (default: fibonacci in 2D when N is a
@@ -209,7 +239,7 @@ static void write_outputs(const opts_t *a, const nl_rank1_lattice *L, const doub
         write_points(fp, a, L, f, grad, imag);
         if (fclose(fp))
             cli_die(1, "-o: write failed");
-    } else if (f && !a->mesh && !a->wv)
+    } else if (f && !a->mesh && !a->wv && !a->image)
         write_points(stdout, a, L, f, grad, imag);
     if (a->mesh) {
         snprintf(comment, sizeof comment, "noiselab lattice: periodic Delaunay triangulation, N %zu, %s", a->N,
@@ -221,6 +251,30 @@ static void write_outputs(const opts_t *a, const nl_rank1_lattice *L, const doub
     }
     cli_out_commit(a->out);
     cli_out_commit(a->mesh);
+}
+
+/* --image: the series on the W x W grid. */
+static void write_image(const opts_t *a, const nl_rank1_lattice *L, const double *coef)
+{
+    size_t W = a->W ? a->W : 256, n[2] = {W, W};
+    double sp[2] = {a->extent / (double)W, a->extent / (double)W}, var = 0;
+    nl_meta meta = {0};
+    cli_check(nl_size_check(2, n, 3 * sizeof(double), 1, NULL));
+    nl_field *img = cli_field_alloc(2, n, sp);
+    cli_check(nl_rank1_grid(L, coef, a->extent, W, a->at, img->data, NULL, NULL, NULL));
+    for (size_t m = 0; m < L->N; m++)
+        var += coef[2 * m] * coef[2 * m] + coef[2 * m + 1] * coef[2 * m + 1];
+    const char *tmp = cli_out_begin(a->image);
+    if (cli_has_ext(a->image, ".png"))
+        cli_check(nl_png_write_field(tmp, img, -3 * sqrt(var), 3 * sqrt(var) + (var > 0 ? 0 : 1)));
+    else {
+        snprintf(meta.model, sizeof meta.model, "%s", a->spec);
+        snprintf(meta.method, sizeof meta.method, "rank1:N=%zu,dim=%d,at=%g,%g", L->N, L->s, a->at[0], a->at[1]);
+        snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);
+        cli_check(nl_exr_write(tmp, img, &meta));
+    }
+    cli_out_commit(a->image);
+    nl_field_free(img);
 }
 
 /* The field of --acf/--spectrum on the lattice, and its outputs. */
@@ -237,8 +291,10 @@ static void field(opts_t *a, const nl_rank1_lattice *L)
     nl_rank1_model_info info;
     cli_check(nl_size_check(1, &a->N, (1 + (size_t)a->s) * sizeof *f, 1, NULL));
     f = cli_malloc(a->N * sizeof *f), grad = cli_malloc(a->N * a->s * sizeof *grad);
-    cli_check(nl_rank1_model_synthesize_info(L, m, a->extent, a->seed, a->clamp ? NL_RANK1_CLAMP : 0, f, grad, &imag,
-                                             &info));
+    double *coef = cli_malloc(2 * a->N * sizeof *coef);
+    /* nl_rank1_model_synthesize_info in two steps, to keep the coefficients */
+    cli_check(nl_rank1_model_coefficients(L, m, a->extent, a->seed, a->clamp ? NL_RANK1_CLAMP : 0, coef, &info));
+    cli_check(nl_rank1_synthesize(L, coef, a->extent, f, grad, &imag));
     size_t k = 0;
     if (info.nodes)
         k += (size_t)snprintf(a->note, sizeof a->note, ", spectrum on a radial table of %zu nodes (interpolation "
@@ -247,7 +303,9 @@ static void field(opts_t *a, const nl_rank1_lattice *L)
         snprintf(a->note + k, sizeof a->note - k, ", clamped: %zu negative spectrum values zeroed (variance changed "
                  "by %.2g of it)", info.negatives, info.clamp_error);
     write_outputs(a, L, f, grad, imag);
-    free(f), free(grad);
+    if (a->image)
+        write_image(a, L, coef);
+    free(f), free(grad), free(coef);
     nl_model_free(m);
 }
 

@@ -16,15 +16,20 @@ static const char help[] =
     "usage: noiselab ocean (--lattice fibonacci --points N | --grid M) --wind V,ANGLE\n"
     "                      [--time T] [--frames F --dt DT] [--patch P] [--amplitude A]\n"
     "                      [--seed S] [--size W] -o OUT.tsv|OUT.exr [--image I.png]\n"
-    "                      [--tile I.png] [--mesh O.obj]\n\n"
+    "                      [--tile I.png] [--mesh O.obj] [--draw series|delaunay]\n\n"
     "Tessendorf's ocean: Phillips spectrum for wind V m/s from ANGLE degrees, deep-water\n"
     "dispersion w^2 = g |K|, h(k,t) = h0(k) e^{iwt} + conj(h0(-k)) e^{-iwt}, on a patch of\n"
     "P metres (default 100), amplitude A (default 1e-4).  On the Fibonacci lattice\n"
     "(Keller 2001) the heights and gradients come from one FFT of length N (the\n"
     "gradient from one more per axis); on an M x M grid from 2D FFTs.\n"
-    "  -o       lattice: TSV x y h nx ny nz; grid: EXR of heights\n"
-    "  --image  shaded height field, W x W (default 512; the lattice rasterised over its\n"
-    "           periodic Delaunay triangles)\n"
+    "  -o       lattice: TSV x y h nx ny nz, or with a name ending in .exr the field's\n"
+    "           heights on the W x W grid of --size (its series, as --draw series);\n"
+    "           grid: EXR of heights\n"
+    "  --image  shaded height field, W x W (default 512); on the lattice the field itself,\n"
+    "           its trigonometric series evaluated at every pixel by one W x W FFT\n"
+    "           through the lattice's wave vectors (--draw series, the default), or\n"
+    "           its lattice values interpolated over the periodic Delaunay triangles\n"
+    "           (--draw delaunay, the paper's rendering)\n"
     "  --tile   the same, 2 x 2 patches (Keller's Fig. 3: the patches tile)\n"
     "  --mesh   lattice: OBJ of the periodic Delaunay triangulation\n"
     "  --frames F with --dt: F time steps, files named OUT-000.ext, ...\n";
@@ -59,6 +64,7 @@ static void write_png(const char *path, int fr, int frames, const double *img, s
 /* The command's options. */
 typedef struct {
     const char *lat, *out, *image, *tile, *mesh;  /* as given, or NULL */
+    int delaunay;                                 /* --draw delaunay */
     size_t N, M, W;                               /* --points, --grid, --size */
     double t0, dt, v, ang;                        /* --time, --dt, --wind speed and degrees */
     int frames;                                   /* --frames */
@@ -76,7 +82,8 @@ static void parse(int argc, char **argv, opts_t *a)
         {"amplitude", required_argument, 0, 'A'}, {"seed", required_argument, 0, 's'},
         {"size", required_argument, 0, 'W'},    {"output", required_argument, 0, 'o'},
         {"image", required_argument, 0, 'i'},   {"tile", required_argument, 0, 'T'},
-        {"mesh", required_argument, 0, 'M'},    {"help", no_argument, 0, 'h'},
+        {"mesh", required_argument, 0, 'M'},    {"draw", required_argument, 0, 'd'},
+        {"help", no_argument, 0, 'h'},
         {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "ocean")) != -1) {
@@ -109,6 +116,11 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'i': a->image = optarg; break;
         case 'T': a->tile = optarg; break;
         case 'M': a->mesh = optarg; break;
+        case 'd':
+            if (strcmp(optarg, "series") && strcmp(optarg, "delaunay"))
+                cli_die(2, "--draw: expected series or delaunay, got \"%s\"", optarg);
+            a->delaunay = !strcmp(optarg, "delaunay");
+            break;
         case 'h': fputs(help, stdout); exit(0);
         }
     }
@@ -131,6 +143,8 @@ static void check(int argc, char **argv, const opts_t *a)
         cli_die(2, "--size/--grid: expected at most 8192");
     if (!(fabs(a->t0) + (a->frames - 1) * fabs(a->dt) <= 1e9))
         cli_die(2, "--time/--dt: expected times within 1e9 s, got %g + %d x %g", a->t0, a->frames - 1, a->dt);
+    if (a->delaunay && !a->lat)
+        cli_die(2, "--draw: expected --lattice (a grid ocean is drawn from its samples)");
     if (a->mesh && !a->lat)
         cli_die(2, "--mesh: expected --lattice");
 }
@@ -158,8 +172,31 @@ static void write_lattice_tsv(const opts_t *a, const nl_rank1_lattice *L, const 
     free(nrm);
 }
 
-/* One lattice frame: its TSV and mesh, and the rasterised image (W x W
- * heights and gradients into img, gx, gy) when a picture is wanted. */
+/* Frame fr's heights (M x M over the patch) as an EXR named after -o. */
+static void write_heights(const opts_t *a, int fr, double t, size_t M, double *h, const char *kind)
+{
+    for (size_t q = 0; q < M * M; q++)
+        if (!(fabs(h[q]) <= FLT_MAX))
+            cli_die(2, "--amplitude: %g makes heights of %g, beyond the float32 range of EXR (%g)", a->o.amplitude,
+                    h[q], FLT_MAX);
+    size_t n[2] = {M, M};
+    double sp[2] = {a->o.patch / (double)M, a->o.patch / (double)M};
+    nl_meta meta = {0};
+    char *name = frame_name(a->out, fr, a->frames);
+    const char *tmp = cli_out_begin(name);
+    nl_field *f = cli_field_alloc(2, n, sp);
+    memcpy(f->data, h, M * M * sizeof *h);
+    snprintf(meta.method, sizeof meta.method, "ocean:%s=%zu,wind=%g,%g,t=%g,patch=%g", kind, a->lat ? a->N : M, a->v,
+             a->ang, t, a->o.patch);
+    snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);
+    cli_check(nl_exr_write(tmp, f, &meta));
+    cli_out_commit(name);
+    nl_field_free(f);
+    free(name);
+}
+
+/* One lattice frame: its TSV and mesh, and the picture's W x W heights and
+ * gradients (img, gx, gy) when one is wanted. */
 static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, double t, double *img, double *gx,
                           double *gy)
 {
@@ -167,7 +204,7 @@ static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, do
     double *h = cli_malloc(N * sizeof *h), *g = cli_malloc(2 * N * sizeof *g);
     int st;
     cli_check(nl_ocean_lattice_frame(L, &a->o, a->seed, t, h, g));
-    if (a->out) {
+    if (a->out && !cli_has_ext(a->out, ".exr")) {
         char *name = frame_name(a->out, fr, a->frames);
         write_lattice_tsv(a, L, h, g, t, cli_out_begin(name));
         cli_out_commit(name);
@@ -183,8 +220,16 @@ static void lattice_frame(const opts_t *a, const nl_rank1_lattice *L, int fr, do
         cli_out_commit(name);
         free(name);
     }
-    if ((a->image || a->tile) && (st = nl_rank1_rasterize(L, h, g, a->W, img, gx, gy)))
+    if ((a->image || a->tile) && (st = a->delaunay ? nl_rank1_rasterize(L, h, g, a->W, img, gx, gy)
+                                                   : nl_ocean_lattice_image(L, &a->o, a->seed, t, a->W, img, gx, gy)))
         cli_die_status(st);
+    if (a->out && cli_has_ext(a->out, ".exr")) {
+        size_t W = a->W;
+        double *hw = cli_malloc(W * W * sizeof *hw);
+        cli_check(nl_ocean_lattice_image(L, &a->o, a->seed, t, W, hw, NULL, NULL));
+        write_heights(a, fr, t, W, hw, "lattice");
+        free(hw);
+    }
     free(h), free(g);
 }
 
@@ -195,29 +240,8 @@ static void grid_frame(const opts_t *a, int fr, double t, double *img, double *g
     size_t M = a->M;
     double *h = cli_malloc(M * M * sizeof *h), *hx = cli_malloc(M * M * sizeof *hx), *hy = cli_malloc(M * M * sizeof *hy);
     cli_check(nl_ocean_grid(M, &a->o, a->seed, t, h, hx, hy));
-    for (size_t q = 0; a->out && q < M * M; q++)
-        if (!(fabs(h[q]) <= FLT_MAX)) {
-            double big = h[q];
-            free(h), free(hx), free(hy);
-            cli_die(2, "--amplitude: %g makes heights of %g, beyond the float32 range of EXR (%g)", a->o.amplitude,
-                    big, FLT_MAX);
-        }
-    if (a->out) {
-        size_t n[2] = {M, M};
-        double sp[2] = {a->o.patch / (double)M, a->o.patch / (double)M};
-        nl_meta meta = {0};
-        char *name = frame_name(a->out, fr, a->frames);
-        const char *tmp = cli_out_begin(name);
-        nl_field *f = cli_field_alloc(2, n, sp);
-        memcpy(f->data, h, M * M * sizeof *h);
-        snprintf(meta.method, sizeof meta.method, "ocean:grid=%zu,wind=%g,%g,t=%g,patch=%g", M, a->v, a->ang, t,
-                 a->o.patch);
-        snprintf(meta.seed, sizeof meta.seed, "%llu", (unsigned long long)a->seed);
-        cli_check(nl_exr_write(tmp, f, &meta));
-        cli_out_commit(name);
-        nl_field_free(f);
-        free(name);
-    }
+    if (a->out)
+        write_heights(a, fr, t, M, h, "grid");
     nl_render_nearest(M, h, a->W, img), nl_render_nearest(M, hx, a->W, gx), nl_render_nearest(M, hy, a->W, gy);
     free(h), free(hx), free(hy);
 }

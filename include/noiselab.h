@@ -53,6 +53,7 @@ extern "C" {
 #include "noiselab/synth/subdiv.h"
 #include "noiselab/synth/midpoint.h"
 #include "noiselab/synth/sparse.h"
+#include "noiselab/synth/sparse_point.h"
 #include "noiselab/synth/faulting.h"
 #include "noiselab/synth/lattice.h"
 #include "noiselab/synth/shape.h"

@@ -1,50 +1,18 @@
 /* Clouds (Stam and Fiume 1991): kriged shape + noise density, light volume,
  * ray marching. */
-#include "cloud.h"
-#include "../analysis/krige.h"
+#include "cloud_internal.h"
 #include "../core/nl_error.h"
 #include "../synth/fft.h"
+#include "../synth/sparse_point.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 typedef struct {
-    size_t n[3];       /* samples per axis */
-    double lo[3], d[3];/* origin and step */
-    double *v;         /* values, x fastest */
-    int periodic;      /* wrap instead of clamp */
-} vol;
-
-static double vol_at(const vol *g, const double *p)
-{
-    double s = 0, t[3];
-    long i0[3];
-    for (int a = 0; a < 3; a++) {
-        double u = (p[a] - g->lo[a]) / g->d[a];
-        if (!g->periodic)
-            u = fmin(fmax(u, 0), (double)g->n[a] - 1.000001);
-        i0[a] = (long)floor(u);
-        t[a] = u - (double)i0[a];
-    }
-    for (int c = 0; c < 8; c++) {
-        double w = 1;
-        size_t idx[3];
-        for (int a = 0; a < 3; a++) {
-            long i = i0[a] + ((c >> a) & 1);
-            if (g->periodic)
-                i = ((i % (long)g->n[a]) + (long)g->n[a]) % (long)g->n[a];
-            idx[a] = (size_t)i;
-            w *= (c >> a) & 1 ? t[a] : 1 - t[a];
-        }
-        s += w * g->v[(idx[2] * g->n[1] + idx[1]) * g->n[0] + idx[0]];
-    }
-    return s;
-}
-
-typedef struct {
     const nl_cloud_scene *s;
-    vol shape, noise, light;
+    nl_cloud_vol shape, noise, light;
+    nl_synth_sparse_point *pn; /* point noise, or NULL: the noise volume */
 } ctx;
 
 static double density(const ctx *c, const double *p)
@@ -53,10 +21,15 @@ static double density(const ctx *c, const double *p)
     for (int a = 0; a < 3; a++)
         if (p[a] < s->lo[a] || p[a] > s->hi[a])
             return 0;
-    double k = vol_at(&c->shape, p);
+    double k = nl_cloud_vol_at(&c->shape, p);
     if (k <= 0)
         return 0;
-    double v = k * (1 + s->amplitude * vol_at(&c->noise, p)) - s->threshold;
+    double n;
+    if (c->pn)
+        nl_synth_sparse_point_eval(c->pn, 1, p, &n);  /* p is inside the box: cannot fail */
+    else
+        n = nl_cloud_vol_at(&c->noise, p);
+    double v = k * (1 + s->amplitude * n) - s->threshold;
     return v > 0 ? v / (1 - s->threshold) : 0;
 }
 
@@ -84,46 +57,9 @@ static void normalize(double *v)
         v[a] /= n;
 }
 
-/* The global shape: simple kriging (mean 0) of the scene's points on a G^3
- * grid over the box; *step receives the smallest grid step. */
-static int shape_volume(const nl_cloud_scene *s, vol *v, double *step)
-{
-    nl_krige_plan *kp;
-    size_t G = s->grid;
-    double *pts = malloc(s->npoints * 3 * sizeof *pts), *val = malloc(s->npoints * sizeof *val);
-    int st;
-    if (!pts || !val) {
-        free(pts), free(val);
-        return NL_ERROR(NL_ENOMEM, "out of memory");
-    }
-    for (size_t i = 0; i < s->npoints; i++)
-        memcpy(pts + 3 * i, s->points + 4 * i, 3 * sizeof *pts), val[i] = s->points[4 * i + 3];
-    st = nl_krige_plan_alloc(s->shape, 3, s->npoints, pts, val, 1, 0, 0, &kp);
-    free(pts), free(val);
-    if (st)
-        return st;
-    *step = 1e300;
-    for (int a = 0; a < 3; a++) {
-        v->n[a] = G, v->lo[a] = s->lo[a], v->d[a] = (s->hi[a] - s->lo[a]) / (double)(G - 1);
-        *step = fmin(*step, v->d[a]);
-    }
-    v->v = malloc(G * G * G * sizeof(double));
-    if (!v->v) {
-        nl_krige_plan_free(kp);
-        return NL_ERROR(NL_ENOMEM, "out of memory for the shape grid");
-    }
-    for (size_t q = 0; q < G * G * G; q++) {
-        double p[3] = {s->lo[0] + (double)(q % G) * v->d[0], s->lo[1] + (double)((q / G) % G) * v->d[1],
-                       s->lo[2] + (double)(q / (G * G)) * v->d[2]};
-        nl_krige_eval(kp, p, &v->v[q], NULL, NULL);
-    }
-    nl_krige_plan_free(kp);
-    return NL_OK;
-}
-
 /* The small-scale noise: a periodic FFT field of unit variance, g^3 samples
  * over one period. */
-static int noise_volume(const nl_cloud_scene *s, vol *v)
+static int noise_volume(const nl_cloud_scene *s, nl_cloud_vol *v)
 {
     size_t g = s->noise_grid, n[3] = {g, g, g};
     double h[3] = {s->period / (double)g, s->period / (double)g, s->period / (double)g}, zero[3] = {0, 0, 0};
@@ -152,27 +88,59 @@ static int noise_volume(const nl_cloud_scene *s, vol *v)
     return NL_OK;
 }
 
+/* The density toward the sun: computed at x, or, with point noise, from
+ * its samples at the grid points (dens) so that the G^3 sun rays do not
+ * evaluate the noise at every step. */
+static double sun_density(const ctx *c, const nl_cloud_vol *dens, const double *x)
+{
+    if (!dens->v)
+        return density(c, x);
+    for (int a = 0; a < 3; a++)
+        if (x[a] < c->s->lo[a] || x[a] > c->s->hi[a])
+            return 0;
+    return nl_cloud_vol_at(dens, x);
+}
+
+static void grid_point(const ctx *c, size_t q, double *p)
+{
+    size_t G = c->s->grid;
+    p[0] = c->s->lo[0] + (double)(q % G) * c->shape.d[0], p[1] = c->s->lo[1] + (double)((q / G) % G) * c->shape.d[1];
+    p[2] = c->s->lo[2] + (double)(q / (G * G)) * c->shape.d[2];
+}
+
 /* The light volume: transmittance toward the sun from every shape grid
  * point, marched with `step`. */
 static int light_volume(ctx *c, const double *sun, double step)
 {
     const nl_cloud_scene *s = c->s;
     size_t G = s->grid;
+    nl_cloud_vol dens = c->shape;
+    dens.v = NULL;
     c->light = c->shape;
     c->light.v = malloc(G * G * G * sizeof(double));
-    if (!c->light.v)
+    if (c->pn && (dens.v = malloc(G * G * G * sizeof(double))))
+#pragma omp parallel for schedule(dynamic, 256)
+        for (size_t q = 0; q < G * G * G; q++) {
+            double p[3];
+            grid_point(c, q, p);
+            dens.v[q] = density(c, p);
+        }
+    if (!c->light.v || (c->pn && !dens.v)) {
+        free(dens.v);
         return NL_ERROR(NL_ENOMEM, "out of memory for the light volume");
+    }
 #pragma omp parallel for schedule(dynamic, 16)
     for (size_t q = 0; q < G * G * G; q++) {
-        double p[3] = {s->lo[0] + (double)(q % G) * c->shape.d[0], s->lo[1] + (double)((q / G) % G) * c->shape.d[1],
-                       s->lo[2] + (double)(q / (G * G)) * c->shape.d[2]}, t0, t1, tau = 0;
+        double p[3], t0, t1, tau = 0;
+        grid_point(c, q, p);
         if (box_hit(s, p, sun, &t0, &t1))
             for (double t = step * 0.5; t < t1; t += step) {
                 double x[3] = {p[0] + t * sun[0], p[1] + t * sun[1], p[2] + t * sun[2]};
-                tau += density(c, x) * step;
+                tau += sun_density(c, &dens, x) * step;
             }
         c->light.v[q] = exp(-s->extinction * tau);
     }
+    free(dens.v);
     return NL_OK;
 }
 
@@ -203,7 +171,7 @@ static void pixel(const ctx *c, const camera *cm, size_t x, size_t y, unsigned c
             double rho = density(c, p);
             if (rho <= 0)
                 continue;
-            double a = s->extinction * rho * step, ls = vol_at(&c->light, p);
+            double a = s->extinction * rho * step, ls = nl_cloud_vol_at(&c->light, p);
             for (int k = 0; k < 3; k++)
                 L[k] += T * a * (sunc[k] * ls * phase * 1.4 + amb[k]);
             T *= exp(-a);
@@ -286,9 +254,18 @@ static int check_scene(const nl_cloud_scene *s)
                         s->sun[1], s->sun[2]);
     if ((st = check_camera(s, size)))
         return st;
+    for (int a = 0; a < 3; a++)
+        if (!(fabs(s->rotation[a]) <= 360))
+            return NL_ERROR(NL_EINVAL, "cloud: rotation: expected angles within +-360 degrees, got %g about axis %d",
+                            s->rotation[a], a + 1);
+    if ((s->kriging != NL_CLOUD_ORDINARY && s->kriging != NL_CLOUD_SIMPLE) ||
+        (s->noise_kind != NL_CLOUD_NOISE_GRID && s->noise_kind != NL_CLOUD_NOISE_POINT))
+        return NL_ERROR(NL_EINVAL, "cloud: expected ordinary or simple kriging and grid or point noise, got %d and %d",
+                        s->kriging, s->noise_kind);
     /* the shape, light and noise volumes */
     size_t vs[3] = {s->grid, s->grid, s->grid}, vn[3] = {s->noise_grid, s->noise_grid, s->noise_grid};
-    if ((st = nl_size_check(3, vs, 2 * sizeof(double), 1, NULL)) ||
+    /* shape and light, and with point noise the density sampled for the light */
+    if ((st = nl_size_check(3, vs, (s->noise_kind == NL_CLOUD_NOISE_POINT ? 3 : 2) * sizeof(double), 1, NULL)) ||
         (st = nl_size_check(3, vn, 2 * sizeof(double), 1, NULL)))
         return st;
     return NL_OK;
@@ -305,9 +282,12 @@ int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, vo
     c.s = s;
     memcpy(cm.sun, s->sun, sizeof cm.sun);
     normalize(cm.sun);
-    if ((st = shape_volume(s, &c.shape, &cm.step)) || (st = noise_volume(s, &c.noise)) ||
+    if ((st = nl_cloud_shape_volume(s, &c.shape, &cm.step)) ||
+        (st = s->noise_kind == NL_CLOUD_NOISE_POINT
+                  ? nl_synth_sparse_point_alloc(s->noise, s->noise_density, s->seed, s->lo, s->hi, &c.pn)
+                  : noise_volume(s, &c.noise)) ||
         (cm.step *= 0.5, st = light_volume(&c, cm.sun, cm.step))) {
-        free(c.shape.v), free(c.noise.v);
+        free(c.shape.v), free(c.noise.v), free(c.light.v), nl_synth_sparse_point_free(c.pn);
         return st;
     }
     camera_setup(s, &cm);
@@ -327,6 +307,6 @@ int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, vo
             progress((double)done / (double)s->height);
         }
     }
-    free(c.shape.v), free(c.noise.v), free(c.light.v);
+    free(c.shape.v), free(c.noise.v), free(c.light.v), nl_synth_sparse_point_free(c.pn);
     return NL_OK;
 }

@@ -4,6 +4,7 @@
 
 #include <errno.h>
 #include <jansson.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -100,6 +101,31 @@ static int scene_numbers(json_t *j, json_t *noise, const char *path, nl_cloud_sc
     return NL_OK;
 }
 
+/* The optional keys of Stam and Fiume's primitive: "kriging", "rotation",
+ * and the noise's "kind" and "density". */
+static int scene_options(json_t *j, json_t *noise, const char *path, nl_cloud_scene *s)
+{
+    json_t *kr = json_object_get(j, "kriging"), *kind = json_object_get(noise, "kind");
+    int st;
+    if (kr && (!json_is_string(kr) || (strcmp(json_string_value(kr), "ordinary") &&
+                                       strcmp(json_string_value(kr), "simple"))))
+        return NL_ERROR(NL_EINPUT, "%s: \"kriging\": expected \"ordinary\" or \"simple\"", path);
+    s->kriging = kr && !strcmp(json_string_value(kr), "simple") ? NL_CLOUD_SIMPLE : NL_CLOUD_ORDINARY;
+    if (json_object_get(j, "rotation")) {
+        if ((st = vec3(j, "rotation", s->rotation, path)))
+            return st;
+        for (int a = 0; a < 3; a++)
+            if (!(fabs(s->rotation[a]) <= 360))
+                return NL_ERROR(NL_EINPUT, "%s: \"rotation\": expected angles in degrees within +-360, got %g", path,
+                                s->rotation[a]);
+    }
+    if (kind && (!json_is_string(kind) || (strcmp(json_string_value(kind), "grid") &&
+                                           strcmp(json_string_value(kind), "point"))))
+        return NL_ERROR(NL_EINPUT, "%s: \"noise\": \"kind\": expected \"grid\" or \"point\"", path);
+    s->noise_kind = kind && !strcmp(json_string_value(kind), "point") ? NL_CLOUD_NOISE_POINT : NL_CLOUD_NOISE_GRID;
+    return num(noise, "density", 8, 0.5, 1000, path, &s->noise_density);
+}
+
 /* The models, the noise, the medium, the camera and the sun. */
 static int scene_rest(json_t *j, const char *path, nl_cloud_scene *s)
 {
@@ -114,7 +140,7 @@ static int scene_rest(json_t *j, const char *path, nl_cloud_scene *s)
         return NL_ERROR(NL_EINPUT, "%s: \"camera\": expected an object", path);
     if ((st = nl_model_parse(acf, &s->shape)) ||
         (st = nl_model_parse(json_string_value(json_object_get(noise, "acf")), &s->noise)) ||
-        (st = scene_numbers(j, noise, path, s)) || (st = vec3(cam, "position", s->cam, path)) ||
+        (st = scene_numbers(j, noise, path, s)) || (st = scene_options(j, noise, path, s)) || (st = vec3(cam, "position", s->cam, path)) ||
         (st = vec3(cam, "look_at", s->look, path)) || (st = num(cam, "fov", 40, 1, 170, path, &s->fov)) ||
         (st = vec3(j, "sun", s->sun, path)))
         return st;

@@ -5,11 +5,19 @@
  *    "noise": {"acf": SPEC, "amplitude": a, "period": P, "grid": g, "seed": S},
  *    "threshold": t, "extinction": sigma, "grid": G,
  *    "camera": {"position": [..], "look_at": [..], "fov": degrees},
- *    "sun": [x, y, z]}
+ *    "sun": [x, y, z],
+ *    "kriging": "ordinary" | "simple", "rotation": [ax, ay, az]}
+ * and in "noise" also "kind": "grid" | "point", "density": D.
  * Keys with a default (value and accepted range): amplitude 0.3 [0, 100],
  * period 1 [1e-6, 1e6], noise grid 64 [8, 256], seed 1 [0, 1e15],
  * threshold 0.2 [0, 0.99], extinction 8 [0, 1e6], grid 64 [8, 256],
- * fov 40 [1, 170]; the others are required.  W and H are 1 to 8192. */
+ * fov 40 [1, 170], kriging "ordinary", rotation [0, 0, 0] (degrees, each
+ * within +-360), kind "grid" (the periodic FFT volume; "point": sparse-
+ * convolution noise evaluated at the ray's samples, which ignores period
+ * and grid), density 8 [0.5, 1000] impulses per noise scale^3; the others
+ * are required.  W and H are 1 to 8192.  Scenes written before "kriging"
+ * existed were simple kriging: add "kriging": "simple" to render them as
+ * before. */
 #ifndef NL_RENDER_CLOUD_SCENE_H
 #define NL_RENDER_CLOUD_SCENE_H
 

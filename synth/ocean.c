@@ -152,6 +152,21 @@ int nl_ocean_lattice_frame(const nl_rank1_lattice *L, const nl_ocean_params *o, 
     return st;
 }
 
+int nl_ocean_lattice_image(const nl_rank1_lattice *L, const nl_ocean_params *o, uint64_t seed, double t, size_t W,
+                           double *h, double *gx, double *gy)
+{
+    double *cf = malloc(2 * L->N * sizeof *cf);
+    int st;
+    if (!cf)
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu coefficients", L->N);
+    if (!(st = nl_ocean_lattice_coefficients(L, o, seed, t, cf)))
+        st = nl_rank1_grid(L, cf, o->patch, W, NULL, h, gx, gy, NULL);
+    if (!st && !(st = check_finite(o, h, W * W)) && gx && gy && !(st = check_finite(o, gx, W * W)))
+        st = check_finite(o, gy, W * W);
+    free(cf);
+    return st;
+}
+
 void nl_ocean_normals(size_t count, const double *grad, double *nrm)
 {
     for (size_t n = 0; n < count; n++) {

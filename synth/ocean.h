@@ -50,6 +50,15 @@ int nl_ocean_lattice_coefficients(const nl_rank1_lattice *L, const nl_ocean_para
 int nl_ocean_lattice_frame(const nl_rank1_lattice *L, const nl_ocean_params *o, uint64_t seed, double t, double *h,
                            double *grad);
 
+/* One lattice frame as a picture: the field itself, the trigonometric
+ * polynomial of the lattice's coefficients at time t evaluated on a W x W
+ * grid of the patch (nl_rank1_grid: pixel centres, row-major; heights and
+ * gradients per metre, W * W doubles each, gx and gy may be NULL, both or
+ * neither).  Errors: those of nl_ocean_lattice_coefficients and
+ * nl_rank1_grid, heights or gradients that overflow, NL_ENOMEM. */
+int nl_ocean_lattice_image(const nl_rank1_lattice *L, const nl_ocean_params *o, uint64_t seed, double t, size_t W,
+                           double *h, double *gx, double *gy);
+
 /* Unit upward normals (3 per point: nx ny nz) of a height field from its
  * gradients (2 per point), n = (-gx, -gy, 1) / sqrt(gx^2 + gy^2 + 1). */
 void nl_ocean_normals(size_t count, const double *grad, double *nrm);

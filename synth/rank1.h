@@ -146,4 +146,41 @@ void nl_rank1_mesh_triangle(const void *mesh, size_t t, double xyz[9]);
 int nl_rank1_rasterize(const nl_rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,
                     double *gx, double *gy);
 
+/* The field between the lattice points.  The coefficients define the
+ * trigonometric polynomial (Keller, section 3.2)
+ *     f(x) = sum_{m != N/2} c_m exp(2 pi i k_m . x) + c_{N/2} cos(2 pi k_{N/2} . x)
+ * (x in unit torus coordinates, period 1 on every axis; the N/2 term, for
+ * even N, has no partner -k in K_N and is taken as its real part, the
+ * value it has at every lattice point), real for the coefficients of
+ * nl_rank1_coefficients, equal to nl_rank1_synthesize's values at the
+ * lattice points x_n.  Its gradient per unit of a torus of side `extent`
+ * is the series of i 2 pi k_m c_m / extent (the N/2 term: -2 pi k c sin(.) /
+ * extent). */
+
+/* f (and its gradient, grad may be NULL: count * s values, per unit of
+ * extent) at count points x (count * s coordinates) by the direct sum,
+ * O(N) per point.  *imag (may be NULL) receives the largest |imaginary
+ * part| of the sums (0 up to rounding for a real field).  NL_EINVAL: a
+ * coordinate that is not finite or above 1e9 in magnitude, an extent that
+ * is not positive and finite.  Thread-safe. */
+int nl_rank1_eval(const nl_rank1_lattice *L, const double *c, double extent, size_t count, const double *x, double *f,
+                  double *grad, double *imag);
+
+/* f on a W x W grid over the first two coordinates, pixel (i, j) at
+ * ((i + 1/2) / W, (j + 1/2) / W) (row-major, x fastest, as
+ * nl_rank1_rasterize), the other s - 2 coordinates fixed at `at` (s - 2
+ * values; NULL for s = 2): by one complex W x W FFT through the lattice's
+ * wave vectors (each c_m times exp(2 pi i sum_{a >= 2} k_a at_a) added at
+ * bin (k_0 mod W, k_1 mod W) with the half-pixel phase), so every pixel is
+ * the series' value to rounding; the picture is free of aliasing when W >
+ * 2 max |k_a| over the two axes.  gx, gy (may be NULL, both or neither):
+ * the gradient's first two components per unit of extent, two more FFTs.
+ * imag (may be NULL): the largest |imaginary part|.  Errors: NL_EINVAL for
+ * s < 2, W outside 2..65536, an extent that is not positive and finite, a
+ * fixed coordinate that is not finite or above 1e9; NL_ETOOBIG when the
+ * W x W buffer exceeds the memory available; NL_ENOMEM.  Plans FFTW: not
+ * thread-safe (core/fftw_plan.h). */
+int nl_rank1_grid(const nl_rank1_lattice *L, const double *c, double extent, size_t W, const double *at, double *img,
+                  double *gx, double *gy, double *imag);
+
 #endif

@@ -217,13 +217,13 @@ static double lookup(const long *k, int s, void *ctx)
     return c->v[(size_t)(k - c->L->k) / (size_t)s];
 }
 
-int nl_rank1_model_synthesize_info(const nl_rank1_lattice *L, const nl_model *m, double extent, uint64_t seed,
-                                   unsigned flags, double *f, double *grad, double *imag, nl_rank1_model_info *info)
+int nl_rank1_model_coefficients(const nl_rank1_lattice *L, const nl_model *m, double extent, uint64_t seed,
+                                unsigned flags, double *coef, nl_rank1_model_info *info)
 {
     nl_rank1_model_ctx ctx = {m, L->s, extent};
     nl_rank1_model_info dummy;
     size_t H = L->N / 2 + 1;
-    double *coef, *v;
+    double *v;
     int st;
     if (!info)
         info = &dummy;
@@ -234,11 +234,9 @@ int nl_rank1_model_synthesize_info(const nl_rank1_lattice *L, const nl_model *m,
         return NL_ERROR(NL_EINVAL, "extent: expected a positive finite length, got %g", extent);
     if ((st = nl_size_check(1, &L->N, 5 * sizeof(double), 1, NULL)))
         return st;
-    coef = malloc(2 * L->N * sizeof *coef), v = malloc(H * sizeof *v);
-    if (!coef || !v) {
-        free(coef), free(v);
+    v = malloc(H * sizeof *v);
+    if (!v)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu coefficients", L->N);
-    }
     if (nl_model_is_spectral(m)) {
         for (size_t i = 0; i < H; i++)
             v[i] = raw_spectrum(&ctx, L->k + i * L->s, L->s);
@@ -249,10 +247,24 @@ int nl_rank1_model_synthesize_info(const nl_rank1_lattice *L, const nl_model *m,
         lookup_ctx lc = {L, v};
         for (size_t i = 0; i < H; i++)
             v[i] = v[i] / pow(extent, L->s);
-        if (!(st = nl_rank1_coefficients(L, lookup, &lc, seed, coef)))
-            st = nl_rank1_synthesize(L, coef, extent, f, grad, imag);
+        st = nl_rank1_coefficients(L, lookup, &lc, seed, coef);
     }
-    free(coef), free(v);
+    free(v);
+    return st;
+}
+
+int nl_rank1_model_synthesize_info(const nl_rank1_lattice *L, const nl_model *m, double extent, uint64_t seed,
+                                   unsigned flags, double *f, double *grad, double *imag, nl_rank1_model_info *info)
+{
+    double *coef;
+    int st;
+    if ((st = nl_size_check(1, &L->N, 5 * sizeof(double), 1, NULL)))
+        return st;
+    if (!(coef = malloc(2 * L->N * sizeof *coef)))
+        return NL_ERROR(NL_ENOMEM, "out of memory for %zu coefficients", L->N);
+    if (!(st = nl_rank1_model_coefficients(L, m, extent, seed, flags, coef, info)))
+        st = nl_rank1_synthesize(L, coef, extent, f, grad, imag);
+    free(coef);
     return st;
 }
 

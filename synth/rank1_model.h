@@ -69,6 +69,14 @@ typedef struct {
 int nl_rank1_model_synthesize_info(const nl_rank1_lattice *L, const nl_model *m, double extent, uint64_t seed,
                                    unsigned flags, double *f, double *grad, double *imag, nl_rank1_model_info *info);
 
+/* The coefficients c (2N doubles, re/im, as nl_rank1_coefficients) that
+ * nl_rank1_model_synthesize_info transforms: the field's trigonometric
+ * series, for nl_rank1_eval and nl_rank1_grid (synth/rank1.h).  Same
+ * arguments, flags, info and errors (no FFT: thread-safe for reentrant
+ * models). */
+int nl_rank1_model_coefficients(const nl_rank1_lattice *L, const nl_model *m, double extent, uint64_t seed,
+                                unsigned flags, double *coef, nl_rank1_model_info *info);
+
 int nl_rank1_model_synthesize(const nl_rank1_lattice *L, const nl_model *m, double extent, uint64_t seed, double *f,
                               double *grad, double *imag);
 
