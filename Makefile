@@ -65,6 +65,8 @@ $(LIB_OBJ): Makefile
 # The Gaussian kernel gives the same bits on every SIMD path only without
 # fused multiply-adds (core/rng_kernel_internal.h).
 $(BUILD)/core/rng%.o: CFLAGS += -ffp-contract=off
+# The same for the subdivision stencils' SIMD paths (synth/subdiv_simd_internal.h).
+$(BUILD)/synth/subdiv_simd%.o: CFLAGS += -ffp-contract=off
 
 $(LIB): $(LIB_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^

@@ -1,7 +1,7 @@
 /* Generalized stochastic subdivision: refinement of a grid level by level,
  * periodic (Lewis 1987, "Boundary Conditions": wrapped indices) or as a
  * window of an infinite, spatially consistent field. */
-#include "subdiv_internal.h"
+#include "subdiv_simd_internal.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -71,19 +71,6 @@ static inline double disp_at(const disp *d, int a, long i, long j)
     return d->v[(a * d->ny + (j - d->c1)) * d->nx + (i - d->c0)];
 }
 
-/* One row J of a level being refined (refine_row_2d). */
-typedef struct {
-    const double *rows[2 * NL_SUBDIV_MAX_N]; /* source rows j+1-N..j+N, indexed by i + column */
-    double *out;                             /* the row, indexed by I */
-    const nl_subdiv_class *odd, *even;       /* classes at odd and even I */
-    double sd_odd, sd_even;                  /* their displacement deviations */
-    const double *dodd, *deven;              /* correlated: displacements by cell i, or NULL */
-    long J, oy;                              /* the row and its parity */
-    uint64_t seed;
-    unsigned lv;
-    int N;
-} row_job;
-
 /* The pairs of keys k0..k1-1 on row J into g[2 (k - k0) + branch]: runs of
  * consecutive counters, split where the key's low word wraps (at k = 0). */
 #define ROW_CHUNK 256
@@ -96,43 +83,28 @@ static void row_gauss(const row_job *r, long k0, long k1, double *g)
         nl_rng_gauss_fill(r->seed, st, rng_index(2, mid, r->J), 2 * (size_t)(k1 - mid), g + 2 * (mid - k0));
 }
 
-/* N = 2 over whole pairs (2i, 2i + 1), i = i0..i1-1, in chunks of
- * ROW_CHUNK: both points read the same 4 x 4 window, so one pass of loads
- * serves both stencils; the sums, their order and the random numbers are
- * those of the general loop (odd rows: the pair of key i; even rows: key
- * i / 2 for both odd points 4k + 1, 4k + 3). */
-static void row_n2(const row_job *r, long i0, long i1)
+/* The stencil path: the fastest this CPU has, or the one NOISELAB_SIMD
+ * lowers the Gaussian fill to (core/rng.h); all give the same bits. */
+static nl_subdiv_pairs_fn *pairs_path(void)
 {
-    const double *ae = r->even->a, *ao = r->odd->a;
-    double g[2 * ROW_CHUNK];
+    const char *s = nl_rng_simd();
+    return !strcmp(s, "avx512") ? nl_subdiv_pairs_avx512 : !strcmp(s, "avx2") ? nl_subdiv_pairs_avx2
+                                                                              : nl_subdiv_pairs_scalar;
+}
+
+/* Whole pairs (2i, 2i + 1), i = i0..i1-1, in chunks of ROW_CHUNK, by the
+ * vectorised stencils (subdiv_simd_internal.h): the sums, their order and
+ * the random numbers are those of row_any (odd rows: the pair of key i;
+ * even rows: key i / 2 for both odd points 4k + 1, 4k + 3). */
+static void row_pairs(const row_job *r, long i0, long i1)
+{
+    nl_subdiv_pairs_fn *fn = pairs_path();
+    double g[2 * ROW_CHUNK + 2];
     for (long c0 = i0; c0 < i1; c0 += ROW_CHUNK) {
         long c1 = i1 - c0 < ROW_CHUNK ? i1 : c0 + ROW_CHUNK, k0 = r->oy ? c0 : fdiv2(c0);
         if (!r->dodd)
             row_gauss(r, k0, r->oy ? c1 : fdiv2(c1 - 1) + 1, g);
-        for (long i = c0; i < c1; i++) {
-            double se = 0, so = 0;
-            for (int k = 0; k < 4; k++) {
-                const double *x = r->rows[k] + i, *pe = ae + 4 * k, *po = ao + 4 * k;
-                se += pe[0] * x[0];
-                so += po[0] * x[0];
-                se += pe[1] * x[1];
-                so += po[1] * x[1];
-                se += pe[2] * x[2];
-                so += po[2] * x[2];
-                se += pe[3] * x[3];
-                so += po[3] * x[3];
-            }
-            if (r->dodd) {
-                r->out[2 * i] = r->oy ? se + r->deven[i] : r->rows[1][i + 1];
-                r->out[2 * i + 1] = so + r->dodd[i];
-            } else if (r->oy) {
-                r->out[2 * i] = se + r->sd_even * g[2 * (i - c0)];
-                r->out[2 * i + 1] = so + r->sd_odd * g[2 * (i - c0) + 1];
-            } else {
-                r->out[2 * i] = r->rows[1][i + 1];
-                r->out[2 * i + 1] = so + r->sd_odd * g[i - 2 * k0];
-            }
-        }
+        fn(r, c0, c1, r->dodd ? NULL : g, k0);
     }
 }
 
@@ -198,10 +170,14 @@ static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, 
         r.dodd = dp->v + ((r.oy ? 0 : 1) * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
         r.deven = dp->v + (2 * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
     }
-    if (r.N == 2 && dst->x0 % 2 == 0 && dst->nx % 2 == 0)
-        row_n2(&r, dst->x0 / 2, (dst->x0 + dst->nx) / 2);
-    else
-        row_any(&r, dst->x0, dst->x0 + dst->nx);
+    /* an odd first or last sample on its own, whole pairs between */
+    const long I0 = dst->x0, I1 = dst->x0 + dst->nx, p0 = fdiv2(I0 + 1), p1 = fdiv2(I1);
+    if (I0 != 2 * fdiv2(I0))
+        row_any(&r, I0, I0 + 1);
+    if (p0 < p1)
+        row_pairs(&r, p0, p1);
+    if (I1 != 2 * p1)
+        row_any(&r, I1 - 1, I1);
 }
 
 /* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
