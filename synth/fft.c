@@ -9,6 +9,7 @@
 
 #include <complex.h>
 #include <float.h>
+#include <stdatomic.h>
 #include <fftw3.h>
 #include <math.h>
 #include <stdio.h>
@@ -21,20 +22,22 @@ struct nl_synth_fft_plan {
     double h[3];        /* grid spacing */
     size_t count;       /* samples */
     size_t half;        /* r2c coefficients: count / n0 * (n0/2 + 1) */
-    double *amp;        /* sqrt(lambda_k) / count on the r2c half grid (nl_alloc) */
-    fftw_plan fwd, inv; /* r2c and c2r */
+    double *amp;        /* sqrt(lambda_k / (2 count)) on the half grid (nl_alloc) */
+    fftw_plan inv;      /* c2r */
     nl_synth_fft_info info;
+    /* a spare half-grid buffer kept between executes (NULL: none or in use
+     * by a thread), so that repeated calls do not pay fresh pages */
+    _Atomic(fftw_complex *) spare;
 };
 
 void nl_synth_fft_plan_free(nl_synth_fft_plan *p)
 {
     if (!p)
         return;
-    if (p->fwd)
-        fftw_destroy_plan(p->fwd);
     if (p->inv)
         fftw_destroy_plan(p->inv);
     nl_free(p->amp);
+    nl_free(atomic_load(&p->spare));
     free(p);
 }
 
@@ -49,9 +52,8 @@ static int make_fftw_plans(nl_synth_fft_plan *p)
     if (!x || !c)
         st = NL_ERROR(NL_ENOMEM, "out of memory for the FFT plan");
     if (!st) {
-        p->fwd = fftw_plan_dft_r2c(p->dim, dims, x, c, nl_fftw_flags(p->count));
         p->inv = fftw_plan_dft_c2r(p->dim, dims, c, x, nl_fftw_flags(p->count));
-        if (!p->fwd || !p->inv)
+        if (!p->inv)
             st = NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", p->dim);
     }
     nl_free(x);
@@ -123,7 +125,7 @@ static int plan_from_half(const char *name, int dim, const size_t *n, const doub
     if (!st) {
         for (size_t k = 0; k < p->half; k++) {
             double l = S[k] / cell;
-            S[k] = l > 0 ? sqrt(l) / (double)p->count : 0.0;
+            S[k] = l > 0 ? sqrt(l / (2 * (double)p->count)) : 0.0;
         }
         st = make_fftw_plans(p);
     }
@@ -202,20 +204,45 @@ int nl_synth_fft_plan_spectrum(const nl_field *S, unsigned flags, nl_synth_fft_p
 
 void nl_synth_fft_plan_info(const nl_synth_fft_plan *p, nl_synth_fft_info *info) { *info = p->info; }
 
+/* Hermitian symmetry of the white spectrum W in the columns k0 = 0 and
+ * k0 = n0/2 (n0 even), which hold both k and -k: W(-k) = conj W(k) for the
+ * later of the two in row order; a self-conjugate k (every component 0 or
+ * n_a/2) is real with twice the variance, W = sqrt(2) Re W. */
+static void hermitian_columns(const nl_synth_fft_plan *p, fftw_complex *c)
+{
+    const size_t h0 = p->n[0] / 2 + 1, n1 = p->n[1], n2 = p->n[2];
+    for (int col = 0; col < 2; col++) {
+        size_t k0 = col ? p->n[0] / 2 : 0;
+        if (col && (p->n[0] % 2 || k0 == 0))
+            break;
+        for (size_t k2 = 0; k2 < n2; k2++)
+            for (size_t k1 = 0; k1 < n1; k1++) {
+                size_t r = k2 * n1 + k1, m = (n2 - k2) % n2 * n1 + (n1 - k1) % n1;
+                if (m < r)
+                    c[r * h0 + k0] = conj(c[m * h0 + k0]);
+                else if (m == r)
+                    c[r * h0 + k0] = M_SQRT2 * creal(c[r * h0 + k0]);
+            }
+    }
+}
+
 int nl_synth_fft_execute(const nl_synth_fft_plan *p, uint64_t seed, nl_field *out)
 {
+    /* the spare buffer is the one member an execute changes, atomically */
+    _Atomic(fftw_complex *) *spare = &((nl_synth_fft_plan *)p)->spare;
     fftw_complex *c;
     if (out->dim != p->dim || out->count != p->count || out->n[0] != p->n[0] || out->n[1] != p->n[1])
         return NL_ERROR(NL_EINVAL, "FFT synthesis: the output field does not match the plan's grid");
-    c = nl_alloc(p->half * sizeof *c);
-    if (!c)
+    c = atomic_exchange(spare, NULL);
+    if (!c && !(c = nl_alloc(p->half * sizeof *c)))
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu complex samples", p->half);
-    nl_rng_gauss_fill(seed, NL_STREAM_WHITE, 0, p->count, out->data);
-    fftw_execute_dft_r2c(p->fwd, out->data, c);
+    /* the white spectrum: W_k = sqrt(N/2) (g_2k + i g_2k+1), Hermitian */
+    nl_rng_gauss_fill(seed, NL_STREAM_WHITE, 0, 2 * p->half, (double *)c);
+    hermitian_columns(p, c);
 #pragma omp parallel for schedule(static) if (p->count > 65536)
     for (size_t k = 0; k < p->half; k++)
         c[k] *= p->amp[k];
     fftw_execute_dft_c2r(p->inv, c, out->data);
-    nl_free(c);
+    nl_free(atomic_exchange(spare, c));
     return NL_OK;
 }
