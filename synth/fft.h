@@ -57,7 +57,7 @@ typedef struct {
 
 /* Plan synthesis of model m on a dim-D grid (1..3) of n[] samples, spacing
  * h[] (NULL: unit; the model's lag units).  The plan owns the amplitudes
- * sqrt(lambda_k / (2 N)) on the r2c half grid and an FFTW c2r plan; free it with
+ * sqrt(lambda_k / (2 N)) on the r2c half grid and its FFTW plans; free it with
  * nl_synth_fft_plan_free.  Plans FFTW and evaluates the model: NOT
  * thread-safe (call from one thread).  Returns NL_OK and *out, or
  * (*out = NULL)
@@ -81,16 +81,15 @@ int nl_synth_fft_plan_spectrum(const nl_field *S, unsigned flags, nl_synth_fft_p
 void nl_synth_fft_plan_info(const nl_synth_fft_plan *p, nl_synth_fft_info *info);
 
 /* Synthesise the realization for `seed` into out (alloc'ed with the plan's
- * dim, n and h; row-major, x fastest; out->h is not changed).  Each call
- * needs a half-grid complex buffer (N/2 + 1 per row complex numbers, about
- * the field's size): the plan keeps one from the previous call (taken and
- * given back atomically; a call that finds it in use by another thread
- * allocates its own), so that repeated calls do not pay fresh pages; it is
- * released by nl_synth_fft_plan_free.  Apart from that buffer the call only
- * reads the plan (FFTW's new-array execute), so one plan may serve several
- * threads.  Peak memory: the field, the plan's amplitudes (half the
- * field) and the buffer.  Bit-identical for equal seeds.  NL_OK, NL_EINVAL
- * (out does not match the plan's grid), NL_ENOMEM. */
+ * dim, n and h; row-major, x fastest; out->h is not changed).  For even
+ * n[0] the transform runs in out itself (the half grid's columns 0..n0/2-1
+ * in place of the rows, column n0/2 in a side buffer of N / n0 complex
+ * numbers, the rows' c2r through a buffer of 8 rows per thread): peak
+ * memory the field and the plan's amplitudes (half the field); for odd
+ * n[0] a half-grid complex buffer (about the field's size) is allocated per
+ * call.  The call only reads the plan (FFTW's new-array execute), so one
+ * plan may serve several threads.  Bit-identical for equal seeds.  NL_OK,
+ * NL_EINVAL (out does not match the plan's grid), NL_ENOMEM. */
 int nl_synth_fft_execute(const nl_synth_fft_plan *p, uint64_t seed, nl_field *out);
 
 /* Frees the plan and its FFTW plans (NULL: no-op); not thread-safe (FFTW). */
