@@ -15,6 +15,7 @@ typedef struct {
     double *v;     /* row-major, x fastest */
     long x0, y0;   /* index of v[0] */
     long nx, ny;   /* extent (ny = 1 in 1D) */
+    long stride;   /* between rows of v (nx, or more for a view into a padded level) */
 } grid;
 
 static long fdiv2(long a) { return a >= 0 ? a / 2 : -((-a + 1) / 2); }
@@ -25,7 +26,7 @@ static int grid_alloc(grid *g, long x0, long y0, long nx, long ny)
     int st = nl_size_check(2, n, sizeof(double), 1, NULL);
     if (st)
         return st;
-    g->x0 = x0, g->y0 = y0, g->nx = nx, g->ny = ny;
+    g->x0 = x0, g->y0 = y0, g->nx = nx, g->ny = ny, g->stride = nx;
     g->v = nl_alloc((size_t)nx * (size_t)ny * sizeof *g->v);
     return g->v ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory for a %ld x %ld level", nx, ny);
 }
@@ -158,7 +159,7 @@ static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, 
     const long j = fdiv2(J);
     row_job r;
     r.N = l->N, r.J = J, r.oy = J - 2 * j, r.seed = seed, r.lv = lv;
-    r.out = dst->v + (J - dst->y0) * dst->nx - dst->x0;
+    r.out = dst->v + (J - dst->y0) * dst->stride - dst->x0;
     r.odd = &l->cls[r.oy ? 0 : 1], r.even = &l->cls[2];
     r.sd_odd = sqrt(r.odd->variance), r.sd_even = sqrt(r.even->variance);
     for (int k = 0; k < 2 * r.N; k++)
@@ -190,7 +191,7 @@ static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst
     const int standard = dim == 2 && !l->cls[0].nalt && !l->cls[1].nalt && !l->cls[2].nalt;
 #pragma omp parallel for schedule(static) if (dst->nx * dst->ny > 65536)
     for (long J = dst->y0; J < dst->y0 + dst->ny; J++) {
-        double *row = dst->v + (J - dst->y0) * dst->nx;
+        double *row = dst->v + (J - dst->y0) * dst->stride;
         if (standard) {
             refine_row_2d(l, src, dst, J, seed, lv, dp);
             continue;
@@ -272,13 +273,30 @@ static int pad_periodic(int dim, const double *v, long nx, long ny, long pad, gr
     return NL_OK;
 }
 
+/* A padded grid g (from -pad) whose interior 0..nx-1, 0..ny-1 is set: its
+ * border wrapped in place, the same values as pad_periodic of the interior. */
+static void wrap_border(int dim, grid *g, long nx, long ny, long pad)
+{
+    long py = dim == 2 ? pad : 0;
+#pragma omp parallel for schedule(static) if (nx * ny > 65536)
+    for (long j = 0; j < ny; j++) {
+        double *d = g->v + (j + py) * g->nx + pad;
+        for (long i = 1; i <= pad; i++) {
+            d[-i] = d[((-i % nx) + nx) % nx];
+            d[nx - 1 + i] = d[(nx - 1 + i) % nx];
+        }
+    }
+    for (long j = -py; j < ny + py; j++)
+        if (j < 0 || j >= ny)
+            memcpy(g->v + (j + py) * g->nx, g->v + (((j % ny) + ny) % ny + py) * g->nx, (size_t)g->nx * sizeof *g->v);
+}
+
 int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
                            nl_field *f)
 {
     const int dim = c->dim;
     long nx = (long)f->n[0], ny = dim == 2 ? (long)f->n[1] : 1;
     long cx = (long)coarse->n[0], cy = dim == 2 ? (long)coarse->n[1] : 1;
-    double *cur;
     int st;
 
     if (f->dim != dim || coarse->dim != dim)
@@ -296,38 +314,38 @@ int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse,
     }
     if ((st = nl_subdiv_check_levels(c, allow_not_pd)))
         return st;
-    /* cur: the current level (the coarse field, then each refined level;
-     * the last one is refined straight into f) */
-    cur = coarse->data;
+    /* src: the current level, padded for its refinement (the coarse field
+     * copied; then each refined level, refined straight into the interior
+     * of a padded grid; the last one is refined straight into f) */
+    grid src = {NULL, 0, 0, 0, 0, 0};
+    if (c->levels && (st = pad_periodic(dim, coarse->data, cx, cy, c->levels ? c->level[0].reach : 0, &src)))
+        return st;
     for (int k = 0; k < c->levels && !st; k++) {
-        grid src, dst = {f->data, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1};
-        if ((st = pad_periodic(dim, cur, cx, cy, c->level[k].reach, &src)))
-            break;
-        long per[2] = {cx, cy};
+        grid next = {NULL, 0, 0, 0, 0, 0}, dst = {f->data, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1, 2 * cx};
+        long per[2] = {cx, cy}, pad = k + 1 < c->levels ? c->level[k + 1].reach : 0, py = dim == 2 ? pad : 0;
         disp dp = {NULL, 0, 0, 0, 0};
-        if (k + 1 < c->levels)
-            st = grid_alloc(&dst, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1);
-        if (!st && (st = disp_alloc(dim, &c->level[k], &dst, per, seed, (unsigned)k, &dp)) && k + 1 < c->levels)
-            nl_free(dst.v);
+        if (k + 1 < c->levels && !(st = grid_alloc(&next, -pad, -py, 2 * cx + 2 * pad, dst.ny + 2 * py)))
+            dst.v = next.v + py * next.nx + pad, dst.stride = next.nx;
+        if (!st && (st = disp_alloc(dim, &c->level[k], &dst, per, seed, (unsigned)k, &dp)))
+            nl_free(next.v);
         if (!st) {
             refine(dim, &c->level[k], &src, &dst, seed, (unsigned)k, &dp);
             nl_free(dp.v);
-            if (cur != coarse->data)
-                nl_free(cur);
-            cur = dst.v;
+            nl_free(src.v);
+            src = next;
             cx *= 2;
             if (dim == 2)
                 cy *= 2;
+            if (src.v)
+                wrap_border(dim, &src, cx, cy, pad);
         }
-        nl_free(src.v);
     }
     if (!st && c->levels == 0)
-        memcpy(f->data, coarse->data, f->count * sizeof *cur);
+        memcpy(f->data, coarse->data, f->count * sizeof *f->data);
     if (!st)
         for (int a = 0; a < dim; a++)
             f->h[a] = ldexp(c->spacing0, -c->levels);
-    if (cur != coarse->data && cur != f->data)
-        nl_free(cur);
+    nl_free(src.v);
     return st;
 }
 
