@@ -66,6 +66,8 @@ $(LIB_OBJ): Makefile
 # The Gaussian kernel gives the same bits on every SIMD path only without
 # fused multiply-adds (core/rng_kernel_internal.h).
 $(BUILD)/core/rng%.o: CFLAGS += -ffp-contract=off
+# The same for the subdivision stencils' SIMD paths (synth/subdiv_simd_internal.h).
+$(BUILD)/synth/subdiv_simd%.o: CFLAGS += -ffp-contract=off
 # Where the planner finds the measured FFTW wisdom that install puts there.
 $(BUILD)/core/fftw_plan.o: CFLAGS += -DNL_WISDOM_FILE='"$(DATADIR)/noiselab/fftw-wisdom"'
 

@@ -263,23 +263,24 @@ int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, cons
         return NL_OK;
     }
     /* In-place r2c: rows padded to 2 h0 doubles; planned before filling,
-     * since a measured plan overwrites its arrays. */
+     * since a measured plan overwrites its arrays.  S is the real parts,
+     * compacted in place (S[k] from c[k], k ascending, never ahead of its
+     * source) and the block shrunk: the transform's buffer is the only one. */
+    nl_free(S);
     buf = nl_alloc(2 * half * sizeof *buf);
     p = buf ? fftw_plan_dft_r2c(dim, dims, buf, (fftw_complex *)buf, nl_fftw_flags(g.count)) : NULL;
     if (!p) {
         nl_free(buf);
-        nl_free(S);
         return buf ? NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", dim)
                    : NL_ERROR(NL_ENOMEM, "out of memory for %zu samples", 2 * half);
     }
     if (!(st = fill_rows(m, &g, g.n[0], buf, 2 * h0, 0))) {
-        const fftw_complex *c = (const fftw_complex *)buf;
         fftw_execute(p);
         for (size_t k = 0; k < half; k++)
-            S[k] = cell * creal(c[k]);
-        *out = S;
-    } else {
-        nl_free(S);
+            buf[k] = cell * buf[2 * k];
+        S = realloc(buf, half * sizeof *S);
+        *out = S ? S : buf;
+        buf = NULL;
     }
     fftw_destroy_plan(p);
     nl_free(buf);

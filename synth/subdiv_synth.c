@@ -1,7 +1,7 @@
 /* Generalized stochastic subdivision: refinement of a grid level by level,
  * periodic (Lewis 1987, "Boundary Conditions": wrapped indices) or as a
  * window of an infinite, spatially consistent field. */
-#include "subdiv_internal.h"
+#include "subdiv_simd_internal.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -15,6 +15,7 @@ typedef struct {
     double *v;     /* row-major, x fastest */
     long x0, y0;   /* index of v[0] */
     long nx, ny;   /* extent (ny = 1 in 1D) */
+    long stride;   /* between rows of v (nx, or more for a view into a padded level) */
 } grid;
 
 static long fdiv2(long a) { return a >= 0 ? a / 2 : -((-a + 1) / 2); }
@@ -25,7 +26,7 @@ static int grid_alloc(grid *g, long x0, long y0, long nx, long ny)
     int st = nl_size_check(2, n, sizeof(double), 1, NULL);
     if (st)
         return st;
-    g->x0 = x0, g->y0 = y0, g->nx = nx, g->ny = ny;
+    g->x0 = x0, g->y0 = y0, g->nx = nx, g->ny = ny, g->stride = nx;
     g->v = nl_alloc((size_t)nx * (size_t)ny * sizeof *g->v);
     return g->v ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory for a %ld x %ld level", nx, ny);
 }
@@ -71,19 +72,6 @@ static inline double disp_at(const disp *d, int a, long i, long j)
     return d->v[(a * d->ny + (j - d->c1)) * d->nx + (i - d->c0)];
 }
 
-/* One row J of a level being refined (refine_row_2d). */
-typedef struct {
-    const double *rows[2 * NL_SUBDIV_MAX_N]; /* source rows j+1-N..j+N, indexed by i + column */
-    double *out;                             /* the row, indexed by I */
-    const nl_subdiv_class *odd, *even;       /* classes at odd and even I */
-    double sd_odd, sd_even;                  /* their displacement deviations */
-    const double *dodd, *deven;              /* correlated: displacements by cell i, or NULL */
-    long J, oy;                              /* the row and its parity */
-    uint64_t seed;
-    unsigned lv;
-    int N;
-} row_job;
-
 /* The pairs of keys k0..k1-1 on row J into g[2 (k - k0) + branch]: runs of
  * consecutive counters, split where the key's low word wraps (at k = 0). */
 #define ROW_CHUNK 256
@@ -96,43 +84,28 @@ static void row_gauss(const row_job *r, long k0, long k1, double *g)
         nl_rng_gauss_fill(r->seed, st, rng_index(2, mid, r->J), 2 * (size_t)(k1 - mid), g + 2 * (mid - k0));
 }
 
-/* N = 2 over whole pairs (2i, 2i + 1), i = i0..i1-1, in chunks of
- * ROW_CHUNK: both points read the same 4 x 4 window, so one pass of loads
- * serves both stencils; the sums, their order and the random numbers are
- * those of the general loop (odd rows: the pair of key i; even rows: key
- * i / 2 for both odd points 4k + 1, 4k + 3). */
-static void row_n2(const row_job *r, long i0, long i1)
+/* The stencil path: the fastest this CPU has, or the one NOISELAB_SIMD
+ * lowers the Gaussian fill to (core/rng.h); all give the same bits. */
+static nl_subdiv_pairs_fn *pairs_path(void)
 {
-    const double *ae = r->even->a, *ao = r->odd->a;
-    double g[2 * ROW_CHUNK];
+    const char *s = nl_rng_simd();
+    return !strcmp(s, "avx512") ? nl_subdiv_pairs_avx512 : !strcmp(s, "avx2") ? nl_subdiv_pairs_avx2
+                                                                              : nl_subdiv_pairs_scalar;
+}
+
+/* Whole pairs (2i, 2i + 1), i = i0..i1-1, in chunks of ROW_CHUNK, by the
+ * vectorised stencils (subdiv_simd_internal.h): the sums, their order and
+ * the random numbers are those of row_any (odd rows: the pair of key i;
+ * even rows: key i / 2 for both odd points 4k + 1, 4k + 3). */
+static void row_pairs(const row_job *r, long i0, long i1)
+{
+    nl_subdiv_pairs_fn *fn = pairs_path();
+    double g[2 * ROW_CHUNK + 2];
     for (long c0 = i0; c0 < i1; c0 += ROW_CHUNK) {
         long c1 = i1 - c0 < ROW_CHUNK ? i1 : c0 + ROW_CHUNK, k0 = r->oy ? c0 : fdiv2(c0);
         if (!r->dodd)
             row_gauss(r, k0, r->oy ? c1 : fdiv2(c1 - 1) + 1, g);
-        for (long i = c0; i < c1; i++) {
-            double se = 0, so = 0;
-            for (int k = 0; k < 4; k++) {
-                const double *x = r->rows[k] + i, *pe = ae + 4 * k, *po = ao + 4 * k;
-                se += pe[0] * x[0];
-                so += po[0] * x[0];
-                se += pe[1] * x[1];
-                so += po[1] * x[1];
-                se += pe[2] * x[2];
-                so += po[2] * x[2];
-                se += pe[3] * x[3];
-                so += po[3] * x[3];
-            }
-            if (r->dodd) {
-                r->out[2 * i] = r->oy ? se + r->deven[i] : r->rows[1][i + 1];
-                r->out[2 * i + 1] = so + r->dodd[i];
-            } else if (r->oy) {
-                r->out[2 * i] = se + r->sd_even * g[2 * (i - c0)];
-                r->out[2 * i + 1] = so + r->sd_odd * g[2 * (i - c0) + 1];
-            } else {
-                r->out[2 * i] = r->rows[1][i + 1];
-                r->out[2 * i + 1] = so + r->sd_odd * g[i - 2 * k0];
-            }
-        }
+        fn(r, c0, c1, r->dodd ? NULL : g, k0);
     }
 }
 
@@ -186,7 +159,7 @@ static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, 
     const long j = fdiv2(J);
     row_job r;
     r.N = l->N, r.J = J, r.oy = J - 2 * j, r.seed = seed, r.lv = lv;
-    r.out = dst->v + (J - dst->y0) * dst->nx - dst->x0;
+    r.out = dst->v + (J - dst->y0) * dst->stride - dst->x0;
     r.odd = &l->cls[r.oy ? 0 : 1], r.even = &l->cls[2];
     r.sd_odd = sqrt(r.odd->variance), r.sd_even = sqrt(r.even->variance);
     for (int k = 0; k < 2 * r.N; k++)
@@ -198,10 +171,14 @@ static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, 
         r.dodd = dp->v + ((r.oy ? 0 : 1) * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
         r.deven = dp->v + (2 * dp->ny + (j - dp->c1)) * dp->nx - dp->c0;
     }
-    if (r.N == 2 && dst->x0 % 2 == 0 && dst->nx % 2 == 0)
-        row_n2(&r, dst->x0 / 2, (dst->x0 + dst->nx) / 2);
-    else
-        row_any(&r, dst->x0, dst->x0 + dst->nx);
+    /* an odd first or last sample on its own, whole pairs between */
+    const long I0 = dst->x0, I1 = dst->x0 + dst->nx, p0 = fdiv2(I0 + 1), p1 = fdiv2(I1);
+    if (I0 != 2 * fdiv2(I0))
+        row_any(&r, I0, I0 + 1);
+    if (p0 < p1)
+        row_pairs(&r, p0, p1);
+    if (I1 != 2 * p1)
+        row_any(&r, I1 - 1, I1);
 }
 
 /* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
@@ -214,7 +191,7 @@ static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst
     const int standard = dim == 2 && !l->cls[0].nalt && !l->cls[1].nalt && !l->cls[2].nalt;
 #pragma omp parallel for schedule(static) if (dst->nx * dst->ny > 65536)
     for (long J = dst->y0; J < dst->y0 + dst->ny; J++) {
-        double *row = dst->v + (J - dst->y0) * dst->nx;
+        double *row = dst->v + (J - dst->y0) * dst->stride;
         if (standard) {
             refine_row_2d(l, src, dst, J, seed, lv, dp);
             continue;
@@ -296,13 +273,30 @@ static int pad_periodic(int dim, const double *v, long nx, long ny, long pad, gr
     return NL_OK;
 }
 
+/* A padded grid g (from -pad) whose interior 0..nx-1, 0..ny-1 is set: its
+ * border wrapped in place, the same values as pad_periodic of the interior. */
+static void wrap_border(int dim, grid *g, long nx, long ny, long pad)
+{
+    long py = dim == 2 ? pad : 0;
+#pragma omp parallel for schedule(static) if (nx * ny > 65536)
+    for (long j = 0; j < ny; j++) {
+        double *d = g->v + (j + py) * g->nx + pad;
+        for (long i = 1; i <= pad; i++) {
+            d[-i] = d[((-i % nx) + nx) % nx];
+            d[nx - 1 + i] = d[(nx - 1 + i) % nx];
+        }
+    }
+    for (long j = -py; j < ny + py; j++)
+        if (j < 0 || j >= ny)
+            memcpy(g->v + (j + py) * g->nx, g->v + (((j % ny) + ny) % ny + py) * g->nx, (size_t)g->nx * sizeof *g->v);
+}
+
 int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse, uint64_t seed, int allow_not_pd,
                            nl_field *f)
 {
     const int dim = c->dim;
     long nx = (long)f->n[0], ny = dim == 2 ? (long)f->n[1] : 1;
     long cx = (long)coarse->n[0], cy = dim == 2 ? (long)coarse->n[1] : 1;
-    double *cur;
     int st;
 
     if (f->dim != dim || coarse->dim != dim)
@@ -320,38 +314,38 @@ int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse,
     }
     if ((st = nl_subdiv_check_levels(c, allow_not_pd)))
         return st;
-    /* cur: the current level (the coarse field, then each refined level;
-     * the last one is refined straight into f) */
-    cur = coarse->data;
+    /* src: the current level, padded for its refinement (the coarse field
+     * copied; then each refined level, refined straight into the interior
+     * of a padded grid; the last one is refined straight into f) */
+    grid src = {NULL, 0, 0, 0, 0, 0};
+    if (c->levels && (st = pad_periodic(dim, coarse->data, cx, cy, c->levels ? c->level[0].reach : 0, &src)))
+        return st;
     for (int k = 0; k < c->levels && !st; k++) {
-        grid src, dst = {f->data, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1};
-        if ((st = pad_periodic(dim, cur, cx, cy, c->level[k].reach, &src)))
-            break;
-        long per[2] = {cx, cy};
+        grid next = {NULL, 0, 0, 0, 0, 0}, dst = {f->data, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1, 2 * cx};
+        long per[2] = {cx, cy}, pad = k + 1 < c->levels ? c->level[k + 1].reach : 0, py = dim == 2 ? pad : 0;
         disp dp = {NULL, 0, 0, 0, 0};
-        if (k + 1 < c->levels)
-            st = grid_alloc(&dst, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1);
-        if (!st && (st = disp_alloc(dim, &c->level[k], &dst, per, seed, (unsigned)k, &dp)) && k + 1 < c->levels)
-            nl_free(dst.v);
+        if (k + 1 < c->levels && !(st = grid_alloc(&next, -pad, -py, 2 * cx + 2 * pad, dst.ny + 2 * py)))
+            dst.v = next.v + py * next.nx + pad, dst.stride = next.nx;
+        if (!st && (st = disp_alloc(dim, &c->level[k], &dst, per, seed, (unsigned)k, &dp)))
+            nl_free(next.v);
         if (!st) {
             refine(dim, &c->level[k], &src, &dst, seed, (unsigned)k, &dp);
             nl_free(dp.v);
-            if (cur != coarse->data)
-                nl_free(cur);
-            cur = dst.v;
+            nl_free(src.v);
+            src = next;
             cx *= 2;
             if (dim == 2)
                 cy *= 2;
+            if (src.v)
+                wrap_border(dim, &src, cx, cy, pad);
         }
-        nl_free(src.v);
     }
     if (!st && c->levels == 0)
-        memcpy(f->data, coarse->data, f->count * sizeof *cur);
+        memcpy(f->data, coarse->data, f->count * sizeof *f->data);
     if (!st)
         for (int a = 0; a < dim; a++)
             f->h[a] = ldexp(c->spacing0, -c->levels);
-    if (cur != coarse->data && cur != f->data)
-        nl_free(cur);
+    nl_free(src.v);
     return st;
 }
 
