@@ -126,11 +126,15 @@ Test(cloud_primitive, oriented_axes)
                       {-sin(b), cos(b) * sin(a), cos(b) * cos(a)}};
     const double want[3] = {1, 0.5, 0.25};
     for (int j = 0; j < 3; j++) {
-        double dot = 0;
+        /* The angle from |r x v| (accurate near 0; 1 - |r . v| cannot
+         * resolve angles below sqrt(2 eps) = 1.2e-6 degrees). */
+        double r[3] = {R[0][j], R[1][j], R[2][j]}, v[3], cx[3];
         for (int i = 0; i < 3; i++)
-            dot += R[i][j] * gsl_matrix_get(V, (size_t)i, (size_t)j);
-        cr_expect_geq(fabs(dot), cos(1e-6 * M_PI / 180), "axis %d off by %g degrees", j,
-                      acos(fmin(1, fabs(dot))) * 180 / M_PI);
+            v[i] = gsl_matrix_get(V, (size_t)i, (size_t)j);
+        for (int i = 0; i < 3; i++)
+            cx[i] = r[(i + 1) % 3] * v[(i + 2) % 3] - r[(i + 2) % 3] * v[(i + 1) % 3];
+        double off = asin(fmin(1, sqrt(cx[0] * cx[0] + cx[1] * cx[1] + cx[2] * cx[2]))) * 180 / M_PI;
+        cr_expect_leq(off, 1e-6, "axis %d off by %g degrees", j, off);
         cr_expect_leq(fabs(sqrt(gsl_vector_get(ev, (size_t)j) / gsl_vector_get(ev, 0)) - want[j]), 1e-9,
                       "axis %d ratio", j);
     }
