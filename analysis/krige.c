@@ -319,8 +319,9 @@ static void column_sums(const nl_krige_plan *p, size_t n, const double *z, doubl
  * n^2 B flops at GEMM speed) serves all NL_KRIGE_BLOCK points of a block.
  * A block always has NL_KRIGE_BLOCK columns (a short last block is padded
  * with zeros), so its arithmetic does not depend on the thread that runs it;
- * inside an OpenMP region BLAS runs on one thread (OpenBLAS's OpenMP build),
- * outside it splits the columns between threads, which gives the same bits
+ * the threads come from the OpenMP loop over blocks (nl_krige_eval_grid);
+ * BLAS itself is OpenBLAS's serial build, and a threaded build put in its
+ * place splits only the columns, which gives the same bits
  * (tests/test_blas_threads.c). */
 static int krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var)
 {

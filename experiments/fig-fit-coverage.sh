@@ -6,8 +6,7 @@
 #   make figures (default): K = 40, N = 100; markov's profile of the scale
 #     alone, spherical's of var and range; about 20 s of one core.
 #   make experiments (NOISELAB_FULL=1): K = 100, N = 500, every parameter's
-#     profile; 30 minutes on two busy cores with OpenBLAS preloaded in place
-#     of GSL's CBLAS (LD_PRELOAD=libopenblas.so.0), several times that without.
+#     profile; about 30 minutes on two busy cores.
 . "$(dirname "$0")/lib.sh"
 if [ "${NOISELAB_FULL:-0}" = 1 ]; then
     K=100 N=500 mark=all size="full (K = 100 fields, N = 500 points, every parameter profiled)"

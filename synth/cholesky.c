@@ -99,11 +99,12 @@ int nl_synth_cholesky_execute(nl_synth_cholesky_plan *p, uint64_t seed, nl_field
     for (size_t j = 0; j < p->count; j++)
         z[j] = nl_rng_gauss(seed, NL_SYNTH_CHOLESKY_STREAM, j);
     memcpy(out->data, z, p->count * sizeof *z);
-    /* x = L z in place by BLAS dtrmv on ONE thread: OpenBLAS's threaded
-     * dtrmv splits each row's sum between threads, so its bits would depend
-     * on the thread count (its OpenMP build takes the count from
-     * omp_get_max_threads(), a setting of the calling thread, restored
-     * here).  The product is bound by memory (L is read once), not flops. */
+    /* x = L z in place by BLAS dtrmv on ONE thread.  We link OpenBLAS's
+     * serial build, but a threaded one (its OpenMP build, chosen by the
+     * system's alternatives) splits each row's sum between
+     * omp_get_max_threads() threads, so its bits would depend on the thread
+     * count: the setting of the calling thread is pinned and restored.  The
+     * product is bound by memory (L is read once), not flops. */
     int threads = omp_get_max_threads();
     omp_set_num_threads(1);
     cblas_dtrmv(CblasRowMajor, CblasLower, CblasNoTrans, CblasNonUnit, (int)p->count, p->L->data, (int)p->L->tda,

@@ -1,14 +1,15 @@
 /* Kriging and Cholesky synthesis give the same bits for 1, 2 and 4 threads.
  *
- * Both run on BLAS (OpenBLAS's OpenMP build): the factorisations (GSL's
- * recursive Cholesky on dtrsm/dsyrk) and the triangular solves of the
- * kriging variance (dtrsm) split their work between omp_get_max_threads()
- * threads when called outside an OpenMP region, and run on one thread inside
- * one.  The property checked is exact equality (memcmp), not a tolerance:
- * a thread count must not change a result.  The sizes are large enough that
- * OpenBLAS does split them (a 2304 x 2304 and a 1500 x 1500 factorisation,
- * dtrsm on 1500 x NL_KRIGE_BLOCK blocks, 600 x NL_KRIGE_BLOCK for universal
- * kriging). */
+ * Both run on BLAS: the factorisations (GSL's recursive Cholesky on
+ * dtrsm/dsyrk) and the triangular solves of the kriging variance (dtrsm).
+ * We link OpenBLAS's serial build (deps.txt) and take the threads from our
+ * own OpenMP loops over blocks; a threaded OpenBLAS put in its place by the
+ * system's alternatives splits calls made outside an OpenMP region between
+ * omp_get_max_threads() threads, so the sizes are large enough that it would
+ * (a 2304 x 2304 and a 1500 x 1500 factorisation, dtrsm on 1500 x
+ * NL_KRIGE_BLOCK blocks, 600 x NL_KRIGE_BLOCK for universal kriging).  The
+ * property checked is exact equality (memcmp), not a tolerance: a thread
+ * count must not change a result. */
 #include "../analysis/krige.h"
 #include "../analysis/krige_local.h"
 #include "../core/field.h"
