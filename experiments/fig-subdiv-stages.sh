@@ -15,8 +15,10 @@ done
 # every sample of stage k is in stage k+1 at twice the index
 bad=0
 for k in 1 2 3 4 5 6; do
-    bad=$((bad + $(awk 'NR == FNR { if (FNR > 1) v[FNR - 2] = $2; next }
-        FNR > 1 && (FNR - 2) % 2 == 0 && ((FNR - 2) / 2) in v && v[(FNR - 2) / 2] != $2 { b++ }
+    bad=$((bad + $(awk '/^#/ || $1 == "t" { next }
+        NR == FNR { v[i++] = $2; next }
+        j % 2 == 0 && (j / 2) in v && v[j / 2] != $2 { b++ }
+        { j++ }
         END { print b + 0 }' "$dir/data/stage-$k.tsv" "$dir/data/stage-$((k + 1)).tsv")))
 done
 flags=$(sed -n 's/.*"flags":\[\([^]]*\)\].*/\1/p' "$dir/data/stage-7.json" | head -1)
