@@ -448,9 +448,12 @@ static int verdicts(FILE *o)
     for (size_t k = 0; k < sizeof linear / sizeof *linear; k++) {
         int i = find(linear[k]);
         double x = cost[i].ok ? exponent(&cost[i]) : NAN;
-        ok = x >= 0.8 && x < 1.8;
+        /* The claim is the upper bound (not quadratic); the lower one only
+         * says the time grows with the samples at all: at 128^2-512^2 a
+         * fixed cost (planning, allocation) can hold the exponent below 1. */
+        ok = x >= 0.5 && x < 1.8;
         fail |= !ok;
-        fprintf(o, "- %s: %s: one realization grows as samples^%.2f, in [0.8, 1.8): linear or n log n, not "
+        fprintf(o, "- %s: %s: one realization grows as samples^%.2f, in [0.5, 1.8): linear or n log n, not "
                 "quadratic\n", ok ? "PASS" : "FAIL", linear[k], x);
     }
     int c = find("cholesky");
