@@ -214,17 +214,6 @@ Test(cloud_primitive, point_noise_acf, .timeout = 60)
     nl_synth_sparse_point_free(p), nl_model_free(m);
 }
 
-static const char *scene_file(const char *name, const char *text)
-{
-    static char path[512];
-    snprintf(path, sizeof path, "%s/%s", scratch_dir(), name);
-    FILE *fp = fopen(path, "w");
-    cr_assert_not_null(fp);
-    fputs(text, fp);
-    fclose(fp);
-    return path;
-}
-
 #define BASE                                                                                                        \
     "\"size\": [16, 12], \"box\": [[-1,-1,-1],[1,1,1]], \"points\": [[0.25,0,0,1.5],[0,0.5,0,0.4],[0.9,0.9,0.9,0]], " \
     "\"acf\": \"gauss:scale=0.6\", \"grid\": 8, \"camera\": {\"position\": [0,0,-4], \"look_at\": [0,0.125,0]}, "     \
@@ -236,19 +225,19 @@ Test(cloud_primitive, scene_keys)
 {
     nl_cloud_scene s, t;
     unsigned char a[16 * 12 * 3], b[16 * 12 * 3];
-    cr_assert_eq(nl_cloud_scene_read(scene_file("k1.json", "{" BASE ", \"noise\": {\"acf\": \"gauss:scale=0.2\", "
+    cr_assert_eq(nl_cloud_scene_read(scratch_file("k1.json", "{" BASE ", \"noise\": {\"acf\": \"gauss:scale=0.2\", "
                                                  "\"grid\": 8}}"), &s), NL_OK, "%s", nl_errmsg());
     cr_expect_eq(s.kriging, NL_CLOUD_ORDINARY);
     cr_expect_eq(s.noise_kind, NL_CLOUD_NOISE_GRID);
     cr_expect_eq(s.noise_density, 8);
-    cr_assert_eq(nl_cloud_scene_read(scene_file("k2.json", "{" BASE ", \"kriging\": \"ordinary\", \"rotation\": [0, 0, 0], "
+    cr_assert_eq(nl_cloud_scene_read(scratch_file("k2.json", "{" BASE ", \"kriging\": \"ordinary\", \"rotation\": [0, 0, 0], "
                                                  "\"noise\": {\"acf\": \"gauss:scale=0.2\", \"grid\": 8, \"kind\": \"grid\"}}"),
                                      &t), NL_OK, "%s", nl_errmsg());
     cr_assert_eq(nl_render_cloud(&s, a, NULL, NULL), NL_OK, "%s", nl_errmsg());
     cr_assert_eq(nl_render_cloud(&t, b, NULL, NULL), NL_OK, "%s", nl_errmsg());
     cr_expect_eq(memcmp(a, b, sizeof a), 0, "explicit defaults changed the picture");
     nl_cloud_scene_free(&s), nl_cloud_scene_free(&t);
-    cr_assert_eq(nl_cloud_scene_read(scene_file("k3.json", "{" BASE ", \"kriging\": \"simple\", \"rotation\": [10, -20.5, 300], "
+    cr_assert_eq(nl_cloud_scene_read(scratch_file("k3.json", "{" BASE ", \"kriging\": \"simple\", \"rotation\": [10, -20.5, 300], "
                                                  "\"noise\": {\"acf\": \"gauss:scale=0.2\", \"kind\": \"point\", \"density\": 3}}"),
                                      &s), NL_OK, "%s", nl_errmsg());
     cr_expect_eq(s.kriging, NL_CLOUD_SIMPLE);
@@ -265,7 +254,7 @@ Test(cloud_primitive, scene_keys)
         char text[1024];
         snprintf(text, sizeof text, "{" BASE ", %s%s}", bad[i],
                  strstr(bad[i], "noise") ? "" : ", \"noise\": {\"acf\": \"gauss\"}");
-        cr_expect_eq(nl_cloud_scene_read(scene_file("bad.json", text), &s), NL_EINPUT, "%s", bad[i]);
+        cr_expect_eq(nl_cloud_scene_read(scratch_file("bad.json", text), &s), NL_EINPUT, "%s", bad[i]);
         cr_expect_null(s.points);
     }
 }

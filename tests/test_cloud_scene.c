@@ -13,17 +13,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *scene_file(const char *name, const char *text)
-{
-    static char path[512];
-    snprintf(path, sizeof path, "%s/%s", scratch_dir(), name);
-    FILE *fp = fopen(path, "w");
-    cr_assert_not_null(fp);
-    fputs(text, fp);
-    fclose(fp);
-    return path;
-}
-
 #define BASE                                                                                                        \
     "\"size\": [32, 24], \"box\": [[-1,-2,-3],[1,2,3]], \"points\": [[0.25,0,0,1.5],[0,0.5,0,-2]], "                \
     "\"acf\": \"gauss:scale=0.6\", \"noise\": {\"acf\": \"markov:scale=0.1\", \"period\": 2.385}, "                 \
@@ -32,7 +21,7 @@ static const char *scene_file(const char *name, const char *text)
 Test(cloud_scene, values_and_defaults)
 {
     nl_cloud_scene s;
-    cr_assert_eq(nl_cloud_scene_read(scene_file("ok.json", "{" BASE ", \"threshold\": 0.3}"), &s), NL_OK, "%s",
+    cr_assert_eq(nl_cloud_scene_read(scratch_file("ok.json", "{" BASE ", \"threshold\": 0.3}"), &s), NL_OK, "%s",
                  nl_errmsg());
     cr_expect_eq(s.width, 32);
     cr_expect_eq(s.height, 24);
@@ -63,7 +52,7 @@ Test(cloud_scene, values_and_defaults)
 static void refused(const char *text, int code, const char *needle)
 {
     nl_cloud_scene s;
-    int st = nl_cloud_scene_read(scene_file("bad.json", text), &s);
+    int st = nl_cloud_scene_read(scratch_file("bad.json", text), &s);
     cr_expect_eq(st, code, "%s: status %d, message %s", text, st, nl_errmsg());
     cr_expect(strstr(nl_errmsg(), needle) != NULL, "\"%s\" should name \"%s\"", nl_errmsg(), needle);
     cr_expect(s.points == NULL && s.shape == NULL && s.noise == NULL, "%s: left pointers", text);
@@ -101,7 +90,7 @@ Test(cloud_scene, out_of_memory)
     for (int i = 0; i < NP; i++)
         p += sprintf(p, "%s[0,0,0,%d]", i ? "," : "", i % 10);
     sprintf(p, "]}");
-    const char *path = scene_file("big.json", text);
+    const char *path = scratch_file("big.json", text);
     free(text);
     mallopt(M_MMAP_THRESHOLD, 1 << 30);
     for (size_t leave = 1 << 20; leave < (size_t)256 << 20 && st == NL_EINPUT; leave += 128 << 10) {

@@ -83,3 +83,16 @@ nl_model *test_model(const char *spec)
     cr_assert_eq(nl_model_parse(spec, &m), NL_OK, "%s: %s", spec, nl_errmsg());
     return m;
 }
+
+/* Write TEXT to NAME in the scratch folder; the path is valid until the
+ * next call. */
+const char *scratch_file(const char *name, const char *text)
+{
+    static char path[512];
+    snprintf(path, sizeof path, "%s/%s", scratch_dir(), name);
+    FILE *fp = fopen(path, "w");
+    cr_assert_not_null(fp);
+    fputs(text, fp);
+    fclose(fp);
+    return path;
+}

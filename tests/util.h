@@ -19,6 +19,8 @@ json_t *run_noiselab_json(const char *args);
 
 /* A fresh scratch directory for this test process; path is static. */
 const char *scratch_dir(void);
+/* TEXT written to NAME in scratch_dir(); the path (static) lasts until the next call. */
+const char *scratch_file(const char *name, const char *text);
 
 /* Does a file exist? */
 int file_exists(const char *path);
