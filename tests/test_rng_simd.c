@@ -83,6 +83,7 @@ Test(rng_simd, every_thread_count_gives_the_same_bits)
         cr_assert(memcmp(out, ref, n * sizeof *out) == 0, "%d threads (path %s)", t, nl_rng_simd());
     }
     omp_set_num_threads(was);
+    free(ref), free(out);
 }
 
 /* NOISELAB_SIMD names a ceiling: an unavailable path falls to the fastest
