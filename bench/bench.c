@@ -4,6 +4,7 @@
  * the CLI; it is linked into bin/noiselab as the `bench` subcommand and uses
  * the CLI's option and error helpers (cli/cli.h). */
 #include "../cli/cli.h"
+#include "bench.h"
 #include "../analysis/acf.h"
 #include "../analysis/krige.h"
 #include "../analysis/krige_local.h"
@@ -59,24 +60,24 @@ static const char help[] =
     "of the field (OpenMP threads writing one double per sample).\n"
     "The variogram and local kriging rows run once each, in a child process whose\n"
     "peak resident memory (getrusage) is given in the case's name.\n"
-    "FFTW plans are measured once and kept (see the README); planning is not timed.\n";
+    "Planning is not timed; `make bench` measures the FFTW plans first (measured\n"
+    "wisdom); run by hand, plans come from wisdom where it exists, else FFTW_ESTIMATE.\n";
 
-static double now(void)
+double cli_bench_now(void)
 {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-static double median(double *v, int n)
+double cli_bench_median(double *v, int n)
 {
     gsl_sort(v, 1, (size_t)n);
     return gsl_stats_median_from_sorted_data(v, 1, (size_t)n);
 }
 
-/* A row with its bare floor (bare NULL: none, "-"). */
-static void row_bare(const char *name, size_t samples, double t, const char *floor_name, double tf, const char *bare,
-                     double tb)
+void cli_bench_row(const char *name, size_t samples, double t, const char *floor_name, double tf, const char *bare,
+                   double tb)
 {
     printf("%s\t%zu\t%.4f\t%s\t%.4f\t%.2f\t%.3g", name, samples, t, floor_name, tf, t / tf, (double)samples / t);
     if (bare)
@@ -88,7 +89,7 @@ static void row_bare(const char *name, size_t samples, double t, const char *flo
 
 static void row(const char *name, size_t samples, double t, const char *floor_name, double tf)
 {
-    row_bare(name, samples, t, floor_name, tf, NULL, 0);
+    cli_bench_row(name, samples, t, floor_name, tf, NULL, 0);
 }
 
 /* Gaussian numbers into the half spectrum, then c2r, on an n0 x n1 grid:
@@ -100,15 +101,15 @@ static double c2r_floor(size_t n0, size_t n1, int reps, double *bare)
     fftw_complex *c = nl_alloc(half * sizeof *c);
     fftw_plan b = fftw_plan_dft_c2r_2d((int)n1, (int)n0, c, x, nl_fftw_flags(n0 * n1));
     for (int r = 0; r < reps; r++) {
-        double t0 = now(), t1;
+        double t0 = cli_bench_now(), t1;
         nl_rng_gauss_fill(1, 0, 0, 2 * half, (double *)c);
-        t1 = now();
+        t1 = cli_bench_now();
         fftw_execute(b);
-        t[r] = now() - t0, tb[r] = now() - t1;
+        t[r] = cli_bench_now() - t0, tb[r] = cli_bench_now() - t1;
     }
     fftw_destroy_plan(b), nl_free(x), nl_free(c);
-    *bare = median(tb, reps);
-    return median(t, reps);
+    *bare = cli_bench_median(tb, reps);
+    return cli_bench_median(t, reps);
 }
 
 /* A streaming write of count doubles by the OpenMP threads (pages touched
@@ -119,14 +120,14 @@ static double stream_floor(size_t count, int reps)
     double *x = nl_alloc(count * sizeof *x), t[16];
     memset(x, 0, count * sizeof *x);
     for (int r = 0; r < reps; r++) {
-        double t0 = now(), v = (double)r + 0.5;
+        double t0 = cli_bench_now(), v = (double)r + 0.5;
 #pragma omp parallel for schedule(static)
         for (size_t i = 0; i < count; i++)
             x[i] = v;
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
     }
     nl_free(x);
-    return median(t, reps);
+    return cli_bench_median(t, reps);
 }
 
 /* Bare r2c (+ c2r when both) of an n x n grid. */
@@ -139,14 +140,14 @@ static double fft_floor(size_t n, int both, int reps)
     for (size_t i = 0; i < n * n; i++)
         x[i] = (double)(i % 7);
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
         fftw_execute(f);
         if (both)
             fftw_execute(b);
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
     }
     fftw_destroy_plan(f), fftw_destroy_plan(b), nl_free(x), nl_free(c);
-    return median(t, reps);
+    return cli_bench_median(t, reps);
 }
 
 /* One Gaussian number per sample, written once. */
@@ -154,12 +155,12 @@ static double rng_floor(size_t count, int reps)
 {
     double *x = nl_alloc(count * sizeof *x), t[16];
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
         nl_rng_gauss_fill(1, 0, 0, count, x);
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
     }
     nl_free(x);
-    return median(t, reps);
+    return cli_bench_median(t, reps);
 }
 
 /* The Gaussian fill alone (core/rng.h, its code path in the name) against a
@@ -172,13 +173,13 @@ static void bench_gauss(size_t n, int reps)
         cli_die(1, "out of memory");
     memset(x, 0, n * n * sizeof *x);
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
         nl_rng_gauss_fill((uint64_t)r + 1, 0, 0, n * n, x);
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
     }
     nl_free(x);
     snprintf(name, sizeof name, "gaussian fill (%s)", nl_rng_simd());
-    row_bare(name, n * n, median(t, reps), "streaming write", tw, "streaming write", tw);
+    cli_bench_row(name, n * n, cli_bench_median(t, reps), "streaming write", tw, "streaming write", tw);
 }
 
 static void bench_fft(const nl_model *m, size_t n, int reps)
@@ -191,12 +192,12 @@ static void bench_fft(const nl_model *m, size_t n, int reps)
     if (!f || (st = nl_synth_fft_plan_alloc(m, 2, nn, NULL, 0, &p)))
         cli_die_status(st);
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
         nl_synth_fft_execute(p, (uint64_t)r + 1, f);
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
     }
     double tf = c2r_floor(n, n, reps, &tb);
-    row_bare("fft", n * n, median(t, reps), "gaussian fill + c2r", tf, "fftw c2r", tb);
+    cli_bench_row("fft", n * n, cli_bench_median(t, reps), "gaussian fill + c2r", tf, "fftw c2r", tb);
     nl_synth_fft_plan_free(p), nl_field_free(f);
 }
 
@@ -213,12 +214,12 @@ static void bench_circulant(const nl_model *m, size_t n, int reps)
         cli_die_status(st);
     nl_synth_circulant_plan_info(p, &info);
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
         nl_synth_circulant_execute(p, (uint64_t)r + 1, f);
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
     }
     tf = c2r_floor(info.m[0], info.m[1], reps, &tb);
-    row_bare("circulant", n * n, median(t, reps), "gaussian fill + c2r of the embedding", tf, "fftw c2r of the embedding",
+    cli_bench_row("circulant", n * n, cli_bench_median(t, reps), "gaussian fill + c2r of the embedding", tf, "fftw c2r of the embedding",
              tb);
     nl_synth_circulant_plan_free(p), nl_field_free(f);
 }
@@ -238,12 +239,12 @@ static double subdiv_time(const nl_model *m, size_t n, int N, int taps, int reps
         (taps && (st = nl_subdiv_coeffs_correlate(co, m, taps, NL_SUBDIV_DISP_ERROR))))
         cli_die_status(st);
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
         nl_subdiv_synth_periodic(co, m, (uint64_t)r + 1, 0, f);
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
     }
     nl_subdiv_coeffs_free(co), nl_field_free(f);
-    return median(t, reps);
+    return cli_bench_median(t, reps);
 }
 
 /* Independent displacements against the Gaussian floor; correlated ones
@@ -254,9 +255,9 @@ static void bench_subdiv(const nl_model *m, size_t n, int reps)
         char name[64];
         double ti = subdiv_time(m, n, N, 0, reps), tc = subdiv_time(m, n, N, 2, reps), tw = stream_floor(n * n, reps);
         snprintf(name, sizeof name, "subdiv N=%d", N);
-        row_bare(name, n * n, ti, "gaussian rng + one pass", rng_floor(n * n, reps), "streaming write", tw);
+        cli_bench_row(name, n * n, ti, "gaussian rng + one pass", rng_floor(n * n, reps), "streaming write", tw);
         snprintf(name, sizeof name, "subdiv N=%d correlated", N);
-        row_bare(name, n * n, tc, "subdiv, independent displacements", ti, "streaming write", tw);
+        cli_bench_row(name, n * n, tc, "subdiv, independent displacements", ti, "streaming write", tw);
     }
 }
 
@@ -270,11 +271,11 @@ static void bench_sparse(const nl_model *m, size_t n, int reps)
     if (!f || (st = nl_synth_sparse_plan_model(m, 2, NULL, 0, 0, 4, &p)))
         cli_die_status(st);
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
         nl_synth_sparse_execute(p, (uint64_t)r + 1, 1, NULL, f);
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
     }
-    row_bare("sparse", n * n, median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps), "streaming write",
+    cli_bench_row("sparse", n * n, cli_bench_median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps), "streaming write",
              stream_floor(n * n, reps));
     nl_synth_sparse_plan_free(p), nl_field_free(f);
 }
@@ -289,21 +290,21 @@ static void bench_estimators(size_t n, int reps)
         cli_die_status(st);
     nl_rng_gauss_fill(3, 0, 0, f->count, f->data);
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
         nl_acf_full(f, 0.0, 0, &out);
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
         nl_field_free(out);
     }
     tf = fft_floor(2 * n, 1, reps);
-    row_bare("acf", f->count, median(t, reps), "fftw r2c + c2r padded", tf, "fftw r2c + c2r padded", tf);
+    cli_bench_row("acf", f->count, cli_bench_median(t, reps), "fftw r2c + c2r padded", tf, "fftw r2c + c2r padded", tf);
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
         nl_psd_periodogram(f, NAN, &out);
-        t[r] = now() - t0;
+        t[r] = cli_bench_now() - t0;
         nl_field_free(out);
     }
     tf = fft_floor(n, 0, reps);
-    row_bare("psd", f->count, median(t, reps), "fftw r2c", tf, "fftw r2c", tf);
+    cli_bench_row("psd", f->count, cli_bench_median(t, reps), "fftw r2c", tf, "fftw r2c", tf);
     nl_field_free(f);
 }
 
@@ -321,7 +322,7 @@ static void bench_krige(const nl_model *m, size_t np, size_t g, int reps)
         val[i] = nl_rng_gauss(5, 1, i);
     for (int var = 0; var < 2; var++)
         for (int r = 0; r < reps; r++) {
-            double t0 = now();
+            double t0 = cli_bench_now();
             nl_krige_plan *p;
             if ((st = nl_krige_plan_alloc(m, 2, np, pts, val, 0, 0, 0, &p)))
                 cli_die_status(st);
@@ -335,10 +336,10 @@ static void bench_krige(const nl_model *m, size_t np, size_t g, int reps)
                 nl_krige_eval_block(p, nq, x, &est[q0], var ? v : NULL);
             }
             nl_krige_plan_free(p);
-            tk[var][r] = now() - t0;
+            tk[var][r] = cli_bench_now() - t0;
         }
     for (int r = 0; r < reps; r++) {
-        double t0 = now();
+        double t0 = cli_bench_now();
 #pragma omp parallel for schedule(static)
         for (size_t q = 0; q < g * g; q++) {
             double x[2] = {((double)(q % g) + 0.5) / (double)g, ((double)(q / g) + 0.5) / (double)g}, s = 0;
@@ -348,14 +349,14 @@ static void bench_krige(const nl_model *m, size_t np, size_t g, int reps)
             }
             est[q] = s;
         }
-        tf[r] = now() - t0;
+        tf[r] = cli_bench_now() - t0;
     }
-    double fl = median(tf, reps);
+    double fl = cli_bench_median(tf, reps);
     char name[64];
     snprintf(name, sizeof name, "krige %zu points", np);
-    row(name, g * g, median(tk[0], reps), "one covariance per (grid, data) pair", fl);
+    row(name, g * g, cli_bench_median(tk[0], reps), "one covariance per (grid, data) pair", fl);
     snprintf(name, sizeof name, "krige %zu points +variance", np);
-    row(name, g * g, median(tk[1], reps), "one covariance per (grid, data) pair", fl);
+    row(name, g * g, cli_bench_median(tk[1], reps), "one covariance per (grid, data) pair", fl);
     free(pts), free(val), free(est);
 }
 
@@ -378,7 +379,7 @@ static void bench_rank1(int quick, int reps)
         fftw_complex *b = fftw_alloc_complex(NN);
         fftw_plan p = fftw_plan_dft(sd, dims, b, b, FFTW_BACKWARD, nl_fftw_flags(NN));
         for (int r = 0; r < reps; r++) {
-            double t0 = now();
+            double t0 = cli_bench_now();
             for (size_t k = 0; k < NN; k++) {
                 double k2 = 0;
                 for (int a = 0; a < sd; a++)
@@ -387,17 +388,17 @@ static void bench_rank1(int quick, int reps)
                 cf[2 * k + 1] = exp(-k2 / 64) * nl_rng_gauss2(1, 0, k, 1);
             }
             nl_rank1_synthesize(&L, cf, 1, f, NULL, NULL);
-            tr[r] = now() - t0;
-            t0 = now();
+            tr[r] = cli_bench_now() - t0;
+            t0 = cli_bench_now();
             for (size_t k = 0; k < NN; k++)
                 b[k] = exp(-(double)(k % 7) / 64) * (nl_rng_gauss2(1, 0, k, 0) + I * nl_rng_gauss2(1, 0, k, 1));
             fftw_execute(p);
-            tt[r] = now() - t0;
+            tt[r] = cli_bench_now() - t0;
         }
         char name[64], fl[64];
         snprintf(name, sizeof name, "rank1 %dD", sd);
         snprintf(fl, sizeof fl, "tensor FFT %dD %zu^%d", sd, M, sd);
-        row(name, NN, median(tr, reps), fl, median(tt, reps));
+        row(name, NN, cli_bench_median(tr, reps), fl, cli_bench_median(tt, reps));
         fftw_destroy_plan(p), fftw_free(b), free(cf), free(f), nl_rank1_free(&L);
     }
 }
@@ -458,9 +459,9 @@ static double task_variogram(size_t n, size_t g)
     nl_variogram_options o;
     nl_variogram *v;
     nl_variogram_options_default(&o);
-    double t0 = now();
+    double t0 = cli_bench_now();
     cli_check(nl_variogram_points(p, &o, &v));
-    t0 = now() - t0;
+    t0 = cli_bench_now() - t0;
     nl_variogram_free(v), nl_points_free(p);
     return t0;
 }
@@ -475,10 +476,10 @@ static double task_krige(size_t n, size_t g)
     double h[2] = {1.0 / (double)g, 1.0 / (double)g}, lo[2] = {0, 0};
     cli_check(nl_model_parse("markov:scale=0.05", &m));
     nl_field *e = cli_field_alloc(2, sz, h), *var = cli_field_alloc(2, sz, h);
-    double t0 = now();
+    double t0 = cli_bench_now();
     cli_check(nl_krige_local_alloc(m, 2, n, p->pts, p->val, &o, &k));
     cli_check(nl_krige_local_grid(k, lo, e, var));
-    t0 = now() - t0;
+    t0 = cli_bench_now() - t0;
     nl_krige_local_free(k), nl_model_free(m), nl_field_free(e), nl_field_free(var), nl_points_free(p);
     return t0;
 }
@@ -498,7 +499,7 @@ static void bench_geo(size_t n, size_t g)
     nl_points *p = bench_points(n);
     nl_spindex *s;
     cli_check(nl_spindex_alloc(2, n, p->pts, &s));
-    t0 = now();
+    t0 = cli_bench_now();
 #pragma omp parallel for schedule(dynamic, 256) reduction(+ : pairs)
     for (size_t a = 0; a < n; a++) {
         size_t c = 0;
@@ -506,19 +507,18 @@ static void bench_geo(size_t n, size_t g)
         pairs += c;
     }
     snprintf(name, sizeof name, "variogram %zu points (peak %.0f MB)", n, mb);
-    row(name, pairs, t, "k-d tree pair enumeration", now() - t0);
-    t0 = now();
+    row(name, pairs, t, "k-d tree pair enumeration", cli_bench_now() - t0);
+    t0 = cli_bench_now();
 #pragma omp parallel for schedule(dynamic, 256) private(idx, d2)
     for (size_t q = 0; q < g * g; q++) {
         double x[2] = {((double)(q % g) + 0.5) / (double)g, ((double)(q / g) + 0.5) / (double)g};
         nl_spindex_knn(s, x, 32, idx, d2);
     }
     snprintf(name, sizeof name, "krige %zu points nmax 32 +variance (peak %.0f MB)", n, mk);
-    row(name, g * g, tk, "k-d tree 32-nearest search", now() - t0);
+    row(name, g * g, tk, "k-d tree 32-nearest search", cli_bench_now() - t0);
     nl_spindex_free(s), nl_points_free(p);
 }
 
-void cli_bench_blas(const nl_model *m, size_t np, size_t g, int reps);
 
 int cli_cmd_bench(int argc, char **argv)
 {

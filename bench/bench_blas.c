@@ -3,6 +3,7 @@
  * its triangular solves at that rate, measured in the same run. */
 #include "../analysis/krige.h"
 #include "../cli/cli.h"
+#include "bench.h"
 #include "../core/field.h"
 #include "../core/model.h"
 #include "../core/rng.h"
@@ -10,29 +11,6 @@
 #include <gsl/gsl_cblas.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
-#include <time.h>
-
-void cli_bench_blas(const nl_model *m, size_t np, size_t g, int reps);
-
-static double wall(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
-}
-
-static double middle(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, by_value);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* Flops per second of C = A B, n x n, all threads (the fastest of reps). */
 static double dgemm_rate(size_t n, int reps)
@@ -43,11 +21,11 @@ static double dgemm_rate(size_t n, int reps)
     for (size_t i = 0; i < n * n; i++)
         a[i] = 1.0 / (double)(i % 7 + 1), b[i] = 1.0 / (double)(i % 5 + 2);
     for (int r = 0; r <= reps; r++) { /* the first run warms up */
-        double t0 = wall();
+        double t0 = cli_bench_now();
         cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, (int)n, (int)n, (int)n, 1.0, a, (int)n, b, (int)n, 0.0,
                     c, (int)n);
-        if (r && wall() - t0 < best)
-            best = wall() - t0;
+        if (r && cli_bench_now() - t0 < best)
+            best = cli_bench_now() - t0;
     }
     free(a), free(b), free(c);
     return 2.0 * (double)n * (double)n * (double)n / best;
@@ -70,21 +48,18 @@ void cli_bench_blas(const nl_model *m, size_t np, size_t g, int reps)
         pts[2 * i] = nl_rng_uniform(5, 0, 2 * i), pts[2 * i + 1] = nl_rng_uniform(5, 0, 2 * i + 1),
         val[i] = nl_rng_gauss(5, 1, i);
     double rate = dgemm_rate(2000, reps);
-    printf("dgemm 2000^3\t%d\t%.4f\t%s\t%.4f\t%.2f\t%.3g\n", 2000 * 2000, 1.6e10 / rate, "itself", 1.6e10 / rate, 1.0,
-           rate);
+    cli_bench_row("dgemm 2000^3", 2000 * 2000, 1.6e10 / rate, "itself", 1.6e10 / rate, NULL, 0);
     for (int r = 0; r < reps && r < 16; r++) {
         nl_krige_plan *p;
-        double t0 = wall();
+        double t0 = cli_bench_now();
         if ((st = nl_krige_plan_alloc(m, 2, np, pts, val, 0, 0, 0, &p)) || (st = nl_krige_eval_grid(p, lo, e, v)))
             cli_die_status(st);
         nl_krige_plan_free(p);
-        t[r] = wall() - t0;
+        t[r] = cli_bench_now() - t0;
     }
-    double tk = middle(t, reps < 16 ? reps : 16), fl = (double)np * (double)np * (double)(g * g) / rate;
+    double tk = cli_bench_median(t, reps < 16 ? reps : 16), fl = (double)np * (double)np * (double)(g * g) / rate;
     char name[96];
     snprintf(name, sizeof name, "krige %zu points -> %zu^2 +variance (grid)", np, g);
-    printf("%s\t%zu\t%.4f\t%s\t%.4f\t%.2f\t%.3g\n", name, g * g, tk, "n^2 m flops at the dgemm rate", fl, tk / fl,
-           (double)(g * g) / tk);
-    fflush(stdout);
+    cli_bench_row(name, g * g, tk, "n^2 m flops at the dgemm rate", fl, "n^2 m flops at the dgemm rate", fl);
     nl_field_free(e), nl_field_free(v), free(pts), free(val);
 }
