@@ -14,7 +14,20 @@ LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson 
 BUILD     := build
 
 LIB_SRC   := $(wildcard core/*.c synth/*.c analysis/*.c render/*.c)
-CLI_SRC   := $(wildcard cli/*.c)
+# cli/h5_*.c are the command line's HDF5 and MPI parts: noiselab-mpi only.
+CLI_SRC   := $(filter-out cli/h5_%.c,$(wildcard cli/*.c))
+# The distributed module (mpi/): Open MPI, FFTW-MPI and parallel HDF5, in a
+# library of its own so that libnoiselab and bin/noiselab do not load them
+# (about 40 libraries, 10 ms at every start); bin/noiselab hands a run with
+# an .h5 file or under an MPI launcher to bin/noiselab-mpi (cli/main.c).
+# Recursive (=): pkg-config runs once the packages are installed.
+MPI_CFLAGS = $(shell pkg-config --cflags hdf5-openmpi mpi)
+MPI_LIBS   = $(shell pkg-config --libs hdf5-openmpi mpi) -lfftw3_mpi
+MPI_SRC   := $(wildcard mpi/*.c)
+MPI_OBJ   := $(MPI_SRC:%.c=$(BUILD)/%.o)
+H5CLI_OBJ := $(patsubst %.c,$(BUILD)/%.o,$(wildcard cli/h5_*.c))
+MPITEST_SRC := $(wildcard tests/mpi/*.c)
+MPITEST_BIN := $(MPITEST_SRC:%.c=$(BUILD)/%)
 BENCH_SRC := $(wildcard bench/*.c)
 TEST_SRC  := $(wildcard tests/*.c)
 EXP_SRC   := $(wildcard experiments/*.c)
@@ -23,11 +36,14 @@ LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
 CLI_OBJ   := $(CLI_SRC:%.c=$(BUILD)/%.o) $(BENCH_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ  := $(TEST_SRC:%.c=$(BUILD)/%.o)
 LIB       := $(BUILD)/libnoiselab.a
+MPILIB    := $(BUILD)/libnoiselab_mpi.a
+MPISOLIB  := $(BUILD)/libnoiselab_mpi.so.$(VERSION)
 SONAME    := libnoiselab.so.$(MAJOR)
 SOLIB     := $(BUILD)/libnoiselab.so.$(VERSION)
 MAN       := $(BUILD)/noiselab.1
 BINDIR    ?= bin
 BIN       := $(BINDIR)/noiselab
+MPIBIN    := $(BINDIR)/noiselab-mpi
 DEPS_OK   := $(BUILD)/.deps-ok
 
 # Where `make install` puts things (DESTDIR is prepended to each).
@@ -47,7 +63,7 @@ PUB_HDR   := $(filter-out %_internal.h,$(wildcard core/*.h synth/*.h analysis/*.
 
 .PHONY: all deps wisdom test figures experiments bench asan fuzz clean install uninstall
 .SECONDARY:
-all: $(BIN) $(LIB) $(SOLIB) $(MAN)
+all: $(BIN) $(MPIBIN) $(LIB) $(SOLIB) $(MPISOLIB) $(MAN)
 
 # One list of packages, in deps.txt; the stamp is redone when it changes.
 $(DEPS_OK): deps.txt tools/deps.sh
@@ -74,6 +90,17 @@ $(BUILD)/core/fftw_plan.o: CFLAGS += -DNL_WISDOM_FILE='"$(DATADIR)/noiselab/fftw
 $(LIB): $(LIB_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
+$(MPI_OBJ) $(H5CLI_OBJ) $(MPITEST_SRC:%.c=$(BUILD)/%.o): CFLAGS += $(MPI_CFLAGS)
+$(MPI_OBJ): CFLAGS += -fPIC -fno-semantic-interposition
+$(MPI_OBJ): Makefile
+$(MPILIB): $(MPI_OBJ)
+	rm -f $@ && $(AR) rcs $@ $^
+$(MPISOLIB): $(MPI_OBJ) $(SOLIB)
+	$(CC) $(CFLAGS) -shared -Wl,-soname,libnoiselab_mpi.so.$(MAJOR) -Wl,--no-undefined -o $@ $(MPI_OBJ) \
+	    -Wl,--no-as-needed -L$(BUILD) -l:$(notdir $(SOLIB)) $(MPI_LIBS) $(LDLIBS)
+	ln -sf $(notdir $@) $(BUILD)/libnoiselab_mpi.so.$(MAJOR)
+	ln -sf libnoiselab_mpi.so.$(MAJOR) $(BUILD)/libnoiselab_mpi.so
+
 # The shared library records its dependencies (DT_NEEDED), so a program
 # links it with -lnoiselab alone.
 $(SOLIB): $(LIB_OBJ)
@@ -88,6 +115,14 @@ $(MAN): $(BIN) tools/manpage.sh
 $(BIN): $(CLI_OBJ) $(LIB)
 	@mkdir -p $(BINDIR)
 	$(CC) $(CFLAGS) -o $@ $(CLI_OBJ) $(LIB) $(LDLIBS)
+
+$(MPIBIN): $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(H5CLI_OBJ) $(MPILIB) $(LIB)
+	@mkdir -p $(BINDIR)
+	$(CC) $(CFLAGS) -o $@ $^ $(MPI_LIBS) $(LDLIBS)
+
+# MPI test programs, run by tests/mpi/run.sh under mpirun -np 1..4.
+$(BUILD)/tests/mpi/%: $(BUILD)/tests/mpi/%.o $(MPILIB) $(LIB)
+	$(CC) $(CFLAGS) -o $@ $^ $(MPI_LIBS) $(LDLIBS)
 
 $(BUILD)/tests/run: $(TEST_OBJ) $(LIB)
 	$(CC) $(CFLAGS) -o $@ $(TEST_OBJ) $(LIB) $(LDLIBS) -lcriterion
@@ -105,8 +140,9 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # tests/doc/run.sh runs every command of README.md, docs/tour.md and docs/geostatistics.md.
 # Then tools/test-install.sh installs into a scratch DESTDIR and builds the
 # examples and the README's example against it with pkg-config alone.
-test: all $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN)
+test: all $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
+	NOISELAB_FFTW=estimate sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
 	NOISELAB_FFTW=estimate sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite
 	NOISELAB_FFTW=estimate sh tests/doc/run.sh $(BINDIR)
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
@@ -220,4 +256,4 @@ bench: $(BIN) $(WISDOM)
 clean:
 	rm -rf $(BUILD) bin tests/work
 
--include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(EXP_SRC:%.c=$(BUILD)/%.d)
+-include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(MPI_OBJ:.o=.d) $(H5CLI_OBJ:.o=.d) $(MPITEST_SRC:%.c=$(BUILD)/%.d) $(TEST_OBJ:.o=.d) $(EXP_SRC:%.c=$(BUILD)/%.d)

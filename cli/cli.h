@@ -149,6 +149,31 @@ json_t *cli_json_array(const double *v, size_t n);
 int cli_write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
                 const double *const *cols);
 
+/* The HDF5 and MPI parts of the command line (cli/h5_*.c, mpi/), present in
+ * noiselab-mpi only: its main sets cli_h5 before cli_main; NULL in
+ * noiselab, whose main hands every run that names an .h5 file or runs under
+ * an MPI launcher to noiselab-mpi (cli/main.c). */
+typedef struct {
+    int launched;           /* MPI initialised (started by mpirun, srun, ...) */
+    int size, rank;         /* processes and this one's rank (1, 0 without a launcher) */
+    /* one process: read or write a whole field as HDF5 (mpi/h5.h) */
+    int (*read)(const char *path, nl_field **out, nl_meta *meta);
+    int (*write)(const char *path, const nl_field *f, const nl_meta *meta, int dbl);
+    int (*meta)(const char *path, nl_meta *meta);   /* the provenance alone */
+    /* every process: the worst status and its message (mpi/dist.h) */
+    int (*agree)(int status);
+} cli_h5_hooks;
+extern const cli_h5_hooks *cli_h5;
+
+/* Started by an MPI launcher (Open MPI's mpirun, PMIx as under srun, PMI)? */
+int cli_mpi_launched(void);
+/* Does path name an HDF5 file (by its .h5 extension)? */
+int cli_is_h5(const char *path);
+/* The provenance of an .h5 file (through cli_h5, exit 2 without it). */
+int cli_h5_read_meta(const char *path, nl_meta *meta);
+/* HDF5 outputs in float64 (synth --precision double); float32 otherwise. */
+extern int cli_h5_double;
+
 /* Write f to tmp (the temporary of path, from cli_out_begin) as EXR with
  * meta when path ends in .exr, else as a 1D TSV with columns t, value;
  * exits on error. */

@@ -18,7 +18,8 @@
 static const char help[] =
     "usage: noiselab synth METHOD (--acf SPEC | --spectrum SPEC) --size N[xM[xK]]\n"
     "                      [--seed S] [--spacing H[,H...]] [--clamp] [--preview P.png]\n"
-    "                      [--json] [method options] -o OUT.exr|OUT.tsv\n\n"
+    "                      [--json] [method options] -o OUT.exr|OUT.tsv|OUT.h5\n"
+    "                      [--precision single|double]\n\n"
     "METHOD\n"
     "  fft       periodic Fourier synthesis: white noise filtered by the square root of\n"
     "            the model's spectrum on the periodic grid; Gaussian, zero ensemble mean,\n"
@@ -94,12 +95,19 @@ static const char help[] =
     "  -o               EXR (any dimension; attributes noiselab.model, .method, .seed,\n"
     "                   .size, .spacing, .origin, .version, .flags) or TSV (1D: the same as\n"
     "                   \"# key: value\" lines, then columns t, value, t = (origin + i) h);\n"
-    "                   nothing is written unless every sample is finite (and, in EXR,\n"
-    "                   within float32)\n";
+    "                   or HDF5 (.h5: dataset /field, float32, attributes model, method, seed,\n"
+    "                   size, spacing, origin, version, flags, processes; read by noiselab-mpi,\n"
+    "                   which noiselab hands .h5 runs to); nothing is written unless every\n"
+    "                   sample is finite (and, in float32, within its range)\n"
+    "  --precision single|double  .h5 outputs: float32 (default) or float64\n"
+    "Under an MPI launcher (mpirun -np P noiselab synth ... -o OUT.h5) fft, circulant,\n"
+    "subdiv and sparse run distributed, each process holding 1/P of the field\n"
+    "(docs/scale-out.md).\n";
 
 /* What the command line gave, beyond the job itself. */
 typedef struct {
     const char *acf, *spec, *size, *spacing, *out, *preview, *origin, *from; /* option values or NULL */
+    const char *precision;                           /* --precision single|double (.h5 outputs) */
     int json;                                        /* --json */
     int given_L, given_N, given_tol, given_vs, given_density, given_disp; /* explicitly given */
     cli_synth_cond cond;                             /* --condition and its options */
@@ -215,7 +223,10 @@ static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
     static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
     nl_meta meta;
     char *rest;
-    nl_field_free(cli_read_field(path, &meta));
+    if (cli_is_h5(path))
+        cli_check(cli_h5_read_meta(path, &meta));
+    else
+        nl_field_free(cli_read_field(path, &meta));
     if (!meta.method[0] || !meta.seed[0] || !meta.size[0])
         cli_die(2, "--from: %s does not record how it was made (noiselab.method, seed, size)", path);
     snprintf(methbuf, sizeof methbuf, "%s", meta.method);
@@ -334,6 +345,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         {"realizations", required_argument, 0, 'k'}, {"mean", required_argument, 0, 'M'},
         {"interpolation", required_argument, 0, 'Q'}, {"ensemble-mean", required_argument, 0, 'g'},
         {"ensemble-variance", required_argument, 0, 'J'}, {"nmax", required_argument, 0, 'q'},
+        {"precision", required_argument, 0, 'G'},
         {0}};
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "synth")) != -1) {
@@ -361,6 +373,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'W': job->wrap = 1; break;
         case 'i': job->interpolant = optarg; break;
         case 'F': g->from = optarg; break;
+        case 'G': g->precision = optarg; break;
         case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q':
             cli_synth_cond_option(&g->cond, c, optarg); break;
         case 'h': fputs(help, stdout); return 1;
@@ -487,8 +500,14 @@ static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
     job->dim = cli_parse_size("--size", g->size, job->n, 2);
     if (g->spacing)
         cli_parse_spacing("--spacing", g->spacing, job->dim, job->h);
-    if (!cli_has_ext(g->out, ".exr") && !cli_has_ext(g->out, ".tsv"))
-        cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", g->out);
+    if (!cli_has_ext(g->out, ".exr") && !cli_has_ext(g->out, ".tsv") && !cli_is_h5(g->out))
+        cli_die(2, "-o: expected a file name ending in .exr, .tsv or .h5, got \"%s\"", g->out);
+    if (g->precision && strcmp(g->precision, "single") && strcmp(g->precision, "double"))
+        cli_die(2, "--precision: expected single or double, got \"%s\"", g->precision);
+    cli_h5_double = g->precision && !strcmp(g->precision, "double");
+    if (cli_h5_double && !cli_is_h5(g->out))
+        cli_die(2, "--precision double: EXR stores float32 and TSV ten digits; expected an .h5 output, got \"%s\"",
+                g->out);
     if (cli_has_ext(g->out, ".tsv") && job->dim != 1)
         cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", job->dim, g->out);
     if (g->preview && job->dim == 1)
@@ -546,12 +565,12 @@ static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_
 /* Nothing non-finite is written, and an EXR (float32) holds every sample. */
 static void check_output(const cli_synth_job *job, const cli_synth_args *g, const nl_field *f)
 {
-    int exr = cli_has_ext(g->out, ".exr");
+    int exr = cli_has_ext(g->out, ".exr") || (cli_is_h5(g->out) && !cli_h5_double);
     size_t k;
     if (nl_field_check_finite(f, exr ? FLT_MAX : INFINITY, &k))
         cli_die(2, "synth %s%s%s: %s%s; %s not written", job->method, job->m ? " " : "",
                 job->m ? nl_model_spec(job->m) : "", nl_errmsg(),
-                isfinite(f->data[k]) ? " of float32 EXR (lower the variance)" : "", g->out);
+                isfinite(f->data[k]) ? " of float32 (lower the variance)" : "", g->out);
 }
 
 /* Realization k: the method's field, conditioned when asked, written with its preview. */

@@ -196,6 +196,36 @@ static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *ds
     return NL_OK;
 }
 
+int nl_wk_check_even(const nl_model *m, int dim, const size_t *n, const double *h, int freq)
+{
+    nl_field g = {.dim = dim, .n = {1, 1, 1}, .h = {1, 1, 1}, .count = 1, .data = NULL};
+    int st;
+    if (dim < 1 || dim > 3)
+        return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
+    for (int a = 0; a < dim; a++) {
+        g.n[a] = n[a];
+        g.h[a] = h ? h[a] : 1;
+        g.count *= n[a];
+    }
+    if ((st = nl_model_check_dim(m, dim)))
+        return st;
+    return nl_model_is_reentrant(m) ? NL_OK : check_even(m, &g, freq);
+}
+
+double nl_wk_value(const nl_model *m, int dim, const size_t *n, const double *h, const size_t *idx, int freq)
+{
+    nl_field g = {.dim = dim, .n = {1, 1, 1}, .h = {1, 1, 1}, .count = 1, .data = NULL};
+    double v;
+    for (int a = 0; a < dim && a < 3; a++) {
+        g.n[a] = n[a];
+        g.h[a] = h ? h[a] : 1;
+    }
+    nl_gsl_enter();
+    v = value_at(m, &g, idx, freq);
+    nl_gsl_leave();
+    return v;
+}
+
 /* Fill f with model values at the wrapped lags (freq = 0) or frequencies. */
 static int fill(const nl_model *m, nl_field *f, int freq) { return fill_rows(m, f, f->n[0], f->data, f->n[0], freq); }
 

@@ -58,6 +58,19 @@ int nl_wk_sample_spectrum(const nl_model *m, nl_field *S);
  * for non-spectral models.  NL_EINVAL also for dim outside 1..3. */
 int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, const double *h, double **out);
 
+/* One model value at the wrapped lag (freq 0) or frequency (freq 1) of
+ * index idx[0..dim-1] of a grid of n samples at spacing h (NULL: unit),
+ * bit for bit the value the whole-grid samplers above put there (a
+ * distributed transform samples its own part of the grid: mpi/).  NaN or
+ * an infinity when the model is not finite there (the caller names it).
+ * Thread-safe for reentrant models. */
+double nl_wk_value(const nl_model *m, int dim, const size_t *n, const double *h, const size_t *idx, int freq);
+
+/* The checks the whole-grid samplers make before sampling: the model's
+ * dimension, and for expressions (not reentrant) evenness on the grid.
+ * NL_OK or NL_EINVAL naming the problem. */
+int nl_wk_check_even(const nl_model *m, int dim, const size_t *n, const double *h, int freq);
+
 /* Forward and inverse conversion of real, even (R_j = R_-j) fields; the
  * imaginary part, zero for even input up to rounding, is dropped.  R and S
  * must have the same dim and n (NL_EINVAL); the output's h is not read: the

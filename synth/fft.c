@@ -149,20 +149,9 @@ static int plan_from_half(const char *name, int dim, const size_t *n, const doub
                 sum += w * l;
             }
         }
-    p->info.variance = sum / (double)p->count;
     p->info.min_lambda = lmin * cell;
     p->info.max_lambda = lmax * cell;
-    p->info.clamp_error = p->info.variance > 0 ? neg / (double)p->count / p->info.variance : INFINITY;
-    if (!(p->info.variance > 0)) {
-        st = NL_ERROR(NL_ENOTPD, "%s: the sampled spectrum has no positive part on this grid", name);
-    } else if (p->info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL && !(flags & NL_SYNTH_FFT_CLAMP)) {
-        st = NL_ERROR(NL_ENOTPD,
-                      "%s: not positive definite on this grid: min spectrum %.3g (max %.3g); zeroing the %zu "
-                      "negative values would change the covariance by up to %.2g of R(0), above %.0e "
-                      "(use --clamp to accept, or a larger grid if the model is truncated)",
-                      name, p->info.min_lambda, p->info.max_lambda, p->info.negatives, p->info.clamp_error,
-                      NL_SYNTH_FFT_CLAMP_TOL);
-    }
+    st = nl_synth_fft_verdict(name, p->count, sum, neg, flags, &p->info);
     if (!st) {
         for (size_t k = 0; k < p->half; k++) {
             double l = S[k] / cell;
@@ -175,6 +164,23 @@ static int plan_from_half(const char *name, int dim, const size_t *n, const doub
         return st;
     }
     *out = p;
+    return NL_OK;
+}
+
+int nl_synth_fft_verdict(const char *name, size_t count, double sum, double neg, unsigned flags,
+                         nl_synth_fft_info *info)
+{
+    info->variance = sum / (double)count;
+    info->clamp_error = info->variance > 0 ? neg / (double)count / info->variance : INFINITY;
+    if (!(info->variance > 0))
+        return NL_ERROR(NL_ENOTPD, "%s: the sampled spectrum has no positive part on this grid", name);
+    if (info->clamp_error > NL_SYNTH_FFT_CLAMP_TOL && !(flags & NL_SYNTH_FFT_CLAMP))
+        return NL_ERROR(NL_ENOTPD,
+                        "%s: not positive definite on this grid: min spectrum %.3g (max %.3g); zeroing the %zu "
+                        "negative values would change the covariance by up to %.2g of R(0), above %.0e "
+                        "(use --clamp to accept, or a larger grid if the model is truncated)",
+                        name, info->min_lambda, info->max_lambda, info->negatives, info->clamp_error,
+                        NL_SYNTH_FFT_CLAMP_TOL);
     return NL_OK;
 }
 

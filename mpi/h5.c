@@ -1,0 +1,359 @@
+/* Fields in HDF5 files: one process (POSIX driver) or collective (MPI-IO). */
+#include "h5.h"
+#include "dist.h"
+#include "../core/mem.h"
+#include "../core/nl_error.h"
+
+#include <hdf5.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const meta_key[] = {"model", "method", "seed", "spacing", "size", "version", "flags", "origin"};
+enum { NKEYS = 8 };
+
+static char *meta_field(nl_meta *m, int k)
+{
+    char *f[NKEYS] = {m->model, m->method, m->seed, m->spacing, m->size, m->version, m->flags, m->origin};
+    return f[k];
+}
+
+static size_t meta_len(int k)
+{
+    nl_meta m;
+    size_t len[NKEYS] = {sizeof m.model, sizeof m.method, sizeof m.seed, sizeof m.spacing, sizeof m.size,
+                         sizeof m.version, sizeof m.flags, sizeof m.origin};
+    return len[k];
+}
+
+static void quiet(void) { H5Eset_auto2(H5E_DEFAULT, NULL, NULL); }
+
+/* File access: MPI-IO over comm, or the default driver. */
+static hid_t fapl_for(MPI_Comm comm)
+{
+    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    if (fapl >= 0 && comm != MPI_COMM_NULL && H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL) < 0) {
+        H5Pclose(fapl);
+        return -1;
+    }
+    return fapl;
+}
+
+static hid_t dxpl_for(MPI_Comm comm)
+{
+    hid_t dxpl = H5Pcreate(H5P_DATASET_XFER);
+    if (dxpl >= 0 && comm != MPI_COMM_NULL && H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE) < 0) {
+        H5Pclose(dxpl);
+        return -1;
+    }
+    return dxpl;
+}
+
+static int write_attrs(hid_t d, const nl_meta *meta, int processes)
+{
+    hid_t sp = H5Screate(H5S_SCALAR), a;
+    int bad = sp < 0;
+    for (int k = 0; meta && !bad && k < NKEYS; k++) {
+        const char *v = meta_field((nl_meta *)meta, k);
+        hid_t t;
+        if (!*v)
+            continue;
+        t = H5Tcopy(H5T_C_S1);
+        bad = t < 0 || H5Tset_size(t, strlen(v) + 1) < 0 || H5Tset_strpad(t, H5T_STR_NULLTERM) < 0;
+        if (!bad && (a = H5Acreate2(d, meta_key[k], t, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0) {
+            bad = H5Awrite(a, t, v) < 0;
+            H5Aclose(a);
+        } else {
+            bad = 1;
+        }
+        if (t >= 0)
+            H5Tclose(t);
+    }
+    if (!bad && (a = H5Acreate2(d, "processes", H5T_STD_I32LE, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0) {
+        bad = H5Awrite(a, H5T_NATIVE_INT, &processes) < 0;
+        H5Aclose(a);
+    } else {
+        bad = 1;
+    }
+    if (sp >= 0)
+        H5Sclose(sp);
+    return bad;
+}
+
+/* HDF5 dims (slowest first) of a field's n; the slab's start and count. */
+static void h5_dims(int dim, const size_t *n, size_t s0, size_t ns, hsize_t *dims, hsize_t *start, hsize_t *count)
+{
+    for (int a = 0; a < dim; a++) {
+        dims[a] = n[dim - 1 - a];
+        start[a] = 0;
+        count[a] = dims[a];
+    }
+    start[0] = s0;
+    count[0] = ns;
+}
+
+static int write_data(hid_t file, MPI_Comm comm, int dim, const size_t *n, size_t s0, size_t ns,
+                      const double *slab, const nl_meta *meta, int dbl, int processes)
+{
+    hsize_t dims[3], start[3], count[3];
+    hid_t fs, ms = -1, d = -1, x = -1;
+    int bad;
+    h5_dims(dim, n, s0, ns, dims, start, count);
+    if ((fs = H5Screate_simple(dim, dims, NULL)) < 0)
+        return 1;
+    d = H5Dcreate2(file, "field", dbl ? H5T_IEEE_F64LE : H5T_IEEE_F32LE, fs, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    bad = d < 0 || write_attrs(d, meta, processes);
+    if (!bad) {
+        if (ns) {
+            ms = H5Screate_simple(dim, count, NULL);
+            bad = ms < 0 || H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) < 0;
+        } else {
+            ms = H5Screate(H5S_NULL);
+            bad = ms < 0 || H5Sselect_none(fs) < 0;
+        }
+    }
+    if (!bad)
+        bad = (x = dxpl_for(comm)) < 0 || H5Dwrite(d, H5T_NATIVE_DOUBLE, ms, fs, x, slab) < 0;
+    if (x >= 0) H5Pclose(x);
+    if (ms >= 0) H5Sclose(ms);
+    if (d >= 0) H5Dclose(d);
+    H5Sclose(fs);
+    return bad;
+}
+
+int nl_mpi_h5_write(const char *path, MPI_Comm comm, int dim, const size_t *n, size_t s0, size_t ns,
+                    const double *slab, const nl_meta *meta, int dbl, int processes)
+{
+    hid_t fapl, file = -1;
+    int bad, st = NL_OK;
+    quiet();
+    if (dim < 1 || dim > 3 || s0 + ns > n[dim - 1] || (ns && !slab))
+        st = NL_ERROR(NL_EINVAL, "HDF5: a slab %zu..%zu of a %dD field does not fit it", s0, s0 + ns, dim);
+    if (comm != MPI_COMM_NULL && (st = nl_mpi_agree(comm, st)))
+        return st;
+    if (st)
+        return st;
+    fapl = fapl_for(comm);
+    /* creating is collective: every process gets the same answer */
+    bad = fapl < 0 || (file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl)) < 0;
+    if (fapl >= 0)
+        H5Pclose(fapl);
+    if (bad)
+        return NL_ERROR(NL_EIO, "%s: cannot create the HDF5 file", path);
+    bad = write_data(file, comm, dim, n, s0, ns, slab, meta, dbl, processes);
+    bad |= H5Fclose(file) < 0;
+    st = bad ? NL_ERROR(NL_EIO, "%s: writing the HDF5 file failed", path) : NL_OK;
+    return comm != MPI_COMM_NULL ? nl_mpi_agree(comm, st) : st;
+}
+
+int nl_mpi_h5_is_hdf5(const char *path)
+{
+    static const unsigned char sig[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+    unsigned char b[8];
+    FILE *fp = fopen(path, "rb");
+    int yes = fp && fread(b, 1, 8, fp) == 8 && memcmp(b, sig, 8) == 0;
+    if (fp)
+        fclose(fp);
+    return yes;
+}
+
+static void read_attrs(hid_t d, nl_meta *meta)
+{
+    memset(meta, 0, sizeof *meta);
+    for (int k = 0; k < NKEYS; k++) {
+        hid_t a, t, mt;
+        if (H5Aexists(d, meta_key[k]) <= 0 || (a = H5Aopen(d, meta_key[k], H5P_DEFAULT)) < 0)
+            continue;
+        t = H5Aget_type(a);
+        if (t >= 0 && H5Tget_class(t) == H5T_STRING && !H5Tis_variable_str(t) && H5Tget_size(t) < meta_len(k)) {
+            char *v = meta_field(meta, k);
+            mt = H5Tcopy(t);
+            H5Tset_size(mt, meta_len(k) - 1);
+            H5Tset_strpad(mt, H5T_STR_NULLTERM);
+            if (H5Aread(a, mt, v) < 0)
+                v[0] = 0;
+            v[meta_len(k) - 1] = 0;
+            H5Tclose(mt);
+        }
+        if (t >= 0)
+            H5Tclose(t);
+        H5Aclose(a);
+    }
+}
+
+/* Spacing "h0[,h1[,h2]]" (positive finite numbers); unit when absent. */
+static int parse_spacing(const char *path, const char *s, int dim, double *h)
+{
+    for (int a = 0; a < 3; a++)
+        h[a] = 1;
+    if (!*s)
+        return NL_OK;
+    for (int a = 0; a < dim; a++) {
+        char *end;
+        h[a] = strtod(s, &end);
+        if (end == s || !(h[a] > 0) || !isfinite(h[a]))
+            return NL_ERROR(NL_EINPUT, "%s: attribute spacing \"%s\": expected positive numbers", path, s);
+        s = end;
+        if (*s == ',')
+            s++;
+        else if (a + 1 < dim)
+            for (int b = a + 1; b < dim; b++)
+                h[b] = h[a];
+        if (*s != ',' && a + 1 < dim && *s == 0)
+            break;
+    }
+    return NL_OK;
+}
+
+/* Open path's /field: its rank and size (x first). */
+static int open_field(const char *path, MPI_Comm comm, hid_t *file, hid_t *d, int *dim, size_t *n)
+{
+    hid_t fapl = fapl_for(comm), sp;
+    hsize_t dims[3];
+    int r;
+    *file = *d = -1;
+    if (fapl < 0)
+        return NL_ERROR(NL_EFAIL, "HDF5: cannot set up file access");
+    *file = H5Fopen(path, H5F_ACC_RDONLY, fapl);
+    H5Pclose(fapl);
+    if (*file < 0)
+        return NL_ERROR(NL_EINPUT, "%s: not a readable HDF5 file", path);
+    if (H5Lexists(*file, "field", H5P_DEFAULT) <= 0 || (*d = H5Dopen2(*file, "field", H5P_DEFAULT)) < 0)
+        return NL_ERROR(NL_EINPUT, "%s: no dataset /field; expected a field written by noiselab", path);
+    sp = H5Dget_space(*d);
+    r = sp < 0 ? -1 : H5Sget_simple_extent_ndims(sp);
+    if (r < 1 || r > 3 || H5Sget_simple_extent_dims(sp, dims, NULL) < 0) {
+        if (sp >= 0)
+            H5Sclose(sp);
+        return NL_ERROR(NL_EINPUT, "%s: /field has rank %d; expected 1, 2 or 3", path, r);
+    }
+    H5Sclose(sp);
+    *dim = r;
+    n[0] = n[1] = n[2] = 1;
+    for (int a = 0; a < r; a++) {
+        n[a] = (size_t)dims[r - 1 - a];
+        if (n[a] < 1)
+            return NL_ERROR(NL_EINPUT, "%s: /field is empty", path);
+    }
+    return NL_OK;
+}
+
+static int read_rows(const char *path, MPI_Comm comm, hid_t d, int dim, const size_t *n, size_t s0, size_t ns,
+                     double *buf)
+{
+    hsize_t dims[3], start[3], count[3];
+    hid_t fs = H5Dget_space(d), ms, x = dxpl_for(comm);
+    int bad = fs < 0 || x < 0;
+    h5_dims(dim, n, s0, ns, dims, start, count);
+    if (ns) {
+        ms = H5Screate_simple(dim, count, NULL);
+        bad |= ms < 0 || H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) < 0;
+    } else {
+        ms = H5Screate(H5S_NULL);
+        bad |= ms < 0 || H5Sselect_none(fs) < 0;
+    }
+    bad = bad || H5Dread(d, H5T_NATIVE_DOUBLE, ms, fs, x, buf) < 0;
+    if (ms >= 0) H5Sclose(ms);
+    if (fs >= 0) H5Sclose(fs);
+    if (x >= 0) H5Pclose(x);
+    return bad ? NL_ERROR(NL_EINPUT, "%s: reading /field failed", path) : NL_OK;
+}
+
+static int check_finite(const char *path, const double *v, size_t count, size_t offset)
+{
+    for (size_t i = 0; i < count; i++)
+        if (!isfinite(v[i]))
+            return NL_ERROR(NL_EINPUT, "%s: sample %zu is %g; expected finite values", path, offset + i, v[i]);
+    return NL_OK;
+}
+
+int nl_mpi_h5_read(const char *path, nl_field **out, nl_meta *meta)
+{
+    hid_t file, d;
+    nl_meta m;
+    size_t n[3];
+    double h[3];
+    int dim, st;
+    *out = NULL;
+    quiet();
+    st = open_field(path, MPI_COMM_NULL, &file, &d, &dim, n);
+    if (!st) {
+        read_attrs(d, &m);
+        st = parse_spacing(path, m.spacing, dim, h);
+    }
+    if (!st && (*out = nl_field_alloc(dim, n, h, &st)) != NULL &&
+        !(st = read_rows(path, MPI_COMM_NULL, d, dim, n, 0, n[dim - 1], (*out)->data)))
+        st = check_finite(path, (*out)->data, (*out)->count, 0);
+    if (d >= 0) H5Dclose(d);
+    if (file >= 0) H5Fclose(file);
+    if (st) {
+        nl_field_free(*out);
+        *out = NULL;
+    } else if (meta) {
+        *meta = m;
+    }
+    return st;
+}
+
+int nl_mpi_h5_read_meta(const char *path, nl_meta *meta)
+{
+    hid_t file, d;
+    size_t n[3];
+    int dim, st;
+    quiet();
+    st = open_field(path, MPI_COMM_NULL, &file, &d, &dim, n);
+    if (!st)
+        read_attrs(d, meta);
+    else
+        memset(meta, 0, sizeof *meta);
+    if (d >= 0) H5Dclose(d);
+    if (file >= 0) H5Fclose(file);
+    return st;
+}
+
+int nl_mpi_h5_read_slab(const char *path, MPI_Comm comm, int *dim, size_t *n, double *h, nl_meta *meta,
+                        size_t *s0, size_t *ns, double **slab)
+{
+    hid_t file, d;
+    nl_meta m;
+    int st, P, r;
+    *slab = NULL;
+    quiet();
+    MPI_Comm_size(comm, &P);
+    MPI_Comm_rank(comm, &r);
+    st = open_field(path, comm, &file, &d, dim, n);
+    if (!st) {
+        read_attrs(d, &m);
+        st = parse_spacing(path, m.spacing, *dim, h);
+    }
+    if (!st) {
+        size_t loc[3] = {n[0], n[1], n[2]};
+        nl_mpi_block(n[*dim - 1], P, r, s0, ns);
+        loc[*dim - 1] = *ns ? *ns : 1;
+        if (!(st = nl_size_check(*dim, loc, sizeof(double), 1, NULL)) &&
+            !(*slab = nl_alloc((*ns ? loc[0] * loc[1] * loc[2] : 1) * sizeof **slab)))
+            st = NL_ERROR(NL_ENOMEM, "out of memory for a slab of %s", path);
+    }
+    /* the read is collective: every process must take part */
+    st = nl_mpi_agree(comm, st);
+    if (!st) {
+        size_t row = 1, cnt;
+        for (int a = 0; a + 1 < *dim; a++)
+            row *= n[a];
+        cnt = *ns * row;
+        st = read_rows(path, comm, d, *dim, n, *s0, *ns, *slab);
+        if (!st)
+            st = check_finite(path, *slab, cnt, *s0 * row);
+    }
+    if (d >= 0) H5Dclose(d);
+    if (file >= 0) H5Fclose(file);
+    st = nl_mpi_agree(comm, st);
+    if (st) {
+        nl_free(*slab);
+        *slab = NULL;
+    } else if (meta) {
+        *meta = m;
+    }
+    return st;
+}
