@@ -153,6 +153,8 @@ int cli_write_table(const char *path, const char *comment, int ncols, const char
  * noiselab-mpi only: its main sets cli_h5 before cli_main; NULL in
  * noiselab, whose main hands every run that names an .h5 file or runs under
  * an MPI launcher to noiselab-mpi (cli/main.c). */
+struct cli_synth_job;
+struct cli_synth_result;
 typedef struct {
     int launched;           /* MPI initialised (started by mpirun, srun, ...) */
     int size, rank;         /* processes and this one's rank (1, 0 without a launcher) */
@@ -162,6 +164,13 @@ typedef struct {
     int (*meta)(const char *path, nl_meta *meta);   /* the provenance alone */
     /* every process: the worst status and its message (mpi/dist.h) */
     int (*agree)(int status);
+    /* synth -o OUT.h5 under a launcher: the distributed run (cli/h5_synth.c) */
+    int (*synth)(struct cli_synth_job *job, const char *out,
+                 void (*run)(const struct cli_synth_job *, nl_field *, struct cli_synth_result *));
+    /* synth -o OUT.h5 on one process: exit 2 when the field does not fit
+     * NOISELAB_MEMORY_LIMIT, naming the process count that would hold it */
+    void (*check_memory)(const struct cli_synth_job *job,
+                         void (*run)(const struct cli_synth_job *, nl_field *, struct cli_synth_result *));
 } cli_h5_hooks;
 extern const cli_h5_hooks *cli_h5;
 

@@ -411,7 +411,6 @@ static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_a
         cli_die(2, "synth: unexpected argument \"%s\"", argv[optind + 1]);
 }
 
-typedef void (*cli_synth_run_fn)(const cli_synth_job *, nl_field *, cli_synth_result *);
 
 static cli_synth_run_fn find_method(const char *method)
 {
@@ -523,7 +522,7 @@ static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
     }
 }
 
-static void fill_meta(const cli_synth_job *job, const nl_field *f, const cli_synth_result *res, nl_meta *meta)
+void cli_synth_fill_meta(const cli_synth_job *job, const nl_field *f, const cli_synth_result *res, nl_meta *meta)
 {
     memset(meta, 0, sizeof *meta);
     snprintf(meta->model, sizeof meta->model, "%s", job->m ? nl_model_spec(job->m) : "");
@@ -588,7 +587,7 @@ static void realization(cli_synth_job *job, cli_synth_args *g, cli_synth_run_fn 
     run(job, f, res);
     cli_synth_cond_apply(&g->cond, job, f, res, k);
     cli_synth_cond_accumulate(&g->cond, f, k);
-    fill_meta(job, f, res, &meta);
+    cli_synth_fill_meta(job, f, res, &meta);
     check_output(job, g, f);
     cli_phase("synth", "writing");
     cli_synth_cond_write(&g->cond, out, tmp, f, &meta);
@@ -623,6 +622,16 @@ int cli_cmd_synth(int argc, char **argv)
         parse_origin(g.origin, job.origin);
     check_model_given(&job, &g);
     check_outputs_and_model(&job, &g);
+    if (cli_is_h5(g.out) && (g.cond.data || g.cond.K > 1 || g.preview || g.json) && cli_h5 && cli_h5->launched)
+        cli_die(2, "synth: --condition, --realizations, --preview and --json run on one process; without mpirun, "
+                "or with an .exr output");
+    if (cli_h5 && cli_h5->launched && cli_is_h5(g.out))
+        return cli_h5->synth(&job, g.out, run);
+    if (cli_h5 && cli_h5->size > 1)
+        cli_die(2, "-o: a run on %d processes writes one HDF5 file; expected OUT.h5, got \"%s\"", cli_h5->size,
+                g.out);
+    if (cli_is_h5(g.out))
+        cli_h5->check_memory(&job, run);
     cli_synth_cond_prepare(&g.cond, &job, g.from != NULL, g.spacing != NULL);
     const char **tmps = cli_malloc(2 * g.cond.K * sizeof *tmps);
     for (size_t k = 0; k < g.cond.K; k++) { /* every output can be written, before the work */

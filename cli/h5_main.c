@@ -4,14 +4,19 @@
  * /dev/null), and errors are agreed on first, so every process stops
  * together with rank 0 telling why. */
 #include "cli.h"
+#include "synth.h"
 #include "../mpi/dist.h"
 #include "../mpi/h5.h"
+#include "../core/fftw_plan.h"
 
 #include <fftw3-mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 static cli_h5_hooks hooks;
+
+int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run);
+void cli_h5_check_memory(const cli_synth_job *job, cli_synth_run_fn run);
 
 static int h5_write(const char *path, const nl_field *f, const nl_meta *meta, int dbl)
 {
@@ -34,11 +39,14 @@ int main(int argc, char **argv)
     hooks.write = h5_write;
     hooks.meta = nl_mpi_h5_read_meta;
     hooks.agree = agree;
+    hooks.synth = cli_h5_synth;
+    hooks.check_memory = cli_h5_check_memory;
     if (cli_mpi_launched()) {
         if (MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
             fprintf(stderr, "noiselab: MPI could not start\n");
             return 1;
         }
+        nl_fftw_flags(0); /* FFTW's threads first, then its MPI part */
         fftw_mpi_init();
         hooks.launched = 1;
         MPI_Comm_size(MPI_COMM_WORLD, &hooks.size);

@@ -6,8 +6,9 @@
 #include "cli.h"
 #include "../analysis/condsim.h"
 #include "../core/model.h"
+#include "../synth/circulant.h"
 
-typedef struct {
+typedef struct cli_synth_job {
     const char *method;    /* fft, subdiv, midpoint */
     nl_model *m;           /* the model */
     int dim;               /* 1..3 */
@@ -38,15 +39,23 @@ typedef struct {
     double cell0;          /* lattice: --cell (largest cell), 0 = size / 4 */
     const char *interpolant; /* midpoint: fournier|miller; lattice: perlin|wiener; NULL = the first */
     int from;              /* the options come from a field's provenance (--from) */
+    int slab;              /* distributed: f holds rows s0 .. s0 + ns - 1 of the slowest axis */
+    size_t s0, ns;         /* (cli/h5_synth.c; ns may be 0: plan, describe, do not execute) */
 } cli_synth_job;
 
-typedef struct {
+typedef struct cli_synth_result {
     char method[256];      /* method and its parameters, for noiselab.method */
     char flags[256];       /* comma-separated flags, for noiselab.flags */
     double sd;             /* standard deviation for the preview range */
     double offset;         /* centre of the preview range */
     json_t *report;        /* method-specific JSON report (owned) */
 } cli_synth_result;
+
+/* A method's run: plan, fill f (or, with job->slab, its slab), describe. */
+typedef void (*cli_synth_run_fn)(const cli_synth_job *, nl_field *, cli_synth_result *);
+
+/* The provenance of a synthesised field (cmd_synth.c). */
+void cli_synth_fill_meta(const cli_synth_job *job, const nl_field *f, const cli_synth_result *res, nl_meta *meta);
 
 /* An integer option in min..max, checked before it is narrowed to int
  * (exit 2 naming opt otherwise). */
@@ -101,6 +110,10 @@ void cli_synth_cond_free(cli_synth_cond *c);
 
 /* Each exits through cli_die on bad input; returns only on success. */
 void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
+/* What fft and circulant record of their plans (method, flags, report),
+ * shared with the distributed runs (cli/h5_synth.c). */
+void cli_synth_fft_describe(const nl_synth_fft_info *info, cli_synth_result *r);
+void cli_synth_circulant_describe(const cli_synth_job *job, const nl_synth_circulant_info *info, cli_synth_result *r);
 void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
 void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
 void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);

@@ -26,6 +26,12 @@ void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *
     nl_synth_fft_plan_info(p, &info);
     cli_check(nl_synth_fft_execute(p, job->seed, f));
     nl_synth_fft_plan_free(p);
+    cli_synth_fft_describe(&info, r);
+}
+
+void cli_synth_fft_describe(const nl_synth_fft_info *i, cli_synth_result *r)
+{
+    const nl_synth_fft_info info = *i;
     snprintf(r->method, sizeof r->method, "fft");
     if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
         snprintf(r->flags, sizeof r->flags, "clamped");
@@ -187,6 +193,12 @@ void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_re
     nl_synth_circulant_plan_info(p, &info);
     cli_check(nl_synth_circulant_execute(p, job->seed, f));
     nl_synth_circulant_plan_free(p);
+    cli_synth_circulant_describe(job, &info, r);
+}
+
+void cli_synth_circulant_describe(const cli_synth_job *job, const nl_synth_circulant_info *i, cli_synth_result *r)
+{
+    const nl_synth_circulant_info info = *i;
     snprintf(r->method, sizeof r->method, "circulant:embedding=%zux%zux%zu", info.m[0], info.m[1], info.m[2]);
     int clamped = info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL, lost = fabs(info.variance_loss) > NL_SYNTH_CIRCULANT_LOSS_TOL;
     snprintf(r->flags, sizeof r->flags, "%s%s%s", clamped ? "clamped" : "", clamped && lost ? "," : "",

@@ -109,12 +109,17 @@ static int write_data(hid_t file, MPI_Comm comm, int dim, const size_t *n, size_
             ms = H5Screate_simple(dim, count, NULL);
             bad = ms < 0 || H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) < 0;
         } else {
-            ms = H5Screate(H5S_NULL);
-            bad = ms < 0 || H5Sselect_none(fs) < 0;
+            /* an empty share: nothing selected on either side (a null
+             * dataspace here lets MPI-IO write a stray sample) */
+            hsize_t one = 1;
+            ms = H5Screate_simple(1, &one, NULL);
+            bad = ms < 0 || H5Sselect_none(ms) < 0 || H5Sselect_none(fs) < 0;
         }
     }
-    if (!bad)
-        bad = (x = dxpl_for(comm)) < 0 || H5Dwrite(d, H5T_NATIVE_DOUBLE, ms, fs, x, slab) < 0;
+    if (!bad) {
+        double dummy = 0;
+        bad = (x = dxpl_for(comm)) < 0 || H5Dwrite(d, H5T_NATIVE_DOUBLE, ms, fs, x, ns ? slab : &dummy) < 0;
+    }
     if (x >= 0) H5Pclose(x);
     if (ms >= 0) H5Sclose(ms);
     if (d >= 0) H5Dclose(d);
@@ -250,8 +255,9 @@ static int read_rows(const char *path, MPI_Comm comm, hid_t d, int dim, const si
         ms = H5Screate_simple(dim, count, NULL);
         bad |= ms < 0 || H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) < 0;
     } else {
-        ms = H5Screate(H5S_NULL);
-        bad |= ms < 0 || H5Sselect_none(fs) < 0;
+        hsize_t one = 1;
+        ms = H5Screate_simple(1, &one, NULL);
+        bad |= ms < 0 || H5Sselect_none(ms) < 0 || H5Sselect_none(fs) < 0;
     }
     bad = bad || H5Dread(d, H5T_NATIVE_DOUBLE, ms, fs, x, buf) < 0;
     if (ms >= 0) H5Sclose(ms);

@@ -28,18 +28,25 @@ static size_t smooth_even(size_t x)
     }
 }
 
-/* 1 - (the synthesised variance) / R(0): the power a spectral model loses
- * to the embedding's frequency sampling; 0 for a lag model (R is sampled
- * itself); NaN when R(0) is not known. */
-static double variance_loss(const nl_model *m, int dim, const nl_synth_fft_plan *fft)
+size_t nl_synth_circulant_size(size_t n) { return smooth_even(2 * (n > 1 ? n - 1 : 1)); }
+
+double nl_synth_circulant_loss(const nl_model *m, int dim, double variance)
 {
     double zero[3] = {0, 0, 0}, r0;
-    nl_synth_fft_info fi;
     if (!nl_model_is_spectral(m))
         return 0;
     r0 = nl_model_acf(m, dim, zero);
-    nl_synth_fft_plan_info(fft, &fi);
-    return isfinite(r0) && r0 > 0 ? 1 - fi.variance / r0 : NAN;
+    return isfinite(r0) && r0 > 0 ? 1 - variance / r0 : NAN;
+}
+
+int nl_synth_circulant_refuse(const nl_model *m, const nl_synth_circulant_info *info, const size_t *mm)
+{
+    return NL_ERROR(NL_ENOTPD,
+                    "%s: cannot be embedded: the smallest eigenvalue is %.3g (largest %.3g) at embedding "
+                    "%zux%zux%zu after %d doublings; zeroing the negatives would change the covariance "
+                    "by %.2g of R(0) (use --clamp to accept)",
+                    nl_model_spec(m), info->min_eigenvalue, info->max_eigenvalue, mm[0], mm[1], mm[2],
+                    info->doublings, info->clamp_error);
 }
 
 void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p)
@@ -67,7 +74,7 @@ int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, c
         p->n[a] = a < dim ? n[a] : 1;
         p->h[a] = a < dim && h ? h[a] : 1;
         if (a < dim)
-            mm[a] = smooth_even(2 * (n[a] > 1 ? n[a] - 1 : 1));
+            mm[a] = nl_synth_circulant_size(n[a]);
     }
     for (;;) {
         nl_synth_fft_info fi;
@@ -87,12 +94,7 @@ int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, c
                 grow = 0;
         if (!grow) {
             if (!(flags & NL_SYNTH_FFT_CLAMP))
-                st = NL_ERROR(NL_ENOTPD,
-                              "%s: cannot be embedded: the smallest eigenvalue is %.3g (largest %.3g) at embedding "
-                              "%zux%zux%zu after %d doublings; zeroing the negatives would change the covariance "
-                              "by %.2g of R(0) (use --clamp to accept)",
-                              nl_model_spec(m), p->info.min_eigenvalue, p->info.max_eigenvalue, mm[0], mm[1], mm[2],
-                              p->info.doublings, fi.clamp_error);
+                st = nl_synth_circulant_refuse(m, &p->info, mm);
             break;
         }
         nl_synth_fft_plan_free(p->fft);
@@ -103,7 +105,11 @@ int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, c
     }
     memcpy(p->m, mm, sizeof mm);
     if (!st)
-        p->info.variance_loss = variance_loss(m, dim, p->fft);
+    {
+        nl_synth_fft_info fi;
+        nl_synth_fft_plan_info(p->fft, &fi);
+        p->info.variance_loss = nl_synth_circulant_loss(m, dim, fi.variance);
+    }
     if (st) {
         nl_synth_circulant_plan_free(p);
         return st;

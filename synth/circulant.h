@@ -69,6 +69,17 @@ void nl_synth_circulant_plan_info(const nl_synth_circulant_plan *p, nl_synth_cir
 int nl_synth_circulant_execute(const nl_synth_circulant_plan *p, uint64_t seed, nl_field *out);
 
 /* Frees the plan (NULL: no-op). */
+/* The pieces of planning a distributed embedding shares (mpi/fft.h):
+ * the embedding size of an axis of n samples before doublings (the
+ * smallest even 2,3,5-smooth number >= 2 (n - 1)); a spectral model's
+ * variance_loss for a synthesised variance (0 for lag models, NaN when
+ * R(0) is not known); the NL_ENOTPD refusal of an embedding mm that could
+ * not be doubled further (info's eigenvalues, doublings, clamp_error).
+ * Pure. */
+size_t nl_synth_circulant_size(size_t n);
+double nl_synth_circulant_loss(const nl_model *m, int dim, double variance);
+int nl_synth_circulant_refuse(const nl_model *m, const nl_synth_circulant_info *info, const size_t *mm);
+
 void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p);
 
 #endif

@@ -1,0 +1,167 @@
+/* synth -o OUT.h5 under an MPI launcher: each process synthesises its slab
+ * of the field (fft and circulant through FFTW-MPI, mpi/fft.h; subdiv and
+ * sparse by their slab executes) and all write one HDF5 file together
+ * (mpi/h5.h).  Rank 0 owns the output's temporary name (cli/outputs.c) and
+ * renames it when every process has written; every failure is agreed on
+ * first, so all processes stop together with rank 0 naming the cause. */
+#include "synth.h"
+#include "../core/mem.h"
+#include "../core/nl_error.h"
+#include "../mpi/dist.h"
+#include "../mpi/fft.h"
+#include "../mpi/h5.h"
+#include "../synth/sparse.h"
+#include "../synth/subdiv.h"
+
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* Stop every process together: agreed status, rank 0 tells (h5_main.c
+ * silences the others). */
+static void check_all(int st) { cli_check(nl_mpi_agree(MPI_COMM_WORLD, st)); }
+
+/* Bytes per process of a method on P processes (for the memory check). */
+typedef struct {
+    const cli_synth_job *job;   /* the request */
+    size_t m[3];                /* fft: the grid; circulant: the first embedding */
+} mem_model;
+
+static size_t bytes_for(int P, const void *arg)
+{
+    const mem_model *mm = arg;
+    const cli_synth_job *job = mm->job;
+    size_t rest = 1, b = (job->n[job->dim - 1] + (size_t)P - 1) / (size_t)P;
+    for (int a = 0; a + 1 < job->dim; a++)
+        rest *= job->n[a];
+    if (!strcmp(job->method, "fft") || !strcmp(job->method, "circulant"))
+        return nl_mpi_fft_bytes(job->dim, mm->m, P) + b * rest * sizeof(double);
+    /* subdiv and sparse: the slab, plus about as much again for the finest
+     * level's neighbours and the level below (an estimate) */
+    return 2 * b * rest * sizeof(double);
+}
+
+/* Exit 2 when P processes would exceed NOISELAB_MEMORY_LIMIT each. */
+static void check_memory_on(const cli_synth_job *job, int P)
+{
+    mem_model mm = {job, {1, 1, 1}};
+    size_t lim, need;
+    int enough;
+    cli_check(nl_mem_limit(&lim));
+    for (int a = 0; a < job->dim; a++)
+        mm.m[a] = strcmp(job->method, "circulant") ? job->n[a] : nl_synth_circulant_size(job->n[a]);
+    if (!lim || (need = bytes_for(P, &mm)) <= lim)
+        return;
+    enough = nl_mpi_processes_needed(bytes_for, &mm, lim, 1 << 20);
+    cli_die(2, "NOISELAB_MEMORY_LIMIT: synth %s of %zu%s%.0zu%s%.0zu samples needs about %.0f MiB per process on %d "
+            "process%s, above the limit of %.0f MiB; %s%d processes (mpirun -np %d)", job->method, job->n[0],
+            job->dim > 1 ? "x" : "", job->dim > 1 ? job->n[1] : 0, job->dim > 2 ? "x" : "",
+            job->dim > 2 ? job->n[2] : 0, (double)need / 1048576, P, P == 1 ? "" : "es", (double)lim / 1048576,
+            enough ? "it fits on " : "not even on ", enough ? enough : 1 << 20, enough ? enough : 1 << 20);
+}
+
+void cli_h5_check_memory(const cli_synth_job *job, cli_synth_run_fn run)
+{
+    (void)run;
+    check_memory_on(job, 1);
+}
+
+/* The output's temporary, made by rank 0 and named to every process; the
+ * folder is checked on every process first, so that rank 0 cannot fail
+ * alone. */
+static const char *begin_output(const char *out, int rank)
+{
+    static char tmp[PATH_MAX];
+    char dir[PATH_MAX];
+    const char *slash = strrchr(out, '/');
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - out) + 1 : 1, slash ? out : ".");
+    check_all(access(dir, W_OK | X_OK) ? NL_ERROR(NL_EINVAL, "-o: cannot write \"%s\": its folder \"%s\" is not "
+                                                   "writable or does not exist", out, dir) : NL_OK);
+    memset(tmp, 0, sizeof tmp);
+    if (rank == 0)
+        snprintf(tmp, sizeof tmp, "%s", cli_out_begin(out));
+    MPI_Bcast(tmp, PATH_MAX, MPI_CHAR, 0, MPI_COMM_WORLD);
+    return tmp;
+}
+
+/* fft and circulant: plan over every process, then execute into f. */
+static nl_field *run_fft(cli_synth_job *job, cli_synth_result *res)
+{
+    unsigned fl = job->clamp ? NL_SYNTH_FFT_CLAMP : 0;
+    size_t n[3] = {job->n[0], job->n[1], job->n[2]};
+    nl_field *f;
+    if (!strcmp(job->method, "fft")) {
+        nl_mpi_fft_plan *p;
+        nl_synth_fft_info info;
+        cli_check(nl_mpi_fft_plan_alloc(MPI_COMM_WORLD, job->m, job->dim, job->n, job->h, fl, &p));
+        nl_mpi_fft_local(p, &job->s0, &job->ns);
+        n[job->dim - 1] = job->ns ? job->ns : 1;
+        f = cli_field_alloc(job->dim, n, job->h);
+        check_all(nl_mpi_fft_execute(p, job->seed, f->data));
+        nl_mpi_fft_plan_info(p, &info);
+        nl_mpi_fft_plan_free(p);
+        cli_synth_fft_describe(&info, res);
+    } else {
+        nl_mpi_circulant_plan *p;
+        nl_synth_circulant_info info;
+        cli_check(nl_mpi_circulant_plan_alloc(MPI_COMM_WORLD, job->m, job->dim, job->n, job->h, fl, 16, &p));
+        nl_mpi_circulant_local(p, &job->s0, &job->ns);
+        n[job->dim - 1] = job->ns ? job->ns : 1;
+        f = cli_field_alloc(job->dim, n, job->h);
+        check_all(nl_mpi_circulant_execute(p, job->seed, f->data));
+        nl_mpi_circulant_plan_info(p, &info);
+        nl_mpi_circulant_plan_free(p);
+        cli_synth_circulant_describe(job, &info, res);
+    }
+    return f;
+}
+
+int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run)
+{
+    int P, rank, f32 = !cli_h5_double;
+    size_t k = 0;
+    cli_synth_result res;
+    nl_meta meta;
+    nl_field *f;
+    const char *tmp;
+    MPI_Comm_size(MPI_COMM_WORLD, &P);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (strcmp(job->method, "fft") && strcmp(job->method, "circulant") && strcmp(job->method, "subdiv") &&
+        strcmp(job->method, "sparse"))
+        cli_die(2, "synth %s: runs on one process; distributed: fft, circulant, subdiv, sparse (or run it without "
+                "mpirun)", job->method);
+    if (!job->m && strcmp(job->method, "sparse"))
+        cli_die(2, "synth %s: expected --acf or --spectrum", job->method);
+    check_memory_on(job, P);
+    tmp = begin_output(out, rank);
+    memset(&res, 0, sizeof res);
+    job->slab = 1;
+    if (!strcmp(job->method, "fft") || !strcmp(job->method, "circulant")) {
+        f = run_fft(job, &res);
+    } else {
+        size_t n[3] = {job->n[0], job->n[1], job->n[2]};
+        nl_mpi_block(job->n[job->dim - 1], P, rank, &job->s0, &job->ns);
+        n[job->dim - 1] = job->ns ? job->ns : 1;
+        f = cli_field_alloc(job->dim, n, job->h);
+        run(job, f, &res);
+    }
+    /* nothing is written unless every sample is finite (and fits float32) */
+    int st = job->ns && nl_field_check_finite(f, f32 ? FLT_MAX : INFINITY, &k) ? NL_EINVAL : NL_OK;
+    if (st)
+        st = NL_ERROR(NL_EINVAL, "synth %s %s: %s%s; %s not written", job->method, job->m ? nl_model_spec(job->m) : "",
+                      nl_errmsg(), f32 ? " (or beyond float32: lower the variance)" : "", out);
+    check_all(st);
+    cli_synth_fill_meta(job, f, &res, &meta);
+    cli_check(nl_mpi_h5_write(tmp, MPI_COMM_WORLD, job->dim, job->n, job->s0, job->ns, job->ns ? f->data : NULL,
+                              &meta, cli_h5_double, P));
+    if (rank == 0)
+        cli_out_commit(out);
+    json_decref(res.report);
+    nl_field_free(f);
+    nl_model_free(job->m);
+    return 0;
+}
