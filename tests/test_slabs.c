@@ -165,6 +165,17 @@ Test(slabs, subdiv_periodic_correlated_and_clamp)
     check_subdiv("gauss:scale=7.9", 2, 64, 64, &o, "--clamp");
 }
 
+/* Large enough that refinement and displacements run on several threads
+ * (above 65536 samples per level): the split among threads must not
+ * matter either. */
+Test(slabs, subdiv_threaded)
+{
+    nl_subdiv_options o = opts();
+    o.displacements = NL_SUBDIV_DISP_ERROR;
+    check_subdiv("markov:scale=12.7", 2, 512, 384, &o, "512x384 correlated");
+    check_subdiv("markov:scale=12.7", 1, 1 << 18, 1, &o, "1D 2^18 correlated");
+}
+
 Test(slabs, subdiv_1d)
 {
     nl_subdiv_options o = opts();

@@ -59,6 +59,14 @@ Test(slabs, sparse_2d)
     nl_synth_sparse_plan_free(p);
 }
 
+/* Above 65536 samples: several threads share the gather. */
+Test(slabs, sparse_threaded)
+{
+    nl_synth_sparse_plan *p = model_plan("markov:scale=4.4", 2, 12, 0, 1.7);
+    check_sparse(p, 2, 512, 384, "sparse 512x384");
+    nl_synth_sparse_plan_free(p);
+}
+
 Test(slabs, sparse_angle_and_expression)
 {
     nl_synth_sparse_plan *p;
