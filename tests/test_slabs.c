@@ -231,6 +231,26 @@ Test(slabs, subdiv_seed_image)
     nl_model_free(m);
 }
 
+Test(slabs, subdiv_seed_image_1d)
+{
+    nl_model *m = test_model("markov:scale=5.5");
+    size_t n[1] = {256}, ni[1] = {32};
+    nl_subdiv_options o = opts();
+    nl_subdiv_plan *p;
+    nl_field *img = nl_field_alloc(1, ni, NULL, NULL), *full = nl_field_alloc(1, n, NULL, NULL);
+    subdiv_ctx c = {NULL, 6, img};
+    for (size_t i = 0; i < img->count; i++)
+        img->data[i] = -1.75 + 0.29 * (double)((i * 7919) % 13);
+    o.image = 1, o.levels = 3;
+    cr_assert_eq(nl_subdiv_plan_alloc(m, 1, n, 1.0, &o, &p), NL_OK, "%s", nl_errmsg());
+    c.p = p;
+    cr_assert_eq(nl_subdiv_plan_execute_image(p, img, c.seed, full), NL_OK, "%s", nl_errmsg());
+    check_slab_splits(full, subdiv_slab, &c, "1D seed image");
+    nl_subdiv_plan_free(p);
+    nl_field_free(full), nl_field_free(img);
+    nl_model_free(m);
+}
+
 /* The contract's refusals: a slab outside the field, no rows, a row of the
  * wrong length, the wrong dimension. */
 Test(slabs, subdiv_refusals)

@@ -71,13 +71,14 @@ static void compare(const char *what, long before, size_t estimate)
 
 Test(slabs, subdiv_bytes_measured)
 {
-    nl_model *m = test_model("markov:scale=9.1");
     size_t n[2] = {2048, 2048}, ns[2] = {2048, 512};
     nl_subdiv_options o;
     nl_subdiv_plan *p;
+    nl_model *m;
     nl_field *f;
     long before;
     skip_unless_measurable();
+    m = test_model("markov:scale=9.1");
     nl_subdiv_options_default(&o);
     o.displacements = NL_SUBDIV_DISP_ERROR;
     cr_assert_eq(nl_subdiv_plan_alloc(m, 2, n, 1.0, &o, &p), NL_OK, "%s", nl_errmsg());
@@ -96,12 +97,13 @@ Test(slabs, subdiv_bytes_measured)
 
 Test(slabs, sparse_bytes_measured)
 {
-    nl_model *m = test_model("gauss:scale=3.3");
     size_t n[2] = {2048, 2048}, ns[2] = {2048, 512};
     nl_synth_sparse_plan *p;
+    nl_model *m;
     nl_field *f;
     long before;
     skip_unless_measurable();
+    m = test_model("gauss:scale=3.3");
     cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 0, 0, 24.0, &p), NL_OK, "%s", nl_errmsg());
     f = nl_field_alloc(2, ns, NULL, NULL);
     cr_assert_not_null(f);
