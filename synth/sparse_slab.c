@@ -40,7 +40,8 @@ static int slab_check(const nl_synth_sparse_plan *p, int wrap, const size_t *n, 
             return NL_ERROR(NL_EINVAL, "size: a periodic tile must be a multiple of the cell size %ld, got %zu "
                             "along axis %d", C, n[a], a);
         if ((size_t)(2 * reach + 1) > n[a])
-            return NL_ERROR(NL_EINVAL, "radius: the kernel (%ld samples across) is larger than the tile", 2 * reach + 1);
+            return NL_ERROR(NL_EINVAL, "radius: the kernel (%ld samples across) is larger than the tile",
+                            2 * reach + 1);
     }
     return NL_OK;
 }

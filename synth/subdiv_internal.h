@@ -28,7 +28,7 @@ int nl_subdiv_disp_fill(const nl_subdiv_level *l, int dim, uint64_t seed, unsign
 
 /* Floor division by 2, and i modulo n into 0..n-1 (n = 0: i itself). */
 static inline long fdiv2(long a) { return a >= 0 ? a / 2 : -((-a + 1) / 2); }
-static inline long nl_subdiv_wrap(long i, long n) { return n ? ((i % n) + n) % n : i; }
+static inline long nl_subdiv_wrap(long i, long n) { return !n || (i >= 0 && i < n) ? i : ((i % n) + n) % n; }
 
 /* Samples of one level at integer indices x0..x0+nx-1, y0..y0+ny-1. */
 typedef struct {

@@ -255,7 +255,8 @@ size_t nl_subdiv_disp_bytes(int dim, const nl_subdiv_level *l, const grid *dst)
     nx = fdiv2(dst->x0 + dst->nx - 1) - fdiv2(dst->x0) + 1;
     ny = dim == 2 ? fdiv2(dst->y0 + dst->ny - 1) - fdiv2(dst->y0) + 1 : 1;
     /* the table, and disp_fill's white numbers over the cells +- M */
-    return (size_t)l->nclass * sizeof(double) * ((size_t)nx * (size_t)ny + (size_t)(nx + 2 * M) * (size_t)(ny + 2 * yM));
+    return (size_t)l->nclass * sizeof(double) *
+           ((size_t)nx * (size_t)ny + (size_t)(nx + 2 * M) * (size_t)(ny + 2 * yM));
 }
 
 int nl_subdiv_check_levels(const nl_subdiv_coeffs *c, int allow_not_pd)
@@ -409,7 +410,7 @@ int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long 
     for (int k = 0; k < L && !st; k++) {
         grid dst;
         st = nl_subdiv_grid_alloc(&dst, rx[k + 1][0], ry[k + 1][0], rx[k + 1][1] - rx[k + 1][0] + 1,
-                        ry[k + 1][1] - ry[k + 1][0] + 1);
+                                  ry[k + 1][1] - ry[k + 1][0] + 1);
         if (!st && (st = nl_subdiv_refine_level(dim, &c->level[k], &g, &dst, seed, (unsigned)k, NULL)))
             nl_free(dst.v);
         if (!st) {
