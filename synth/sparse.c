@@ -401,6 +401,14 @@ static uint64_t cell_id(long cx, long cy) { return ((uint64_t)(uint32_t)cy << 32
 int nl_sparse_impulses_make(const nl_synth_sparse_plan *p, uint64_t seed, long cx0, long cx1, long cy0, long cy1,
                             nl_sparse_impulses *im)
 {
+    return nl_sparse_impulses_make_periodic(p, seed, cx0, cx1, cy0, cy1, NULL, im);
+}
+
+static long wrap_cell(long c, const long *per, int a) { return per ? ((c % per[a]) + per[a]) % per[a] : c; }
+
+int nl_sparse_impulses_make_periodic(const nl_synth_sparse_plan *p, uint64_t seed, long cx0, long cx1, long cy0,
+                                     long cy1, const long *per, nl_sparse_impulses *im)
+{
     static const char *const names[] = {"x", "y"};
     size_t ncell, total = 0, cap;
     memset(im, 0, sizeof *im);
@@ -428,11 +436,13 @@ int nl_sparse_impulses_make(const nl_synth_sparse_plan *p, uint64_t seed, long c
         nl_sparse_impulses_free(im);
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu cells of impulses", ncell);
     }
-    for (long cy = cy0; cy <= cy1; cy++)
-        for (long cx = cx0; cx <= cx1; cx++) {
+    for (long ky = cy0; ky <= cy1; ky++)
+        for (long kx = cx0; kx <= cx1; kx++) {
+            /* the cell's canonical index: its impulses and their positions */
+            const long cx = wrap_cell(kx, per, 0), cy = p->dim == 2 ? wrap_cell(ky, per, 1) : ky;
             uint64_t id = cell_id(cx, p->dim == 2 ? cy : 0);
             unsigned long k, K = nl_rng_poisson(seed, NL_SPARSE_STREAM, id, 0, p->density);
-            im->start[(cy - cy0) * im->ncx + (cx - cx0)] = total;
+            im->start[(ky - cy0) * im->ncx + (kx - cx0)] = total;
             for (k = 0; k < K; k++) {
                 if (total == cap) {
                     cap *= 2;

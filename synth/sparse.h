@@ -138,6 +138,34 @@ void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_in
  * NL_SPARSE_WORK_MAX), NL_ENOMEM. */
 int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out);
 
+/* A slab along the slowest axis (y in 2D, x in 1D), for synthesis
+ * distributed by rows: the samples of slowest-axis indices s0 .. s0 + ns - 1
+ * (every index of the other axis) of the field of n_global[0..dim-1]
+ * samples, bit for bit those of nl_synth_sparse_execute(p, seed, wrap,
+ * NULL, field) (each sample sums the same impulses in the same order).
+ * out: the plan's dim, n[dim - 1] = ns >= 1, the other axis n_global's; its
+ * first sample is the global (0, s0).  wrap 0: the window at origin (0, s0)
+ * (1D: s0), of any n_global; wrap 1: the periodic tile of n_global (each a
+ * multiple of the cell size, the kernel within it): the impulses of the
+ * cells the slab's kernels reach, wrapped round the tile, are drawn in
+ * unwrapped cell coordinates (the slab's cells plus the reach, whatever
+ * the tile).  Angle plans are supported (the angle is evaluated at the same
+ * impulses); band-limited kernels are not used by lattice executes.  The
+ * work bound is the slab's.  Thread safety as nl_synth_sparse_execute.
+ * NL_OK, or NL_EINVAL (dims, a row length not n_global[0], a slab not within
+ * n_global, wrap with a tile not a multiple of the cell or smaller than the
+ * kernel, an angle not finite at an impulse), NL_ETOOBIG, NL_ENOMEM. */
+int nl_synth_sparse_execute_slab(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const size_t *n_global,
+                                 size_t s0, nl_field *out);
+
+/* The bytes nl_synth_sparse_execute_slab allocates (the impulses of the
+ * cells the slab reaches, as first reserved: 1.5 times their expected count
+ * plus 64; a slab whose cells draw more impulses grows them by doubling), for
+ * a slab of ns rows (1D: samples) of n_global, whatever s0 and wrap; not
+ * out itself.  O((ns + 2 reach) (n[0] + 2 reach) density / cell^2) in 2D.
+ * SIZE_MAX when it overflows.  Pure. */
+size_t nl_synth_sparse_slab_bytes(const nl_synth_sparse_plan *p, int wrap, const size_t *n_global, size_t ns);
+
 /* The work bound of nl_synth_sparse_execute for an output of n[0..dim-1]
  * samples, a kernel of this radius (rotated: angle != 0), cell (<= 0: the
  * default) and density, checkable before a plan is made: NL_OK, or

@@ -33,6 +33,13 @@ int nl_sparse_impulses_make(const nl_synth_sparse_plan *p, uint64_t seed, long c
                             nl_sparse_impulses *im);
 void nl_sparse_impulses_free(nl_sparse_impulses *im);
 
+/* nl_sparse_impulses_make with per[a] > 0 (NULL: none) the cells per axis
+ * of a periodic tile: cell (kx, ky) of the range holds the impulses of its
+ * canonical cell (kx mod per[0], ky mod per[1]), at that cell's positions
+ * (px, py within 0 .. per[a] cell - 1), so a range may run past the tile. */
+int nl_sparse_impulses_make_periodic(const nl_synth_sparse_plan *p, uint64_t seed, long cx0, long cx1, long cy0,
+                                     long cy1, const long *per, nl_sparse_impulses *im);
+
 /* Bilinear lookup of a (2R+1)^2 table at a non-integer offset; 0 outside. */
 double nl_sparse_table_at(const double *h, int R, double u, double v);
 

@@ -350,6 +350,41 @@ int nl_subdiv_plan_execute_window(const nl_subdiv_plan *p, uint64_t seed, const 
  * (nonperiodic plan, dims or sizes), NL_ENOTPD, NL_ENOMEM. */
 int nl_subdiv_plan_execute_image(const nl_subdiv_plan *p, const nl_field *image, uint64_t seed, nl_field *f);
 
+/* Slabs, for synthesis distributed along the slowest axis (axis dim - 1: y
+ * in 2D, x in 1D): the samples of slowest-axis indices s0 .. s0 + ns - 1
+ * and every index of the other axis, bit for bit those of
+ * nl_subdiv_plan_execute's field (nonperiodic plans: of its window at
+ * origin 0), computed from O(slab + halo) samples per level, never the
+ * whole field.  f has the plan's dim and size except n[dim - 1] = ns >= 1
+ * (row-major as the field, its first sample the global (0, s0)); s0 + ns
+ * must not pass the plan's n[dim - 1].  Periodic plans synthesise the whole
+ * coarse level (n / 2^levels samples: small) on every call and refine only
+ * the rows the slab needs at each level, with their wrapped neighbours;
+ * nonperiodic plans are the window at origin (0, s0) (1D: s0).  Random and
+ * correlated displacements, every N, midpoint plans and --clamp are
+ * supported.  f->h is set as by nl_subdiv_plan_execute.  Thread-safe as
+ * the executes.  NL_OK, or NL_EINVAL (f's dim or row length, a slab not
+ * within the field, an image plan: use nl_subdiv_plan_execute_image_slab;
+ * a level smaller than its neighbourhood), NL_ENOTPD, NL_ETOOBIG, NL_ENOMEM. */
+int nl_subdiv_plan_execute_slab(const nl_subdiv_plan *p, uint64_t seed, size_t s0, nl_field *f);
+
+/* nl_subdiv_plan_execute_image's samples of the slab s0 .. s0 + ns - 1 (as
+ * above; the whole seed image is read).  NL_EINVAL (a plan not made with
+ * the image option, dims or sizes), NL_ENOTPD, NL_ENOMEM. */
+int nl_subdiv_plan_execute_image_slab(const nl_subdiv_plan *p, const nl_field *image, uint64_t seed, size_t s0,
+                                      nl_field *f);
+
+/* An upper bound of the peak bytes nl_subdiv_plan_execute_slab (and
+ * _image_slab) allocate for a slab of ns rows (1D: samples), whatever s0:
+ * the level grids, the correlated displacements and their white numbers,
+ * the coarse level and its FFT's scratch (periodic plans; the image copy
+ * for image plans), the window's final level (nonperiodic plans).  Not
+ * counted: f itself (ns times the row length doubles, the caller's), and
+ * blocks below 1 KiB.  Grows as ns + the halo (a few neighbourhood reaches
+ * per level) times the row length, plus the coarse level's size.  SIZE_MAX
+ * when it overflows.  Pure. */
+size_t nl_subdiv_plan_slab_bytes(const nl_subdiv_plan *p, size_t ns);
+
 void nl_subdiv_plan_free(nl_subdiv_plan *p);
 
 /* One-shot forms, kept for callers holding their own coefficients. */

@@ -6,7 +6,9 @@
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 
+#include <limits.h>
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 
 struct nl_subdiv_plan {
@@ -330,4 +332,104 @@ int nl_subdiv_synth_periodic(const nl_subdiv_coeffs *c, const nl_model *m, uint6
         st = execute_periodic(p, seed, f);
     nl_subdiv_plan_free(p);
     return st;
+}
+
+/* The slab field f for a slab from s0 (nl_subdiv_plan_execute_slab). */
+static int check_slab(const nl_subdiv_plan *p, size_t s0, const nl_field *f)
+{
+    const int s = p->dim - 1;
+    if (f->dim != p->dim)
+        return NL_ERROR(NL_EINVAL, "subdivision: a %dD plan cannot fill a %dD slab", p->dim, f->dim);
+    if (p->dim == 2 && f->n[0] != p->n[0])
+        return NL_ERROR(NL_EINVAL, "slab: expected rows of %zu samples, as the plan's, got %zu", p->n[0], f->n[0]);
+    if (f->n[s] < 1 || s0 > p->n[s] || f->n[s] > p->n[s] - s0)
+        return NL_ERROR(NL_EINVAL, "slab: %zu %s from %zu leave the plan's %zu; expected at least one, within it",
+                        f->n[s], p->dim == 2 ? "rows" : "samples", s0, p->n[s]);
+    return NL_OK;
+}
+
+int nl_subdiv_plan_execute_slab(const nl_subdiv_plan *p, uint64_t seed, size_t s0, nl_field *f)
+{
+    double h[2] = {p->c->spacing0, p->c->spacing0};
+    nl_field *coarse;
+    int st;
+    if (p->image)
+        return NL_ERROR(NL_EINVAL, "subdivision: a plan for a given coarse level executes slabs with "
+                        "nl_subdiv_plan_execute_image_slab");
+    if ((st = check_slab(p, s0, f)))
+        return st;
+    if (p->nonperiodic) {
+        const long origin[2] = {p->dim == 2 ? 0 : (long)s0, (long)s0};
+        return nl_subdiv_synth_window(p->c, seed, origin, f);
+    }
+    if (!(coarse = nl_field_alloc(p->dim, p->cn, h, &st)))
+        return st;
+    st = coarse_level(p, seed, coarse);
+    if (!st)
+        st = nl_subdiv_refine_slab(p->c, coarse, seed, p->allow_not_pd, s0, f);
+    nl_field_free(coarse);
+    return st;
+}
+
+int nl_subdiv_plan_execute_image_slab(const nl_subdiv_plan *p, const nl_field *image, uint64_t seed, size_t s0,
+                                      nl_field *f)
+{
+    const int dim = p->dim;
+    const size_t step = (size_t)1 << p->c->levels, ns = f->n[dim - 1];
+    double mean;
+    nl_field *work;
+    int st;
+    if (p->nonperiodic || !p->image)
+        return NL_ERROR(NL_EINVAL, "subdivision: a seed-image slab needs a plan made with the image option");
+    if ((st = check_slab(p, s0, f)))
+        return st;
+    if (image->dim != dim)
+        return NL_ERROR(NL_EINVAL, "subdivision: a %dD seed image for a %dD plan", image->dim, dim);
+    if (image->n[0] * step != p->n[0] || (dim == 2 && image->n[1] * step != p->n[1]))
+        return NL_ERROR(NL_EINVAL, "subdivision: the seed image (%zu%s%.0zu) is not the plan's grid over 2^%d",
+                        image->n[0], dim == 2 ? "x" : "", dim == 2 ? image->n[1] : (size_t)0, p->c->levels);
+    /* as nl_subdiv_plan_execute_image: the zero-mean image refined, the
+     * mean added back, the image's own samples restored */
+    mean = nl_field_mean(image);
+    if (!(work = nl_field_alloc(image->dim, image->n, image->h, &st)))
+        return st;
+    for (size_t i = 0; i < image->count; i++)
+        work->data[i] = image->data[i] - mean;
+    st = nl_subdiv_refine_slab(p->c, work, seed, p->allow_not_pd, s0, f);
+    nl_field_free(work);
+    if (st)
+        return st;
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] += mean;
+    for (size_t j = 0; j < image->n[1]; j++)
+        for (size_t i = 0; i < image->n[0]; i++) {
+            size_t y = dim == 2 ? j * step : i * step;
+            if (y >= s0 && y < s0 + ns)
+                f->data[dim == 2 ? (y - s0) * f->n[0] + i * step : y - s0] = image->data[j * image->n[0] + i];
+        }
+    return NL_OK;
+}
+
+/* The coarse level's bytes: its field, and the scratch of its FFT (an odd
+ * first axis: the half grid; even: a column and 8-row blocks per thread,
+ * synth/fft.c), or the image's zero-mean copy. */
+static size_t coarse_bytes(const nl_subdiv_plan *p)
+{
+    const size_t count = p->cn[0] * p->cn[1], rows = p->cn[1], h0 = p->cn[0] / 2 + 1, z = 2 * sizeof(double);
+    size_t b = count * sizeof(double);
+    if (p->coarse)
+        b += p->cn[0] % 2 ? rows * h0 * z : rows * z + (size_t)omp_get_max_threads() * 8 * h0 * z;
+    return b;
+}
+
+size_t nl_subdiv_plan_slab_bytes(const nl_subdiv_plan *p, size_t ns)
+{
+    size_t levels, coarse;
+    if (ns > (size_t)LONG_MAX / 2)
+        return SIZE_MAX;
+    levels = nl_subdiv_slab_bytes(p->c, (long)p->n[0], (long)ns, p->nonperiodic);
+    if (p->nonperiodic)
+        return levels;
+    coarse = coarse_bytes(p);
+    return levels > SIZE_MAX - coarse ? SIZE_MAX : levels + coarse;
 }

@@ -10,17 +10,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Samples of one level at integer indices x0..x0+nx-1, y0..y0+ny-1. */
-typedef struct {
-    double *v;     /* row-major, x fastest */
-    long x0, y0;   /* index of v[0] */
-    long nx, ny;   /* extent (ny = 1 in 1D) */
-    long stride;   /* between rows of v (nx, or more for a view into a padded level) */
-} grid;
+typedef nl_subdiv_grid grid;
 
-static long fdiv2(long a) { return a >= 0 ? a / 2 : -((-a + 1) / 2); }
-
-static int grid_alloc(grid *g, long x0, long y0, long nx, long ny)
+int nl_subdiv_grid_alloc(grid *g, long x0, long y0, long nx, long ny)
 {
     size_t n[2] = {(size_t)nx, (size_t)ny};
     int st = nl_size_check(2, n, sizeof(double), 1, NULL);
@@ -153,12 +145,12 @@ static void row_any(const row_job *r, long I0, long I1)
  * same arithmetic as the general loop in refine() (coefficients in the
  * same order), with the class fixed by the parities of I and J and the
  * source rows looked up once. */
-static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, long J, uint64_t seed, unsigned lv,
-                          const disp *dp)
+static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, long J, long Jr, uint64_t seed,
+                          unsigned lv, const disp *dp)
 {
     const long j = fdiv2(J);
     row_job r;
-    r.N = l->N, r.J = J, r.oy = J - 2 * j, r.seed = seed, r.lv = lv;
+    r.N = l->N, r.J = Jr, r.oy = J - 2 * j, r.seed = seed, r.lv = lv;
     r.out = dst->v + (J - dst->y0) * dst->stride - dst->x0;
     r.odd = &l->cls[r.oy ? 0 : 1], r.even = &l->cls[2];
     r.sd_odd = sqrt(r.odd->variance), r.sd_even = sqrt(r.even->variance);
@@ -183,21 +175,25 @@ static void refine_row_2d(const nl_subdiv_level *l, const grid *src, grid *dst, 
 
 /* Fill dst (range set) at level `lv` + 1 from src at level lv.  Point I of
  * the finer grid is old point I/2 when I is even, else the midpoint of old
- * points (I-1)/2 and (I+1)/2.  Eq. (3) in 1D, eq. (9) in 2D. */
+ * points (I-1)/2 and (I+1)/2.  Eq. (3) in 1D, eq. (9) in 2D.  The random
+ * numbers are drawn at (I mod rp[0], J mod rp[1]) (rp[a] = 0: I, J): a
+ * periodic level's canonical point (Jr below), while the stencil reads src
+ * around the unwrapped (I, J). */
 static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv,
-                   const disp *dp)
+                   const disp *dp, const long *rp)
 {
     const int N = l->N, w = 2 * N;
     const int standard = dim == 2 && !l->cls[0].nalt && !l->cls[1].nalt && !l->cls[2].nalt;
 #pragma omp parallel for schedule(static) if (dst->nx * dst->ny > 65536)
     for (long J = dst->y0; J < dst->y0 + dst->ny; J++) {
         double *row = dst->v + (J - dst->y0) * dst->stride;
+        const long Jr = nl_subdiv_wrap(J, rp[1]);
         if (standard) {
-            refine_row_2d(l, src, dst, J, seed, lv, dp);
+            refine_row_2d(l, src, dst, J, Jr, seed, lv, dp);
             continue;
         }
         for (long I = dst->x0; I < dst->x0 + dst->nx; I++) {
-            long i = fdiv2(I), j = fdiv2(J);
+            long i = fdiv2(I), j = fdiv2(J), Ir = nl_subdiv_wrap(I, rp[0]);
             int ox = (int)(I - 2 * i), oy = dim == 2 ? (int)(J - 2 * j) : 0;
             const nl_subdiv_class *cl;
             double s = 0;
@@ -215,12 +211,12 @@ static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst
                 if (cl->nalt) {
                     /* a random quadrilateral neighbourhood */
                     size_t n = cl->n, alt = (size_t)(nl_rng_uniform(seed, NL_SUBDIV_STREAM + 64 + lv,
-                                                                    rng_index(dim, I, J)) * cl->nalt);
+                                                                    rng_index(dim, Ir, Jr)) * cl->nalt);
                     const int *ofx = cl->offx + alt * n, *ofy = cl->offy + alt * n;
                     const double *a = cl->alt_a + alt * n;
                     for (size_t p = 0; p < n; p++)
                         s += a[p] * at(src, i + ofx[p], j + ofy[p]);
-                    s += sqrt(cl->alt_var[alt]) * nl_rng_gauss(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
+                    s += sqrt(cl->alt_var[alt]) * nl_rng_gauss(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(dim, Ir, Jr));
                     row[I - dst->x0] = s;
                     continue;
                 }
@@ -231,10 +227,36 @@ static void refine(int dim, const nl_subdiv_level *l, const grid *src, grid *dst
             if (dp->v)
                 s += disp_at(dp, c, i, dim == 2 ? j : 0);
             else
-                s += sqrt(cl->variance) * nl_rng_gauss(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(dim, I, J));
+                s += sqrt(cl->variance) * nl_rng_gauss(seed, NL_SUBDIV_STREAM + lv + 1, rng_index(dim, Ir, Jr));
             row[I - dst->x0] = s;
         }
     }
+}
+
+int nl_subdiv_refine_level(int dim, const nl_subdiv_level *l, const grid *src, grid *dst, uint64_t seed, unsigned lv,
+                           const long *per)
+{
+    const long none[2] = {0, 0}, rp[2] = {per ? 2 * per[0] : 0, per && dim == 2 ? 2 * per[1] : 0};
+    disp dp = {NULL, 0, 0, 0, 0};
+    int st = disp_alloc(dim, l, dst, per, seed, lv, &dp);
+    if (st)
+        return st;
+    refine(dim, l, src, dst, seed, lv, &dp, per ? rp : none);
+    nl_free(dp.v);
+    return NL_OK;
+}
+
+size_t nl_subdiv_disp_bytes(int dim, const nl_subdiv_level *l, const grid *dst)
+{
+    const long M = l->taps, yM = dim == 2 ? M : 0;
+    long nx, ny;
+    if (!l->filt)
+        return 0;
+    nx = fdiv2(dst->x0 + dst->nx - 1) - fdiv2(dst->x0) + 1;
+    ny = dim == 2 ? fdiv2(dst->y0 + dst->ny - 1) - fdiv2(dst->y0) + 1 : 1;
+    /* the table, and disp_fill's white numbers over the cells +- M */
+    return (size_t)l->nclass * sizeof(double) *
+           ((size_t)nx * (size_t)ny + (size_t)(nx + 2 * M) * (size_t)(ny + 2 * yM));
 }
 
 int nl_subdiv_check_levels(const nl_subdiv_coeffs *c, int allow_not_pd)
@@ -252,12 +274,23 @@ int nl_subdiv_check_levels(const nl_subdiv_coeffs *c, int allow_not_pd)
     return NL_OK;
 }
 
+int nl_subdiv_check_periodic_levels(const nl_subdiv_coeffs *c, long cx, long cy)
+{
+    for (int k = 0; k < c->levels; k++) {
+        long nk = c->dim == 2 && cy < cx ? cy << k : cx << k;
+        if (nk < 2L * c->level[k].reach)
+            return NL_ERROR(NL_EINVAL, "size: level %d has %ld samples per axis, fewer than its neighbourhood "
+                            "of %d; use fewer --levels or a larger --size", k, nk, 2 * c->level[k].reach);
+    }
+    return NL_OK;
+}
+
 /* Copy a periodic level (indices 0..n-1) into a grid padded by `pad` wrapped
  * samples on each side. */
 static int pad_periodic(int dim, const double *v, long nx, long ny, long pad, grid *g)
 {
     long py = dim == 2 ? pad : 0;
-    int st = grid_alloc(g, -pad, -py, nx + 2 * pad, ny + 2 * py);
+    int st = nl_subdiv_grid_alloc(g, -pad, -py, nx + 2 * pad, ny + 2 * py);
     if (st)
         return st;
 #pragma omp parallel for schedule(static) if (nx * ny > 65536)
@@ -306,13 +339,7 @@ int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse,
                         "got %ld%s%.0ld", cx << c->levels, dim == 2 ? "x" : "", dim == 2 ? cy << c->levels : 0L,
                         cx, dim == 2 ? "x" : "", dim == 2 ? cy : 0L, c->levels, nx, dim == 2 ? "x" : "",
                         dim == 2 ? ny : 0L);
-    for (int k = 0; k < c->levels; k++) {
-        long nk = dim == 2 && cy < cx ? cy << k : cx << k;
-        if (nk < 2L * c->level[k].reach)
-            return NL_ERROR(NL_EINVAL, "size: level %d has %ld samples per axis, fewer than its neighbourhood "
-                            "of %d; use fewer --levels or a larger --size", k, nk, 2 * c->level[k].reach);
-    }
-    if ((st = nl_subdiv_check_levels(c, allow_not_pd)))
+    if ((st = nl_subdiv_check_periodic_levels(c, cx, cy)) || (st = nl_subdiv_check_levels(c, allow_not_pd)))
         return st;
     /* src: the current level, padded for its refinement (the coarse field
      * copied; then each refined level, refined straight into the interior
@@ -323,14 +350,11 @@ int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse,
     for (int k = 0; k < c->levels && !st; k++) {
         grid next = {NULL, 0, 0, 0, 0, 0}, dst = {f->data, 0, 0, 2 * cx, dim == 2 ? 2 * cy : 1, 2 * cx};
         long per[2] = {cx, cy}, pad = k + 1 < c->levels ? c->level[k + 1].reach : 0, py = dim == 2 ? pad : 0;
-        disp dp = {NULL, 0, 0, 0, 0};
-        if (k + 1 < c->levels && !(st = grid_alloc(&next, -pad, -py, 2 * cx + 2 * pad, dst.ny + 2 * py)))
+        if (k + 1 < c->levels && !(st = nl_subdiv_grid_alloc(&next, -pad, -py, 2 * cx + 2 * pad, dst.ny + 2 * py)))
             dst.v = next.v + py * next.nx + pad, dst.stride = next.nx;
-        if (!st && (st = disp_alloc(dim, &c->level[k], &dst, per, seed, (unsigned)k, &dp)))
+        if (!st && (st = nl_subdiv_refine_level(dim, &c->level[k], &src, &dst, seed, (unsigned)k, per)))
             nl_free(next.v);
         if (!st) {
-            refine(dim, &c->level[k], &src, &dst, seed, (unsigned)k, &dp);
-            nl_free(dp.v);
             nl_free(src.v);
             src = next;
             cx *= 2;
@@ -379,20 +403,17 @@ int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long 
         ry[k][0] = dim == 2 ? fdiv2(ry[k + 1][0]) - N : 0, ry[k][1] = dim == 2 ? fdiv2(ry[k + 1][1]) + N : 0;
     }
     /* level 0: independent samples of variance R(0) */
-    st = grid_alloc(&g, rx[0][0], ry[0][0], rx[0][1] - rx[0][0] + 1, ry[0][1] - ry[0][0] + 1);
+    st = nl_subdiv_grid_alloc(&g, rx[0][0], ry[0][0], rx[0][1] - rx[0][0] + 1, ry[0][1] - ry[0][0] + 1);
     for (long j = 0; !st && j < g.ny; j++)
         for (long i = 0; i < g.nx; i++)
             g.v[j * g.nx + i] = sqrt(c->r0) * nl_rng_gauss(seed, NL_SUBDIV_STREAM, rng_index(dim, g.x0 + i, g.y0 + j));
     for (int k = 0; k < L && !st; k++) {
         grid dst;
-        st = grid_alloc(&dst, rx[k + 1][0], ry[k + 1][0], rx[k + 1][1] - rx[k + 1][0] + 1,
-                        ry[k + 1][1] - ry[k + 1][0] + 1);
-        disp dp = {NULL, 0, 0, 0, 0};
-        if (!st && (st = disp_alloc(dim, &c->level[k], &dst, NULL, seed, (unsigned)k, &dp)))
+        st = nl_subdiv_grid_alloc(&dst, rx[k + 1][0], ry[k + 1][0], rx[k + 1][1] - rx[k + 1][0] + 1,
+                                  ry[k + 1][1] - ry[k + 1][0] + 1);
+        if (!st && (st = nl_subdiv_refine_level(dim, &c->level[k], &g, &dst, seed, (unsigned)k, NULL)))
             nl_free(dst.v);
         if (!st) {
-            refine(dim, &c->level[k], &g, &dst, seed, (unsigned)k, &dp);
-            nl_free(dp.v);
             nl_free(g.v);
             g = dst;
         }
