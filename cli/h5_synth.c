@@ -155,7 +155,9 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run)
         st = NL_ERROR(NL_EINVAL, "synth %s %s: %s%s; %s not written", job->method, job->m ? nl_model_spec(job->m) : "",
                       nl_errmsg(), f32 ? " (or beyond float32: lower the variance)" : "", out);
     check_all(st);
+    /* the attributes are written collectively: rank 0's, on every process */
     cli_synth_fill_meta(job, f, &res, &meta);
+    MPI_Bcast(&meta, sizeof meta, MPI_BYTE, 0, MPI_COMM_WORLD);
     cli_check(nl_mpi_h5_write(tmp, MPI_COMM_WORLD, job->dim, job->n, job->s0, job->ns, job->ns ? f->data : NULL,
                               &meta, cli_h5_double, P));
     if (rank == 0)

@@ -135,12 +135,39 @@ static void subdiv_describe(const cli_synth_job *job, const nl_subdiv_plan *p, c
         json_object_set_new(r->report, "coarse_correlation", json_real(info.coarse_correlation));
 }
 
+/* The window origin of a slab: the job's origin moved s0 along the slowest axis. */
+static void slab_origin(const cli_synth_job *job, long *o)
+{
+    o[0] = job->origin[0], o[1] = job->origin[1];
+    o[job->dim - 1] += (long)job->s0;
+}
+
+/* Distributed: this process's rows s0 .. s0 + ns - 1 (none when ns = 0),
+ * the same bits as the whole field's; the status agreed by every process. */
+static int subdiv_slab(const cli_synth_job *job, const nl_subdiv_plan *p, const nl_field *img, nl_field *f)
+{
+    long o[2];
+    int st = NL_OK;
+    slab_origin(job, o);
+    if (!job->ns)
+        st = NL_OK;
+    else if (job->nonperiodic)
+        st = nl_subdiv_synth_window(nl_subdiv_plan_coeffs(p), job->seed, o, f);
+    else if (img)
+        st = nl_subdiv_plan_execute_image_slab(p, img, job->seed, job->s0, f);
+    else
+        st = nl_subdiv_plan_execute_slab(p, job->seed, job->s0, f);
+    return cli_h5->agree(st);
+}
+
 void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
 {
     nl_field *img;
     nl_subdiv_plan *p = subdiv_plan(job, &img);
     int st;
-    if (job->nonperiodic)
+    if (job->slab)
+        st = subdiv_slab(job, p, img, f);
+    else if (job->nonperiodic)
         st = nl_subdiv_plan_execute_window(p, job->seed, job->origin, f);
     else if (img)
         st = nl_subdiv_plan_execute_image(p, img, job->seed, f);
@@ -304,7 +331,16 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
     if (job->angle && (st = nl_synth_sparse_set_angle(p, job->angle)))
         cli_die_status(st);
     nl_synth_sparse_plan_info(p, &info);
-    cli_check(nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f));
+    if (job->slab) {
+        long o[2];
+        slab_origin(job, o);
+        st = !job->ns ? NL_OK
+             : job->wrap ? nl_synth_sparse_execute_slab(p, job->seed, 1, job->n, job->s0, f)
+                         : nl_synth_sparse_execute(p, job->seed, 0, o, f);
+        cli_check(cli_h5->agree(st));
+    } else {
+        cli_check(nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f));
+    }
     nl_synth_sparse_plan_free(p);
     /* expression-valued keys follow '|', as they may hold commas */
     char org[64] = "";

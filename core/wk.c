@@ -212,6 +212,46 @@ int nl_wk_check_even(const nl_model *m, int dim, const size_t *n, const double *
     return nl_model_is_reentrant(m) ? NL_OK : check_even(m, &g, freq);
 }
 
+int nl_wk_sample_rows(const nl_model *m, int dim, const size_t *n, const double *h, size_t r0, size_t r1, int freq,
+                      double *dst, size_t stride)
+{
+    nl_field g = {.dim = dim, .n = {1, 1, 1}, .h = {1, 1, 1}, .count = 1, .data = NULL};
+    size_t bad = r1;
+    int reentrant = nl_model_is_reentrant(m);
+    for (int a = 0; a < dim && a < 3; a++) {
+        g.n[a] = n[a];
+        g.h[a] = h ? h[a] : 1;
+    }
+#pragma omp parallel if (reentrant && (r1 - r0) * g.n[0] > 65536)
+    {
+        nl_gsl_enter();
+#pragma omp for schedule(dynamic, 16) nowait
+        for (size_t r = r0; r < r1; r++) {
+            size_t idx[3] = {0, r % g.n[1], r / g.n[1]};
+            for (size_t i = 0; i < g.n[0]; i++) {
+                double y;
+                idx[0] = i;
+                if (!isfinite(y = value_at(m, &g, idx, freq))) {
+#pragma omp critical
+                    if (r < bad)
+                        bad = r;
+                    break;
+                }
+                dst[(r - r0) * stride + i] = y;
+            }
+        }
+        nl_gsl_leave();
+    }
+    for (size_t i = 0; bad < r1 && i < g.n[0]; i++) {
+        size_t idx[3] = {i, bad % g.n[1], bad / g.n[1]};
+        double y;
+        if (!isfinite(y = value_at(m, &g, idx, freq)))
+            return NL_ERROR(NL_EINVAL, "%s: the model is not finite (%g) at %s index (%zu, %zu, %zu)",
+                            nl_model_spec(m), y, freq ? "frequency" : "lag", i, idx[1], idx[2]);
+    }
+    return NL_OK;
+}
+
 double nl_wk_value(const nl_model *m, int dim, const size_t *n, const double *h, const size_t *idx, int freq)
 {
     nl_field g = {.dim = dim, .n = {1, 1, 1}, .h = {1, 1, 1}, .count = 1, .data = NULL};

@@ -66,6 +66,13 @@ int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, cons
  * Thread-safe for reentrant models. */
 double nl_wk_value(const nl_model *m, int dim, const size_t *n, const double *h, const size_t *idx, int freq);
 
+/* The same for whole rows r0 .. r1 - 1 of the grid (row r = j + n1 k, all
+ * i < n[0]) into dst + (r - r0) stride.  NL_OK, or NL_EINVAL naming the
+ * first sample where the model is not finite (as the whole-grid
+ * samplers).  Models are sampled on OpenMP threads when reentrant. */
+int nl_wk_sample_rows(const nl_model *m, int dim, const size_t *n, const double *h, size_t r0, size_t r1, int freq,
+                      double *dst, size_t stride);
+
 /* The checks the whole-grid samplers make before sampling: the model's
  * dimension, and for expressions (not reentrant) evenness on the grid.
  * NL_OK or NL_EINVAL naming the problem. */

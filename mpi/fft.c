@@ -112,20 +112,8 @@ static int sample_spectrum(nl_mpi_fft_plan *p, const nl_model *m)
                                           nl_fftw_flags(p->count) | FFTW_MPI_TRANSPOSED_OUT);
     if (!fwd)
         return NL_ERROR(NL_EFAIL, "FFTW-MPI could not plan a %d-D transform", dim);
-    size_t rows = (size_t)p->ln0 * (dim == 3 ? p->n[1] : 1), stride = 2 * p->h0;
-    for (size_t q = 0; q < rows && !st; q++) {
-        size_t idx[3] = {0, dim == 3 ? q % p->n[1] : (size_t)p->l0s + q, dim == 3 ? (size_t)p->l0s + q / p->n[1] : 0};
-        for (size_t i = 0; i < p->n[0]; i++) {
-            double y;
-            idx[0] = i;
-            if (!isfinite(y = nl_wk_value(m, dim, p->n, p->h, idx, 0))) {
-                st = NL_ERROR(NL_EINVAL, "%s: the model is not finite (%g) at lag index (%zu, %zu, %zu)",
-                              nl_model_spec(m), y, idx[0], idx[1], idx[2]);
-                break;
-            }
-            x[q * stride + i] = y;
-        }
-    }
+    size_t per = dim == 3 ? p->n[1] : 1, r0 = (size_t)p->l0s * per;
+    st = nl_wk_sample_rows(m, dim, p->n, p->h, r0, r0 + (size_t)p->ln0 * per, 0, x, 2 * p->h0);
     if (!st)
         fftw_execute(fwd);
     fftw_destroy_plan(fwd);
@@ -223,39 +211,77 @@ void nl_mpi_fft_local(const nl_mpi_fft_plan *p, size_t *s0, size_t *ns)
 
 void nl_mpi_fft_plan_info(const nl_mpi_fft_plan *p, nl_synth_fft_info *info) { *info = p->info; }
 
-/* G times the amplitude at every local frequency (synth/fft.h's white
- * spectrum, drawn by global index). */
-static void fill_noise(const nl_mpi_fft_plan *p, uint64_t seed, fftw_complex *c)
+/* The Hermitian columns k0 = 0 and n0/2 (synth/fft.h): element e at
+ * frequency (i, r) holds G of its own index; make it the conjugate of its
+ * mirror's when that comes first, real (sqrt(2) Re G) when self-conjugate. */
+static void hermitian_fix(const nl_mpi_fft_plan *p, uint64_t seed, size_t e, size_t i, size_t r, fftw_complex *c)
 {
-    const size_t h0 = p->h0, n0 = p->n[0];
-#pragma omp parallel for schedule(static) if (p->nloc > 65536)
-    for (size_t e = 0; e < p->nloc; e++) {
-        size_t i, r, k, m;
-        double g[2];
-        freq_index(p, e, &i, &r);
-        k = r * h0 + i;
-        if (i == 0 || 2 * i == n0) {
-            m = mirror(p, r);
-            if (m < r) {
-                nl_rng_gauss_pair(seed, NL_STREAM_WHITE, m * h0 + i, g);
-                g[1] = -g[1];
-            } else {
-                nl_rng_gauss_pair(seed, NL_STREAM_WHITE, k, g);
-                if (m == r)
-                    g[0] *= M_SQRT2, g[1] = 0;
-            }
-        } else {
-            nl_rng_gauss_pair(seed, NL_STREAM_WHITE, k, g);
-        }
-        c[e] = (g[0] + I * g[1]) * p->amp[e];
+    size_t m = mirror(p, r);
+    double g[2];
+    if (m < r) {
+        nl_rng_gauss_pair(seed, NL_STREAM_WHITE, m * p->h0 + i, g);
+        c[e] = g[0] - I * g[1];
+    } else if (m == r) {
+        c[e] = M_SQRT2 * creal(c[e]);
     }
+}
+
+/* G times the amplitude at every local frequency (synth/fft.h's white
+ * spectrum, drawn by global index: runs of consecutive indices by the
+ * vectorised fill). */
+static int fill_noise(const nl_mpi_fft_plan *p, uint64_t seed, fftw_complex *c)
+{
+    const size_t h0 = p->h0, n0 = p->n[0], ln1 = (size_t)p->ln1, l1s = (size_t)p->l1s;
+    int fail = 0;
+    if (p->dim == 3) {
+        /* (a, k2, i): each row of i is a run */
+        size_t rows = p->nloc / h0;
+#pragma omp parallel for schedule(static) if (p->nloc > 65536)
+        for (size_t q = 0; q < rows; q++) {
+            size_t r = l1s + q / p->n[2] + p->n[1] * (q % p->n[2]);
+            nl_rng_gauss_fill(seed, NL_STREAM_WHITE, r * h0, 2 * h0, (double *)(c + q * h0));
+            hermitian_fix(p, seed, q * h0, 0, r, c);
+            if (n0 % 2 == 0)
+                hermitian_fix(p, seed, q * h0 + h0 - 1, h0 - 1, r, c);
+        }
+    } else {
+        /* (a, j): for each j the run of i = l1s .. l1s + ln1 - 1, scattered */
+        const size_t N0 = p->n[1];
+#pragma omp parallel if (p->nloc > 65536)
+        {
+            double *g = malloc(2 * (ln1 ? ln1 : 1) * sizeof *g);
+            if (!g) {
+#pragma omp atomic write
+                fail = 1;
+            }
+#pragma omp for schedule(static)
+            for (size_t j = 0; j < N0; j++) {
+                if (!g || !ln1)
+                    continue;
+                nl_rng_gauss_fill(seed, NL_STREAM_WHITE, j * h0 + l1s, 2 * ln1, g);
+                for (size_t a = 0; a < ln1; a++)
+                    c[a * N0 + j] = g[2 * a] + I * g[2 * a + 1];
+                if (l1s == 0)
+                    hermitian_fix(p, seed, j, 0, j, c);
+                if (n0 % 2 == 0 && l1s + ln1 == h0)
+                    hermitian_fix(p, seed, (ln1 - 1) * N0 + j, h0 - 1, j, c);
+            }
+            free(g);
+        }
+    }
+#pragma omp parallel for schedule(static) if (p->nloc > 65536)
+    for (size_t e = 0; e < p->nloc; e++)
+        c[e] *= p->amp[e];
+    return fail ? NL_ERROR(NL_ENOMEM, "out of memory for the white noise's rows") : NL_OK;
 }
 
 int nl_mpi_fft_execute(const nl_mpi_fft_plan *p, uint64_t seed, double *out)
 {
     const size_t rowlen = p->n[0], rows = (size_t)p->ln0 * (p->dim == 3 ? p->n[1] : 1);
     const double *x = (const double *)p->buf;
-    fill_noise(p, seed, p->buf);
+    int st = nl_mpi_agree(p->comm, fill_noise(p, seed, p->buf));
+    if (st)
+        return st;
     fftw_execute(p->inv);
     for (size_t q = 0; q < rows; q++)
         memcpy(out + q * rowlen, x + q * 2 * p->h0, rowlen * sizeof *out);
