@@ -166,7 +166,7 @@ typedef struct {
     int (*agree)(int status);
     /* synth -o OUT.h5 under a launcher: the distributed run (cli/h5_synth.c) */
     int (*synth)(struct cli_synth_job *job, const char *out,
-                 void (*run)(const struct cli_synth_job *, nl_field *, struct cli_synth_result *));
+                 void (*run)(const struct cli_synth_job *, nl_field *, struct cli_synth_result *), int json);
     /* synth -o OUT.h5 on one process: exit 2 when the field does not fit
      * NOISELAB_MEMORY_LIMIT, naming the process count that would hold it */
     void (*check_memory)(const struct cli_synth_job *job,

@@ -539,8 +539,7 @@ void cli_synth_fill_meta(const cli_synth_job *job, const nl_field *f, const cli_
                  job->origin[1]);
 }
 
-static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res,
-                       const cli_synth_cond *cond)
+json_t *cli_synth_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res)
 {
     json_t *o = json_pack("{s:s,s:s,s:I,s:s,s:s}", "model", meta->model, "method", meta->method, "seed",
                           (json_int_t)job->seed, "size", meta->size, "spacing", meta->spacing);
@@ -557,6 +556,13 @@ static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_
     json_object_set_new(o, "flags", fl);
     if (res->report)
         json_object_update(o, res->report);
+    return o;
+}
+
+static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res,
+                       const cli_synth_cond *cond)
+{
+    json_t *o = cli_synth_json(job, meta, res);
     cli_synth_cond_report(cond, o);
     cli_json_print(o);
 }
@@ -622,11 +628,11 @@ int cli_cmd_synth(int argc, char **argv)
         parse_origin(g.origin, job.origin);
     check_model_given(&job, &g);
     check_outputs_and_model(&job, &g);
-    if (cli_is_h5(g.out) && (g.cond.data || g.cond.K > 1 || g.preview || g.json) && cli_h5 && cli_h5->launched)
-        cli_die(2, "synth: --condition, --realizations, --preview and --json run on one process; without mpirun, "
+    if (cli_is_h5(g.out) && (g.cond.data || g.cond.K > 1 || g.preview) && cli_h5 && cli_h5->launched)
+        cli_die(2, "synth: --condition, --realizations and --preview run on one process; without mpirun, "
                 "or with an .exr output");
     if (cli_h5 && cli_h5->launched && cli_is_h5(g.out))
-        return cli_h5->synth(&job, g.out, run);
+        return cli_h5->synth(&job, g.out, run, g.json);
     if (cli_h5 && cli_h5->size > 1)
         cli_die(2, "-o: a run on %d processes writes one HDF5 file; expected OUT.h5, got \"%s\"", cli_h5->size,
                 g.out);

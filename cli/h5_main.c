@@ -15,7 +15,7 @@
 
 static cli_h5_hooks hooks;
 
-int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run);
+int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int json);
 void cli_h5_check_memory(const cli_synth_job *job, cli_synth_run_fn run);
 
 static int h5_write(const char *path, const nl_field *f, const nl_meta *meta, int dbl)

@@ -19,6 +19,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 /* Stop every process together: agreed status, rank 0 tells (h5_main.c
@@ -120,8 +121,26 @@ static nl_field *run_fft(cli_synth_job *job, cli_synth_result *res)
     return f;
 }
 
-int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run)
+/* --json: what synth prints, and the processes, the slowest process's
+ * seconds for synthesis and for writing, and the largest peak RSS. */
+static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res, int P,
+                       const double *t)
 {
+    struct rusage ru;
+    double loc[3] = {t[0], t[1], 0}, max[3];
+    getrusage(RUSAGE_SELF, &ru);
+    loc[2] = (double)ru.ru_maxrss / 1024;
+    MPI_Reduce(loc, max, 3, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+    json_t *o = cli_synth_json(job, meta, res);
+    json_object_set_new(o, "processes", json_integer(P));
+    json_object_set_new(o, "seconds", json_pack("{s:f,s:f}", "synthesis", max[0], "write", max[1]));
+    json_object_set_new(o, "peak_rss_mib", json_real(max[2]));
+    cli_json_print(o);
+}
+
+int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int json)
+{
+    double t[3];
     int P, rank, f32 = !cli_h5_double;
     size_t k = 0;
     cli_synth_result res;
@@ -139,6 +158,8 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run)
     check_memory_on(job, P);
     tmp = begin_output(out, rank);
     memset(&res, 0, sizeof res);
+    MPI_Barrier(MPI_COMM_WORLD);
+    t[0] = MPI_Wtime();
     job->slab = 1;
     if (!strcmp(job->method, "fft") || !strcmp(job->method, "circulant")) {
         f = run_fft(job, &res);
@@ -149,6 +170,7 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run)
         f = cli_field_alloc(job->dim, n, job->h);
         run(job, f, &res);
     }
+    t[1] = MPI_Wtime();
     /* nothing is written unless every sample is finite (and fits float32) */
     int st = job->ns && nl_field_check_finite(f, f32 ? FLT_MAX : INFINITY, &k) ? NL_EINVAL : NL_OK;
     if (st)
@@ -160,8 +182,13 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run)
     MPI_Bcast(&meta, sizeof meta, MPI_BYTE, 0, MPI_COMM_WORLD);
     cli_check(nl_mpi_h5_write(tmp, MPI_COMM_WORLD, job->dim, job->n, job->s0, job->ns, job->ns ? f->data : NULL,
                               &meta, cli_h5_double, P));
+    t[2] = MPI_Wtime();
     if (rank == 0)
         cli_out_commit(out);
+    if (json) {
+        double d[2] = {t[1] - t[0], t[2] - t[1]};
+        print_json(job, &meta, &res, P, d);
+    }
     json_decref(res.report);
     nl_field_free(f);
     nl_model_free(job->m);

@@ -54,6 +54,9 @@ typedef struct cli_synth_result {
 /* A method's run: plan, fill f (or, with job->slab, its slab), describe. */
 typedef void (*cli_synth_run_fn)(const cli_synth_job *, nl_field *, cli_synth_result *);
 
+/* What synth --json prints of a field (a new object; cmd_synth.c). */
+json_t *cli_synth_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res);
+
 /* The provenance of a synthesised field (cmd_synth.c). */
 void cli_synth_fill_meta(const cli_synth_job *job, const nl_field *f, const cli_synth_result *res, nl_meta *meta);
 
