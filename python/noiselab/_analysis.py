@@ -446,11 +446,11 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
     if len(fix) > 8:
         raise Error("fix: expected at most 8 parameters, got %d" % len(fix))
     o = ffi.new("nl_fit_options *")
-    keep = [cstr(model, "model")]
+    keep = [ffi.new("char[]", cstr(model, "model"))]
     o.family = keep[0]
     o.nugget = 1 if nugget else 0
     for i, (k, val) in enumerate(fix.items()):
-        keep.append(cstr(k, "fix"))
+        keep.append(ffi.new("char[]", cstr(k, "fix")))
         o.fix_name[i] = keep[-1]
         o.fix_value[i] = float(val)
     o.nfix = len(fix)
