@@ -74,7 +74,9 @@ def write(path, array, spacing=1.0, **provenance):
     if not exr and f.dim != 1:
         raise Error('write: TSV holds 1D fields; use .exr for a %dD field, got "%s"' % (f.dim, p))
     if exr:
-        check(lib.nl_field_check_finite(f, _FLT_MAX, ffi.NULL))
+        if lib.nl_field_check_finite(f, _FLT_MAX, ffi.NULL):
+            raise Error("write: %s of float32 EXR; %s not written"
+                        % (ffi.string(lib.nl_errmsg()).decode("utf-8", "replace"), p))
         check(lib.nl_exr_write(cstr(p, "write: path"), f, m))
     else:
         check(lib.nl_tsv_write_field(cstr(p, "write: path"), f, m, ffi.NULL, ffi.NULL))
