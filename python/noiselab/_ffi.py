@@ -25,9 +25,14 @@ typedef struct {
     size_t count;
     double *data;
 } nl_field;
+int nl_size_check(int dim, const size_t *n, size_t elem, size_t copies, size_t *count);
 nl_field *nl_field_alloc(int dim, const size_t *n, const double *h, int *status);
 void nl_field_free(nl_field *f);
 int nl_field_check_finite(const nl_field *f, double limit, size_t *first);
+
+/* core/mem.h */
+void *nl_alloc(size_t bytes);
+void nl_free(void *p);
 
 /* core/io.h */
 typedef struct {
@@ -398,11 +403,20 @@ def _candidates():
         yield found
 
 
+_keep = []
+
+
 def _load():
     errors = []
     for path in _candidates():
         try:
-            return ffi.dlopen(path), path
+            lib = ffi.dlopen(path)
+            # Never unload: cffi dlcloses the library when `lib` is collected
+            # at interpreter exit, while OpenMP's idle worker threads (FFTW's,
+            # libgomp) may still run its code: a crash at exit.  A ctypes
+            # handle, never closed, keeps it and its dependencies mapped.
+            _keep.append(ctypes.CDLL(path))
+            return lib, path
         except OSError as e:
             errors.append("%s (%s)" % (path, e))
     raise ImportError("noiselab: cannot load libnoiselab: tried " + "; ".join(errors) +
@@ -448,30 +462,52 @@ def cstr(s, what):
 
 # -- fields ----------------------------------------------------------------
 
-def owned_field(f):
+def owned_field(f, free=None):
     """A numpy array over the samples of the library-owned field f (from
-    nl_field_alloc or a reader): no copy; the field is freed when the last
-    view of it goes.  Shape (n0,), (n1, n0) or (n2, n1, n0): numpy's axis
-    order, x (n0, fastest in memory) last."""
+    nl_field_alloc or a reader; free: how to release it, nl_field_free by
+    default): no copy; the field is freed when the last view of it goes.
+    Shape (n0,), (n1, n0) or (n2, n1, n0): numpy's axis order, x (n0, fastest
+    in memory) last."""
     shape = tuple(int(f.n[a]) for a in reversed(range(f.dim)))
     nbytes = int(f.count) * 8
+    free = free or lib.nl_field_free
     # the gc'd pointer owns the field; the buffer keeps the pointer alive
-    data = ffi.gc(f.data, lambda _p, f=f: lib.nl_field_free(f), size=nbytes)
-    arr = np.frombuffer(ffi.buffer(data, nbytes), dtype=np.float64).reshape(shape)
-    return arr
+    data = ffi.gc(f.data, lambda _p, f=f: free(f), size=nbytes)
+    return np.frombuffer(ffi.buffer(data, nbytes), dtype=np.float64).reshape(shape)
 
 
-def alloc_field(shape, spacing):
-    """A new zeroed library field for a numpy shape and spacing (numpy axis
-    order).  Returns the nl_field* (not yet owned by anything)."""
+def _free_data(f):
+    lib.nl_free(f.data)
+
+
+def alloc_field(shape, spacing, zero=True):
+    """A new library field for a numpy shape and spacing (numpy axis order):
+    nl_field_alloc's (zeroed; release with nl_field_free), or with
+    zero=False a field struct of Python's over nl_alloc'ed samples left
+    unset, for outputs the library overwrites (release with
+    owned_field(f, free_data) or _free_data).  Returns the nl_field *."""
     dim = len(shape)
     n = ffi.new("size_t[3]", [int(s) for s in reversed(shape)] + [1] * (3 - dim))
     h = ffi.new("double[3]", [float(s) for s in reversed(spacing)] + [1.0] * (3 - dim))
     st = ffi.new("int *")
-    f = lib.nl_field_alloc(dim, n, h, st)
-    if f == ffi.NULL:
-        check(st[0])
+    if zero:
+        f = lib.nl_field_alloc(dim, n, h, st)
+        if f == ffi.NULL:
+            check(st[0])
+        return f
+    count = ffi.new("size_t *")
+    check(lib.nl_size_check(dim, n, 8, 1, count))
+    f = ffi.new("nl_field *")
+    f.dim, f.count = dim, count[0]
+    for a in range(3):
+        f.n[a], f.h[a] = n[a], h[a]
+    f.data = ffi.cast("double *", lib.nl_alloc(count[0] * 8))
+    if f.data == ffi.NULL:
+        raise Error("out of memory for %d samples" % count[0], 6)
     return f
+
+
+free_data = _free_data
 
 
 class FieldView:

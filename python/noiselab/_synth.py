@@ -4,7 +4,7 @@ import threading
 
 import numpy as np
 
-from ._ffi import (Error, Model, alloc_field, check, cstr, ffi, grid_args, lib, owned_field, planner,
+from ._ffi import (Error, Model, alloc_field, check, cstr, ffi, free_data, grid_args, lib, owned_field, planner,
                    size_tuple, spacing_tuple)
 
 METHODS = ("fft", "subdiv", "midpoint", "circulant", "cholesky", "faulting", "sparse", "lattice")
@@ -332,24 +332,48 @@ class Plan:
 
     # -- execution --------------------------------------------------------
 
-    def __call__(self, seed=0):
+    def __call__(self, seed=0, out=None):
         """The field for `seed` (an integer 0 .. 2^64 - 1): a new float64
         array of shape ``self.shape`` (numpy order: x, the fastest axis in
-        memory, last), over the library's memory."""
+        memory, last), over memory the library allocated for it.  With
+        ``out=A`` the field is written into A instead and A is returned: A a
+        writable C-ordered float64 array of the plan's shape whose data is
+        64-byte aligned (an array returned by a plan is), e.g. to refill one
+        array in a loop without allocating."""
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= seed < 2 ** 64:
             raise Error("seed: expected an integer from 0 to 2^64 - 1, got %r" % (seed,))
-        f = alloc_field(self.shape, self.spacing)
+        if out is not None:
+            return self._into(int(seed), out)
+        # every method writes every sample: no zeroing needed (core/mem.h's nl_alloc)
+        f = alloc_field(self.shape, self.spacing, zero=False)
         try:
-            if self._lock is None:
-                st = self._exec(int(seed), f)
-            else:
-                with self._lock:
-                    st = self._exec(int(seed), f)
-            check(st)
+            self._run(int(seed), f)
         except BaseException:
-            lib.nl_field_free(f)
+            free_data(f)
             raise
-        return owned_field(f)
+        return owned_field(f, free_data)
+
+    def _run(self, seed, f):
+        if self._lock is None:
+            st = self._exec(seed, f)
+        else:
+            with self._lock:
+                st = self._exec(seed, f)
+        check(st)
+
+    def _into(self, seed, out):
+        if not (isinstance(out, np.ndarray) and out.dtype == np.float64 and out.shape == self.shape
+                and out.flags.c_contiguous and out.flags.writeable and out.ctypes.data % 64 == 0):
+            raise Error("out: expected a writable C-ordered float64 array of shape %s with 64-byte aligned data "
+                        "(e.g. one the plan returned)" % (self.shape,))
+        f = ffi.new("nl_field *")
+        dim = len(self.shape)
+        f.dim, f.count = dim, out.size
+        for a in range(3):
+            f.n[a], f.h[a] = self._n[a], self._h[a]
+        f.data = ffi.cast("double *", ffi.from_buffer(out, require_writable=True))
+        self._run(seed, f)
+        return out
 
     def provenance(self, seed):
         """What `noiselab synth` records with the field of `seed`, as

@@ -36,3 +36,18 @@ def test_one_shot_calls_across_threads():
     for a, b in zip(serial, parallel):
         for x, y in zip(a, b):
             assert np.array_equal(x, y)
+
+
+def test_out_refills_an_array():
+    plan = noiselab.Plan("fft", acf="markov:scale=4", size=(64, 80))
+    a = plan(1)
+    b = plan(2, out=a)
+    assert b is a and np.array_equal(a, plan(2))
+    with pytest.raises(noiselab.Error):
+        plan(3, out=np.zeros((80, 64)))
+    with pytest.raises(noiselab.Error):
+        plan(3, out=a[:, ::2])
+    c = plan(5)
+    c.setflags(write=False)
+    with pytest.raises(noiselab.Error):
+        plan(3, out=c)
