@@ -57,6 +57,7 @@ def test_synth_equals_cli(cli, tmp_path, method, kind, model, size, extra, opts)
     plan = noiselab.Plan(method, size=size, **kw)
     f = plan(seed)
     assert f.shape == size and f.dtype == np.float64 and f.flags["C_CONTIGUOUS"]
+    assert not f.flags["OWNDATA"] and f.base.base is not None  # a view over the library's memory, no copy
     ref, meta = noiselab.read(exr, meta=True)
     assert ref.shape == size
     # (1) every sample, at the CLI's float32 precision
