@@ -7,12 +7,15 @@ tests do.  The variable is read by the library at its first plan, after
 this module runs."""
 import os
 import subprocess
+import sys
 
 import pytest
 
 os.environ["NOISELAB_FFTW"] = "estimate"
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+# the package of this tree, whatever else is installed
+sys.path.insert(0, os.path.join(TOP, "python"))
 
 
 def cli_path():
