@@ -94,11 +94,11 @@ class Plan:
 
     Threads: the plan may be called from several Python threads at once.
     cffi releases the GIL around each C call, so the calls run in parallel
-    for fft, circulant, subdiv (the library's executes only read the plan);
-    cholesky's plan keeps its workspace, so its calls take a lock of the
-    plan's; sparse with a kernel expression and lattice take the global
-    library lock.  Making a plan takes the global lock (FFTW's planner and
-    libmatheval are not thread-safe).
+    (the library's executes only read the plan), except cholesky's, whose
+    plan keeps its workspace (its calls take a lock of the plan's), and
+    sparse's with a kernel expression (libmatheval: the package's lock).
+    Making a plan takes the package's lock (FFTW's planner and libmatheval
+    are not thread-safe).
 
     Attributes: ``method`` (the method string the CLI records, e.g.
     "circulant:embedding=128x128x1"), ``model`` (the spec), ``flags`` (e.g.
@@ -327,7 +327,6 @@ class Plan:
         self.method = "lattice:cell=%.17g,octaves=%d" % (c0, O)
         self.info = dict(octaves=[dict(cell=self._p.cell[o], weight=self._p.weight[o], peak=self._p.peak[o],
                                        leakage=self._p.leakage[o]) for o in range(self._p.octaves)])
-        self._lock = planner
         self._exec = lambda seed, f: lib.nl_synth_lattice_execute(self._p, seed, f)
 
     # -- execution --------------------------------------------------------

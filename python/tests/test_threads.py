@@ -12,9 +12,11 @@ import noiselab
 
 
 @pytest.mark.parametrize("method,size", [("fft", (128, 96)), ("circulant", (40, 40)), ("cholesky", (32, 32)),
-                                         ("subdiv", (64, 64)), ("sparse", (48, 48))])
+                                         ("subdiv", (64, 64)), ("sparse", (48, 48)), ("midpoint", (64, 64)),
+                                         ("lattice", (64, 64)), ("faulting", (64, 64))])
 def test_plan_across_threads(method, size):
-    plan = noiselab.Plan(method, acf="gauss:scale=3", size=size)
+    model = {"midpoint": dict(spectrum="power:d=2.5"), "lattice": dict(spectrum="power:d=3"), "faulting": {}}
+    plan = noiselab.Plan(method, size=size, **model.get(method, dict(acf="gauss:scale=3")))
     seeds = list(range(48))
     serial = [plan(s) for s in seeds]
     with ThreadPoolExecutor(max_workers=4) as ex:
