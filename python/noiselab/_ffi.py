@@ -227,6 +227,23 @@ double nl_synth_lattice_default_cell(const size_t *n);
 int nl_synth_lattice_default_octaves(double cell0);
 int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, int clamp, double *clamp_error);
 
+typedef struct nl_synth_lattice_wiener_plan nl_synth_lattice_wiener_plan;
+typedef struct {
+    int cell;
+    size_t nodes[2];
+    double variance;
+    double mean_error;
+    double max_error;
+    int rank;
+    size_t negatives;
+} nl_synth_lattice_wiener_info;
+int nl_synth_lattice_wiener_plan_alloc(const nl_model *m, int dim, const size_t *n, int cell, unsigned flags,
+                                       nl_synth_lattice_wiener_plan **out);
+void nl_synth_lattice_wiener_plan_info(const nl_synth_lattice_wiener_plan *p, nl_synth_lattice_wiener_info *info);
+int nl_synth_lattice_wiener_execute(const nl_synth_lattice_wiener_plan *p, uint64_t seed, nl_field *out,
+                                    double **lattice);
+void nl_synth_lattice_wiener_plan_free(nl_synth_lattice_wiener_plan *p);
+
 /* synth/shape.h */
 int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical);
 

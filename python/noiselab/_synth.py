@@ -311,10 +311,9 @@ class Plan:
         interp = opt.get("interpolant", "perlin")
         if interp not in ("perlin", "wiener"):
             raise Error('interpolant: expected perlin or wiener for lattice, got "%s"' % interp)
-        if interp == "wiener":
-            raise Error("synth lattice: interpolant='wiener' is not available from Python yet; "
-                        "use the command line")
         cell = _int("cell", opt["cell"], 1, 2 ** 31 - 1) if opt.get("cell") else 0
+        if interp == "wiener":
+            return self._plan_lattice_wiener(cell or 4)
         c0 = float(cell) if cell else lib.nl_synth_lattice_default_cell(self._n)
         O = _int("octaves", opt["octaves"], 1, 16) if opt.get("octaves") else \
             lib.nl_synth_lattice_default_octaves(c0)
@@ -328,6 +327,24 @@ class Plan:
         self.info = dict(octaves=[dict(cell=self._p.cell[o], weight=self._p.weight[o], peak=self._p.peak[o],
                                        leakage=self._p.leakage[o]) for o in range(self._p.octaves)])
         self._exec = lambda seed, f: lib.nl_synth_lattice_execute(self._p, seed, f)
+
+    def _plan_lattice_wiener(self, cell):
+        """interpolant="wiener": one lattice of the target's covariance, each
+        sample its simple-kriging estimate from the nearest nodes."""
+        if self.options.get("octaves"):
+            raise Error("octaves: the Wiener lattice has one lattice (no octaves), got octaves=%r"
+                        % self.options["octaves"])
+        out = ffi.new("nl_synth_lattice_wiener_plan **")
+        check(lib.nl_synth_lattice_wiener_plan_alloc(self._m.ptr, self._dim, self._n, cell,
+                                                     _CLAMP if self.clamp else 0, out))
+        self._p = ffi.gc(out[0], lib.nl_synth_lattice_wiener_plan_free)
+        info = ffi.new("nl_synth_lattice_wiener_info *")
+        lib.nl_synth_lattice_wiener_plan_info(self._p, info)
+        self.method = "lattice:cell=%d,interpolant=wiener" % cell
+        self.flags = "clamped" if info.negatives else ""
+        self.info = dict(cell=cell, nodes=tuple(info.nodes), variance=info.variance,
+                         mean_error_variance=info.mean_error, max_error_variance=info.max_error, rank=info.rank)
+        self._exec = lambda seed, f: lib.nl_synth_lattice_wiener_execute(self._p, seed, f, ffi.NULL)
 
     # -- execution --------------------------------------------------------
 
@@ -413,7 +430,8 @@ def synth(method, acf=None, spectrum=None, size=None, seed=0, spacing=1.0, **opt
               displacements, taps; midpoint H, levels, variance_scale,
               interpolant ("fournier" or "miller"); faulting density; sparse
               density, cell, radius, wrap, origin, kernel (an expression in
-              x, y); lattice cell, octaves.
+              x, y); lattice cell, octaves, interpolant ("perlin" or
+              "wiener").
 
     Returns a float64 array of shape `size` (C order; row j of a 2D field is
     the EXR's row j), over memory the library allocated (no copy): the same

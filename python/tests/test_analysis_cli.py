@@ -150,3 +150,24 @@ def test_models(cli):
     assert "markov" in names and "matern" in names
     for n in names:
         assert n in out
+
+
+def test_fit_ml_points(cli, tmp_path):
+    f = noiselab.synth("fft", acf="markov:scale=6", size=(64, 64), seed=11)
+    rng = np.random.default_rng(3)
+    idx = rng.choice(f.size, 80, replace=False)
+    pts = np.column_stack([idx % 64, idx // 64]).astype(float)
+    val = f.ravel()[idx]
+    tsv = tmp_path / "pts.tsv"
+    tsv.write_text("x\ty\tvalue\n" + "".join("%r\t%r\t%r\n" % (x, y, v) for (x, y), v in zip(pts, val)))
+    for method in ("wls", "ml"):
+        j = js(cli, "fit", str(tsv), "--model", "markov", "--nugget", "--method", method)
+        r = noiselab.fit(pts, val, model="markov", nugget=True, method=method)
+        assert r["spec"] == j["model"]
+        for k in j["parameters"]:
+            close([r["parameters"][k]], [j["parameters"][k]])
+        close([r["objective"], r["aic"]], [j["objective"], j["aic"]])
+        if method == "ml":
+            close([r["mean"]], [j["mean"]])
+            for k, (lo, hi) in j["intervals"].items():
+                close([r["intervals"][k][0]], [lo])

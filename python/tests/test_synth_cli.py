@@ -36,6 +36,8 @@ CASES = [
     ("sparse", "acf", "gauss:scale=3", (40, 36), ["--density", "2"], {"density": 2.0}),
     ("sparse", "acf", "gauss:scale=3", (32, 32), ["--wrap"], {"wrap": True}),
     ("lattice", "spectrum", "power:d=3", (64, 64), [], {}),
+    ("lattice", "acf", "gauss:scale=6", (48, 60), ["--interpolant", "wiener", "--cell", "6"],
+     {"interpolant": "wiener", "cell": 6}),
 ]
 
 
