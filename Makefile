@@ -60,6 +60,10 @@ PC_LIBDIR  = $(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))
 PC_INCLUDEDIR = $(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))
 # Public headers: every module header but the *_internal.h ones.
 PUB_HDR   := $(filter-out %_internal.h,$(wildcard core/*.h synth/*.h analysis/*.h render/*.h))
+# The Python package python/noiselab, for Debian's interpreter (`make python`
+# checks that it imports in the tree); installed where it looks under PREFIX.
+PYTHON    ?= /usr/bin/python3
+PYDIR     ?= $(if $(filter /usr,$(PREFIX)),/usr/lib/python3/dist-packages,$(PREFIX)/lib/python$(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)/dist-packages)
 
 .PHONY: all deps wisdom test figures experiments bench asan fuzz clean install uninstall
 .SECONDARY:
@@ -124,6 +128,10 @@ $(MPIBIN): $(filter-out $(BUILD)/cli/main.o,$(CLI_OBJ)) $(H5CLI_OBJ) $(MPILIB) $
 $(BUILD)/tests/mpi/%: $(BUILD)/tests/mpi/%.o $(MPILIB) $(LIB)
 	$(CC) $(CFLAGS) -o $@ $^ $(MPI_LIBS) $(LDLIBS)
 
+.PHONY: python
+python: $(SOLIB)
+	PYTHONPATH=python $(PYTHON) -c 'import noiselab'
+
 $(BUILD)/tests/run: $(TEST_OBJ) $(LIB)
 	$(CC) $(CFLAGS) -o $@ $(TEST_OBJ) $(LIB) $(LDLIBS) -lcriterion
 
@@ -145,6 +153,7 @@ test: all $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
 	NOISELAB_FFTW=estimate sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
 	NOISELAB_FFTW=estimate sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite
 	NOISELAB_FFTW=estimate sh tests/doc/run.sh $(BINDIR)
+	$(if $(findstring sanitize,$(OPT)),@echo "python: skipped (a sanitized library does not load into $(PYTHON))",NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) $(PYTHON) -m pytest -q -p no:cacheprovider python/tests)
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
 	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) WISDOM_SIZES=64 sh tools/test-install.sh
@@ -178,6 +187,7 @@ install: all $(WISDOM)
 	install -m 644 $(MAN) $(DESTDIR)$(MANDIR)/man1/noiselab.1
 	install -m 644 examples/*.c $(DESTDIR)$(DOCDIR)/examples/
 	install -m 644 $(WISDOM) $(DESTDIR)$(DATADIR)/noiselab/fftw-wisdom
+	install -d $(DESTDIR)$(PYDIR)/noiselab && install -m 644 python/noiselab/*.py $(DESTDIR)$(PYDIR)/noiselab/
 	@if [ -z "$(DESTDIR)" ] && [ "$$(id -u)" = 0 ]; then ldconfig || true; fi
 
 # Removes exactly what install put there, then the folders it left empty.
@@ -187,6 +197,8 @@ uninstall:
 	    $(DESTDIR)$(MANDIR)/man1/noiselab.1 $(DESTDIR)$(INCLUDEDIR)/noiselab.h $(DESTDIR)$(DATADIR)/noiselab/fftw-wisdom \
 	    $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,$(PUB_HDR)) \
 	    $(addprefix $(DESTDIR)$(DOCDIR)/examples/,$(notdir $(wildcard examples/*.c)))
+	rm -rf $(DESTDIR)$(PYDIR)/noiselab/__pycache__ $(addprefix $(DESTDIR)$(PYDIR)/noiselab/,$(notdir $(wildcard python/noiselab/*.py)))
+	rmdir $(DESTDIR)$(PYDIR)/noiselab 2>/dev/null || true
 	rmdir $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render) $(DESTDIR)$(INCLUDEDIR)/noiselab \
 	    $(DESTDIR)$(DOCDIR)/examples $(DESTDIR)$(DOCDIR) $(DESTDIR)$(DATADIR)/noiselab 2>/dev/null || true
 
@@ -244,6 +256,7 @@ fuzz: $(DEPS_OK)
 # Speed against this machine's floor, measured in the same run (TSV).
 # Steady state: measured FFTW plans (the installed wisdom, or measured
 # here and kept in the cache); tools/bench-firstrun.sh times first runs.
+bench: $(SOLIB)
 bench: $(BIN) $(WISDOM)
 	@mkdir -p $(BUILD)/bench
 	NOISELAB_FFTW=measure NOISELAB_WISDOM=$(abspath $(WISDOM)) $(BIN) bench | tee $(BUILD)/bench/bench.tsv
@@ -251,6 +264,7 @@ bench: $(BIN) $(WISDOM)
 	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-r.sh $(BIN) $(BUILD)/bench/r | tee $(BUILD)/bench/bench-r.tsv
 	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-gstat.sh $(BIN) $(BUILD)/bench/gstat | tee $(BUILD)/bench/bench-gstat.tsv
 	sh tools/bench-firstrun.sh $(BIN) $(abspath $(WISDOM)) $(BUILD)/bench/first | tee $(BUILD)/bench/bench-firstrun.tsv
+	NOISELAB_FFTW=measure NOISELAB_WISDOM=$(abspath $(WISDOM)) CC="$(CC)" PYTHON=$(PYTHON) sh tools/bench-python.sh $(BUILD) | tee $(BUILD)/bench/bench-python.tsv
 	@echo "bench: $(BUILD)/bench/bench.tsv, bench.png and (with R installed) bench-r.tsv"
 
 clean:

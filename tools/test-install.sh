@@ -3,6 +3,7 @@
 # every program of examples/ and the README's C example ("Using the library")
 # built with pkg-config alone, against the shared and against the static
 # library, and run; the installed headers, man page and symbols checked; the
+# Python package imported from the DESTDIR with the installed library; the
 # include layering of the source folders checked; `make uninstall` leaves no
 # file behind.  Called by `make test` with CC, EXAMPLE_CFLAGS (the build's
 # optimisation and sanitizer flags), MAKE and VERSION in the environment.
@@ -132,6 +133,21 @@ awk '/^## Using the library/ { in_sec = 1; next } /^## / { in_sec = 0 }
      in_sec && /^```c$/ { code = 1; next } code && /^```$/ { exit } code { print }' README.md >"$tmp/readme.c"
 check "README: a \`\`\`c block under \"Using the library\"" test -s "$tmp/readme.c"
 [ -s "$tmp/readme.c" ] && build_run readme "$tmp/readme.c"
+
+# The Python package from the DESTDIR with the installed library (by its
+# soname on LD_LIBRARY_PATH), outside the tree: the issue's one-liner.
+pyver=$(/usr/bin/python3 -c 'import sys; print("%d.%d" % sys.version_info[:2])')
+pydir=$root$prefix/lib/python$pyver/dist-packages
+check "python package installed in $prefix/lib/python$pyver/dist-packages" test -f "$pydir/noiselab/__init__.py"
+cat >"$tmp/py.py" <<EOF
+import noiselab
+assert noiselab.__file__.startswith("$pydir"), noiselab.__file__
+maps = [l.split()[-1] for l in open("/proc/self/maps") if "libnoiselab" in l]
+assert maps and all(m.startswith("$libdir") for m in maps), maps
+print(noiselab.synth('fft', acf='markov:scale=8', size=(64, 64), seed=7).std())
+EOF
+check "python: import the installed package with the installed library" sh -c "cd '$tmp' && env -u NOISELAB_LIB \
+    PYTHONDONTWRITEBYTECODE=1 PYTHONPATH='$pydir' LD_LIBRARY_PATH='$libdir' /usr/bin/python3 '$tmp/py.py'"
 
 check "make uninstall" $MAKE --no-print-directory uninstall DESTDIR="$root" PREFIX=$prefix
 check "make uninstall leaves no file" no_file_left

@@ -1,0 +1,31 @@
+"""noiselab from Python: random fields with a prescribed autocorrelation or
+spectrum, synthesised and measured by libnoiselab.
+
+Every number comes from the C library (through cffi); arrays are numpy
+float64, C order, shape N (1D), (ny, nx) (2D, the EXR's rows) or
+(nz, ny, nx): x, the fastest axis in memory, is the last numpy axis.
+Fields the library makes are returned as arrays over its memory (no copy).
+
+    >>> import noiselab
+    >>> f = noiselab.synth("fft", acf="markov:scale=8", size=(64, 64), seed=7)
+    >>> plan = noiselab.Plan("fft", acf="markov:scale=8", size=(512, 512))
+    >>> fields = [plan(seed) for seed in range(100)]
+    >>> lag, r = noiselab.acf(f, max_lag=16)
+
+Errors raise noiselab.Error (a ValueError) with the library's one-line
+message.  cffi releases the GIL around every C call: threads run in
+parallel, and one Plan may be called from several threads.  The library is
+found through $NOISELAB_LIB, then the build/ folder of the source tree next
+to this package, then the installed libnoiselab.so.0.
+"""
+from ._ffi import LIBRARY_PATH, Error
+from ._synth import METHODS, Plan, synth
+from ._io import models, read, version, write
+from ._analysis import acf, check_model, coeffs, fit, hist, krige, moments, nonlin, psd, shape, variogram
+
+check = check_model  # noiselab.check, as the CLI's verb
+
+__version__ = version()
+__all__ = ["Error", "Plan", "synth", "read", "write", "models", "version", "acf", "psd", "hist", "moments",
+           "check", "check_model", "coeffs", "nonlin", "shape", "krige", "variogram", "fit", "METHODS",
+           "LIBRARY_PATH"]

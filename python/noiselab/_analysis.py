@@ -1,0 +1,485 @@
+"""Analysis verbs: acf, psd, hist, check, coeffs, nonlin, shape, krige,
+variogram, fit (as the CLI's; cli/cmd_*.c)."""
+import math
+
+import numpy as np
+
+from ._ffi import (Dist, Error, FieldView, Model, alloc_field, as_field_array, check, cstr, ffi, lib, owned_field,
+                   planner)
+
+_AXES = {"x": 0, "y": 1, "z": 2}
+
+
+def _dptr(a):
+    """double * over a C-ordered float64 numpy array (no copy)."""
+    return ffi.cast("double *", ffi.from_buffer(a))
+
+
+def _mean(mean):
+    if mean is None:
+        return float("nan")
+    m = float(mean)
+    if not math.isfinite(m):
+        raise Error("mean: expected a finite number, got %r" % (mean,))
+    return m
+
+
+def _owned(out_pp):
+    return owned_field(out_pp[0])
+
+
+def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False, mean=None, target=None,
+        grid=None):
+    """Autocorrelation (autocovariance) estimate of a field, as ``noiselab acf``.
+
+    field     1D, 2D (ny, nx) or 3D array of finite samples.
+    spacing   grid spacing (one value or one per axis): lags are in its
+              length units.
+    max_lag   largest lag in length units (default a quarter of the axis).
+    axis      "x" (the last numpy axis), "y" or "z": the lag direction.
+    radial    2D/3D: average over directions in bins one sample spacing wide.
+    unbiased  divide by the number of overlapping pairs instead of N.
+    mean      the known mean to remove (default: the sample mean).
+    target    a model spec: also return the model's R at each lag.
+    grid      None, "wrapped" or "centred": instead of a profile, the whole
+              estimate (2 n per axis; wrapped: lag i at index i, negative lags
+              from the end; centred: lag 0 at the centre, as -o OUT.exr),
+              as an array over the library's memory.
+
+    Returns (lag, acf) or, with target, (lag, acf, target) as float64 arrays
+    of max_lag/h + 1 entries (radial: NaN for an empty bin), the estimate in
+    the field's squared units (biased: sum of products / N).
+    """
+    v = FieldView(field, spacing, "acf")
+    x = v.f
+    if axis not in _AXES or _AXES[axis] >= x.dim:
+        raise Error('axis: the field is %dD, got axis "%s"' % (x.dim, axis))
+    ax = _AXES[axis]
+    if radial and x.dim == 1:
+        raise Error("radial: expected a 2D or 3D field, got 1D")
+    if grid not in (None, "wrapped", "centred"):
+        raise Error('grid: expected None, "wrapped" or "centred", got %r' % (grid,))
+    n_ax, h_ax = int(x.n[ax]), float(x.h[ax])
+    if max_lag is None:
+        nl = n_ax // 4
+    else:
+        ml = float(max_lag)
+        if not (ml >= 0 and ml / h_ax < n_ax) or math.floor(ml / h_ax + 1e-9) >= n_ax:
+            raise Error("max_lag: expected at most %g for %d samples, got %g" % ((n_ax - 1) * h_ax, n_ax, ml))
+        nl = int(math.floor(ml / h_ax + 1e-9))
+    nl += 1
+    full = ffi.new("nl_field **")
+    with planner:
+        check(lib.nl_acf_full(x, _mean(mean), 1 if unbiased else 0, full))
+    F = full[0]
+    if grid == "wrapped":
+        return owned_field(F)
+    try:
+        if grid == "centred":
+            C = ffi.new("nl_field **")
+            check(lib.nl_acf_centred_alloc(F, C))
+            return owned_field(C[0])
+        lag, val = np.empty(nl), np.empty(nl)
+        if radial:
+            cnt = ffi.new("size_t[]", nl)
+            check(lib.nl_acf_radial(F, nl, _dptr(lag), _dptr(val), cnt))
+        else:
+            check(lib.nl_acf_axis(F, ax, nl - 1, _dptr(lag), _dptr(val)))
+    finally:
+        if grid != "wrapped":
+            lib.nl_field_free(F)
+    if target is None:
+        return lag, val
+    m = Model(target, "target")
+    tgt = np.empty(nl)
+    with planner:
+        check(lib.nl_acf_model_values(m.ptr, x.dim, x.n, x.h, 0 if radial else ax, _dptr(lag), nl, _dptr(tgt)))
+    return lag, val, tgt
+
+
+def psd(field, spacing=1.0, welch=None, mean=None, grid=None):
+    """Power spectral density estimate, as ``noiselab psd``.
+
+    The periodogram P(f) = (h1...hd / N) |DFT(x - mean)|^2, or with
+    welch=S Welch's average of Hann-windowed segments of S samples per axis
+    overlapping by half (1D and 2D): a TWO-SIDED density, in the field's
+    squared units per (cycles per unit length)^dim, so that the sum of P over
+    the grid frequencies times the frequency cell is the mean square.
+
+    Returns (freq, psd): 1D f = 0 .. Nyquist (i / (n h)); 2D/3D the radial
+    average in bins one frequency step wide (NaN for an empty bin); freq in
+    cycles per unit length.  grid="wrapped" returns the whole spectrum
+    (wrapped order, numpy.fft.fftfreq's) and grid="centred" with zero
+    frequency at the centre, as arrays over the library's memory.
+    """
+    v = FieldView(field, spacing, "psd")
+    if grid not in (None, "wrapped", "centred"):
+        raise Error('grid: expected None, "wrapped" or "centred", got %r' % (grid,))
+    P = ffi.new("nl_field **")
+    with planner:
+        if welch is not None:
+            if isinstance(welch, bool) or not isinstance(welch, (int, np.integer)) or welch < 4:
+                raise Error("welch: expected a segment length of at least 4 samples, got %r" % (welch,))
+            check(lib.nl_psd_welch(v.f, int(welch), _mean(mean), P, ffi.NULL))
+        else:
+            check(lib.nl_psd_periodogram(v.f, _mean(mean), P))
+    if grid == "wrapped":
+        return owned_field(P[0])
+    try:
+        if grid == "centred":
+            C = ffi.new("nl_field **")
+            check(lib.nl_fftshift_alloc(P[0], C))
+            return owned_field(C[0])
+        k = lib.nl_psd_profile_size(P[0])
+        freq, val, cnt, nf = np.empty(k), np.empty(k), ffi.new("size_t[]", max(k, 1)), ffi.new("size_t *")
+        check(lib.nl_psd_profile(P[0], _dptr(freq), _dptr(val), cnt, nf))
+    finally:
+        if grid != "wrapped":
+            lib.nl_field_free(P[0])
+    return freq[:nf[0]], val[:nf[0]]
+
+
+def moments(field):
+    """Mean, unbiased variance, skewness, excess kurtosis, min, max and the
+    sample count of a field (nl_moments_compute), as a dict."""
+    v = FieldView(field, 1.0, "moments")
+    m = ffi.new("nl_moments *")
+    check(lib.nl_moments_compute(v.f, m))
+    return dict(n=int(m.n), mean=m.mean, variance=m.variance, skewness=m.skewness, kurtosis=m.kurtosis,
+                min=m.min, max=m.max)
+
+
+def hist(field, bins=50):
+    """Histogram of the samples in `bins` equal bins over [min, max] (the
+    maximum in the last bin), as ``noiselab hist``.  Returns (edges, counts,
+    moments): edges bins + 1 values, counts `bins` values (float64), and
+    the dict of :func:`moments`."""
+    if isinstance(bins, bool) or not isinstance(bins, (int, np.integer)) or bins < 1:
+        raise Error("bins: expected a positive integer, got %r" % (bins,))
+    v = FieldView(field, 1.0, "hist")
+    edges, counts = np.empty(bins + 1), np.empty(bins)
+    check(lib.nl_hist(v.f, int(bins), _dptr(edges), _dptr(counts)))
+    return edges, counts, moments(v.array)
+
+
+_WHY = ("valid", "negative-integral", "negative-spectrum", "isotropic-bound", "negative-eigenvalue",
+        "line-spectrum-rises")
+
+
+def _model_arg(acf, spectrum):
+    if (acf is None) == (spectrum is None):
+        raise Error("expected exactly one of acf or spectrum")
+    if spectrum is not None:
+        s = cstr(spectrum, "spectrum").decode()
+        return Model(s if s.startswith(("power", "spectrum:")) else "spectrum:" + s, "spectrum")
+    return Model(acf, "acf")
+
+
+def check_model(acf=None, spectrum=None, dim=1):
+    """Is the model positive definite in `dim` dimensions, and how smooth is
+    it?  As ``noiselab check``: returns a dict with the fields of nl_check
+    (analysis/check.h): positive_definite, why (None when valid, else e.g.
+    "negative-spectrum"), variance, min_spectrum, min_eigenvalue,
+    differentiable_order (None: infinitely), r2, spectral_decay, ...,
+    and neighbours (valid models near an invalid one, as a string)."""
+    if isinstance(dim, bool) or dim not in (1, 2, 3):
+        raise Error("dim: expected 1, 2 or 3, got %r" % (dim,))
+    m = _model_arg(acf, spectrum)
+    c = ffi.new("nl_check *")
+    with planner:
+        check(lib.nl_check_model(m.ptr, dim, c))
+        buf = ffi.new("char[]", 4096)
+        nb = ""
+        if not c.positive_definite and lib.nl_check_neighbours(m.ptr, c, buf, 4096) == 0:
+            nb = ffi.string(buf).decode()
+    d = {k: getattr(c, k) for k, _ in ffi.typeof(c[0]).fields}
+    d["positive_definite"] = bool(c.positive_definite)
+    d["why"] = None if c.why == 0 else _WHY[c.why]
+    d["differentiable_order"] = None if c.differentiable_order < 0 else c.differentiable_order
+    d["model"] = m.spec
+    d["neighbours"] = nb
+    return d
+
+
+def coeffs(acf, dim=1, neighborhood=2, tol=1e-4, levels=10, spacing0=1.0, displacements="independent", taps=None):
+    """Generalized stochastic subdivision's coefficients (Lewis 1987, eqs. 4,
+    10, 12) per level, as ``noiselab coeffs``.  Returns a list (one per
+    level, coarsest first) of dicts: level, spacing (observation spacing, lag
+    units), N, classes (a list of dicts: class, coefficients (float64 array
+    in neighbourhood order), variance (eq. 7), condition, min_eigenvalue,
+    flags), and with displacements="correlated" the filter taps and
+    filter_error."""
+    if dim not in (1, 2):
+        raise Error("dim: expected 1 or 2, got %r" % (dim,))
+    m = Model(acf, "acf")
+    N = 0 if neighborhood == "auto" else int(neighborhood)
+    if N < 0 or (neighborhood != "auto" and N < 1):
+        raise Error("neighborhood: expected a positive integer or \"auto\", got %r" % (neighborhood,))
+    stop = 0
+    if isinstance(tol, str):
+        for prefix, rule in (("variance:", 1), ("improvement:", 0)):
+            if tol.startswith(prefix):
+                stop, tol = rule, tol[len(prefix):]
+    tol = float(tol)
+    if not (math.isfinite(tol) and tol > 0):
+        raise Error("tol: expected a positive number, got %r" % (tol,))
+    if isinstance(levels, bool) or not isinstance(levels, (int, np.integer)) or not 1 <= levels <= 40:
+        raise Error("levels: expected an integer from 1 to 40, got %r" % (levels,))
+    s0 = float(spacing0)
+    if not (math.isfinite(s0) and s0 > 0):
+        raise Error("spacing0: expected a positive number, got %r" % (spacing0,))
+    if displacements not in ("independent", "correlated"):
+        raise Error('displacements: expected independent or correlated, got "%s"' % displacements)
+    out = ffi.new("nl_subdiv_coeffs **")
+    with planner:
+        check(lib.nl_subdiv_coeffs_alloc_rule(m.ptr, dim, int(levels), s0, N, stop, tol, 16 if dim == 1 else 6, out))
+        co = ffi.gc(out[0], lib.nl_subdiv_coeffs_free)
+        if displacements == "correlated":
+            check(lib.nl_subdiv_coeffs_correlate(co, m.ptr, int(taps) if taps else (4 if dim == 1 else 2), 1))
+    res = []
+    for k in range(co.levels):
+        lv = co.level[k]
+        classes = []
+        for j in range(lv.nclass):
+            c = lv.cls[j]
+            classes.append(dict(
+                cls=ffi.string(lib.nl_subdiv_class_name(c.cls)).decode(),
+                coefficients=np.frombuffer(ffi.buffer(c.a, c.n * 8), dtype=np.float64).copy(),
+                variance=c.variance, raw_variance=c.raw_variance, condition=c.condition,
+                min_eigenvalue=c.min_eigenvalue,
+                flags=",".join(ffi.string(lib.nl_subdiv_flag_name(b)).decode() for b in range(6) if c.flags & (1 << b))))
+        d = dict(level=lv.level, spacing=lv.spacing, N=lv.N, classes=classes)
+        if lv.filt != ffi.NULL:
+            cnt = lv.nclass * lv.nclass * (2 * lv.taps + 1) ** dim
+            d["taps"] = lv.taps
+            d["filter"] = np.frombuffer(ffi.buffer(lv.filt, cnt * 8), dtype=np.float64).copy()
+            d["filter_error"] = lv.filt_error
+        res.append(d)
+    return res
+
+
+def nonlin(acf, g, size=4096, spacing=1.0, terms=24):
+    """What the memoryless map g does to a Gaussian input with
+    autocorrelation `acf` (Beckmann's Hermite series), as ``noiselab
+    nonlin``: g a distribution spec (as shape's `to`) or expr:G.  On a
+    periodic 1D grid of `size` samples at `spacing`, returns a dict: lag,
+    input_acf, output_acf (size/2 + 1 lags), freq, input_psd, output_psd
+    (two-sided, cycles per unit), hermite_coefficients, output_mean,
+    output_variance, truncation."""
+    m = Model(acf, "acf")
+    d = Dist(g, "g")
+    n = int(size)
+    if n != size or n < 2:
+        raise Error("size: expected an integer of at least 2, got %r" % (size,))
+    if isinstance(terms, bool) or not isinstance(terms, (int, np.integer)) or not 2 <= terms <= 64:
+        raise Error("terms: expected an integer from 2 to 64, got %r" % (terms,))
+    he = ffi.new("nl_hermite *")
+    with planner:
+        check(lib.nl_hermite_expand(d.ptr, int(terms), he))
+        R, Ry, S, Sy = (alloc_field((n,), (float(spacing),)) for _ in range(4))
+        try:
+            check(lib.nl_wk_sample_acf(m.ptr, R))
+            if not R.data[0] > 0:
+                raise Error("acf: %s has R(0) = %g; expected a positive variance" % (m.spec, R.data[0]))
+            lib.nl_nonlin_output_acf(he, R.data, n, R.data[0], Ry.data)
+            check(lib.nl_wk_acf_to_spectrum(R, S))
+            check(lib.nl_wk_acf_to_spectrum(Ry, Sy))
+        except BaseException:
+            for f in (R, Ry, S, Sy):
+                lib.nl_field_free(f)
+            raise
+    nl = n // 2 + 1
+    h = float(R.h[0])
+    R, Ry, S, Sy = (owned_field(f)[:nl] for f in (R, Ry, S, Sy))
+    return dict(lag=np.arange(nl) * h, input_acf=R, output_acf=Ry, freq=np.arange(nl) / (n * h), input_psd=S,
+                output_psd=Sy, hermite_coefficients=np.array([he.c[k] for k in range(he.terms)]),
+                output_mean=he.c[0], output_variance=he.variance, truncation=he.truncation)
+
+
+def shape(field, to, empirical=False):
+    """The memoryless map y = F_to^-1(F_x(x)) (Lewis GI '86, section 4), as
+    ``noiselab shape --to DIST``: F_x the Gaussian CDF with the field's
+    mean and sd (or, empirical=True, the field's ranks).  `to`: gauss,
+    uniform, laplace, hyperbolic, lognormal, chi2-1, power:p=P, table:FILE
+    or expr:G (see ``noiselab shape --help``).  Returns a new array (the
+    input is not changed)."""
+    a = as_field_array(field, "shape")
+    d = Dist(to, "to")
+    f = alloc_field(a.shape, (1.0,) * a.ndim)
+    out = owned_field(f)
+    out[...] = a
+    with planner:
+        check(lib.nl_synth_shape(f, d.ptr, 1 if empirical else 0))
+    return out
+
+
+def _points(points, values, what):
+    p = np.ascontiguousarray(points, dtype=np.float64)
+    if p.ndim == 1:
+        p = p.reshape(-1, 1)
+    if p.ndim != 2 or not 1 <= p.shape[1] <= 3 or p.shape[0] < 1:
+        raise Error("%s: points: expected an (n, d) array with d = 1, 2 or 3 and n >= 1, got shape %s"
+                    % (what, np.shape(points)))
+    v = np.ascontiguousarray(values, dtype=np.float64).ravel()
+    if v.shape[0] != p.shape[0]:
+        raise Error("%s: values: expected %d values (one per point), got %d" % (what, p.shape[0], v.shape[0]))
+    for name, a in (("points", p), ("values", v)):
+        if not np.isfinite(a).all():
+            raise Error("%s: %s: expected finite numbers" % (what, name))
+    return p, v
+
+
+def krige(points, values, acf, at, mean=None, strict=False, variance=False):
+    """Kriging (Stam and Fiume 1991, eqs. 19-22), as ``noiselab krige``:
+    ordinary (unknown mean) or, with mean=M, simple.
+
+    points  (n, d) coordinates (d = 1, 2, 3; x first) of the data, lag
+            units of the model; values their n values.
+    at      (m, d) coordinates where to estimate.
+    strict  refuse a singular system instead of solving by the pseudo-inverse.
+    Returns the m estimates, or (estimates, kriging variances) with
+    variance=True."""
+    p, v = _points(points, values, "krige")
+    x = np.ascontiguousarray(at, dtype=np.float64)
+    if x.ndim == 1 and p.shape[1] == 1:
+        x = x.reshape(-1, 1)
+    if x.ndim != 2 or x.shape[1] != p.shape[1]:
+        raise Error("krige: at: expected an (m, %d) array like the points, got shape %s" % (p.shape[1], np.shape(at)))
+    if not np.isfinite(x).all():
+        raise Error("krige: at: expected finite coordinates")
+    m = Model(acf, "acf")
+    out = ffi.new("nl_krige_plan **")
+    with planner:
+        check(lib.nl_krige_plan_alloc(m.ptr, p.shape[1], p.shape[0], _dptr(p), _dptr(v), 0 if mean is None else 1,
+                                      0.0 if mean is None else _mean(mean), 1 if strict else 0, out))
+        plan = ffi.gc(out[0], lib.nl_krige_plan_free)
+        est = np.empty(x.shape[0])
+        var = np.empty(x.shape[0]) if variance else None
+        if x.shape[0]:
+            check(lib.nl_krige_eval_block(plan, x.shape[0], _dptr(x), _dptr(est),
+                                          _dptr(var) if variance else ffi.NULL))
+    return (est, var) if variance else est
+
+
+def _vopts(width, cutoff, estimator, direction, tolerance):
+    o = ffi.new("nl_variogram_options *")
+    lib.nl_variogram_options_default(o)
+    for name, val in (("width", width), ("cutoff", cutoff)):
+        if val is not None:
+            x = float(val)
+            if not (math.isfinite(x) and x > 0):
+                raise Error("%s: expected a positive number, got %r" % (name, val))
+            setattr(o, name, x)
+    if estimator not in ("matheron", "cressie"):
+        raise Error('estimator: expected matheron or cressie, got "%s"' % estimator)
+    o.estimator = 1 if estimator == "cressie" else 0
+    if (direction is None) != (tolerance is None):
+        raise Error("direction: expected direction and tolerance together")
+    if direction is not None:
+        t = float(tolerance)
+        if not 0 <= t <= 90:
+            raise Error("tolerance: expected degrees in [0, 90], got %r" % (tolerance,))
+        o.directional, o.direction, o.tolerance = 1, float(direction), t
+    return o
+
+
+def _field_points(field, spacing):
+    """A field's samples as points at index * spacing (as the CLI's fit)."""
+    a = as_field_array(field, "fit")
+    v = FieldView(a, spacing, "fit")
+    idx = np.indices(a.shape).reshape(a.ndim, -1)[::-1].T  # x first
+    h = np.array([v.f.h[k] for k in range(a.ndim)])
+    return np.ascontiguousarray(idx * h), a.ravel()
+
+
+def variogram(points=None, values=None, field=None, spacing=1.0, width=None, cutoff=None, estimator="matheron",
+              direction=None, tolerance=None):
+    """Empirical semivariogram binned as gstat's variogram(), as ``noiselab
+    variogram``: of scattered data (points (n, d), values) or of a field's
+    samples at index * spacing.  width: bin width (default cutoff / 15);
+    cutoff: largest distance (default a third of the bounding-box
+    diagonal); direction (degrees clockwise from +y) with tolerance
+    (degrees).  Returns (distance, gamma, pairs) over the non-empty bins."""
+    o = _vopts(width, cutoff, estimator, direction, tolerance)
+    out = ffi.new("nl_variogram **")
+    if field is not None:
+        if points is not None:
+            raise Error("variogram: expected points and values, or field, not both")
+        fv = FieldView(field, spacing, "variogram")
+        check(lib.nl_variogram_field(fv.f, o, out))
+    else:
+        p, v = _points(points, values, "variogram")
+        P = ffi.new("nl_points *")
+        P.dim, P.n, P.pts, P.val = p.shape[1], p.shape[0], _dptr(p), _dptr(v)
+        check(lib.nl_variogram_points(P, o, out))
+    vg = ffi.gc(out[0], lib.nl_variogram_free)
+    k = vg.nbins
+    get = lambda q: np.frombuffer(ffi.buffer(q, k * 8), dtype=np.float64).copy()
+    return get(vg.distance), get(vg.gamma), get(vg.pairs)
+
+
+_WEIGHTS = ("cressie", "pairs", "reweighted", "distance")
+
+
+def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugget=False, fix=None, method="wls",
+        weights="cressie", width=None, cutoff=None):
+    """Fit a model family to data, as ``noiselab fit``: weighted least
+    squares on the empirical variogram (method="wls", weights cressie, pairs,
+    reweighted or distance), or the Gaussian likelihood ("ml", "reml",
+    started from the wls fit, with 95% profile-likelihood intervals).
+    model: markov, gauss, markaussian, oscillatory, gauss-osc, matern,
+    spherical; fix: {"nu": 1.5, ...} parameters held.  Returns a dict: spec
+    (ready for acf=), parameters, standard_errors, intervals (ml/reml:
+    {name: (lower, upper)}), objective, aic, mean (ml/reml), n, converged,
+    iterations."""
+    if field is not None:
+        if points is not None:
+            raise Error("fit: expected points and values, or field, not both")
+        p, v = _field_points(field, spacing)
+    else:
+        p, v = _points(points, values, "fit")
+    if method not in ("wls", "ml", "reml"):
+        raise Error('method: expected wls, ml or reml, got "%s"' % method)
+    if weights not in _WEIGHTS:
+        raise Error('weights: expected cressie, pairs, reweighted or distance, got "%s"' % weights)
+    fix = dict(fix or {})
+    if len(fix) > 8:
+        raise Error("fix: expected at most 8 parameters, got %d" % len(fix))
+    o = ffi.new("nl_fit_options *")
+    keep = [ffi.new("char[]", cstr(model, "model"))]
+    o.family = keep[0]
+    o.nugget = 1 if nugget else 0
+    for i, (k, val) in enumerate(fix.items()):
+        keep.append(ffi.new("char[]", cstr(k, "fix")))
+        o.fix_name[i] = keep[-1]
+        o.fix_value[i] = float(val)
+    o.nfix = len(fix)
+    o.weights = _WEIGHTS.index(weights)
+    o.likelihood = 1 if method == "reml" else 0
+    vo = _vopts(width, cutoff, "matheron", None, None)
+    r = ffi.new("nl_fit_result *")
+    dim = p.shape[1]
+    check(lib.nl_fit_check_options(o, dim))
+    P = ffi.new("nl_points *")
+    P.dim, P.n, P.pts, P.val = dim, p.shape[0], _dptr(p), _dptr(v)
+    out = ffi.new("nl_variogram **")
+    check(lib.nl_variogram_points(P, vo, out))
+    vg = ffi.gc(out[0], lib.nl_variogram_free)
+    with planner:
+        check(lib.nl_fit_variogram(vg.distance, vg.gamma, vg.pairs, vg.nbins, dim, o, r))
+        if method != "wls":
+            start = ffi.new("double[5]", list(r.value))
+            o.start = start
+            o.intervals = 1
+            check(lib.nl_fit_ml(_dptr(p), _dptr(v), p.shape[0], dim, o, r))
+    names = [ffi.string(r.name[k]).decode() for k in range(r.np)]
+    res = dict(spec=ffi.string(r.spec).decode(), method=method, n=int(r.nobs), converged=bool(r.converged),
+               iterations=r.iterations, objective=r.objective, aic=r.aic,
+               parameters={nm: r.value[k] for k, nm in enumerate(names)},
+               standard_errors={nm: r.se[k] for k, nm in enumerate(names)},
+               fixed={nm: bool(r.fixed[k]) for k, nm in enumerate(names)})
+    if method != "wls":
+        res["mean"] = r.mean
+        res["intervals"] = {nm: (r.lower[k], r.upper[k]) for k, nm in enumerate(names)
+                            if not (math.isnan(r.lower[k]) or math.isnan(r.upper[k]))}
+    return res

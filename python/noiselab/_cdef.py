@@ -1,0 +1,387 @@
+"""The public nl_ declarations the package calls, copied from the headers
+named beside each group (cffi cdef syntax).  Struct layouts must match the
+headers exactly: python/tests/test_layout.py compiles these declarations
+against the headers and compares sizes and offsets."""
+
+CDEF = r"""
+/* core/version.h, core/nl_error.h */
+const char *nl_version(void);
+const char *nl_errmsg(void);
+
+/* core/field.h */
+typedef struct {
+    int dim;
+    size_t n[3];
+    double h[3];
+    size_t count;
+    double *data;
+} nl_field;
+int nl_size_check(int dim, const size_t *n, size_t elem, size_t copies, size_t *count);
+nl_field *nl_field_alloc(int dim, const size_t *n, const double *h, int *status);
+void nl_field_free(nl_field *f);
+int nl_field_check_finite(const nl_field *f, double limit, size_t *first);
+
+/* core/mem.h */
+void *nl_alloc(size_t bytes);
+void nl_free(void *p);
+
+/* core/io.h */
+typedef struct {
+    char model[1024];
+    char method[256];
+    char seed[32];
+    char spacing[128];
+    char size[64];
+    char version[32];
+    char flags[256];
+    char origin[64];
+} nl_meta;
+int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta);
+int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta, const char *coord,
+                       const double *t);
+int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
+
+/* core/model.h */
+typedef struct nl_model nl_model;
+int nl_model_parse(const char *spec, nl_model **out);
+void nl_model_free(nl_model *m);
+const char *nl_model_spec(const nl_model *m);
+int nl_model_is_spectral(const nl_model *m);
+double nl_model_acf(const nl_model *m, int dim, const double *lag);
+int nl_model_check_dim(const nl_model *m, int dim);
+typedef struct {
+    const char *name;
+    const char *params;
+    const char *formula;
+} nl_model_info;
+const nl_model_info *nl_model_catalogue(size_t *count);
+
+/* core/dist.h */
+typedef struct nl_dist nl_dist;
+int nl_dist_parse(const char *spec, nl_dist **out);
+void nl_dist_free(nl_dist *d);
+
+/* synth/fft.h */
+typedef struct nl_synth_fft_plan nl_synth_fft_plan;
+typedef struct {
+    double variance;
+    double min_lambda;
+    double max_lambda;
+    size_t negatives;
+    double clamp_error;
+} nl_synth_fft_info;
+int nl_synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                            nl_synth_fft_plan **out);
+void nl_synth_fft_plan_info(const nl_synth_fft_plan *p, nl_synth_fft_info *info);
+int nl_synth_fft_execute(const nl_synth_fft_plan *p, uint64_t seed, nl_field *out);
+void nl_synth_fft_plan_free(nl_synth_fft_plan *p);
+
+/* synth/circulant.h */
+typedef struct {
+    size_t m[3];
+    double min_eigenvalue;
+    double max_eigenvalue;
+    double clamp_error;
+    int doublings;
+    double variance_loss;
+} nl_synth_circulant_info;
+typedef struct nl_synth_circulant_plan nl_synth_circulant_plan;
+int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                                  int max_factor, nl_synth_circulant_plan **out);
+void nl_synth_circulant_plan_info(const nl_synth_circulant_plan *p, nl_synth_circulant_info *info);
+int nl_synth_circulant_execute(const nl_synth_circulant_plan *p, uint64_t seed, nl_field *out);
+void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p);
+
+/* synth/cholesky.h */
+typedef struct nl_synth_cholesky_plan nl_synth_cholesky_plan;
+int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h,
+                                 nl_synth_cholesky_plan **out);
+int nl_synth_cholesky_execute(nl_synth_cholesky_plan *p, uint64_t seed, nl_field *out);
+void nl_synth_cholesky_plan_free(nl_synth_cholesky_plan *p);
+
+/* synth/subdiv.h */
+typedef struct {
+    int cls;
+    size_t n;
+    double *a;
+    double variance;
+    double raw_variance;
+    double condition;
+    double min_eigenvalue;
+    unsigned flags;
+    int nalt;
+    int *offx, *offy;
+    double *alt_a;
+    double *alt_var;
+} nl_subdiv_class;
+typedef struct {
+    int level;
+    double spacing;
+    int N;
+    int reach;
+    int nclass;
+    nl_subdiv_class cls[3];
+    int taps;
+    double *filt;
+    double filt_error;
+} nl_subdiv_level;
+typedef struct {
+    int dim;
+    int levels;
+    double spacing0;
+    double r0;
+    unsigned flags;
+    nl_subdiv_level *level;
+} nl_subdiv_coeffs;
+const char *nl_subdiv_flag_name(unsigned bit);
+const char *nl_subdiv_class_name(int cls);
+int nl_subdiv_coeffs_alloc_rule(const nl_model *m, int dim, int levels, double spacing0, int N, int rule, double tol,
+                                int nmax, nl_subdiv_coeffs **out);
+void nl_subdiv_coeffs_free(nl_subdiv_coeffs *c);
+int nl_subdiv_coeffs_correlate(nl_subdiv_coeffs *c, const nl_model *m, int taps, int target);
+typedef struct nl_subdiv_plan nl_subdiv_plan;
+typedef struct {
+    int levels;
+    int N;
+    double tol;
+    int nmax;
+    int nonperiodic;
+    int allow_not_pd;
+    int image;
+    int random_nb;
+    uint64_t random_seed;
+    int displacements;
+    int taps;
+    int stop;
+} nl_subdiv_options;
+typedef struct {
+    int levels;
+    double spacing0;
+    double variance;
+    double coarse_correlation;
+} nl_subdiv_info;
+void nl_subdiv_options_default(nl_subdiv_options *o);
+int nl_subdiv_plan_alloc(const nl_model *m, int dim, const size_t *n, double h, const nl_subdiv_options *o,
+                         nl_subdiv_plan **out);
+int nl_subdiv_plan_alloc_midpoint(int dim, const size_t *n, double h, int levels, double H, double sigma2,
+                                  double vscale, nl_subdiv_plan **out);
+int nl_subdiv_midpoint_hurst(const nl_model *m, int dim, double *H);
+const nl_subdiv_coeffs *nl_subdiv_plan_coeffs(const nl_subdiv_plan *p);
+void nl_subdiv_plan_info(const nl_subdiv_plan *p, nl_subdiv_info *info);
+int nl_subdiv_plan_execute(const nl_subdiv_plan *p, uint64_t seed, nl_field *f);
+int nl_subdiv_plan_execute_window(const nl_subdiv_plan *p, uint64_t seed, const long *origin, nl_field *f);
+void nl_subdiv_plan_free(nl_subdiv_plan *p);
+
+/* synth/midpoint.h, synth/faulting.h */
+int nl_midpoint_miller_default_levels(int dim, const size_t *n);
+int nl_midpoint_miller(int levels, double H, double sigma2, double vscale, uint64_t seed, nl_field *out);
+int nl_synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count);
+
+/* synth/sparse.h */
+typedef struct nl_synth_sparse_plan nl_synth_sparse_plan;
+typedef struct {
+    int radius;
+    int cell;
+    double density;
+    double kernel_energy;
+    double truncated;
+    double kurtosis;
+    double variance;
+    double mean;
+    double clamp_error;
+    size_t negatives;
+} nl_synth_sparse_info;
+int nl_synth_sparse_plan_model_flags(const nl_model *m, int dim, const double *h, int radius, int cell,
+                                     double density, unsigned flags, nl_synth_sparse_plan **out);
+int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
+                              nl_synth_sparse_plan **out);
+void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_info *info);
+int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin,
+                            nl_field *out);
+int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, int angle);
+void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p);
+
+/* synth/lattice.h */
+typedef struct {
+    int octaves;
+    double cell[16];
+    double weight[16];
+    double peak[16];
+    double leakage[16];
+    size_t negatives;
+    double clamp_error;
+} nl_synth_lattice_plan;
+int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
+                                     nl_synth_lattice_plan *p);
+int nl_synth_lattice_execute(const nl_synth_lattice_plan *p, uint64_t seed, nl_field *out);
+double nl_synth_lattice_default_cell(const size_t *n);
+int nl_synth_lattice_default_octaves(double cell0);
+int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, int clamp, double *clamp_error);
+
+typedef struct nl_synth_lattice_wiener_plan nl_synth_lattice_wiener_plan;
+typedef struct {
+    int cell;
+    size_t nodes[2];
+    double variance;
+    double mean_error;
+    double max_error;
+    int rank;
+    size_t negatives;
+} nl_synth_lattice_wiener_info;
+int nl_synth_lattice_wiener_plan_alloc(const nl_model *m, int dim, const size_t *n, int cell, unsigned flags,
+                                       nl_synth_lattice_wiener_plan **out);
+void nl_synth_lattice_wiener_plan_info(const nl_synth_lattice_wiener_plan *p, nl_synth_lattice_wiener_info *info);
+int nl_synth_lattice_wiener_execute(const nl_synth_lattice_wiener_plan *p, uint64_t seed, nl_field *out,
+                                    double **lattice);
+void nl_synth_lattice_wiener_plan_free(nl_synth_lattice_wiener_plan *p);
+
+/* synth/shape.h */
+int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical);
+
+/* analysis/acf.h, analysis/psd.h, analysis/welch.h, analysis/radial.h */
+int nl_acf_full(const nl_field *x, double mean, int unbiased, nl_field **out);
+int nl_acf_radial(const nl_field *full, size_t nbins, double *lag, double *val, size_t *cnt);
+int nl_acf_model_values(const nl_model *m, int dim, const size_t *n, const double *h, int axis, const double *lag,
+                        size_t nl, double *out);
+int nl_psd_periodogram(const nl_field *x, double mean, nl_field **out);
+int nl_psd_welch(const nl_field *x, size_t S, double mean, nl_field **out, size_t *segments);
+int nl_radial(const nl_field *g, int kind, double step, size_t nbins, double *r, double *v, size_t *cnt);
+int nl_acf_axis(const nl_field *full, int axis, size_t maxlag, double *lag, double *val);
+size_t nl_psd_profile_size(const nl_field *P);
+int nl_psd_profile(const nl_field *P, double *freq, double *val, size_t *cnt, size_t *nf);
+int nl_fftshift_alloc(const nl_field *P, nl_field **out);
+int nl_acf_centred_alloc(const nl_field *full, nl_field **out);
+
+/* core/wk.h */
+int nl_wk_sample_acf(const nl_model *m, nl_field *R);
+int nl_wk_acf_to_spectrum(const nl_field *R, nl_field *S);
+
+/* analysis/hist.h */
+typedef struct {
+    size_t n;
+    double mean;
+    double variance;
+    double skewness;
+    double kurtosis;
+    double min, max;
+} nl_moments;
+int nl_moments_compute(const nl_field *x, nl_moments *m);
+int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
+
+/* analysis/check.h */
+typedef struct {
+    int dim;
+    int spectral;
+    double scale;
+    double variance;
+    double min_spectrum;
+    double min_spectrum_k;
+    double spectrum_kmax;
+    double min_eigenvalue;
+    size_t eig_side;
+    double eig_spacing;
+    int positive_definite;
+    int why;
+    int isotropic;
+    double min_r;
+    double min_r_lag;
+    int isotropic_bound_ok;
+    int monotone_3d;
+    double line_rise_f;
+    double spectral_decay;
+    double density_decay;
+    int band_limited;
+    double band_edge;
+    int differentiable_order;
+    double r2;
+    int singular_checked;
+    double singular_below;
+} nl_check;
+int nl_check_model(const nl_model *m, int dim, nl_check *out);
+int nl_check_neighbours(const nl_model *m, const nl_check *c, char *buf, size_t size);
+
+/* analysis/nonlin.h */
+typedef struct {
+    int terms;
+    double c[64];
+    double variance;
+    double truncation;
+} nl_hermite;
+int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h);
+void nl_nonlin_output_acf(const nl_hermite *h, const double *acf, size_t n, double r0, double *out);
+
+/* analysis/krige.h */
+typedef struct nl_krige_plan nl_krige_plan;
+typedef struct {
+    size_t n;
+    double rcond;
+    int pseudo_inverse;
+    double mean;
+} nl_krige_info;
+int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
+                        double mean, int strict, nl_krige_plan **out);
+int nl_krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var);
+void nl_krige_plan_info(const nl_krige_plan *p, nl_krige_info *info);
+void nl_krige_plan_free(nl_krige_plan *p);
+
+/* core/io_points.h, analysis/variogram.h */
+typedef struct {
+    int dim;
+    size_t n;
+    double *pts;
+    double *val;
+} nl_points;
+typedef struct {
+    double width;
+    double cutoff;
+    int estimator;
+    int directional;
+    double direction;
+    double tolerance;
+} nl_variogram_options;
+void nl_variogram_options_default(nl_variogram_options *o);
+typedef struct {
+    size_t nbins;
+    double *distance;
+    double *gamma;
+    double *pairs;
+} nl_variogram;
+int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out);
+int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_variogram **out);
+void nl_variogram_free(nl_variogram *v);
+
+/* analysis/fit.h */
+typedef struct {
+    const char *family;
+    int nugget;
+    size_t nfix;
+    const char *fix_name[8];
+    double fix_value[8];
+    int weights;
+    int likelihood;
+    const double *start;
+    int intervals;
+} nl_fit_options;
+typedef struct {
+    char spec[512];
+    size_t np;
+    char name[5][8];
+    double value[5];
+    double se[5];
+    double lower[5];
+    double upper[5];
+    int fixed[5];
+    size_t nfree;
+    double objective;
+    double aic;
+    double mean;
+    size_t nobs;
+    int iterations;
+    int converged;
+} nl_fit_result;
+int nl_fit_check_options(const nl_fit_options *o, int dim);
+int nl_fit_variogram(const double *distance, const double *gamma, const double *pairs, size_t nbins, int dim,
+                     const nl_fit_options *o, nl_fit_result *res);
+int nl_fit_ml(const double *coords, const double *values, size_t n, int dim, const nl_fit_options *o,
+              nl_fit_result *res);
+"""

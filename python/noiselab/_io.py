@@ -1,0 +1,97 @@
+"""Field files and the model catalogue (core/io.h, core/model.h)."""
+import os
+
+import numpy as np
+
+from ._ffi import Error, FieldView, check, cstr, ffi, lib, owned_field
+
+# nl_meta's fields (core/io.h), in its order.
+META_KEYS = ("model", "method", "seed", "spacing", "size", "version", "flags", "origin")
+_FLT_MAX = float(np.finfo(np.float32).max)
+
+
+def read(path, meta=False):
+    """Read a field with the library's reader (nl_field_read): EXR or PNG by
+    content, else a 1D TSV table -- every format the library reads, so the
+    formats it gains later are read here unchanged.
+
+    Returns a float64 array over the library's memory (no copy) of shape
+    (n0,), (ny, nx) or (nz, ny, nx) (EXR row j is array row j; a 3D EXR
+    holds its slices one under another, noiselab.size says how).  EXR
+    samples are float32 widened exactly.  With meta=True returns (array,
+    dict): the provenance (model, method, seed, spacing, size, version,
+    flags, origin: the strings recorded; the spacing "hx[,hy[,hz]]" lists x
+    first) plus "spacing_array": the spacing in the array's axis order.
+    """
+    out = ffi.new("nl_field **")
+    m = ffi.new("nl_meta *")
+    check(lib.nl_field_read(cstr(os.fspath(path), "read: path"), out, m))
+    f = out[0]
+    spacing = tuple(float(f.h[a]) for a in reversed(range(f.dim)))
+    arr = owned_field(f)
+    if not meta:
+        return arr
+    d = {k: ffi.string(getattr(m, k)).decode("utf-8", "replace") for k in META_KEYS}
+    d["spacing_array"] = spacing
+    return arr, d
+
+
+def write(path, array, spacing=1.0, **provenance):
+    """Write a field: EXR (path ending in .exr: 32-bit float samples, rounded
+    to nearest, any dimension) or TSV (1D only), as ``noiselab synth -o``
+    chooses the writer by the extension.
+
+    array       1 to 3 axes, float64 (others converted), finite; in EXR each
+                sample must fit in float32.
+    spacing     one value or one per axis (the array's order).
+    provenance  strings stored as noiselab.* attributes (TSV: "# key: value"
+                lines): model, method, seed, flags, origin, version (default:
+                this library's); size and spacing are recorded from the
+                array and `spacing`.  E.g. ``write(p, plan(seed),
+                **plan.provenance(seed))`` writes the file noiselab synth
+                writes.
+    """
+    keys = ("model", "method", "seed", "flags", "origin", "version")
+    bad = set(provenance) - set(keys)
+    if bad:
+        raise Error("write: unknown provenance key %s (expected %s; size and spacing come from the array and "
+                    "spacing=)" % (", ".join(sorted(bad)), ", ".join(keys)))
+    p = os.fspath(path)
+    v = FieldView(array, spacing, "write")
+    f = v.f
+    m = ffi.new("nl_meta *")
+    auto = dict(version=ffi.string(lib.nl_version()).decode(),
+                size="x".join(str(int(f.n[a])) for a in range(f.dim)),
+                spacing=",".join("%.17g" % f.h[a] for a in range(f.dim)))
+    for k in META_KEYS:
+        s = provenance.get(k) if k in keys else None
+        s = auto.get(k, "") if s is None else str(s)
+        b = cstr(s, "write: " + k)
+        if len(b) >= ffi.sizeof(getattr(m, k)):
+            raise Error("write: %s: expected at most %d bytes, got %d" % (k, ffi.sizeof(getattr(m, k)) - 1, len(b)))
+        setattr(m, k, b)
+    exr = p.lower().endswith(".exr")
+    if not exr and f.dim != 1:
+        raise Error('write: TSV holds 1D fields; use .exr for a %dD field, got "%s"' % (f.dim, p))
+    if exr:
+        if lib.nl_field_check_finite(f, _FLT_MAX, ffi.NULL):
+            raise Error("write: %s of float32 EXR; %s not written"
+                        % (ffi.string(lib.nl_errmsg()).decode("utf-8", "replace"), p))
+        check(lib.nl_exr_write(cstr(p, "write: path"), f, m))
+    else:
+        check(lib.nl_tsv_write_field(cstr(p, "write: path"), f, m, ffi.NULL, ffi.NULL))
+
+
+def models():
+    """The model catalogue (``noiselab models``): a list of dicts with the
+    family's name (as written in a spec), its parameters with defaults
+    (required ones first) and its formula (R or S)."""
+    n = ffi.new("size_t *")
+    cat = lib.nl_model_catalogue(n)
+    return [dict(name=ffi.string(cat[i].name).decode(), params=ffi.string(cat[i].params).decode(),
+                 formula=ffi.string(cat[i].formula).decode()) for i in range(n[0])]
+
+
+def version():
+    """The running library's version (nl_version)."""
+    return ffi.string(lib.nl_version()).decode()

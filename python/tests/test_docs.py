@@ -1,0 +1,35 @@
+"""The Python code blocks of README.md (its "Python" section) and of
+docs/python.md run as shown (in a scratch folder).  The plotting block needs
+matplotlib, which the tests do not: it is skipped without it."""
+import os
+import re
+
+import pytest
+
+from conftest import TOP
+
+
+def blocks(page):
+    text = open(os.path.join(TOP, page)).read()
+    return re.findall(r"^```python\n(.*?)^```", text, re.S | re.M)
+
+
+def test_readme_python_example(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (code,) = blocks("README.md")
+    assert len(code.strip().splitlines()) == 5
+    exec(compile(code, "README.md", "exec"), {})
+    assert os.path.getsize("f.exr") > 0
+
+
+def test_python_page(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    errors, ensemble, plot = blocks("docs/python.md")
+    ns = {}
+    exec(compile(errors, "docs/python.md", "exec"), ns)
+    exec(compile(ensemble, "docs/python.md", "exec"), ns)
+    import numpy as np
+    assert np.max(np.abs(ns["mean"] - ns["target"]) / ns["se"]) < 5
+    pytest.importorskip("matplotlib")
+    exec(compile(plot, "docs/python.md", "exec"), ns)
+    assert os.path.getsize("acf-ensemble.png") > 0
