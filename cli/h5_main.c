@@ -18,11 +18,6 @@ static cli_h5_hooks hooks;
 int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int json);
 void cli_h5_check_memory(const cli_synth_job *job, cli_synth_run_fn run);
 
-static int h5_write(const char *path, const nl_field *f, const nl_meta *meta, int dbl)
-{
-    return nl_mpi_h5_write(path, MPI_COMM_NULL, f->dim, f->n, 0, f->n[f->dim - 1], f->data, meta, dbl, 1);
-}
-
 static int agree(int status) { return hooks.launched ? nl_mpi_agree(MPI_COMM_WORLD, status) : status; }
 
 static void finish(void)
@@ -36,7 +31,7 @@ int main(int argc, char **argv)
     int provided;
     hooks.size = 1;
     hooks.read = nl_mpi_h5_read;
-    hooks.write = h5_write;
+    hooks.write = nl_mpi_h5_write_field;
     hooks.meta = nl_mpi_h5_read_meta;
     hooks.agree = agree;
     hooks.synth = cli_h5_synth;

@@ -152,6 +152,11 @@ int nl_mpi_h5_write(const char *path, MPI_Comm comm, int dim, const size_t *n, s
     return comm != MPI_COMM_NULL ? nl_mpi_agree(comm, st) : st;
 }
 
+int nl_mpi_h5_write_field(const char *path, const nl_field *f, const nl_meta *meta, int dbl)
+{
+    return nl_mpi_h5_write(path, MPI_COMM_NULL, f->dim, f->n, 0, f->n[f->dim - 1], f->data, meta, dbl, 1);
+}
+
 int nl_mpi_h5_is_hdf5(const char *path)
 {
     static const unsigned char sig[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};

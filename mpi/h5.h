@@ -40,6 +40,10 @@
 int nl_mpi_h5_write(const char *path, MPI_Comm comm, int dim, const size_t *n, size_t s0, size_t ns,
                     const double *slab, const nl_meta *meta, int dbl, int processes);
 
+/* One process, no MPI: nl_mpi_h5_write of the whole field f (processes 1),
+ * with f's own sizes and spacing. */
+int nl_mpi_h5_write_field(const char *path, const nl_field *f, const nl_meta *meta, int dbl);
+
 /* One process: the whole field into a new *out (spacing from the
  * "spacing" attribute) and, when meta is not NULL, its provenance.
  * Samples must be finite (NL_EINPUT names the first that is not). */

@@ -58,6 +58,33 @@ def _load():
 
 lib, LIBRARY_PATH = _load()
 
+_h5 = []
+
+
+def h5lib():
+    """libnoiselab_mpi (HDF5 fields, mpi/h5.h), loaded on first use from
+    beside libnoiselab: it brings Open MPI and parallel HDF5 (about 40
+    libraries), which only .h5 files need."""
+    if not _h5:
+        ffi.cdef("""
+            int nl_mpi_h5_read(const char *path, nl_field **out, nl_meta *meta);
+            int nl_mpi_h5_write_field(const char *path, const nl_field *f, const nl_meta *meta, int dbl);
+        """)
+        d = os.path.dirname(LIBRARY_PATH)
+        names = [os.path.join(d, "libnoiselab_mpi.so")] if d else []
+        names.append("libnoiselab_mpi.so.%d" % SOVERSION)
+        errors = []
+        for path in names:
+            try:
+                _h5.append(ffi.dlopen(path))
+                _keep.append(ctypes.CDLL(path))
+                break
+            except OSError as e:
+                errors.append("%s (%s)" % (path, e))
+        if not _h5:
+            raise Error("HDF5: cannot load libnoiselab_mpi: tried " + "; ".join(errors))
+    return _h5[0]
+
 # FFTW's planner, libmatheval's parser and evaluator, and GSL's error
 # handler set-up are not thread-safe (core/fftw_plan.h, core/model.h): every
 # call that may plan or evaluate a model holds this lock.  cffi releases the

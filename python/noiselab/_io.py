@@ -3,7 +3,7 @@ import os
 
 import numpy as np
 
-from ._ffi import Error, FieldView, check, cstr, ffi, lib, owned_field
+from ._ffi import Error, FieldView, check, cstr, ffi, h5lib, lib, owned_field
 
 # nl_meta's fields (core/io.h), in its order.
 META_KEYS = ("model", "method", "seed", "spacing", "size", "version", "flags", "origin")
@@ -25,7 +25,11 @@ def read(path, meta=False):
     """
     out = ffi.new("nl_field **")
     m = ffi.new("nl_meta *")
-    check(lib.nl_field_read(cstr(os.fspath(path), "read: path"), out, m))
+    p = os.fspath(path)
+    if p.lower().endswith(".h5"):
+        check(h5lib().nl_mpi_h5_read(cstr(p, "read: path"), out, m))
+    else:
+        check(lib.nl_field_read(cstr(p, "read: path"), out, m))
     f = out[0]
     spacing = tuple(float(f.h[a]) for a in reversed(range(f.dim)))
     arr = owned_field(f)
@@ -36,10 +40,12 @@ def read(path, meta=False):
     return arr, d
 
 
-def write(path, array, spacing=1.0, **provenance):
+def write(path, array, spacing=1.0, precision="single", **provenance):
     """Write a field: EXR (path ending in .exr: 32-bit float samples, rounded
-    to nearest, any dimension) or TSV (1D only), as ``noiselab synth -o``
-    chooses the writer by the extension.
+    to nearest, any dimension), HDF5 (.h5: dataset /field, float32 or with
+    precision="double" float64, as ``noiselab synth -o OUT.h5``; through
+    libnoiselab_mpi) or TSV (1D only), as ``noiselab synth -o`` chooses the
+    writer by the extension.
 
     array       1 to 3 axes, float64 (others converted), finite; in EXR each
                 sample must fit in float32.
@@ -70,6 +76,17 @@ def write(path, array, spacing=1.0, **provenance):
         if len(b) >= ffi.sizeof(getattr(m, k)):
             raise Error("write: %s: expected at most %d bytes, got %d" % (k, ffi.sizeof(getattr(m, k)) - 1, len(b)))
         setattr(m, k, b)
+    if precision not in ("single", "double"):
+        raise Error('write: precision: expected "single" or "double", got %r' % (precision,))
+    if p.lower().endswith(".h5"):
+        dbl = precision == "double"
+        if not dbl and lib.nl_field_check_finite(f, _FLT_MAX, ffi.NULL):
+            raise Error("write: %s of float32; %s not written"
+                        % (ffi.string(lib.nl_errmsg()).decode("utf-8", "replace"), p))
+        check(h5lib().nl_mpi_h5_write_field(cstr(p, "write: path"), f, m, int(dbl)))
+        return
+    if precision != "single":
+        raise Error('write: precision="double" needs an .h5 path (EXR stores float32), got "%s"' % p)
     exr = p.lower().endswith(".exr")
     if not exr and f.dim != 1:
         raise Error('write: TSV holds 1D fields; use .exr for a %dD field, got "%s"' % (f.dim, p))
