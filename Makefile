@@ -60,6 +60,7 @@ PC_LIBDIR  = $(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))
 PC_INCLUDEDIR = $(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))
 # Public headers: every module header but the *_internal.h ones.
 PUB_HDR   := $(filter-out %_internal.h,$(wildcard core/*.h synth/*.h analysis/*.h render/*.h))
+MPI_HDR   := $(filter-out %_internal.h,$(wildcard mpi/*.h))
 # The Python package python/noiselab, for Debian's interpreter (`make python`
 # checks that it imports in the tree); installed where it looks under PREFIX.
 PYTHON    ?= /usr/bin/python3
@@ -174,8 +175,15 @@ wisdom: $(WISDOM)
 install: all $(WISDOM)
 	install -d $(DESTDIR)$(INSTALL_BINDIR) $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PCDIR) $(DESTDIR)$(MANDIR)/man1 \
 	    $(DESTDIR)$(DATADIR)/noiselab \
-	    $(DESTDIR)$(DOCDIR)/examples $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render)
+	    $(DESTDIR)$(DOCDIR)/examples $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render mpi)
 	install -m 755 $(BIN) $(DESTDIR)$(INSTALL_BINDIR)/noiselab
+	install -m 755 $(MPIBIN) $(DESTDIR)$(INSTALL_BINDIR)/noiselab-mpi
+	install -m 644 $(MPILIB) $(DESTDIR)$(LIBDIR)/libnoiselab_mpi.a
+	install -m 755 $(MPISOLIB) $(DESTDIR)$(LIBDIR)/
+	ln -sf $(notdir $(MPISOLIB)) $(DESTDIR)$(LIBDIR)/libnoiselab_mpi.so.$(MAJOR)
+	ln -sf libnoiselab_mpi.so.$(MAJOR) $(DESTDIR)$(LIBDIR)/libnoiselab_mpi.so
+	install -m 644 include/noiselab_mpi.h $(DESTDIR)$(INCLUDEDIR)/noiselab_mpi.h
+	for h in $(MPI_HDR); do install -m 644 $$h $(DESTDIR)$(INCLUDEDIR)/noiselab/$$h || exit 1; done
 	install -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libnoiselab.a
 	install -m 755 $(SOLIB) $(DESTDIR)$(LIBDIR)/
 	ln -sf $(notdir $(SOLIB)) $(DESTDIR)$(LIBDIR)/$(SONAME)
@@ -192,6 +200,10 @@ install: all $(WISDOM)
 
 # Removes exactly what install put there, then the folders it left empty.
 uninstall:
+	rm -f $(DESTDIR)$(INSTALL_BINDIR)/noiselab-mpi $(DESTDIR)$(LIBDIR)/libnoiselab_mpi.a \
+	    $(DESTDIR)$(LIBDIR)/libnoiselab_mpi.so $(DESTDIR)$(LIBDIR)/libnoiselab_mpi.so.$(MAJOR) \
+	    $(DESTDIR)$(LIBDIR)/$(notdir $(MPISOLIB)) $(DESTDIR)$(INCLUDEDIR)/noiselab_mpi.h \
+	    $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,$(MPI_HDR))
 	rm -f $(DESTDIR)$(INSTALL_BINDIR)/noiselab $(DESTDIR)$(LIBDIR)/libnoiselab.a $(DESTDIR)$(LIBDIR)/libnoiselab.so \
 	    $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/$(notdir $(SOLIB)) $(DESTDIR)$(PCDIR)/noiselab.pc \
 	    $(DESTDIR)$(MANDIR)/man1/noiselab.1 $(DESTDIR)$(INCLUDEDIR)/noiselab.h $(DESTDIR)$(DATADIR)/noiselab/fftw-wisdom \
@@ -199,7 +211,7 @@ uninstall:
 	    $(addprefix $(DESTDIR)$(DOCDIR)/examples/,$(notdir $(wildcard examples/*.c)))
 	rm -rf $(DESTDIR)$(PYDIR)/noiselab/__pycache__ $(addprefix $(DESTDIR)$(PYDIR)/noiselab/,$(notdir $(wildcard python/noiselab/*.py)))
 	rmdir $(DESTDIR)$(PYDIR)/noiselab 2>/dev/null || true
-	rmdir $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render) $(DESTDIR)$(INCLUDEDIR)/noiselab \
+	rmdir $(addprefix $(DESTDIR)$(INCLUDEDIR)/noiselab/,core synth analysis render mpi) $(DESTDIR)$(INCLUDEDIR)/noiselab \
 	    $(DESTDIR)$(DOCDIR)/examples $(DESTDIR)$(DOCDIR) $(DESTDIR)$(DATADIR)/noiselab 2>/dev/null || true
 
 # Every experiment writes its data, picture and verdict into paper-figures/.
