@@ -24,3 +24,21 @@ cat >scene.json <<'JSON'
   "sun": [0.6, 0.7, -0.4]
 }
 JSON
+# HDF5 fields: a good one, and bad ones made with h5py
+"$nl" synth fft --acf markov:scale=4 --size 64x48 --seed 1 -o f2.h5
+printf 'not an HDF5 file\n' >fake.h5
+/usr/bin/python3 - <<'PY'
+import h5py, numpy as np
+with h5py.File("nan.h5", "w") as f:
+    d = np.zeros((4, 5)); d[2, 3] = np.nan; f["field"] = d
+with h5py.File("rank4.h5", "w") as f:
+    f["field"] = np.zeros((2, 2, 2, 2))
+with h5py.File("nofield.h5", "w") as f:
+    f["other"] = np.zeros((4, 4))
+with h5py.File("badspacing.h5", "w") as f:
+    f["field"] = np.zeros((4, 4)); f["field"].attrs["spacing"] = np.bytes_("abc")
+with h5py.File("huge.h5", "w") as f:
+    f.create_dataset("field", shape=(1 << 30, 1 << 30), dtype="f4", chunks=(16, 16))
+with h5py.File("ints.h5", "w") as f:
+    f["field"] = np.arange(20, dtype=np.int32).reshape(4, 5)
+PY
