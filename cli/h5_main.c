@@ -12,6 +12,7 @@
 #include <fftw3-mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static cli_h5_hooks hooks;
 
@@ -51,5 +52,9 @@ int main(int argc, char **argv)
             return 1;
     }
     cli_h5 = &hooks;
+    if (hooks.size > 1 && argc > 1 && strcmp(argv[1], "synth") && strcmp(argv[1], "acf") && strcmp(argv[1], "psd") &&
+        strcmp(argv[1], "hist") && strcmp(argv[1], "--help") && strcmp(argv[1], "--version"))
+        cli_die(2, "%s runs on one process; under mpirun with %d processes: synth, acf, psd, hist", argv[1],
+                hooks.size);
     return cli_main(argc, argv);
 }
