@@ -5,6 +5,7 @@
 # one-process ones.  Usage: run.sh BINDIR TESTBINDIR
 set -eu
 bindir=$(cd "$1" && pwd)
+mkdir -p "$2"
 testbin=$(cd "$2" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
 # mpirun refuses root unless told; above 2 processes on 2 cores it needs
