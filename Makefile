@@ -269,7 +269,7 @@ fuzz: $(DEPS_OK)
 # Steady state: measured FFTW plans (the installed wisdom, or measured
 # here and kept in the cache); tools/bench-firstrun.sh times first runs.
 bench: $(SOLIB)
-bench: $(BIN) $(WISDOM)
+bench: $(BIN) $(MPIBIN) $(WISDOM)
 	@mkdir -p $(BUILD)/bench
 	NOISELAB_FFTW=measure NOISELAB_WISDOM=$(abspath $(WISDOM)) $(BIN) bench | tee $(BUILD)/bench/bench.tsv
 	gnuplot -e "in='$(BUILD)/bench/bench.tsv'; out='$(BUILD)/bench/bench.png'" tools/bench-plot.gp
@@ -277,6 +277,7 @@ bench: $(BIN) $(WISDOM)
 	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-gstat.sh $(BIN) $(BUILD)/bench/gstat | tee $(BUILD)/bench/bench-gstat.tsv
 	sh tools/bench-firstrun.sh $(BIN) $(abspath $(WISDOM)) $(BUILD)/bench/first | tee $(BUILD)/bench/bench-firstrun.tsv
 	NOISELAB_FFTW=measure NOISELAB_WISDOM=$(abspath $(WISDOM)) CC="$(CC)" PYTHON=$(PYTHON) sh tools/bench-python.sh $(BUILD) | tee $(BUILD)/bench/bench-python.tsv
+	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-mpi.sh $(BINDIR) $(BUILD)/bench/mpi | tee $(BUILD)/bench/bench-mpi.tsv
 	@echo "bench: $(BUILD)/bench/bench.tsv, bench.png and (with R installed) bench-r.tsv"
 
 clean:
