@@ -59,10 +59,11 @@ static int write_attrs(hid_t d, const nl_meta *meta, int processes)
         hid_t t;
         if (!*v)
             continue;
+        /* variable-length UTF-8: h5py reads them as str */
         t = H5Tcopy(H5T_C_S1);
-        bad = t < 0 || H5Tset_size(t, strlen(v) + 1) < 0 || H5Tset_strpad(t, H5T_STR_NULLTERM) < 0;
+        bad = t < 0 || H5Tset_size(t, H5T_VARIABLE) < 0 || H5Tset_cset(t, H5T_CSET_UTF8) < 0;
         if (!bad && (a = H5Acreate2(d, meta_key[k], t, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0) {
-            bad = H5Awrite(a, t, v) < 0;
+            bad = H5Awrite(a, t, &v) < 0;
             H5Aclose(a);
         } else {
             bad = 1;
@@ -176,7 +177,16 @@ static void read_attrs(hid_t d, nl_meta *meta)
         if (H5Aexists(d, meta_key[k]) <= 0 || (a = H5Aopen(d, meta_key[k], H5P_DEFAULT)) < 0)
             continue;
         t = H5Aget_type(a);
-        if (t >= 0 && H5Tget_class(t) == H5T_STRING && !H5Tis_variable_str(t) && H5Tget_size(t) < meta_len(k)) {
+        if (t >= 0 && H5Tget_class(t) == H5T_STRING && H5Tis_variable_str(t) > 0) {
+            char *s = NULL, *v = meta_field(meta, k);
+            mt = H5Tcopy(H5T_C_S1);
+            H5Tset_size(mt, H5T_VARIABLE);
+            H5Tset_cset(mt, H5Tget_cset(t));
+            if (H5Aread(a, mt, &s) >= 0 && s)
+                snprintf(v, meta_len(k), "%s", s);
+            H5free_memory(s);
+            H5Tclose(mt);
+        } else if (t >= 0 && H5Tget_class(t) == H5T_STRING && H5Tget_size(t) < meta_len(k)) {
             char *v = meta_field(meta, k);
             mt = H5Tcopy(t);
             H5Tset_size(mt, meta_len(k) - 1);
