@@ -5,7 +5,7 @@
  * (n2, n1, n0) in 3D (h5py's f["field"][z, y, x] is sample (x, y, z), as the
  * EXR's rows); IEEE float32 little-endian by default (each double rounded
  * to nearest, the same values as the EXR writer stores), float64 with
- * `dbl`.  Provenance: string attributes of /field named as the nl_meta
+ * `dbl`.  Provenance: variable-length UTF-8 string attributes of /field named as the nl_meta
  * fields (model, method, seed, spacing, size, version, flags, origin; empty
  * ones are not written) and an integer attribute "processes", the number of
  * processes that wrote it.  Spacing is read back from "spacing" (unit when
