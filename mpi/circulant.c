@@ -14,6 +14,8 @@ struct nl_mpi_circulant_plan {
     int dim;                /* 2 or 3 */
     size_t n[3];            /* output grid */
     size_t m[3];            /* embedding */
+    double h[3];            /* spacing */
+    const nl_model *model;  /* while planning only (not kept) */
     nl_mpi_fft_plan *fft;   /* the embedding's synthesis */
     nl_synth_circulant_info info;
 };
@@ -26,58 +28,38 @@ void nl_mpi_circulant_plan_free(nl_mpi_circulant_plan *p)
     free(p);
 }
 
-/* The embedding of nl_synth_circulant_plan_alloc, doubled while clamping
- * would be needed (every process decides alike: the plan's sums are
- * reduced). */
+/* The distributed plan of an embedding (nl_synth_circulant_try_fn). */
+static int try_mpi(void *ctx, const size_t *mm, nl_synth_fft_info *fi)
+{
+    nl_mpi_circulant_plan *p = ctx;
+    int st;
+    nl_mpi_fft_plan_free(p->fft);
+    p->fft = NULL;
+    if ((st = nl_mpi_fft_plan_alloc(p->comm, p->model, p->dim, mm, p->h, NL_SYNTH_FFT_CLAMP, &p->fft)))
+        return st;
+    nl_mpi_fft_plan_info(p->fft, fi);
+    memcpy(p->m, mm, sizeof p->m);
+    return NL_OK;
+}
+
+/* The embedding of nl_synth_circulant_plan_alloc: every process decides
+ * alike, the plans' sums being reduced over all of them. */
 int nl_mpi_circulant_plan_alloc(MPI_Comm comm, const nl_model *m, int dim, const size_t *n, const double *h,
                                 unsigned flags, int max_factor, nl_mpi_circulant_plan **out)
 {
     nl_mpi_circulant_plan *p = calloc(1, sizeof *p);
-    size_t mm[3] = {1, 1, 1};
-    double cell = 1;
     int st = p ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory");
     *out = NULL;
     if ((st = nl_mpi_agree(comm, st)))
         return st;
-    p->comm = comm, p->dim = dim;
+    p->comm = comm, p->dim = dim, p->model = m;
     for (int a = 0; a < 3; a++) {
         p->n[a] = a < dim ? n[a] : 1;
-        cell *= a < dim && h ? h[a] : 1;
-        if (a < dim)
-            mm[a] = nl_synth_circulant_size(n[a]);
+        p->h[a] = a < dim && h ? h[a] : 1;
+        p->m[a] = 1;
     }
-    for (;;) {
-        nl_synth_fft_info fi;
-        if ((st = nl_mpi_fft_plan_alloc(comm, m, dim, mm, h, NL_SYNTH_FFT_CLAMP, &p->fft)))
-            break;
-        nl_mpi_fft_plan_info(p->fft, &fi);
-        p->info.min_eigenvalue = fi.min_lambda / cell;
-        p->info.max_eigenvalue = fi.max_lambda / cell;
-        p->info.clamp_error = fi.clamp_error;
-        memcpy(p->info.m, mm, sizeof mm);
-        if (fi.clamp_error <= NL_SYNTH_FFT_CLAMP_TOL)
-            break;
-        int grow = 1;
-        for (int a = 0; a < dim; a++)
-            if (2 * mm[a] > (size_t)max_factor * p->n[a])
-                grow = 0;
-        if (!grow) {
-            if (!(flags & NL_SYNTH_FFT_CLAMP))
-                st = nl_synth_circulant_refuse(m, &p->info, mm);
-            break;
-        }
-        nl_mpi_fft_plan_free(p->fft);
-        p->fft = NULL;
-        for (int a = 0; a < dim; a++)
-            mm[a] *= 2;
-        p->info.doublings++;
-    }
-    memcpy(p->m, mm, sizeof mm);
-    if (!st) {
-        nl_synth_fft_info fi;
-        nl_mpi_fft_plan_info(p->fft, &fi);
-        p->info.variance_loss = nl_synth_circulant_loss(m, dim, fi.variance);
-    }
+    st = nl_synth_circulant_embed(m, dim, p->n, p->h, flags, max_factor, try_mpi, p, &p->info);
+    p->model = NULL;
     if (st) {
         nl_mpi_circulant_plan_free(p);
         return st;

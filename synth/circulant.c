@@ -12,6 +12,7 @@ struct nl_synth_circulant_plan {
     double h[3];             /* spacing */
     nl_synth_fft_plan *fft;     /* periodic synthesis on the embedding */
     size_t m[3];             /* embedding size */
+    const nl_model *model;   /* while planning only (not kept) */
     nl_synth_circulant_info info;
 };
 
@@ -57,11 +58,60 @@ void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p)
     free(p);
 }
 
+int nl_synth_circulant_embed(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                             int max_factor, nl_synth_circulant_try_fn *try_plan, void *ctx,
+                             nl_synth_circulant_info *info)
+{
+    size_t mm[3] = {1, 1, 1};
+    double cell = 1;
+    int st;
+    memset(info, 0, sizeof *info);
+    for (int a = 0; a < dim; a++) {
+        cell *= h ? h[a] : 1;
+        mm[a] = nl_synth_circulant_size(n[a]);
+    }
+    for (;;) {
+        nl_synth_fft_info fi;
+        if ((st = try_plan(ctx, mm, &fi)))
+            return st;
+        info->min_eigenvalue = fi.min_lambda / cell;
+        info->max_eigenvalue = fi.max_lambda / cell;
+        info->clamp_error = fi.clamp_error;
+        memcpy(info->m, mm, sizeof mm);
+        info->variance_loss = nl_synth_circulant_loss(m, dim, fi.variance);
+        if (fi.clamp_error <= NL_SYNTH_FFT_CLAMP_TOL)
+            return NL_OK;
+        int grow = 1;
+        for (int a = 0; a < dim; a++)
+            if (2 * mm[a] > (size_t)max_factor * n[a])
+                grow = 0;
+        if (!grow)
+            return flags & NL_SYNTH_FFT_CLAMP ? NL_OK : nl_synth_circulant_refuse(m, info, mm);
+        for (int a = 0; a < dim; a++)
+            mm[a] *= 2;
+        info->doublings++;
+    }
+}
+
+/* The one-process plan of an embedding (nl_synth_circulant_try_fn), the
+ * previous one freed. */
+static int try_serial(void *ctx, const size_t *mm, nl_synth_fft_info *fi)
+{
+    nl_synth_circulant_plan *p = ctx;
+    int st;
+    nl_synth_fft_plan_free(p->fft);
+    p->fft = NULL;
+    if ((st = nl_synth_fft_plan_alloc(p->model, p->dim, mm, p->h, NL_SYNTH_FFT_CLAMP, &p->fft)))
+        return st;
+    nl_synth_fft_plan_info(p->fft, fi);
+    memcpy(p->m, mm, sizeof p->m);
+    return NL_OK;
+}
+
 int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
                                int max_factor, nl_synth_circulant_plan **out)
 {
     nl_synth_circulant_plan *p;
-    size_t mm[3] = {1, 1, 1};
     int st;
     *out = NULL;
     if (dim < 1 || dim > 3)
@@ -70,46 +120,14 @@ int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, c
     if (!p)
         return NL_ERROR(NL_ENOMEM, "out of memory");
     p->dim = dim;
+    p->model = m;
     for (int a = 0; a < 3; a++) {
         p->n[a] = a < dim ? n[a] : 1;
         p->h[a] = a < dim && h ? h[a] : 1;
-        if (a < dim)
-            mm[a] = nl_synth_circulant_size(n[a]);
+        p->m[a] = 1;
     }
-    for (;;) {
-        nl_synth_fft_info fi;
-        st = nl_synth_fft_plan_alloc(m, dim, mm, p->h, NL_SYNTH_FFT_CLAMP, &p->fft);
-        if (st)
-            break;
-        nl_synth_fft_plan_info(p->fft, &fi);
-        p->info.min_eigenvalue = fi.min_lambda / (p->h[0] * p->h[1] * p->h[2]);
-        p->info.max_eigenvalue = fi.max_lambda / (p->h[0] * p->h[1] * p->h[2]);
-        p->info.clamp_error = fi.clamp_error;
-        memcpy(p->info.m, mm, sizeof mm);
-        if (fi.clamp_error <= NL_SYNTH_FFT_CLAMP_TOL)
-            break;
-        int grow = 1;
-        for (int a = 0; a < dim; a++)
-            if (2 * mm[a] > (size_t)max_factor * p->n[a])
-                grow = 0;
-        if (!grow) {
-            if (!(flags & NL_SYNTH_FFT_CLAMP))
-                st = nl_synth_circulant_refuse(m, &p->info, mm);
-            break;
-        }
-        nl_synth_fft_plan_free(p->fft);
-        p->fft = NULL;
-        for (int a = 0; a < dim; a++)
-            mm[a] *= 2;
-        p->info.doublings++;
-    }
-    memcpy(p->m, mm, sizeof mm);
-    if (!st)
-    {
-        nl_synth_fft_info fi;
-        nl_synth_fft_plan_info(p->fft, &fi);
-        p->info.variance_loss = nl_synth_circulant_loss(m, dim, fi.variance);
-    }
+    st = nl_synth_circulant_embed(m, dim, p->n, p->h, flags, max_factor, try_serial, p, &p->info);
+    p->model = NULL;
     if (st) {
         nl_synth_circulant_plan_free(p);
         return st;

@@ -77,6 +77,19 @@ int nl_synth_circulant_execute(const nl_synth_circulant_plan *p, uint64_t seed, 
  * not be doubled further (info's eigenvalues, doublings, clamp_error).
  * Pure. */
 size_t nl_synth_circulant_size(size_t n);
+
+/* The embedding search both plans share: from nl_synth_circulant_size per
+ * axis, try_plan(ctx, m, &fi) plans periodic synthesis of the model on m
+ * (clamping allowed: NL_SYNTH_FFT_CLAMP) and reports its info, keeping
+ * the plan in ctx (freeing the previous one); m is doubled while clamping
+ * would change the covariance by more than NL_SYNTH_FFT_CLAMP_TOL and
+ * every axis stays within max_factor n.  Fills *info.  NL_OK (the last
+ * plan is the one to use), try_plan's status, or the NL_ENOTPD refusal
+ * (unless flags holds NL_SYNTH_FFT_CLAMP). */
+typedef int nl_synth_circulant_try_fn(void *ctx, const size_t *m, nl_synth_fft_info *fi);
+int nl_synth_circulant_embed(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
+                             int max_factor, nl_synth_circulant_try_fn *try_plan, void *ctx,
+                             nl_synth_circulant_info *info);
 double nl_synth_circulant_loss(const nl_model *m, int dim, double variance);
 int nl_synth_circulant_refuse(const nl_model *m, const nl_synth_circulant_info *info, const size_t *mm);
 
