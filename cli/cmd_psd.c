@@ -1,5 +1,6 @@
 /* noiselab psd: estimate the power spectral density of a field. */
 #include "cli.h"
+#include "dist_inputs.h"
 #include "inputs.h"
 #include "../analysis/ensemble.h"
 #include "../analysis/fftshift.h"
@@ -249,6 +250,42 @@ static void ensemble(psd_opts *o, const nl_field *x0, nl_field *P, psd_table *t,
     free(rows);
 }
 
+/* Under an MPI launcher with one .h5 input: the periodogram's profile
+ * (and sectors) over every process's slab (cli/dist_inputs.h); rank 0
+ * writes it.  What needs the whole spectrum on one process is refused. */
+static int distributed(psd_opts *o)
+{
+    cli_slab s;
+    nl_field hdr;
+    psd_table t = {0};
+    size_t maxn;
+    int st = NL_OK;
+    if (o->welch || o->preview || o->target || (o->out && cli_has_ext(o->out, ".exr")))
+        cli_dist_refuse("psd", o->welch ? "--welch" : o->preview ? "--preview" : o->target ? "--target" : "-o OUT.exr");
+    cli_dist_read(&o->src, &s, &hdr);
+    if (o->angular && hdr.dim != 2)
+        cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o->src.files[0], hdr.dim);
+    if (o->slope && hdr.dim != 1)
+        cli_dist_refuse("psd", "--slope on a 2D or 3D field");
+    maxn = hdr.n[0] + hdr.n[1] + hdr.n[2];
+    t.freq = cli_malloc(maxn * sizeof *t.freq), t.val = cli_malloc(maxn * sizeof *t.val);
+    cli_dist_check(&o->src, cli_h5->psd(&s, o->mean, t.freq, t.val, &t.nf, 18, 0.05, 0.45,
+                                        o->angular ? o->sector : NULL, &o->aniso));
+    cli_dist_free(&s);
+    if (cli_dist_leader()) {
+        o->tmp = cli_out_begin(o->out);
+        if (o->slope && (st = nl_psd_slope(t.freq, t.val, t.nf, o->f1, o->f2, 1, &o->sl)) == NL_OK &&
+            !(isfinite(o->sl.slope) && isfinite(o->sl.ci95)))
+            st = NL_ERROR(NL_EINVAL, "the fit is undefined (slope %g +- %g); expected a band where the periodogram "
+                          "varies", o->sl.slope, o->sl.ci95);
+        if (o->slope && st)
+            cli_die(nl_error_is_input(st) ? 2 : 1, "--slope %g:%g: %s", o->f1, o->f2, nl_errmsg());
+        output(o, hdr.dim, &t);
+    }
+    free(t.freq), free(t.val);
+    return 0;
+}
+
 int cli_cmd_psd(int argc, char **argv)
 {
     psd_opts o = {0};
@@ -258,6 +295,8 @@ int cli_cmd_psd(int argc, char **argv)
     int st;
 
     parse(argc, argv, &o);
+    if (cli_dist_wanted(&o.src))
+        return distributed(&o);
     x = cli_inputs_read(&o.src, 0, NULL);
     if ((o.angular || o.preview || (o.out && cli_has_ext(o.out, ".exr"))) && x->dim != 2)
         cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", cli_inputs_name(&o.src, 0), x->dim);

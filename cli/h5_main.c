@@ -4,6 +4,7 @@
  * /dev/null), and errors are agreed on first, so every process stops
  * together with rank 0 telling why. */
 #include "cli.h"
+#include "h5_analysis.h"
 #include "../mpi/dist.h"
 #include "../mpi/h5.h"
 
@@ -34,6 +35,7 @@ int main(int argc, char **argv)
     hooks.write = h5_write;
     hooks.meta = nl_mpi_h5_read_meta;
     hooks.agree = agree;
+    cli_h5_analysis_hooks(&hooks);
     if (cli_mpi_launched()) {
         if (MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
             fprintf(stderr, "noiselab: MPI could not start\n");
