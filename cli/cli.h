@@ -3,6 +3,7 @@
 #define NL_CLI_H
 
 #include "../analysis/hist.h"
+#include "../analysis/slope.h"
 #include "../core/field.h"
 #include "../core/io.h"
 
@@ -182,7 +183,7 @@ typedef struct {
     int (*acf)(const cli_slab *s, double mean, int unbiased, int radial, int axis, size_t nl, double *lag,
                double *val);
     int (*psd)(const cli_slab *s, double mean, double *freq, double *val, size_t *nf, size_t nsec, double flo,
-               double fhi, double *sector, double *aniso);
+               double fhi, double *sector, double *aniso, const double *band, nl_slope *sl);
     int (*hist)(const cli_slab *s, size_t bins, nl_moments *m, double *edges, double *counts);
 } cli_h5_hooks;
 extern const cli_h5_hooks *cli_h5;

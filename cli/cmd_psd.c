@@ -259,25 +259,29 @@ static int distributed(psd_opts *o)
     nl_field hdr;
     psd_table t = {0};
     size_t maxn;
-    int st = NL_OK;
+    char msg[512];
+    int st;
     if (o->welch || o->preview || o->target || (o->out && cli_has_ext(o->out, ".exr")))
         cli_dist_refuse("psd", o->welch ? "--welch" : o->preview ? "--preview" : o->target ? "--target" : "-o OUT.exr");
     cli_dist_read(&o->src, &s, &hdr);
     if (o->angular && hdr.dim != 2)
         cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o->src.files[0], hdr.dim);
-    if (o->slope && hdr.dim != 1)
-        cli_dist_refuse("psd", "--slope on a 2D or 3D field");
     maxn = hdr.n[0] + hdr.n[1] + hdr.n[2];
     t.freq = cli_malloc(maxn * sizeof *t.freq), t.val = cli_malloc(maxn * sizeof *t.val);
-    cli_dist_check(&o->src, cli_h5->psd(&s, o->mean, t.freq, t.val, &t.nf, 18, 0.05, 0.45,
-                                        o->angular ? o->sector : NULL, &o->aniso));
+    st = cli_h5->psd(&s, o->mean, t.freq, t.val, &t.nf, 18, 0.05, 0.45, o->angular ? o->sector : NULL, &o->aniso,
+                     o->slope ? (double[]){o->f1, o->f2} : NULL, &o->sl);
+    snprintf(msg, sizeof msg, "%s", nl_errmsg());
+    /* as one process: the estimate's failure names the file, the fit's --slope */
+    cli_dist_check(&o->src, st && o->slope ? cli_h5->psd(&s, o->mean, t.freq, t.val, &t.nf, 0, 0, 0, NULL, NULL,
+                                                         NULL, NULL) : st);
     cli_dist_free(&s);
     if (cli_dist_leader()) {
         o->tmp = cli_out_begin(o->out);
-        if (o->slope && (st = nl_psd_slope(t.freq, t.val, t.nf, o->f1, o->f2, 1, &o->sl)) == NL_OK &&
-            !(isfinite(o->sl.slope) && isfinite(o->sl.ci95)))
+        if (o->slope && st == NL_OK && !(isfinite(o->sl.slope) && isfinite(o->sl.ci95)))
             st = NL_ERROR(NL_EINVAL, "the fit is undefined (slope %g +- %g); expected a band where the periodogram "
                           "varies", o->sl.slope, o->sl.ci95);
+        else if (o->slope && st)
+            nl_error_set(st, __FILE__, __LINE__, "%s", msg);
         if (o->slope && st)
             cli_die(nl_error_is_input(st) ? 2 : 1, "--slope %g:%g: %s", o->f1, o->f2, nl_errmsg());
         output(o, hdr.dim, &t);

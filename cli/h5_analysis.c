@@ -48,13 +48,20 @@ static int acf(const cli_slab *s, double mean, int unbiased, int radial, int axi
 }
 
 static int psd(const cli_slab *s, double mean, double *freq, double *val, size_t *nf, size_t nsec, double flo,
-               double fhi, double *sector, double *aniso)
+               double fhi, double *sector, double *aniso, const double *band, nl_slope *sl)
 {
     nl_mpi_slab x = slab_of(s);
+    nl_mpi_psd_more more = {.nsec = nsec, .flo = flo, .fhi = fhi, .sector = sector, .slope = band != NULL};
     size_t *cnt = malloc(nl_mpi_psd_profile_size(s->dim, s->n, s->h) * sizeof *cnt);
     int st = nl_mpi_agree(MPI_COMM_WORLD, cnt ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory for the profile"));
+    if (band)
+        more.fmin = band[0], more.fmax = band[1];
     if (!st)
-        st = nl_mpi_psd(&x, mean, freq, val, cnt, nf, nsec, flo, fhi, sector, aniso);
+        st = nl_mpi_psd(&x, mean, freq, val, cnt, nf, &more);
+    if (!st && sector)
+        *aniso = more.aniso;
+    if (!st && band)
+        *sl = more.sl;
     free(cnt);
     return st;
 }

@@ -35,6 +35,7 @@
 #define NL_MPI_ANALYSIS_H
 
 #include "../analysis/hist.h"
+#include "../analysis/slope.h"
 
 #include <mpi.h>
 #include <stddef.h>
@@ -65,15 +66,30 @@ int nl_mpi_acf_axis(const nl_mpi_slab *x, double mean, int unbiased, int axis, s
 int nl_mpi_acf_radial(const nl_mpi_slab *x, double mean, int unbiased, size_t nbins, double *lag, double *val,
                       size_t *cnt);
 
+/* What nl_mpi_psd may add to the profile (NULL: nothing). */
+typedef struct {
+    /* 2D: the nsec angular sectors of nl_psd_sectors over flo <= |f| <= fhi
+     * cycles per sample into sector[0..nsec-1] and their max/min into
+     * aniso, when sector is not NULL */
+    size_t nsec;
+    double flo, fhi, *sector, aniso;
+    /* when slope is set: the fit of log P on log |f| over fmin <= |f| <=
+     * fmax into sl, as nl_psd_slope on the 1D half spectrum (E = 1) or
+     * nl_psd_slope_grid on a 2D/3D periodogram (every ordinate, each
+     * Hermitian pair once) */
+    int slope;
+    double fmin, fmax;
+    nl_slope sl;
+} nl_mpi_psd_more;
+
 /* The periodogram of analysis/psd.h (about mean, NAN: the sample mean) as
  * the profile of nl_psd_profile (1D: the half spectrum; 2D/3D: the radial
  * average): freq, val and cnt hold nl_mpi_psd_profile_size entries, *nf
- * receives their number.  When sector is not NULL (2D only) the 2D
- * spectrum's nsec angular sectors of nl_psd_sectors over flo <= |f| <= fhi
- * cycles per sample go to sector[0..nsec-1] and their max/min to *aniso.
- * Codes as nl_mpi_acf_axis (NL_EINVAL also for sectors of a field not 2D). */
-int nl_mpi_psd(const nl_mpi_slab *x, double mean, double *freq, double *val, size_t *cnt, size_t *nf, size_t nsec,
-               double flo, double fhi, double *sector, double *aniso);
+ * receives their number; and what `more` asks for.  Codes as
+ * nl_mpi_acf_axis; NL_EINVAL also for sectors of a field not 2D and for a
+ * slope band holding fewer than 3 ordinates (as nl_psd_slope). */
+int nl_mpi_psd(const nl_mpi_slab *x, double mean, double *freq, double *val, size_t *cnt, size_t *nf,
+               nl_mpi_psd_more *more);
 
 /* nl_psd_profile_size for a field of dim, n[0..dim-1], h.  Pure. */
 size_t nl_mpi_psd_profile_size(int dim, const size_t *n, const double *h);

@@ -5,9 +5,11 @@
 #include "dist.h"
 #include "../analysis/psd.h"
 #include "../analysis/spectral.h"
+#include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 
+#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -26,6 +28,9 @@ typedef struct {
     size_t nf, nsec;
     double *r, *v, flo, fhi, *sec;
     unsigned long long *c;  /* nf radial counts, then nsec sector counts */
+    int slope;              /* the slope's points: log |f|, log P of this process's ordinates */
+    double fmin, fmax, *lx, *ly;
+    size_t m;
 } psd_sums;
 
 /* One ordinate of the full grid, as nl_radial and nl_psd_sectors see it. */
@@ -52,6 +57,55 @@ static void visit(psd_sums *s, const size_t *idx, double val)
     }
 }
 
+/* A point of the log-periodogram regression, as nl_psd_slope_grid takes it. */
+static void slope_point(psd_sums *s, const size_t *idx, double v)
+{
+    const size_t *n = s->x->n;
+    const double *h = s->x->h;
+    double fx = (double)nl_wrap(idx[0], n[0]) / ((double)n[0] * h[0]);
+    double fy = (double)nl_wrap(idx[1], n[1]) / ((double)n[1] * h[1]);
+    double fz = (double)nl_wrap(idx[2], n[2]) / ((double)n[2] * h[2]);
+    double f = sqrt(fx * fx + fy * fy + fz * fz);
+    if (f < s->fmin || f > s->fmax || f <= 0 || !(v > 0) || !isfinite(v))
+        return;
+    s->lx[s->m] = log(f), s->ly[s->m++] = log(v);
+}
+
+/* Least squares of ly on lx over every process's points, as gsl_fit_linear
+ * (centred sums), with the 95% interval and eq. (16) of analysis/slope.c. */
+static int slope_fit(const psd_sums *s, nl_slope *out)
+{
+    unsigned long long m = s->m;
+    double a[3] = {0, 0, 0}, xm, ym, c0, c1, cov11;
+    int E = s->x->dim, bad = MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, s->x->comm);
+    for (size_t i = 0; i < s->m; i++)
+        a[0] += s->lx[i], a[1] += s->ly[i];
+    bad |= MPI_Allreduce(MPI_IN_PLACE, a, 2, MPI_DOUBLE, MPI_SUM, s->x->comm);
+    if (bad != MPI_SUCCESS)
+        return NL_ERROR(NL_EFAIL, "MPI: summing the slope's points failed");
+    if (m < 3)
+        return NL_ERROR(NL_EINVAL, "slope: expected at least 3 frequencies in the band, got %llu", m);
+    xm = a[0] / (double)m, ym = a[1] / (double)m, a[0] = a[1] = 0;
+    for (size_t i = 0; i < s->m; i++)
+        a[0] += (s->lx[i] - xm) * (s->lx[i] - xm), a[1] += (s->lx[i] - xm) * (s->ly[i] - ym);
+    bad |= MPI_Allreduce(MPI_IN_PLACE, a, 2, MPI_DOUBLE, MPI_SUM, s->x->comm);
+    c1 = a[1] / a[0], c0 = ym - c1 * xm;
+    for (size_t i = 0; i < s->m; i++) {
+        double r = s->ly[i] - (c0 + c1 * s->lx[i]);
+        a[2] += r * r;
+    }
+    bad |= MPI_Allreduce(MPI_IN_PLACE, a + 2, 1, MPI_DOUBLE, MPI_SUM, s->x->comm);
+    if (bad != MPI_SUCCESS)
+        return NL_ERROR(NL_EFAIL, "MPI: summing the slope's points failed");
+    cov11 = a[2] / (double)(m - 2) / a[0];
+    out->slope = c1, out->points = (size_t)m;
+    nl_gsl_enter();
+    out->ci95 = gsl_cdf_tdist_Qinv(0.025, (double)(m - 2)) * sqrt(cov11);
+    nl_gsl_leave();
+    out->fractal_dim = E + (3 - (-c1 - (E - 1))) / 2;
+    return NL_OK;
+}
+
 /* Every ordinate of the transposed half spectrum here, and its mirror
  * P(-k) = P(k) where that lies in the other half. */
 static void visit_half(psd_sums *s, const nl_mpi_grid *G)
@@ -72,6 +126,10 @@ static void visit_half(psd_sums *s, const nl_mpi_grid *G)
             mir[0] = (n[0] - idx[0]) % n[0], mir[1] = (n[1] - idx[1]) % n[1], mir[2] = (n[2] - idx[2]) % n[2];
             if (mir[0] != idx[0])
                 visit(s, mir, v);
+            /* the slope takes each pair once: the half's ordinate, or of a
+             * pair inside the half (x frequency 0 or Nyquist) the first */
+            if (s->slope && (mir[0] != idx[0] || idx[2] * n[1] + idx[1] <= mir[2] * n[1] + mir[1]))
+                slope_point(s, idx, v);
         }
 }
 
@@ -101,7 +159,8 @@ static int finish(psd_sums *s, double *freq, double *val, size_t *cnt, double *a
 }
 
 /* 1D: the series on every process, the one-process periodogram. */
-static int psd_1d(const nl_mpi_slab *x, double mean, double *freq, double *val, size_t *cnt, size_t *nf)
+static int psd_1d(const nl_mpi_slab *x, double mean, double *freq, double *val, size_t *cnt, size_t *nf,
+                  nl_mpi_psd_more *more)
 {
     nl_field *f, *P = NULL;
     int st = nl_mpi_gather_1d(x, &f);
@@ -109,34 +168,63 @@ static int psd_1d(const nl_mpi_slab *x, double mean, double *freq, double *val, 
         return st;
     if (!(st = nl_psd_periodogram(f, mean, &P)))
         st = nl_psd_profile(P, freq, val, cnt, nf);
+    if (!st && more && more->slope) /* as noiselab psd fits a 1D spectrum */
+        st = nl_psd_slope(freq, val, *nf, more->fmin, more->fmax, 1, &more->sl);
     nl_field_free(P), nl_field_free(f);
     return nl_mpi_agree(x->comm, st);
 }
 
-static int check_args(const nl_mpi_slab *x, size_t nsec, double flo, double fhi, const double *sector)
+static int check_args(const nl_mpi_slab *x, const nl_mpi_psd_more *o)
 {
     int st = nl_mpi_slab_check(x);
     if (st)
         return st;
-    if (sector && (x->dim != 2 || nsec == 0 || nsec > 1u << 20 || !(flo >= 0 && fhi >= flo)))
+    if (o && o->sector && (x->dim != 2 || o->nsec == 0 || o->nsec > 1u << 20 || !(o->flo >= 0 && o->fhi >= o->flo)))
         st = NL_ERROR(NL_EINVAL, "sectors: expected a 2D spectrum, 1 to 2^20 sectors and 0 <= fmin <= fmax, got "
-                      "%dD, %zu, %g, %g", x->dim, nsec, flo, fhi);
+                      "%dD, %zu, %g, %g", x->dim, o->nsec, o->flo, o->fhi);
     return nl_mpi_agree(x->comm, st);
 }
 
-int nl_mpi_psd(const nl_mpi_slab *x, double mean, double *freq, double *val, size_t *cnt, size_t *nf, size_t nsec,
-               double flo, double fhi, double *sector, double *aniso)
+/* The transform, the visit of its half spectrum, and the sums. */
+static int transform(psd_sums *s, double m, double *freq, double *val, size_t *cnt, nl_mpi_psd_more *more)
 {
-    psd_sums s = {.x = x, .step = INFINITY, .nsec = sector ? nsec : 0, .flo = flo, .fhi = fhi, .sec = sector};
     nl_mpi_grid G;
+    size_t pts;
+    int st = nl_mpi_grid_alloc(s->x->comm, s->x->dim, s->x->n, 0, &G);
+    if (st)
+        return st;
+    /* the ordinates here: ln1 lines of the transposed half spectrum (visit_half) */
+    pts = s->slope ? (size_t)G.ln1 * (s->x->dim == 3 ? s->x->n[2] * (s->x->n[0] / 2 + 1) : s->x->n[1]) + 1 : 1;
+    s->lx = malloc(pts * sizeof *s->lx), s->ly = malloc(pts * sizeof *s->ly);
+    st = s->lx && s->ly ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory for the slope's %zu points", pts);
+    if (!(st = nl_mpi_agree(s->x->comm, st)) && !(st = nl_mpi_grid_fill(s->x, m, &G))) {
+        fftw_execute(G.fwd);
+        visit_half(s, &G);
+        st = finish(s, freq, val, cnt, more ? &more->aniso : NULL);
+        if (!st && s->slope)
+            st = nl_mpi_agree(s->x->comm, slope_fit(s, &more->sl));
+    }
+    free(s->lx), free(s->ly);
+    nl_mpi_grid_free(&G);
+    return st;
+}
+
+int nl_mpi_psd(const nl_mpi_slab *x, double mean, double *freq, double *val, size_t *cnt, size_t *nf,
+               nl_mpi_psd_more *more)
+{
+    psd_sums s = {.x = x, .step = INFINITY};
     double m;
-    int st = check_args(x, nsec, flo, fhi, sector);
+    int st = check_args(x, more);
     if (st)
         return st;
     if (x->dim == 1)
-        return psd_1d(x, mean, freq, val, cnt, nf);
+        return psd_1d(x, mean, freq, val, cnt, nf, more);
     if ((st = nl_mpi_agree(x->comm, nl_mpi_check_range(x, mean, 1, &m))))
         return st;
+    if (more && more->sector)
+        s.nsec = more->nsec, s.flo = more->flo, s.fhi = more->fhi, s.sec = more->sector;
+    if (more && more->slope)
+        s.slope = 1, s.fmin = more->fmin, s.fmax = more->fmax;
     for (int a = 0; a < x->dim; a++) { /* the bins of analysis/spectral.c */
         s.unit[a] = 1.0 / ((double)x->n[a] * x->h[a]);
         s.step = fmin(s.step, s.unit[a]);
@@ -146,18 +234,10 @@ int nl_mpi_psd(const nl_mpi_slab *x, double mean, double *freq, double *val, siz
     for (size_t b = 0; b < s.nf; b++)
         freq[b] = val[b] = 0;
     for (size_t b = 0; b < s.nsec; b++)
-        sector[b] = 0;
+        s.sec[b] = 0;
     s.c = calloc(s.nf + s.nsec, sizeof *s.c);
-    if ((st = nl_mpi_agree(x->comm, s.c ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory for %zu bins", s.nf))))
-        return st;
-    if (!(st = nl_mpi_grid_alloc(x->comm, x->dim, x->n, 0, &G))) {
-        if (!(st = nl_mpi_grid_fill(x, m, &G))) {
-            fftw_execute(G.fwd);
-            visit_half(&s, &G);
-            st = finish(&s, freq, val, cnt, aniso);
-        }
-        nl_mpi_grid_free(&G);
-    }
+    if (!(st = nl_mpi_agree(x->comm, s.c ? NL_OK : NL_ERROR(NL_ENOMEM, "out of memory for %zu bins", s.nf))))
+        st = transform(&s, m, freq, val, cnt, more);
     free(s.c);
     return st;
 }

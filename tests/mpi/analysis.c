@@ -12,6 +12,7 @@
 #include "../../mpi/dist.h"
 #include "../../analysis/acf.h"
 #include "../../analysis/psd.h"
+#include "../../analysis/slope.h"
 #include "../../analysis/spectral.h"
 #include "../../core/nl_error.h"
 #include "../../synth/fft.h"
@@ -74,14 +75,19 @@ static nl_field *make_field(int dim, const size_t *n, const double *h, double of
     nl_synth_fft_plan *p;
     int st;
     nl_field *f = nl_field_alloc(dim, n, h, &st);
-    if (!f || nl_model_parse("gauss:scale=2", &m) ||
+    if (!f || nl_model_parse("markov:scale=2", &m) ||
         nl_synth_fft_plan_alloc(m, dim, n, h, NL_SYNTH_FFT_CLAMP, &p) || nl_synth_fft_execute(p, seed, f)) {
         fprintf(stderr, "test field: %s\n", nl_errmsg());
         exit(1);
     }
     nl_synth_fft_plan_free(p), nl_model_free(m);
-    for (size_t i = 0; i < f->count; i++)
-        f->data[i] += offset;
+    /* plus a little white noise (an LCG), so that no periodogram ordinate
+     * sits at rounding level, where its log (the slope's fit) is noise */
+    uint64_t r = seed;
+    for (size_t i = 0; i < f->count; i++) {
+        r = r * 6364136223846793005u + 1442695040888963407u;
+        f->data[i] += offset + 0.1 * ((double)(r >> 11) * 0x1p-53 - 0.5);
+    }
     return f;
 }
 
@@ -137,7 +143,13 @@ static void check_psd(const char *name, const nl_field *f, double mean)
     if (nl_psd_periodogram(f, mean, &P) || nl_psd_profile(P, f2, v2, c2, &nf2) ||
         (two && nl_psd_sectors(P, 18, 0.05, 0.45, s2, &a2)))
         exit(1);
-    if (nl_mpi_psd(&s, mean, f1, v1, c1, &nf1, 18, 0.05, 0.45, two ? s1 : NULL, &a1))
+    nl_mpi_psd_more more = {.nsec = 18, .flo = 0.05, .fhi = 0.45, .sector = two ? s1 : NULL, .slope = 1,
+                            .fmin = 0.02, .fmax = 0.4 / f->h[0]};
+    nl_slope sl;
+    if (f->dim == 1 ? nl_psd_slope(f2, v2, nf2, more.fmin, more.fmax, 1, &sl)
+                    : nl_psd_slope_grid(P, more.fmin, more.fmax, &sl))
+        exit(1);
+    if (nl_mpi_psd(&s, mean, f1, v1, c1, &nf1, &more))
         fail(what, nl_errmsg());
     else if (nf1 != nf2 || nf1 != nl_mpi_psd_profile_size(f->dim, f->n, f->h))
         fail(what, "a profile of another length");
@@ -146,7 +158,12 @@ static void check_psd(const char *name, const nl_field *f, double mean)
         if (f->dim > 1)
             same_counts(what, c1, c2, nf1);
         if (two)
-            same(what, s1, s2, 18), same(what, &a1, &a2, 1);
+            a1 = more.aniso, same(what, s1, s2, 18), same(what, &a1, &a2, 1);
+        double x1[3] = {more.sl.slope, more.sl.ci95, more.sl.fractal_dim}, x2[3] = {sl.slope, sl.ci95, sl.fractal_dim};
+        for (int k = 0; k < 3; k++) /* each on its own scale */
+            same(what, x1 + k, x2 + k, 1);
+        if (more.sl.points != sl.points)
+            fail(what, "the slope's fit took another number of ordinates");
     }
     nl_field_free(P), free(f1), free(c1), free(c2);
 }
