@@ -6,7 +6,8 @@
  * functions, and compares their results with the serial estimators'.
  * Bound: |distributed - serial| <= TOL max |serial| over each estimate
  * (the transforms and sums run in another order, so rounding differs;
- * measured worst about 1e-15 relative here); counts and histogram edges
+ * measured worst 6.3e-14 over np 1..4, in the unbiased radial ACF, whose
+ * far lags divide sums of rounding size by few pairs); counts and histogram edges
  * and counts exactly; NaN where the serial one has NaN. */
 #include "../../mpi/analysis.h"
 #include "../../mpi/dist.h"
@@ -27,6 +28,7 @@
 
 static int rank, fails;
 static double worst;  /* the largest relative difference seen */
+static char worst_what[128];
 
 static void fail(const char *what, const char *detail)
 {
@@ -50,8 +52,8 @@ static void same(const char *what, const double *a, const double *b, size_t n)
         if (!isnan(b[i]))
             d = fmax(d, fabs(a[i] - b[i]));
     }
-    if (scale > 0)
-        worst = fmax(worst, d / scale);
+    if (scale > 0 && d / scale > worst)
+        worst = d / scale, snprintf(worst_what, sizeof worst_what, "%s", what);
     if (!(d <= TOL * scale)) {
         snprintf(msg, sizeof msg, "differs by %.3g, bound %.3g (%.3g of max |value| %.3g)", d, TOL * scale,
                  d / scale, scale);
@@ -237,6 +239,8 @@ int main(int argc, char **argv)
     check_field("2D 16x3", 2, (size_t[]){16, 3}, (double[]){1, 1}, 0);
     check_field("3D 12x10x9", 3, (size_t[]){12, 10, 9}, (double[]){1, 1, 1}, -2);
     check_field("3D 7x6x5 h 1x2x0.5", 3, (size_t[]){7, 6, 5}, (double[]){1, 2, 0.5}, 0);
+    check_field("3D 6x5x2", 3, (size_t[]){6, 5, 2}, (double[]){1, 1, 1}, 0);
+    check_field("2D 9x1", 2, (size_t[]){9, 1}, (double[]){1, 1}, 0);
     check_field("1D 101", 1, (size_t[]){101}, (double[]){0.5}, 1);
     {
         nl_field *f = make_field(2, (size_t[]){16, 16}, NULL, 0, 1);
@@ -244,9 +248,9 @@ int main(int argc, char **argv)
         nl_field_free(f);
     }
     MPI_Allreduce(MPI_IN_PLACE, &fails, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-    if (rank == 0)
-        printf("analysis: %s, largest difference %.3g of the largest |value|\n", fails ? "FAILED" : "passed", worst);
+    if (rank == 0) /* every process compares the same results: rank 0's worst is the run's */
+        printf("analysis: %s, largest difference %.3g of the largest |value| (%s)\n", fails ? "FAILED" : "passed",
+               worst, worst_what);
     fftw_mpi_cleanup();
     MPI_Finalize();
     return fails ? 1 : 0;
