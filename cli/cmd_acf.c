@@ -39,7 +39,10 @@ static const char help[] =
     "number), to set one realization's wander against the target.  --bands and\n"
     "-o OUT.exr take one input.  --realizations K --acf SPEC --size N [--seed S]\n"
     "analyses, in place of files, the K fields of noiselab synth fft --acf SPEC\n"
-    "--size N with seeds S (default 1) to S + K - 1.\n";
+    "--size N with seeds S (default 1) to S + K - 1.\n\n"
+    "Under mpirun with one .h5 input, each process reads and transforms its\n"
+    "slab of the field (FFTW-MPI) and rank 0 prints the same table; --direct,\n"
+    "--bands, -o OUT.exr and a spectral --target are refused there.\n";
 
 /* Options of noiselab acf. */
 typedef struct {

@@ -46,7 +46,10 @@ static const char help[] =
     "error; --against tests the kept samples of every field together.\n"
     "--realizations K --acf SPEC --size N [--seed S] analyses, in place of files,\n"
     "the K fields of noiselab synth fft --acf SPEC --size N with seeds S\n"
-    "(default 1) to S + K - 1.\n";
+    "(default 1) to S + K - 1.\n\n"
+    "Under mpirun with one .h5 input, each process reads its slab of the field\n"
+    "and the moments and counts are summed over the processes (rank 0 prints\n"
+    "the same results); --against is refused there.\n";
 
 /* Options of noiselab hist. */
 typedef struct {

@@ -51,7 +51,10 @@ static const char help[] =
     "frequency; K realizations or Welch's segments bring that down to about\n"
     "1/sqrt(K).  --slope takes one input.  --realizations K --acf SPEC --size N\n"
     "[--seed S] analyses, in place of files, the K fields of noiselab synth fft\n"
-    "--acf SPEC --size N with seeds S (default 1) to S + K - 1.\n";
+    "--acf SPEC --size N with seeds S (default 1) to S + K - 1.\n\n"
+    "Under mpirun with one .h5 input, each process reads and transforms its\n"
+    "slab of the field (FFTW-MPI) and rank 0 prints the same results;\n"
+    "--welch, --target, --preview and -o OUT.exr are refused there.\n";
 
 /* Options of noiselab psd and what it found. */
 typedef struct {
