@@ -8,6 +8,7 @@
 #include <float.h>
 #include <limits.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -153,9 +154,12 @@ int nl_mpi_grid_alloc(MPI_Comm comm, int dim, const size_t *g, int inverse, nl_m
     G->pad0 = 2 * (G->g[0] / 2 + 1), G->lines = dim == 3 ? G->g[1] : 1;
     alloc = fftw_mpi_local_size_transposed(dim, Dc, comm, &G->ln0, &G->l0s, &G->ln1, &G->l1s);
     two = 2 * (size_t)(alloc > 0 ? alloc : 1);
-    if ((st = nl_size_check(1, &two, sizeof(double), 1, NULL)))
-        ;
-    else if (!(G->buf = fftw_alloc_real(two)))
+    if ((st = nl_size_check(1, &two, sizeof(double), 1, NULL))) {
+        char why[256];
+        snprintf(why, sizeof why, "%s", nl_errmsg());
+        st = NL_ERROR(st, "this process's share of the %zu x %zu x %zu transform does not fit: %s; expected more "
+                      "processes", G->g[0], G->g[1], G->g[2], why);
+    } else if (!(G->buf = fftw_alloc_real(two)))
         st = NL_ERROR(NL_ENOMEM, "out of memory for this process's %zu doubles of the transform", two);
     if ((st = nl_mpi_agree(comm, st))) {
         nl_mpi_grid_free(G);

@@ -103,6 +103,19 @@ timeout 120 $MPIRUN -np 3 "$bin" hist --bins 9 -o "$work/o.tsv" "$f3" && "$bin" 
     cmp_text "$work/r.tsv" "$work/o.tsv" "hist -o under -np 3"
 [ "$(ls "$work" | grep -c '\.tmp\.')" = 0 ] || say "temporary files left: $(ls "$work")"
 
+# Memory per process: an estimate one process refuses under a limit runs
+# on 4 processes under the same limit, each holding its share.
+"$bin" synth fft --acf markov:scale=8 --clamp --size 512x512 --seed 5 -o "$work/big.h5" || say "cannot make big.h5"
+# one process: 2 MB of samples, 4.2 MB for the periodogram's transform, 16.8 MB
+# for the autocorrelation's padded one; 4 processes: a quarter of each
+for run in "3000000 acf --radial" "3000000 psd" "1500000 hist"; do
+    set -- $run
+    lim=$1; shift
+    NOISELAB_MEMORY_LIMIT=$lim "$bin" "$@" "$work/big.h5" >/dev/null 2>&1 && say "$*: one process ran under $lim bytes"
+    NOISELAB_MEMORY_LIMIT=$lim timeout 120 $MPIRUN -x NOISELAB_MEMORY_LIMIT -np 4 "$bin" "$@" "$work/big.h5" \
+        >"$work/out" 2>"$work/err" || say "-np 4 $* under $lim bytes: $(cat "$work/err")"
+done
+
 # Bad input: exit 2, exactly one line on stderr (rank 0's), no hang.
 bad() { # expected words, args...
     want=$1; shift
