@@ -287,7 +287,7 @@ int cli_cmd_acf(int argc, char **argv)
     int st;
 
     parse(argc, argv, &o);
-    if (cli_dist_wanted(&o.src))
+    if (cli_dist_wanted(&o.src, "acf"))
         return distributed(&o);
     x = cli_inputs_read(&o.src, 0, NULL);
     o.in0 = o.src.K ? "the realizations" : o.src.files[0];

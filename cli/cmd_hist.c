@@ -328,7 +328,7 @@ int cli_cmd_hist(int argc, char **argv)
     int st;
 
     parse(argc, argv, &o);
-    if (cli_dist_wanted(&o.src))
+    if (cli_dist_wanted(&o.src, "hist"))
         return distributed(&o);
     if (o.against && (st = nl_dist_parse(o.against, &dist)))
         cli_die_status(st);

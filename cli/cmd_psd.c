@@ -302,7 +302,7 @@ int cli_cmd_psd(int argc, char **argv)
     int st;
 
     parse(argc, argv, &o);
-    if (cli_dist_wanted(&o.src))
+    if (cli_dist_wanted(&o.src, "psd"))
         return distributed(&o);
     x = cli_inputs_read(&o.src, 0, NULL);
     if ((o.angular || o.preview || (o.out && cli_has_ext(o.out, ".exr"))) && x->dim != 2)

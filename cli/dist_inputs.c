@@ -2,9 +2,18 @@
 #include "dist_inputs.h"
 #include "../core/nl_error.h"
 
-int cli_dist_wanted(const cli_inputs *in)
+int cli_dist_wanted(const cli_inputs *in, const char *cmd)
 {
-    return cli_h5 && cli_h5->launched && cli_h5->read_slab && !in->K && in->count == 1 && cli_is_h5(in->files[0]);
+    if (!cli_h5 || !cli_h5->launched || !cli_h5->read_slab)
+        return 0;
+    if (!in->K && in->count == 1 && cli_is_h5(in->files[0]))
+        return 1;
+    /* every process would read and analyse whole fields */
+    if (cli_h5->size > 1)
+        cli_die(2, "%s: %s is not distributed; under mpirun with %d processes expected one .h5 input, or run on one "
+                "process", cmd, in->K ? "--realizations" : in->count > 1 ? "an ensemble of inputs" : "an input not .h5",
+                cli_h5->size);
+    return 0;
 }
 
 void cli_dist_refuse(const char *cmd, const char *opt)

@@ -9,8 +9,10 @@
 
 #include "inputs.h"
 
-/* Launched under MPI with one .h5 file as input (no --realizations)? */
-int cli_dist_wanted(const cli_inputs *in);
+/* Launched under MPI with one .h5 file as input (no --realizations)?
+ * Other inputs under a launcher with several processes exit 2 (each
+ * process would analyse the whole fields); with one, 0 (the ordinary run). */
+int cli_dist_wanted(const cli_inputs *in, const char *cmd);
 
 /* Exit 2: "CMD: OPT is not available in a distributed run ...". */
 void cli_dist_refuse(const char *cmd, const char *opt) __attribute__((noreturn));

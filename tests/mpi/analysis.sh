@@ -76,6 +76,7 @@ check() { # args...
 "$bin" synth fft --acf markov:scale=5 --clamp --size 301 --seed 4 --precision double -o "$work/f1.h5" ||
     { echo "analysis.sh: cannot make the fields"; exit 1; }
 f1=$work/f1.h5 f2=$work/f2.h5 f3=$work/f3.h5
+"$bin" synth fft --acf markov:scale=5 --clamp --size 64 --seed 4 -o "$work/f.tsv" || say "cannot make f.tsv"
 
 check acf "$f2"
 check acf --json --unbiased --axis y --max-lag 30 "$f2"
@@ -134,6 +135,9 @@ bad "--against" hist --against gauss "$f2"
 bad "missing.h5" hist "$work/missing.h5"
 bad "missing.h5" psd "$work/missing.h5"
 bad "missing.h5" acf "$work/missing.h5"
+bad "an ensemble" acf "$f2" "$f2"
+bad "--realizations" psd --realizations 2 --acf markov:scale=3 --size 32x32
+bad "not .h5" hist "$work/f.tsv"
 bad "bins" hist --bins 0 "$f2"
 bad "--slope 3:4" psd --slope 3:4 "$f2"
 bad "-o" hist -o "$work/no/such/dir/x.tsv" "$f2"
