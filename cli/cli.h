@@ -2,6 +2,8 @@
 #ifndef NL_CLI_H
 #define NL_CLI_H
 
+#include "../analysis/hist.h"
+#include "../analysis/slope.h"
 #include "../core/field.h"
 #include "../core/io.h"
 
@@ -149,6 +151,17 @@ json_t *cli_json_array(const double *v, size_t n);
 int cli_write_table(const char *path, const char *comment, int ncols, const char *const *names, size_t nrows,
                 const double *const *cols);
 
+/* This process's part of a field read collectively (mpi/dist.h's slabs):
+ * the whole field's dim, n and h, and rows s0 .. s0 + ns - 1 of its slowest
+ * axis (data NULL when ns = 0). */
+typedef struct {
+    int dim;
+    size_t n[3];
+    double h[3];
+    size_t s0, ns;
+    double *data;
+} cli_slab;
+
 /* The HDF5 and MPI parts of the command line (cli/h5_*.c, mpi/), present in
  * noiselab-mpi only: its main sets cli_h5 before cli_main; NULL in
  * noiselab, whose main hands every run that names an .h5 file or runs under
@@ -171,6 +184,16 @@ typedef struct {
      * NOISELAB_MEMORY_LIMIT, naming the process count that would hold it */
     void (*check_memory)(const struct cli_synth_job *job,
                          void (*run)(const struct cli_synth_job *, nl_field *, struct cli_synth_result *));
+    /* every process, collectively, agreeing on the status (launched runs):
+     * the slab of an .h5 field (free with slab_free), and the distributed
+     * estimates of mpi/analysis.h on it, on every process */
+    int (*read_slab)(const char *path, cli_slab *s);
+    void (*slab_free)(cli_slab *s);
+    int (*acf)(const cli_slab *s, double mean, int unbiased, int radial, int axis, size_t nl, double *lag,
+               double *val);
+    int (*psd)(const cli_slab *s, double mean, double *freq, double *val, size_t *nf, size_t nsec, double flo,
+               double fhi, double *sector, double *aniso, const double *band, nl_slope *sl);
+    int (*hist)(const cli_slab *s, size_t bins, nl_moments *m, double *edges, double *counts);
 } cli_h5_hooks;
 extern const cli_h5_hooks *cli_h5;
 

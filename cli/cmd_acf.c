@@ -1,5 +1,6 @@
 /* noiselab acf: estimate the autocorrelation of a field. */
 #include "cli.h"
+#include "dist_inputs.h"
 #include "inputs.h"
 #include "../analysis/acf.h"
 #include "../analysis/ensemble.h"
@@ -38,7 +39,10 @@ static const char help[] =
     "number), to set one realization's wander against the target.  --bands and\n"
     "-o OUT.exr take one input.  --realizations K --acf SPEC --size N [--seed S]\n"
     "analyses, in place of files, the K fields of noiselab synth fft --acf SPEC\n"
-    "--size N with seeds S (default 1) to S + K - 1.\n";
+    "--size N with seeds S (default 1) to S + K - 1.\n\n"
+    "Under mpirun with one .h5 input, each process reads and transforms its\n"
+    "slab of the field (FFTW-MPI) and rank 0 prints the same table; --direct,\n"
+    "--bands, -o OUT.exr and a spectral --target are refused there.\n";
 
 /* Options of noiselab acf. */
 typedef struct {
@@ -228,6 +232,53 @@ static void ensemble(acf_opts *o, const nl_field *x0, double *lag, double *val, 
     free(rows);
 }
 
+/* The target (when asked) and the output. */
+static void report(const acf_opts *o, const nl_field *x, const double *lag, const double *val, const double *se,
+                   double *tgt, const double *blo, const double *bhi)
+{
+    if (o->target)
+        target_values(o, x, lag, tgt);
+    long bad = o->target ? target_not_finite(o, lag, tgt) : -1;
+    if (bad >= 0)
+        cli_die(2, "--target: %s is %g at lag %g; expected a model finite at every lag of the estimate", o->target,
+                tgt[bad], lag[bad]);
+    output(o, lag, val, se, tgt, blo, bhi);
+}
+
+/* Under an MPI launcher with one .h5 input: the estimate over every
+ * process's slab (cli/dist_inputs.h); rank 0 writes it.  A spectral target
+ * is refused: it is sampled on a grid of the field's padded size. */
+static int distributed(acf_opts *o)
+{
+    cli_slab s;
+    nl_field hdr;
+    nl_model *m;
+    double *lag, *val, *tgt = NULL;
+    if (o->direct || o->bands || (o->out && cli_has_ext(o->out, ".exr")))
+        cli_dist_refuse("acf", o->direct ? "--direct" : o->bands ? "--bands" : "-o OUT.exr");
+    if (o->target) {
+        cli_check(nl_model_parse(o->target, &m));
+        int spectral = nl_model_is_spectral(m);
+        nl_model_free(m);
+        if (spectral)
+            cli_dist_refuse("acf", "--target with a spectral model");
+    }
+    cli_dist_read(&o->src, &s, &hdr);
+    o->in0 = o->src.files[0];
+    check_field(o, &hdr);
+    lag = cli_malloc(o->nl * sizeof *lag), val = cli_malloc(o->nl * sizeof *val);
+    cli_dist_check(&o->src, cli_h5->acf(&s, o->mean, o->unbiased, o->radial, o->axis, o->nl, lag, val));
+    cli_dist_free(&s);
+    if (cli_dist_leader()) {
+        o->tmp = cli_out_begin(o->out);
+        if (o->target)
+            tgt = cli_malloc(o->nl * sizeof *tgt);
+        report(o, &hdr, lag, val, NULL, tgt, NULL, NULL);
+    }
+    free(lag), free(val), free(tgt);
+    return 0;
+}
+
 int cli_cmd_acf(int argc, char **argv)
 {
     acf_opts o = {0};
@@ -236,6 +287,8 @@ int cli_cmd_acf(int argc, char **argv)
     int st;
 
     parse(argc, argv, &o);
+    if (cli_dist_wanted(&o.src, "acf"))
+        return distributed(&o);
     x = cli_inputs_read(&o.src, 0, NULL);
     o.in0 = o.src.K ? "the realizations" : o.src.files[0];
     check_field(&o, x);
@@ -261,17 +314,7 @@ int cli_cmd_acf(int argc, char **argv)
         se = cli_malloc(o.nl * sizeof *se);
         ensemble(&o, x, lag, val, se);
     }
-    if (o.target)
-        target_values(&o, x, lag, tgt);
-    long bad = o.target ? target_not_finite(&o, lag, tgt) : -1;
-    if (bad >= 0) {
-        double b = tgt[bad], l = lag[bad];
-        free(lag), free(val), free(tgt), free(blo), free(bhi), free(se);
-        nl_field_free(full), nl_field_free(x);
-        cli_die(2, "--target: %s is %g at lag %g; expected a model finite at every lag of the estimate", o.target,
-                b, l);
-    }
-    output(&o, lag, val, se, tgt, blo, bhi);
+    report(&o, x, lag, val, se, tgt, blo, bhi);
     free(lag), free(val), free(tgt), free(blo), free(bhi), free(se);
     nl_field_free(full);
     nl_field_free(x);

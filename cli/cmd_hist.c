@@ -1,5 +1,6 @@
 /* noiselab hist: histogram and moments of a field, or of an ensemble of fields. */
 #include "cli.h"
+#include "dist_inputs.h"
 #include "inputs.h"
 #include "../core/field.h"
 #include "../analysis/ensemble.h"
@@ -45,7 +46,10 @@ static const char help[] =
     "error; --against tests the kept samples of every field together.\n"
     "--realizations K --acf SPEC --size N [--seed S] analyses, in place of files,\n"
     "the K fields of noiselab synth fft --acf SPEC --size N with seeds S\n"
-    "(default 1) to S + K - 1.\n";
+    "(default 1) to S + K - 1.\n\n"
+    "Under mpirun with one .h5 input, each process reads its slab of the field\n"
+    "and the moments and counts are summed over the processes (rank 0 prints\n"
+    "the same results); --against is refused there.\n";
 
 /* Options of noiselab hist. */
 typedef struct {
@@ -288,6 +292,31 @@ static void test(const hist_opts *o, nl_field **x, const nl_dist *dist, hist_tes
     free(pool);
 }
 
+/* Under an MPI launcher with one .h5 input: the moments and histogram
+ * reduced over every process's slab (cli/dist_inputs.h); rank 0 writes
+ * them.  The test against a distribution thins the field on one process:
+ * refused. */
+static int distributed(hist_opts *o)
+{
+    cli_slab s;
+    nl_field hdr;
+    hist_moments mo = {0};
+    hist_test t = {0};
+    double *edges, *counts;
+    if (o->against)
+        cli_dist_refuse("hist", "--against");
+    cli_dist_read(&o->src, &s, &hdr);
+    edges = cli_malloc((o->bins + 1) * sizeof *edges), counts = cli_malloc(o->bins * sizeof *counts);
+    cli_dist_check(&o->src, cli_h5->hist(&s, o->bins, &mo.m, edges, counts));
+    cli_dist_free(&s);
+    if (cli_dist_leader()) {
+        o->tmp = cli_out_begin(o->out);
+        output(o, &mo, edges, counts, NULL, &t, NULL);
+    }
+    free(edges), free(counts);
+    return 0;
+}
+
 int cli_cmd_hist(int argc, char **argv)
 {
     hist_opts o = {0};
@@ -299,6 +328,8 @@ int cli_cmd_hist(int argc, char **argv)
     int st;
 
     parse(argc, argv, &o);
+    if (cli_dist_wanted(&o.src, "hist"))
+        return distributed(&o);
     if (o.against && (st = nl_dist_parse(o.against, &dist)))
         cli_die_status(st);
     if (dist && nl_dist_is_function(dist))

@@ -1,5 +1,6 @@
 /* noiselab psd: estimate the power spectral density of a field. */
 #include "cli.h"
+#include "dist_inputs.h"
 #include "inputs.h"
 #include "../analysis/ensemble.h"
 #include "../analysis/fftshift.h"
@@ -50,7 +51,10 @@ static const char help[] =
     "frequency; K realizations or Welch's segments bring that down to about\n"
     "1/sqrt(K).  --slope takes one input.  --realizations K --acf SPEC --size N\n"
     "[--seed S] analyses, in place of files, the K fields of noiselab synth fft\n"
-    "--acf SPEC --size N with seeds S (default 1) to S + K - 1.\n";
+    "--acf SPEC --size N with seeds S (default 1) to S + K - 1.\n\n"
+    "Under mpirun with one .h5 input, each process reads and transforms its\n"
+    "slab of the field (FFTW-MPI) and rank 0 prints the same results;\n"
+    "--welch, --target, --preview and -o OUT.exr are refused there.\n";
 
 /* Options of noiselab psd and what it found. */
 typedef struct {
@@ -249,6 +253,46 @@ static void ensemble(psd_opts *o, const nl_field *x0, nl_field *P, psd_table *t,
     free(rows);
 }
 
+/* Under an MPI launcher with one .h5 input: the periodogram's profile
+ * (and sectors) over every process's slab (cli/dist_inputs.h); rank 0
+ * writes it.  What needs the whole spectrum on one process is refused. */
+static int distributed(psd_opts *o)
+{
+    cli_slab s;
+    nl_field hdr;
+    psd_table t = {0};
+    size_t maxn;
+    char msg[512];
+    int st;
+    if (o->welch || o->preview || o->target || (o->out && cli_has_ext(o->out, ".exr")))
+        cli_dist_refuse("psd", o->welch ? "--welch" : o->preview ? "--preview" : o->target ? "--target" : "-o OUT.exr");
+    cli_dist_read(&o->src, &s, &hdr);
+    if (o->angular && hdr.dim != 2)
+        cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o->src.files[0], hdr.dim);
+    maxn = hdr.n[0] + hdr.n[1] + hdr.n[2];
+    t.freq = cli_malloc(maxn * sizeof *t.freq), t.val = cli_malloc(maxn * sizeof *t.val);
+    st = cli_h5->psd(&s, o->mean, t.freq, t.val, &t.nf, 18, 0.05, 0.45, o->angular ? o->sector : NULL, &o->aniso,
+                     o->slope ? (double[]){o->f1, o->f2} : NULL, &o->sl);
+    snprintf(msg, sizeof msg, "%s", nl_errmsg());
+    /* as one process: the estimate's failure names the file, the fit's --slope */
+    cli_dist_check(&o->src, st && o->slope ? cli_h5->psd(&s, o->mean, t.freq, t.val, &t.nf, 0, 0, 0, NULL, NULL,
+                                                         NULL, NULL) : st);
+    cli_dist_free(&s);
+    if (cli_dist_leader()) {
+        o->tmp = cli_out_begin(o->out);
+        if (o->slope && st == NL_OK && !(isfinite(o->sl.slope) && isfinite(o->sl.ci95)))
+            st = NL_ERROR(NL_EINVAL, "the fit is undefined (slope %g +- %g); expected a band where the periodogram "
+                          "varies", o->sl.slope, o->sl.ci95);
+        else if (o->slope && st)
+            nl_error_set(st, __FILE__, __LINE__, "%s", msg);
+        if (o->slope && st)
+            cli_die(nl_error_is_input(st) ? 2 : 1, "--slope %g:%g: %s", o->f1, o->f2, nl_errmsg());
+        output(o, hdr.dim, &t);
+    }
+    free(t.freq), free(t.val);
+    return 0;
+}
+
 int cli_cmd_psd(int argc, char **argv)
 {
     psd_opts o = {0};
@@ -258,6 +302,8 @@ int cli_cmd_psd(int argc, char **argv)
     int st;
 
     parse(argc, argv, &o);
+    if (cli_dist_wanted(&o.src, "psd"))
+        return distributed(&o);
     x = cli_inputs_read(&o.src, 0, NULL);
     if ((o.angular || o.preview || (o.out && cli_has_ext(o.out, ".exr"))) && x->dim != 2)
         cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", cli_inputs_name(&o.src, 0), x->dim);

@@ -5,6 +5,7 @@
  * together with rank 0 telling why. */
 #include "cli.h"
 #include "synth.h"
+#include "h5_analysis.h"
 #include "../mpi/dist.h"
 #include "../mpi/h5.h"
 #include "../core/fftw_plan.h"
@@ -37,6 +38,7 @@ int main(int argc, char **argv)
     hooks.agree = agree;
     hooks.synth = cli_h5_synth;
     hooks.check_memory = cli_h5_check_memory;
+    cli_h5_analysis_hooks(&hooks);
     if (cli_mpi_launched()) {
         if (MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
             fprintf(stderr, "noiselab: MPI could not start\n");
