@@ -19,6 +19,7 @@ extern "C" {
 #include "noiselab/mpi/dist.h"
 #include "noiselab/mpi/h5.h"
 #include "noiselab/mpi/fft.h"
+#include "noiselab/mpi/analysis.h"
 
 #ifdef __cplusplus
 }
