@@ -40,7 +40,11 @@ row() {
     [ -z "$W1" ] && W1=$work
     awk -v c="$c" -v m="$2" -v s="$3" -v p="$1" -v t="$(med < "$w/wall")" -v k="$work" -v w1="$W1" \
         -v r="$(sort -g "$w/rss" | tail -1)" 'BEGIN {
-        printf "%s\t%s\t%s\t%d\t%.3f\t%.3f\t%.2f\t%.2f\t%.0f\n", c, m, s, p, t, k, w1 / k, w1 / k / p, r }'
+        # strong: speed-up w1/wP, efficiency w1/(P wP); weak: the same share per
+        # process, efficiency w1/wP; memory rows: one run each, no speed
+        sp = c == "memory" ? "-" : sprintf("%.2f", w1 / k)
+        ef = c == "memory" ? "-" : sprintf("%.2f", c == "weak" ? w1 / k : w1 / k / p)
+        printf "%s\t%s\t%s\t%d\t%.3f\t%.3f\t%s\t%s\t%.0f\n", c, m, s, p, t, k, sp, ef, r }'
 }
 printf 'case\tmethod\tsize\tP\twall_s\twork_s\tspeedup\tefficiency\tpeak_rss_MiB\n'
 for spec in "fft 4096x4096 --acf markov:scale=20" "circulant 2048x2048 --acf markov:scale=20" \
