@@ -132,28 +132,30 @@ static int check_even(const nl_model *m, const nl_field *g, int freq)
     return NL_OK;
 }
 
-/* Model values at the wrapped lags or frequencies (i < ni, all j, k) of the
- * grid g, into rows of `stride` doubles.  Reentrant models are sampled on
- * all threads, and, when whole rows are asked for, only on half of them:
- * R(-x) = R(x) and S(-f) = S(f) hold exactly in floating point for them
- * (negation is exact, and cos, |.| and the rotation commute with it), so
- * the other half is copied reversed.  Expressions are evaluated everywhere:
- * an odd expression must show up as such. */
-static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *dst, size_t stride, int freq)
+/* Model values at the wrapped lags (freq = 0) or frequencies (i < ni, rows
+ * r0 <= r < r1, row r = j + n1 k) of the grid g, row r into dst + (r - r0)
+ * stride.  Reentrant models are sampled on all threads, and, when the whole
+ * grid's rows are asked for, only on half of them: R(-x) = R(x) and
+ * S(-f) = S(f) hold exactly in floating point for them (negation is exact,
+ * and cos, |.| and the rotation commute with it), so the other half is
+ * copied reversed.  Expressions are evaluated everywhere: an odd expression
+ * must show up as such. */
+static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, size_t r0, size_t r1, double *dst,
+                     size_t stride, int freq)
 {
-    size_t rows = g->n[1] * g->n[2], bad = rows, n0 = g->n[0];
+    size_t rows = g->n[1] * g->n[2], bad = r1, n0 = g->n[0];
     int st = nl_model_check_dim(m, g->dim), reentrant = nl_model_is_reentrant(m);
-    int sym = reentrant && ni == n0 && rows > 1;
+    int sym = reentrant && ni == n0 && rows > 1 && r0 == 0 && r1 == rows;
     if (st || (!reentrant && (st = check_even(m, g, freq))))
         return st;
     /* each worker brackets its share once, so that the models' own GSL
      * guards (Matern, power) cost it a thread-local counter per value;
      * nowait: the region's end is the only barrier, as before */
-#pragma omp parallel if (reentrant && rows * ni > 65536)
+#pragma omp parallel if (reentrant && (r1 - r0) * ni > 65536)
     {
         nl_gsl_enter();
 #pragma omp for schedule(dynamic, 16) nowait
-        for (size_t r = 0; r < rows; r++) {
+        for (size_t r = r0; r < r1; r++) {
             size_t idx[3] = {0, r % g->n[1], r / g->n[1]};
             if (sym && mirror_row(g, r) < r)
                 continue;
@@ -167,12 +169,12 @@ static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *ds
                         bad = r;
                     break;
                 }
-                dst[r * stride + i] = y;
+                dst[(r - r0) * stride + i] = y;
             }
         }
         nl_gsl_leave();
     }
-    if (bad < rows) {
+    if (bad < r1) {
         size_t idx[3] = {0, bad % g->n[1], bad / g->n[1]};
         for (size_t i = 0; i < ni; i++) {
             double y;
@@ -196,17 +198,25 @@ static int fill_rows(const nl_model *m, const nl_field *g, size_t ni, double *ds
     return NL_OK;
 }
 
-int nl_wk_check_even(const nl_model *m, int dim, const size_t *n, const double *h, int freq)
+/* A grid of n[0..dim-1] samples at spacing h (NULL: unit), without data. */
+static nl_field grid_of(int dim, const size_t *n, const double *h)
 {
     nl_field g = {.dim = dim, .n = {1, 1, 1}, .h = {1, 1, 1}, .count = 1, .data = NULL};
-    int st;
-    if (dim < 1 || dim > 3)
-        return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
-    for (int a = 0; a < dim; a++) {
+    for (int a = 0; a < dim && a < 3; a++) {
         g.n[a] = n[a];
         g.h[a] = h ? h[a] : 1;
         g.count *= n[a];
     }
+    return g;
+}
+
+int nl_wk_check_even(const nl_model *m, int dim, const size_t *n, const double *h, int freq)
+{
+    nl_field g;
+    int st;
+    if (dim < 1 || dim > 3)
+        return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
+    g = grid_of(dim, n, h);
     if ((st = nl_model_check_dim(m, dim)))
         return st;
     return nl_model_is_reentrant(m) ? NL_OK : check_even(m, &g, freq);
@@ -215,51 +225,17 @@ int nl_wk_check_even(const nl_model *m, int dim, const size_t *n, const double *
 int nl_wk_sample_rows(const nl_model *m, int dim, const size_t *n, const double *h, size_t r0, size_t r1, int freq,
                       double *dst, size_t stride)
 {
-    nl_field g = {.dim = dim, .n = {1, 1, 1}, .h = {1, 1, 1}, .count = 1, .data = NULL};
-    size_t bad = r1;
-    int reentrant = nl_model_is_reentrant(m);
-    for (int a = 0; a < dim && a < 3; a++) {
-        g.n[a] = n[a];
-        g.h[a] = h ? h[a] : 1;
-    }
-#pragma omp parallel if (reentrant && (r1 - r0) * g.n[0] > 65536)
-    {
-        nl_gsl_enter();
-#pragma omp for schedule(dynamic, 16) nowait
-        for (size_t r = r0; r < r1; r++) {
-            size_t idx[3] = {0, r % g.n[1], r / g.n[1]};
-            for (size_t i = 0; i < g.n[0]; i++) {
-                double y;
-                idx[0] = i;
-                if (!isfinite(y = value_at(m, &g, idx, freq))) {
-#pragma omp critical
-                    if (r < bad)
-                        bad = r;
-                    break;
-                }
-                dst[(r - r0) * stride + i] = y;
-            }
-        }
-        nl_gsl_leave();
-    }
-    for (size_t i = 0; bad < r1 && i < g.n[0]; i++) {
-        size_t idx[3] = {i, bad % g.n[1], bad / g.n[1]};
-        double y;
-        if (!isfinite(y = value_at(m, &g, idx, freq)))
-            return NL_ERROR(NL_EINVAL, "%s: the model is not finite (%g) at %s index (%zu, %zu, %zu)",
-                            nl_model_spec(m), y, freq ? "frequency" : "lag", i, idx[1], idx[2]);
-    }
-    return NL_OK;
+    nl_field g;
+    if (dim < 1 || dim > 3)
+        return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
+    g = grid_of(dim, n, h);
+    return fill_rows(m, &g, g.n[0], r0, r1, dst, stride, freq);
 }
 
 double nl_wk_value(const nl_model *m, int dim, const size_t *n, const double *h, const size_t *idx, int freq)
 {
-    nl_field g = {.dim = dim, .n = {1, 1, 1}, .h = {1, 1, 1}, .count = 1, .data = NULL};
+    nl_field g = grid_of(dim, n, h);
     double v;
-    for (int a = 0; a < dim && a < 3; a++) {
-        g.n[a] = n[a];
-        g.h[a] = h ? h[a] : 1;
-    }
     nl_gsl_enter();
     v = value_at(m, &g, idx, freq);
     nl_gsl_leave();
@@ -267,7 +243,10 @@ double nl_wk_value(const nl_model *m, int dim, const size_t *n, const double *h,
 }
 
 /* Fill f with model values at the wrapped lags (freq = 0) or frequencies. */
-static int fill(const nl_model *m, nl_field *f, int freq) { return fill_rows(m, f, f->n[0], f->data, f->n[0], freq); }
+static int fill(const nl_model *m, nl_field *f, int freq)
+{
+    return fill_rows(m, f, f->n[0], 0, f->n[1] * f->n[2], f->data, f->n[0], freq);
+}
 
 int nl_wk_sample_acf(const nl_model *m, nl_field *R)
 {
@@ -303,7 +282,7 @@ int nl_wk_sample_spectrum(const nl_model *m, nl_field *S)
 
 int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, const double *h, double **out)
 {
-    nl_field g = {.dim = dim, .n = {1, 1, 1}, .h = {1, 1, 1}, .count = 1, .data = NULL};
+    nl_field g;
     size_t h0, rows, half;
     double *S, *buf, cell = 1;
     fftw_plan p;
@@ -311,10 +290,8 @@ int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, cons
     *out = NULL;
     if (dim < 1 || dim > 3)
         return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
+    g = grid_of(dim, n, h);
     for (int a = 0; a < dim; a++) {
-        g.n[a] = n[a];
-        g.h[a] = h ? h[a] : 1;
-        g.count *= n[a];
         cell *= g.h[a];
         dims[a] = (int)n[dim - 1 - a];
     }
@@ -325,7 +302,7 @@ int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, cons
     if (!S)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu spectrum samples", half);
     if (nl_model_is_spectral(m)) {
-        if ((st = fill_rows(m, &g, h0, S, h0, 1))) {
+        if ((st = fill_rows(m, &g, h0, 0, rows, S, h0, 1))) {
             nl_free(S);
             return st;
         }
@@ -344,7 +321,7 @@ int nl_wk_sample_spectrum_half(const nl_model *m, int dim, const size_t *n, cons
         return buf ? NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D transform", dim)
                    : NL_ERROR(NL_ENOMEM, "out of memory for %zu samples", 2 * half);
     }
-    if (!(st = fill_rows(m, &g, g.n[0], buf, 2 * h0, 0))) {
+    if (!(st = fill_rows(m, &g, g.n[0], 0, rows, buf, 2 * h0, 0))) {
         fftw_execute(p);
         for (size_t k = 0; k < half; k++)
             buf[k] = cell * buf[2 * k];

@@ -94,10 +94,10 @@ static int sample_spectrum(nl_mpi_fft_plan *p, const nl_model *m)
 {
     const int dim = p->dim;
     double cell = p->h[0] * p->h[1] * p->h[2];
-    int st = nl_wk_check_even(m, dim, p->n, p->h, nl_model_is_spectral(m));
-    if (st)
-        return st;
+    int st;
     if (nl_model_is_spectral(m)) {
+        if ((st = nl_wk_check_even(m, dim, p->n, p->h, 1)))
+            return st;
         for (size_t e = 0; e < p->nloc; e++) {
             size_t i, r, idx[3];
             freq_index(p, e, &i, &r);
