@@ -291,12 +291,12 @@ static int is_separable(const nl_model *m)
  * expressions in x, y, z). */
 static double density_decay(const nl_model *m, int dim, double b)
 {
-    nl_model_kind k = nl_model_get_kind(m);
+    const nl_family *k = nl_model_family(m);
     if (dim == 1 || isinf(b))
         return b;
     if (is_separable(m))
         return b;
-    if (k == NL_MODEL_IMAGE || (k == NL_MODEL_EXPR && !nl_model_is_isotropic(m)))
+    if (k == &nl_family_image || (k == &nl_family_expr && !nl_model_is_isotropic(m)))
         return NAN;
     return b + dim - 1;
 }

@@ -49,7 +49,7 @@ int nl_check_matheron_2d(const nl_model *m, size_t n, const double *r, double *c
     double zero = 0, r0;
     gsl_integration_workspace *w;
     int st = NL_OK;
-    if (nl_model_get_kind(m) == NL_MODEL_SPECTRUM || nl_model_check_dim(m, 1))
+    if (!nl_model_has_acf(m) || nl_model_check_dim(m, 1))
         return NL_ERROR(NL_EINVAL, "%s: eq. (14) sweeps a 1D profile R(t); expected a model defined by R in 1D",
                         nl_model_spec(m));
     r0 = nl_model_acf(m, 1, &zero);

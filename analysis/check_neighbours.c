@@ -50,7 +50,7 @@ static void scale_var(const nl_model *m, char *out, size_t size)
  * digits and verified. */
 static void largest_omega(const nl_model *m, int dim, char *buf, size_t size)
 {
-    const char *fam = nl_model_get_kind(m) == NL_MODEL_OSCILLATORY ? "oscillatory" : "gauss-osc";
+    const char *fam = nl_model_family(m)->name;
     double lo = 0, hi = 0, w;
     char spec[256], rest[128];
     nl_model_param(m, "omega", &hi);
@@ -82,12 +82,11 @@ static void largest_omega(const nl_model *m, int dim, char *buf, size_t size)
 static void separable(const nl_model *m, int dim, char *buf, size_t size)
 {
     const char *spec = nl_model_spec(m);
-    nl_model_kind k = nl_model_get_kind(m);
     nl_check c1;
     char s[1024];
     if (nl_check_model(m, 1, &c1) != NL_OK || !c1.positive_definite)
         return;
-    if (k == NL_MODEL_EXPR)
+    if (nl_model_family(m)->flags & NL_FAMILY_ARGUMENT)
         snprintf(s, sizeof s, "%s%s", spec, strrchr(spec, ';') ? ",sep" : ";sep");
     else
         snprintf(s, sizeof s, "%s%s", spec, strchr(spec, ':') ? ",sep" : ":sep");
@@ -129,15 +128,17 @@ static void spherical(const nl_model *m, int dim, double L, char *buf, size_t si
 
 int nl_check_neighbours(const nl_model *m, const nl_check *c, char *buf, size_t size)
 {
-    nl_model_kind k = nl_model_get_kind(m);
+    const nl_family *k = nl_model_family(m);
+    double omega;
     if (!size)
         return NL_OK;
     buf[0] = 0;
-    if (c->positive_definite || !c->isotropic || nl_model_is_spectral(m) || k == NL_MODEL_IMAGE)
+    if (c->positive_definite || !c->isotropic || nl_model_is_spectral(m) || k == &nl_family_image)
         return NL_OK;
-    if (k == NL_MODEL_OSCILLATORY || k == NL_MODEL_GAUSS_OSC)
+    /* a family with an oscillation frequency */
+    if (nl_model_param(m, "omega", &omega) == NL_OK)
         largest_omega(m, c->dim, buf, size);
-    if (k == NL_MODEL_EXPR)
+    if (k == &nl_family_expr)
         spherical(m, c->dim, c->scale, buf, size);
     separable(m, c->dim, buf, size);
     return NL_OK;

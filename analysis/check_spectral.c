@@ -183,7 +183,7 @@ static double aliased_min(const nl_model *m, int dim)
 static int moments(const nl_model *m, int dim, nl_check *c, double K, double gvar, double gm2)
 {
     double fmin = 0, fmax = INFINITY, v;
-    if (nl_model_get_kind(m) == NL_MODEL_POWER) {
+    if (nl_model_family(m) == &nl_family_power) {
         nl_model_param(m, "var", &c->variance);
         nl_model_param(m, "fmin", &fmin);
         nl_model_param(m, "fmax", &fmax);
@@ -218,7 +218,7 @@ static int moments(const nl_model *m, int dim, nl_check *c, double K, double gva
 int nl_check_spectral(const nl_model *m, int dim, nl_check *c)
 {
     double *s = malloc(3 * (SCAN_N + 1) * sizeof *s), peak = 0, K = 0, smin = INFINITY, kmin = 0, gvar = 0, gm2 = 0, b;
-    int axes = c->isotropic || dim == 1 ? 1 : dim, st = NL_OK, power = nl_model_get_kind(m) == NL_MODEL_POWER;
+    int axes = c->isotropic || dim == 1 ? 1 : dim, st = NL_OK, power = nl_model_family(m) == &nl_family_power;
     if (!s)
         return NL_ERROR(NL_ENOMEM, "out of memory");
     for (int a = 0; a < axes && !st; a++)

@@ -8,7 +8,9 @@
 
 #include <gsl/gsl_matrix.h>
 
-typedef enum { NL_FIT_LOG, NL_FIT_LOGIT2 } nl_fit_transform;
+/* How a free parameter is optimised: as log(v), or as the logit of v / hi
+ * (0 < v < hi). */
+typedef enum { NL_FIT_LOG, NL_FIT_LOGIT } nl_fit_transform;
 
 typedef struct {
     const char *family;                          /* the model family */
@@ -18,6 +20,8 @@ typedef struct {
     double value[NL_FIT_MAX_PARAMS];             /* current values */
     int fixed[NL_FIT_MAX_PARAMS];                /* held fixed */
     nl_fit_transform tr[NL_FIT_MAX_PARAMS];      /* how a free one is optimised */
+    double hi[NL_FIT_MAX_PARAMS];                /* NL_FIT_LOGIT: the upper end */
+    const nl_family_param *param[NL_FIT_MAX_PARAMS]; /* the family's descriptor of each */
     size_t nfree;                                /* free parameters */
     size_t free_idx[NL_FIT_MAX_PARAMS];          /* their indices */
 } nl_fit_params;
@@ -51,8 +55,8 @@ int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p);
 
 /* Start values of the free parameters: start[k] where given (finite and
  * positive; NULL: none), else the sill split 9:1 between var and nugget
- * (all of it to var without a nugget), the scale, omega = 1 / scale and
- * other shape parameters 1. */
+ * (all of it to var without a nugget), the scale, and each shape
+ * parameter's start in its family's descriptor (omega: 1 / scale). */
 void nl_fit_params_start(nl_fit_params *p, double sill, double scale, const double *start);
 
 /* Index of a parameter by name, or -1. */

@@ -6,16 +6,6 @@
 #include <stdio.h>
 #include <string.h>
 
-typedef struct {
-    const char *family;  /* as in a spec */
-    const char *shape;   /* its shape parameter, or NULL */
-} fit_family;
-
-static const fit_family families[] = {
-    {"markov", NULL},          {"gauss", NULL},   {"markaussian", "alpha"}, {"oscillatory", "omega"},
-    {"gauss-osc", "omega"},    {"matern", "nu"},  {"spherical", NULL},
-};
-
 static int fix_index(const nl_fit_options *o, const char *name)
 {
     for (size_t i = 0; i < o->nfix; i++)
@@ -24,10 +14,14 @@ static int fix_index(const nl_fit_options *o, const char *name)
     return -1;
 }
 
-static void add(nl_fit_params *p, const char *name, nl_fit_transform tr)
+/* A parameter of the family: a positive one is optimised as its
+ * logarithm, one with an upper end hi as the logistic hi / (1 + e^-u). */
+static void add(nl_fit_params *p, const nl_family_param *fp)
 {
-    p->name[p->np] = name;
-    p->tr[p->np] = tr;
+    p->name[p->np] = fp->name;
+    p->tr[p->np] = fp->range == NL_RANGE_UPTO ? NL_FIT_LOGIT : NL_FIT_LOG;
+    p->hi[p->np] = fp->range == NL_RANGE_UPTO ? fp->hi : INFINITY;
+    p->param[p->np] = fp;
     p->value[p->np] = NAN;
     p->np++;
 }
@@ -45,7 +39,7 @@ static int apply_fixes(const nl_fit_options *o, nl_fit_params *p)
                             o->fix_name[i], list);
         }
         if (!isfinite(v) || v < 0 || (v == 0 && strcmp(p->name[k], "nugget") != 0) ||
-            (p->tr[k] == NL_FIT_LOGIT2 && v > 2))
+            (p->tr[k] == NL_FIT_LOGIT && v > p->hi[k]))
             return NL_ERROR(NL_EINVAL, "fix: %s=%g is out of range for %s", o->fix_name[i], v, p->family);
         p->value[k] = v;
         p->fixed[k] = 1;
@@ -55,26 +49,31 @@ static int apply_fixes(const nl_fit_options *o, nl_fit_params *p)
 
 int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p)
 {
-    const fit_family *f = NULL;
+    const nl_family *f;
+    int nug;
     memset(p, 0, sizeof *p);
     if (dim < 1 || dim > 3)
         return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
     if (o->nfix > NL_FIT_MAX_FIX)
         return NL_ERROR(NL_EINVAL, "fix: expected at most %d fixed parameters, got %zu", NL_FIT_MAX_FIX, o->nfix);
-    for (size_t i = 0; o->family && i < sizeof families / sizeof *families; i++)
-        if (strcmp(o->family, families[i].family) == 0)
-            f = &families[i];
-    if (!f)
-        return NL_ERROR(NL_EINVAL, "model: expected markov, gauss, markaussian, oscillatory, gauss-osc, matern or "
-                        "spherical, got \"%s\"", o->family ? o->family : "");
-    p->family = f->family;
+    f = o->family ? nl_family_find(o->family, strlen(o->family)) : NULL;
+    if (!f || !(f->flags & NL_FAMILY_FIT) || nl_family_role_index(f, NL_ROLE_VARIANCE) < 0 ||
+        nl_family_role_index(f, NL_ROLE_SCALE) < 0 || f->nparams > NL_FIT_MAX_PARAMS) {
+        char list[512];
+        nl_family_names(NL_FAMILY_FIT, 0, " or ", list, sizeof list);
+        return NL_ERROR(NL_EINVAL, "model: expected %s, got \"%s\"", list, o->family ? o->family : "");
+    }
+    p->family = f->name;
     p->dim = dim;
-    add(p, "var", NL_FIT_LOG);
-    add(p, "scale", NL_FIT_LOG);
-    if (o->nugget || fix_index(o, "nugget") >= 0)
-        add(p, "nugget", NL_FIT_LOG);
-    if (f->shape)
-        add(p, f->shape, strcmp(f->shape, "alpha") == 0 ? NL_FIT_LOGIT2 : NL_FIT_LOG);
+    /* var, scale, the nugget when asked for, then the shape parameters */
+    add(p, &f->params[nl_family_role_index(f, NL_ROLE_VARIANCE)]);
+    add(p, &f->params[nl_family_role_index(f, NL_ROLE_SCALE)]);
+    nug = nl_family_role_index(f, NL_ROLE_NUGGET);
+    if (nug >= 0 && (o->nugget || fix_index(o, "nugget") >= 0))
+        add(p, &f->params[nug]);
+    for (size_t k = 0; k < f->nparams; k++)
+        if (f->params[k].role == NL_ROLE_SHAPE)
+            add(p, &f->params[k]);
     {
         int st = apply_fixes(o, p);
         if (st)
@@ -90,10 +89,10 @@ void nl_fit_params_start(nl_fit_params *p, double sill, double scale, const doub
 {
     int nugget = nl_fit_params_find(p, "nugget") >= 0;
     for (size_t k = 0; k < p->np; k++) {
-        const char *nm = p->name[k];
-        double v = strcmp(nm, "scale") == 0 ? scale : strcmp(nm, "nugget") == 0 ? 0.1 * sill
-                 : strcmp(nm, "var") == 0 ? (nugget ? 0.9 : 1) * sill
-                 : strcmp(nm, "omega") == 0 ? 1 / scale : 1;
+        const nl_family_param *fp = p->param[k];
+        double v = fp->role == NL_ROLE_SCALE ? scale : fp->role == NL_ROLE_NUGGET ? 0.1 * sill
+                 : fp->role == NL_ROLE_VARIANCE ? (nugget ? 0.9 : 1) * sill
+                 : fp->start_per_scale ? fp->start / scale : fp->start;
         if (start && isfinite(start[k]) && start[k] > 0)
             v = start[k];
         if (!p->fixed[k])
@@ -114,7 +113,7 @@ void nl_fit_params_to_u(const nl_fit_params *p, double *u)
     for (size_t k = 0; k < p->nfree; k++) {
         size_t i = p->free_idx[k];
         double v = p->value[i];
-        u[k] = p->tr[i] == NL_FIT_LOG ? log(v) : -log(2 / v - 1);
+        u[k] = p->tr[i] == NL_FIT_LOG ? log(v) : -log(p->hi[i] / v - 1);
     }
 }
 
@@ -125,7 +124,7 @@ void nl_fit_params_from_u(nl_fit_params *p, const double *u)
     for (size_t k = 0; k < p->nfree; k++) {
         size_t i = p->free_idx[k];
         double x = fmax(-700, fmin(700, u[k]));
-        p->value[i] = p->tr[i] == NL_FIT_LOG ? exp(x) : 2 / (1 + exp(-x));
+        p->value[i] = p->tr[i] == NL_FIT_LOG ? exp(x) : p->hi[i] / (1 + exp(-x));
     }
 }
 
@@ -133,7 +132,7 @@ double nl_fit_params_dvalue(const nl_fit_params *p, size_t k)
 {
     size_t i = p->free_idx[k];
     double v = p->value[i];
-    return p->tr[i] == NL_FIT_LOG ? v : v * (1 - v / 2);
+    return p->tr[i] == NL_FIT_LOG ? v : v * (1 - v / p->hi[i]);
 }
 
 int nl_fit_params_spec(const nl_fit_params *p, char *buf, size_t size)

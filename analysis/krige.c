@@ -197,7 +197,7 @@ static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *
         return NL_ERROR(NL_EINVAL, "kriging: expected 1 to 3 coordinates, got %d", dim);
     if ((st = nl_model_check_dim(m, dim)))
         return st;
-    if (nl_model_is_spectral(m) && nl_model_get_kind(m) == NL_MODEL_SPECTRUM)
+    if (!nl_model_has_acf(m))
         return NL_ERROR(NL_EINVAL, "%s: kriging needs R(lag)", nl_model_spec(m));
     if ((st = check_inputs(m, dim, n, pts, val)))
         return st;
@@ -367,7 +367,7 @@ static int krige_eval_block(const nl_krige_plan *p, size_t count, const double *
 int nl_krige_eval_grid(const nl_krige_plan *p, const double *lo, const nl_field *est, nl_field *var)
 {
     const nl_field *f = est;
-    int dim = p->dim, parallel = nl_model_get_kind(p->m) != NL_MODEL_EXPR, status = NL_OK;
+    int dim = p->dim, parallel = nl_model_is_reentrant(p->m), status = NL_OK;
     if (f->dim != dim || (var && (var->dim != dim || var->count != f->count)))
         return NL_ERROR(NL_EINVAL, "kriging grid: expected %dD grids of one size, got %dD", dim, f->dim);
     size_t nblk = (f->count + NL_KRIGE_BLOCK - 1) / NL_KRIGE_BLOCK, g[3] = {f->n[0], f->n[1], f->n[2]};

@@ -50,7 +50,7 @@ static int spectral_acf(const nl_model *m, int dim, const size_t *n, nl_field **
     size_t g[3] = {1, 1, 1};
     int st = NL_OK;
     *G = NULL;
-    if (nl_model_get_kind(m) != NL_MODEL_SPECTRUM)
+    if (nl_model_has_acf(m))
         return NL_OK;
     for (int a = 0; a < dim; a++)
         g[a] = n[a] * (dim == 1 ? 8 : dim == 2 ? 4 : 2);

@@ -1,17 +1,13 @@
 /* The model layer: an autocorrelation R(lag) and, where known, its spectrum.
  *
- * A model is made from a spec string (see `noiselab models`):
- *     markov[:scale=1,var=1]          R = var exp(-|t|/scale)
- *     gauss[:scale=1]                 R = var exp(-(t/scale)^2)
- *     markaussian:alpha=1.4[,scale=1] R = var exp(-|t/scale|^alpha)
- *     oscillatory:omega=10[,scale=1]  R = var cos(omega t) exp(-|t|/scale)
- *     gauss-osc:omega=10[,scale=1]    R = var cos(omega t) exp(-(t/scale)^2)
- *     matern:nu=1.5[,scale=1]         R = var 2^(1-nu)/Gamma(nu) u^nu K_nu(u), u = sqrt(2 nu)|t|/scale
- *     spherical[:scale=1]             R = var (1 - 1.5 a + 0.5 a^3), a = |t|/scale < 1; 0 beyond
- *     power:d=2.5[,fmin=,fmax=]       S = c |f|^-d for fmin <= |f| <= fmax, c such that the integral of S is var
+ * A model is made from a spec string NAME[:key=value,...] (see `noiselab
+ * models`), NAME a family of the registry (core/family.h), e.g.:
+ *     markov:scale=8                  a named family with its parameters
  *     expr:EXPR                       R given by a libmatheval expression
  *     spectrum:EXPR                   S given by a libmatheval expression
  *     image:FILE                      R = empirical autocorrelation of an exemplar (Lewis 1987, eq. 15)
+ * Every family's parameters, defaults and formula: nl_model_catalogue,
+ * docs/models.md (generated from the registry).
  * Named models take var= (R(0)) and, in 2D and 3D, `sep` (separable:
  * R(x)R(y)R(z)/var^(dim-1)), `angle=` (degrees, rotation about z) and `ratio=`
  * (correlation length along the rotated y axis over that along x), `zratio=`
@@ -57,21 +53,10 @@
 #ifndef NL_MODEL_H
 #define NL_MODEL_H
 
+#include "family.h"
+
 #include <stddef.h>
 
-typedef enum {
-    NL_MODEL_MARKOV,
-    NL_MODEL_GAUSS,
-    NL_MODEL_MARKAUSSIAN,
-    NL_MODEL_OSCILLATORY,
-    NL_MODEL_GAUSS_OSC,
-    NL_MODEL_MATERN,
-    NL_MODEL_POWER,
-    NL_MODEL_EXPR,
-    NL_MODEL_SPECTRUM,
-    NL_MODEL_IMAGE,
-    NL_MODEL_SPHERICAL
-} nl_model_kind;
 
 typedef struct nl_model nl_model;
 
@@ -86,13 +71,15 @@ int nl_model_parse(const char *spec, nl_model **out);
 /* Release a model (NULL is a no-op). */
 void nl_model_free(nl_model *m);
 
-nl_model_kind nl_model_get_kind(const nl_model *m);
-
 /* The spec as given by the user (owned by the model). */
 const char *nl_model_spec(const nl_model *m);
 
 /* Is the model defined by its spectrum (power, spectrum:) rather than by R? */
 int nl_model_is_spectral(const nl_model *m);
+
+/* Can R(lag) be evaluated (nl_model_acf): a model defined by R, or a
+ * spectral family whose R is computed (power:)?  spectrum: cannot. */
+int nl_model_has_acf(const nl_model *m);
 
 /* May nl_model_acf and nl_model_spectrum be called on this model from
  * several threads at once?  True for every model but expressions
@@ -136,7 +123,10 @@ double nl_model_acf_d2(const nl_model *m, double t);
  * NL_EINVAL with a message. */
 int nl_model_check_dim(const nl_model *m, int dim);
 
-/* One entry of the model catalogue printed by `noiselab models`. */
+/* One entry of the model catalogue printed by `noiselab models`, made from
+ * the family registry (core/family.h): the name, the parameters with their
+ * defaults (required ones first; an argument family's argument and the
+ * keys after its ';'), the formula. */
 typedef struct {
     const char *name;     /* as written in a spec */
     const char *params;   /* parameters with defaults; required ones first */
@@ -146,9 +136,9 @@ typedef struct {
 /* The catalogue (static storage: do not free); *count receives its length. */
 const nl_model_info *nl_model_catalogue(size_t *count);
 
-/* The value in effect of the parameter `name` (var, scale, nugget, alpha,
- * omega, nu, d, fmin, fmax, ratio, zratio: defaults included, in the spec's
- * units; nugget is 0 unless given) into
+/* The value in effect of the parameter `name` (a parameter of the model's
+ * family, core/family.h, or ratio, zratio of a model defined by R: defaults
+ * included, in the spec's units; nugget is 0 unless given) into
  * *value.  Returns NL_OK, or NL_EINVAL when the model's family has no such
  * parameter (*value untouched).  Thread-safe (core/model_param.c). */
 int nl_model_param(const nl_model *m, const char *name, double *value);

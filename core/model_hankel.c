@@ -98,7 +98,7 @@ static double power_acf_2d_far(const nl_model *m, double r, gsl_integration_work
 {
     struct arg a = {m, 2, r};
     struct asym_arg b = {m, r, 0};
-    double lo = m->fmin, hi = m->fmax, k0 = HANKEL_X0 / (2 * M_PI * r), near = 0, far = 0, v, err;
+    double lo = nl_model_p(m, "fmin"), hi = nl_model_p(m, "fmax"), k0 = HANKEL_X0 / (2 * M_PI * r), near = 0, far = 0, v, err;
     gsl_function F = {integrand_j0, &a};
     if (k0 > lo) {
         if (gsl_integration_qag(&F, lo, fmin(k0, hi), 0, 1e-11, 2000, GSL_INTEG_GAUSS61, w, &near, &err))
@@ -125,7 +125,7 @@ static double power_acf(const nl_model *m, int dim, double r)
 {
     struct arg a = {m, dim, fabs(r)};
     gsl_integration_workspace *w = gsl_integration_workspace_alloc(2000);
-    double lo = m->fmin, hi = m->fmax, val = NAN, err;
+    double lo = nl_model_p(m, "fmin"), hi = nl_model_p(m, "fmax"), val = NAN, err;
     gsl_function F;
     int st;
     if (!w)

@@ -1,20 +1,18 @@
-/* Private layout of nl_model, shared by the files of the model layer. */
+/* Private layout of nl_model, shared by the files of the model layer and
+ * the family descriptors (core/families/). */
 #ifndef NL_MODEL_INTERNAL_H
 #define NL_MODEL_INTERNAL_H
 
+#include "family.h"
 #include "model.h"
 
 struct nl_model {
-    nl_model_kind kind;  /* which family */
-    char *spec;          /* the spec as given */
-    double var;          /* sill of the continuous part for R models; target variance for power */
-    double nugget;       /* white-noise variance added at lag 0 exactly (R models) */
-    double scale;        /* correlation length */
-    double alpha;        /* markaussian exponent */
-    double omega;        /* oscillation frequency, radians per unit lag */
-    double nu;           /* Matern smoothness */
-    double d;            /* power-law spectral exponent */
-    double fmin, fmax;   /* power-law band, cycles per unit length */
+    const nl_family *fam;             /* which family */
+    char *spec;                       /* the spec as given */
+    double p[NL_FAMILY_MAX_PARAMS];   /* the family's parameters, by index (fam->params) */
+    double var;                       /* p[var] (the sill of the continuous part), 1 when none */
+    double scale;                     /* p[scale], 1 when none */
+    double nugget;                    /* p[nugget], 0 when none */
     int sep;             /* separable product over axes */
     double angle;        /* ellipsoid rotation about z, radians */
     double cosa, sina;   /* cos and sin of angle, set after parsing */
@@ -26,6 +24,9 @@ struct nl_model {
     size_t tw, th;       /* image: table size */
 };
 
+/* The value of the family's parameter `name` (which it must have). */
+double nl_model_p(const nl_model *m, const char *name);
+
 /* Load an exemplar and tabulate its empirical autocorrelation. */
 int nl_model_image_load(nl_model *m, const char *path);
 
@@ -35,5 +36,9 @@ double nl_model_image_acf(const nl_model *m, double dx, double dy);
 
 /* R of the power model at distance r by quadrature (model_hankel.c). */
 double nl_model_power_acf(const nl_model *m, int dim, double r);
+
+/* "k=v,k=v,sep" into m: the family's keys and the anisotropy keys
+ * (model_parse.c; used by argument families after their ';'). */
+int nl_model_parse_params(nl_model *m, const char *s);
 
 #endif

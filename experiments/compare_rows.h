@@ -69,7 +69,7 @@ static void f_circ(void *st) { nl_synth_circulant_plan_free(st); }
 static int p_chol(const target *t, const size_t *n, void **st)
 {
     *st = NULL;
-    if (nl_model_get_kind(t->ma) == NL_MODEL_POWER)
+    if (nl_model_family(t->ma) == &nl_family_power)
         return NL_ERROR(NL_EINVAL, "not run: power:'s R is a quadrature per lag, and the plan evaluates R at "
                         "every pair of samples (N^2 / 2 quadratures: a minute at 32x32)");
     return nl_synth_cholesky_plan_alloc(t->ma, 2, n, NULL, (nl_synth_cholesky_plan **)st);
@@ -121,7 +121,7 @@ static int p_fault(const target *t, const size_t *n, void **st)
 {
     (void)n;
     *st = NULL;
-    if (nl_model_get_kind(t->ma) != NL_MODEL_POWER)
+    if (nl_model_family(t->ma) != &nl_family_power)
         return NL_ERROR(NL_EINVAL, "faulting: Brownian (k^-3) only");
     return NL_OK;
 }

@@ -8,6 +8,7 @@
 #include "../core/wk.h"
 
 #include <complex.h>
+#include <stdio.h>
 #include <fftw3.h>
 #include <gsl/gsl_multifit.h>
 #include <math.h>
@@ -280,6 +281,26 @@ int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int oct
     return nl_synth_lattice_plan_init_flags(m, dim, cell0, octaves, 0, p);
 }
 
+/* The families with a closed-form spectrum, for the message: the spectral
+ * ones in every dimension ("power:, spectrum:"), then those with a 1D
+ * spectrum ("or a 1D markov, gauss"), from the registry. */
+static void closed_form_families(char *buf, size_t size)
+{
+    size_t len = 0;
+    int n1 = 0;
+    buf[0] = 0;
+    for (size_t i = 0; i < nl_family_count() && len < size; i++) {
+        const nl_family *f = nl_family_get(i);
+        if (f->flags & NL_FAMILY_SPECTRAL)
+            len += (size_t)snprintf(buf + len, size - len, "%s:, ", f->name);
+    }
+    for (size_t i = 0; i < nl_family_count() && len < size; i++) {
+        const nl_family *f = nl_family_get(i);
+        if (f->spectrum && !(f->flags & NL_FAMILY_SPECTRAL))
+            len += (size_t)snprintf(buf + len, size - len, "%s%s", n1++ ? ", " : "or a 1D ", f->name);
+    }
+}
+
 int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
                                      nl_synth_lattice_plan *p)
 {
@@ -294,9 +315,12 @@ int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, i
     if (nl_model_nugget(m) != 0)
         return NL_ERROR(NL_EINVAL, "lattice: %s: a nugget is not represented by lattice noise (its closed-form "
                         "spectrum has no white-noise part); use fft, circulant or cholesky", nl_model_spec(m));
-    if (!isfinite(nl_model_spectrum(m, dim, probe)))
-        return NL_ERROR(NL_EINVAL, "%s: the lattice method needs the model's spectrum in closed form in %dD "
-                        "(power:, spectrum:, or a 1D markov, gauss, oscillatory, gauss-osc)", nl_model_spec(m), dim);
+    if (!isfinite(nl_model_spectrum(m, dim, probe))) {
+        char list[512];
+        closed_form_families(list, sizeof list);
+        return NL_ERROR(NL_EINVAL, "%s: the lattice method needs the model's spectrum in closed form in %dD (%s)",
+                        nl_model_spec(m), dim, list);
+    }
     if (!basis_ready[dim - 1] && (st = measure_basis(dim)))
         return st;
     memset(p, 0, sizeof *p);

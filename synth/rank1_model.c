@@ -42,9 +42,9 @@ int nl_rank1_model_check(const nl_model *m, int s)
     if (nl_model_nugget(m) != 0)
         return NL_ERROR(NL_EINVAL, "rank1: %s: a nugget is not represented by a rank-1 lattice (the Hankel "
                         "transform has no white-noise part); use fft, circulant or cholesky", nl_model_spec(m));
-    if (nl_model_get_kind(m) == NL_MODEL_SPHERICAL && s > 3)
-        return NL_ERROR(NL_EINVAL, "rank1: %s: the spherical model is positive definite up to 3D only, got %dD",
-                        nl_model_spec(m), s);
+    if (nl_model_family(m)->max_dim && s > nl_model_family(m)->max_dim)
+        return NL_ERROR(NL_EINVAL, "rank1: %s: the %s model is positive definite up to %dD only, got %dD",
+                        nl_model_spec(m), nl_model_family(m)->name, nl_model_family(m)->max_dim, s);
     if (nl_model_is_spectral(m)) {
         if (s > 3)
             return NL_ERROR(NL_EINVAL, "%s: spectrum models reach 3 dimensions; in 4 give an isotropic --acf",

@@ -89,7 +89,7 @@ static int fill_cache(nl_synth_sparse_point *p)
 /* The model's scale and variance, checked. */
 static int model_numbers(const nl_model *m, double *L, double *V)
 {
-    if (!m || nl_model_get_kind(m) != NL_MODEL_GAUSS || !nl_model_is_isotropic(m) || nl_model_nugget(m) != 0 ||
+    if (!m || nl_model_family(m) != &nl_family_gauss || !nl_model_is_isotropic(m) || nl_model_nugget(m) != 0 ||
         nl_model_param(m, "scale", L) || nl_model_param(m, "var", V))
         return NL_ERROR(NL_EINVAL, "sparse point noise: expected an isotropic gauss: model without a nugget (its "
                         "kernel is a Gaussian in closed form), got \"%s\"", m ? nl_model_spec(m) : "(none)");

@@ -432,7 +432,7 @@ int nl_subdiv_coeffs_alloc_rule(const nl_model *m, int dim, int levels, double s
     *out = NULL;
     if ((st = check_args(dim, levels, spacing0, N, rule, tol, nmax)) || (st = nl_model_check_dim(m, dim)))
         return st;
-    if (nl_model_get_kind(m) == NL_MODEL_SPECTRUM)
+    if (!nl_model_has_acf(m))
         return NL_ERROR(NL_EINVAL, "%s: subdivision needs R(lag); give the autocorrelation, or a power: model "
                         "(whose R is computed by quadrature)", nl_model_spec(m));
     if (nl_model_nugget(m) != 0)

@@ -189,7 +189,7 @@ int nl_subdiv_midpoint_hurst(const nl_model *m, int dim, double *H)
 {
     double d = NAN;
     /* f^-d with d = 2H + E (E = 1 or 2) */
-    if (nl_model_get_kind(m) != NL_MODEL_POWER || nl_model_param(m, "d", &d))
+    if (nl_model_family(m) != &nl_family_power || nl_model_param(m, "d", &d))
         return NL_ERROR(NL_EINVAL, "synth midpoint: expected --H or a power:d=D model, got \"%s\"", nl_model_spec(m));
     *H = (d - dim) / 2;
     if (!(*H > 0 && *H < 1))

@@ -1,0 +1,33 @@
+/* What the family descriptors share: the common parameters and the 1D
+ * spectra that several families are built from. */
+#ifndef NL_FAMILIES_INTERNAL_H
+#define NL_FAMILIES_INTERNAL_H
+
+#include "../family.h"
+#include "../model_internal.h"
+
+#include <math.h>
+
+#define NL_PARAM_SCALE {.name = "scale", .role = NL_ROLE_SCALE, .def = 1, .range = NL_RANGE_POSITIVE}
+#define NL_PARAM_VAR {.name = "var", .role = NL_ROLE_VARIANCE, .def = 1, .range = NL_RANGE_POSITIVE}
+#define NL_PARAM_NUGGET {.name = "nugget", .role = NL_ROLE_NUGGET, .def = 0, .range = NL_RANGE_NONNEG}
+
+/* |t| / scale, the lag in units of the correlation length. */
+static inline double nl_family_a(const nl_model *m, double t) { return fabs(t) / m->scale; }
+
+/* Two-sided 1D spectra of var exp(-|t|/s) and var exp(-(t/s)^2) at f. */
+double nl_spectrum_markov1d(double var, double s, double f);
+double nl_spectrum_gauss1d(double var, double s, double f);
+
+/* Are the expression's variables free of single lag or frequency
+ * components (x, y, z, fx, fy, fz)?  (expr:, spectrum:) */
+int nl_expr_isotropic(const nl_model *m);
+
+/* Compile an expression into m->eval, checking that it names only the
+ * variables in `allowed` (space separated); NL_OK or NL_EINVAL. */
+int nl_expr_compile(nl_model *m, const char *arg, const char *allowed);
+
+/* Evaluate the model's expression at the named variables. */
+double nl_expr_eval(const nl_model *m, const char *const *names, double *values, int n);
+
+#endif

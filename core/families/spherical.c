@@ -1,0 +1,23 @@
+/* spherical: the spherical model of range `scale` (Matheron 1971; gstat
+ * "Sph", GSTools Spherical with len_scale = a), positive definite in 1, 2
+ * and 3 dimensions only (its 4D Hankel transform is negative somewhere). */
+#include "families_internal.h"
+
+static const nl_family_param params[] = {NL_PARAM_SCALE, NL_PARAM_VAR, NL_PARAM_NUGGET};
+
+static double profile(const nl_model *m, double t)
+{
+    double a = nl_family_a(m, t);
+    return a < 1 ? m->var * (1 - a * (1.5 - 0.5 * a * a)) : 0.0;
+}
+
+const nl_family nl_family_spherical = {
+    .name = "spherical",
+    .aliases = "",
+    .formula = "R = var (1 - 1.5 a + 0.5 a^3) for a = |t|/scale < 1, else 0 (scale = range); valid in 1D to 3D",
+    .flags = NL_FAMILY_FIT,
+    .max_dim = 3,
+    .nparams = sizeof params / sizeof *params,
+    .params = params,
+    .profile = profile,
+};
