@@ -88,6 +88,10 @@ const char *cli_one_operand(const char *cmd, const char *what, int argc, char **
 /* Does path end with ext (case-insensitive, ext with its dot)? */
 int cli_has_ext(const char *path, const char *ext);
 
+/* Print text (words separated by single spaces; a double space is kept
+ * inside a line) filled to width columns, then a newline (cli/text.c). */
+void cli_fill(FILE *f, const char *text, int width);
+
 /* "noiselab WHAT: NN%" on stderr when it is a terminal and the work has run
  * for over a second since the first call; cli_progress_done clears it. */
 void cli_progress(const char *what, double frac);

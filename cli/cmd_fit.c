@@ -2,6 +2,7 @@
 #include "cli.h"
 #include "../analysis/fit.h"
 #include "../analysis/variogram.h"
+#include "../core/family.h"
 #include "../core/io_points.h"
 #include "../core/nl_error.h"
 
@@ -11,15 +12,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char help[] =
+static const char help_usage[] =
     "usage: noiselab fit DATA.tsv|FIELD.exr --model FAMILY [--nugget] [--fix NAME=VALUE]...\n"
     "                    [--method wls|ml|reml]\n"
     "                    [--weights cressie|pairs|reweighted|distance]\n"
-    "                    [--width W] [--cutoff C] [--json]\n\n"
-    "Fits a model family (markov, gauss, markaussian, oscillatory, gauss-osc, matern,\n"
-    "spherical) to data: its var, scale (the spherical model's range), the nugget\n"
-    "with --nugget, and its shape parameter (alpha, omega, nu), each unless fixed by\n"
-    "--fix.  wls (default): weighted least squares on the empirical variogram (as\n"
+    "                    [--width W] [--cutoff C] [--json]\n\n";
+
+static const char help[] =
     "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2 of\n"
     "the fitted model (cressie: Cressie's criterion; reweighted: the weights held\n"
     "at the last fit and refitted to a fixed point, gstat's fit.method 2), N\n"
@@ -38,6 +37,33 @@ static const char help[] =
     "about 2x (its likelihood is not smooth in the range): quote the profile\n"
     "intervals, which need no curvature (experiments/fit_coverage.c measures both).\n"
     "wls's treat correlated variogram bins as independent and understate the spread.\n";
+
+/* The usage, then the families `fit` accepts and their shape parameters,
+ * from the registry, then the rest. */
+static void print_help(void)
+{
+    char families[512], shapes[256] = "", text[1024];
+    size_t len = 0;
+    nl_family_names(NL_FAMILY_FIT, 0, ", ", families, sizeof families);
+    for (size_t i = 0; i < nl_family_count(); i++) {
+        const nl_family *f = nl_family_get(i);
+        for (size_t k = 0; (f->flags & NL_FAMILY_FIT) && k < f->nparams; k++) {
+            const char *name = f->params[k].name;
+            char word[40];
+            snprintf(word, sizeof word, "%s,", name);
+            if (f->params[k].role == NL_ROLE_SHAPE && !strstr(shapes, word) && len < sizeof shapes)
+                len += (size_t)snprintf(shapes + len, sizeof shapes - len, "%s%s", len ? " " : "", word);
+        }
+    }
+    if (len)
+        shapes[len - 1] = 0;  /* the last comma */
+    snprintf(text, sizeof text, "Fits a model family (%s) to data: its var, scale (the spherical model's range), "
+             "the nugget with --nugget, and its shape parameter (%s), each unless fixed by --fix.  wls (default): "
+             "weighted least squares on the empirical variogram (as", families, shapes);
+    fputs(help_usage, stdout);
+    cli_fill(stdout, text, 80);
+    fputs(help, stdout);
+}
 
 /* The command's options. */
 typedef struct {
@@ -98,7 +124,7 @@ static void parse(int argc, char **argv, opts_t *a)
         case 'w': a->vo.width = cli_parse_positive("--width", optarg, "bin width"); break;
         case 'c': a->vo.cutoff = cli_parse_positive("--cutoff", optarg, "cutoff distance"); break;
         case 'j': a->json = 1; break;
-        case 'h': fputs(help, stdout); exit(0);
+        case 'h': print_help(); exit(0);
         }
     }
     a->in = cli_one_operand("fit", "input (points .tsv or field .exr)", argc, argv);

@@ -427,8 +427,8 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
     squares on the empirical variogram (method="wls", weights cressie, pairs,
     reweighted or distance), or the Gaussian likelihood ("ml", "reml",
     started from the wls fit, with 95% profile-likelihood intervals).
-    model: markov, gauss, markaussian, oscillatory, gauss-osc, matern,
-    spherical; fix: {"nu": 1.5, ...} parameters held.  Returns a dict: spec
+    model: a family whose entry in models() has fit=True; fix: {"nu": 1.5,
+    ...} parameters held.  Returns a dict: spec
     (ready for acf=), parameters, standard_errors, intervals (ml/reml:
     {name: (lower, upper)}), objective, aic, mean (ml/reml), n, converged,
     iterations."""

@@ -56,6 +56,46 @@ typedef struct {
 } nl_model_info;
 const nl_model_info *nl_model_catalogue(size_t *count);
 
+/* core/family.h */
+typedef enum { NL_ROLE_SHAPE = 0, NL_ROLE_VARIANCE, NL_ROLE_SCALE, NL_ROLE_NUGGET, NL_ROLE_BAND } nl_param_role;
+typedef enum { NL_RANGE_ANY = 0, NL_RANGE_POSITIVE, NL_RANGE_NONNEG, NL_RANGE_UPTO } nl_param_range;
+enum { NL_FAMILY_SPECTRAL = 1, NL_FAMILY_FIT = 2, NL_FAMILY_EXPRESSION = 4, NL_FAMILY_ARGUMENT = 8 };
+typedef struct {
+    const char *name;
+    nl_param_role role;
+    double def;
+    const char *def_text;
+    const char *placeholder;
+    const char *example;
+    nl_param_range range;
+    double hi;
+    const char *why;
+    double start;
+    int start_per_scale;
+} nl_family_param;
+typedef struct nl_family {
+    const char *name;
+    const char *aliases;
+    const char *argument;
+    const char *usage;
+    const char *formula;
+    unsigned flags;
+    int max_dim;
+    size_t nparams;
+    const nl_family_param *params;
+    int (*parse_argument)(nl_model *m, const char *arg);
+    int (*check)(const nl_model *m);
+    double (*profile)(const nl_model *m, double t);
+    double (*acf)(const nl_model *m, int dim, const double *lag);
+    double (*acf_stretched)(const nl_model *m, double u, double v, double w, double r);
+    double (*spectrum)(const nl_model *m, int dim, const double *f);
+    int (*isotropic)(const nl_model *m);
+    int (*check_dim)(const nl_model *m, int dim);
+    double (*acf_d2)(const nl_model *m, double t);
+} nl_family;
+size_t nl_family_count(void);
+const nl_family *nl_family_get(size_t i);
+
 /* core/dist.h */
 typedef struct nl_dist nl_dist;
 int nl_dist_parse(const char *spec, nl_dist **out);

@@ -99,14 +99,40 @@ def write(path, array, spacing=1.0, precision="single", **provenance):
         check(lib.nl_tsv_write_field(cstr(p, "write: path"), f, m, ffi.NULL, ffi.NULL))
 
 
+_ROLES = {0: "shape", 1: "variance", 2: "scale", 3: "nugget", 4: "band"}
+
+
+def _param(p):
+    """One parameter of a family's descriptor as a dict."""
+    lo = {0: None, 1: 0.0, 2: 0.0, 3: 0.0}[p.range]
+    return dict(name=ffi.string(p.name).decode(), role=_ROLES[p.role],
+                default=None if p.placeholder != ffi.NULL else getattr(p, "def"),
+                lower=lo, lower_open=p.range in (1, 3), upper=p.hi if p.range == 3 else None)
+
+
 def models():
-    """The model catalogue (``noiselab models``): a list of dicts with the
-    family's name (as written in a spec), its parameters with defaults
-    (required ones first) and its formula (R or S)."""
+    """The model catalogue (``noiselab models``), from the library's family
+    registry (core/family.h): a list of dicts, one per family, with its name
+    (as written in a spec; argument families as "expr:EXPR"), params (the
+    parameters with defaults, required ones first, as the catalogue prints
+    them), formula (R or S), aliases (other names a spec may use),
+    parameters (a list of dicts: name, role (variance, scale, nugget, shape
+    or band), default (None when required), lower, lower_open, upper: the
+    valid range, None where unbounded), spectral (defined by S), fit (fit
+    accepts it) and max_dim (positive definite up to this dimension; None:
+    every dimension)."""
     n = ffi.new("size_t *")
     cat = lib.nl_model_catalogue(n)
-    return [dict(name=ffi.string(cat[i].name).decode(), params=ffi.string(cat[i].params).decode(),
-                 formula=ffi.string(cat[i].formula).decode()) for i in range(n[0])]
+    out = []
+    for i in range(n[0]):
+        f = lib.nl_family_get(i)
+        out.append(dict(name=ffi.string(cat[i].name).decode(), params=ffi.string(cat[i].params).decode(),
+                        formula=ffi.string(cat[i].formula).decode(),
+                        aliases=ffi.string(f.aliases).decode().split(),
+                        parameters=[_param(f.params[k]) for k in range(f.nparams)],
+                        spectral=bool(f.flags & lib.NL_FAMILY_SPECTRAL), fit=bool(f.flags & lib.NL_FAMILY_FIT),
+                        max_dim=f.max_dim or None))
+    return out
 
 
 def version():
