@@ -14,7 +14,7 @@ static const char help[] =
     "  angle=DEG    rotate the correlation ellipse about z\n"
     "  ratio=Q      length along the rotated y axis / length along x\n"
     "  zratio=Q     length along z / length along x\n"
-    "(for expr:, spectrum: and image: after a final ';', e.g. \"expr:exp(-r);ratio=0.5\").\n"
+    "(for %s after a final ';', e.g. \"expr:exp(-r);ratio=0.5\").\n"
     "Lags are in spacing units; frequencies in cycles per unit length; spectra\n"
     "are two-sided densities whose integral is the variance R(0).\n";
 
@@ -28,7 +28,9 @@ int cli_cmd_models(int argc, char **argv)
         if (c == 'j')
             json = 1;
         else if (c == 'h') {
-            fputs(help, stdout);
+            char list[256];
+            nl_family_names(NL_FAMILY_ARGUMENT, 0, " and ", list, sizeof list);
+            printf(help, list);
             return 0;
         }
     }

@@ -78,8 +78,9 @@ typedef struct nl_family {
     const char *usage;         /* NL_FAMILY_ARGUMENT: the catalogue's text for the argument */
     const char *formula;       /* R or S, as `noiselab models` prints it */
     unsigned flags;            /* NL_FAMILY_* */
-    int max_dim;               /* positive definite for every valid parameter up to this
-                                  dimension (0: every dimension) */
+    int max_dim;               /* not positive definite beyond this dimension, whatever the
+                                  parameters (0: no such limit) */
+    const char *validity;      /* what is known of its validity by dimension, one sentence */
     size_t nparams;
     const nl_family_param *params;
     /* NL_FAMILY_ARGUMENT: read the argument into m (NL_OK or a status with

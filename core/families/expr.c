@@ -100,6 +100,7 @@ const nl_family nl_family_expr = {
     .usage = "variables t, x, y, z, r",
     .formula = "R = EXPR (libmatheval syntax), e.g. expr:cos(10*t)*exp(-abs(t))",
     .flags = NL_FAMILY_EXPRESSION | NL_FAMILY_ARGUMENT,
+    .validity = "as the expression: noiselab check measures it",
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .parse_argument = parse_argument,

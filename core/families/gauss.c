@@ -25,6 +25,7 @@ const nl_family nl_family_gauss = {
     .aliases = "",
     .formula = "R = var exp(-(t/scale)^2); 1D S = var scale sqrt(pi) exp(-(pi f scale)^2)",
     .flags = NL_FAMILY_FIT,
+    .validity = "positive definite in every dimension",
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .profile = profile,

@@ -29,6 +29,7 @@ const nl_family nl_family_gauss_osc = {
     .aliases = "",
     .formula = "R = var cos(omega t) exp(-(t/scale)^2)",
     .flags = NL_FAMILY_FIT,
+    .validity = "positive definite in 1D for every omega; in 2D and 3D only up to a largest omega (in 3D omega scale = sqrt(2); noiselab check finds it)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .profile = profile,

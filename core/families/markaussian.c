@@ -18,6 +18,7 @@ const nl_family nl_family_markaussian = {
     .aliases = "",
     .formula = "R = var exp(-|t/scale|^alpha), 0 < alpha <= 2",
     .flags = NL_FAMILY_FIT,
+    .validity = "positive definite in every dimension for 0 < alpha <= 2 (a completely monotone function of |t|^alpha)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .profile = profile,

@@ -23,6 +23,7 @@ const nl_family nl_family_markov = {
     .formula = "R = var exp(-|t|/scale) (+ nugget at t = 0, as every R model); 1D S = var 2 scale / (1 + (2 pi f "
                "scale)^2)",
     .flags = NL_FAMILY_FIT,
+    .validity = "positive definite in every dimension (a completely monotone function of |t|)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .profile = profile,

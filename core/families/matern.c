@@ -67,6 +67,7 @@ const nl_family nl_family_matern = {
     .aliases = "",
     .formula = "R = var 2^(1-nu)/Gamma(nu) u^nu K_nu(u), u = sqrt(2 nu) |t| / scale",
     .flags = NL_FAMILY_FIT,
+    .validity = "positive definite in every dimension for nu > 0",
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .profile = profile,

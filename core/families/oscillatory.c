@@ -28,6 +28,7 @@ const nl_family nl_family_oscillatory = {
     .aliases = "",
     .formula = "R = var cos(omega t) exp(-|t|/scale)",
     .flags = NL_FAMILY_FIT,
+    .validity = "positive definite in 1D for every omega; in 2D and 3D only up to a largest omega that depends on the dimension and the scale (noiselab check finds it)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .profile = profile,

@@ -62,6 +62,7 @@ const nl_family nl_family_power = {
     .aliases = "",
     .formula = "S = c |f|^-d for fmin <= |f| <= fmax (0 elsewhere), c such that the integral of S is var",
     .flags = NL_FAMILY_SPECTRAL,
+    .validity = "a non-negative density in every dimension: valid wherever its band is",
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .check = check,

@@ -25,6 +25,7 @@ const nl_family nl_family_spectrum = {
     .usage = "variables f, fx, fy, fz, k",
     .formula = "S = EXPR, a non-negative two-sided density",
     .flags = NL_FAMILY_EXPRESSION | NL_FAMILY_ARGUMENT | NL_FAMILY_SPECTRAL,
+    .validity = "valid where the expression is non-negative: noiselab check measures it",
     .parse_argument = parse_argument,
     .spectrum = spectrum,
     .isotropic = nl_expr_isotropic,

@@ -16,6 +16,7 @@ const nl_family nl_family_spherical = {
     .aliases = "",
     .formula = "R = var (1 - 1.5 a + 0.5 a^3) for a = |t|/scale < 1, else 0 (scale = range); valid in 1D to 3D",
     .flags = NL_FAMILY_FIT,
+    .validity = "positive definite in 1D, 2D and 3D only",
     .max_dim = 3,
     .nparams = sizeof params / sizeof *params,
     .params = params,

@@ -81,6 +81,7 @@ typedef struct nl_family {
     const char *formula;
     unsigned flags;
     int max_dim;
+    const char *validity;
     size_t nparams;
     const nl_family_param *params;
     int (*parse_argument)(nl_model *m, const char *arg);

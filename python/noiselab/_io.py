@@ -119,8 +119,9 @@ def models():
     parameters (a list of dicts: name, role (variance, scale, nugget, shape
     or band), default (None when required), lower, lower_open, upper: the
     valid range, None where unbounded), spectral (defined by S), fit (fit
-    accepts it) and max_dim (positive definite up to this dimension; None:
-    every dimension)."""
+    accepts it), max_dim (not positive definite beyond this dimension; None:
+    no such limit) and validity (what is known of its validity by
+    dimension)."""
     n = ffi.new("size_t *")
     cat = lib.nl_model_catalogue(n)
     out = []
@@ -131,7 +132,7 @@ def models():
                         aliases=ffi.string(f.aliases).decode().split(),
                         parameters=[_param(f.params[k]) for k in range(f.nparams)],
                         spectral=bool(f.flags & lib.NL_FAMILY_SPECTRAL), fit=bool(f.flags & lib.NL_FAMILY_FIT),
-                        max_dim=f.max_dim or None))
+                        max_dim=f.max_dim or None, validity=ffi.string(f.validity).decode()))
     return out
 
 
