@@ -1,14 +1,17 @@
 /* Fitting a covariance model to data: weighted least squares on an
  * empirical semivariogram, and (restricted) maximum likelihood on the data.
  *
- * Models.  The named families of core/model.h with an R in closed form:
- * markov, gauss, markaussian, oscillatory, gauss-osc, matern, spherical.
- * Their parameters, by spec name: var and scale always; nugget when asked
- * for (nugget = 1) or fixed; alpha (markaussian), omega (oscillatory,
- * gauss-osc), nu (matern).  Each is fitted unless fixed (nl_fit_options.fix).
- * Positive parameters are optimised as logarithms, alpha as the logistic
- * 2 / (1 + exp(-u)) (0 < alpha < 2); standard errors are carried back to
- * the spec's parameters by the delta method (se(p) = |dp/du| se(u)).
+ * Models.  The families of the registry flagged NL_FAMILY_FIT (core/
+ * family.h: an R in closed form of named parameters; `noiselab models`
+ * and docs/models.md say which).  Their parameters, by spec name: var and
+ * scale always; nugget when asked for (nugget = 1) or fixed; every shape
+ * parameter of the family (alpha, omega, nu, beta, ...).  Each is fitted
+ * unless fixed (nl_fit_options.fix).  Positive parameters are optimised as
+ * logarithms, one with an upper end hi (markaussian's alpha, 0 < alpha <=
+ * 2) as the logistic hi / (1 + exp(-u)); standard errors are carried back
+ * to the spec's parameters by the delta method (se(p) = |dp/du| se(u)).
+ * Starts: the family's descriptor gives each shape parameter's start and
+ * the factor on the automatic scale start (2 for the spherical range).
  *
  * Semivariogram of a model: gamma(h) = var + nugget - R(h) for h > 0 (R(h)
  * excludes the nugget there), the convention of gstat and GSTools (nugget:
@@ -104,7 +107,6 @@
 
 #include <stddef.h>
 
-#define NL_FIT_MAX_PARAMS 5     /* var, scale, nugget and one shape parameter */
 #define NL_FIT_MAX_FIX 8
 #define NL_FIT_ML_MAX 10000     /* most data for a likelihood fit */
 
@@ -122,21 +124,32 @@ typedef struct {
     nl_fit_weights weights;              /* WLS weighting */
     nl_fit_likelihood likelihood;        /* ML or REML */
     const double *start;                 /* NULL, or a start value per parameter (the order of
-                                            nl_fit_result.name; NaN: automatic) */
+                                            nl_fit_result.param; NaN: automatic) */
     nl_fit_intervals intervals;          /* ML/REML: profile intervals of none, every free
                                             parameter, or the scale alone */
 } nl_fit_options;
 
+/* One fitted parameter. */
+typedef struct {
+    char name[16];                        /* its spec name: var, scale, nugget, nu, ... */
+    double value;                         /* fitted (or fixed) value */
+    double se;                            /* standard error (0 when fixed; NaN when the
+                                             information matrix is singular) */
+    double lower, upper;                  /* 95% profile-likelihood interval (see above): its ends,
+                                             NaN where not computed, upper +inf where unbounded */
+    int fixed;                            /* held at the given value */
+} nl_fit_param;
+
+/* A fit's result.  param has np entries, as many as the family's fitted
+ * parameters: var, scale, the nugget when fitted or fixed, then the
+ * family's shape parameters in its descriptor's order (core/family.h).
+ * The fits allocate it; release it with nl_fit_result_free (a failed fit
+ * leaves param NULL).  A result passed to a fit is overwritten: release a
+ * previous one first. */
 typedef struct {
     char spec[512];                       /* the fitted model, ready for --acf */
     size_t np;                            /* parameters (free and fixed) */
-    char name[NL_FIT_MAX_PARAMS][8];      /* their spec names: var, scale, nugget, nu, ... */
-    double value[NL_FIT_MAX_PARAMS];      /* fitted (or fixed) values */
-    double se[NL_FIT_MAX_PARAMS];         /* standard errors (0 when fixed; NaN when the
-                                             information matrix is singular) */
-    double lower[NL_FIT_MAX_PARAMS];      /* 95% profile-likelihood interval (see above): its ends, */
-    double upper[NL_FIT_MAX_PARAMS];      /*   NaN where not computed, upper +inf where unbounded */
-    int fixed[NL_FIT_MAX_PARAMS];         /* held at the given value */
+    nl_fit_param *param;                  /* np entries (see above) */
     size_t nfree;                         /* free parameters */
     double objective;                     /* WLS: weighted sum of squares; ML: -2 l at the optimum */
     double aic;                           /* see above */
@@ -145,6 +158,10 @@ typedef struct {
     int iterations;                       /* optimiser steps */
     int converged;                        /* the optimiser's test was met */
 } nl_fit_result;
+
+/* Release a result's parameters (param = NULL, np = 0; NULL or a released
+ * result is a no-op). */
+void nl_fit_result_free(nl_fit_result *res);
 
 /* Check the options alone (family, fixes, dim) as the fits do: NL_OK or
  * NL_EINVAL with the fits' message.  Thread-safe. */

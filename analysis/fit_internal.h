@@ -6,6 +6,10 @@
 #include "fit.h"
 #include "../core/model.h"
 
+/* The most parameters of a family (core/family.h): the size of the
+ * optimisers' work arrays. */
+#define NL_FIT_MAX_PARAMS NL_FAMILY_MAX_PARAMS
+
 #include <gsl/gsl_matrix.h>
 
 /* How a free parameter is optimised: as log(v), or as the logit of v / hi
@@ -45,10 +49,11 @@ double nl_fit_ml_minus2l_u(nl_fit_mldata *d, const double *u);
 /* Profile-likelihood intervals (analysis/fit_profile.c) of the free
  * parameters chosen by `which` (NL_FIT_INTERVALS_*) around the optimum
  * u_hat (-2 l = f_hat), cov the Hessian's covariance of u (a first guess of
- * the widths; NaN allowed).  Fills res->lower, res->upper (values, NaN for
- * parameters not profiled) and leaves d at u_hat.  NL_OK or NL_ENOMEM. */
+ * the widths; NaN allowed).  Fills lower[k], upper[k] for each of the
+ * d->p->np parameters (values, NaN for parameters not profiled) and leaves
+ * d at u_hat.  NL_OK or NL_ENOMEM. */
 int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const double *cov, int which,
-                   nl_fit_result *res);
+                   double *lower, double *upper);
 
 /* Check the family and the fixes, set names, fixed values, NaN elsewhere. */
 int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p);
@@ -75,8 +80,11 @@ int nl_fit_params_spec(const nl_fit_params *p, char *buf, size_t size);
 /* Parse the current values into a model (nl_model_free releases it). */
 int nl_fit_params_model(const nl_fit_params *p, nl_model **m);
 
-/* Copy names, values and the spec into res; se from the covariance cov of
- * u (nfree x nfree, row-major; NULL: NaN). */
-int nl_fit_params_result(const nl_fit_params *p, const double *cov, nl_fit_result *res);
+/* Allocate res->param and copy names, values and the spec into res; se
+ * from the covariance cov of u (nfree x nfree, row-major; NULL: NaN), the
+ * intervals from lower and upper (np each; NULL: NaN).  NL_OK, NL_ENOMEM,
+ * or NL_EINVAL when the spec does not fit (res->param then NULL). */
+int nl_fit_params_result(const nl_fit_params *p, const double *cov, const double *lower, const double *upper,
+                         nl_fit_result *res);
 
 #endif

@@ -182,7 +182,7 @@ static void ml_start(nl_fit_params *p, const double *x, const double *z, size_t 
     }
     var = var > 0 ? var : 1;
     diag = sqrt(diag);
-    nl_fit_params_start(p, var, diag / (strcmp(p->family, "spherical") == 0 ? 5 : 10), start);
+    nl_fit_params_start(p, var, diag / 10, start);
 }
 
 static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_fit_options *o, nl_fit_result *res)
@@ -190,11 +190,12 @@ static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_
     nl_fit_params p;
     ml_data d;
     double u[NL_FIT_MAX_PARAMS], cov[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS];
+    double lower[NL_FIT_MAX_PARAMS], upper[NL_FIT_MAX_PARAMS];
     size_t nn[2] = {n, n};
     int st;
     memset(res, 0, sizeof *res);
     for (size_t k = 0; k < NL_FIT_MAX_PARAMS; k++)
-        res->lower[k] = res->upper[k] = NAN;
+        lower[k] = upper[k] = NAN;
     if ((st = nl_fit_params_init(o, dim, &p)) || (st = check_data(x, z, n, dim, p.nfree)) ||
         (st = nl_size_check(2, nn, sizeof(double), 1, NULL)))
         return st;
@@ -206,13 +207,13 @@ static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_
         st = NL_ERROR(NL_ENOMEM, "out of memory for the %zu x %zu covariance matrix", n, n);
     if (!st && !(st = ml_minimise(&d, res, u))) {
         ml_covariance(&d, u, res->objective, cov);
-        if (o->intervals && (st = nl_fit_profile(&d, u, res->objective, cov, o->intervals, res)))
+        if (o->intervals && (st = nl_fit_profile(&d, u, res->objective, cov, o->intervals, lower, upper)))
             goto done;
         res->mean = d.beta;
         res->nobs = n;
         /* ML: the free covariance parameters and the mean */
         res->aic = res->objective + 2.0 * (double)(p.nfree + 1);
-        st = nl_fit_params_result(&p, cov, res);
+        st = nl_fit_params_result(&p, cov, lower, upper, res);
     }
 done:
     gsl_vector_free(d.a);

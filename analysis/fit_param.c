@@ -3,6 +3,7 @@
 #include "../core/nl_error.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -90,7 +91,7 @@ void nl_fit_params_start(nl_fit_params *p, double sill, double scale, const doub
     int nugget = nl_fit_params_find(p, "nugget") >= 0;
     for (size_t k = 0; k < p->np; k++) {
         const nl_family_param *fp = p->param[k];
-        double v = fp->role == NL_ROLE_SCALE ? scale : fp->role == NL_ROLE_NUGGET ? 0.1 * sill
+        double v = fp->role == NL_ROLE_SCALE ? scale * fp->start : fp->role == NL_ROLE_NUGGET ? 0.1 * sill
                  : fp->role == NL_ROLE_VARIANCE ? (nugget ? 0.9 : 1) * sill
                  : fp->start_per_scale ? fp->start / scale : fp->start;
         if (start && isfinite(start[k]) && start[k] > 0)
@@ -165,21 +166,41 @@ int nl_fit_params_model(const nl_fit_params *p, nl_model **m)
     return nl_model_parse(spec, m);
 }
 
-int nl_fit_params_result(const nl_fit_params *p, const double *cov, nl_fit_result *res)
+int nl_fit_params_result(const nl_fit_params *p, const double *cov, const double *lower, const double *upper,
+                         nl_fit_result *res)
 {
+    int st;
+    res->param = calloc(p->np, sizeof *res->param);
+    if (!res->param)
+        return NL_ERROR(NL_ENOMEM, "out of memory");
     res->np = p->np;
     res->nfree = p->nfree;
     for (size_t k = 0; k < p->np; k++) {
-        snprintf(res->name[k], sizeof res->name[k], "%s", p->name[k]);
-        res->value[k] = p->value[k];
-        res->fixed[k] = p->fixed[k];
-        res->se[k] = 0;
+        nl_fit_param *q = &res->param[k];
+        snprintf(q->name, sizeof q->name, "%s", p->name[k]);
+        q->value = p->value[k];
+        q->fixed = p->fixed[k];
+        q->se = 0;
+        q->lower = lower ? lower[k] : NAN;
+        q->upper = upper ? upper[k] : NAN;
     }
     for (size_t k = 0; k < p->nfree; k++) {
         double c = cov ? cov[k * p->nfree + k] : NAN;
-        res->se[p->free_idx[k]] = c >= 0 && isfinite(c) ? fabs(nl_fit_params_dvalue(p, k)) * sqrt(c) : NAN;
+        res->param[p->free_idx[k]].se = c >= 0 && isfinite(c) ? fabs(nl_fit_params_dvalue(p, k)) * sqrt(c) : NAN;
     }
-    return nl_fit_params_spec(p, res->spec, sizeof res->spec);
+    st = nl_fit_params_spec(p, res->spec, sizeof res->spec);
+    if (st)
+        nl_fit_result_free(res);
+    return st;
+}
+
+void nl_fit_result_free(nl_fit_result *res)
+{
+    if (!res)
+        return;
+    free(res->param);
+    res->param = NULL;
+    res->np = 0;
 }
 
 int nl_fit_check_options(const nl_fit_options *o, int dim)

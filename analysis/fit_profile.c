@@ -117,19 +117,20 @@ static double find_end(profile *pr, gsl_root_fsolver *rs, const double *u_hat, d
  * edges). */
 static double value_of(const nl_fit_params *p, size_t k, double u)
 {
-    return p->tr[p->free_idx[k]] == NL_FIT_LOG ? exp(u) : 2 / (1 + exp(-u));
+    size_t i = p->free_idx[k];
+    return p->tr[i] == NL_FIT_LOG ? exp(u) : p->hi[i] / (1 + exp(-u));
 }
 
 int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const double *cov, int which,
-                   nl_fit_result *res)
+                   double *lower, double *upper)
 {
     nl_fit_params *p = d->p;
     size_t k = p->nfree;
     profile pr = {d, 0, 0, {0}, f_hat + PR_CHI2, NULL};
     gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     int st = NL_OK;
-    for (size_t i = 0; i < NL_FIT_MAX_PARAMS; i++)
-        res->lower[i] = res->upper[i] = NAN;
+    for (size_t i = 0; i < p->np; i++)
+        lower[i] = upper[i] = NAN;
     if (k > 1)
         pr.nm = gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, k - 1);
     if (!rs || (k > 1 && !pr.nm)) {
@@ -142,8 +143,8 @@ int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const do
         if (which == NL_FIT_INTERVALS_SCALE && strcmp(p->name[q], "scale") != 0)
             continue;
         pr.j = j;
-        res->lower[q] = value_of(p, j, find_end(&pr, rs, u_hat, se, -1));
-        res->upper[q] = value_of(p, j, find_end(&pr, rs, u_hat, se, +1));
+        lower[q] = value_of(p, j, find_end(&pr, rs, u_hat, se, -1));
+        upper[q] = value_of(p, j, find_end(&pr, rs, u_hat, se, +1));
     }
 done:
     if (pr.nm)

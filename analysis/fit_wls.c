@@ -63,7 +63,7 @@ static int residuals(const gsl_vector *x, void *params, gsl_vector *f)
 }
 
 /* Automatic start: the sill from the far half of the bins, the scale where gamma first reaches 1 - 1/e of the sill
- * (twice that for the spherical model's range). */
+ * (times the family's factor: twice that for the spherical model's range). */
 static void wls_start(nl_fit_params *p, const wls_data *d, const double *start)
 {
     double sill = 0, cnt = 0, scale = d->h[d->m - 1] / 3;
@@ -75,8 +75,6 @@ static void wls_start(nl_fit_params *p, const wls_data *d, const double *start)
             scale = d->h[j];
             break;
         }
-    if (strcmp(p->family, "spherical") == 0)
-        scale *= 2;
     nl_fit_params_start(p, sill, scale, start);
 }
 
@@ -194,8 +192,6 @@ static int fit_variogram(const double *distance, const double *gamma, const doub
     double cov[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS], *buf;
     int st;
     memset(res, 0, sizeof *res);
-    for (size_t k = 0; k < NL_FIT_MAX_PARAMS; k++)
-        res->lower[k] = res->upper[k] = NAN;
     res->mean = NAN;
     if ((st = nl_fit_params_init(o, dim, &p)))
         return st;
@@ -217,7 +213,7 @@ static int fit_variogram(const double *distance, const double *gamma, const doub
     if (!st) {
         res->nobs = d.m;
         res->aic = (double)d.m * log(res->objective / (double)d.m) + 2.0 * (double)p.nfree;
-        st = nl_fit_params_result(&p, cov, res);
+        st = nl_fit_params_result(&p, cov, NULL, NULL, res);
     }
     free(buf);
     return st;

@@ -174,11 +174,14 @@ static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
     nl_variogram_free(v);
     if (!st && a->method) {
         nl_fit_options ml = a->o;
-        double start[NL_FIT_MAX_PARAMS];
-        memcpy(start, r->value, sizeof start);
+        double *start = cli_malloc(r->np * sizeof *start);
+        for (size_t k = 0; k < r->np; k++)
+            start[k] = r->param[k].value;
+        nl_fit_result_free(r);
         ml.start = start;
         ml.intervals = NL_FIT_INTERVALS_ALL;
         st = nl_fit_ml(p->pts, p->val, p->n, p->dim, &ml, r);
+        free(start);
     }
     return st;
 }
@@ -205,17 +208,18 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
     printf("parameter   value         standard error%s\n", a->method ? "   95% profile-likelihood interval" : "");
     for (size_t k = 0; k < r->np; k++) {
         char se[32], lo[32], hi[32];
-        if (r->fixed[k])
+        const nl_fit_param *q = &r->param[k];
+        if (q->fixed)
             snprintf(se, sizeof se, "fixed");
-        else if (isfinite(r->se[k]))
-            snprintf(se, sizeof se, "%.4g", r->se[k]);
+        else if (isfinite(q->se))
+            snprintf(se, sizeof se, "%.4g", q->se);
         else
             snprintf(se, sizeof se, "n/a (singular information)");
-        if (isnan(r->lower[k]) || isnan(r->upper[k]))
-            printf("%-11s %-13.6g %s\n", r->name[k], r->value[k], se);
+        if (isnan(q->lower) || isnan(q->upper))
+            printf("%-11s %-13.6g %s\n", q->name, q->value, se);
         else
-            printf("%-11s %-13.6g %-16s %s to %s\n", r->name[k], r->value[k], se,
-                   end_text(r->lower[k], lo, sizeof lo), end_text(r->upper[k], hi, sizeof hi));
+            printf("%-11s %-13.6g %-16s %s to %s\n", q->name, q->value, se, end_text(q->lower, lo, sizeof lo),
+                   end_text(q->upper, hi, sizeof hi));
     }
     if (a->method)
         printf("mean        %.6g\n", r->mean);
@@ -228,19 +232,21 @@ static void print_json(const opts_t *a, const nl_fit_result *r)
     static const char *const mname[] = {"wls", "ml", "reml"};
     json_t *par = json_object(), *se = json_object(), *j;
     for (size_t k = 0; k < r->np; k++) {
-        json_object_set_new(par, r->name[k], json_real(r->value[k]));
-        json_object_set_new(se, r->name[k], isfinite(r->se[k]) ? json_real(r->se[k]) : json_null());
+        const nl_fit_param *q = &r->param[k];
+        json_object_set_new(par, q->name, json_real(q->value));
+        json_object_set_new(se, q->name, isfinite(q->se) ? json_real(q->se) : json_null());
     }
     j = json_pack("{s:s,s:o,s:o,s:f,s:f,s:s,s:I,s:b,s:i}", "model", r->spec, "parameters", par, "standard_errors", se,
                   "objective", r->objective, "aic", r->aic, "method", mname[a->method], "n", (json_int_t)r->nobs,
                   "converged", r->converged, "iterations", r->iterations);
     if (a->method) {
         json_t *iv = json_object();
-        for (size_t k = 0; k < r->np; k++)
-            if (!isnan(r->lower[k]) && !isnan(r->upper[k]))
-                json_object_set_new(iv, r->name[k], json_pack("[f,o]", r->lower[k],
-                                                              isfinite(r->upper[k]) ? json_real(r->upper[k])
-                                                                                    : json_null()));
+        for (size_t k = 0; k < r->np; k++) {
+            const nl_fit_param *q = &r->param[k];
+            if (!isnan(q->lower) && !isnan(q->upper))
+                json_object_set_new(iv, q->name, json_pack("[f,o]", q->lower,
+                                                           isfinite(q->upper) ? json_real(q->upper) : json_null()));
+        }
         json_object_set_new(j, "mean", json_real(r->mean));
         json_object_set_new(j, "intervals", iv);
     }
@@ -271,5 +277,6 @@ int cli_cmd_fit(int argc, char **argv)
         print_json(&a, &r);
     else
         print_text(&a, &r);
+    nl_fit_result_free(&r);
     return 0;
 }

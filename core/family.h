@@ -58,8 +58,10 @@ typedef struct {
     nl_param_range range;
     double hi;               /* NL_RANGE_UPTO: the upper end */
     const char *why;         /* NL_RANGE_UPTO: why, e.g. "above 2 the ACF is not positive definite" */
-    double start;            /* fit: the start value of a shape parameter ... */
-    int start_per_scale;     /* ... divided by the scale when set (a frequency) */
+    double start;            /* fit: the start value of a shape parameter (divided by the
+                                scale when start_per_scale is set: a frequency); of the
+                                scale, the factor on the automatic start (analysis/fit.h) */
+    int start_per_scale;
 } nl_family_param;
 
 /* Family flags. */

@@ -65,7 +65,7 @@ static void sample_nodes(const nl_field *f, size_t g, size_t n, uint64_t seed, n
 
 static void add(tally *t, double truth, const nl_fit_result *r, size_t q)
 {
-    double est = r->value[q], se = r->se[q];
+    double est = r->param[q].value, se = r->param[q].se;
     if (isfinite(se)) {
         t->n++;
         t->sum += est;
@@ -74,9 +74,9 @@ static void add(tally *t, double truth, const nl_fit_result *r, size_t q)
         t->cover += fabs(est - truth) <= 1.96 * se;
         t->cover_log += fabs(log(est / truth)) <= 1.96 * se / est;
     }
-    if (!isnan(r->lower[q]) && !isnan(r->upper[q])) {
+    if (!isnan(r->param[q].lower) && !isnan(r->param[q].upper)) {
         t->pn++;
-        t->pcover += r->lower[q] <= truth && truth <= r->upper[q];
+        t->pcover += r->param[q].lower <= truth && truth <= r->param[q].upper;
     }
 }
 
@@ -92,7 +92,10 @@ static int fit_both(const nl_points *p, const nl_fit_options *o, nl_fit_result r
     nl_variogram_free(v);
     if (!st) {
         nl_fit_options ml = *o;
-        ml.start = r[1].value;  /* ML starts from the WLS fit */
+        double start[NL_FAMILY_MAX_PARAMS];
+        for (size_t k = 0; k < r[1].np; k++)
+            start[k] = r[1].param[k].value;  /* ML starts from the WLS fit */
+        ml.start = start;
         st = nl_fit_ml(p->pts, p->val, p->n, 2, &ml, &r[0]);
     }
     return st;
@@ -116,7 +119,7 @@ static int make_data(const nl_synth_circulant_plan *plan, size_t g, size_t n, si
     return st;
 }
 
-static void print_table(const nl_model *m, tally t[METHODS][NL_FIT_MAX_PARAMS], const nl_fit_result *r)
+static void print_table(const nl_model *m, tally t[METHODS][NL_FAMILY_MAX_PARAMS], const nl_fit_result *r)
 {
     static const char *names[METHODS] = {"ml", "wls-cressie"};
     printf("method\tparameter\ttrue\tfits\tmean\tsd\tmean_se\tcoverage\tcoverage_log\tprofile_fits\tprofile_coverage\n");
@@ -124,9 +127,9 @@ static void print_table(const nl_model *m, tally t[METHODS][NL_FIT_MAX_PARAMS], 
         for (size_t q = 0; q < r[a].np; q++) {
             tally *x = &t[a][q];
             double truth, mean = x->sum / x->n;
-            if (!x->n || nl_model_param(m, r[a].name[q], &truth))
+            if (!x->n || nl_model_param(m, r[a].param[q].name, &truth))
                 continue;
-            printf("%s\t%s\t%g\t%d\t%.4g\t%.4g\t%.4g\t%.3f\t%.3f\t", names[a], r[a].name[q], truth, x->n, mean,
+            printf("%s\t%s\t%g\t%d\t%.4g\t%.4g\t%.4g\t%.3f\t%.3f\t", names[a], r[a].param[q].name, truth, x->n, mean,
                    sqrt(fmax(0, x->sum2 / x->n - mean * mean) * x->n / (x->n - 1)), x->se / x->n,
                    x->cover / x->n, x->cover_log / x->n);
             if (x->pn)
@@ -143,7 +146,7 @@ int main(int argc, char **argv)
     nl_synth_circulant_plan *plan;
     nl_fit_options o = {0};
     size_t g, n, K, gn[2];
-    tally t[METHODS][NL_FIT_MAX_PARAMS] = {{{0}}};
+    tally t[METHODS][NL_FAMILY_MAX_PARAMS] = {{{0}}};
     slot *s;
     int st, failed = 0, last = -1;
     if (argc != 7 && argc != 8) {
@@ -175,7 +178,7 @@ int main(int argc, char **argv)
         for (int a = 0; a < METHODS; a++)
             for (size_t q = 0; q < s[k].r[a].np; q++) {
                 double truth;
-                if (!s[k].r[a].fixed[q] && !nl_model_param(m, s[k].r[a].name[q], &truth))
+                if (!s[k].r[a].param[q].fixed && !nl_model_param(m, s[k].r[a].param[q].name, &truth))
                     add(&t[a][q], truth, &s[k].r[a], q);
             }
     }
@@ -183,8 +186,11 @@ int main(int argc, char **argv)
         print_table(m, t, s[last].r);
     if (failed)
         printf("# %d of %zu fits failed\n", failed, K);
-    for (size_t k = 0; k < K; k++)
+    for (size_t k = 0; k < K; k++) {
         free(s[k].p.pts), free(s[k].p.val);
+        for (int a = 0; a < METHODS; a++)
+            nl_fit_result_free(&s[k].r[a]);
+    }
     free(s);
     nl_synth_circulant_plan_free(plan);
     nl_model_free(m);

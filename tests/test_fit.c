@@ -33,8 +33,8 @@ static void exact_variogram(const char *spec, double *h, double *g, double *n)
 static double value_of(const nl_fit_result *r, const char *name)
 {
     for (size_t k = 0; k < r->np; k++)
-        if (strcmp(r->name[k], name) == 0)
-            return r->value[k];
+        if (strcmp(r->param[k].name, name) == 0)
+            return r->param[k].value;
     cr_assert_fail("no parameter %s", name);
     return NAN;
 }
@@ -74,6 +74,7 @@ Test(fit, wls_recovers_exact_variograms)
                 cr_assert_eq(nl_model_parse(r.spec, &m), NL_OK, "%s", r.spec);
                 nl_model_free(m);
             }
+            nl_fit_result_free(&r);
         }
 }
 
@@ -89,8 +90,9 @@ Test(fit, wls_fixed_parameter)
     cr_assert_eq(r.np, 3);
     cr_assert_eq(r.nfree, 2);
     cr_assert_eq(value_of(&r, "nugget"), 0.31);
-    cr_assert(r.fixed[2] && r.se[2] == 0);
+    cr_assert(r.param[2].fixed && r.param[2].se == 0);
     cr_assert_float_eq(value_of(&r, "scale"), 2.385, 1e-6 * 2.385);
+    nl_fit_result_free(&r);
 }
 
 Test(fit, refusals_name_the_problem)
@@ -162,10 +164,12 @@ Test(fit, ml_and_reml_closed_forms)
         nl_fit_result r;
         double dof = reml ? N - 1 : N, v = q / dof;
         cr_assert_eq(nl_fit_ml(x, z, N, 2, &o, &r), NL_OK, "%s", nl_errmsg());
-        cr_assert_float_eq(r.value[0], v, 2e-5 * v, "reml %d: var %.10g, closed form %.10g", reml, r.value[0], v);
-        cr_assert_float_eq(r.se[0], v * sqrt(2 / dof), 1e-4 * v, "reml %d: se %.10g", reml, r.se[0]);
+        cr_assert_float_eq(r.param[0].value, v, 2e-5 * v, "reml %d: var %.10g, closed form %.10g", reml,
+                           r.param[0].value, v);
+        cr_assert_float_eq(r.param[0].se, v * sqrt(2 / dof), 1e-4 * v, "reml %d: se %.10g", reml, r.param[0].se);
         cr_assert_float_eq(r.mean, az / a1, 1e-12, "GLS mean");
         cr_assert_float_eq(r.aic, r.objective + 2 * 2, 1e-9);
+        nl_fit_result_free(&r);
     }
     gsl_vector_free(a);
     gsl_vector_free(y);

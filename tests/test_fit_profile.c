@@ -55,11 +55,14 @@ Test(fit_profile, one_parameter_closed_form)
                             .likelihood = reml ? NL_FIT_REML : NL_FIT_ML, .intervals = NL_FIT_INTERVALS_ALL};
         nl_fit_result r;
         cr_assert_eq(nl_fit_ml(x, z, N, 2, &o, &r), NL_OK, "%s", nl_errmsg());
-        double dof = reml ? N - 1 : N, v = r.value[0];
+        double dof = reml ? N - 1 : N, v = r.param[0].value;
         double lo = v * closed_end(dof, 1e-3, 1), hi = v * closed_end(dof, 1, 1e3);
-        cr_expect(fabs(r.lower[0] / lo - 1) < 1.1e-3, "reml %d: lower %.8g, closed form %.8g", reml, r.lower[0], lo);
-        cr_expect(fabs(r.upper[0] / hi - 1) < 1.1e-3, "reml %d: upper %.8g, closed form %.8g", reml, r.upper[0], hi);
-        cr_expect(isnan(r.lower[1]) && isnan(r.upper[1]), "the fixed scale has no interval");
+        cr_expect(fabs(r.param[0].lower / lo - 1) < 1.1e-3, "reml %d: lower %.8g, closed form %.8g", reml,
+                  r.param[0].lower, lo);
+        cr_expect(fabs(r.param[0].upper / hi - 1) < 1.1e-3, "reml %d: upper %.8g, closed form %.8g", reml,
+                  r.param[0].upper, hi);
+        cr_expect(isnan(r.param[1].lower) && isnan(r.param[1].upper), "the fixed scale has no interval");
+        nl_fit_result_free(&r);
     }
 }
 
@@ -80,23 +83,29 @@ Test(fit_profile, ends_sit_at_the_cutoff)
                             .intervals = NL_FIT_INTERVALS_ALL};
         nl_fit_result r, rf;
         int checked = 0;
+        double start[NL_FAMILY_MAX_PARAMS];
         cr_assert_eq(nl_fit_ml(x, z, N, 2, &o, &r), NL_OK, "%s", nl_errmsg());
+        for (size_t j = 0; j < r.np; j++)
+            start[j] = r.param[j].value;
         for (size_t j = 0; j < r.np; j++) {
-            cr_expect(r.lower[j] <= r.value[j] && r.value[j] <= r.upper[j], "%s: %g outside [%g, %g]", r.name[j],
-                      r.value[j], r.lower[j], r.upper[j]);
+            cr_expect(r.param[j].lower <= r.param[j].value && r.param[j].value <= r.param[j].upper,
+                      "%s: %g outside [%g, %g]", r.param[j].name, r.param[j].value, r.param[j].lower,
+                      r.param[j].upper);
             for (int side = 0; side < 2; side++) {
-                double e = side ? r.upper[j] : r.lower[j], se_u = r.se[j] / r.value[j];
+                double e = side ? r.param[j].upper : r.param[j].lower, se_u = r.param[j].se / r.param[j].value;
                 if (!(e > 0 && isfinite(e) && isfinite(se_u) && se_u > 0))
                     continue;
-                nl_fit_options f = {.family = o.family, .nugget = o.nugget, .nfix = 1, .fix_name = {r.name[j]},
-                                    .fix_value = {e}, .start = r.value};
+                nl_fit_options f = {.family = o.family, .nugget = o.nugget, .nfix = 1,
+                                    .fix_name = {r.param[j].name}, .fix_value = {e}, .start = start};
                 cr_assert_eq(nl_fit_ml(x, z, N, 2, &f, &rf), NL_OK, "%s", nl_errmsg());
                 double d = rf.objective - r.objective, tol = 2 * 1.96 / se_u * 1e-3 + 0.01;
                 cr_expect(fabs(d - 3.841459) < tol, "%s %s %s end %.6g: -2 l rises by %.5f, expected 3.8415 +- %.3f",
-                          o.family, r.name[j], side ? "upper" : "lower", e, d, tol);
+                          o.family, r.param[j].name, side ? "upper" : "lower", e, d, tol);
                 checked++;
+                nl_fit_result_free(&rf);
             }
         }
+        nl_fit_result_free(&r);
         cr_expect(checked >= 3, "%s: only %d finite ends", o.family, checked);
     }
 }

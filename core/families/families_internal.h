@@ -8,7 +8,9 @@
 
 #include <math.h>
 
-#define NL_PARAM_SCALE {.name = "scale", .role = NL_ROLE_SCALE, .def = 1, .range = NL_RANGE_POSITIVE}
+/* scale's fit start is the lag where the variogram first reaches 1 - 1/e
+ * of the sill (WLS) or a tenth of the data's extent (ML), times .start */
+#define NL_PARAM_SCALE {.name = "scale", .role = NL_ROLE_SCALE, .def = 1, .range = NL_RANGE_POSITIVE, .start = 1}
 #define NL_PARAM_VAR {.name = "var", .role = NL_ROLE_VARIANCE, .def = 1, .range = NL_RANGE_POSITIVE}
 #define NL_PARAM_NUGGET {.name = "nugget", .role = NL_ROLE_NUGGET, .def = 0, .range = NL_RANGE_NONNEG}
 

@@ -3,7 +3,11 @@
  * and 3 dimensions only (its 4D Hankel transform is negative somewhere). */
 #include "families_internal.h"
 
-static const nl_family_param params[] = {NL_PARAM_SCALE, NL_PARAM_VAR, NL_PARAM_NUGGET};
+static const nl_family_param params[] = {
+    /* the range: the fit starts at twice the e-folding lag */
+    {.name = "scale", .role = NL_ROLE_SCALE, .def = 1, .range = NL_RANGE_POSITIVE, .start = 2},
+    NL_PARAM_VAR, NL_PARAM_NUGGET,
+};
 
 static double profile(const nl_model *m, double t)
 {

@@ -465,21 +465,26 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
     out = ffi.new("nl_variogram **")
     check(lib.nl_variogram_points(P, vo, out))
     vg = ffi.gc(out[0], lib.nl_variogram_free)
-    with planner:
-        check(lib.nl_fit_variogram(vg.distance, vg.gamma, vg.pairs, vg.nbins, dim, o, r))
+    try:
+        with planner:
+            check(lib.nl_fit_variogram(vg.distance, vg.gamma, vg.pairs, vg.nbins, dim, o, r))
+            if method != "wls":
+                start = ffi.new("double[]", [r.param[k].value for k in range(r.np)])
+                lib.nl_fit_result_free(r)
+                o.start = start
+                o.intervals = 1
+                check(lib.nl_fit_ml(_dptr(p), _dptr(v), p.shape[0], dim, o, r))
+        q = [r.param[k] for k in range(r.np)]
+        names = [ffi.string(x.name).decode() for x in q]
+        res = dict(spec=ffi.string(r.spec).decode(), method=method, n=int(r.nobs), converged=bool(r.converged),
+                   iterations=r.iterations, objective=r.objective, aic=r.aic,
+                   parameters={nm: x.value for nm, x in zip(names, q)},
+                   standard_errors={nm: x.se for nm, x in zip(names, q)},
+                   fixed={nm: bool(x.fixed) for nm, x in zip(names, q)})
         if method != "wls":
-            start = ffi.new("double[5]", list(r.value))
-            o.start = start
-            o.intervals = 1
-            check(lib.nl_fit_ml(_dptr(p), _dptr(v), p.shape[0], dim, o, r))
-    names = [ffi.string(r.name[k]).decode() for k in range(r.np)]
-    res = dict(spec=ffi.string(r.spec).decode(), method=method, n=int(r.nobs), converged=bool(r.converged),
-               iterations=r.iterations, objective=r.objective, aic=r.aic,
-               parameters={nm: r.value[k] for k, nm in enumerate(names)},
-               standard_errors={nm: r.se[k] for k, nm in enumerate(names)},
-               fixed={nm: bool(r.fixed[k]) for k, nm in enumerate(names)})
-    if method != "wls":
-        res["mean"] = r.mean
-        res["intervals"] = {nm: (r.lower[k], r.upper[k]) for k, nm in enumerate(names)
-                            if not (math.isnan(r.lower[k]) or math.isnan(r.upper[k]))}
+            res["mean"] = r.mean
+            res["intervals"] = {nm: (x.lower, x.upper) for nm, x in zip(names, q)
+                                if not (math.isnan(x.lower) or math.isnan(x.upper))}
+    finally:
+        lib.nl_fit_result_free(r)
     return res

@@ -404,14 +404,16 @@ typedef struct {
     int intervals;
 } nl_fit_options;
 typedef struct {
+    char name[16];
+    double value;
+    double se;
+    double lower, upper;
+    int fixed;
+} nl_fit_param;
+typedef struct {
     char spec[512];
     size_t np;
-    char name[5][8];
-    double value[5];
-    double se[5];
-    double lower[5];
-    double upper[5];
-    int fixed[5];
+    nl_fit_param *param;
     size_t nfree;
     double objective;
     double aic;
@@ -420,6 +422,7 @@ typedef struct {
     int iterations;
     int converged;
 } nl_fit_result;
+void nl_fit_result_free(nl_fit_result *res);
 int nl_fit_check_options(const nl_fit_options *o, int dim);
 int nl_fit_variogram(const double *distance, const double *gamma, const double *pairs, size_t nbins, int dim,
                      const nl_fit_options *o, nl_fit_result *res);
