@@ -228,17 +228,6 @@ Test(model, dimension_checks)
     nl_model_free(m);
 }
 
-Test(model, catalogue_lists_every_family)
-{
-    size_t n;
-    const nl_model_info *c = nl_model_catalogue(&n);
-    const char *names[] = {"markov", "gauss", "markaussian", "oscillatory", "gauss-osc", "matern", "spherical",
-                           "power", "expr:EXPR", "spectrum:EXPR", "image:FILE"};
-    cr_assert_eq(n, 11);
-    for (size_t i = 0; i < n; i++)
-        cr_assert_str_eq(c[i].name, names[i]);
-}
-
 Test(model, image_is_a_file_error)
 {
     nl_model *m;
