@@ -142,6 +142,8 @@ def compare_exr(a, b, sa, sb):
     ha = [(n, t, sa.norm_text("", v)) for n, t, v in pa[0]]
     hb = [(n, t, sb.norm_text("", v)) for n, t, v in pb[0]]
     if ha != hb:
+        if sorted(ha) == sorted(hb):
+            return "header: the attributes in another order: base %r new %r" % ([x[0] for x in ha], [x[0] for x in hb])
         return "header: base %r new %r" % (sorted(set(ha) - set(hb)), sorted(set(hb) - set(ha)))
     if pa[1] != pb[1]:
         return "offset table: base %r new %r" % (pa[1][:8], pb[1][:8])
