@@ -285,3 +285,12 @@ clean:
 	rm -rf $(BUILD) bin tests/work
 
 -include $(LIB_OBJ:.o=.d) $(CLI_OBJ:.o=.d) $(MPI_OBJ:.o=.d) $(H5CLI_OBJ:.o=.d) $(MPITEST_SRC:%.c=$(BUILD)/%.d) $(TEST_OBJ:.o=.d) $(EXP_SRC:%.c=$(BUILD)/%.d)
+
+# Every output of bin/ against a build of the revision COMPAT_BASE (stdout,
+# stderr, exit status and files of tools/compat/commands.txt; the version
+# string and timings normalised): "N passed, M failed", exit 1 on a difference.
+COMPAT_BASE ?= HEAD
+.PHONY: compat
+compat: $(BIN) $(MPIBIN)
+	sh tools/compat/base.sh $(COMPAT_BASE) $(BUILD)/compat-base
+	sh tools/compat/run.sh $(BUILD)/compat-base/src/bin $(BINDIR)
