@@ -18,20 +18,22 @@ static const char help_usage[] =
     "                    [--weights cressie|pairs|reweighted|distance]\n"
     "                    [--width W] [--cutoff C] [--json]\n\n";
 
+/* The first paragraph continues the sentence print_help makes; filled
+ * with it to 80 columns. */
 static const char help[] =
-    "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2 of\n"
-    "the fitted model (cressie: Cressie's criterion; reweighted: the weights held\n"
-    "at the last fit and refitted to a fixed point, gstat's fit.method 2), N\n"
-    "(pairs, fit.method 1) or N/h^2 (distance, fit.method 7).  ml, reml: the\n"
-    "Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step\n"
-    "(a few thousand data), started from the wls fit.  Prints the fitted model as a\n"
-    "spec for --acf, standard errors, the objective and AIC (compare models fitted\n"
-    "by one method to one data set: lower is better).  ml and reml also print each\n"
-    "free parameter's 95% profile-likelihood interval (the values within 3.841 of\n"
-    "the minimum -2 log likelihood, the others re-optimised; \"unbounded\" when the\n"
-    "data set no upper limit).  --json keys: model, parameters, standard_errors,\n"
-    "objective, aic, method, n, and for ml and reml mean and intervals ([lower,\n"
-    "upper] per free parameter, upper null when unbounded).\n"
+    "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2 of the fitted model "
+    "(cressie: Cressie's criterion; reweighted: the weights held at the last fit and refitted to a "
+    "fixed point, gstat's fit.method 2), N (pairs, fit.method 1) or N/h^2 (distance, fit.method 7).  "
+    "ml, reml: the Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step (a "
+    "few thousand data), started from the wls fit.  Prints the fitted model as a spec for --acf, "
+    "standard errors, the objective and AIC (compare models fitted by one method to one data set: "
+    "lower is better).  ml and reml also print each free parameter's 95% profile-likelihood interval "
+    "(the values within 3.841 of the minimum -2 log likelihood, the others re-optimised; \"unbounded\" "
+    "when the data set no upper limit).  --json keys: model, parameters, standard_errors, objective, "
+    "aic, method, n, and for ml and reml mean and intervals ([lower, upper] per free parameter, upper "
+    "null when unbounded).";
+
+static const char help_errors[] =
     "Standard errors: ml and reml's describe the spread of the estimates for\n"
     "regular models (markov with a nugget); the spherical range's understate it by\n"
     "about 2x (its likelihood is not smooth in the range): quote the profile\n"
@@ -42,7 +44,7 @@ static const char help[] =
  * from the registry, then the rest. */
 static void print_help(void)
 {
-    char families[512], shapes[256] = "", text[1024];
+    char families[512], shapes[256] = "", text[4096];
     size_t len = 0;
     nl_family_names(NL_FAMILY_FIT, 0, ", ", families, sizeof families);
     for (size_t i = 0; i < nl_family_count(); i++) {
@@ -58,11 +60,11 @@ static void print_help(void)
     if (len)
         shapes[len - 1] = 0;  /* the last comma */
     snprintf(text, sizeof text, "Fits a model family (%s) to data: its var, scale (the spherical model's range), "
-             "the nugget with --nugget, and its shape parameter (%s), each unless fixed by --fix.  wls (default): "
-             "weighted least squares on the empirical variogram (as", families, shapes);
+             "the nugget with --nugget, and its shape parameters (%s), each unless fixed by --fix.  wls (default): "
+             "weighted least squares on the empirical variogram (as %s", families, shapes, help);
     fputs(help_usage, stdout);
     cli_fill(stdout, text, 80);
-    fputs(help, stdout);
+    fputs(help_errors, stdout);
 }
 
 /* The command's options. */
