@@ -42,6 +42,8 @@ def test_declarations_match_headers(tmp_path):
         sys.path.pop(0)
     for name in re.findall(r"}\s*(nl_\w+);", _ffi.CDEF):
         assert mod.ffi.sizeof(name) == _ffi.ffi.sizeof(name), name
+        if _ffi.ffi.typeof(name).kind != "struct":
+            continue  # an enum: its size is all there is
         for field, _ in _ffi.ffi.typeof(name).fields:
             assert mod.ffi.offsetof(name, field) == _ffi.ffi.offsetof(name, field), (name, field)
     assert so
