@@ -18,3 +18,18 @@ def test_every_family_is_on_the_page():
     text = open(os.path.join(TOP, "docs", "models.md")).read()
     for m in noiselab.models():
         assert "## `%s`" % m["name"] in text
+
+
+def test_registry_families_reach_python():
+    """A family of the registry is in models() with its descriptor's
+    parameters, and synthesis takes it (gencauchy: both shape parameters
+    required, alpha bounded by 2)."""
+    import noiselab
+    m = {x["name"]: x for x in noiselab.models()}["gencauchy"]
+    p = {x["name"]: x for x in m["parameters"]}
+    assert m["fit"] and not m["spectral"] and m["max_dim"] is None
+    assert p["alpha"]["default"] is None and p["alpha"]["upper"] == 2.0
+    assert p["beta"]["default"] is None and p["beta"]["lower_open"]
+    assert [x["role"] for x in m["parameters"]] == ["shape", "shape", "scale", "variance", "nugget"]
+    f = noiselab.synth("circulant", acf="gencauchy:alpha=1.5,beta=2,scale=4", size=(32, 32), seed=3)
+    assert f.shape == (32, 32)
