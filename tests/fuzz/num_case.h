@@ -8,6 +8,8 @@
 #ifndef NL_FUZZ_NUM_CASE_H
 #define NL_FUZZ_NUM_CASE_H
 
+#include "../../core/family.h"
+
 #include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -25,9 +27,6 @@ static const char *const num[] = {
 enum { NNUM = sizeof num / sizeof *num };
 
 static const char *const methods[] = {"fft", "circulant", "cholesky", "sparse", "lattice", "subdiv"};
-static const char *const names[] = {"markov", "gauss", "markaussian", "oscillatory", "gauss-osc", "matern", "power"};
-/* Each name's own parameters (besides var and scale). */
-static const char *const own[][3] = {{0}, {0}, {"alpha"}, {"omega"}, {"omega"}, {"nu"}, {"d", "fmin", "fmax"}};
 static const char *const exprs[] = {"exp(-abs(t)/%s)", "%s*exp(-t^2)", "exp(-abs(t)^%s)", "cos(%s*t)*exp(-abs(t))",
                                     "1/(1+(t/%s)^2)",  "sin(%s*t)/t", "1-abs(t)/%s",      "exp(-r/%s)*(1+r/%s)",
                                     "exp(-abs(x)/%s-abs(y))"};
@@ -87,14 +86,22 @@ static void decode_model(bytes *b, char *s, size_t cap)
             add(s, cap, ";%s=%s", take(b) & 1 ? "var" : "ratio", pick_num(b));
         return;
     }
-    k %= 7;
-    snprintf(s, cap, "%s", names[k]);
+    /* a named family of the registry, with its own parameters (besides
+     * var, scale and the nugget): required ones always, others at random */
+    const nl_family *f;
+    do
+        f = nl_family_get(take(b) % nl_family_count());
+    while (f->flags & NL_FAMILY_ARGUMENT);
+    snprintf(s, cap, "%s", f->name);
     char sep = ':';
-    for (int i = 0; i < 3 && own[k][i]; i++) {
+    for (size_t i = 0; i < f->nparams; i++) {
+        const nl_family_param *p = &f->params[i];
         unsigned c = take(b);
-        if (i == 0 || (c & 1)) { /* the first own parameter is required */
+        if (p->role != NL_ROLE_SHAPE && p->role != NL_ROLE_BAND)
+            continue;
+        if (p->placeholder || (c & 1)) {
             char key[16];
-            snprintf(key, sizeof key, "%c%s", sep, own[k][i]);
+            snprintf(key, sizeof key, "%c%s", sep, p->name);
             add(s, cap, "%s=%s", key, num[(c >> 1) % NNUM]);
             sep = ',';
         }
