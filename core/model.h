@@ -57,6 +57,10 @@
 #ifndef NL_MODEL_H
 #define NL_MODEL_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 typedef enum {
@@ -155,5 +159,9 @@ int nl_model_param(const nl_model *m, const char *name, double *value);
 
 /* The nugget (0 for spectral models and when not given).  Thread-safe. */
 double nl_model_nugget(const nl_model *m);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -24,6 +24,10 @@
 #ifndef NL_SYNTH_CIRCULANT_H
 #define NL_SYNTH_CIRCULANT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "fft.h"
 
 typedef struct {
@@ -94,5 +98,9 @@ double nl_synth_circulant_loss(const nl_model *m, int dim, double variance);
 int nl_synth_circulant_refuse(const nl_model *m, const nl_synth_circulant_info *info, const size_t *mm);
 
 void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

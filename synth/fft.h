@@ -35,6 +35,10 @@
 #ifndef NL_SYNTH_FFT_H
 #define NL_SYNTH_FFT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -110,5 +114,9 @@ void nl_synth_fft_plan_free(nl_synth_fft_plan *p);
  * double (the spectrum is divided by it).  NL_OK or NL_EINVAL naming the
  * value.  Thread-safe. */
 int nl_synth_check_cell(int dim, const double *h);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
