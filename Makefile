@@ -177,11 +177,17 @@ test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST
 
 # The installed API: every installed header compiles alone as C and as C++
 # with C linkage; each shared library exports exactly what its installed
-# headers declare.
+# headers declare; docs/api.md (one line per exported function, from the
+# headers: `make apidoc` writes it) is current.
 API_ENV = PUB_HDR="$(PUB_HDR)" MPI_HDR="$(MPI_HDR)" MPI_CFLAGS="$(MPI_CFLAGS)" CC="$(CC)" CXX="$(CXX)"
+APIDOC = CC="$(CC)" CPPFLAGS="$(MPI_CFLAGS)" $(PYTHON) tools/apidoc.py $(PUB_HDR) $(MPI_HDR)
 test-api: $(SOLIB) $(MPISOLIB)
 	$(API_ENV) sh tests/api/headers.sh
 	$(API_ENV) sh tests/api/exports.sh $(SOLIB) $(MPISOLIB)
+	$(APIDOC) | diff -u docs/api.md - || { echo "docs/api.md is not the headers' (make apidoc)"; exit 1; }
+.PHONY: apidoc
+apidoc: | $(DEPS_OK)
+	$(APIDOC) > docs/api.md.tmp && mv docs/api.md.tmp docs/api.md
 
 # Measured FFTW wisdom for 2D fields of WISDOM_SIZES^2 (and circulant
 # embeddings of them), installed where the planner looks (core/fftw_plan.h),
