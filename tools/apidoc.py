@@ -8,11 +8,13 @@ usage: tools/apidoc.py HEADER... > docs/api.md
   (the Makefile's PUB_HDR, then MPI_HDR; CPPFLAGS with MPI's include flags
   in the environment, as tools/exports.sh takes them)
 
-A function's comment is the one that ends on the line above it, or above the
-run of declarations it belongs to (one comment may document a group); a
-comment after the declaration on its own line also counts.  The first
-sentence ends at a full stop followed by two spaces or by the end of a line
-(the headers' convention), or at the comment's end."""
+A function's comment is the one after it on the declaration's last line, or
+else the one that ends above it or above the run of declarations, #defines
+and typedefs it belongs to (one comment may document a group), or else the
+first sentence of the header's comments that names it (a function the
+header's opening notes document).  A sentence ends at a full stop followed
+by two spaces or by the end of a line (the headers' convention), or at the
+comment's end.  A function with no comment gets its name alone."""
 import os
 import re
 import subprocess
