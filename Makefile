@@ -115,9 +115,9 @@ $(MPISOLIB): $(MPI_OBJ) $(MPI_SHARED_OBJ) $(SOLIB) $(BUILD)/libnoiselab_mpi.map
 # Each shared library exports exactly the functions its installed headers
 # declare (tools/exports.sh makes the linker version script from them).
 $(BUILD)/libnoiselab.map: $(PUB_HDR) include/noiselab.h tools/exports.sh | $(DEPS_OK)
-	CC="$(CC)" sh tools/exports.sh -map $(PUB_HDR) include/noiselab.h > $@.tmp && mv $@.tmp $@
+	sh tools/exports.sh -map $(PUB_HDR) include/noiselab.h > $@.tmp && mv $@.tmp $@
 $(BUILD)/libnoiselab_mpi.map: $(MPI_HDR) include/noiselab_mpi.h tools/exports.sh | $(DEPS_OK)
-	CC="$(CC)" CPPFLAGS="$(MPI_CFLAGS)" sh tools/exports.sh -map $(MPI_HDR) include/noiselab_mpi.h > $@.tmp && mv $@.tmp $@
+	CPPFLAGS="$(MPI_CFLAGS)" sh tools/exports.sh -map $(MPI_HDR) include/noiselab_mpi.h > $@.tmp && mv $@.tmp $@
 
 # The shared library records its dependencies (DT_NEEDED), so a program
 # links it with -lnoiselab alone.
@@ -180,7 +180,7 @@ test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST
 # headers declare; docs/api.md (one line per exported function, from the
 # headers: `make apidoc` writes it) is current.
 API_ENV = PUB_HDR="$(PUB_HDR)" MPI_HDR="$(MPI_HDR)" MPI_CFLAGS="$(MPI_CFLAGS)" CC="$(CC)" CXX="$(CXX)"
-APIDOC = CC="$(CC)" CPPFLAGS="$(MPI_CFLAGS)" $(PYTHON) tools/apidoc.py $(PUB_HDR) $(MPI_HDR)
+APIDOC = CPPFLAGS="$(MPI_CFLAGS)" $(PYTHON) tools/apidoc.py $(PUB_HDR) $(MPI_HDR)
 test-api: $(SOLIB) $(MPISOLIB)
 	$(API_ENV) sh tests/api/headers.sh
 	$(API_ENV) sh tests/api/exports.sh $(SOLIB) $(MPISOLIB)

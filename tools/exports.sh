@@ -11,19 +11,19 @@
 # usage: tools/exports.sh [-map] HEADER...
 #   -map   print a linker version script instead: the names global, the
 #          rest local
-# CC (default gcc) and CPPFLAGS (include paths, e.g. MPI's) from the
-# environment.
+# CPPFLAGS (include paths, e.g. MPI's) from the environment; the compiler is
+# gcc whatever CC is (-aux-info is gcc's), GCC to name another.
 set -eu
 LC_ALL=C
 export LC_ALL
 map=0
 [ "${1:-}" = -map ] && { map=1; shift; }
-CC=${CC:-gcc}
+GCC=${GCC:-gcc}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT INT TERM
 : >"$tmp/list"
 for h in "$@"; do
-    $CC -std=c11 -D_GNU_SOURCE ${CPPFLAGS:-} -fsyntax-only -aux-info "$tmp/aux" -x c "$h"
+    $GCC -std=c11 -D_GNU_SOURCE ${CPPFLAGS:-} -fsyntax-only -aux-info "$tmp/aux" -x c "$h"
     # /* core/field.h:30:NC */ extern int nl_size_check (int, const size_t *, ...);
     awk -v h="$h" 'index($0, "/* " h ":") == 1 && / \*\/ extern / {
         split(substr($2, length(h) + 2), at, ":")

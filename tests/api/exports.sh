@@ -9,7 +9,7 @@
 #
 # usage: tests/api/exports.sh LIBNOISELAB.so LIBNOISELAB_MPI.so
 #   PUB_HDR, MPI_HDR: the installed module headers (the Makefile's lists);
-#   MPI_CFLAGS: MPI's and HDF5's include flags; CC (gcc).
+#   MPI_CFLAGS: MPI's and HDF5's include flags.
 set -u
 cd "$(dirname "$0")/../.."
 tmp=$(mktemp -d)
