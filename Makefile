@@ -66,7 +66,7 @@ MPI_HDR   := $(filter-out %_internal.h,$(wildcard mpi/*.h))
 PYTHON    ?= /usr/bin/python3
 PYDIR     ?= $(if $(filter /usr,$(PREFIX)),/usr/lib/python3/dist-packages,$(PREFIX)/lib/python$(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)/dist-packages)
 
-.PHONY: all deps wisdom test figures experiments bench asan fuzz clean install uninstall
+.PHONY: all deps wisdom test test-api figures experiments bench asan fuzz clean install uninstall
 .SECONDARY:
 all: $(BIN) $(MPIBIN) $(LIB) $(SOLIB) $(MPISOLIB) $(MAN)
 
@@ -100,16 +100,30 @@ $(MPI_OBJ): CFLAGS += -fPIC -fno-semantic-interposition
 $(MPI_OBJ): Makefile
 $(MPILIB): $(MPI_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
-$(MPISOLIB): $(MPI_OBJ) $(SOLIB)
-	$(CC) $(CFLAGS) -shared -Wl,-soname,libnoiselab_mpi.so.$(MAJOR) -Wl,--no-undefined -o $@ $(MPI_OBJ) \
+# The distributed plans share two pieces of the one-process ones that
+# libnoiselab.so does not export (synth/fft_internal.h,
+# synth/circulant_internal.h): libnoiselab_mpi.so links its own hidden copy
+# of these objects, which hold no state.
+MPI_SHARED_OBJ := $(BUILD)/synth/fft.o $(BUILD)/synth/circulant.o
+$(MPISOLIB): $(MPI_OBJ) $(MPI_SHARED_OBJ) $(SOLIB) $(BUILD)/libnoiselab_mpi.map
+	$(CC) $(CFLAGS) -shared -Wl,-soname,libnoiselab_mpi.so.$(MAJOR) -Wl,--no-undefined \
+	    -Wl,--version-script=$(BUILD)/libnoiselab_mpi.map -o $@ $(MPI_OBJ) $(MPI_SHARED_OBJ) \
 	    -Wl,--no-as-needed -L$(BUILD) -l:$(notdir $(SOLIB)) $(MPI_LIBS) $(LDLIBS)
 	ln -sf $(notdir $@) $(BUILD)/libnoiselab_mpi.so.$(MAJOR)
 	ln -sf libnoiselab_mpi.so.$(MAJOR) $(BUILD)/libnoiselab_mpi.so
 
+# Each shared library exports exactly the functions its installed headers
+# declare (tools/exports.sh makes the linker version script from them).
+$(BUILD)/libnoiselab.map: $(PUB_HDR) include/noiselab.h tools/exports.sh | $(DEPS_OK)
+	sh tools/exports.sh -map $(PUB_HDR) include/noiselab.h > $@.tmp && mv $@.tmp $@
+$(BUILD)/libnoiselab_mpi.map: $(MPI_HDR) include/noiselab_mpi.h tools/exports.sh | $(DEPS_OK)
+	CPPFLAGS="$(MPI_CFLAGS)" sh tools/exports.sh -map $(MPI_HDR) include/noiselab_mpi.h > $@.tmp && mv $@.tmp $@
+
 # The shared library records its dependencies (DT_NEEDED), so a program
 # links it with -lnoiselab alone.
-$(SOLIB): $(LIB_OBJ)
-	$(CC) $(CFLAGS) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined -o $@ $^ -Wl,--no-as-needed $(LDLIBS)
+$(SOLIB): $(LIB_OBJ) $(BUILD)/libnoiselab.map
+	$(CC) $(CFLAGS) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined -Wl,--version-script=$(BUILD)/libnoiselab.map \
+	    -o $@ $(LIB_OBJ) -Wl,--no-as-needed $(LDLIBS)
 	ln -sf $(notdir $@) $(BUILD)/$(SONAME)
 	ln -sf $(SONAME) $(BUILD)/libnoiselab.so
 
@@ -148,9 +162,10 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # tests plan with FFTW_ESTIMATE, except the one comparing the two planners.
 # tests/doc/run.sh runs every command of README.md, docs/tour.md, docs/geostatistics.md and docs/scale-out.md;
 # tests/mpi/run.sh the distributed tests under mpirun -np 1..4; python/tests the Python package (pytest).
+# test-api checks the installed headers and the libraries' exports.
 # Then tools/test-install.sh installs into a scratch DESTDIR and builds the
 # examples and the README's example against it with pkg-config alone.
-test: all $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
+test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
 	NOISELAB_FFTW=estimate NOISELAB_SANITIZED=$(if $(findstring sanitize,$(OPT)),1,) sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
 	NOISELAB_FFTW=estimate sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite
@@ -159,6 +174,20 @@ test: all $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
 	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) WISDOM_SIZES=64 sh tools/test-install.sh
+
+# The installed API: every installed header compiles alone as C and as C++
+# with C linkage; each shared library exports exactly what its installed
+# headers declare; docs/api.md (one line per exported function, from the
+# headers: `make apidoc` writes it) is current.
+API_ENV = PUB_HDR="$(PUB_HDR)" MPI_HDR="$(MPI_HDR)" MPI_CFLAGS="$(MPI_CFLAGS)" CC="$(CC)" CXX="$(CXX)"
+APIDOC = CPPFLAGS="$(MPI_CFLAGS)" $(PYTHON) tools/apidoc.py $(PUB_HDR) $(MPI_HDR)
+test-api: $(SOLIB) $(MPISOLIB)
+	$(API_ENV) sh tests/api/headers.sh
+	$(API_ENV) sh tests/api/exports.sh $(SOLIB) $(MPISOLIB)
+	$(APIDOC) | diff -u docs/api.md - || { echo "docs/api.md is not the headers' (make apidoc)"; exit 1; }
+.PHONY: apidoc
+apidoc: | $(DEPS_OK)
+	$(APIDOC) > docs/api.md.tmp && mv docs/api.md.tmp docs/api.md
 
 # Measured FFTW wisdom for 2D fields of WISDOM_SIZES^2 (and circulant
 # embeddings of them), installed where the planner looks (core/fftw_plan.h),

@@ -26,6 +26,10 @@
 #ifndef NL_ACF_H
 #define NL_ACF_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -116,5 +120,9 @@ int nl_acf_bartlett_band(const nl_field *full, size_t N, size_t maxlag, const do
  * nl_wk_sample_acf. */
 int nl_acf_model_values(const nl_model *m, int dim, const size_t *n, const double *h, int axis, const double *lag,
                         size_t nl, double *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -15,6 +15,10 @@
 #ifndef NL_ALIASING_H
 #define NL_ALIASING_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -31,5 +35,9 @@ int nl_aliasing_measure(const nl_field *f, double *A);
  * finite on the grid or cannot be evaluated in f's dimension, NL_ENOMEM;
  * not thread-safe (it plans FFTW). */
 int nl_aliasing_predict(const nl_model *m, const nl_field *f, double *A);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -68,6 +68,10 @@
 #ifndef NL_CHECK_H
 #define NL_CHECK_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/model.h"
 
 #include <stddef.h>
@@ -148,5 +152,9 @@ int nl_check_neighbours(const nl_model *m, const nl_check *c, char *buf, size_t 
  * non-finite lag), NL_EFAIL (the quadrature did not converge), NL_ENOMEM.
  * Thread safety: as the model. */
 int nl_check_matheron_2d(const nl_model *m, size_t n, const double *r, double *c2);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -30,6 +30,10 @@
 #ifndef NL_CONDSIM_H
 #define NL_CONDSIM_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -74,5 +78,9 @@ int nl_condsim_execute(const nl_condsim_plan *p, nl_field *f);
 
 void nl_condsim_plan_info(const nl_condsim_plan *p, nl_condsim_info *info);
 void nl_condsim_plan_free(nl_condsim_plan *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

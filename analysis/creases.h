@@ -21,6 +21,10 @@
 #ifndef NL_CREASES_H
 #define NL_CREASES_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stddef.h>
@@ -42,5 +46,9 @@ typedef struct {
  * (constant or linear), or no level between the coarsest and the finest
  * with 64 samples.  Reentrant and thread-safe (f only read). */
 int nl_creases_measure(const nl_field *f, int levels, nl_creases *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -13,6 +13,10 @@
 #ifndef NL_ENSEMBLE_H
 #define NL_ENSEMBLE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 /* v: K rows of m values, row r at v + r m.  mean and se: m values each (se
@@ -20,5 +24,9 @@
  * se.  Returns NL_OK or NL_EINVAL (K < 2 or m = 0: one realization has no
  * standard error). */
 int nl_ensemble_mean_se(const double *v, size_t K, size_t m, double *mean, double *se);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

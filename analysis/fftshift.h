@@ -6,6 +6,10 @@
 #ifndef NL_FFTSHIFT_H
 #define NL_FFTSHIFT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 /* The spectrum P (any dim, wrapped order) with zero frequency moved to index
@@ -27,5 +31,9 @@ int nl_acf_centred_alloc(const nl_field *full, nl_field **out);
  * before the call, which is returned (the floor keeps log10 finite for a
  * zero ordinate; rel > 0, e.g. 1e-12).  For log-scale pictures of spectra. */
 double nl_fftshift_log10_floor(nl_field *f, double rel);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -105,6 +105,10 @@
 #ifndef NL_FIT_H
 #define NL_FIT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 #define NL_FIT_MAX_FIX 8
@@ -180,5 +184,9 @@ int nl_fit_variogram(const double *distance, const double *gamma, const double *
  * memory limit) and frees it before returning. */
 int nl_fit_ml(const double *coords, const double *values, size_t n, int dim, const nl_fit_options *o,
               nl_fit_result *res);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -13,6 +13,10 @@
 #ifndef NL_GOF_H
 #define NL_GOF_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/dist.h"
 
 #include <stddef.h>
@@ -47,5 +51,9 @@ int nl_gof_test_dep(const double *x, size_t n, const nl_dist *d, size_t bins, do
  * edges[b]) for b < bins (edges holds bins + 1 entries, as nl_hist makes
  * them).  Returns NL_OK or NL_EINVAL (edges not increasing). */
 int nl_gof_bin_density(const nl_dist *d, const double *edges, size_t bins, double *pdf);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -31,6 +31,10 @@
 #ifndef NL_GOF_DEP_H
 #define NL_GOF_DEP_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "gof.h"
 #include "../core/dist.h"
 #include "../core/field.h"
@@ -74,5 +78,9 @@ size_t nl_gof_thin(const nl_field *x, size_t stride, double *out);
  * for K = 0, or fewer than 2 samples kept in all), NL_ENOMEM. */
 int nl_gof_test_thinned(const nl_field *const *x, size_t K, const nl_dist *d, size_t bins, nl_gof_dep *sum,
                         size_t *smin, nl_gof *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -3,6 +3,10 @@
 #ifndef NL_HIST_H
 #define NL_HIST_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stddef.h>
@@ -48,5 +52,9 @@ int nl_hist_count(const nl_field *x, const double *edges, size_t bins, double *c
  * arrays of bins entries).
  * Returns the codes of nl_hist, or NL_ENOMEM. */
 int nl_hist_density(const nl_field *x, const nl_moments *mo, size_t bins, double *mid, double *density, double *gauss);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -21,6 +21,10 @@
 #ifndef NL_KRIGE_H
 #define NL_KRIGE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -85,5 +89,9 @@ int nl_krige_eval_grid(const nl_krige_plan *p, const double *lo, const nl_field 
 /* Copy the plan's figures into *info. */
 void nl_krige_plan_info(const nl_krige_plan *p, nl_krige_info *info);
 void nl_krige_plan_free(nl_krige_plan *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

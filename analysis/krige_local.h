@@ -21,6 +21,10 @@
 #ifndef NL_KRIGE_LOCAL_H
 #define NL_KRIGE_LOCAL_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -81,5 +85,9 @@ typedef struct {
     double rmse;                  /* sqrt(mean (z - pred)^2) */
 } nl_krige_cv_summary;
 int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_krige_cv_summary *s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,10 @@
 #ifndef NL_NONLIN_H
 #define NL_NONLIN_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/dist.h"
 #include "../core/field.h"
 
@@ -86,5 +90,9 @@ int nl_nonlin_verify(const nl_field *S, const nl_dist *d, size_t realizations, s
 /* max_i |meas[i] - target[i] scale| / var over i < n (0 for n = 0): the
  * measured error relative to the output variance. */
 double nl_nonlin_max_deviation(const double *meas, const double *target, size_t n, double scale, double var);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -16,6 +16,10 @@
 #ifndef NL_PSD_H
 #define NL_PSD_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stddef.h>
@@ -40,5 +44,9 @@ void nl_psd_plan_free(nl_psd_plan *p);
  * Returns the codes of nl_psd_plan_alloc and nl_field_alloc; *out is NULL
  * on failure. */
 int nl_psd_periodogram(const nl_field *x, double mean, nl_field **out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -9,6 +9,10 @@
 #ifndef NL_RADIAL_H
 #define NL_RADIAL_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stddef.h>
@@ -21,5 +25,9 @@ enum { NL_GRID_LAG = 0, NL_GRID_FREQ = 1 };
  * caller's arrays of nbins entries.  Returns NL_OK or NL_EINVAL (step not
  * positive).  Reentrant. */
 int nl_radial(const nl_field *g, int kind, double step, size_t nbins, double *r, double *v, size_t *cnt);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

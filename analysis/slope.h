@@ -11,6 +11,10 @@
 #ifndef NL_SLOPE_H
 #define NL_SLOPE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stddef.h>
@@ -37,5 +41,9 @@ int nl_psd_slope(const double *f, const double *psd, size_t n, double fmin, doub
  * rings hold few ordinates, over which a steep spectrum varies).  Returns
  * the codes of nl_psd_slope. */
 int nl_psd_slope_grid(const nl_field *P, double fmin, double fmax, nl_slope *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

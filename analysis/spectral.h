@@ -10,6 +10,10 @@
 #ifndef NL_SPECTRAL_H
 #define NL_SPECTRAL_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -41,5 +45,9 @@ int nl_psd_model_profile(const nl_model *m, int dim, const size_t *n, const doub
  * *aniso = largest / smallest sector mean.  Returns NL_OK or NL_EINVAL
  * (P not 2D, nsec = 0, or not 0 <= fmin <= fmax). */
 int nl_psd_sectors(const nl_field *P, size_t nsec, double fmin, double fmax, double *sector, double *aniso);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

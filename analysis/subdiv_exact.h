@@ -16,6 +16,10 @@
 #ifndef NL_SUBDIV_EXACT_H
 #define NL_SUBDIV_EXACT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 #include "../synth/subdiv.h"
@@ -40,5 +44,9 @@
  * the model). */
 int nl_subdiv_exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, size_t nx, size_t ny, size_t nlags,
                         const long *lags, double *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

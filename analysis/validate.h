@@ -75,6 +75,10 @@
 #ifndef NL_VALIDATE_H
 #define NL_VALIDATE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/model.h"
 
 #include <stddef.h>
@@ -242,5 +246,9 @@ int nl_validate_model(const nl_model *m, int dim, const size_t *n, int positive_
  * index of the largest |mean - target|.  Reentrant. */
 void nl_validate_effect_of(size_t L, const double *mean, const double *se, const double *target, double r0,
                            double c, double k, nl_validate_effect *e, size_t *worst);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -25,6 +25,10 @@
 #ifndef NL_VARIOGRAM_H
 #define NL_VARIOGRAM_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/io_points.h"
 
@@ -69,5 +73,9 @@ int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_vari
 
 /* Release v and its arrays (NULL is a no-op). */
 void nl_variogram_free(nl_variogram *v);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

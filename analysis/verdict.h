@@ -27,6 +27,10 @@
 #ifndef NL_VERDICT_H
 #define NL_VERDICT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stddef.h>
@@ -78,5 +82,9 @@ typedef double (*nl_verdict_cov)(long dx, long dy, void *ctx);
  *     Var r(l) = (1/P^2) sum_d prod_a (n_a - l_a - |d_a|) [C(d)^2 + C(d+l) C(d-l)],
  * P = prod_a (n_a - l_a); 0 <= l_a < n_a.  O(n_0 n_1) calls of C. */
 double nl_verdict_isserlis_var(nl_verdict_cov C, void *ctx, const size_t *n, long lx, long ly);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -18,6 +18,10 @@
 #ifndef NL_WELCH_H
 #define NL_WELCH_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stddef.h>
@@ -46,5 +50,9 @@ void nl_welch_plan_free(nl_welch_plan *p);
  * (x more than 2D, S < 4 or larger than an axis of x), NL_ENOMEM, NL_EFAIL;
  * *out is NULL on failure. */
 int nl_psd_welch(const nl_field *x, size_t S, double mean, nl_field **out, size_t *segments);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -10,6 +10,10 @@
 #ifndef NL_AUTOCORR_H
 #define NL_AUTOCORR_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "field.h"
 
 /* Units: the sums are of squared field units, not divided by any count
@@ -25,5 +29,9 @@ int nl_autocorr_sums(const nl_field *x, double mean, nl_field **out);
 /* Arithmetic mean of the count samples (sum / count, in order).  No status;
  * thread-safe. */
 double nl_field_mean(const nl_field *x);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

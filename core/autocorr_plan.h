@@ -14,6 +14,10 @@
 #ifndef NL_AUTOCORR_PLAN_H
 #define NL_AUTOCORR_PLAN_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "field.h"
 
 #include <stddef.h>
@@ -36,5 +40,9 @@ void nl_autocorr_plan_grid(const nl_autocorr_plan *p, int *dim, size_t *m);
 
 /* NULL is a no-op. */
 void nl_autocorr_plan_free(nl_autocorr_plan *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

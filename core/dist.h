@@ -35,6 +35,10 @@
 #ifndef NL_DIST_H
 #define NL_DIST_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 typedef struct nl_dist nl_dist;
@@ -66,5 +70,9 @@ int nl_dist_is_function(const nl_dist *d);
 /* Mean and variance (NAN where not finite or not known in closed form). */
 double nl_dist_mean(const nl_dist *d);
 double nl_dist_variance(const nl_dist *d);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

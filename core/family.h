@@ -26,6 +26,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct nl_model nl_model;
 
 /* Most parameters of one family. */
@@ -141,5 +145,9 @@ extern const nl_family nl_family_spectrum;
 extern const nl_family nl_family_image;
 extern const nl_family nl_family_power;
 extern const nl_family nl_family_gauss;
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -32,6 +32,10 @@
 #ifndef NL_FFTW_PLAN_H
 #define NL_FFTW_PLAN_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 #define NL_FFTW_THREADS_MIN ((size_t)1 << 16)
@@ -57,5 +61,9 @@ int nl_threads_max(void);
  * the file is written under a temporary name and renamed.  Not thread-safe
  * (reads FFTW's wisdom, which planning writes). */
 void nl_fftw_save(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

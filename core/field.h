@@ -10,6 +10,10 @@
 #ifndef NL_FIELD_H
 #define NL_FIELD_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 typedef struct {
@@ -51,5 +55,9 @@ int nl_field_check_finite(const nl_field *f, double limit, size_t *first);
  * the environment variable NOISELAB_MEMORY_LIMIT in bytes when set to a
  * positive integer; see nl_mem_limit), or 0 if unknown.  Reads /proc/meminfo on every call. */
 size_t nl_mem_available(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

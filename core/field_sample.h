@@ -10,6 +10,10 @@
 #ifndef NL_FIELD_SAMPLE_H
 #define NL_FIELD_SAMPLE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "field.h"
 
 #include <stddef.h>
@@ -46,5 +50,9 @@ int nl_field_sample(const nl_field *f, const double *x0, int interp, size_t n, c
  * i dim + a) (core/rng.h).  Pure function of its arguments. */
 #define NL_STREAM_POINTS 0x504f4e54u
 void nl_field_random_points(const nl_field *f, const double *x0, uint64_t seed, size_t n, double *pts);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

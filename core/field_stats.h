@@ -3,6 +3,10 @@
 #ifndef NL_FIELD_STATS_H
 #define NL_FIELD_STATS_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "field.h"
 
 /* Mean m = sum x_i / N (each term divided by N before it is added) and
@@ -15,5 +19,9 @@ void nl_field_mean_var(const nl_field *f, double *mean, double *var);
 /* sqrt(sum x_i^2 / N), each term divided by N before it is added; 0 for a
  * field without samples.  Cannot fail; thread-safe. */
 double nl_field_rms(const nl_field *f);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -23,6 +23,10 @@
 #ifndef NL_IO_H
 #define NL_IO_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "field.h"
 
 #include <stdint.h>
@@ -119,5 +123,9 @@ int nl_tsv_read_field(const char *path, nl_field **out);
  * must be finite (NL_EINPUT names the first that is not).  `meta` (may be
  * NULL) is zeroed, then filled from EXR attributes or TSV comment lines. */
 int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -7,6 +7,10 @@
 #ifndef NL_IO_COORDS_H
 #define NL_IO_COORDS_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 /* Read path: *dim (1..3) coordinates per point, *n (>= 1) points, *pts
@@ -17,5 +21,9 @@
  * NL_ETOOBIG when the rows outgrow the memory available (core/field.h);
  * NL_ENOMEM.  Thread-safe. */
 int nl_coords_read(const char *path, int *dim, size_t *n, double **pts);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

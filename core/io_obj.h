@@ -9,6 +9,10 @@
 #ifndef NL_IO_OBJ_H
 #define NL_IO_OBJ_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 /* Triangle t (0 <= t < ntri) of the mesh ctx: xyz receives x y z of its
@@ -20,5 +24,9 @@ typedef void (*nl_obj_triangle)(const void *ctx, size_t t, double xyz[9]);
  * Errors: NL_EINVAL for tri NULL; NL_EIO when the file cannot be opened or
  * written.  Thread-safe for distinct paths. */
 int nl_obj_write_triangles(const char *path, const char *comment, size_t ntri, nl_obj_triangle tri, const void *ctx);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

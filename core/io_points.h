@@ -5,6 +5,10 @@
 #ifndef NL_IO_POINTS_H
 #define NL_IO_POINTS_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 typedef struct {
@@ -24,5 +28,9 @@ int nl_points_read(const char *path, nl_points **out);
 
 /* Free p and its arrays (NULL is a no-op). */
 void nl_points_free(nl_points *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -10,6 +10,10 @@
 #ifndef NL_MEM_H
 #define NL_MEM_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 /* An uninitialised block of `bytes` (NULL when out of memory; bytes = 0
@@ -27,5 +31,9 @@ void nl_free(void *p);
  * that does not parse is refused, not ignored.  Thread-safe as long as no
  * thread changes the environment. */
 int nl_mem_limit(size_t *bytes);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -57,6 +57,10 @@
 
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 
 typedef struct nl_model nl_model;
 
@@ -145,5 +149,9 @@ int nl_model_param(const nl_model *m, const char *name, double *value);
 
 /* The nugget (0 for spectral models and when not given).  Thread-safe. */
 double nl_model_nugget(const nl_model *m);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

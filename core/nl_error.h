@@ -27,6 +27,10 @@
 #ifndef NL_ERROR_H
 #define NL_ERROR_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 enum {
     NL_OK = 0,
     NL_EINVAL = 1,   /* bad argument or option value (user input) */
@@ -56,5 +60,9 @@ const char *nl_errwhere(void);
 /* Is `code` caused by the user's input (exit status 2) rather than a
  * failure while running (exit status 1)? */
 int nl_error_is_input(int code);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

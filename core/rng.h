@@ -26,6 +26,10 @@
 #ifndef NL_RNG_H
 #define NL_RNG_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 #include <stdint.h>
 
@@ -67,5 +71,9 @@ const char *nl_rng_simd(void);
  * stream, index, sub); 0 for mean <= 0 or NAN; mean <= 1e8 (beyond, the
  * search bound overflows).  The GSL CDF runs under the library's guard. */
 unsigned long nl_rng_poisson(uint64_t seed, uint32_t stream, uint64_t index, uint32_t sub, double mean);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

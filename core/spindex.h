@@ -10,6 +10,10 @@
 #ifndef NL_SPINDEX_H
 #define NL_SPINDEX_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 
 #define NL_SPINDEX_LEAF 8
@@ -57,5 +61,9 @@ int nl_spindex_pairs(const nl_spindex *s, double cutoff, nl_spindex_pair_fn fn, 
  * in that order.  Calling it for every a visits every pair once; distinct a
  * may run concurrently (to split the work among threads). */
 int nl_spindex_pairs_at(const nl_spindex *s, size_t a, double cutoff, nl_spindex_pair_fn fn, void *ctx);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

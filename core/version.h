@@ -7,6 +7,10 @@
 #ifndef NL_VERSION_H
 #define NL_VERSION_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #define NL_VERSION_MAJOR 0
 #define NL_VERSION_MINOR 2
 #define NL_VERSION_PATCH 0
@@ -21,5 +25,9 @@
  * compare with NL_VERSION_STRING to detect a header/library mismatch).
  * Thread-safe. */
 const char *nl_version(void);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -33,6 +33,10 @@
 #ifndef NL_WK_H
 #define NL_WK_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "field.h"
 #include "model.h"
 
@@ -84,5 +88,9 @@ int nl_wk_check_even(const nl_model *m, int dim, const size_t *n, const double *
  * input's spacing sets the scaling.  Plan FFTW: not thread-safe. */
 int nl_wk_acf_to_spectrum(const nl_field *R, nl_field *S);
 int nl_wk_spectrum_to_acf(const nl_field *S, nl_field *R);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

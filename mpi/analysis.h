@@ -41,6 +41,10 @@
 #include <mpi.h>
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* One process's part of a distributed field. */
 typedef struct {
     MPI_Comm comm;       /* the processes holding the field */
@@ -105,5 +109,9 @@ int nl_mpi_moments(const nl_mpi_slab *x, nl_moments *m);
  * and the same counts[0..bins-1] (exact).  Returns NL_OK or the codes of
  * nl_hist (NL_EINVAL, NL_ENOMEM). */
 int nl_mpi_hist(const nl_mpi_slab *x, size_t bins, double *edges, double *counts);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

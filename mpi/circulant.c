@@ -4,6 +4,7 @@
 #include "dist.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
+#include "../synth/circulant_internal.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -24,6 +24,10 @@
 #include <mpi.h>
 #include <stddef.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Process r's block of N rows over P processes: *s0 = min(r b, N), *ns =
  * min(b, N - *s0) with b = ceil(N / P) (FFTW-MPI's default block).  Pure. */
 void nl_mpi_block(size_t N, int P, int r, size_t *s0, size_t *ns);
@@ -40,5 +44,9 @@ int nl_mpi_agree(MPI_Comm comm, int status);
  * its method); used to name the process count a refused request needs.
  * Pure (not collective). */
 int nl_mpi_processes_needed(size_t (*bytes)(int P, const void *arg), const void *arg, size_t limit, int pmax);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -6,6 +6,7 @@
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../core/wk.h"
+#include "../synth/fft_internal.h"
 
 #include <complex.h>
 #include <fftw3-mpi.h>

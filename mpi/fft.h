@@ -39,6 +39,10 @@
 #include <mpi.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct nl_mpi_fft_plan nl_mpi_fft_plan;
 
 /* Plan synthesis of m on a dim-D grid (2 or 3) of n[] samples at spacing h
@@ -80,5 +84,9 @@ void nl_mpi_circulant_plan_free(nl_mpi_circulant_plan *p);
  * samples on P processes (the busiest process's slab; an estimate within
  * FFTW's transpose buffers), for a memory check before planning.  Pure. */
 size_t nl_mpi_fft_bytes(int dim, const size_t *n, int P);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -32,6 +32,10 @@
 
 #include <mpi.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Write the slab s0 .. s0 + ns - 1 (along axis dim - 1) of a field of
  * n[0..dim-1] samples at spacing h (NULL: from meta only) from `slab`
  * (ns n[0] ... n[dim-2] doubles, row-major; NULL when ns = 0).  Writes
@@ -62,5 +66,9 @@ int nl_mpi_h5_read_slab(const char *path, MPI_Comm comm, int *dim, size_t *n, do
 /* Is the file at path HDF5 (its signature at offset 0)?  1 yes, 0 no or
  * unreadable.  Serial. */
 int nl_mpi_h5_is_hdf5(const char *path);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

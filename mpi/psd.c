@@ -5,11 +5,10 @@
 #include "dist.h"
 #include "../analysis/psd.h"
 #include "../analysis/spectral.h"
-#include "../core/gsl_guard_internal.h"
+#include "../analysis/verdict.h"
 #include "../core/nl_error.h"
 #include "../core/wk.h"
 
-#include <gsl/gsl_cdf.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -99,9 +98,8 @@ static int slope_fit(const psd_sums *s, nl_slope *out)
         return NL_ERROR(NL_EFAIL, "MPI: summing the slope's points failed");
     cov11 = a[2] / (double)(m - 2) / a[0];
     out->slope = c1, out->points = (size_t)m;
-    nl_gsl_enter();
-    out->ci95 = gsl_cdf_tdist_Qinv(0.025, (double)(m - 2)) * sqrt(cov11);
-    nl_gsl_leave();
+    /* Student's t at 0.025 with m - 2 degrees of freedom, as analysis/slope.c */
+    out->ci95 = nl_verdict_threshold(0.05, 1, (size_t)m - 2) * sqrt(cov11);
     out->fractal_dim = E + (3 - (-c1 - (E - 1))) / 2;
     return NL_OK;
 }

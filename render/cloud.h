@@ -31,6 +31,10 @@
 #ifndef NL_RENDER_CLOUD_H
 #define NL_RENDER_CLOUD_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/model.h"
 
 #include <stddef.h>
@@ -87,5 +91,9 @@ int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, vo
  * of the kriging plan (analysis/krige.h), NL_ENOMEM.  Thread-safe for
  * reentrant models. */
 int nl_cloud_shape_eval(const nl_cloud_scene *s, size_t count, const double *x, double *K, double *wsum);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -21,6 +21,10 @@
 #ifndef NL_RENDER_CLOUD_SCENE_H
 #define NL_RENDER_CLOUD_SCENE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "cloud.h"
 
 /* Read path into *s (overwritten whole).  On success s owns its points
@@ -36,5 +40,9 @@ int nl_cloud_scene_read(const char *path, nl_cloud_scene *s);
 /* Free the points and models that nl_cloud_scene_read put in s and set
  * those pointers to NULL (a scene without them is a no-op). */
 void nl_cloud_scene_free(nl_cloud_scene *s);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

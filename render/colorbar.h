@@ -8,6 +8,10 @@
 #ifndef NL_RENDER_COLORBAR_H
 #define NL_RENDER_COLORBAR_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stddef.h>
@@ -24,5 +28,9 @@
  * finite), NL_ETOOBIG (the picture does not fit: nl_size_check) or
  * NL_ENOMEM; *pix is NULL on failure. */
 int nl_render_grey_colorbar(const nl_field *f, double lo, double hi, uint8_t **pix, size_t *w, size_t *h);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

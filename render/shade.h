@@ -7,6 +7,10 @@
 #ifndef NL_RENDER_SHADE_H
 #define NL_RENDER_SHADE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stddef.h>
@@ -38,5 +42,9 @@ void nl_render_nearest(size_t M, const double *src, size_t W, double *dst);
  * when the range is not finite
  * (analysis/hist.h).  Thread-safe. */
 int nl_render_grey_range(const nl_field *x, double *lo, double *hi);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -19,6 +19,10 @@
 #ifndef NL_RENDER_TERRAIN_H
 #define NL_RENDER_TERRAIN_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stdint.h>
@@ -59,5 +63,9 @@ void nl_render_view_default(const nl_field *f, nl_render_view *v);
  * picture or field whose work arrays overflow; NL_ENOMEM.  Reentrant; runs
  * its own OpenMP loops. */
 int nl_render_terrain(const nl_field *f, const nl_render_view *v, uint8_t *rgb);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -11,6 +11,10 @@
 #ifndef NL_SYNTH_CHOLESKY_H
 #define NL_SYNTH_CHOLESKY_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -48,5 +52,9 @@ int nl_synth_cholesky_execute(nl_synth_cholesky_plan *p, uint64_t seed, nl_field
 
 /* Frees the plan (NULL: no-op). */
 void nl_synth_cholesky_plan_free(nl_synth_cholesky_plan *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -1,5 +1,5 @@
 /* Circulant embedding: periodic FFT synthesis on an embedding grid, cropped. */
-#include "circulant.h"
+#include "circulant_internal.h"
 #include "../core/nl_error.h"
 
 #include <math.h>

@@ -24,6 +24,10 @@
 #ifndef NL_SYNTH_CIRCULANT_H
 #define NL_SYNTH_CIRCULANT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "fft.h"
 
 typedef struct {
@@ -68,31 +72,15 @@ void nl_synth_circulant_plan_info(const nl_synth_circulant_plan *p, nl_synth_cir
  * equal seeds.  NL_OK, NL_EINVAL (out does not match), NL_ENOMEM. */
 int nl_synth_circulant_execute(const nl_synth_circulant_plan *p, uint64_t seed, nl_field *out);
 
-/* Frees the plan (NULL: no-op). */
-/* The pieces of planning a distributed embedding shares (mpi/fft.h):
- * the embedding size of an axis of n samples before doublings (the
- * smallest even 2,3,5-smooth number >= 2 (n - 1)); a spectral model's
- * variance_loss for a synthesised variance (0 for lag models, NaN when
- * R(0) is not known); the NL_ENOTPD refusal of an embedding mm that could
- * not be doubled further (info's eigenvalues, doublings, clamp_error).
- * Pure. */
+/* The embedding size of an axis of n samples before doublings: the
+ * smallest even 2,3,5-smooth number >= 2 (n - 1).  Pure. */
 size_t nl_synth_circulant_size(size_t n);
 
-/* The embedding search both plans share: from nl_synth_circulant_size per
- * axis, try_plan(ctx, m, &fi) plans periodic synthesis of the model on m
- * (clamping allowed: NL_SYNTH_FFT_CLAMP) and reports its info, keeping
- * the plan in ctx (freeing the previous one); m is doubled while clamping
- * would change the covariance by more than NL_SYNTH_FFT_CLAMP_TOL and
- * every axis stays within max_factor n.  Fills *info.  NL_OK (the last
- * plan is the one to use), try_plan's status, or the NL_ENOTPD refusal
- * (unless flags holds NL_SYNTH_FFT_CLAMP). */
-typedef int nl_synth_circulant_try_fn(void *ctx, const size_t *m, nl_synth_fft_info *fi);
-int nl_synth_circulant_embed(const nl_model *m, int dim, const size_t *n, const double *h, unsigned flags,
-                             int max_factor, nl_synth_circulant_try_fn *try_plan, void *ctx,
-                             nl_synth_circulant_info *info);
-double nl_synth_circulant_loss(const nl_model *m, int dim, double variance);
-int nl_synth_circulant_refuse(const nl_model *m, const nl_synth_circulant_info *info, const size_t *mm);
-
+/* Frees the plan (NULL: no-op). */
 void nl_synth_circulant_plan_free(nl_synth_circulant_plan *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

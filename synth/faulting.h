@@ -14,6 +14,10 @@
 #ifndef NL_SYNTH_FAULTING_H
 #define NL_SYNTH_FAULTING_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stdint.h>
@@ -28,5 +32,9 @@
  *   NL_ETOOBIG more than 1e8 faults expected;
  *   NL_ENOMEM  out of memory for the faults. */
 int nl_synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

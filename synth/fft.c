@@ -1,6 +1,6 @@
 /* Periodic FFT synthesis: filter white noise by the square root of the
  * spectrum (Lewis 1987, "Fourier synthesis"; Wiener-Khinchine, eq. (2)). */
-#include "fft.h"
+#include "fft_internal.h"
 #include "../core/fftw_plan.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"

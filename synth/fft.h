@@ -35,6 +35,10 @@
 #ifndef NL_SYNTH_FFT_H
 #define NL_SYNTH_FFT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -54,16 +58,6 @@ typedef struct {
     size_t negatives;   /* eigenvalues set to zero */
     double clamp_error; /* bound on the covariance change from clamping, relative to R(0) */
 } nl_synth_fft_info;
-
-/* The plan's verdict on a sampled spectrum, from its sums over the full
- * grid (lambda as densities S / cell): sum of the non-negative values, neg
- * = minus the sum of the negative ones; info's min_lambda, max_lambda and
- * negatives set by the caller.  Sets variance and clamp_error, and returns
- * NL_OK, or NL_ENOTPD (no positive part; clamping above
- * NL_SYNTH_FFT_CLAMP_TOL without NL_SYNTH_FFT_CLAMP in flags) with the
- * message `name` leads.  Shared with the distributed plans (mpi/fft.h). */
-int nl_synth_fft_verdict(const char *name, size_t count, double sum, double neg, unsigned flags,
-                         nl_synth_fft_info *info);
 
 /* Plan synthesis of model m on a dim-D grid (1..3) of n[] samples, spacing
  * h[] (NULL: unit; the model's lag units).  The plan owns the amplitudes
@@ -110,5 +104,9 @@ void nl_synth_fft_plan_free(nl_synth_fft_plan *p);
  * double (the spectrum is divided by it).  NL_OK or NL_EINVAL naming the
  * value.  Thread-safe. */
 int nl_synth_check_cell(int dim, const double *h);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -24,6 +24,10 @@
 #ifndef NL_SYNTH_LATTICE_H
 #define NL_SYNTH_LATTICE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -165,5 +169,9 @@ int nl_synth_lattice_wiener_execute(const nl_synth_lattice_wiener_plan *p, uint6
                                     double **lattice);
 
 void nl_synth_lattice_wiener_plan_free(nl_synth_lattice_wiener_plan *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

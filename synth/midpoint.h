@@ -32,6 +32,10 @@
 #ifndef NL_SYNTH_MIDPOINT_H
 #define NL_SYNTH_MIDPOINT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 
 #include <stdint.h>
@@ -73,5 +77,9 @@ int nl_midpoint_miller_default_levels(int dim, const size_t *n);
  * NL_ETOOBIG (the scratch grid exceeds the memory available), NL_ENOMEM.
  * Pure in its arguments (bit-identical for equal ones); thread-safe. */
 int nl_midpoint_miller(int levels, double H, double sigma2, double vscale, uint64_t seed, nl_field *out);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

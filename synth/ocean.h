@@ -12,6 +12,10 @@
 #ifndef NL_SYNTH_OCEAN_H
 #define NL_SYNTH_OCEAN_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "rank1.h"
 
 #include <stdint.h>
@@ -67,5 +71,9 @@ void nl_ocean_normals(size_t count, const double *grad, double *nrm);
  * gy (per metre; each may be NULL), M * M doubles each, at time t by 2D
  * FFTs.  NL_EINVAL: M outside 2..65536 or bad parameters; NL_ENOMEM. */
 int nl_ocean_grid(size_t M, const nl_ocean_params *o, uint64_t seed, double t, double *h, double *gx, double *gy);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -27,6 +27,10 @@
 #ifndef NL_SYNTH_RANK1_H
 #define NL_SYNTH_RANK1_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include <stddef.h>
 #include <stdint.h>
 
@@ -182,5 +186,9 @@ int nl_rank1_eval(const nl_rank1_lattice *L, const double *c, double extent, siz
  * thread-safe (core/fftw_plan.h). */
 int nl_rank1_grid(const nl_rank1_lattice *L, const double *c, double extent, size_t W, const double *at, double *img,
                   double *gx, double *gy, double *imag);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -20,6 +20,10 @@
 #ifndef NL_SYNTH_RANK1_MODEL_H
 #define NL_SYNTH_RANK1_MODEL_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "rank1.h"
 #include "../core/model.h"
 
@@ -79,5 +83,9 @@ int nl_rank1_model_coefficients(const nl_rank1_lattice *L, const nl_model *m, do
 
 int nl_rank1_model_synthesize(const nl_rank1_lattice *L, const nl_model *m, double extent, uint64_t seed, double *f,
                               double *grad, double *imag);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -14,6 +14,10 @@
 #ifndef NL_SYNTH_SHAPE_H
 #define NL_SYNTH_SHAPE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/dist.h"
 #include "../core/field.h"
 
@@ -26,5 +30,9 @@
  * or NL_EINVAL (fewer than 2 samples; Gaussian mode: a constant field),
  * NL_ENOMEM (f is then unchanged). */
 int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

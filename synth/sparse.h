@@ -33,6 +33,10 @@
 #ifndef NL_SYNTH_SPARSE_H
 #define NL_SYNTH_SPARSE_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -209,5 +213,9 @@ int nl_synth_sparse_execute_points(const nl_synth_sparse_plan *p, uint64_t seed,
 
 /* Frees the plan (NULL: no-op). */
 void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -30,6 +30,10 @@
 #ifndef NL_SYNTH_SPARSE_POINT_H
 #define NL_SYNTH_SPARSE_POINT_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/model.h"
 
 #include <stddef.h>
@@ -76,5 +80,9 @@ void nl_synth_sparse_point_info(const nl_synth_sparse_point *p, nl_synth_sparse_
 
 /* NULL is a no-op. */
 void nl_synth_sparse_point_free(nl_synth_sparse_point *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

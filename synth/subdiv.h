@@ -34,6 +34,10 @@
 #ifndef NL_SYNTH_SUBDIV_H
 #define NL_SYNTH_SUBDIV_H
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 #include "../core/field.h"
 #include "../core/model.h"
 
@@ -424,5 +428,9 @@ int nl_subdiv_refine_periodic(const nl_subdiv_coeffs *c, const nl_field *coarse,
  * never clamp), NL_EINVAL (a window beyond +-NL_SUBDIV_ORIGIN_MAX),
  * NL_ENOMEM.  Thread-safe: c is only read. */
 int nl_subdiv_synth_window(const nl_subdiv_coeffs *c, uint64_t seed, const long *origin, nl_field *f);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

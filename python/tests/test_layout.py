@@ -49,6 +49,19 @@ def test_declarations_match_headers(tmp_path):
     assert so
 
 
+def test_declarations_exported():
+    """Every function the package declares is one the library exports (it
+    exports exactly what its installed headers declare)."""
+    if not shutil.which("nm") or not os.path.isabs(_ffi.LIBRARY_PATH):
+        pytest.skip("no nm, or the library found by its soname")
+    import subprocess
+    out = subprocess.run(["nm", "-D", "--defined-only", _ffi.LIBRARY_PATH], capture_output=True, text=True,
+                         check=True).stdout
+    exported = {line.split()[-1] for line in out.splitlines() if len(line.split()) >= 3}
+    declared = set(re.findall(r"\b(nl_\w+)\s*\(", _ffi.CDEF))
+    assert declared and not declared - exported, sorted(declared - exported)
+
+
 def test_versions_agree():
     h = open(os.path.join(TOP, "core", "version.h")).read()
     v = [re.search(r"#define NL_VERSION_%s (\d+)" % k, h).group(1) for k in ("MAJOR", "MINOR", "PATCH")]
