@@ -55,7 +55,10 @@ typedef enum {
     NL_METHOD_STRING  /* text (an expression or a file name) */
 } nl_method_opt_type;
 
-/* Option row flags. */
+/* Option row flags (a method's messages about its model: model_conflict
+ * when a model is given to a NL_METHOD_NO_MODEL method or with a
+ * model-replacing option; model_missing when a model is needed and none,
+ * or two, are given). */
 enum {
     NL_METHOD_OPEN = 1u << 0,         /* DOUBLE: min and max excluded */
     NL_METHOD_REPLACES_MODEL = 1u << 1, /* given, it stands in for the model (midpoint H, sparse kernel) */
@@ -135,6 +138,8 @@ struct nl_method_type {
     unsigned caps;                          /* NL_METHOD_* capabilities */
     const nl_method_option *options;        /* the option table */
     int noptions;                           /* its rows, at most NL_METHOD_MAX_OPTIONS */
+    const char *model_conflict;             /* why a model conflicts with the options given, or NULL */
+    const char *model_missing;              /* what to give when the model is missing, or NULL: a model */
     int (*plan)(const nl_model *m, const nl_method_grid *g, const nl_method_options *o, nl_method_plan **out);
     int (*execute)(nl_method_plan *p, uint64_t seed, nl_field *f);
     int (*execute_slab)(nl_method_plan *p, uint64_t seed, size_t s0, nl_field *f);
@@ -152,11 +157,11 @@ const nl_method_type *nl_method_find(const char *name);
 /* Is `name` reserved for a method not in this version?  1 or 0. */
 int nl_method_planned(const char *name);
 
-/* The method names joined: "a, b, c" with `last` (" or ", ", ") before the
- * last one, into buf (size bytes, NUL-terminated, truncated if short).
+/* The method names joined: "a, b or c" with `sep` (", ") between them and
+ * `last` (" or ") before the last one, into buf (size bytes, NUL-terminated, truncated if short).
  * Only methods with every capability in `caps` are listed (0: all);
  * opt != NULL: only those taking that option.  Returns the number listed. */
-int nl_method_names(unsigned caps, const char *opt, const char *last, char *buf, size_t size);
+int nl_method_names(unsigned caps, const char *opt, const char *sep, const char *last, char *buf, size_t size);
 
 /* The row of option `name` in t's table, or -1. */
 int nl_method_option_index(const nl_method_type *t, const char *name);

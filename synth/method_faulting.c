@@ -39,5 +39,6 @@ const nl_method_type nl_method_faulting = {
     .dims = 3,
     .caps = NL_METHOD_NO_MODEL,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),
+    .model_conflict = "takes no model (its spectrum is f^-2); got --acf/--spectrum",
     .plan = plan, .execute = execute, .describe = describe, .free = plan_free,
 };

@@ -85,5 +85,6 @@ const nl_method_type nl_method_midpoint = {
     .dims = 3,
     .caps = NL_METHOD_MODEL,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),
+    .model_conflict = "give either --H or a power-law model, not both",
     .plan = plan, .execute = execute, .describe = describe, .free = plan_free,
 };

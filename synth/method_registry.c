@@ -40,7 +40,7 @@ static int listed(const nl_method_type *t, unsigned caps, const char *opt)
     return (t->caps & caps) == caps && (!opt || nl_method_option_index(t, opt) >= 0);
 }
 
-int nl_method_names(unsigned caps, const char *opt, const char *last, char *buf, size_t size)
+int nl_method_names(unsigned caps, const char *opt, const char *sep, const char *last, char *buf, size_t size)
 {
     int total = 0, k = 0;
     size_t len = 0;
@@ -51,8 +51,7 @@ int nl_method_names(unsigned caps, const char *opt, const char *last, char *buf,
     for (int i = 0; i < COUNT(methods) && size; i++) {
         if (!listed(methods[i], caps, opt))
             continue;
-        const char *sep = k == 0 ? "" : k + 1 == total ? last : ", ";
-        int w = snprintf(buf + len, size - len, "%s%s", sep, methods[i]->name);
+        int w = snprintf(buf + len, size - len, "%s%s", k == 0 ? "" : k + 1 == total ? last : sep, methods[i]->name);
         k++;
         if (w < 0 || (size_t)w >= size - len)
             break;

@@ -159,5 +159,7 @@ const nl_method_type nl_method_sparse = {
     .dims = 3,
     .caps = NL_METHOD_MODEL | NL_METHOD_WINDOW | NL_METHOD_DISTRIBUTED | NL_METHOD_CLAMP,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),
+    .model_conflict = "expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE",
+    .model_missing = "expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE",
     .plan = plan, .execute = execute, .execute_slab = execute_slab, .describe = describe, .free = plan_free,
 };

@@ -286,6 +286,8 @@ struct nl_method_type {
     unsigned caps;
     const nl_method_option *options;
     int noptions;
+    const char *model_conflict;
+    const char *model_missing;
     int (*plan)(const nl_model *m, const nl_method_grid *g, const nl_method_options *o, nl_method_plan **out);
     int (*execute)(nl_method_plan *p, uint64_t seed, nl_field *f);
     int (*execute_slab)(nl_method_plan *p, uint64_t seed, size_t s0, nl_field *f);
