@@ -43,7 +43,7 @@ def methods():
     for name, t in _METHODS.items():
         opts = {}
         for key, r in _rows(t).items():
-            o = dict(type=_TYPES[r.type], default=_str(r.default), help=_str(r.help))
+            o = dict(type=_TYPES[r.type], default=_str(getattr(r, "def")), help=_str(r.help))
             if r.type in (lib.NL_METHOD_INT, lib.NL_METHOD_DOUBLE):
                 o["range"] = (r.min, r.max)
             if r.type == lib.NL_METHOD_CHOICE:
