@@ -15,64 +15,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char help[] =
+/* The help: the usage, each method's paragraph (its descriptor's help, in
+ * the registry's order), then the common options. */
+static const char help_usage[] =
     "usage: noiselab synth METHOD (--acf SPEC | --spectrum SPEC) --size N[xM[xK]]\n"
     "                      [--seed S] [--spacing H[,H...]] [--clamp] [--preview P.png]\n"
     "                      [--json] [method options] -o OUT.exr|OUT.tsv|OUT.h5\n"
     "                      [--precision single|double]\n\n"
-    "METHOD\n"
-    "  fft       periodic Fourier synthesis: white noise filtered by the square root of\n"
-    "            the model's spectrum on the periodic grid; Gaussian, zero ensemble mean,\n"
-    "            variance R(0), covariance exactly the model's R sampled on the torus.\n"
-    "            The same seed and size give the same white noise for every model.\n"
-    "  subdiv    generalized stochastic subdivision (Lewis 1987), 1D or 2D:\n"
-    "            --levels L          levels of refinement (default: down to a coarse grid\n"
-    "                                of 8 samples, or 6 levels with --nonperiodic)\n"
-    "            --neighborhood N|auto  half-width of the neighbourhood (default 2: 4 or 4x4)\n"
-    "            --tol [variance:]E  auto: grow N until (7) improves by < E R(0) (1e-4), or is < E R(0)\n"
-    "            --nonperiodic       a window of an infinite, spatially consistent field\n"
-    "            --origin X[,Y]      the window's first sample, in output samples (default 0)\n"
-    "            --seed-image FILE   start from this image as the coarse level (kept exactly)\n"
-    "            --random-neighborhoods K  2D: K random quadrilateral neighbourhoods per\n"
-    "                                point class, one drawn per point (against diagonal bias)\n"
-    "            --displacements independent|correlated  independent: Lewis's, each new\n"
-    "                                point displaced on its own (eq. 7); correlated: the new\n"
-    "                                points of a level displaced together, with the covariance\n"
-    "                                of their estimation errors, by a filter of white noise\n"
-    "                                (default independent)\n"
-    "            --taps M            correlated: the filter's half-width in cells (default 4 in\n"
-    "                                1D, 2 in 2D; at most 16)\n"
-    "  circulant exact stationary field on a NON-periodic grid by circulant embedding\n"
-    "            (Dietrich-Newsam, Wood-Chan): the embedding doubles until its eigenvalues\n"
-    "            are non-negative, up to 16x the size; the report gives the embedding and\n"
-    "            the smallest eigenvalue\n"
-    "  cholesky  direct simulation by the Cholesky factor of the covariance matrix; exact,\n"
-    "            O(N^3), at most 8192 samples: the ground truth for small grids\n"
-    "  faulting  Poisson faulting (Mandelbrot): random steps in 1D, random lines in 2D;\n"
-    "            --density D faults per sample (1D) or lines per (nx + ny) (2D); no model:\n"
-    "            the spectrum is f^-2 (1D), k^-3 radially (2D)\n"
-    "  sparse    sparse convolution (Lewis GI '86): Poisson impulses in cells, convolved with\n"
-    "            a kernel: the model's (R = h * h), --kernel EXPR in x, y (t, r), or --exemplar\n"
-    "            FILE (Hann-windowed, for texture resynthesis); --density D impulses per\n"
-    "            cell (default 1), --cell C and --radius R in samples, --wrap for a periodic\n"
-    "            tile, --origin X[,Y] for a window of the infinite field, --angle EXPR in\n"
-    "            x, y rotating the kernel with position; the report predicts the excess\n"
-    "            kurtosis 3 sum h^4 / (lambda (sum h^2)^2); a kernel losing more than 1e-3\n"
-    "            of its energy at the radius is flagged truncated=FRACTION\n"
-    "  lattice   interpolated noise lattice (Perlin gradient noise) summed over octaves,\n"
-    "            weighted to the target spectrum's power in each octave's band; --cell C\n"
-    "            largest lattice cell (default size/4), --octaves O (default: down to cell\n"
-    "            2); the report gives each octave's weight and its low-frequency leakage;\n"
-    "            --interpolant wiener: one lattice of the target's own covariance (FFT on\n"
-    "            the lattice), every sample its simple-kriging (Wiener) estimate from the\n"
-    "            4 (1D) or 4x4 nearest nodes; --cell C the node spacing (default 4)\n"
-    "  midpoint  midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
-    "            only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
-    "            (1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
-    "            by an extra Q (Haruyama-Barsky-style altered variances); --interpolant\n"
-    "            miller: Miller's square-square subdivision (each level a new grid of\n"
-    "            half the spacing, weights 9/16 3/16 3/16 1/16 of the parent square;\n"
-    "            1D 3/4 1/4) instead of the nearest-neighbour midpoint (fournier)\n\n"
+    "METHOD\n";
+
+static const char help[] =
+    "\n"
     "  --acf SPEC       autocorrelation model (see noiselab models)\n"
     "  --spectrum SPEC  spectrum model: power:d=..., spectrum:EXPR, or a bare EXPR in f/fx/fy/k\n"
     "  --size           samples per axis, each >= 2 (fft: 1D, 2D or 3D; subdiv: 1D or 2D)\n"
@@ -339,6 +292,21 @@ static const struct option *options_table(void)
     return opts;
 }
 
+static void print_help(void)
+{
+    fputs(help_usage, stdout);
+    for (int i = 0; i < nl_method_count(); i++) {
+        const char *p = nl_method_at(i)->help;
+        printf("  %-10s", nl_method_at(i)->name);
+        while (*p) {
+            size_t l = strcspn(p, "\n");
+            printf("%s%.*s\n", p == nl_method_at(i)->help ? "" : "            ", (int)l, p);
+            p += l + (p[l] == '\n');
+        }
+    }
+    fputs(help, stdout);
+}
+
 /* getopt over argv into job and g; returns 1 when --help was printed. */
 static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
 {
@@ -360,7 +328,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'G': g->precision = optarg; break;
         case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q':
             cli_synth_cond_option(&g->cond, c, optarg); break;
-        case 'h': fputs(help, stdout); return 1;
+        case 'h': print_help(); return 1;
         default:
             if (c >= CLI_MOPT && c < CLI_MOPT + nmopts)
                 method_option(c - CLI_MOPT, optarg, g);

@@ -134,6 +134,7 @@ typedef struct nl_method_plan nl_method_plan;
 struct nl_method_type {
     const char *name;                       /* "fft", ... */
     const char *summary;                    /* one line */
+    const char *help;                       /* synth --help's paragraph: lines joined by '\n' */
     unsigned dims;                          /* bit d - 1 set: dD grids (1u << 0 | 1u << 1: 1D and 2D) */
     unsigned caps;                          /* NL_METHOD_* capabilities */
     const nl_method_option *options;        /* the option table */

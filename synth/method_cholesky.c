@@ -39,6 +39,9 @@ static void plan_free(nl_method_plan *p)
 const nl_method_type nl_method_cholesky = {
     .name = "cholesky",
     .summary = "direct simulation by the Cholesky factor of the covariance matrix (exact, small grids)",
+    .help =
+        "direct simulation by the Cholesky factor of the covariance matrix; exact,\n"
+        "O(N^3), at most 8192 samples: the ground truth for small grids",
     .dims = 7,
     .caps = NL_METHOD_MODEL | NL_METHOD_EXACT | NL_METHOD_SERIAL,
     .plan = plan, .execute = execute, .describe = describe, .free = plan_free,

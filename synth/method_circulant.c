@@ -44,6 +44,11 @@ static void plan_free(nl_method_plan *p)
 const nl_method_type nl_method_circulant = {
     .name = "circulant",
     .summary = "exact stationary field on a non-periodic grid by circulant embedding",
+    .help =
+        "exact stationary field on a NON-periodic grid by circulant embedding\n"
+        "(Dietrich-Newsam, Wood-Chan): the embedding doubles until its eigenvalues\n"
+        "are non-negative, up to 16x the size; the report gives the embedding and\n"
+        "the smallest eigenvalue",
     .dims = 7,
     .caps = NL_METHOD_MODEL | NL_METHOD_DISTRIBUTED | NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT | NL_METHOD_CLAMP,
     .plan = plan, .execute = execute, .describe = describe, .free = plan_free,

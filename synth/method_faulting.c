@@ -36,6 +36,10 @@ static void plan_free(nl_method_plan *p) { free(p); }
 const nl_method_type nl_method_faulting = {
     .name = "faulting",
     .summary = "Poisson faulting (Mandelbrot): random steps in 1D, random lines in 2D; no model",
+    .help =
+        "Poisson faulting (Mandelbrot): random steps in 1D, random lines in 2D;\n"
+        "--density D faults per sample (1D) or lines per (nx + ny) (2D); no model:\n"
+        "the spectrum is f^-2 (1D), k^-3 radially (2D)",
     .dims = 3,
     .caps = NL_METHOD_NO_MODEL,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),

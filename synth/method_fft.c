@@ -35,6 +35,11 @@ static void plan_free(nl_method_plan *p)
 const nl_method_type nl_method_fft = {
     .name = "fft",
     .summary = "periodic Fourier synthesis: white noise filtered by the square root of the model's spectrum",
+    .help =
+        "periodic Fourier synthesis: white noise filtered by the square root of\n"
+        "the model's spectrum on the periodic grid; Gaussian, zero ensemble mean,\n"
+        "variance R(0), covariance exactly the model's R sampled on the torus.\n"
+        "The same seed and size give the same white noise for every model.",
     .dims = 7,
     .caps = NL_METHOD_MODEL | NL_METHOD_PERIODIC | NL_METHOD_DISTRIBUTED | NL_METHOD_CONDITIONABLE |
             NL_METHOD_EXACT | NL_METHOD_CLAMP,

@@ -90,6 +90,14 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
 const nl_method_type nl_method_lattice = {
     .name = "lattice",
     .summary = "interpolated noise lattice (Perlin gradient noise) summed over octaves",
+    .help =
+        "interpolated noise lattice (Perlin gradient noise) summed over octaves,\n"
+        "weighted to the target spectrum's power in each octave's band; --cell C\n"
+        "largest lattice cell (default size/4), --octaves O (default: down to cell\n"
+        "2); the report gives each octave's weight and its low-frequency leakage;\n"
+        "--interpolant wiener: one lattice of the target's own covariance (FFT on\n"
+        "the lattice), every sample its simple-kriging (Wiener) estimate from the\n"
+        "4 (1D) or 4x4 nearest nodes; --cell C the node spacing (default 4)",
     .dims = 3,
     .caps = NL_METHOD_MODEL | NL_METHOD_CLAMP,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),

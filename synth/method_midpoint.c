@@ -82,6 +82,14 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
 const nl_method_type nl_method_midpoint = {
     .name = "midpoint",
     .summary = "midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours only",
+    .help =
+        "midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
+        "only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
+        "(1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
+        "by an extra Q (Haruyama-Barsky-style altered variances); --interpolant\n"
+        "miller: Miller's square-square subdivision (each level a new grid of\n"
+        "half the spacing, weights 9/16 3/16 3/16 1/16 of the parent square;\n"
+        "1D 3/4 1/4) instead of the nearest-neighbour midpoint (fournier)",
     .dims = 3,
     .caps = NL_METHOD_MODEL,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),

@@ -156,6 +156,15 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
 const nl_method_type nl_method_sparse = {
     .name = "sparse",
     .summary = "sparse convolution (Lewis GI '86): Poisson impulses in cells convolved with a kernel",
+    .help =
+        "sparse convolution (Lewis GI '86): Poisson impulses in cells, convolved with\n"
+        "a kernel: the model's (R = h * h), --kernel EXPR in x, y (t, r), or --exemplar\n"
+        "FILE (Hann-windowed, for texture resynthesis); --density D impulses per\n"
+        "cell (default 1), --cell C and --radius R in samples, --wrap for a periodic\n"
+        "tile, --origin X[,Y] for a window of the infinite field, --angle EXPR in\n"
+        "x, y rotating the kernel with position; the report predicts the excess\n"
+        "kurtosis 3 sum h^4 / (lambda (sum h^2)^2); a kernel losing more than 1e-3\n"
+        "of its energy at the radius is flagged truncated=FRACTION",
     .dims = 3,
     .caps = NL_METHOD_MODEL | NL_METHOD_WINDOW | NL_METHOD_DISTRIBUTED | NL_METHOD_CLAMP,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),

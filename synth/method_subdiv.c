@@ -155,6 +155,24 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
 const nl_method_type nl_method_subdiv = {
     .name = "subdiv",
     .summary = "generalized stochastic subdivision (Lewis 1987)",
+    .help =
+        "generalized stochastic subdivision (Lewis 1987), 1D or 2D:\n"
+        "--levels L          levels of refinement (default: down to a coarse grid\n"
+        "                    of 8 samples, or 6 levels with --nonperiodic)\n"
+        "--neighborhood N|auto  half-width of the neighbourhood (default 2: 4 or 4x4)\n"
+        "--tol [variance:]E  auto: grow N until (7) improves by < E R(0) (1e-4), or is < E R(0)\n"
+        "--nonperiodic       a window of an infinite, spatially consistent field\n"
+        "--origin X[,Y]      the window's first sample, in output samples (default 0)\n"
+        "--seed-image FILE   start from this image as the coarse level (kept exactly)\n"
+        "--random-neighborhoods K  2D: K random quadrilateral neighbourhoods per\n"
+        "                    point class, one drawn per point (against diagonal bias)\n"
+        "--displacements independent|correlated  independent: Lewis's, each new\n"
+        "                    point displaced on its own (eq. 7); correlated: the new\n"
+        "                    points of a level displaced together, with the covariance\n"
+        "                    of their estimation errors, by a filter of white noise\n"
+        "                    (default independent)\n"
+        "--taps M            correlated: the filter's half-width in cells (default 4 in\n"
+        "                    1D, 2 in 2D; at most 16)",
     .dims = 3,
     .caps = NL_METHOD_MODEL | NL_METHOD_PERIODIC | NL_METHOD_WINDOW | NL_METHOD_DISTRIBUTED |
             NL_METHOD_CONDITIONABLE | NL_METHOD_CLAMP,

@@ -282,6 +282,7 @@ typedef struct nl_method_plan nl_method_plan;
 struct nl_method_type {
     const char *name;
     const char *summary;
+    const char *help;
     unsigned dims;
     unsigned caps;
     const nl_method_option *options;
