@@ -32,6 +32,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* Capabilities (nl_method_type.caps). */
 enum {
     NL_METHOD_MODEL = 1u << 0,         /* needs a model (--acf or --spectrum) unless a model-replacing option is given */
@@ -196,5 +200,9 @@ int nl_method_describe(const nl_method_plan *p, char *buf, size_t size);
 const nl_method_type *nl_method_plan_type(const nl_method_plan *p);
 void *nl_method_plan_impl(const nl_method_plan *p);
 void nl_method_plan_free(nl_method_plan *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
