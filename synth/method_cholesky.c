@@ -9,7 +9,7 @@
 
 static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_options *o, nl_method_plan **out)
 {
-    nl_method_plan *p = nl_method_plan_head(sizeof *p, &nl_method_cholesky, g, o);
+    nl_method_plan *p = nl_method_plan_head(sizeof *p, g, o);
     int st = p ? nl_synth_cholesky_plan_alloc(m, g->dim, g->n, g->h, (nl_synth_cholesky_plan **)&p->impl)
                : NL_ENOMEM;
     if (st)

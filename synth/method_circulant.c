@@ -11,7 +11,7 @@
 
 static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_options *o, nl_method_plan **out)
 {
-    nl_method_plan *p = nl_method_plan_head(sizeof *p, &nl_method_circulant, g, o);
+    nl_method_plan *p = nl_method_plan_head(sizeof *p, g, o);
     unsigned fl = o->flags & NL_METHOD_OPT_CLAMP ? NL_SYNTH_FFT_CLAMP : 0;
     int st = p ? nl_synth_circulant_plan_alloc(m, g->dim, g->n, g->h, fl, MAX_GROWTH,
                                                (nl_synth_circulant_plan **)&p->impl)

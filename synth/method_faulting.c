@@ -15,7 +15,7 @@ static const nl_method_option options[] = {
 static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_options *o, nl_method_plan **out)
 {
     (void)m;
-    *out = nl_method_plan_head(sizeof **out, &nl_method_faulting, g, o);
+    *out = nl_method_plan_head(sizeof **out, g, o);
     return *out ? NL_OK : NL_ENOMEM;
 }
 

@@ -19,10 +19,9 @@ double nl_method_opt_double(const nl_method_options *o, const char *name);
 const char *nl_method_opt_string(const nl_method_options *o, const char *name);
 int nl_method_opt_set(const nl_method_options *o, const char *name);
 
-/* A plan of `size` bytes (>= sizeof(nl_method_plan)) with its head filled;
- * NULL and NL_ENOMEM recorded when out of memory. */
-nl_method_plan *nl_method_plan_head(size_t size, const nl_method_type *t, const nl_method_grid *g,
-                                    const nl_method_options *o);
+/* A plan of `size` bytes (>= sizeof(nl_method_plan)) with its head filled
+ * (its method: o->type); NULL and NL_ENOMEM recorded when out of memory. */
+nl_method_plan *nl_method_plan_head(size_t size, const nl_method_grid *g, const nl_method_options *o);
 
 /* EINVAL unless g->dim is one of t's dimensions. */
 int nl_method_check_dim(const nl_method_type *t, const nl_method_grid *g);
@@ -31,9 +30,5 @@ int nl_method_check_dim(const nl_method_type *t, const nl_method_grid *g);
  * does not fit. */
 int nl_method_append(char *buf, size_t size, size_t *len, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
-
-/* The descriptors (synth/method_<name>.c). */
-extern const nl_method_type nl_method_fft, nl_method_subdiv, nl_method_midpoint, nl_method_circulant,
-    nl_method_cholesky, nl_method_faulting, nl_method_sparse, nl_method_lattice;
 
 #endif

@@ -56,7 +56,7 @@ static void plan_free(nl_method_plan *p)
 
 static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_options *o, nl_method_plan **out)
 {
-    lattice_plan *p = (lattice_plan *)nl_method_plan_head(sizeof *p, &nl_method_lattice, g, o);
+    lattice_plan *p = (lattice_plan *)nl_method_plan_head(sizeof *p, g, o);
     int st;
     *out = NULL;
     if (!p)

@@ -53,7 +53,7 @@ static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_opti
         nl_subdiv_plan_info(mp.plan, &info);
         mp.levels = info.levels;
     }
-    if (!(p = (midpoint_plan *)nl_method_plan_head(sizeof *p, &nl_method_midpoint, g, o))) {
+    if (!(p = (midpoint_plan *)nl_method_plan_head(sizeof *p, g, o))) {
         nl_subdiv_plan_free(mp.plan);
         return NL_ENOMEM;
     }

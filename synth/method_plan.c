@@ -8,15 +8,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-nl_method_plan *nl_method_plan_head(size_t size, const nl_method_type *t, const nl_method_grid *g,
-                                    const nl_method_options *o)
+nl_method_plan *nl_method_plan_head(size_t size, const nl_method_grid *g, const nl_method_options *o)
 {
     nl_method_plan *p = calloc(1, size);
     if (!p) {
-        NL_ERROR(NL_ENOMEM, "out of memory for a %s plan", t->name);
+        NL_ERROR(NL_ENOMEM, "out of memory for a %s plan", o->type->name);
         return NULL;
     }
-    p->type = t;
+    p->type = o->type;
     p->grid = *g;
     p->opt = *o;
     return p;

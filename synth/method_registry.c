@@ -4,11 +4,22 @@
 #include <stdio.h>
 #include <string.h>
 
-/* Every method, in the order help and messages list them. */
-static const nl_method_type *const methods[] = {
-    &nl_method_fft,      &nl_method_subdiv,   &nl_method_midpoint, &nl_method_circulant,
-    &nl_method_cholesky, &nl_method_faulting, &nl_method_sparse,   &nl_method_lattice,
-};
+/* Every method, in the order help and messages list them: X(name) for the
+ * descriptor nl_method_<name> of synth/method_<name>.c, one line each. */
+#define METHODS(X) \
+    X(fft)         \
+    X(subdiv)      \
+    X(midpoint)    \
+    X(circulant)   \
+    X(cholesky)    \
+    X(faulting)    \
+    X(sparse)      \
+    X(lattice)
+
+#define DECLARE(name) extern const nl_method_type nl_method_##name;
+#define ENTRY(name) &nl_method_##name,
+METHODS(DECLARE)
+static const nl_method_type *const methods[] = {METHODS(ENTRY)};
 
 /* Names reserved for methods to come. */
 static const char *const planned[] = {"rank1"};

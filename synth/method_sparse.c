@@ -101,7 +101,7 @@ static void plan_free(nl_method_plan *p)
 
 static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_options *o, nl_method_plan **out)
 {
-    sparse_plan *sp = (sparse_plan *)nl_method_plan_head(sizeof *sp, &nl_method_sparse, g, o);
+    sparse_plan *sp = (sparse_plan *)nl_method_plan_head(sizeof *sp, g, o);
     int st;
     *out = NULL;
     if (!sp)

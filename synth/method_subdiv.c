@@ -91,7 +91,7 @@ static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_opti
         if (g->h[a] != g->h[0])
             return NL_ERROR(NL_EINVAL, "--spacing: subdivision needs the same spacing on every axis, got %g and %g",
                             g->h[0], g->h[a]);
-    if (!(sp = (subdiv_plan *)nl_method_plan_head(sizeof *sp, &nl_method_subdiv, g, mo)))
+    if (!(sp = (subdiv_plan *)nl_method_plan_head(sizeof *sp, g, mo)))
         return NL_ENOMEM;
     if ((st = seed_image(sp, g, &o)) ||
         (st = nl_subdiv_plan_alloc(m, g->dim, g->n, g->h[0], &o, (nl_subdiv_plan **)&sp->head.impl))) {
