@@ -38,7 +38,7 @@ extern "C" {
 
 /* Capabilities (nl_method_type.caps). */
 enum {
-    NL_METHOD_MODEL = 1u << 0,         /* needs a model (--acf or --spectrum) unless a model-replacing option is given */
+    NL_METHOD_MODEL = 1u << 0,         /* needs a model (--acf, --spectrum) unless a model-replacing option is given */
     NL_METHOD_NO_MODEL = 1u << 1,      /* takes no model at all */
     NL_METHOD_PERIODIC = 1u << 2,      /* the field is periodic (by default) */
     NL_METHOD_WINDOW = 1u << 3,        /* can make a window of an infinite field at an origin */

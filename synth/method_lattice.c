@@ -40,7 +40,8 @@ static int plan_perlin(const nl_model *m, const nl_method_grid *g, const nl_meth
 {
     unsigned fl = o->flags & NL_METHOD_OPT_CLAMP ? NL_SYNTH_LATTICE_CLAMP : 0;
     int st;
-    lp->cell0 = nl_method_opt_set(o, "cell") ? (double)nl_method_opt_int(o, "cell") : nl_synth_lattice_default_cell(g->n);
+    lp->cell0 = nl_method_opt_set(o, "cell") ? (double)nl_method_opt_int(o, "cell")
+                                             : nl_synth_lattice_default_cell(g->n);
     lp->octaves = nl_method_opt_set(o, "octaves") ? (int)nl_method_opt_int(o, "octaves")
                                                    : nl_synth_lattice_default_octaves(lp->cell0);
     if ((st = nl_synth_lattice_check_grid(m, g->dim, g->n, (fl & NL_SYNTH_LATTICE_CLAMP) != 0, &lp->grid_clamp_error)))

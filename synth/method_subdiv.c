@@ -83,7 +83,8 @@ static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_opti
     to_options(mo, &o);
     if (o.random_nb && o.displacements)
         return NL_ERROR(NL_EINVAL, "--displacements correlated: expected the standard neighbourhoods, got "
-                        "--random-neighborhoods %d (random neighbourhoods have no common error covariance)", o.random_nb);
+                        "--random-neighborhoods %d (random neighbourhoods have no common error covariance)",
+                        o.random_nb);
     if (o.taps && o.displacements != NL_SUBDIV_DISP_ERROR)
         return NL_ERROR(NL_EINVAL, "--taps %d: expected --displacements correlated (independent displacements have "
                         "no filter)", o.taps);
