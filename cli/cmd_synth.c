@@ -15,64 +15,17 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char help[] =
+/* The help: the usage, each method's paragraph (its descriptor's help, in
+ * the registry's order), then the common options. */
+static const char help_usage[] =
     "usage: noiselab synth METHOD (--acf SPEC | --spectrum SPEC) --size N[xM[xK]]\n"
     "                      [--seed S] [--spacing H[,H...]] [--clamp] [--preview P.png]\n"
     "                      [--json] [method options] -o OUT.exr|OUT.tsv|OUT.h5\n"
     "                      [--precision single|double]\n\n"
-    "METHOD\n"
-    "  fft       periodic Fourier synthesis: white noise filtered by the square root of\n"
-    "            the model's spectrum on the periodic grid; Gaussian, zero ensemble mean,\n"
-    "            variance R(0), covariance exactly the model's R sampled on the torus.\n"
-    "            The same seed and size give the same white noise for every model.\n"
-    "  subdiv    generalized stochastic subdivision (Lewis 1987), 1D or 2D:\n"
-    "            --levels L          levels of refinement (default: down to a coarse grid\n"
-    "                                of 8 samples, or 6 levels with --nonperiodic)\n"
-    "            --neighborhood N|auto  half-width of the neighbourhood (default 2: 4 or 4x4)\n"
-    "            --tol [variance:]E  auto: grow N until (7) improves by < E R(0) (1e-4), or is < E R(0)\n"
-    "            --nonperiodic       a window of an infinite, spatially consistent field\n"
-    "            --origin X[,Y]      the window's first sample, in output samples (default 0)\n"
-    "            --seed-image FILE   start from this image as the coarse level (kept exactly)\n"
-    "            --random-neighborhoods K  2D: K random quadrilateral neighbourhoods per\n"
-    "                                point class, one drawn per point (against diagonal bias)\n"
-    "            --displacements independent|correlated  independent: Lewis's, each new\n"
-    "                                point displaced on its own (eq. 7); correlated: the new\n"
-    "                                points of a level displaced together, with the covariance\n"
-    "                                of their estimation errors, by a filter of white noise\n"
-    "                                (default independent)\n"
-    "            --taps M            correlated: the filter's half-width in cells (default 4 in\n"
-    "                                1D, 2 in 2D; at most 16)\n"
-    "  circulant exact stationary field on a NON-periodic grid by circulant embedding\n"
-    "            (Dietrich-Newsam, Wood-Chan): the embedding doubles until its eigenvalues\n"
-    "            are non-negative, up to 16x the size; the report gives the embedding and\n"
-    "            the smallest eigenvalue\n"
-    "  cholesky  direct simulation by the Cholesky factor of the covariance matrix; exact,\n"
-    "            O(N^3), at most 8192 samples: the ground truth for small grids\n"
-    "  faulting  Poisson faulting (Mandelbrot): random steps in 1D, random lines in 2D;\n"
-    "            --density D faults per sample (1D) or lines per (nx + ny) (2D); no model:\n"
-    "            the spectrum is f^-2 (1D), k^-3 radially (2D)\n"
-    "  sparse    sparse convolution (Lewis GI '86): Poisson impulses in cells, convolved with\n"
-    "            a kernel: the model's (R = h * h), --kernel EXPR in x, y (t, r), or --exemplar\n"
-    "            FILE (Hann-windowed, for texture resynthesis); --density D impulses per\n"
-    "            cell (default 1), --cell C and --radius R in samples, --wrap for a periodic\n"
-    "            tile, --origin X[,Y] for a window of the infinite field, --angle EXPR in\n"
-    "            x, y rotating the kernel with position; the report predicts the excess\n"
-    "            kurtosis 3 sum h^4 / (lambda (sum h^2)^2); a kernel losing more than 1e-3\n"
-    "            of its energy at the radius is flagged truncated=FRACTION\n"
-    "  lattice   interpolated noise lattice (Perlin gradient noise) summed over octaves,\n"
-    "            weighted to the target spectrum's power in each octave's band; --cell C\n"
-    "            largest lattice cell (default size/4), --octaves O (default: down to cell\n"
-    "            2); the report gives each octave's weight and its low-frequency leakage;\n"
-    "            --interpolant wiener: one lattice of the target's own covariance (FFT on\n"
-    "            the lattice), every sample its simple-kriging (Wiener) estimate from the\n"
-    "            4 (1D) or 4x4 nearest nodes; --cell C the node spacing (default 4)\n"
-    "  midpoint  midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
-    "            only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
-    "            (1D), --levels L, --variance-scale Q multiplies the variance of each level\n"
-    "            by an extra Q (Haruyama-Barsky-style altered variances); --interpolant\n"
-    "            miller: Miller's square-square subdivision (each level a new grid of\n"
-    "            half the spacing, weights 9/16 3/16 3/16 1/16 of the parent square;\n"
-    "            1D 3/4 1/4) instead of the nearest-neighbour midpoint (fournier)\n\n"
+    "METHOD\n";
+
+static const char help[] =
+    "\n"
     "  --acf SPEC       autocorrelation model (see noiselab models)\n"
     "  --spectrum SPEC  spectrum model: power:d=..., spectrum:EXPR, or a bare EXPR in f/fx/fy/k\n"
     "  --size           samples per axis, each >= 2 (fft: 1D, 2D or 3D; subdiv: 1D or 2D)\n"
@@ -104,14 +57,63 @@ static const char help[] =
     "subdiv and sparse run distributed, each process holding 1/P of the field\n"
     "(docs/scale-out.md).\n";
 
+/* Every method's options, each name once (the registry's rows, in its
+ * order), with getopt codes CLI_MOPT + k. */
+#define CLI_MOPT 1000
+#define CLI_MAX_MOPTS 64
+
+typedef struct {
+    const nl_method_option *row; /* the first method's row of this name */
+    const nl_method_type *type;  /* that method */
+    int late;                    /* methods disagree on its values: checked once the method is known */
+} cli_mopt;
+
 /* What the command line gave, beyond the job itself. */
 typedef struct {
     const char *acf, *spec, *size, *spacing, *out, *preview, *origin, *from; /* option values or NULL */
     const char *precision;                           /* --precision single|double (.h5 outputs) */
     int json;                                        /* --json */
-    int given_L, given_N, given_tol, given_vs, given_density, given_disp; /* explicitly given */
+    const char *mtext[CLI_MAX_MOPTS];                /* method options' values (flags: "") */
+    int mgiven[CLI_MAX_MOPTS];                       /* given explicitly (or recorded for another method) */
     cli_synth_cond cond;                             /* --condition and its options */
 } cli_synth_args;
+
+static cli_mopt mopts[CLI_MAX_MOPTS];
+static int nmopts;
+
+static int same_values(const nl_method_option *a, const nl_method_option *b)
+{
+    return a->type == b->type && a->flags == b->flags && a->min == b->min && a->max == b->max &&
+           !a->words == !b->words && (!a->words || !strcmp(a->words, b->words)) && !a->expect == !b->expect &&
+           (!a->expect || !strcmp(a->expect, b->expect));
+}
+
+/* The union of the methods' option tables (once). */
+static void collect_mopts(void)
+{
+    static int done;
+    for (int i = 0; i < nl_method_count() && !done; i++) {
+        const nl_method_type *t = nl_method_at(i);
+        for (int k = 0; k < t->noptions; k++) {
+            int j = 0;
+            while (j < nmopts && strcmp(mopts[j].row->name, t->options[k].name))
+                j++;
+            if (j < nmopts)
+                mopts[j].late |= !same_values(mopts[j].row, &t->options[k]);
+            else if (j < CLI_MAX_MOPTS)
+                mopts[nmopts++] = (cli_mopt){&t->options[k], t, 0};
+        }
+    }
+    done = 1;
+}
+
+static int mopt_index(const char *name)
+{
+    for (int j = 0; j < nmopts; j++)
+        if (!strcmp(mopts[j].row->name, name))
+            return j;
+    return -1;
+}
 
 /* Window origins stay within +-2^30 samples: the 2D generators index
  * lattice points by 32-bit coordinates, and origin + size + reach must not
@@ -145,74 +147,51 @@ static void parse_origin(const char *s, long *o)
     check_origin("--origin", s, o);
 }
 
-/* An integer option in min..max, checked before it is narrowed to int. */
-static int parse_int(const char *opt, const char *s, int min, int max)
+/* Option `name` of the job's method from text, or exit 2 naming label. */
+static void set_option(cli_synth_job *job, const char *name, const char *v, const char *label)
 {
-    return cli_synth_parse_int(opt, s, min, max);
+    cli_check(nl_method_options_set(&job->opts, name, v, label));
 }
 
-static int parse_displacements(const char *opt, const char *s)
+/* One recorded key: the method's option, the window origin, or (a key of
+ * another method's) marked given for the checks; others are ignored. */
+static void apply_key(char *kv, int suffix, cli_synth_job *job, cli_synth_args *g)
 {
-    if (!strcmp(s, "independent"))
-        return NL_SUBDIV_DISP_INDEPENDENT;
-    if (!strcmp(s, "correlated"))
-        return NL_SUBDIV_DISP_ERROR;
-    cli_die(2, "%s: expected independent or correlated, got \"%s\"", opt, s);
-    return 0;
+    char label[96], *eq = strchr(kv, '=');
+    const char *v = eq ? eq + 1 : "";
+    int k, j;
+    if (eq)
+        *eq = 0;
+    if (!suffix && !strcmp(kv, "origin")) {
+        errno = 0;
+        if (sscanf(v, "%ld:%ld", &job->origin[0], &job->origin[1]) != 2 || errno == ERANGE)
+            job->origin[0] = LONG_MAX;
+        check_origin("--from: origin", v, job->origin);
+        return;
+    }
+    k = nl_method_option_index(job->type, kv);
+    if (k >= 0 && !(job->type->options[k].flags & NL_METHOD_SUFFIX) == !suffix) {
+        snprintf(label, sizeof label, "--from: %s", kv);
+        set_option(job, kv, job->type->options[k].type == NL_METHOD_FLAG ? NULL : v, label);
+    } else if (k < 0 && !suffix && (j = mopt_index(kv)) >= 0) {
+        g->mgiven[j] = 1;
+    }
 }
 
 /* The method's recorded options: "k=v,...|k=v|..." (what follows "name:"
- * in the method string written by the methods). */
-static void apply_keys(char *rest, cli_synth_job *job)
+ * in the method string its describe wrote). */
+static void apply_keys(char *rest, cli_synth_job *job, cli_synth_args *g)
 {
     char *part, *save = NULL;
     for (part = strtok_r(rest, "|", &save); part; part = strtok_r(NULL, "|", &save)) {
         if (part != rest) {  /* an expression-valued key: the rest of the part */
-            char *eq = strchr(part, '=');
-            if (!eq)
-                continue;
-            *eq = 0;
-            if (!strcmp(part, "kernel")) job->kernel = eq + 1;
-            else if (!strcmp(part, "exemplar")) job->exemplar = eq + 1;
-            else if (!strcmp(part, "angle")) job->angle = eq + 1;
-            else if (!strcmp(part, "seed-image")) job->seed_image = eq + 1;
+            if (strchr(part, '='))
+                apply_key(part, 1, job, g);
             continue;
         }
         char *kv, *s2 = NULL;
-        for (kv = strtok_r(part, ",", &s2); kv; kv = strtok_r(NULL, ",", &s2)) {
-            char *eq = strchr(kv, '=');
-            const char *v = eq ? eq + 1 : "";
-            if (eq)
-                *eq = 0;
-            if (!strcmp(kv, "levels")) job->levels = parse_int("--from: levels", v, 0, 40);
-            else if (!strcmp(kv, "neighborhood"))
-                job->N = strcmp(v, "auto") ? parse_int("--from: neighborhood", v, 1, INT_MAX) : 0;
-            else if (!strcmp(kv, "tol")) job->tol = cli_synth_parse_tol("--from: tol", v, &job->stop);
-            else if (!strcmp(kv, "nonperiodic")) job->nonperiodic = 1;
-            else if (!strcmp(kv, "origin")) {
-                errno = 0;
-                if (sscanf(v, "%ld:%ld", &job->origin[0], &job->origin[1]) != 2 || errno == ERANGE)
-                    job->origin[0] = LONG_MAX;
-                check_origin("--from: origin", v, job->origin);
-            }
-            else if (!strcmp(kv, "random-neighborhoods"))
-                job->random_nb = parse_int("--from: random-neighborhoods", v, 1, 256);
-            else if (!strcmp(kv, "displacements"))
-                job->displacements = parse_displacements("--from: displacements", v);
-            else if (!strcmp(kv, "taps")) job->taps = parse_int("--from: taps", v, 1, NL_SUBDIV_MAX_TAPS);
-            else if (!strcmp(kv, "H")) job->H = cli_parse_double("--from: H", v);
-            else if (!strcmp(kv, "variance-scale"))
-                job->vscale = cli_parse_positive("--from: variance-scale", v, "factor");
-            else if (!strcmp(kv, "density")) job->density = cli_parse_positive("--from: density", v, "number");
-            else if (!strcmp(kv, "radius")) job->radius = parse_int("--from: radius", v, 1, 4096);
-            else if (!strcmp(kv, "cell")) {
-                job->cell0 = cli_parse_positive("--from: cell", v, "number");
-                job->cell = job->cell0 < INT_MAX ? (int)job->cell0 : INT_MAX;
-            }
-            else if (!strcmp(kv, "wrap")) job->wrap = 1;
-            else if (!strcmp(kv, "octaves")) job->octaves = parse_int("--from: octaves", v, 1, 16);
-            else if (!strcmp(kv, "interpolant")) job->interpolant = v;
-        }
+        for (kv = strtok_r(part, ",", &s2); kv; kv = strtok_r(NULL, ",", &s2))
+            apply_key(kv, 0, job, g);
     }
 }
 
@@ -248,105 +227,90 @@ static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
     }
     if (strstr(meta.flags, "clamped") || strstr(meta.flags, "not-positive-definite"))
         job->clamp = 1;
-    if (rest)
-        apply_keys(rest, job);
+    if ((job->type = nl_method_find(methbuf)))
+        nl_method_options_default(job->type, &job->opts);
+    if (rest && job->type)
+        apply_keys(rest, job, g);
 }
 
-/* Options that only some methods take. */
-static void only_for(const char *opt, int given, const char *method, const char *allowed)
+/* Options that only some methods take: those with caps, or taking opt. */
+static void only_for(const char *opt, int given, const cli_synth_job *job, unsigned caps, const char *name)
 {
-    char list[64];
-    snprintf(list, sizeof list, " %s ", allowed);
-    char word[32];
-    snprintf(word, sizeof word, " %s ", method);
-    if (given && !strstr(list, word))
-        cli_die(2, "synth %s: %s applies to %s only", method, opt, allowed);
+    char list[256];
+    if (!given || (caps ? (job->type->caps & caps) == caps : nl_method_option_index(job->type, name) >= 0))
+        return;
+    nl_method_names(caps, name, " ", " ", list, sizeof list);
+    cli_die(2, "synth %s: %s applies to %s only", job->method, opt, list);
 }
 
 static void job_defaults(cli_synth_job *job)
 {
     memset(job, 0, sizeof *job);
     job->seed = 1;
-    job->N = -1;
-    job->tol = 1e-4;
-    job->H = NAN;
-    job->vscale = 1;
-    job->density = 1;
     for (int a = 0; a < 3; a++)
         job->n[a] = 1, job->h[a] = 1;
 }
 
-/* The options with a numeric range of their own. */
-static void parse_numeric(int c, cli_synth_job *job, cli_synth_args *g)
+/* A method option on the command line: its value kept, and checked now
+ * unless the methods taking it disagree on its values. */
+static void method_option(int j, const char *arg, cli_synth_args *g)
 {
-    switch (c) {
-    case 'L':
-        job->levels = parse_int("--levels", optarg, 1, 30);
-        g->given_L = 1;
-        break;
-    case 'N':
-        job->N = cli_synth_parse_neighborhood(optarg);
-        g->given_N = 1;
-        break;
-    case 't':
-        job->tol = cli_synth_parse_tol("--tol", optarg, &job->stop);
-        g->given_tol = 1;
-        break;
-    case 'R':
-        job->random_nb = parse_int("--random-neighborhoods", optarg, 1, 256);
-        break;
-    case 'X':
-        job->displacements = parse_displacements("--displacements", optarg);
-        g->given_disp = 1;
-        break;
-    case 'T':
-        job->taps = parse_int("--taps", optarg, 1, NL_SUBDIV_MAX_TAPS);
-        break;
-    case 'u':
-        job->H = cli_parse_double("--H", optarg);
-        if (!(job->H > 0 && job->H < 1))
-            cli_die(2, "--H: expected a Hurst exponent between 0 and 1, got \"%s\"", optarg);
-        break;
-    case 'v':
-        job->vscale = cli_parse_positive("--variance-scale", optarg, "factor");
-        g->given_vs = 1;
-        break;
-    case 'D':
-        job->density = cli_parse_positive("--density", optarg, "number");
-        g->given_density = 1;
-        break;
-    case 'V':
-        job->octaves = parse_int("--octaves", optarg, 1, 16);
-        break;
-    }
+    char label[96];
+    nl_method_options o;
+    g->mtext[j] = mopts[j].row->type == NL_METHOD_FLAG ? NULL : arg;
+    g->mgiven[j] = 1;
+    if (mopts[j].late)
+        return;
+    snprintf(label, sizeof label, "--%s", mopts[j].row->name);
+    nl_method_options_default(mopts[j].type, &o);
+    cli_check(nl_method_options_set(&o, mopts[j].row->name, g->mtext[j], label));
 }
 
-/* getopt over argv into job and g; returns 1 when --help was printed. */
-static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
+/* The common options, then every method's (CLI_MOPT + k). */
+static const struct option *options_table(void)
 {
-    static const struct option opts[] = {
+    static const struct option common[] = {
         {"acf", required_argument, 0, 'a'},        {"spectrum", required_argument, 0, 'S'},
         {"size", required_argument, 0, 'n'},       {"seed", required_argument, 0, 's'},
         {"spacing", required_argument, 0, 'H'},    {"clamp", no_argument, 0, 'c'},
         {"preview", required_argument, 0, 'p'},    {"json", no_argument, 0, 'j'},
         {"output", required_argument, 0, 'o'},     {"help", no_argument, 0, 'h'},
-        {"levels", required_argument, 0, 'L'},     {"neighborhood", required_argument, 0, 'N'},
-        {"tol", required_argument, 0, 't'},        {"nonperiodic", no_argument, 0, 'P'},
-        {"origin", required_argument, 0, 'O'},     {"seed-image", required_argument, 0, 'I'},
-        {"H", required_argument, 0, 'u'},          {"variance-scale", required_argument, 0, 'v'},
-        {"random-neighborhoods", required_argument, 0, 'R'}, {"density", required_argument, 0, 'D'},
-        {"kernel", required_argument, 0, 'K'},     {"exemplar", required_argument, 0, 'E'},
-        {"angle", required_argument, 0, 'A'},      {"radius", required_argument, 0, 'r'},
-        {"cell", required_argument, 0, 'C'},       {"wrap", no_argument, 0, 'W'},
-        {"from", required_argument, 0, 'F'},
-        {"octaves", required_argument, 0, 'V'},    {"interpolant", required_argument, 0, 'i'},
-        {"displacements", required_argument, 0, 'X'}, {"taps", required_argument, 0, 'T'},
+        {"origin", required_argument, 0, 'O'},     {"from", required_argument, 0, 'F'},
         {"condition", required_argument, 0, 'Y'}, {"extent", required_argument, 0, 'Z'},
         {"realizations", required_argument, 0, 'k'}, {"mean", required_argument, 0, 'M'},
         {"interpolation", required_argument, 0, 'Q'}, {"ensemble-mean", required_argument, 0, 'g'},
         {"ensemble-variance", required_argument, 0, 'J'}, {"nmax", required_argument, 0, 'q'},
-        {"precision", required_argument, 0, 'G'},
-        {0}};
+        {"precision", required_argument, 0, 'G'}};
+    static struct option opts[sizeof common / sizeof *common + CLI_MAX_MOPTS + 1];
+    size_t n = sizeof common / sizeof *common;
+    collect_mopts();
+    memcpy(opts, common, sizeof common);
+    for (int j = 0; j < nmopts; j++)
+        opts[n + (size_t)j] = (struct option){mopts[j].row->name,
+                                              mopts[j].row->type == NL_METHOD_FLAG ? no_argument : required_argument,
+                                              0, CLI_MOPT + j};
+    return opts;
+}
+
+static void print_help(void)
+{
+    fputs(help_usage, stdout);
+    for (int i = 0; i < nl_method_count(); i++) {
+        const char *p = nl_method_at(i)->help;
+        printf("  %-10s", nl_method_at(i)->name);
+        while (*p) {
+            size_t l = strcspn(p, "\n");
+            printf("%s%.*s\n", p == nl_method_at(i)->help ? "" : "            ", (int)l, p);
+            p += l + (p[l] == '\n');
+        }
+    }
+    fputs(help, stdout);
+}
+
+/* getopt over argv into job and g; returns 1 when --help was printed. */
+static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
+{
+    const struct option *opts = options_table();
     int c;
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "synth")) != -1) {
         switch (c) {
@@ -359,24 +323,15 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'p': g->preview = optarg; break;
         case 'j': g->json = 1; break;
         case 'o': g->out = optarg; break;
-        case 'L': case 'N': case 't': case 'R': case 'u': case 'v': case 'D': case 'V': case 'X': case 'T':
-            parse_numeric(c, job, g);
-            break;
-        case 'P': job->nonperiodic = 1; break;
         case 'O': g->origin = optarg; break;
-        case 'I': job->seed_image = optarg; break;
-        case 'K': job->kernel = optarg; break;
-        case 'E': job->exemplar = optarg; break;
-        case 'A': job->angle = optarg; break;
-        case 'r': job->radius = parse_int("--radius", optarg, 1, 4096); break;
-        case 'C': job->cell = parse_int("--cell", optarg, 1, INT_MAX); break;
-        case 'W': job->wrap = 1; break;
-        case 'i': job->interpolant = optarg; break;
         case 'F': g->from = optarg; break;
         case 'G': g->precision = optarg; break;
         case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q':
             cli_synth_cond_option(&g->cond, c, optarg); break;
-        case 'h': fputs(help, stdout); return 1;
+        case 'h': print_help(); return 1;
+        default:
+            if (c >= CLI_MOPT && c < CLI_MOPT + nmopts)
+                method_option(c - CLI_MOPT, optarg, g);
         }
     }
     return 0;
@@ -386,104 +341,99 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
 static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
 {
     if (g->from) {
-        if (optind < argc || g->acf || g->spec || g->size || g->spacing || g->given_L || g->given_N ||
-            g->given_tol || g->given_vs || g->given_density || g->origin || job->nonperiodic || job->kernel ||
-            job->exemplar || job->angle || job->radius || job->cell || job->wrap || job->octaves ||
-            job->seed_image || job->random_nb || !isnan(job->H) || g->given_disp || job->taps || job->interpolant)
+        int given = 0;
+        for (int j = 0; j < nmopts; j++)
+            given |= g->mgiven[j];
+        if (optind < argc || g->acf || g->spec || g->size || g->spacing || g->origin || given)
             cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
                     "and --json");
         apply_from(g->from, job, g);
         job->from = 1;
-        g->given_L = job->levels != 0;
-        g->given_density = strcmp(job->method, "faulting") == 0 || strcmp(job->method, "sparse") == 0;
-        g->given_N = strcmp(job->method, "subdiv") == 0;
-        g->given_tol = g->given_N;
-        g->given_vs = strcmp(job->method, "midpoint") == 0;
-        if (job->nonperiodic && (job->origin[0] || job->origin[1]))
-            g->origin = "recorded";
         return;
     }
-    if (optind >= argc)
-        cli_die(2, "synth: expected a METHOD (fft, subdiv, midpoint, circulant, cholesky, faulting, sparse or lattice), "
-                "see noiselab synth --help");
+    if (optind >= argc) {
+        char list[256];
+        nl_method_names(0, NULL, ", ", " or ", list, sizeof list);
+        cli_die(2, "synth: expected a METHOD (%s), see noiselab synth --help", list);
+    }
     job->method = argv[optind];
     if (optind + 1 < argc)
         cli_die(2, "synth: unexpected argument \"%s\"", argv[optind + 1]);
 }
 
 
-static cli_synth_run_fn find_method(const char *method)
+static const nl_method_type *find_method(const char *method)
 {
-    static const struct {
-        const char *name;
-        cli_synth_run_fn run;
-    } methods[] = {{"fft", cli_synth_fft_run},         {"subdiv", cli_synth_subdiv_run},
-                   {"midpoint", cli_synth_midpoint_run}, {"circulant", cli_synth_circulant_run},
-                   {"cholesky", cli_synth_cholesky_run}, {"faulting", cli_synth_faulting_run},
-                   {"sparse", cli_synth_sparse_run}, {"lattice", cli_synth_lattice_run}};
-    static const char *const planned[] = {"rank1"};
-    for (size_t i = 0; i < sizeof methods / sizeof *methods; i++)
-        if (strcmp(method, methods[i].name) == 0)
-            return methods[i].run;
-    for (size_t i = 0; i < sizeof planned / sizeof *planned; i++)
-        if (strcmp(method, planned[i]) == 0)
-            cli_die(2, "synth: method \"%s\" is not available in this version (available: fft, subdiv, "
-                    "midpoint, circulant, cholesky, faulting, sparse, lattice)", method);
-    cli_die(2, "synth: unknown method \"%s\" (expected fft, subdiv, midpoint, circulant, cholesky, faulting, "
-            "sparse or lattice)",
-            method);
+    const nl_method_type *t = nl_method_find(method);
+    char list[256];
+    if (t)
+        return t;
+    if (nl_method_planned(method)) {
+        nl_method_names(0, NULL, ", ", ", ", list, sizeof list);
+        cli_die(2, "synth: method \"%s\" is not available in this version (available: %s)", method, list);
+    }
+    nl_method_names(0, NULL, ", ", " or ", list, sizeof list);
+    cli_die(2, "synth: unknown method \"%s\" (expected %s)", method, list);
     return NULL;
 }
 
-/* Each method-specific option against the method it was given with. */
-static void check_method_options(const cli_synth_job *job, const cli_synth_args *g)
+/* --origin against the options that make a window (needed) or unmake it
+ * (excluded). */
+static void check_window(const cli_synth_job *job, const cli_synth_args *g)
 {
-    only_for("--levels", g->given_L, job->method, "subdiv midpoint");
-    only_for("--neighborhood", g->given_N, job->method, "subdiv");
-    only_for("--tol", g->given_tol, job->method, "subdiv");
-    only_for("--nonperiodic", job->nonperiodic, job->method, "subdiv");
-    only_for("--origin", g->origin != NULL, job->method, "subdiv sparse");
-    only_for("--kernel", job->kernel != NULL, job->method, "sparse");
-    only_for("--exemplar", job->exemplar != NULL, job->method, "sparse");
-    only_for("--angle", job->angle != NULL, job->method, "sparse");
-    only_for("--radius", job->radius != 0, job->method, "sparse");
-    only_for("--cell", job->cell != 0, job->method, "sparse lattice");
-    only_for("--octaves", job->octaves != 0, job->method, "lattice");
-    only_for("--interpolant", job->interpolant != NULL, job->method, "midpoint lattice");
-    only_for("--wrap", job->wrap, job->method, "sparse");
-    only_for("--seed-image", job->seed_image != NULL, job->method, "subdiv");
-    only_for("--random-neighborhoods", job->random_nb != 0, job->method, "subdiv");
-    only_for("--displacements", g->given_disp, job->method, "subdiv");
-    only_for("--taps", job->taps != 0, job->method, "subdiv");
-    if (job->random_nb && job->displacements)
-        cli_die(2, "--displacements correlated: expected the standard neighbourhoods, got --random-neighborhoods %d "
-                "(random neighbourhoods have no common error covariance)", job->random_nb);
-    if (job->taps && job->displacements != NL_SUBDIV_DISP_ERROR)
-        cli_die(2, "--taps %d: expected --displacements correlated (independent displacements have no filter)",
-                job->taps);
-    only_for("--H", !isnan(job->H), job->method, "midpoint");
-    only_for("--variance-scale", g->given_vs, job->method, "midpoint");
-    only_for("--density", g->given_density, job->method, "faulting sparse");
-    if (g->origin && job->wrap)
-        cli_die(2, "synth sparse: --origin \"%s\" and --wrap exclude each other (a periodic tile has no origin)",
-                g->origin);
-    if (g->origin && !job->nonperiodic && strcmp(job->method, "subdiv") == 0)
-        cli_die(2, "synth subdiv: --origin needs --nonperiodic (a periodic field has no origin)");
+    const nl_method_type *t = job->type;
+    for (int k = 0; k < t->noptions && g->origin; k++) {
+        int given = nl_method_options_given(&job->opts, t->options[k].name);
+        if ((t->options[k].flags & NL_METHOD_NO_WINDOW) && given)
+            cli_die(2, "synth %s: --origin \"%s\" and --%s exclude each other (a periodic tile has no origin)",
+                    job->method, g->origin, t->options[k].name);
+        if ((t->options[k].flags & NL_METHOD_MAKES_WINDOW) && !given)
+            cli_die(2, "synth %s: --origin needs --%s (a periodic field has no origin)", job->method,
+                    t->options[k].name);
+    }
 }
 
-/* Which methods need a model, and whether exactly one was given. */
+/* Each method option against the method it was given with, then their
+ * values into the job's options. */
+static void check_method_options(cli_synth_job *job, const cli_synth_args *g)
+{
+    char label[96];
+    for (int j = 0; j < nmopts; j++) {
+        snprintf(label, sizeof label, "--%s", mopts[j].row->name);
+        only_for(label, g->mgiven[j], job, 0, mopts[j].row->name);
+    }
+    only_for("--origin", g->origin != NULL, job, NL_METHOD_WINDOW, NULL);
+    if (!g->from) {
+        nl_method_options_default(job->type, &job->opts);
+        for (int j = 0; j < nmopts; j++)
+            if (g->mgiven[j]) {
+                snprintf(label, sizeof label, "--%s", mopts[j].row->name);
+                set_option(job, mopts[j].row->name, g->mtext[j], label);
+            }
+    }
+    check_window(job, g);
+    for (int k = 0; k < job->type->noptions; k++) {
+        unsigned fl = job->type->options[k].flags;
+        int set = nl_method_options_given(&job->opts, job->type->options[k].name);
+        job->nonperiodic |= (fl & NL_METHOD_MAKES_WINDOW) && set;
+        job->wrap |= (fl & NL_METHOD_NO_WINDOW) && set;
+    }
+    job->opts.flags = (job->clamp ? NL_METHOD_OPT_CLAMP : 0) | (job->from ? NL_METHOD_OPT_RECORDED : 0);
+}
+
+/* Whether the method needs a model, and whether exactly one was given. */
 static void check_model_given(const cli_synth_job *job, const cli_synth_args *g)
 {
-    if (strcmp(job->method, "midpoint") == 0 && !isnan(job->H) && (g->acf || g->spec))
-        cli_die(2, "synth midpoint: give either --H or a power-law model, not both");
-    int needs_model = !(strcmp(job->method, "midpoint") == 0 && !isnan(job->H)) && strcmp(job->method, "faulting") &&
-                      !(strcmp(job->method, "sparse") == 0 && (job->kernel || job->exemplar));
-    if (!needs_model && (g->acf || g->spec) && strcmp(job->method, "faulting") == 0)
-        cli_die(2, "synth faulting: takes no model (its spectrum is f^-2); got --acf/--spectrum");
-    if (needs_model && !g->acf == !g->spec) {
-        if (strcmp(job->method, "sparse") == 0)
-            cli_die(2, "synth sparse: expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or "
-                    "--exemplar FILE");
+    const nl_method_type *t = job->type;
+    int alt = 0, model = g->acf || g->spec;
+    for (int k = 0; k < t->noptions; k++)
+        alt |= (t->options[k].flags & NL_METHOD_REPLACES_MODEL) &&
+               nl_method_options_given(&job->opts, t->options[k].name);
+    if (model && t->model_conflict && (alt || (t->caps & NL_METHOD_NO_MODEL)))
+        cli_die(2, "synth %s: %s", job->method, t->model_conflict);
+    if ((t->caps & NL_METHOD_MODEL) && !alt && !g->acf == !g->spec) {
+        if (t->model_missing)
+            cli_die(2, "synth %s: %s", job->method, t->model_missing);
         cli_die(2, "synth: expected exactly one of --acf SPEC or --spectrum SPEC");
     }
 }
@@ -542,7 +492,7 @@ static void check_output(const cli_synth_job *job, const cli_synth_args *g, cons
 }
 
 /* Realization k: the method's field, conditioned when asked, written with its preview. */
-static void realization(cli_synth_job *job, cli_synth_args *g, cli_synth_run_fn run, nl_field *f,
+static void realization(cli_synth_job *job, cli_synth_args *g, nl_field *f,
                         cli_synth_result *res, size_t k, const char *const *tmps)
 {
     char obuf[4096], pbuf[4096];
@@ -553,7 +503,7 @@ static void realization(cli_synth_job *job, cli_synth_args *g, cli_synth_run_fn 
     int st;
     json_decref(res->report);
     memset(res, 0, sizeof *res);
-    run(job, f, res);
+    cli_synth_run(job, f, res);
     cli_synth_cond_apply(&g->cond, job, f, res, k);
     cli_synth_cond_accumulate(&g->cond, f, k);
     cli_synth_fill_meta(job, f, res, &meta);
@@ -575,7 +525,6 @@ int cli_cmd_synth(int argc, char **argv)
     cli_synth_job job;
     cli_synth_args g;
     cli_synth_result res;
-    cli_synth_run_fn run;
     nl_field *f;
 
     job_defaults(&job);
@@ -585,7 +534,7 @@ int cli_cmd_synth(int argc, char **argv)
     if (parse_options(argc, argv, &job, &g))
         return 0;
     method_source(argc, argv, &job, &g);
-    run = find_method(job.method);
+    job.type = find_method(job.method);
     check_method_options(&job, &g);
     if (g.origin && !g.from)
         parse_origin(g.origin, job.origin);
@@ -595,12 +544,12 @@ int cli_cmd_synth(int argc, char **argv)
         cli_die(2, "synth: --condition, --realizations and --preview run on one process; without mpirun, "
                 "or with an .exr output");
     if (cli_h5 && cli_h5->launched && cli_is_h5(g.out))
-        return cli_h5->synth(&job, g.out, run, g.json);
+        return cli_h5->synth(&job, g.out, cli_synth_run, g.json);
     if (cli_h5 && cli_h5->size > 1)
         cli_die(2, "-o: a run on %d processes writes one HDF5 file; expected OUT.h5, got \"%s\"", cli_h5->size,
                 g.out);
     if (cli_is_h5(g.out))
-        cli_h5->check_memory(&job, run);
+        cli_h5->check_memory(&job, cli_synth_run);
     cli_synth_cond_prepare(&g.cond, &job, g.from != NULL, g.spacing != NULL);
     const char **tmps = cli_malloc(2 * g.cond.K * sizeof *tmps);
     for (size_t k = 0; k < g.cond.K; k++) { /* every output can be written, before the work */
@@ -614,7 +563,7 @@ int cli_cmd_synth(int argc, char **argv)
     for (size_t k = 0; k < g.cond.K; k++) {
         cli_phase("synth", job.method);
         job.seed = seed0 + k;
-        realization(&job, &g, run, f, &res, k, tmps + 2 * k);
+        realization(&job, &g, f, &res, k, tmps + 2 * k);
     }
     free(tmps);
     cli_progress_done();

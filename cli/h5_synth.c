@@ -39,7 +39,7 @@ static size_t bytes_for(int P, const void *arg)
     size_t rest = 1, b = (job->n[job->dim - 1] + (size_t)P - 1) / (size_t)P;
     for (int a = 0; a + 1 < job->dim; a++)
         rest *= job->n[a];
-    if (!strcmp(job->method, "fft") || !strcmp(job->method, "circulant"))
+    if (!job->type->execute_slab)
         return nl_mpi_fft_bytes(job->dim, mm->m, P) + b * rest * sizeof(double);
     /* subdiv and sparse: the slab, plus about as much again for the finest
      * level's neighbours and the level below (an estimate) */
@@ -138,6 +138,15 @@ static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_
     cli_json_print(o);
 }
 
+/* Has the method an option that stands in for a model (a kernel)? */
+static int takes_other_kernel(const nl_method_type *t)
+{
+    for (int k = 0; k < t->noptions; k++)
+        if (t->options[k].flags & NL_METHOD_REPLACES_MODEL)
+            return 1;
+    return 0;
+}
+
 int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int json)
 {
     double t[3];
@@ -149,11 +158,10 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int 
     const char *tmp;
     MPI_Comm_size(MPI_COMM_WORLD, &P);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    if (strcmp(job->method, "fft") && strcmp(job->method, "circulant") && strcmp(job->method, "subdiv") &&
-        strcmp(job->method, "sparse"))
+    if (!(job->type->caps & NL_METHOD_DISTRIBUTED))
         cli_die(2, "synth %s: runs on one process; distributed: fft, circulant, subdiv, sparse (or run it without "
                 "mpirun)", job->method);
-    if (!job->m && strcmp(job->method, "sparse"))
+    if (!job->m && !takes_other_kernel(job->type))
         cli_die(2, "synth %s: expected --acf or --spectrum", job->method);
     check_memory_on(job, P);
     tmp = begin_output(out, rank);
@@ -161,7 +169,7 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int 
     MPI_Barrier(MPI_COMM_WORLD);
     t[0] = MPI_Wtime();
     job->slab = 1;
-    if (!strcmp(job->method, "fft") || !strcmp(job->method, "circulant")) {
+    if (!job->type->execute_slab) { /* through FFTW-MPI */
         f = run_fft(job, &res);
     } else {
         size_t n[3] = {job->n[0], job->n[1], job->n[2]};

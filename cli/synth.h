@@ -7,37 +7,21 @@
 #include "../analysis/condsim.h"
 #include "../core/model.h"
 #include "../synth/circulant.h"
+#include "../synth/method.h"
 
 typedef struct cli_synth_job {
-    const char *method;    /* fft, subdiv, midpoint */
+    const char *method;    /* the method's name (its descriptor: type) */
+    const nl_method_type *type; /* the method (synth/method.h) */
+    nl_method_options opts;/* its options (--levels, ..., or those --from read) */
     nl_model *m;           /* the model */
     int dim;               /* 1..3 */
     size_t n[3];           /* output size */
     double h[3];           /* output spacing */
     uint64_t seed;         /* --seed */
     int clamp;             /* --clamp */
-    int levels;            /* --levels, 0 = default */
-    int N;                 /* --neighborhood: -1 default, 0 auto */
-    double tol;            /* --tol for auto */
-    int stop;              /* --tol's rule: NL_SUBDIV_STOP_IMPROVEMENT (default) or _VARIANCE */
-    int nonperiodic;       /* --nonperiodic */
     long origin[2];        /* --origin, finest-grid indices */
-    const char *seed_image;/* --seed-image */
-    int random_nb;         /* --random-neighborhoods K, 0 = the standard block */
-    int displacements;     /* --displacements: NL_SUBDIV_DISP_INDEPENDENT or _ERROR (correlated) */
-    int taps;              /* --taps M, 0 = the default */
-    double H;              /* midpoint: Hurst exponent, NAN if unset */
-    double vscale;         /* midpoint: --variance-scale factor per level */
-    double density;        /* faulting, sparse: --density */
-    const char *kernel;    /* sparse: --kernel EXPR */
-    const char *exemplar;  /* sparse: --exemplar FILE */
-    const char *angle;     /* sparse: --angle EXPR */
-    int radius;            /* sparse: --radius, 0 = automatic */
-    int cell;              /* sparse: --cell, 0 = the radius */
-    int wrap;              /* sparse: --wrap */
-    int octaves;           /* lattice: --octaves, 0 = down to cell 2 */
-    double cell0;          /* lattice: --cell (largest cell), 0 = size / 4 */
-    const char *interpolant; /* midpoint: fournier|miller; lattice: perlin|wiener; NULL = the first */
+    int nonperiodic;       /* a window made by an option (subdiv --nonperiodic), for the provenance */
+    int wrap;              /* a window unmade by an option (sparse --wrap), for the provenance */
     int from;              /* the options come from a field's provenance (--from) */
     int slab;              /* distributed: f holds rows s0 .. s0 + ns - 1 of the slowest axis */
     size_t s0, ns;         /* (cli/h5_synth.c; ns may be 0: plan, describe, do not execute) */
@@ -111,18 +95,13 @@ void cli_synth_cond_report(const cli_synth_cond *c, json_t *o);
 void cli_synth_cond_note(const cli_synth_cond *c);
 void cli_synth_cond_free(cli_synth_cond *c);
 
-/* Each exits through cli_die on bad input; returns only on success. */
-void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
+/* Any method through its descriptor (cli/synth_methods.c): plan, fill f
+ * (or, with job->slab, its slab), describe; the method's report when it
+ * has one.  Exits through cli_die on bad input; returns only on success. */
+void cli_synth_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
 /* What fft and circulant record of their plans (method, flags, report),
  * shared with the distributed runs (cli/h5_synth.c). */
 void cli_synth_fft_describe(const nl_synth_fft_info *info, cli_synth_result *r);
 void cli_synth_circulant_describe(const cli_synth_job *job, const nl_synth_circulant_info *info, cli_synth_result *r);
-void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
-void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
-void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
-void cli_synth_cholesky_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
-void cli_synth_faulting_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
-void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
-void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
 
 #endif

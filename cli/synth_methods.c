@@ -1,4 +1,7 @@
-/* The methods of `noiselab synth`: plan, synthesise, report. */
+/* The methods of `noiselab synth`: planned, synthesised and described
+ * through their descriptors (synth/method.h), then reported: flags, the
+ * preview's range and the --json object of the methods that report more
+ * than their method string. */
 #include "synth.h"
 #include "../core/autocorr.h"
 #include "../core/field_stats.h"
@@ -11,23 +14,13 @@
 #include "../synth/fft.h"
 #include "../synth/lattice.h"
 #include "../synth/midpoint.h"
+#include "../synth/method.h"
 #include "../synth/sparse.h"
 #include "../synth/subdiv.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-
-void cli_synth_fft_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
-{
-    nl_synth_fft_plan *p;
-    nl_synth_fft_info info;
-    cli_check(nl_synth_fft_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, &p));
-    nl_synth_fft_plan_info(p, &info);
-    cli_check(nl_synth_fft_execute(p, job->seed, f));
-    nl_synth_fft_plan_free(p);
-    cli_synth_fft_describe(&info, r);
-}
 
 void cli_synth_fft_describe(const nl_synth_fft_info *i, cli_synth_result *r)
 {
@@ -39,6 +32,25 @@ void cli_synth_fft_describe(const nl_synth_fft_info *i, cli_synth_result *r)
     r->report = json_pack("{s:f,s:f,s:f,s:I,s:f}", "variance", info.variance, "min_spectrum", info.min_lambda,
                           "max_spectrum", info.max_lambda, "clamped", (json_int_t)info.negatives, "clamp_error",
                           info.clamp_error);
+}
+
+void cli_synth_circulant_describe(const cli_synth_job *job, const nl_synth_circulant_info *i, cli_synth_result *r)
+{
+    const nl_synth_circulant_info info = *i;
+    snprintf(r->method, sizeof r->method, "circulant:embedding=%zux%zux%zu", info.m[0], info.m[1], info.m[2]);
+    int clamped = info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL, lost = fabs(info.variance_loss) > NL_SYNTH_CIRCULANT_LOSS_TOL;
+    snprintf(r->flags, sizeof r->flags, "%s%s%s", clamped ? "clamped" : "", clamped && lost ? "," : "",
+             lost ? "variance-changed" : "");
+    double zero[3] = {0, 0, 0};
+    r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
+    if (!(r->sd > 0))
+        r->sd = 1;
+    r->report = json_pack("{s:[I,I,I],s:f,s:f,s:f,s:i}", "embedding", (json_int_t)info.m[0], (json_int_t)info.m[1],
+                          (json_int_t)info.m[2], "min_eigenvalue", info.min_eigenvalue, "max_eigenvalue",
+                          info.max_eigenvalue, "clamp_error", info.clamp_error, "doublings", info.doublings);
+    /* the spectral models' loss to the embedding's frequency sampling (synth/circulant.h) */
+    if (lost)
+        json_object_set_new(r->report, "variance_loss", json_real(info.variance_loss));
 }
 
 static json_t *levels_report(const nl_subdiv_coeffs *c)
@@ -63,70 +75,38 @@ static json_t *levels_report(const nl_subdiv_coeffs *c)
     return a;
 }
 
-static nl_field *seed_image(const cli_synth_job *job)
+/* A method's report of its plan (impl: nl_method_plan_impl) and field. */
+typedef void report_fn(const cli_synth_job *job, void *impl, const nl_field *f, cli_synth_result *r);
+
+static void fft_report(const cli_synth_job *job, void *impl, const nl_field *f, cli_synth_result *r)
 {
-    nl_field *img;
-    int st = nl_field_read(job->seed_image, &img, NULL);
-    cli_check(st);
-    if (img->dim != job->dim)
-        cli_die(2, "--seed-image: %s is %dD, expected %dD like --size", job->seed_image, img->dim, job->dim);
-    return img;
+    nl_synth_fft_info info;
+    (void)job, (void)f;
+    nl_synth_fft_plan_info(impl, &info);
+    cli_synth_fft_describe(&info, r);
 }
 
-/* The plan for the job's options; the seed image, if any, in *img. */
-static nl_subdiv_plan *subdiv_plan(const cli_synth_job *job, nl_field **img)
+static void circulant_report(const cli_synth_job *job, void *impl, const nl_field *f, cli_synth_result *r)
 {
-    nl_subdiv_options o;
-    nl_subdiv_plan *p;
-    nl_subdiv_options_default(&o);
-    o.levels = job->levels;
-    o.N = job->N < 0 ? 2 : job->N;
-    o.tol = job->tol;
-    o.stop = job->stop;
-    o.nonperiodic = job->nonperiodic;
-    o.allow_not_pd = job->clamp;
-    o.random_nb = job->random_nb;
-    o.displacements = job->displacements;
-    o.taps = job->taps;
-    *img = NULL;
-    if (job->dim > 2)
-        cli_die(2, "synth subdiv: expected a 1D or 2D --size, got %dD", job->dim);
-    for (int a = 1; a < job->dim; a++)
-        if (job->h[a] != job->h[0])
-            cli_die(2, "--spacing: subdivision needs the same spacing on every axis, got %g and %g", job->h[0],
-                    job->h[a]);
-    if (job->seed_image) {
-        *img = seed_image(job);
-        cli_check(nl_subdiv_image_levels(job->dim, (*img)->n, job->n, job->levels, &o.levels));
-        o.image = !job->nonperiodic;
-    }
-    cli_check(nl_subdiv_plan_alloc(job->m, job->dim, job->n, job->h[0], &o, &p));
-    return p;
+    nl_synth_circulant_info info;
+    (void)f;
+    nl_synth_circulant_plan_info(impl, &info);
+    cli_synth_circulant_describe(job, &info, r);
 }
 
-static void subdiv_describe(const cli_synth_job *job, const nl_subdiv_plan *p, cli_synth_result *r)
+static void cholesky_report(const cli_synth_job *job, void *impl, const nl_field *f, cli_synth_result *r)
 {
-    const nl_subdiv_coeffs *c = nl_subdiv_plan_coeffs(p);
+    double zero[3] = {0, 0, 0};
+    (void)impl, (void)f;
+    r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
+}
+
+static void subdiv_report(const cli_synth_job *job, void *impl, const nl_field *f, cli_synth_result *r)
+{
+    const nl_subdiv_coeffs *c = nl_subdiv_plan_coeffs(impl);
     nl_subdiv_info info;
-    char nb[16] = "auto";
-    int N = job->N < 0 ? 2 : job->N;
-    size_t k;
-    nl_subdiv_plan_info(p, &info);
-    if (N)
-        snprintf(nb, sizeof nb, "%d", N);
-    k = (size_t)snprintf(r->method, sizeof r->method, "subdiv:levels=%d,neighborhood=%s,tol=%s%g%s%s",
-                         info.levels, nb, job->stop == NL_SUBDIV_STOP_VARIANCE ? "variance:" : "", job->tol,
-                         job->nonperiodic ? ",nonperiodic" : ",periodic", job->seed_image ? ",seed-image" : "");
-    if (job->random_nb)
-        k += (size_t)snprintf(r->method + k, sizeof r->method - k, ",random-neighborhoods=%d", job->random_nb);
-    if (c->level[0].filt)
-        k += (size_t)snprintf(r->method + k, sizeof r->method - k, ",displacements=correlated,taps=%d",
-                              c->level[0].taps);
-    if (job->nonperiodic)
-        k += (size_t)snprintf(r->method + k, sizeof r->method - k, ",origin=%ld:%ld", job->origin[0],
-                              job->origin[1]);
-    if (job->seed_image)
-        snprintf(r->method + k, sizeof r->method - k, "|seed-image=%s", job->seed_image);
+    (void)f;
+    nl_subdiv_plan_info(impl, &info);
     cli_subdiv_flags(c->flags, r->flags, sizeof r->flags);
     r->sd = sqrt(c->r0);
     r->report = json_pack("{s:f,s:f,s:o}", "spacing0", info.spacing0, "variance", c->r0, "levels",
@@ -135,137 +115,33 @@ static void subdiv_describe(const cli_synth_job *job, const nl_subdiv_plan *p, c
         json_object_set_new(r->report, "coarse_correlation", json_real(info.coarse_correlation));
 }
 
-/* The window origin of a slab: the job's origin moved s0 along the slowest axis. */
-static void slab_origin(const cli_synth_job *job, long *o)
+static void midpoint_report(const cli_synth_job *job, void *impl, const nl_field *f, cli_synth_result *r)
 {
-    o[0] = job->origin[0], o[1] = job->origin[1];
-    o[job->dim - 1] += (long)job->s0;
-}
-
-/* Distributed: this process's rows s0 .. s0 + ns - 1 (none when ns = 0),
- * the same bits as the whole field's; the status agreed by every process. */
-static int subdiv_slab(const cli_synth_job *job, const nl_subdiv_plan *p, const nl_field *img, nl_field *f)
-{
-    long o[2];
-    int st = NL_OK;
-    slab_origin(job, o);
-    if (!job->ns)
-        st = NL_OK;
-    else if (job->nonperiodic)
-        st = nl_subdiv_synth_window(nl_subdiv_plan_coeffs(p), job->seed, o, f);
-    else if (img)
-        st = nl_subdiv_plan_execute_image_slab(p, img, job->seed, job->s0, f);
-    else
-        st = nl_subdiv_plan_execute_slab(p, job->seed, job->s0, f);
-    return cli_h5->agree(st);
-}
-
-void cli_synth_subdiv_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
-{
-    nl_field *img;
-    nl_subdiv_plan *p = subdiv_plan(job, &img);
-    int st;
-    if (job->slab)
-        st = subdiv_slab(job, p, img, f);
-    else if (job->nonperiodic)
-        st = nl_subdiv_plan_execute_window(p, job->seed, job->origin, f);
-    else if (img)
-        st = nl_subdiv_plan_execute_image(p, img, job->seed, f);
-    else
-        st = nl_subdiv_plan_execute(p, job->seed, f);
-    cli_check(st);
-    subdiv_describe(job, p, r);
-    nl_field_free(img);
-    nl_subdiv_plan_free(p);
-}
-
-void cli_synth_midpoint_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
-{
-    nl_subdiv_plan *p;
+    const nl_midpoint_method_plan *mp = impl;
     nl_subdiv_info info;
-    double H = job->H;
-    int st;
-    if (job->dim > 2)
-        cli_die(2, "synth midpoint: expected a 1D or 2D --size, got %dD", job->dim);
-    if (isnan(H) && (st = nl_subdiv_midpoint_hurst(job->m, job->dim, &H)))
-        cli_die_status(st);
-    if (job->interpolant && strcmp(job->interpolant, "fournier")) {
-        if (strcmp(job->interpolant, "miller"))
-            cli_die(2, "--interpolant: expected fournier or miller for midpoint, got \"%s\"", job->interpolant);
-        int L = job->levels ? job->levels : nl_midpoint_miller_default_levels(job->dim, job->n);
-        cli_check(nl_midpoint_miller(L, H, 1.0, job->vscale, job->seed, f));
-        snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g,interpolant=miller",
-                 H, L, job->vscale);
+    (void)job;
+    if (mp->miller) {
         r->sd = nl_field_rms(f) > 0 ? nl_field_rms(f) : 1;
-        r->report = json_pack("{s:f,s:i,s:f,s:s}", "H", H, "levels", L, "variance_scale", job->vscale,
+        r->report = json_pack("{s:f,s:i,s:f,s:s}", "H", mp->H, "levels", mp->levels, "variance_scale", mp->vscale,
                               "interpolant", "miller");
         return;
     }
-    cli_check(nl_subdiv_plan_alloc_midpoint(job->dim, job->n, job->h[0], job->levels, H, 1.0, job->vscale, &p));
-    cli_check(nl_subdiv_plan_execute(p, job->seed, f));
-    nl_subdiv_plan_info(p, &info);
-    snprintf(r->method, sizeof r->method, "midpoint:H=%.17g,levels=%d,variance-scale=%.17g", H, info.levels,
-             job->vscale);
+    nl_subdiv_plan_info(mp->plan, &info);
     r->sd = sqrt(info.variance);
-    r->report = json_pack("{s:f,s:i,s:f}", "H", H, "levels", info.levels, "variance_scale", job->vscale);
-    nl_subdiv_plan_free(p);
+    r->report = json_pack("{s:f,s:i,s:f}", "H", mp->H, "levels", info.levels, "variance_scale", mp->vscale);
 }
 
-void cli_synth_circulant_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
+static void faulting_report(const cli_synth_job *job, void *impl, const nl_field *f, cli_synth_result *r)
 {
-    nl_synth_circulant_plan *p;
-    nl_synth_circulant_info info;
-    cli_check(nl_synth_circulant_plan_alloc(job->m, job->dim, job->n, job->h, job->clamp ? NL_SYNTH_FFT_CLAMP : 0, 16,
-                               &p));
-    nl_synth_circulant_plan_info(p, &info);
-    cli_check(nl_synth_circulant_execute(p, job->seed, f));
-    nl_synth_circulant_plan_free(p);
-    cli_synth_circulant_describe(job, &info, r);
-}
-
-void cli_synth_circulant_describe(const cli_synth_job *job, const nl_synth_circulant_info *i, cli_synth_result *r)
-{
-    const nl_synth_circulant_info info = *i;
-    snprintf(r->method, sizeof r->method, "circulant:embedding=%zux%zux%zu", info.m[0], info.m[1], info.m[2]);
-    int clamped = info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL, lost = fabs(info.variance_loss) > NL_SYNTH_CIRCULANT_LOSS_TOL;
-    snprintf(r->flags, sizeof r->flags, "%s%s%s", clamped ? "clamped" : "", clamped && lost ? "," : "",
-             lost ? "variance-changed" : "");
-    double zero[3] = {0, 0, 0};
-    r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
-    if (!(r->sd > 0))
-        r->sd = 1;
-    r->report = json_pack("{s:[I,I,I],s:f,s:f,s:f,s:i}", "embedding", (json_int_t)info.m[0], (json_int_t)info.m[1],
-                          (json_int_t)info.m[2], "min_eigenvalue", info.min_eigenvalue, "max_eigenvalue",
-                          info.max_eigenvalue, "clamp_error", info.clamp_error, "doublings", info.doublings);
-    /* the spectral models' loss to the embedding's frequency sampling (synth/circulant.h) */
-    if (lost)
-        json_object_set_new(r->report, "variance_loss", json_real(info.variance_loss));
-}
-
-void cli_synth_cholesky_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
-{
-    nl_synth_cholesky_plan *p;
-    double zero[3] = {0, 0, 0};
-    cli_check(nl_synth_cholesky_plan_alloc(job->m, job->dim, job->n, job->h, &p));
-    cli_check(nl_synth_cholesky_execute(p, job->seed, f));
-    nl_synth_cholesky_plan_free(p);
-    snprintf(r->method, sizeof r->method, "cholesky");
-    r->sd = sqrt(nl_model_acf(job->m, job->dim, zero));
-}
-
-void cli_synth_faulting_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
-{
-    size_t K;
-    if (job->dim > 2)
-        cli_die(2, "synth faulting: expected a 1D or 2D --size, got %dD", job->dim);
-    cli_check(nl_synth_faulting(job->seed, job->density, f, &K));
-    snprintf(r->method, sizeof r->method, "faulting:density=%.17g", job->density);
+    const nl_method_value *d = nl_method_options_get(&job->opts, "density");
     double mean, var;
+    (void)impl;
     nl_field_mean_var(f, &mean, &var);
     r->sd = sqrt(var) > 0 ? sqrt(var) : 1;
     /* the preview is centred on 0: shift the range by the mean */
     r->offset = mean;
-    r->report = json_pack("{s:I,s:f}", "faults", (json_int_t)K, "density", job->density);
+    r->report = json_pack("{s:I,s:f}", "faults", (json_int_t)nl_synth_faulting_count(job->seed, d->d, f),
+                          "density", d->d);
 }
 
 /* Flags: a clamped spectrum, and a kernel that loses more than
@@ -273,84 +149,16 @@ void cli_synth_faulting_run(const cli_synth_job *job, nl_field *f, cli_synth_res
  * R(0) less that fraction; the report gives it as truncated_energy). */
 #define CLI_SPARSE_TRUNC_FLAG 1e-3
 
-static void sparse_flags(const nl_synth_sparse_info *info, char *flags, size_t size)
+static void sparse_report(const cli_synth_job *job, void *impl, const nl_field *f, cli_synth_result *r)
 {
-    int k = 0;
-    if (info->clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
-        k = snprintf(flags, size, "clamped");
-    if (info->truncated > CLI_SPARSE_TRUNC_FLAG)
-        snprintf(flags + k, size - (size_t)k, "%struncated=%.2g", k ? "," : "", info->truncated);
-}
-
-/* A model kernel.  The kernel's FFT grid depends on whether the radius was
- * automatic, and a field records the radius it used: regenerating (--from),
- * the automatic radius is tried first and kept when it is the recorded
- * one, so that the field comes back bit for bit. */
-static int sparse_model_plan(const cli_synth_job *job, nl_synth_sparse_plan **p)
-{
-    unsigned fl = job->clamp ? NL_SYNTH_FFT_CLAMP : 0;
-    if (job->from && job->radius) {
-        nl_synth_sparse_info info;
-        if (!nl_synth_sparse_plan_model_flags(job->m, job->dim, job->h, 0, job->cell, job->density, fl, p)) {
-            nl_synth_sparse_plan_info(*p, &info);
-            if (info.radius == job->radius)
-                return NL_OK;
-            nl_synth_sparse_plan_free(*p);
-        }
-    }
-    return nl_synth_sparse_plan_model_flags(job->m, job->dim, job->h, job->radius, job->cell, job->density, fl, p);
-}
-
-void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
-{
-    nl_synth_sparse_plan *p;
     nl_synth_sparse_info info;
-    int st, given = (job->m != NULL) + (job->kernel != NULL) + (job->exemplar != NULL);
-    if (job->dim > 2)
-        cli_die(2, "synth sparse: expected a 1D or 2D --size, got %dD", job->dim);
-    if (given != 1)
-        cli_die(2, "synth sparse: expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE");
-    /* an explicit radius: the work is known before the kernel is made */
-    if (job->radius || job->kernel)
-        cli_check(nl_synth_sparse_check_work(job->dim, job->n, job->radius ? job->radius : 16, job->cell,
-                                             job->density, job->angle != NULL));
-    if (job->m)
-        st = sparse_model_plan(job, &p);
-    else if (job->kernel)
-        st = nl_synth_sparse_plan_expr(job->kernel, job->dim, job->radius ? job->radius : 16, job->cell, job->density,
-                                    &p);
-    else {
-        nl_field *img = cli_read_field(job->exemplar, NULL);
-        if (job->dim != 2)
-            cli_die(2, "--exemplar: expected a 2D image and a 2D --size, got %dD %s and a %dD --size", img->dim,
-                    job->exemplar, job->dim);
-        st = nl_synth_sparse_plan_exemplar(img, job->radius, job->cell, job->density, &p);
-        nl_field_free(img);
-    }
-    cli_check(st);
-    if (job->angle && (st = nl_synth_sparse_set_angle(p, job->angle)))
-        cli_die_status(st);
-    nl_synth_sparse_plan_info(p, &info);
-    if (job->slab) {
-        long o[2];
-        slab_origin(job, o);
-        st = !job->ns ? NL_OK
-             : job->wrap ? nl_synth_sparse_execute_slab(p, job->seed, 1, job->n, job->s0, f)
-                         : nl_synth_sparse_execute(p, job->seed, 0, o, f);
-        cli_check(cli_h5->agree(st));
-    } else {
-        cli_check(nl_synth_sparse_execute(p, job->seed, job->wrap, job->wrap ? NULL : job->origin, f));
-    }
-    nl_synth_sparse_plan_free(p);
-    /* expression-valued keys follow '|', as they may hold commas */
-    char org[64] = "";
-    if (!job->wrap && (job->origin[0] || job->origin[1]))
-        snprintf(org, sizeof org, ",origin=%ld:%ld", job->origin[0], job->origin[1]);
-    snprintf(r->method, sizeof r->method, "sparse:radius=%d,cell=%d,density=%.17g%s%s%s%s%s%s%s", info.radius,
-             info.cell, info.density, job->wrap ? ",wrap" : org, job->kernel ? "|kernel=" : "",
-             job->kernel ? job->kernel : "", job->exemplar ? "|exemplar=" : "", job->exemplar ? job->exemplar : "",
-             job->angle ? "|angle=" : "", job->angle ? job->angle : "");
-    sparse_flags(&info, r->flags, sizeof r->flags);
+    int k = 0;
+    (void)job, (void)f;
+    nl_synth_sparse_plan_info(impl, &info);
+    if (info.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
+        k = snprintf(r->flags, sizeof r->flags, "clamped");
+    if (info.truncated > CLI_SPARSE_TRUNC_FLAG)
+        snprintf(r->flags + k, sizeof r->flags - (size_t)k, "%struncated=%.2g", k ? "," : "", info.truncated);
     r->sd = sqrt(info.variance);
     r->offset = info.mean;
     r->report = json_pack("{s:i,s:i,s:f,s:f,s:f,s:f}", "radius", info.radius, "cell", info.cell, "density",
@@ -360,66 +168,79 @@ void cli_synth_sparse_run(const cli_synth_job *job, nl_field *f, cli_synth_resul
         json_object_set_new(r->report, "clamp_error", json_real(info.clamp_error));
 }
 
-static void lattice_check_pd(const cli_synth_job *job, cli_synth_result *r)
+static void lattice_report(const cli_synth_job *job, void *impl, const nl_field *f, cli_synth_result *r)
 {
-    double err;
-    cli_check(nl_synth_lattice_check_grid(job->m, job->dim, job->n, job->clamp, &err));
-    if (err > 0)
-        snprintf(r->flags, sizeof r->flags, "clamped");
-}
-
-/* --interpolant wiener: one lattice of the target's covariance, kriged. */
-static void lattice_wiener_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
-{
-    nl_synth_lattice_wiener_plan *p;
-    nl_synth_lattice_wiener_info info;
-    int cell = job->cell ? job->cell : 4;
-    if (job->octaves)
-        cli_die(2, "--octaves: the Wiener lattice has one lattice (no octaves), got --octaves %d", job->octaves);
-    cli_check(nl_synth_lattice_wiener_plan_alloc(job->m, job->dim, job->n, cell,
-                                                 job->clamp ? NL_SYNTH_LATTICE_CLAMP : 0, &p));
-    nl_synth_lattice_wiener_plan_info(p, &info);
-    cli_check(nl_synth_lattice_wiener_execute(p, job->seed, f, NULL));
-    nl_synth_lattice_wiener_plan_free(p);
-    snprintf(r->method, sizeof r->method, "lattice:cell=%d,interpolant=wiener", cell);
-    if (info.negatives)
-        snprintf(r->flags, sizeof r->flags, "clamped");
-    r->sd = sqrt(info.variance);
-    r->report = json_pack("{s:i,s:[I,I],s:f,s:f,s:f,s:i}", "cell", cell, "nodes", (json_int_t)info.nodes[0],
-                          (json_int_t)info.nodes[1], "variance", info.variance, "mean_error_variance",
-                          info.mean_error, "max_error_variance", info.max_error, "rank", info.rank);
-}
-
-void cli_synth_lattice_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
-{
-    if (job->interpolant && strcmp(job->interpolant, "perlin")) {
-        if (strcmp(job->interpolant, "wiener"))
-            cli_die(2, "--interpolant: expected perlin or wiener for lattice, got \"%s\"", job->interpolant);
-        if (job->dim > 2)
-            cli_die(2, "synth lattice: expected a 1D or 2D --size, got %dD", job->dim);
-        lattice_wiener_run(job, f, r);
+    const nl_lattice_method_plan *lp = impl;
+    const nl_synth_lattice_plan *p = &lp->perlin;
+    (void)job;
+    if (lp->wiener) {
+        nl_synth_lattice_wiener_info info;
+        nl_synth_lattice_wiener_plan_info(lp->plan, &info);
+        if (info.negatives)
+            snprintf(r->flags, sizeof r->flags, "clamped");
+        r->sd = sqrt(info.variance);
+        r->report = json_pack("{s:i,s:[I,I],s:f,s:f,s:f,s:i}", "cell", info.cell, "nodes", (json_int_t)info.nodes[0],
+                              (json_int_t)info.nodes[1], "variance", info.variance, "mean_error_variance",
+                              info.mean_error, "max_error_variance", info.max_error, "rank", info.rank);
         return;
     }
-    nl_synth_lattice_plan p;
-    double c0 = job->cell ? job->cell : nl_synth_lattice_default_cell(f->n);
-    int O = job->octaves, st;
     json_t *oct = json_array();
-    if (job->dim > 2)
-        cli_die(2, "synth lattice: expected a 1D or 2D --size, got %dD", job->dim);
-    if (!O)
-        O = nl_synth_lattice_default_octaves(c0);
-    lattice_check_pd(job, r);
-    if ((st = nl_synth_lattice_plan_init_flags(job->m, job->dim, c0, O, job->clamp ? NL_SYNTH_LATTICE_CLAMP : 0, &p)) ||
-        (st = nl_synth_lattice_execute(&p, job->seed, f)))
-        cli_die_status(st);
-    if (p.negatives)
+    if (lp->grid_clamp_error > 0 || p->negatives)
         snprintf(r->flags, sizeof r->flags, "clamped");
-    for (int o = 0; o < p.octaves; o++)
-        json_array_append_new(oct, json_pack("{s:f,s:f,s:f,s:f}", "cell", p.cell[o], "weight", p.weight[o], "peak",
-                                             p.peak[o], "leakage", p.leakage[o]));
-    snprintf(r->method, sizeof r->method, "lattice:cell=%.17g,octaves=%d", c0, O);
+    for (int o = 0; o < p->octaves; o++)
+        json_array_append_new(oct, json_pack("{s:f,s:f,s:f,s:f}", "cell", p->cell[o], "weight", p->weight[o], "peak",
+                                             p->peak[o], "leakage", p->leakage[o]));
     r->sd = nl_field_rms(f) > 0 ? nl_field_rms(f) : 1;
     r->report = json_pack("{s:o}", "octaves", oct);
-    if (p.negatives)
-        json_object_set_new(r->report, "clamp_error", json_real(p.clamp_error));
+    if (p->negatives)
+        json_object_set_new(r->report, "clamp_error", json_real(p->clamp_error));
+}
+
+/* The reports beyond the method string, by method; a method without one is
+ * previewed over its field's own range. */
+static report_fn *find_report(const char *name)
+{
+    static const struct {
+        const char *name;
+        report_fn *fn;
+    } reports[] = {{"fft", fft_report},           {"circulant", circulant_report}, {"cholesky", cholesky_report},
+                   {"subdiv", subdiv_report},     {"midpoint", midpoint_report},   {"faulting", faulting_report},
+                   {"sparse", sparse_report},     {"lattice", lattice_report}};
+    for (size_t i = 0; i < sizeof reports / sizeof *reports; i++)
+        if (!strcmp(reports[i].name, name))
+            return reports[i].fn;
+    return NULL;
+}
+
+/* Distributed: this process's rows s0 .. s0 + ns - 1 (none when ns = 0),
+ * the same bits as the whole field's; the status agreed by every process. */
+static int execute(const cli_synth_job *job, nl_method_plan *p, nl_field *f)
+{
+    if (!job->slab)
+        return nl_method_execute(p, job->seed, f);
+    return cli_h5->agree(job->ns ? nl_method_execute_slab(p, job->seed, job->s0, f) : NL_OK);
+}
+
+void cli_synth_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r)
+{
+    nl_method_grid g = {job->dim, {job->n[0], job->n[1], job->n[2]}, {job->h[0], job->h[1], job->h[2]},
+                        {job->origin[0], job->origin[1]}};
+    nl_method_options o = job->opts;
+    nl_field *files[NL_METHOD_MAX_OPTIONS] = {0};
+    nl_method_plan *p;
+    report_fn *report = find_report(job->method);
+    /* files in HDF5 are read by the CLI's reader (cli/h5_main.c) */
+    for (int k = 0; k < job->type->noptions; k++)
+        if ((job->type->options[k].flags & NL_METHOD_FILE) && o.v[k].set && cli_is_h5(o.v[k].s))
+            o.v[k].field = files[k] = cli_read_field(o.v[k].s, NULL);
+    cli_check(nl_method_plan_alloc(job->type, job->m, &g, &o, &p));
+    cli_check(execute(job, p, f));
+    cli_check(nl_method_describe(p, r->method, sizeof r->method));
+    if (report)
+        report(job, nl_method_plan_impl(p), f, r);
+    else
+        r->sd = nl_field_rms(f) > 0 ? nl_field_rms(f) : 1;
+    nl_method_plan_free(p);
+    for (int k = 0; k < NL_METHOD_MAX_OPTIONS; k++)
+        nl_field_free(files[k]);
 }

@@ -59,6 +59,7 @@ extern "C" {
 #include "noiselab/synth/shape.h"
 #include "noiselab/synth/rank1.h"
 #include "noiselab/synth/ocean.h"
+#include "noiselab/synth/method.h"
 #include "noiselab/synth/rank1_model.h"
 
 #include "noiselab/analysis/variogram.h"

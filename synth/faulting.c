@@ -7,6 +7,21 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The expected number of faults, or a negative number for bad arguments. */
+static double expected(double density, const nl_field *f)
+{
+    size_t nx = f->n[0], ny = f->dim == 2 ? f->n[1] : 1;
+    if (f->dim > 2 || !(density > 0) || !isfinite(density))
+        return -1;
+    return density * (f->dim == 1 ? (double)nx : (double)(nx + ny));
+}
+
+size_t nl_synth_faulting_count(uint64_t seed, double density, const nl_field *f)
+{
+    double mean = expected(density, f);
+    return mean < 0 || mean > 1e8 ? 0 : nl_rng_poisson(seed, NL_SYNTH_FAULT_STREAM + 1, 0, 0, mean);
+}
+
 int nl_synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count)
 {
     size_t nx = f->n[0], ny = f->dim == 2 ? f->n[1] : 1, K;

@@ -33,6 +33,11 @@ extern "C" {
  *   NL_ENOMEM  out of memory for the faults. */
 int nl_synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count);
 
+/* The number of faults nl_synth_faulting(seed, density, f, ...) draws (its
+ * *count), without drawing them; 0 for arguments it refuses.  Reads only
+ * f's dim and n.  Pure; thread-safe. */
+size_t nl_synth_faulting_count(uint64_t seed, double density, const nl_field *f);
+
 #ifdef __cplusplus
 }
 #endif

@@ -170,6 +170,17 @@ int nl_synth_lattice_wiener_execute(const nl_synth_lattice_wiener_plan *p, uint6
 
 void nl_synth_lattice_wiener_plan_free(nl_synth_lattice_wiener_plan *p);
 
+/* What the lattice method's plan holds (nl_method_plan_impl of a "lattice"
+ * plan, synth/method.h; owned by that plan). */
+typedef struct {
+    int wiener;                          /* 1: the Wiener lattice (plan); 0: Perlin octaves (perlin) */
+    double cell0;                        /* Perlin: the largest cell; Wiener: the node spacing */
+    int octaves;                         /* Perlin: the octaves */
+    double grid_clamp_error;             /* Perlin: nl_synth_lattice_check_grid's clamp error */
+    nl_synth_lattice_plan perlin;        /* Perlin: the plan */
+    nl_synth_lattice_wiener_plan *plan;  /* Wiener: the plan, else NULL */
+} nl_lattice_method_plan;
+
 #ifdef __cplusplus
 }
 #endif

@@ -78,6 +78,16 @@ int nl_midpoint_miller_default_levels(int dim, const size_t *n);
  * Pure in its arguments (bit-identical for equal ones); thread-safe. */
 int nl_midpoint_miller(int levels, double H, double sigma2, double vscale, uint64_t seed, nl_field *out);
 
+/* What the midpoint method's plan holds (nl_method_plan_impl of a
+ * "midpoint" plan, synth/method.h; owned by that plan). */
+typedef struct {
+    double H;                   /* the Hurst exponent: given, or from a power:d=D model */
+    int levels;                 /* levels of refinement (the default resolved) */
+    int miller;                 /* 1: Miller's square-square interpolant; 0: Fournier's midpoints */
+    double vscale;              /* the variance-scale factor per level */
+    struct nl_subdiv_plan *plan;/* Fournier: the subdivision plan; Miller: NULL */
+} nl_midpoint_method_plan;
+
 #ifdef __cplusplus
 }
 #endif

@@ -19,7 +19,7 @@ found through $NOISELAB_LIB, then the build/ folder of the source tree next
 to this package, then the installed libnoiselab.so.0.
 """
 from ._ffi import LIBRARY_PATH, Error
-from ._synth import METHODS, Plan, synth
+from ._synth import METHODS, Plan, methods, synth
 from ._io import models, read, version, write
 from ._analysis import acf, check_model, coeffs, fit, hist, krige, moments, nonlin, psd, shape, variogram
 
@@ -27,5 +27,5 @@ check = check_model  # noiselab.check, as the CLI's verb
 
 __version__ = version()
 __all__ = ["Error", "Plan", "synth", "read", "write", "models", "version", "acf", "psd", "hist", "moments",
-           "check", "check_model", "coeffs", "nonlin", "shape", "krige", "variogram", "fit", "METHODS",
+           "check", "check_model", "coeffs", "nonlin", "shape", "krige", "variogram", "fit", "METHODS", "methods",
            "LIBRARY_PATH"]

@@ -276,6 +276,94 @@ int nl_synth_lattice_wiener_execute(const nl_synth_lattice_wiener_plan *p, uint6
                                     double **lattice);
 void nl_synth_lattice_wiener_plan_free(nl_synth_lattice_wiener_plan *p);
 
+/* synth/method.h */
+enum {
+    NL_METHOD_MODEL = 1, NL_METHOD_NO_MODEL = 2, NL_METHOD_PERIODIC = 4, NL_METHOD_WINDOW = 8,
+    NL_METHOD_DISTRIBUTED = 16, NL_METHOD_CONDITIONABLE = 32, NL_METHOD_EXACT = 64, NL_METHOD_CLAMP = 128,
+    NL_METHOD_SERIAL = 256
+};
+enum {
+    NL_METHOD_OPEN = 1, NL_METHOD_REPLACES_MODEL = 2, NL_METHOD_FILE = 4, NL_METHOD_SUFFIX = 8,
+    NL_METHOD_MAKES_WINDOW = 16, NL_METHOD_NO_WINDOW = 32, NL_METHOD_EXPRESSION = 64
+};
+enum { NL_METHOD_OPT_CLAMP = 1, NL_METHOD_OPT_RECORDED = 2 };
+typedef enum {
+    NL_METHOD_INT, NL_METHOD_DOUBLE, NL_METHOD_CHOICE, NL_METHOD_FLAG, NL_METHOD_STRING
+} nl_method_opt_type;
+typedef struct {
+    const char *name;
+    nl_method_opt_type type;
+    unsigned flags;
+    double min, max;
+    const char *words;
+    const char *expect;
+    const char *def;
+    const char *help;
+} nl_method_option;
+typedef struct {
+    int set;
+    long i;
+    double d;
+    const char *s;
+    const nl_field *field;
+} nl_method_value;
+typedef struct nl_method_type nl_method_type;
+typedef struct {
+    const nl_method_type *type;
+    unsigned flags;
+    nl_method_value v[12];
+} nl_method_options;
+typedef struct {
+    int dim;
+    size_t n[3];
+    double h[3];
+    long origin[2];
+} nl_method_grid;
+typedef struct nl_method_plan nl_method_plan;
+struct nl_method_type {
+    const char *name;
+    const char *summary;
+    const char *help;
+    unsigned dims;
+    unsigned caps;
+    const nl_method_option *options;
+    int noptions;
+    const char *model_conflict;
+    const char *model_missing;
+    int (*plan)(const nl_model *m, const nl_method_grid *g, const nl_method_options *o, nl_method_plan **out);
+    int (*execute)(nl_method_plan *p, uint64_t seed, nl_field *f);
+    int (*execute_slab)(nl_method_plan *p, uint64_t seed, size_t s0, nl_field *f);
+    int (*describe)(const nl_method_plan *p, char *buf, size_t size);
+    void (*free)(nl_method_plan *p);
+};
+int nl_method_count(void);
+const nl_method_type *nl_method_at(int i);
+const nl_method_type *nl_method_find(const char *name);
+int nl_method_option_index(const nl_method_type *t, const char *name);
+void nl_method_options_default(const nl_method_type *t, nl_method_options *o);
+int nl_method_options_set(nl_method_options *o, const char *name, const char *text, const char *label);
+int nl_method_plan_alloc(const nl_method_type *t, const nl_model *m, const nl_method_grid *g,
+                         const nl_method_options *o, nl_method_plan **out);
+int nl_method_execute(nl_method_plan *p, uint64_t seed, nl_field *f);
+int nl_method_describe(const nl_method_plan *p, char *buf, size_t size);
+void *nl_method_plan_impl(const nl_method_plan *p);
+void nl_method_plan_free(nl_method_plan *p);
+typedef struct {
+    double H;
+    int levels;
+    int miller;
+    double vscale;
+    struct nl_subdiv_plan *plan;
+} nl_midpoint_method_plan;
+typedef struct {
+    int wiener;
+    double cell0;
+    int octaves;
+    double grid_clamp_error;
+    nl_synth_lattice_plan perlin;
+    nl_synth_lattice_wiener_plan *plan;
+} nl_lattice_method_plan;
+
 /* synth/shape.h */
 int nl_synth_shape(nl_field *f, const nl_dist *to, int empirical);
 

@@ -1,5 +1,4 @@
 """Synthesis: noiselab.synth and noiselab.Plan (as `noiselab synth`)."""
-import math
 import threading
 
 import numpy as np
@@ -7,20 +6,53 @@ import numpy as np
 from ._ffi import (Error, Model, alloc_field, check, cstr, ffi, free_data, grid_args, lib, owned_field, planner,
                    size_tuple, spacing_tuple)
 
-METHODS = ("fft", "subdiv", "midpoint", "circulant", "cholesky", "faulting", "sparse", "lattice")
 
-# The options each method takes (keyword names: the CLI's with '_' for '-').
-_OPTIONS = {
-    "fft": set(),
-    "circulant": set(),
-    "cholesky": set(),
-    "subdiv": {"levels", "neighborhood", "tol", "nonperiodic", "origin", "random_neighborhoods",
-               "displacements", "taps"},
-    "midpoint": {"H", "levels", "variance_scale", "interpolant"},
-    "faulting": {"density"},
-    "sparse": {"density", "cell", "radius", "wrap", "origin", "kernel"},
-    "lattice": {"cell", "octaves", "interpolant"},
-}
+
+def _registry():
+    """The library's methods, in its order: name -> descriptor."""
+    return {ffi.string(t.name).decode(): t for t in (lib.nl_method_at(i) for i in range(lib.nl_method_count()))}
+
+
+_METHODS = _registry()
+METHODS = tuple(_METHODS)
+_TYPES = {lib.NL_METHOD_INT: "int", lib.NL_METHOD_DOUBLE: "float", lib.NL_METHOD_CHOICE: "choice",
+          lib.NL_METHOD_FLAG: "flag", lib.NL_METHOD_STRING: "str"}
+_CAPS = (("model", lib.NL_METHOD_MODEL), ("no_model", lib.NL_METHOD_NO_MODEL), ("periodic", lib.NL_METHOD_PERIODIC),
+         ("window", lib.NL_METHOD_WINDOW), ("distributed", lib.NL_METHOD_DISTRIBUTED),
+         ("conditionable", lib.NL_METHOD_CONDITIONABLE), ("exact", lib.NL_METHOD_EXACT),
+         ("clamp", lib.NL_METHOD_CLAMP))
+
+
+def _str(p):
+    return ffi.string(p).decode() if p != ffi.NULL else None
+
+
+def _rows(t):
+    """The option table of descriptor t: keyword (with '_' for '-') -> row."""
+    return {_str(t.options[k].name).replace("-", "_"): t.options[k] for k in range(t.noptions)}
+
+
+def methods():
+    """The synthesis methods, from the library's registry (synth/method.h):
+    a list of dicts with name, summary, dims (the grid dimensions it
+    synthesises), capabilities (model, no_model, periodic, window,
+    distributed, conditionable, exact, clamp) and options (keyword ->
+    dict of type, range or choices, default and help; a window method also
+    takes origin)."""
+    out = []
+    for name, t in _METHODS.items():
+        opts = {}
+        for key, r in _rows(t).items():
+            o = dict(type=_TYPES[r.type], default=_str(getattr(r, "def")), help=_str(r.help))
+            if r.type in (lib.NL_METHOD_INT, lib.NL_METHOD_DOUBLE):
+                o["range"] = (r.min, r.max)
+            if r.type == lib.NL_METHOD_CHOICE:
+                o["choices"] = tuple(_str(r.words).split("|"))
+            opts[key] = o
+        out.append(dict(name=name, summary=_str(t.summary), dims=tuple(d for d in (1, 2, 3) if t.dims >> (d - 1) & 1),
+                        capabilities=tuple(c for c, bit in _CAPS if t.caps & bit), options=opts))
+    return out
+
 
 _CLAMP = 1  # NL_SYNTH_FFT_CLAMP == NL_SYNTH_LATTICE_CLAMP
 _FFT_CLAMP_TOL = 1e-6  # NL_SYNTH_FFT_CLAMP_TOL
@@ -33,31 +65,21 @@ def _int(name, v, lo, hi):
     return int(v)
 
 
-def _positive(name, v):
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        x = float("nan")
-    if not (math.isfinite(x) and x > 0):
-        raise Error("%s: expected a positive number, got %r" % (name, v))
-    return x
-
-
-def _model(method, acf, spectrum, needed):
-    """The model as the CLI parses --acf / --spectrum (cli/cmd_synth.c)."""
+def _model(method, acf, spectrum, t, replacing):
+    """The model as the CLI parses --acf / --spectrum (cli/cmd_synth.c);
+    replacing: the options given that stand in for a model."""
     if acf is not None and spectrum is not None:
         raise Error("synth: expected exactly one of acf or spectrum")
+    alts = [k for k, r in _rows(t).items() if r.flags & lib.NL_METHOD_REPLACES_MODEL]
     if acf is None and spectrum is None:
-        if needed:
-            if method == "sparse":
-                raise Error("synth sparse: expected exactly one kernel: acf/spectrum or kernel")
-            raise Error("synth: expected exactly one of acf or spectrum")
+        if t.caps & lib.NL_METHOD_MODEL and not replacing:
+            raise Error("synth %s: expected exactly one of acf or spectrum%s"
+                        % (method, "".join(" or " + k for k in alts)))
         return None
-    if not needed:
-        if method == "faulting":
-            raise Error("synth faulting: takes no model (its spectrum is f^-2); got acf/spectrum")
-        raise Error("synth %s: give either H or a power-law model, not both" % method
-                    if method == "midpoint" else "synth %s: give either a model or a kernel, not both" % method)
+    if t.caps & lib.NL_METHOD_NO_MODEL:
+        raise Error("synth %s: takes no model; got acf/spectrum" % method)
+    if replacing:
+        raise Error("synth %s: give either %s or a model, not both" % (method, " or ".join(replacing)))
     if spectrum is not None:
         s = cstr(spectrum, "spectrum").decode()
         if not (s.startswith("power") or s.startswith("spectrum:")):
@@ -107,12 +129,15 @@ class Plan:
     """
 
     def __init__(self, method, acf=None, spectrum=None, size=None, spacing=1.0, clamp=False, **options):
-        if method not in METHODS:
+        t = _METHODS.get(method)
+        if t is None:
             raise Error('synth: unknown method "%s" (expected %s)' % (method, ", ".join(METHODS)))
-        bad = set(options) - _OPTIONS[method]
+        rows = _rows(t)
+        allowed = set(rows) | ({"origin"} if t.caps & lib.NL_METHOD_WINDOW else set())
+        bad = set(options) - allowed
         if bad:
             raise Error("synth %s: unknown option %s (this method takes: %s)"
-                        % (method, ", ".join(sorted(bad)), ", ".join(sorted(_OPTIONS[method])) or "none"))
+                        % (method, ", ".join(sorted(bad)), ", ".join(sorted(allowed)) or "none"))
         self.shape = size_tuple(size)
         self.spacing = spacing_tuple(spacing, len(self.shape))
         self.method_name = method
@@ -121,180 +146,120 @@ class Plan:
         self.flags = ""
         self.info = {}
         self._lock = None  # serialises the calls of plans that are not thread-safe
-        needs = not (method == "faulting" or (method == "midpoint" and options.get("H") is not None)
-                     or (method == "sparse" and options.get("kernel") is not None))
-        self._m = _model(method, acf, spectrum, needs)
+        given = {k: v for k, v in options.items() if v is not None and v is not False}
+        replacing = [k for k in given if k in rows and rows[k].flags & lib.NL_METHOD_REPLACES_MODEL]
+        self._m = _model(method, acf, spectrum, t, replacing)
         self.model = self._m.spec if self._m else ""
         self._dim, self._n, self._h = grid_args(self.shape, self.spacing)
-        if method in ("subdiv", "midpoint", "faulting", "sparse", "lattice") and self._dim > 2:
-            raise Error("synth %s: expected a 1D or 2D size, got %dD" % (method, self._dim))
+        if not t.dims >> (self._dim - 1) & 1:
+            raise Error("synth %s: expected a %s size, got %dD"
+                        % (method, " or ".join("%dD" % d for d in (1, 2, 3) if t.dims >> (d - 1) & 1), self._dim))
+        self._origin = ffi.new("long[2]", _origin(options.get("origin")))
+        self._window(t, rows, given)
+        o = self._options(t, rows, given)
+        g = ffi.new("nl_method_grid *", dict(dim=self._dim, n=list(self._n), h=list(self._h),
+                                              origin=list(self._origin)))
+        out = ffi.new("nl_method_plan **")
         with planner:
-            getattr(self, "_plan_" + method)()
+            check(lib.nl_method_plan_alloc(t, self._m.ptr if self._m else ffi.NULL, g, o, out))
+        self._p = ffi.gc(out[0], lib.nl_method_plan_free)
+        buf = ffi.new("char[4096]")
+        check(lib.nl_method_describe(self._p, buf, 4096))
+        self.method = ffi.string(buf).decode()
+        if t.caps & lib.NL_METHOD_SERIAL:
+            self._lock = threading.Lock()  # the plan holds its workspace
+        if any(rows[k].flags & lib.NL_METHOD_EXPRESSION for k in given if k in rows):
+            self._lock = planner  # an expression evaluated per call (libmatheval)
+        report = getattr(self, "_report_" + method, None)
+        if report:
+            report(lib.nl_method_plan_impl(self._p))
 
-    # -- planning, one per method (cli/synth_methods.c) --------------------
+    def _window(self, t, rows, given):
+        """origin against the options that make or unmake a window."""
+        if "origin" not in given:
+            return
+        for k, r in rows.items():
+            if r.flags & lib.NL_METHOD_MAKES_WINDOW and k not in given:
+                raise Error("synth %s: origin needs %s=True (a periodic field has no origin)" % (self.method_name, k))
+            if r.flags & lib.NL_METHOD_NO_WINDOW and k in given:
+                raise Error("synth %s: origin and %s exclude each other (a periodic tile has no origin)"
+                            % (self.method_name, k))
 
-    def _plan_fft(self):
-        out = ffi.new("nl_synth_fft_plan **")
-        check(lib.nl_synth_fft_plan_alloc(self._m.ptr, self._dim, self._n, self._h, _CLAMP if self.clamp else 0,
-                                          out))
-        self._p = ffi.gc(out[0], lib.nl_synth_fft_plan_free)
+    def _options(self, t, rows, given):
+        """The library's options object from the keywords, checked by the method's table."""
+        o = ffi.new("nl_method_options *")
+        lib.nl_method_options_default(t, o)
+        o.flags = lib.NL_METHOD_OPT_CLAMP if self.clamp else 0
+        self._keep = []  # the option texts the plan refers to
+        for k, v in given.items():
+            if k not in rows:
+                continue
+            r = rows[k]
+            if r.type == lib.NL_METHOD_FLAG:
+                text = None
+            elif r.type == lib.NL_METHOD_INT and not isinstance(v, str):
+                if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+                    raise Error("%s: expected an integer from %d to %d, got %r" % (k, r.min, r.max, v))
+                text = str(int(v))
+            elif r.type == lib.NL_METHOD_DOUBLE and not isinstance(v, str):
+                try:
+                    text = repr(float(v))
+                except (TypeError, ValueError):
+                    raise Error("%s: expected a number, got %r" % (k, v)) from None
+            else:
+                text = v
+            c = cstr(text, k) if text is not None else ffi.NULL
+            self._keep.append(c)
+            check(lib.nl_method_options_set(o, r.name, c, cstr(k, k)))
+        self._opts = o
+        return o
+
+    # -- what each method reports of its plan (optional, by method name) --
+
+    def _report_fft(self, impl):
         info = ffi.new("nl_synth_fft_info *")
-        lib.nl_synth_fft_plan_info(self._p, info)
-        self.method = "fft"
+        lib.nl_synth_fft_plan_info(ffi.cast("nl_synth_fft_plan *", impl), info)
         self.flags = "clamped" if info.clamp_error > _FFT_CLAMP_TOL else ""
         self.info = dict(variance=info.variance, min_spectrum=info.min_lambda, max_spectrum=info.max_lambda,
                          clamped=int(info.negatives), clamp_error=info.clamp_error)
-        self._exec = lambda seed, f: lib.nl_synth_fft_execute(self._p, seed, f)
 
-    def _plan_circulant(self):
-        out = ffi.new("nl_synth_circulant_plan **")
-        check(lib.nl_synth_circulant_plan_alloc(self._m.ptr, self._dim, self._n, self._h,
-                                                _CLAMP if self.clamp else 0, 16, out))
-        self._p = ffi.gc(out[0], lib.nl_synth_circulant_plan_free)
+    def _report_circulant(self, impl):
         info = ffi.new("nl_synth_circulant_info *")
-        lib.nl_synth_circulant_plan_info(self._p, info)
-        self.method = "circulant:embedding=%dx%dx%d" % tuple(info.m)
+        lib.nl_synth_circulant_plan_info(ffi.cast("nl_synth_circulant_plan *", impl), info)
         clamped, lost = info.clamp_error > _FFT_CLAMP_TOL, abs(info.variance_loss) > _CIRC_LOSS_TOL
         self.flags = ",".join(x for x, c in (("clamped", clamped), ("variance-changed", lost)) if c)
         self.info = dict(embedding=tuple(info.m), min_eigenvalue=info.min_eigenvalue,
                          max_eigenvalue=info.max_eigenvalue, clamp_error=info.clamp_error,
                          doublings=info.doublings, variance_loss=info.variance_loss)
-        self._exec = lambda seed, f: lib.nl_synth_circulant_execute(self._p, seed, f)
 
-    def _plan_cholesky(self):
-        out = ffi.new("nl_synth_cholesky_plan **")
-        check(lib.nl_synth_cholesky_plan_alloc(self._m.ptr, self._dim, self._n, self._h, out))
-        self._p = ffi.gc(out[0], lib.nl_synth_cholesky_plan_free)
-        self.method = "cholesky"
-        self._lock = threading.Lock()  # the plan holds the workspace z (synth/cholesky.h)
-        self._exec = lambda seed, f: lib.nl_synth_cholesky_execute(self._p, seed, f)
-
-    def _plan_subdiv(self):
-        o = ffi.new("nl_subdiv_options *")
-        lib.nl_subdiv_options_default(o)
-        opt = self.options
-        o.levels = _int("levels", opt["levels"], 1, 30) if opt.get("levels") is not None else 0
-        nb = opt.get("neighborhood", 2)
-        o.N = 0 if nb == "auto" else _int("neighborhood", nb, 1, 2 ** 31 - 1)
-        tol = opt.get("tol", 1e-4)
-        o.stop = 0
-        if isinstance(tol, str):
-            for prefix, rule in (("variance:", 1), ("improvement:", 0)):
-                if tol.startswith(prefix):
-                    o.stop, tol = rule, tol[len(prefix):]
-                    break
-        o.tol = _positive("tol", tol)
-        o.nonperiodic = bool(opt.get("nonperiodic", False))
-        o.allow_not_pd = self.clamp
-        o.random_nb = _int("random_neighborhoods", opt["random_neighborhoods"], 1, 256) \
-            if opt.get("random_neighborhoods") else 0
-        disp = opt.get("displacements", "independent")
-        if disp not in ("independent", "correlated"):
-            raise Error('displacements: expected independent or correlated, got "%s"' % disp)
-        o.displacements = 1 if disp == "correlated" else 0
-        o.taps = _int("taps", opt["taps"], 1, 16) if opt.get("taps") else 0
-        if o.taps and not o.displacements:
-            raise Error("taps %d: expected displacements='correlated' (independent displacements have no filter)"
-                        % o.taps)
-        if o.random_nb and o.displacements:
-            raise Error("displacements correlated: expected the standard neighbourhoods, got "
-                        "random_neighborhoods %d" % o.random_nb)
-        if opt.get("origin") is not None and not o.nonperiodic:
-            raise Error("synth subdiv: origin needs nonperiodic=True (a periodic field has no origin)")
-        self._origin = ffi.new("long[2]", _origin(opt.get("origin")))
-        if len(set(self.spacing)) > 1:
-            raise Error("spacing: subdivision needs the same spacing on every axis, got %g and %g"
-                        % (self.spacing[-1], self.spacing[0]))
-        out = ffi.new("nl_subdiv_plan **")
-        check(lib.nl_subdiv_plan_alloc(self._m.ptr, self._dim, self._n, self._h[0], o, out))
-        self._p = ffi.gc(out[0], lib.nl_subdiv_plan_free)
+    def _report_subdiv(self, impl):
+        p = ffi.cast("nl_subdiv_plan *", impl)
         info = ffi.new("nl_subdiv_info *")
-        lib.nl_subdiv_plan_info(self._p, info)
-        c = lib.nl_subdiv_plan_coeffs(self._p)
-        self.method = "subdiv:levels=%d,neighborhood=%s,tol=%s%g,%s" % (
-            info.levels, o.N or "auto", "variance:" if o.stop == 1 else "", o.tol,
-            "nonperiodic" if o.nonperiodic else "periodic")
-        if o.random_nb:
-            self.method += ",random-neighborhoods=%d" % o.random_nb
-        if c.level[0].filt != ffi.NULL:
-            self.method += ",displacements=correlated,taps=%d" % c.level[0].taps
-        if o.nonperiodic:
-            self.method += ",origin=%d:%d" % tuple(self._origin)
+        lib.nl_subdiv_plan_info(p, info)
+        c = lib.nl_subdiv_plan_coeffs(p)
         self.flags = ",".join(ffi.string(lib.nl_subdiv_flag_name(b)).decode()
                               for b in range(6) if c.flags & (1 << b))
         self.info = dict(levels=info.levels, spacing0=info.spacing0, variance=c.r0)
-        if o.nonperiodic:
+        if self.options.get("nonperiodic"):
             self.info["coarse_correlation"] = info.coarse_correlation
-            self._exec = lambda seed, f: lib.nl_subdiv_plan_execute_window(self._p, seed, self._origin, f)
-        else:
-            self._exec = lambda seed, f: lib.nl_subdiv_plan_execute(self._p, seed, f)
 
-    def _plan_midpoint(self):
-        opt = self.options
-        H = opt.get("H")
-        if H is not None:
-            H = float(H)
-            if not 0 < H < 1:
-                raise Error("H: expected a Hurst exponent between 0 and 1, got %r" % opt.get("H"))
+    def _report_midpoint(self, impl):
+        mp = ffi.cast("nl_midpoint_method_plan *", impl)
+        self.info = dict(H=mp.H, levels=mp.levels, variance_scale=mp.vscale)
+        if mp.miller:
+            self.info["interpolant"] = "miller"
         else:
-            hp = ffi.new("double *")
-            check(lib.nl_subdiv_midpoint_hurst(self._m.ptr, self._dim, hp))
-            H = hp[0]
-        vs = _positive("variance_scale", opt.get("variance_scale", 1.0))
-        levels = _int("levels", opt["levels"], 1, 30) if opt.get("levels") is not None else 0
-        interp = opt.get("interpolant", "fournier")
-        if interp == "miller":
-            L = levels or lib.nl_midpoint_miller_default_levels(self._dim, self._n)
-            self.method = "midpoint:H=%.17g,levels=%d,variance-scale=%.17g,interpolant=miller" % (H, L, vs)
-            self.info = dict(H=H, levels=L, variance_scale=vs, interpolant="miller")
-            self._exec = lambda seed, f: lib.nl_midpoint_miller(L, H, 1.0, vs, seed, f)
-            return
-        if interp != "fournier":
-            raise Error('interpolant: expected fournier or miller for midpoint, got "%s"' % interp)
-        out = ffi.new("nl_subdiv_plan **")
-        check(lib.nl_subdiv_plan_alloc_midpoint(self._dim, self._n, self._h[0], levels, H, 1.0, vs, out))
-        self._p = ffi.gc(out[0], lib.nl_subdiv_plan_free)
-        info = ffi.new("nl_subdiv_info *")
-        lib.nl_subdiv_plan_info(self._p, info)
-        self.method = "midpoint:H=%.17g,levels=%d,variance-scale=%.17g" % (H, info.levels, vs)
-        self.info = dict(H=H, levels=info.levels, variance_scale=vs, variance=info.variance)
-        self._exec = lambda seed, f: lib.nl_subdiv_plan_execute(self._p, seed, f)
+            info = ffi.new("nl_subdiv_info *")
+            lib.nl_subdiv_plan_info(mp.plan, info)
+            self.info["variance"] = info.variance
 
-    def _plan_faulting(self):
-        d = _positive("density", self.options.get("density", 1.0))
-        self.method = "faulting:density=%.17g" % d
-        self.info = dict(density=d)
-        self._exec = lambda seed, f: lib.nl_synth_faulting(seed, d, f, ffi.new("size_t *"))
+    def _report_faulting(self, impl):
+        t = _METHODS["faulting"]
+        self.info = dict(density=self._opts.v[lib.nl_method_option_index(t, b"density")].d)
 
-    def _plan_sparse(self):
-        opt = self.options
-        density = _positive("density", opt.get("density", 1.0))
-        cell = _int("cell", opt["cell"], 1, 2 ** 31 - 1) if opt.get("cell") else 0
-        radius = _int("radius", opt["radius"], 1, 4096) if opt.get("radius") else 0
-        wrap = bool(opt.get("wrap", False))
-        kernel = opt.get("kernel")
-        if opt.get("origin") is not None and wrap:
-            raise Error("synth sparse: origin and wrap exclude each other (a periodic tile has no origin)")
-        self._origin = ffi.new("long[2]", _origin(opt.get("origin")))
-        if radius or kernel is not None:
-            check(lib.nl_synth_sparse_check_work(self._dim, self._n, radius or 16, cell, density, 0))
-        out = ffi.new("nl_synth_sparse_plan **")
-        if kernel is not None:
-            check(lib.nl_synth_sparse_plan_expr(cstr(kernel, "kernel"), self._dim, radius or 16, cell, density,
-                                                out))
-            self._lock = planner  # the kernel's expression is evaluated per call (libmatheval)
-        else:
-            check(lib.nl_synth_sparse_plan_model_flags(self._m.ptr, self._dim, self._h, radius, cell, density,
-                                                       _CLAMP if self.clamp else 0, out))
-        self._p = ffi.gc(out[0], lib.nl_synth_sparse_plan_free)
+    def _report_sparse(self, impl):
         info = ffi.new("nl_synth_sparse_info *")
-        lib.nl_synth_sparse_plan_info(self._p, info)
-        org = ""
-        if not wrap and any(self._origin):
-            org = ",origin=%d:%d" % tuple(self._origin)
-        self.method = "sparse:radius=%d,cell=%d,density=%.17g%s%s" % (
-            info.radius, info.cell, info.density, ",wrap" if wrap else org,
-            "|kernel=" + kernel if kernel is not None else "")
+        lib.nl_synth_sparse_plan_info(ffi.cast("nl_synth_sparse_plan *", impl), info)
         fl = []
         if info.clamp_error > _FFT_CLAMP_TOL:
             fl.append("clamped")
@@ -303,48 +268,20 @@ class Plan:
         self.flags = ",".join(fl)
         self.info = dict(radius=info.radius, cell=info.cell, density=info.density, variance=info.variance,
                          mean=info.mean, excess_kurtosis=info.kurtosis, truncated_energy=info.truncated)
-        origin = ffi.NULL if wrap else self._origin
-        self._exec = lambda seed, f: lib.nl_synth_sparse_execute(self._p, seed, int(wrap), origin, f)
 
-    def _plan_lattice(self):
-        opt = self.options
-        interp = opt.get("interpolant", "perlin")
-        if interp not in ("perlin", "wiener"):
-            raise Error('interpolant: expected perlin or wiener for lattice, got "%s"' % interp)
-        cell = _int("cell", opt["cell"], 1, 2 ** 31 - 1) if opt.get("cell") else 0
-        if interp == "wiener":
-            return self._plan_lattice_wiener(cell or 4)
-        c0 = float(cell) if cell else lib.nl_synth_lattice_default_cell(self._n)
-        O = _int("octaves", opt["octaves"], 1, 16) if opt.get("octaves") else \
-            lib.nl_synth_lattice_default_octaves(c0)
-        err = ffi.new("double *")
-        check(lib.nl_synth_lattice_check_grid(self._m.ptr, self._dim, self._n, int(self.clamp), err))
-        self._p = ffi.new("nl_synth_lattice_plan *")
-        check(lib.nl_synth_lattice_plan_init_flags(self._m.ptr, self._dim, c0, O, _CLAMP if self.clamp else 0,
-                                                   self._p))
-        self.flags = "clamped" if err[0] > 0 or self._p.negatives else ""
-        self.method = "lattice:cell=%.17g,octaves=%d" % (c0, O)
-        self.info = dict(octaves=[dict(cell=self._p.cell[o], weight=self._p.weight[o], peak=self._p.peak[o],
-                                       leakage=self._p.leakage[o]) for o in range(self._p.octaves)])
-        self._exec = lambda seed, f: lib.nl_synth_lattice_execute(self._p, seed, f)
-
-    def _plan_lattice_wiener(self, cell):
-        """interpolant="wiener": one lattice of the target's covariance, each
-        sample its simple-kriging estimate from the nearest nodes."""
-        if self.options.get("octaves"):
-            raise Error("octaves: the Wiener lattice has one lattice (no octaves), got octaves=%r"
-                        % self.options["octaves"])
-        out = ffi.new("nl_synth_lattice_wiener_plan **")
-        check(lib.nl_synth_lattice_wiener_plan_alloc(self._m.ptr, self._dim, self._n, cell,
-                                                     _CLAMP if self.clamp else 0, out))
-        self._p = ffi.gc(out[0], lib.nl_synth_lattice_wiener_plan_free)
-        info = ffi.new("nl_synth_lattice_wiener_info *")
-        lib.nl_synth_lattice_wiener_plan_info(self._p, info)
-        self.method = "lattice:cell=%d,interpolant=wiener" % cell
-        self.flags = "clamped" if info.negatives else ""
-        self.info = dict(cell=cell, nodes=tuple(info.nodes), variance=info.variance,
-                         mean_error_variance=info.mean_error, max_error_variance=info.max_error, rank=info.rank)
-        self._exec = lambda seed, f: lib.nl_synth_lattice_wiener_execute(self._p, seed, f, ffi.NULL)
+    def _report_lattice(self, impl):
+        lp = ffi.cast("nl_lattice_method_plan *", impl)
+        if lp.wiener:
+            info = ffi.new("nl_synth_lattice_wiener_info *")
+            lib.nl_synth_lattice_wiener_plan_info(lp.plan, info)
+            self.flags = "clamped" if info.negatives else ""
+            self.info = dict(cell=info.cell, nodes=tuple(info.nodes), variance=info.variance,
+                             mean_error_variance=info.mean_error, max_error_variance=info.max_error, rank=info.rank)
+            return
+        p = lp.perlin
+        self.flags = "clamped" if lp.grid_clamp_error > 0 or p.negatives else ""
+        self.info = dict(octaves=[dict(cell=p.cell[o], weight=p.weight[o], peak=p.peak[o], leakage=p.leakage[o])
+                                  for o in range(p.octaves)])
 
     # -- execution --------------------------------------------------------
 
@@ -371,10 +308,10 @@ class Plan:
 
     def _run(self, seed, f):
         if self._lock is None:
-            st = self._exec(seed, f)
+            st = lib.nl_method_execute(self._p, seed, f)
         else:
             with self._lock:
-                st = self._exec(seed, f)
+                st = lib.nl_method_execute(self._p, seed, f)
         check(st)
 
     def _into(self, seed, out):
@@ -397,8 +334,12 @@ class Plan:
         origin, and spacing in the array's axis order):
         ``noiselab.write(path, plan(seed), **plan.provenance(seed))``."""
         origin = ""
-        if self.options.get("nonperiodic") or (self.method_name == "sparse" and not self.options.get("wrap")
-                                               and any(self._origin)):
+        rows = _rows(_METHODS[self.method_name])
+        makes = [k for k, r in rows.items() if r.flags & lib.NL_METHOD_MAKES_WINDOW]
+        unmakes = [k for k, r in rows.items() if r.flags & lib.NL_METHOD_NO_WINDOW]
+        if _METHODS[self.method_name].caps & lib.NL_METHOD_WINDOW and (
+                any(self.options.get(k) for k in makes) if makes
+                else not any(self.options.get(k) for k in unmakes) and any(self._origin)):
             o = tuple(self._origin)
             origin = "%d" % o[0] if len(self.shape) == 1 else "%d,%d" % o
         return dict(model=self.model, method=self.method, flags=self.flags, seed=str(int(seed)),
@@ -411,8 +352,8 @@ class Plan:
 def synth(method, acf=None, spectrum=None, size=None, seed=0, spacing=1.0, **options):
     """Synthesise one field, as ``noiselab synth METHOD``.
 
-    method    fft, circulant, cholesky, subdiv, midpoint, faulting, sparse or
-              lattice (see ``noiselab synth --help`` for what each does).
+    method    a method's name (``noiselab.methods()`` lists them, with what
+              each can do and takes; ``noiselab synth --help`` says more).
     acf       an autocorrelation model spec (``noiselab.models()``), e.g.
               "markov:scale=8" (lags in length units: scale 8 at spacing 1 is
               8 samples), or
@@ -425,13 +366,10 @@ def synth(method, acf=None, spectrum=None, size=None, seed=0, spacing=1.0, **opt
     spacing   grid spacing: one value, or one per axis in the order of size.
     options   clamp=True (synthesise a model that is not positive definite by
               zeroing its negative spectrum or variances, as --clamp), and the
-              method's: subdiv levels, neighborhood (int or "auto"), tol (float
-              or "variance:E"), nonperiodic, origin, random_neighborhoods,
-              displacements, taps; midpoint H, levels, variance_scale,
-              interpolant ("fournier" or "miller"); faulting density; sparse
-              density, cell, radius, wrap, origin, kernel (an expression in
-              x, y); lattice cell, octaves, interpolant ("perlin" or
-              "wiener").
+              method's own, as its command-line options with '_' for '-'
+              (``noiselab.methods()`` gives each method's table: type, range or
+              choices, default), e.g. subdiv neighborhood=3 or "auto",
+              tol=1e-3 or "variance:1e-3"; origin for a window method.
 
     Returns a float64 array of shape `size` (C order; row j of a 2D field is
     the EXR's row j), over memory the library allocated (no copy): the same

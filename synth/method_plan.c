@@ -1,0 +1,78 @@
+/* Planning, executing and describing through a method's descriptor
+ * (synth/method.h). */
+#include "method_internal.h"
+#include "../core/nl_error.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+nl_method_plan *nl_method_plan_head(size_t size, const nl_method_grid *g, const nl_method_options *o)
+{
+    nl_method_plan *p = calloc(1, size);
+    if (!p) {
+        NL_ERROR(NL_ENOMEM, "out of memory for a %s plan", o->type->name);
+        return NULL;
+    }
+    p->type = o->type;
+    p->grid = *g;
+    p->opt = *o;
+    return p;
+}
+
+int nl_method_check_dim(const nl_method_type *t, const nl_method_grid *g)
+{
+    if (g->dim < 1 || g->dim > 3 || !(t->dims & (1u << (g->dim - 1))))
+        return NL_ERROR(NL_EINVAL, "synth %s: expected a %s --size, got %dD", t->name,
+                        t->dims == 3 ? "1D or 2D" : "1D, 2D or 3D", g->dim);
+    return NL_OK;
+}
+
+int nl_method_plan_alloc(const nl_method_type *t, const nl_model *m, const nl_method_grid *g,
+                         const nl_method_options *o, nl_method_plan **out)
+{
+    int st;
+    *out = NULL;
+    if (!t || !g || !o || o->type != t)
+        return NL_ERROR(NL_EINVAL, "nl_method_plan_alloc: expected a method and its own options");
+    if ((st = nl_method_check_dim(t, g)))
+        return st;
+    return t->plan(m, g, o, out);
+}
+
+int nl_method_execute(nl_method_plan *p, uint64_t seed, nl_field *f) { return p->type->execute(p, seed, f); }
+
+int nl_method_execute_slab(nl_method_plan *p, uint64_t seed, size_t s0, nl_field *f)
+{
+    if (!p->type->execute_slab)
+        return NL_ERROR(NL_EINVAL, "synth %s: runs on one process (no slab execute)", p->type->name);
+    return p->type->execute_slab(p, seed, s0, f);
+}
+
+int nl_method_describe(const nl_method_plan *p, char *buf, size_t size) { return p->type->describe(p, buf, size); }
+
+const nl_method_type *nl_method_plan_type(const nl_method_plan *p) { return p->type; }
+
+void *nl_method_plan_impl(const nl_method_plan *p) { return p->impl; }
+
+void nl_method_plan_free(nl_method_plan *p)
+{
+    if (p)
+        p->type->free(p);
+}
+
+int nl_method_append(char *buf, size_t size, size_t *len, const char *fmt, ...)
+{
+    va_list ap;
+    int w;
+    if (*len >= size)
+        return NL_ERROR(NL_EINVAL, "method string: longer than %zu bytes", size);
+    va_start(ap, fmt);
+    w = vsnprintf(buf + *len, size - *len, fmt, ap);
+    va_end(ap);
+    if (w < 0 || (size_t)w >= size - *len)
+        return NL_ERROR(NL_EINVAL, "method string: longer than %zu bytes", size);
+    *len += (size_t)w;
+    return NL_OK;
+}
