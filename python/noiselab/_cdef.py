@@ -41,6 +41,27 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
                        const double *t);
 int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
 
+/* core/provenance.h */
+enum { NL_META_NKEYS = 8 };
+typedef struct {
+    char model[1024];
+    char method[256];
+    char flags[256];
+    char version[32];
+    uint64_t seed;
+    int has_seed;
+    int dim;
+    size_t n[3];
+    int nspacing;
+    double h[3];
+    int norigin;
+    long origin[2];
+} nl_provenance;
+const char *nl_meta_key(int i);
+void nl_provenance_init(nl_provenance *p);
+int nl_provenance_format(const nl_provenance *p, nl_meta *kv);
+int nl_provenance_parse(const nl_meta *kv, unsigned keys, nl_provenance *p);
+
 /* core/model.h */
 typedef struct nl_model nl_model;
 int nl_model_parse(const char *spec, nl_model **out);
