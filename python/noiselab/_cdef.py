@@ -289,6 +289,34 @@ typedef struct {
 int nl_moments_compute(const nl_field *x, nl_moments *m);
 int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
 
+/* analysis/ensemble.h */
+typedef struct {
+    size_t K;
+    const nl_field *const *fields;
+    int (*get)(void *ctx, size_t k, const nl_field **out);
+    void (*put)(void *ctx, size_t k, const nl_field *f);
+    void *ctx;
+} nl_ensemble_source;
+typedef struct {
+    double mean;
+    int unbiased;
+    int axis;
+    int radial;
+    int direct;
+    size_t nlag;
+} nl_ensemble_acf_opts;
+typedef struct {
+    double mean;
+    size_t welch;
+} nl_ensemble_psd_opts;
+int nl_ensemble_acf(const nl_ensemble_source *src, const nl_ensemble_acf_opts *o, double *lag, double *acf,
+                    double *se, size_t *bad);
+int nl_ensemble_psd(const nl_ensemble_source *src, const nl_ensemble_psd_opts *o, nl_field **P, double *freq,
+                    double *psd, double *se, size_t *nf, size_t *segments, size_t *bad);
+int nl_ensemble_moments(const nl_ensemble_source *src, nl_moments *mean, nl_moments *se, size_t *bad);
+int nl_ensemble_hist(const nl_ensemble_source *src, size_t bins, double lo, double hi, double *edges,
+                     double *counts, double *se, size_t *bad);
+
 /* analysis/check.h */
 typedef struct {
     int dim;
