@@ -24,6 +24,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /* The number of keys; key i of nl_meta is nl_meta_key(i), i < this. */
 enum { NL_META_NKEYS = 8 };
 
@@ -90,5 +94,9 @@ int nl_provenance_format(const nl_provenance *p, nl_meta *kv);
  * key "noiselab.KEY" and quoting the value, or what nl_model_parse returns
  * for a bad model, with its message. */
 int nl_provenance_parse(const nl_meta *kv, unsigned keys, nl_provenance *p);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif
