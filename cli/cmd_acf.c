@@ -209,27 +209,21 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
     cli_out_commit(o->out);
 }
 
-/* An ensemble: the estimates of the other inputs, and the mean and
- * standard error of all of them (val holds the first one on entry). */
+/* An ensemble: the mean and standard error of every input's estimate
+ * (val holds the first one's on entry). */
 static void ensemble(acf_opts *o, const nl_field *x0, double *lag, double *val, double *se)
 {
-    size_t K = o->nin, nl = o->nl, dims[2] = {nl, K};
-    double *rows;
-    int st;
-    if (nl_size_check(2, dims, sizeof *rows, 1, NULL))
-        cli_die(2, "acf: %zu estimates of %zu lags do not fit in the memory available; expected fewer inputs", K, nl);
-    rows = cli_malloc(K * nl * sizeof *rows);
-    for (size_t i = 0; i < nl; i++)
-        rows[i] = val[i];
-    for (size_t k = 1; k < K; k++) {
-        nl_field *x = cli_inputs_read(&o->src, k, x0), *full;
-        if ((st = nl_acf_full(x, o->mean, o->unbiased, &full)))
-            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, k), nl_errmsg());
-        estimate(o, x, full, lag, rows + k * nl, NULL, NULL);
-        nl_field_free(full), nl_field_free(x);
-    }
-    cli_check(nl_ensemble_mean_se(rows, K, nl, val, se));
-    free(rows);
+    cli_ensemble e = {&o->src, x0};
+    nl_ensemble_source src = cli_inputs_source(&e);
+    nl_ensemble_acf_opts eo = {o->mean, o->unbiased, o->axis, o->radial, o->direct, o->nl};
+    size_t bad;
+    int st = nl_ensemble_acf(&src, &eo, lag, val, se, &bad);
+    if (st == NL_ETOOBIG && bad == o->nin)
+        cli_die(2, "acf: %zu estimates of %zu lags do not fit in the memory available; expected fewer inputs", o->nin,
+                o->nl);
+    if (st && bad < o->nin)
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, bad), nl_errmsg());
+    cli_check(st);
 }
 
 /* The target (when asked) and the output. */

@@ -216,55 +216,39 @@ static nl_field **read_all(hist_opts *o)
     return x;
 }
 
+/* The inputs, all read, as an ensemble's source. */
+static nl_ensemble_source source(const hist_opts *o, nl_field **x)
+{
+    return (nl_ensemble_source){.K = o->nin, .fields = (const nl_field *const *)x};
+}
+
 /* The moments of each field; their means and standard errors over an ensemble. */
 static void moments(hist_opts *o, nl_field **x, hist_moments *mo)
 {
-    size_t K = o->nin;
-    double *v = cli_malloc(4 * K * sizeof *v), mean[4], se[4];
-    nl_moments m;
-    int st;
-    mo->m.n = 0, mo->m.min = INFINITY, mo->m.max = -INFINITY;
-    for (size_t k = 0; k < K; k++) {
-        if ((st = nl_moments_compute(x[k], &m)))
-            cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, k), nl_errmsg());
-        if (K == 1)
-            mo->m = m;
-        v[4 * k] = m.mean, v[4 * k + 1] = m.variance, v[4 * k + 2] = m.skewness, v[4 * k + 3] = m.kurtosis;
-        mo->m.n += K > 1 ? m.n : 0;
-        mo->m.min = fmin(mo->m.min, m.min), mo->m.max = fmax(mo->m.max, m.max);
-    }
-    if (K > 1) {
-        cli_check(nl_ensemble_mean_se(v, K, 4, mean, se));
-        mo->m.mean = mean[0], mo->m.variance = mean[1], mo->m.skewness = mean[2], mo->m.kurtosis = mean[3];
-        mo->se.mean = se[0], mo->se.variance = se[1], mo->se.skewness = se[2], mo->se.kurtosis = se[3];
-    }
-    free(v);
+    nl_ensemble_source src = source(o, x);
+    size_t bad;
+    int st = nl_ensemble_moments(&src, &mo->m, &mo->se, &bad);
+    if (st && bad < o->nin)
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, bad), nl_errmsg());
+    cli_check(st);
 }
 
 /* The histogram; an ensemble's on the bins of the overall range, as mean counts per field with their se. */
 static void histogram(hist_opts *o, nl_field **x, const hist_moments *mo, double *edges, double *counts,
                       double *se)
 {
-    size_t K = o->nin, one = 2, B = o->bins;
-    double *c;
-    nl_field *span;
+    nl_ensemble_source src = source(o, x);
+    size_t bad;
     int st;
-    if (K == 1) {
-        if ((st = nl_hist(x[0], B, edges, counts)))
+    if (o->nin == 1) {
+        if ((st = nl_hist(x[0], o->bins, edges, counts)))
             cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, 0), nl_errmsg());
         return;
     }
-    span = nl_field_alloc(1, &one, NULL, &st);  /* the edges a field of the overall range would have */
-    if (!span)
-        cli_die_status(st);
-    span->data[0] = mo->m.min, span->data[1] = mo->m.max;
-    c = cli_malloc(K * B * sizeof *c);
-    if ((st = nl_hist(span, B, edges, counts)))
+    st = nl_ensemble_hist(&src, o->bins, mo->m.min, mo->m.max, edges, counts, se, &bad);
+    if (st && bad == o->nin && st != NL_ENOMEM && st != NL_ETOOBIG)
         cli_die(nl_error_is_input(st) ? 2 : 1, "hist: the fields together: %s", nl_errmsg());
-    for (size_t k = 0; k < K; k++)
-        cli_check(nl_hist_count(x[k], edges, B, c + k * B));
-    cli_check(nl_ensemble_mean_se(c, K, B, counts, se));
-    free(c), nl_field_free(span);
+    cli_check(st);
 }
 
 /* The test against dist: thinned (analysis/gof_dep.h), or every sample as independent. */

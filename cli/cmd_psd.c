@@ -227,30 +227,29 @@ static nl_field *estimate(psd_opts *o, size_t k, const nl_field *x)
     return P;
 }
 
-/* An ensemble: the mean estimate into P (which holds the first one), and
+/* An ensemble: the mean estimate in place of *P (the first one's), and
  * the mean and standard error of the profiles into t. */
-static void ensemble(psd_opts *o, const nl_field *x0, nl_field *P, psd_table *t, size_t *cnt)
+static void ensemble(psd_opts *o, const nl_field *x0, nl_field **P, psd_table *t)
 {
-    size_t K = o->nin, nf = t->nf, dims[2] = {nf, K};
-    double *rows;
-    if (nl_size_check(2, dims, sizeof *rows, 1, NULL))
+    cli_ensemble e = {&o->src, x0};
+    nl_ensemble_source src = cli_inputs_source(&e);
+    nl_ensemble_psd_opts eo = {o->mean, o->welch};
+    nl_field *mean;
+    size_t bad;
+    int st;
+    t->se = cli_malloc((x0->n[0] + x0->n[1] + x0->n[2]) * sizeof *t->se);
+    st = nl_ensemble_psd(&src, &eo, &mean, t->freq, t->val, t->se, &t->nf, &o->nseg, &bad);
+    if (st == NL_ETOOBIG && bad == o->nin)
         cli_die(2, "psd: %zu estimates of %zu frequencies do not fit in the memory available; expected fewer inputs",
-                K, nf);
-    rows = cli_malloc(K * nf * sizeof *rows);
-    cli_check(nl_psd_profile(P, t->freq, rows, cnt, &nf));
-    for (size_t k = 1; k < K; k++) {
-        nl_field *x = cli_inputs_read(&o->src, k, x0), *Pk;
-        Pk = estimate(o, k, x);
-        cli_check(nl_psd_profile(Pk, t->freq, rows + k * nf, cnt, &nf));
-        for (size_t i = 0; i < P->count; i++)
-            P->data[i] += Pk->data[i];
-        nl_field_free(Pk), nl_field_free(x);
-    }
-    for (size_t i = 0; i < P->count; i++)
-        P->data[i] /= (double)K;
-    t->se = cli_malloc(nf * sizeof *t->se);
-    cli_check(nl_ensemble_mean_se(rows, K, nf, t->val, t->se));
-    free(rows);
+                o->nin, nl_psd_profile_size(*P));
+    if (st && bad < o->nin && o->welch)
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: --welch %zu: %s", cli_inputs_name(&o->src, bad), o->welch,
+                nl_errmsg());
+    if (st && bad < o->nin)
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s: %s", cli_inputs_name(&o->src, bad), nl_errmsg());
+    cli_check(st);
+    nl_field_free(*P);
+    *P = mean;
 }
 
 /* Under an MPI launcher with one .h5 input: the periodogram's profile
@@ -317,7 +316,7 @@ int cli_cmd_psd(int argc, char **argv)
     cnt = cli_malloc(maxn * sizeof *cnt);
     t.nf = nl_psd_profile_size(P);
     if (o.nin > 1)
-        ensemble(&o, x, P, &t, cnt);
+        ensemble(&o, x, &P, &t);
     if ((o.out && cli_has_ext(o.out, ".exr")) || o.preview)
         write_centred(&o, P);
     if (o.angular && (st = nl_psd_sectors(P, 18, 0.05, 0.45, o.sector, &o.aniso)))

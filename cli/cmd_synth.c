@@ -2,6 +2,7 @@
 #include "synth.h"
 #include "../core/field_sample.h"
 #include "../core/nl_error.h"
+#include "../core/provenance.h"
 #include "../core/version.h"
 #include "../synth/subdiv.h"
 
@@ -201,6 +202,7 @@ static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
 {
     static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
     nl_meta meta;
+    nl_provenance prov;
     char *rest;
     if (cli_is_h5(path))
         cli_check(cli_h5_read_meta(path, &meta));
@@ -215,13 +217,15 @@ static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
     if (strchr(methbuf, ' '))
         cli_die(2, "--from: %s was post-processed (\"%s\"); only synthesised fields regenerate", path, meta.method);
     job->method = methbuf;
-    job->seed = cli_parse_u64("noiselab.seed", meta.seed);
+    /* size and spacing are read as --size and --spacing are, with their checks */
+    cli_check(nl_provenance_parse(&meta, NL_PROV_SEED | NL_PROV_MODEL, &prov));
+    job->seed = prov.seed;
     snprintf(sizebuf, sizeof sizebuf, "%s", meta.size), g->size = sizebuf;
     snprintf(spbuf, sizeof spbuf, "%s", meta.spacing), g->spacing = spbuf[0] ? spbuf : NULL;
-    if (meta.model[0]) {
+    if (prov.model[0]) {
         nl_model *m;
-        cli_check(nl_model_parse(meta.model, &m));
-        snprintf(mbuf, sizeof mbuf, "%s", meta.model);
+        cli_check(nl_model_parse(prov.model, &m));
+        snprintf(mbuf, sizeof mbuf, "%s", prov.model);
         *(nl_model_is_spectral(m) ? &g->spec : &g->acf) = mbuf;
         nl_model_free(m);
     }

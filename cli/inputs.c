@@ -85,3 +85,22 @@ void cli_inputs_free(cli_inputs *in)
     nl_model_free(in->m);
     in->plan = NULL, in->m = NULL;
 }
+
+static int source_get(void *ctx, size_t k, const nl_field **out)
+{
+    cli_ensemble *e = ctx;
+    *out = k ? cli_inputs_read(e->in, k, e->first) : e->first;
+    return NL_OK;
+}
+
+static void source_put(void *ctx, size_t k, const nl_field *f)
+{
+    (void)ctx;
+    if (k)
+        nl_field_free((nl_field *)f);
+}
+
+nl_ensemble_source cli_inputs_source(cli_ensemble *e)
+{
+    return (nl_ensemble_source){.K = e->in->count, .get = source_get, .put = source_put, .ctx = e};
+}

@@ -8,6 +8,7 @@
 #define NL_CLI_INPUTS_H
 
 #include "cli.h"
+#include "../analysis/ensemble.h"
 #include "../core/model.h"
 #include "../synth/fft.h"
 
@@ -52,5 +53,15 @@ nl_field *cli_inputs_read(cli_inputs *in, size_t k, const nl_field *like);
 const char *cli_inputs_name(cli_inputs *in, size_t k);
 
 void cli_inputs_free(cli_inputs *in);
+
+/* The fields of `in` as an ensemble's source (analysis/ensemble.h): field 0
+ * is `first`, read already; field k > 0 is read when the driver asks for
+ * it, checked against `first` (cli_inputs_read), and freed when handed
+ * back.  e lives as long as the source. */
+typedef struct {
+    cli_inputs *in;         /* where the fields come from */
+    const nl_field *first;  /* field 0, the caller's */
+} cli_ensemble;
+nl_ensemble_source cli_inputs_source(cli_ensemble *e);
 
 #endif

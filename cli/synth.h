@@ -5,6 +5,7 @@
 
 #include "cli.h"
 #include "../analysis/condsim.h"
+#include "../analysis/ensemble.h"
 #include "../core/model.h"
 #include "../synth/circulant.h"
 #include "../synth/method.h"
@@ -66,7 +67,7 @@ typedef struct {
     double lo[3], hi[3];         /* --extent */
     const char *emean, *evar;    /* --ensemble-mean, --ensemble-variance, or NULL */
     const char *etmp[2];         /* their temporaries */
-    nl_field *s1, *s2;           /* running mean and sum of squared deviations (Welford) */
+    nl_welford *acc;             /* running mean and variance of the realizations */
     nl_condsim_plan *plan;       /* made by cli_synth_cond_prepare */
     nl_condsim_info info;        /* its figures */
 } cli_synth_cond;

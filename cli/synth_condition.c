@@ -176,36 +176,34 @@ void cli_synth_cond_begin(cli_synth_cond *c)
     c->etmp[1] = cli_out_begin(c->evar);
 }
 
-/* Welford's update: s1 the mean of the first k + 1, s2 their sum of squared deviations. */
+/* Realization k (from 0) into the running mean and variance. */
 void cli_synth_cond_accumulate(cli_synth_cond *c, const nl_field *f, size_t k)
 {
+    (void)k;
     if (!c->emean && !c->evar)
         return;
-    if (!c->s1)
-        c->s1 = cli_field_alloc(f->dim, f->n, f->h), c->s2 = cli_field_alloc(f->dim, f->n, f->h);
-    for (size_t i = 0; i < f->count; i++) {
-        double d = f->data[i] - c->s1->data[i];
-        c->s1->data[i] += d / (double)(k + 1);
-        c->s2->data[i] += d * (f->data[i] - c->s1->data[i]);
-    }
+    if (!c->acc)
+        cli_check(nl_welford_alloc(f->dim, f->n, f->h, &c->acc));
+    cli_check(nl_welford_add(c->acc, f));
 }
 
 void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta)
 {
     nl_meta m = *meta;
+    nl_field *var;
     if (!c->emean && !c->evar)
         return;
-    for (size_t i = 0; i < c->s2->count; i++) /* the unbiased variance, divisor K - 1 */
-        c->s2->data[i] = c->K > 1 ? c->s2->data[i] / (double)(c->K - 1) : 0;
+    cli_check(nl_welford_variance(c->acc, &var)); /* unbiased, divisor K - 1 */
     m.seed[0] = 0, m.flags[0] = 0;
     snprintf(m.method, sizeof m.method, "ensemble mean of %zu conditional realizations (data=%s,extent=%s)", c->K,
              c->data, c->extent);
     if (c->emean)
-        cli_check(nl_exr_write(c->etmp[0], c->s1, &m));
+        cli_check(nl_exr_write(c->etmp[0], nl_welford_mean(c->acc), &m));
     snprintf(m.method, sizeof m.method, "ensemble variance of %zu conditional realizations (data=%s,extent=%s)",
              c->K, c->data, c->extent);
     if (c->evar)
-        cli_check(nl_exr_write(c->etmp[1], c->s2, &m));
+        cli_check(nl_exr_write(c->etmp[1], var, &m));
+    nl_field_free(var);
     cli_out_commit(c->emean);
     cli_out_commit(c->evar);
 }
@@ -213,5 +211,5 @@ void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta)
 void cli_synth_cond_free(cli_synth_cond *c)
 {
     nl_condsim_plan_free(c->plan);
-    nl_field_free(c->s1), nl_field_free(c->s2);
+    nl_welford_free(c->acc);
 }

@@ -1,27 +1,27 @@
 /* What a synthesised field records of itself: its provenance (the EXR and
  * HDF5 attributes, TSV comments) and synth --json's object. */
 #include "synth.h"
+#include "../core/provenance.h"
 #include "../core/version.h"
 
-#include <inttypes.h>
 #include <stdio.h>
 #include <string.h>
 
 void cli_synth_fill_meta(const cli_synth_job *job, const nl_field *f, const cli_synth_result *res, nl_meta *meta)
 {
-    memset(meta, 0, sizeof *meta);
-    snprintf(meta->model, sizeof meta->model, "%s", job->m ? nl_model_spec(job->m) : "");
-    snprintf(meta->method, sizeof meta->method, "%s", res->method);
-    snprintf(meta->flags, sizeof meta->flags, "%s", res->flags);
-    snprintf(meta->seed, sizeof meta->seed, "%" PRIu64, job->seed);
-    snprintf(meta->version, sizeof meta->version, "%s", nl_version());
-    for (int a = 0, k = 0, l = 0; a < job->dim; a++) {
-        k += snprintf(meta->spacing + k, sizeof meta->spacing - (size_t)k, "%s%.17g", a ? "," : "", f->h[a]);
-        l += snprintf(meta->size + l, sizeof meta->size - (size_t)l, "%s%zu", a ? "x" : "", job->n[a]);
-    }
+    nl_provenance p;
+    nl_provenance_init(&p);
+    snprintf(p.model, sizeof p.model, "%s", job->m ? nl_model_spec(job->m) : "");
+    snprintf(p.method, sizeof p.method, "%s", res->method);
+    snprintf(p.flags, sizeof p.flags, "%s", res->flags);
+    snprintf(p.version, sizeof p.version, "%s", nl_version());
+    p.seed = job->seed, p.has_seed = 1;
+    p.dim = p.nspacing = job->dim;
+    for (int a = 0; a < job->dim; a++)
+        p.n[a] = job->n[a], p.h[a] = f->h[a];
     if (job->nonperiodic || (!job->wrap && (job->origin[0] || job->origin[1]))) /* a window: where it starts */
-        snprintf(meta->origin, sizeof meta->origin, job->dim == 1 ? "%ld" : "%ld,%ld", job->origin[0],
-                 job->origin[1]);
+        p.norigin = job->dim == 1 ? 1 : 2, p.origin[0] = job->origin[0], p.origin[1] = job->origin[1];
+    cli_check(nl_provenance_format(&p, meta));
 }
 
 json_t *cli_synth_json(const cli_synth_job *job, const nl_meta *meta, const cli_synth_result *res)

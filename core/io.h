@@ -32,7 +32,8 @@ extern "C" {
 #include <stdint.h>
 #include <stdio.h>
 
-/* Provenance stored with a field; empty strings are not written. */
+/* Provenance stored with a field, as key/value text; empty strings are not
+ * written.  core/provenance.h formats and parses it (nl_provenance). */
 typedef struct {
     char model[1024];   /* noiselab.model: the model spec */
     char method[256];   /* noiselab.method: synthesis method and its parameters */

@@ -2,6 +2,7 @@
  * OpenEXRCore C API. */
 #include "io.h"
 #include "io_read_internal.h"
+#include "provenance.h"
 #include "nl_error.h"
 
 #include <openexr.h>
@@ -21,7 +22,7 @@ static void quiet_handler(exr_const_context_t ctxt, exr_result_t code, const cha
 /* The EXR attribute of provenance field i: "noiselab." and its key. */
 static const char *attr_name(int i, char *buf, size_t len)
 {
-    snprintf(buf, len, "noiselab.%s", nl_meta_field_table()[i].key);
+    snprintf(buf, len, "noiselab.%s", nl_meta_key(i));
     return buf;
 }
 
@@ -65,8 +66,8 @@ int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta)
         rv = exr_initialize_required_attr_simple(ctx, part, w, h, EXR_COMPRESSION_NONE);
     if (!rv)
         rv = exr_add_channel(ctx, part, "Y", EXR_PIXEL_FLOAT, EXR_PERCEPTUALLY_LINEAR, 1, 1);
-    for (int i = 0; meta && i < NL_META_NFIELDS && !rv; i++) {
-        const char *s = (const char *)meta + nl_meta_field_table()[i].off;
+    for (int i = 0; meta && i < NL_META_NKEYS && !rv; i++) {
+        const char *s = nl_meta_value(meta, i);
         char name[64];
         if (*s)
             rv = exr_attr_set_string(ctx, part, attr_name(i, name, sizeof name), s);
@@ -283,12 +284,12 @@ int nl_exr_read_mem(const char *path, const unsigned char *file, size_t len, nl_
         exr_finish(&ctx);
         return NL_ERROR(NL_EINPUT, "%s: EXR data window is empty", path);
     }
-    for (int i = 0; i < NL_META_NFIELDS; i++) {
+    for (int i = 0; i < NL_META_NKEYS; i++) {
         const char *s = NULL;
         char name[64];
         int32_t len = 0;
         if (exr_attr_get_string(ctx, 0, attr_name(i, name, sizeof name), &len, &s) == EXR_ERR_SUCCESS && s)
-            snprintf((char *)&m + nl_meta_field_table()[i].off, nl_meta_field_table()[i].len, "%.*s", (int)len, s);
+            snprintf(nl_meta_slot(&m, i), nl_meta_capacity(i), "%.*s", (int)len, s);
     }
     if ((st = layout(path, &m, w, hh, &dim, n, h))) {
         exr_finish(&ctx);

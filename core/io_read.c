@@ -83,14 +83,6 @@ int nl_io_slurp(const char *path, unsigned char **buf, size_t *len)
     return st;
 }
 
-#define FIELD(k) {#k, offsetof(nl_meta, k), sizeof(((nl_meta *)0)->k)}
-static const nl_meta_field meta_fields[NL_META_NFIELDS] = {
-    FIELD(model), FIELD(method), FIELD(seed), FIELD(spacing), FIELD(size), FIELD(version), FIELD(flags), FIELD(origin),
-};
-
-const nl_meta_field *nl_meta_field_table(void) { return meta_fields; }
-#undef FIELD
-
 /* A TSV table in memory, through a stream (the parser reads lines). */
 static int tsv_mem(const char *path, unsigned char *buf, size_t len, nl_field **out, nl_meta *meta)
 {

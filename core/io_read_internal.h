@@ -18,22 +18,9 @@
  * (nl_mem_available), NL_ENOMEM.  Thread-safe. */
 int nl_io_slurp(const char *path, unsigned char **buf, size_t *len);
 
-/* The provenance fields of nl_meta, in the order files record them: the
- * key (EXR attribute "noiselab.KEY", TSV comment line "# KEY: value"), the
- * offset of its string in nl_meta and the string's capacity. */
-typedef struct {
-    const char *key; /* "model", "method", ... */
-    size_t off;      /* offsetof(nl_meta, ...) */
-    size_t len;      /* sizeof the field */
-} nl_meta_field;
-/* The table (NL_META_NFIELDS entries); a function, not an exported array,
- * so that no data symbol leaves the library's namespace rules. */
-const nl_meta_field *nl_meta_field_table(void);
-
 /* One tab-separated row of exactly cols finite numbers into v (ending at
  * the line's end); 0 when the line is not that (core/io_points.c). */
 int nl_tsv_row(const char *line, size_t cols, double *v);
-enum { NL_META_NFIELDS = 8 };
 
 /* The readers of io.h on a file already in memory (`path` only names it in
  * messages); same results and codes. */

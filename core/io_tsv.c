@@ -1,6 +1,7 @@
 /* TSV tables: write columns, write and read a 1D field with its provenance. */
 #include "io.h"
 #include "io_read_internal.h"
+#include "provenance.h"
 #include "nl_error.h"
 
 #include <errno.h>
@@ -43,12 +44,12 @@ int nl_tsv_write(const char *path, const char *comment, int ncols, const char *c
  * character in a value (a path with a newline) is written as a space. */
 static void write_meta(FILE *fp, const nl_meta *meta)
 {
-    for (int i = 0; meta && i < NL_META_NFIELDS; i++) {
-        const char *v = (const char *)meta + nl_meta_field_table()[i].off;
-        size_t n = strnlen(v, nl_meta_field_table()[i].len);
+    for (int i = 0; meta && i < NL_META_NKEYS; i++) {
+        const char *v = nl_meta_value(meta, i);
+        size_t n = strnlen(v, nl_meta_capacity(i));
         if (!n)
             continue;
-        fprintf(fp, "# %s: ", nl_meta_field_table()[i].key);
+        fprintf(fp, "# %s: ", nl_meta_key(i));
         for (size_t k = 0; k < n; k++)
             fputc((unsigned char)v[k] < 0x20 ? ' ' : v[k], fp);
         fputc('\n', fp);
@@ -97,11 +98,11 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
  * is one of nl_meta's; anything else is a comment. */
 static void read_meta_line(const char *line, nl_meta *meta)
 {
-    for (int i = 0; i < NL_META_NFIELDS; i++) {
-        size_t k = strlen(nl_meta_field_table()[i].key);
-        if (line[1] == ' ' && strncmp(line + 2, nl_meta_field_table()[i].key, k) == 0 && line[2 + k] == ':' && line[3 + k] == ' ') {
+    for (int i = 0; i < NL_META_NKEYS; i++) {
+        size_t k = strlen(nl_meta_key(i));
+        if (line[1] == ' ' && strncmp(line + 2, nl_meta_key(i), k) == 0 && line[2 + k] == ':' && line[3 + k] == ' ') {
             const char *v = line + 4 + k;
-            snprintf((char *)meta + nl_meta_field_table()[i].off, nl_meta_field_table()[i].len, "%.*s", (int)strcspn(v, "\r\n"), v);
+            snprintf(nl_meta_slot(meta, i), nl_meta_capacity(i), "%.*s", (int)strcspn(v, "\r\n"), v);
             return;
         }
     }

@@ -3,29 +3,13 @@
 #include "dist.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
+#include "../core/provenance.h"
 
 #include <hdf5.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static const char *const meta_key[] = {"model", "method", "seed", "spacing", "size", "version", "flags", "origin"};
-enum { NKEYS = 8 };
-
-static char *meta_field(nl_meta *m, int k)
-{
-    char *f[NKEYS] = {m->model, m->method, m->seed, m->spacing, m->size, m->version, m->flags, m->origin};
-    return f[k];
-}
-
-static size_t meta_len(int k)
-{
-    nl_meta m;
-    size_t len[NKEYS] = {sizeof m.model, sizeof m.method, sizeof m.seed, sizeof m.spacing, sizeof m.size,
-                         sizeof m.version, sizeof m.flags, sizeof m.origin};
-    return len[k];
-}
 
 static void quiet(void) { H5Eset_auto2(H5E_DEFAULT, NULL, NULL); }
 
@@ -54,15 +38,15 @@ static int write_attrs(hid_t d, const nl_meta *meta, int processes)
 {
     hid_t sp = H5Screate(H5S_SCALAR), a;
     int bad = sp < 0;
-    for (int k = 0; meta && !bad && k < NKEYS; k++) {
-        const char *v = meta_field((nl_meta *)meta, k);
+    for (int k = 0; meta && !bad && k < NL_META_NKEYS; k++) {
+        const char *v = nl_meta_value(meta, k);
         hid_t t;
         if (!*v)
             continue;
         /* variable-length UTF-8: h5py reads them as str */
         t = H5Tcopy(H5T_C_S1);
         bad = t < 0 || H5Tset_size(t, H5T_VARIABLE) < 0 || H5Tset_cset(t, H5T_CSET_UTF8) < 0;
-        if (!bad && (a = H5Acreate2(d, meta_key[k], t, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0) {
+        if (!bad && (a = H5Acreate2(d, nl_meta_key(k), t, sp, H5P_DEFAULT, H5P_DEFAULT)) >= 0) {
             bad = H5Awrite(a, t, &v) < 0;
             H5Aclose(a);
         } else {
@@ -172,28 +156,28 @@ int nl_mpi_h5_is_hdf5(const char *path)
 static void read_attrs(hid_t d, nl_meta *meta)
 {
     memset(meta, 0, sizeof *meta);
-    for (int k = 0; k < NKEYS; k++) {
+    for (int k = 0; k < NL_META_NKEYS; k++) {
         hid_t a, t, mt;
-        if (H5Aexists(d, meta_key[k]) <= 0 || (a = H5Aopen(d, meta_key[k], H5P_DEFAULT)) < 0)
+        if (H5Aexists(d, nl_meta_key(k)) <= 0 || (a = H5Aopen(d, nl_meta_key(k), H5P_DEFAULT)) < 0)
             continue;
         t = H5Aget_type(a);
         if (t >= 0 && H5Tget_class(t) == H5T_STRING && H5Tis_variable_str(t) > 0) {
-            char *s = NULL, *v = meta_field(meta, k);
+            char *s = NULL, *v = nl_meta_slot(meta, k);
             mt = H5Tcopy(H5T_C_S1);
             H5Tset_size(mt, H5T_VARIABLE);
             H5Tset_cset(mt, H5Tget_cset(t));
             if (H5Aread(a, mt, &s) >= 0 && s)
-                snprintf(v, meta_len(k), "%s", s);
+                snprintf(v, nl_meta_capacity(k), "%s", s);
             H5free_memory(s);
             H5Tclose(mt);
-        } else if (t >= 0 && H5Tget_class(t) == H5T_STRING && H5Tget_size(t) < meta_len(k)) {
-            char *v = meta_field(meta, k);
+        } else if (t >= 0 && H5Tget_class(t) == H5T_STRING && H5Tget_size(t) < nl_meta_capacity(k)) {
+            char *v = nl_meta_slot(meta, k);
             mt = H5Tcopy(t);
-            H5Tset_size(mt, meta_len(k) - 1);
+            H5Tset_size(mt, nl_meta_capacity(k) - 1);
             H5Tset_strpad(mt, H5T_STR_NULLTERM);
             if (H5Aread(a, mt, v) < 0)
                 v[0] = 0;
-            v[meta_len(k) - 1] = 0;
+            v[nl_meta_capacity(k) - 1] = 0;
             H5Tclose(mt);
         }
         if (t >= 0)

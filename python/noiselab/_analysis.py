@@ -28,6 +28,26 @@ def _owned(out_pp):
     return owned_field(out_pp[0])
 
 
+def _lags(x, axis, radial, max_lag, grid=None):
+    """acf's axis index and number of lags for field x (acf's checks)."""
+    if axis not in _AXES or _AXES[axis] >= x.dim:
+        raise Error('axis: the field is %dD, got axis "%s"' % (x.dim, axis))
+    ax = _AXES[axis]
+    if radial and x.dim == 1:
+        raise Error("radial: expected a 2D or 3D field, got 1D")
+    if grid not in (None, "wrapped", "centred"):
+        raise Error('grid: expected None, "wrapped" or "centred", got %r' % (grid,))
+    n_ax, h_ax = int(x.n[ax]), float(x.h[ax])
+    if max_lag is None:
+        nl = n_ax // 4
+    else:
+        ml = float(max_lag)
+        if not (ml >= 0 and ml / h_ax < n_ax) or math.floor(ml / h_ax + 1e-9) >= n_ax:
+            raise Error("max_lag: expected at most %g for %d samples, got %g" % ((n_ax - 1) * h_ax, n_ax, ml))
+        nl = int(math.floor(ml / h_ax + 1e-9))
+    return ax, nl + 1
+
+
 def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False, mean=None, target=None,
         grid=None):
     """Autocorrelation (autocovariance) estimate of a field, as ``noiselab acf``.
@@ -52,22 +72,7 @@ def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False
     """
     v = FieldView(field, spacing, "acf")
     x = v.f
-    if axis not in _AXES or _AXES[axis] >= x.dim:
-        raise Error('axis: the field is %dD, got axis "%s"' % (x.dim, axis))
-    ax = _AXES[axis]
-    if radial and x.dim == 1:
-        raise Error("radial: expected a 2D or 3D field, got 1D")
-    if grid not in (None, "wrapped", "centred"):
-        raise Error('grid: expected None, "wrapped" or "centred", got %r' % (grid,))
-    n_ax, h_ax = int(x.n[ax]), float(x.h[ax])
-    if max_lag is None:
-        nl = n_ax // 4
-    else:
-        ml = float(max_lag)
-        if not (ml >= 0 and ml / h_ax < n_ax) or math.floor(ml / h_ax + 1e-9) >= n_ax:
-            raise Error("max_lag: expected at most %g for %d samples, got %g" % ((n_ax - 1) * h_ax, n_ax, ml))
-        nl = int(math.floor(ml / h_ax + 1e-9))
-    nl += 1
+    ax, nl = _lags(x, axis, radial, max_lag, grid)
     full = ffi.new("nl_field **")
     with planner:
         check(lib.nl_acf_full(x, _mean(mean), 1 if unbiased else 0, full))

@@ -41,6 +41,27 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
                        const double *t);
 int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
 
+/* core/provenance.h */
+enum { NL_META_NKEYS = 8 };
+typedef struct {
+    char model[1024];
+    char method[256];
+    char flags[256];
+    char version[32];
+    uint64_t seed;
+    int has_seed;
+    int dim;
+    size_t n[3];
+    int nspacing;
+    double h[3];
+    int norigin;
+    long origin[2];
+} nl_provenance;
+const char *nl_meta_key(int i);
+void nl_provenance_init(nl_provenance *p);
+int nl_provenance_format(const nl_provenance *p, nl_meta *kv);
+int nl_provenance_parse(const nl_meta *kv, unsigned keys, nl_provenance *p);
+
 /* core/model.h */
 typedef struct nl_model nl_model;
 int nl_model_parse(const char *spec, nl_model **out);
@@ -396,6 +417,34 @@ typedef struct {
 } nl_moments;
 int nl_moments_compute(const nl_field *x, nl_moments *m);
 int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
+
+/* analysis/ensemble.h */
+typedef struct {
+    size_t K;
+    const nl_field *const *fields;
+    int (*get)(void *ctx, size_t k, const nl_field **out);
+    void (*put)(void *ctx, size_t k, const nl_field *f);
+    void *ctx;
+} nl_ensemble_source;
+typedef struct {
+    double mean;
+    int unbiased;
+    int axis;
+    int radial;
+    int direct;
+    size_t nlag;
+} nl_ensemble_acf_opts;
+typedef struct {
+    double mean;
+    size_t welch;
+} nl_ensemble_psd_opts;
+int nl_ensemble_acf(const nl_ensemble_source *src, const nl_ensemble_acf_opts *o, double *lag, double *acf,
+                    double *se, size_t *bad);
+int nl_ensemble_psd(const nl_ensemble_source *src, const nl_ensemble_psd_opts *o, nl_field **P, double *freq,
+                    double *psd, double *se, size_t *nf, size_t *segments, size_t *bad);
+int nl_ensemble_moments(const nl_ensemble_source *src, nl_moments *mean, nl_moments *se, size_t *bad);
+int nl_ensemble_hist(const nl_ensemble_source *src, size_t bins, double lo, double hi, double *edges,
+                     double *counts, double *se, size_t *bad);
 
 /* analysis/check.h */
 typedef struct {

@@ -5,8 +5,8 @@ import numpy as np
 
 from ._ffi import Error, FieldView, check, cstr, ffi, h5lib, lib, owned_field
 
-# nl_meta's fields (core/io.h), in its order.
-META_KEYS = ("model", "method", "seed", "spacing", "size", "version", "flags", "origin")
+# nl_meta's keys (core/provenance.h), in the order files record them.
+META_KEYS = tuple(ffi.string(lib.nl_meta_key(i)).decode() for i in range(lib.NL_META_NKEYS))
 _FLT_MAX = float(np.finfo(np.float32).max)
 
 
@@ -40,6 +40,20 @@ def read(path, meta=False):
     return arr, d
 
 
+def _auto_provenance(f):
+    """What the library records of field f itself: size, spacing and this
+    library's version, as nl_provenance_format writes them."""
+    p = ffi.new("nl_provenance *")
+    kv = ffi.new("nl_meta *")
+    lib.nl_provenance_init(p)
+    p.version = ffi.string(lib.nl_version())
+    p.dim = p.nspacing = f.dim
+    for a in range(f.dim):
+        p.n[a], p.h[a] = f.n[a], f.h[a]
+    check(lib.nl_provenance_format(p, kv))
+    return {k: ffi.string(getattr(kv, k)).decode() for k in ("size", "spacing", "version")}
+
+
 def write(path, array, spacing=1.0, precision="single", **provenance):
     """Write a field: EXR (path ending in .exr: 32-bit float samples, rounded
     to nearest, any dimension), HDF5 (.h5: dataset /field, float32 or with
@@ -66,9 +80,7 @@ def write(path, array, spacing=1.0, precision="single", **provenance):
     v = FieldView(array, spacing, "write")
     f = v.f
     m = ffi.new("nl_meta *")
-    auto = dict(version=ffi.string(lib.nl_version()).decode(),
-                size="x".join(str(int(f.n[a])) for a in range(f.dim)),
-                spacing=",".join("%.17g" % f.h[a] for a in range(f.dim)))
+    auto = _auto_provenance(f)
     for k in META_KEYS:
         s = provenance.get(k) if k in keys else None
         s = auto.get(k, "") if s is None else str(s)
