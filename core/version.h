@@ -3,7 +3,7 @@
  * `noiselab --version`), so they cannot disagree.
  *
  * The soname changes with NL_VERSION_MAJOR: a program linked against
- * libnoiselab.so.0 runs with any 0.y.z. */
+ * libnoiselab.so.1 runs with any 1.y.z. */
 #ifndef NL_VERSION_H
 #define NL_VERSION_H
 
@@ -11,8 +11,8 @@
 extern "C" {
 #endif
 
-#define NL_VERSION_MAJOR 0
-#define NL_VERSION_MINOR 2
+#define NL_VERSION_MAJOR 1
+#define NL_VERSION_MINOR 0
 #define NL_VERSION_PATCH 0
 
 #define NL_VERSION_STR_(x) #x

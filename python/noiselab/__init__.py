@@ -16,7 +16,7 @@ Errors raise noiselab.Error (a ValueError) with the library's one-line
 message.  cffi releases the GIL around every C call: threads run in
 parallel, and one Plan may be called from several threads.  The library is
 found through $NOISELAB_LIB, then the build/ folder of the source tree next
-to this package, then the installed libnoiselab.so.0.
+to this package, then the installed libnoiselab.so.1.
 """
 from ._ffi import LIBRARY_PATH, Error
 from ._synth import METHODS, Plan, methods, synth

@@ -15,7 +15,7 @@ ffi = FFI()
 ffi.cdef(CDEF)
 
 #: The soname's major version (core/version.h NL_VERSION_MAJOR).
-SOVERSION = 0
+SOVERSION = 1
 
 _here = os.path.dirname(os.path.abspath(__file__))
 
