@@ -33,6 +33,7 @@ extern "C" {
 #include "noiselab/core/field.h"
 #include "noiselab/core/field_stats.h"
 #include "noiselab/core/mem.h"
+#include "noiselab/core/family.h"
 #include "noiselab/core/model.h"
 #include "noiselab/core/dist.h"
 #include "noiselab/core/rng.h"
