@@ -79,9 +79,24 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
                             mp->levels, mp->vscale, mp->miller ? ",interpolant=miller" : "");
 }
 
+static int report(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f, nl_method_report *r)
+{
+    const nl_midpoint_method_plan *mp = p->impl;
+    nl_subdiv_info info;
+    (void)m, (void)seed, (void)f;
+    if (mp->miller)
+        return nl_method_json(r, "{\"H\": %s, \"levels\": %d, \"variance_scale\": %s, \"interpolant\": \"miller\"}",
+                              NL_METHOD_REAL(mp->H), mp->levels, NL_METHOD_REAL(mp->vscale));
+    nl_subdiv_plan_info(mp->plan, &info);
+    r->sd = sqrt(info.variance);
+    return nl_method_json(r, "{\"H\": %s, \"levels\": %d, \"variance_scale\": %s}", NL_METHOD_REAL(mp->H),
+                          info.levels, NL_METHOD_REAL(mp->vscale));
+}
+
 const nl_method_type nl_method_midpoint = {
     .name = "midpoint",
     .summary = "midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours only",
+    .noun = "midpoint displacement",
     .help =
         "midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
         "only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
@@ -94,5 +109,5 @@ const nl_method_type nl_method_midpoint = {
     .caps = NL_METHOD_MODEL,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),
     .model_conflict = "give either --H or a power-law model, not both",
-    .plan = plan, .execute = execute, .describe = describe, .free = plan_free,
+    .plan = plan, .execute = execute, .describe = describe, .report = report, .free = plan_free,
 };

@@ -7,6 +7,7 @@
 #include "../core/nl_error.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 typedef struct {
@@ -153,9 +154,35 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
     return st;
 }
 
+/* Flags: a clamped spectrum, and a kernel that loses more than TRUNC_FLAG
+ * of its energy at the radius (the variance is then R(0) less that
+ * fraction; the report gives it as truncated_energy). */
+#define TRUNC_FLAG 1e-3
+
+static int report(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f, nl_method_report *r)
+{
+    nl_synth_sparse_info i;
+    int k = 0, st;
+    (void)m, (void)seed, (void)f;
+    nl_synth_sparse_plan_info(p->impl, &i);
+    if (i.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
+        k = snprintf(r->flags, sizeof r->flags, "clamped");
+    if (i.truncated > TRUNC_FLAG)
+        snprintf(r->flags + k, sizeof r->flags - (size_t)k, "%struncated=%.2g", k ? "," : "", i.truncated);
+    r->sd = sqrt(i.variance);
+    r->offset = i.mean;
+    st = nl_method_json(r, "{\"radius\": %d, \"cell\": %d, \"density\": %s, \"variance\": %s, \"excess_kurtosis\": %s, "
+                        "\"truncated_energy\": %s", i.radius, i.cell, NL_METHOD_REAL(i.density),
+                        NL_METHOD_REAL(i.variance), NL_METHOD_REAL(i.kurtosis), NL_METHOD_REAL(i.truncated));
+    if (!st && i.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
+        st = nl_method_json(r, ", \"clamp_error\": %s", NL_METHOD_REAL(i.clamp_error));
+    return st ? st : nl_method_json(r, "}");
+}
+
 const nl_method_type nl_method_sparse = {
     .name = "sparse",
     .summary = "sparse convolution (Lewis GI '86): Poisson impulses in cells convolved with a kernel",
+    .noun = "sparse convolution",
     .help =
         "sparse convolution (Lewis GI '86): Poisson impulses in cells, convolved with\n"
         "a kernel: the model's (R = h * h), --kernel EXPR in x, y (t, r), or --exemplar\n"
@@ -166,9 +193,10 @@ const nl_method_type nl_method_sparse = {
         "kurtosis 3 sum h^4 / (lambda (sum h^2)^2); a kernel losing more than 1e-3\n"
         "of its energy at the radius is flagged truncated=FRACTION",
     .dims = 3,
-    .caps = NL_METHOD_MODEL | NL_METHOD_WINDOW | NL_METHOD_DISTRIBUTED | NL_METHOD_CLAMP,
+    .caps = NL_METHOD_MODEL | NL_METHOD_WINDOW | NL_METHOD_DISTRIBUTED | NL_METHOD_CLAMP | NL_METHOD_VALIDATED,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),
     .model_conflict = "expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE",
     .model_missing = "expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE",
-    .plan = plan, .execute = execute, .execute_slab = execute_slab, .describe = describe, .free = plan_free,
+    .plan = plan, .execute = execute, .execute_slab = execute_slab, .describe = describe, .report = report,
+    .free = plan_free,
 };

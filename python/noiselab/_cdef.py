@@ -301,7 +301,8 @@ void nl_synth_lattice_wiener_plan_free(nl_synth_lattice_wiener_plan *p);
 enum {
     NL_METHOD_MODEL = 1, NL_METHOD_NO_MODEL = 2, NL_METHOD_PERIODIC = 4, NL_METHOD_WINDOW = 8,
     NL_METHOD_DISTRIBUTED = 16, NL_METHOD_CONDITIONABLE = 32, NL_METHOD_EXACT = 64, NL_METHOD_CLAMP = 128,
-    NL_METHOD_SERIAL = 256
+    NL_METHOD_SERIAL = 256, NL_METHOD_TORUS = 512, NL_METHOD_EMBEDDING = 1024,
+    NL_METHOD_VALIDATED = 2048, NL_METHOD_SUBDIVISION = 4096
 };
 enum {
     NL_METHOD_OPEN = 1, NL_METHOD_REPLACES_MODEL = 2, NL_METHOD_FILE = 4, NL_METHOD_SUFFIX = 8,
@@ -341,9 +342,17 @@ typedef struct {
     long origin[2];
 } nl_method_grid;
 typedef struct nl_method_plan nl_method_plan;
+typedef struct {
+    char method[4096];
+    char flags[256];
+    double sd;
+    double offset;
+    char json[8192];
+} nl_method_report;
 struct nl_method_type {
     const char *name;
     const char *summary;
+    const char *noun;
     const char *help;
     unsigned dims;
     unsigned caps;
@@ -355,6 +364,8 @@ struct nl_method_type {
     int (*execute)(nl_method_plan *p, uint64_t seed, nl_field *f);
     int (*execute_slab)(nl_method_plan *p, uint64_t seed, size_t s0, nl_field *f);
     int (*describe)(const nl_method_plan *p, char *buf, size_t size);
+    int (*report)(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f,
+                  nl_method_report *r);
     void (*free)(nl_method_plan *p);
 };
 int nl_method_count(void);
@@ -367,6 +378,8 @@ int nl_method_plan_alloc(const nl_method_type *t, const nl_model *m, const nl_me
                          const nl_method_options *o, nl_method_plan **out);
 int nl_method_execute(nl_method_plan *p, uint64_t seed, nl_field *f);
 int nl_method_describe(const nl_method_plan *p, char *buf, size_t size);
+int nl_method_report_of(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f,
+                        nl_method_report *r);
 void *nl_method_plan_impl(const nl_method_plan *p);
 void nl_method_plan_free(nl_method_plan *p);
 typedef struct {
