@@ -46,9 +46,9 @@ static int plan_perlin(const nl_model *m, const nl_method_grid *g, const nl_meth
                                              : nl_synth_lattice_default_cell(g->n);
     lp->octaves = nl_method_opt_set(o, "octaves") ? (int)nl_method_opt_int(o, "octaves")
                                                    : nl_synth_lattice_default_octaves(lp->cell0);
-    if ((st = nl_synth_lattice_check_grid(m, g->dim, g->n, (fl & NL_SYNTH_LATTICE_CLAMP) != 0, &lp->grid_clamp_error)))
+    if ((st = nl_synth_lattice_check_grid(m, g->dim, g->n, fl, &lp->grid_clamp_error)))
         return st;
-    return nl_synth_lattice_plan_init_flags(m, g->dim, lp->cell0, lp->octaves, fl, &lp->perlin);
+    return nl_synth_lattice_plan_init(m, g->dim, lp->cell0, lp->octaves, fl, &lp->perlin);
 }
 
 static void plan_free(nl_method_plan *p)

@@ -46,7 +46,7 @@ static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_opti
     if (isnan(mp.H) && (st = nl_subdiv_midpoint_hurst(m, g->dim, &mp.H)))
         return st;
     if (mp.miller && !mp.levels)
-        mp.levels = nl_midpoint_miller_default_levels(g->dim, g->n);
+        mp.levels = nl_synth_midpoint_miller_default_levels(g->dim, g->n);
     if (!mp.miller) {
         if ((st = nl_subdiv_plan_alloc_midpoint(g->dim, g->n, g->h[0], mp.levels, mp.H, 1.0, mp.vscale, &mp.plan)))
             return st;
@@ -67,7 +67,7 @@ static int execute(nl_method_plan *p, uint64_t seed, nl_field *f)
 {
     const nl_midpoint_method_plan *mp = p->impl;
     if (mp->miller)
-        return nl_midpoint_miller(mp->levels, mp->H, 1.0, mp->vscale, seed, f);
+        return nl_synth_midpoint_miller(mp->levels, mp->H, 1.0, mp->vscale, seed, f);
     return nl_subdiv_plan_execute(mp->plan, seed, f);
 }
 

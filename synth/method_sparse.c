@@ -43,14 +43,14 @@ static int model_plan(const nl_model *m, const nl_method_grid *g, const nl_metho
     double density = nl_method_opt_double(o, "density");
     if ((o->flags & NL_METHOD_OPT_RECORDED) && radius) {
         nl_synth_sparse_info info;
-        if (!nl_synth_sparse_plan_model_flags(m, g->dim, g->h, 0, cell, density, fl, p)) {
+        if (!nl_synth_sparse_plan_model(m, g->dim, g->h, &(nl_synth_sparse_options){0, cell, density, fl}, p)) {
             nl_synth_sparse_plan_info(*p, &info);
             if (info.radius == radius)
                 return NL_OK;
             nl_synth_sparse_plan_free(*p);
         }
     }
-    return nl_synth_sparse_plan_model_flags(m, g->dim, g->h, radius, cell, density, fl, p);
+    return nl_synth_sparse_plan_model(m, g->dim, g->h, &(nl_synth_sparse_options){radius, cell, density, fl}, p);
 }
 
 static int exemplar_plan(sparse_plan *sp, const nl_method_grid *g, const nl_method_options *o)
@@ -64,8 +64,9 @@ static int exemplar_plan(sparse_plan *sp, const nl_method_grid *g, const nl_meth
     if (g->dim != 2)
         return NL_ERROR(NL_EINVAL, "--exemplar: expected a 2D image and a 2D --size, got %dD %s and a %dD --size",
                         img->dim, v->s, g->dim);
-    return nl_synth_sparse_plan_exemplar(img, (int)nl_method_opt_int(o, "radius"), (int)nl_method_opt_int(o, "cell"),
-                                         nl_method_opt_double(o, "density"), (nl_synth_sparse_plan **)&sp->head.impl);
+    return nl_synth_sparse_plan_exemplar(img, &(nl_synth_sparse_options){(int)nl_method_opt_int(o, "radius"),
+                                         (int)nl_method_opt_int(o, "cell"), nl_method_opt_double(o, "density"), 0},
+                                         (nl_synth_sparse_plan **)&sp->head.impl);
 }
 
 static int kernel_plan(sparse_plan *sp, const nl_model *m, const nl_method_grid *g, const nl_method_options *o)
@@ -79,13 +80,14 @@ static int kernel_plan(sparse_plan *sp, const nl_model *m, const nl_method_grid 
                         "or --exemplar FILE");
     /* an explicit radius: the work is known before the kernel is made */
     if ((radius || kernel) &&
-        (st = nl_synth_sparse_check_work(g->dim, g->n, radius ? radius : EXPR_RADIUS, cell, density, angle != NULL)))
+        (st = nl_synth_sparse_check_work(g->dim, g->n, radius ? radius : EXPR_RADIUS, cell, density,
+                                               angle ? NL_SYNTH_SPARSE_ANGLE : 0)))
         return st;
     if (m)
         st = model_plan(m, g, o, (nl_synth_sparse_plan **)&sp->head.impl);
     else if (kernel)
-        st = nl_synth_sparse_plan_expr(kernel, g->dim, radius ? radius : EXPR_RADIUS, cell, density,
-                                       (nl_synth_sparse_plan **)&sp->head.impl);
+        st = nl_synth_sparse_plan_expr(kernel, g->dim, &(nl_synth_sparse_options){radius ? radius : EXPR_RADIUS, cell,
+                                       density, 0}, (nl_synth_sparse_plan **)&sp->head.impl);
     else
         st = exemplar_plan(sp, g, o);
     if (!st && angle)
@@ -117,14 +119,14 @@ static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_opti
 static int execute(nl_method_plan *p, uint64_t seed, nl_field *f)
 {
     int wrap = (int)nl_method_opt_int(&p->opt, "wrap");
-    return nl_synth_sparse_execute(p->impl, seed, wrap, wrap ? NULL : p->grid.origin, f);
+    return nl_synth_sparse_execute(p->impl, seed, wrap ? NL_SYNTH_SPARSE_WRAP : 0, wrap ? NULL : p->grid.origin, f);
 }
 
 static int execute_slab(nl_method_plan *p, uint64_t seed, size_t s0, nl_field *f)
 {
     long o[2] = {p->grid.origin[0], p->grid.origin[1]};
     if (nl_method_opt_int(&p->opt, "wrap"))
-        return nl_synth_sparse_execute_slab(p->impl, seed, 1, p->grid.n, s0, f);
+        return nl_synth_sparse_execute_slab(p->impl, seed, NL_SYNTH_SPARSE_WRAP, p->grid.n, s0, f);
     o[p->grid.dim - 1] += (long)s0;
     return nl_synth_sparse_execute(p->impl, seed, 0, o, f);
 }
