@@ -5,30 +5,86 @@
 #include "subdiv_exact.h"
 #include "verdict.h"
 #include "../core/nl_error.h"
-#include "../synth/circulant.h"
-#include "../synth/fft.h"
-#include "../synth/sparse.h"
+#include "../synth/method.h"
 #include "../synth/subdiv.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
-static const char *const names[NL_VALIDATE_METHODS] = {"fft", "circulant", "subdiv", "subdiv-correlated", "sparse"};
+/* What validate runs: each NL_METHOD_VALIDATED method of the registry, in
+ * nl_method_ranked's order (exact methods first), with its defaults and
+ * then once per other choice of each of its CHOICE options (a variant,
+ * named METHOD-CHOICE). */
+typedef struct {
+    const nl_method_type *type; /* the method */
+    int row, choice;            /* the variant: option row `row` set to choice `choice`; row -1: none */
+    int periodic;               /* its field is periodic (band_periodic), else band_fejer */
+    char name[48];              /* "subdiv", "subdiv-correlated", ... */
+} slot;
+
+static slot slots[NL_VALIDATE_METHODS];
+static int nslots;
+static pthread_once_t slots_once = PTHREAD_ONCE_INIT;
+
+static void add_slot(const nl_method_type *t, int row, int choice, const char *word, size_t len)
+{
+    slot *s = &slots[nslots];
+    if (nslots >= NL_VALIDATE_METHODS)
+        return;
+    s->type = t, s->row = row, s->choice = choice;
+    s->periodic = (t->caps & NL_METHOD_PERIODIC) != 0;
+    for (int k = 0; k < t->noptions; k++)
+        s->periodic |= (t->options[k].flags & NL_METHOD_NO_WINDOW) != 0; /* set by validate: wrapped */
+    snprintf(s->name, sizeof s->name, "%s%s%.*s", t->name, word ? "-" : "", (int)len, word ? word : "");
+    nslots++;
+}
+
+static void build_slots(void)
+{
+    const nl_method_type *t;
+    for (int i = 0; (t = nl_method_ranked(i)); i++) {
+        if (!(t->caps & NL_METHOD_VALIDATED))
+            continue;
+        add_slot(t, -1, 0, NULL, 0);
+        for (int k = 0; k < t->noptions; k++) {
+            const char *w = t->options[k].type == NL_METHOD_CHOICE ? t->options[k].words : NULL;
+            for (int c = 0; w && *w; c++) {
+                size_t len = strcspn(w, "|");
+                if (c > 0)
+                    add_slot(t, k, c, w, len);
+                w += len + (w[len] == '|');
+            }
+        }
+    }
+}
+
+static const slot *slot_at(int meth)
+{
+    pthread_once(&slots_once, build_slots);
+    return meth >= 0 && meth < nslots ? &slots[meth] : NULL;
+}
+
+int nl_validate_method_count(void)
+{
+    pthread_once(&slots_once, build_slots);
+    return nslots;
+}
 
 const char *nl_validate_method_name(int method)
 {
-    return method >= 0 && method < NL_VALIDATE_METHODS ? names[method] : NULL;
+    const slot *s = slot_at(method);
+    return s ? s->name : NULL;
 }
 
-/* One realization of a planned method. */
-typedef int (*run_fn)(const void *plan, uint64_t seed, nl_field *f);
-static int run_fft(const void *p, uint64_t s, nl_field *f) { return nl_synth_fft_execute(p, s, f); }
-static int run_circ(const void *p, uint64_t s, nl_field *f) { return nl_synth_circulant_execute(p, s, f); }
-static int run_sub(const void *p, uint64_t s, nl_field *f) { return nl_subdiv_plan_execute(p, s, f); }
-static int run_sparse(const void *p, uint64_t s, nl_field *f) { return nl_synth_sparse_execute(p, s, 1, NULL, f); }
+int nl_validate_method_periodic(int method)
+{
+    const slot *s = slot_at(method);
+    return s && s->periodic;
+}
 
 /* A method that cannot run: its status and the message of the last error. */
 static void refuse(nl_validate_method_result *r, int st)
@@ -89,34 +145,35 @@ static int add_bands(const nl_validate_result *v, ensemble *e)
 
 /* M realizations of one planned method: their mean and se at every tested
  * lag (mean, se: v->ntests each) and band sums in e. */
-static int run_ensemble(const nl_validate_result *v, int meth, run_fn fn, const void *plan,
-                        const nl_validate_options *o, ensemble *e, double *mean, double *se)
+static int run_ensemble(const nl_validate_result *v, int meth, nl_method_plan *plan, const nl_validate_options *o,
+                        ensemble *e, double *mean, double *se)
 {
     int st = ensemble_alloc(v, e);
     for (size_t s = 1; s <= v->realizations && !st; s++) {
         if (o->progress)
             o->progress(o->progress_ctx, meth, s - 1, v->realizations);
-        if (!(st = fn(plan, v->seed + (s - 1), e->f)) && !(st = nl_verdict_add(e->vd, e->f)))
+        if (!(st = nl_method_execute(plan, v->seed + (s - 1), e->f)) && !(st = nl_verdict_add(e->vd, e->f)))
             st = add_bands(v, e);
     }
     return st ? st : nl_verdict_stats(e->vd, mean, se);
 }
 
 /* Synthesise, summarise, time. */
-static void run_method(nl_validate_result *v, int meth, run_fn fn, const void *plan, const nl_validate_options *o)
+static void run_method(nl_validate_result *v, int meth, nl_method_plan *plan, const nl_validate_options *o)
 {
+    const slot *sl = slot_at(meth);
     nl_validate_method_result *r = &v->method[meth];
     double *mean = malloc(v->ntests * sizeof *mean), *se = malloc(v->ntests * sizeof *se), *exact = NULL;
     ensemble e;
-    int st = mean && se ? run_ensemble(v, meth, fn, plan, o, &e, mean, se) : NL_ERROR(NL_ENOMEM, "out of memory");
-    if (!st && meth == NL_VALIDATE_SUBDIV && v->have_exact && (exact = malloc(v->ntests * sizeof *exact)))
+    int st = mean && se ? run_ensemble(v, meth, plan, o, &e, mean, se) : NL_ERROR(NL_ENOMEM, "out of memory");
+    if (!st && (sl->type->caps & NL_METHOD_SUBDIVISION) && sl->row < 0 && v->have_exact &&
+        (exact = malloc(v->ntests * sizeof *exact)))
         nl_validate_flatten(v, v->exact, v->exact_map, exact);
     if (st)
         refuse(r, st);
     else {
         r->ran = 1, r->status = NL_OK, r->why[0] = '\0';
-        nl_validate_summarise(v, mean, se, e.b1, e.b2,
-                              meth == NL_VALIDATE_CIRCULANT ? v->band_fejer : v->band_periodic, exact, r);
+        nl_validate_summarise(v, mean, se, e.b1, e.b2, sl->periodic ? v->band_periodic : v->band_fejer, exact, r);
     }
     if (mean && se)
         ensemble_free(&e);
@@ -150,13 +207,17 @@ static void exact_acf(const nl_subdiv_coeffs *c, const nl_model *m, nl_validate_
 /* A subdivision plan that was refused still shows the exact ACF of its
  * coefficients when they exist and are positive definite (the refusal came
  * from the coarse FFT); levels that are not are reported as such. */
-static int refused_subdiv(const nl_model *m, const nl_subdiv_options *so, int st, nl_validate_result *v)
+static int refused_subdiv(const nl_model *m, const slot *sl, const nl_method_options *mo, int st,
+                          nl_validate_result *v)
 {
-    nl_validate_method_result *r = &v->method[so->displacements ? NL_VALIDATE_SUBDIV_CORR : NL_VALIDATE_SUBDIV];
+    nl_validate_method_result *r = &v->method[sl - slots];
+    int levels = (int)nl_method_options_get(mo, "levels")->i;
     nl_subdiv_coeffs *c;
     refuse(r, st);
-    if (v->dim > 2 || so->displacements ||
-        nl_subdiv_coeffs_alloc(m, v->dim, so->levels, ldexp(1.0, so->levels), so->N, so->tol, so->nmax, &c))
+    if (v->dim > 2 || sl->row >= 0 ||
+        nl_subdiv_coeffs_alloc(m, v->dim, levels, ldexp(1.0, levels), (int)nl_method_options_get(mo, "neighborhood")->i,
+                               nl_method_options_get(mo, "tol")->d,
+                               (int)nl_method_options_get(mo, "max-neighborhood")->i, &c))
         return st;
     if (c->flags & NL_SUBDIV_NOT_PD)
         refuse(r, st = NL_ERROR(NL_ENOTPD, "not positive definite at some level"));
@@ -166,29 +227,67 @@ static int refused_subdiv(const nl_model *m, const nl_subdiv_options *so, int st
     return st;
 }
 
-/* Periodic subdivision at unit spacing with the options' neighbourhood
- * and levels, and (independent displacements) its exact ACF; correlated:
- * displacements with the filter's default taps, compared with the target
- * only. */
-static int plan_subdiv(const nl_model *m, const nl_validate_options *o, int correlated, nl_validate_result *v,
-                       nl_subdiv_plan **p)
+/* Option `name` of mo given as i (and d), when the method has it. */
+static void put(nl_method_options *mo, const char *name, long i, double d)
 {
-    nl_subdiv_options so;
-    int st;
-    nl_subdiv_options_default(&so);
-    so.levels = o->subdiv_levels ? o->subdiv_levels : nl_subdiv_default_levels(v->dim, v->n, 16);
-    so.N = o->subdiv_N, so.tol = o->subdiv_tol, so.nmax = 6, so.random_nb = o->subdiv_random;
-    so.displacements = correlated ? NL_SUBDIV_DISP_ERROR : NL_SUBDIV_DISP_INDEPENDENT;
-    if (correlated && so.random_nb)
-        return NL_ERROR(NL_EINVAL, "correlated displacements: not with random neighbourhoods");
-    if (v->dim > 2)
-        return NL_ERROR(NL_EINVAL, "subdivision: expected a 1D or 2D grid, got %dD", v->dim);
-    if (!so.levels)
-        return NL_ERROR(NL_EINVAL, "subdivision: expected sizes divisible by 2 with at least 32 samples");
-    if ((st = nl_subdiv_plan_alloc(m, v->dim, v->n, 1.0, &so, p)))
-        return refused_subdiv(m, &so, st, v);
-    if (!correlated)
-        exact_acf(nl_subdiv_plan_coeffs(*p), m, v);
+    int k = nl_method_option_index(mo->type, name);
+    if (k >= 0)
+        mo->v[k] = (nl_method_value){.set = 2, .i = i, .d = d};
+}
+
+/* The method's options from validate's: subdivision with the options'
+ * neighbourhood (auto: up to 6), tol, random neighbourhoods and levels (0:
+ * a coarse grid of at least 16 samples per axis); sparse convolution at
+ * the options' radius and cell (0: the defaults) and density; periodic
+ * wherever an option makes it so (a wrapped tile).  Refused: a variant with
+ * random neighbourhoods, a grid of a dimension the method lacks. */
+static int method_options(const slot *sl, const nl_validate_options *o, const nl_validate_result *v,
+                          nl_method_options *mo)
+{
+    const nl_method_type *t = sl->type;
+    long levels = o->subdiv_levels ? o->subdiv_levels : nl_subdiv_default_levels(v->dim, v->n, 16);
+    if (sl->row >= 0 && o->subdiv_random && nl_method_option_index(t, "random-neighborhoods") >= 0)
+        return NL_ERROR(NL_EINVAL, "%s %s: not with random neighbourhoods", nl_validate_method_name((int)(sl - slots)) +
+                        strlen(t->name) + 1, t->options[sl->row].name);
+    if (!(t->dims & (1u << (v->dim - 1))))
+        return NL_ERROR(NL_EINVAL, "%s: expected a %s grid, got %dD", t->noun, t->dims == 3 ? "1D or 2D" : "1D", v->dim);
+    if (nl_method_option_index(t, "levels") >= 0 && !levels)
+        return NL_ERROR(NL_EINVAL, "%s: expected sizes divisible by 2 with at least 32 samples", t->noun);
+    nl_method_options_default(t, mo);
+    put(mo, "levels", levels, 0);
+    put(mo, "neighborhood", o->subdiv_N, 0);
+    put(mo, "max-neighborhood", 6, 0);
+    put(mo, "tol", -1, o->subdiv_tol);
+    if (o->subdiv_random)
+        put(mo, "random-neighborhoods", o->subdiv_random, 0);
+    if (o->sparse_radius)
+        put(mo, "radius", o->sparse_radius, 0);
+    if (o->sparse_cell)
+        put(mo, "cell", o->sparse_cell, 0);
+    put(mo, "density", 0, o->sparse_density);
+    for (int k = 0; k < t->noptions; k++)
+        if (t->options[k].flags & NL_METHOD_NO_WINDOW)
+            mo->v[k] = (nl_method_value){.set = 2, .i = 1};
+    if (sl->row >= 0)
+        mo->v[sl->row] = (nl_method_value){.set = 2, .i = sl->choice};
+    return NL_OK;
+}
+
+/* The slot's plan on the unit-spacing grid; subdivision with its
+ * defaults: its exact ACF too. */
+static int plan_slot(const nl_model *m, const slot *sl, const nl_validate_options *o, nl_validate_result *v,
+                     nl_method_plan **p)
+{
+    nl_method_grid g = {v->dim, {v->n[0], v->n[1], v->n[2]}, {1, 1, 1}, {0, 0}};
+    nl_method_options mo;
+    int st, subdiv = (sl->type->caps & NL_METHOD_SUBDIVISION) != 0;
+    *p = NULL;
+    if ((st = method_options(sl, o, v, &mo)))
+        return st;
+    if ((st = nl_method_plan_alloc(sl->type, m, &g, &mo, p)))
+        return subdiv ? refused_subdiv(m, sl, &mo, st, v) : st;
+    if (subdiv && sl->row < 0)
+        exact_acf(nl_subdiv_plan_coeffs(nl_method_plan_impl(*p)), m, v);
     return NL_OK;
 }
 
@@ -201,38 +300,24 @@ static double now(void)
 
 int nl_validate_method(const nl_model *m, int meth, const nl_validate_options *o, nl_validate_result *v)
 {
-    nl_synth_fft_plan *pf = NULL;
-    nl_synth_circulant_plan *pc = NULL;
-    nl_synth_sparse_plan *ps = NULL;
-    nl_subdiv_plan *pd = NULL;
-    const void *plan = NULL;
-    run_fn fn = NULL;
+    const slot *sl = slot_at(meth);
+    nl_method_plan *p = NULL;
     int st = NL_OK;
     double t0 = now();
-    if (meth < 0 || meth >= NL_VALIDATE_METHODS)
-        return NL_ERROR(NL_EINVAL, "validate: expected a method 0..%d, got %d", NL_VALIDATE_METHODS - 1, meth);
+    if (!sl)
+        return NL_ERROR(NL_EINVAL, "validate: expected a method 0..%d, got %d", nl_validate_method_count() - 1, meth);
     if (o->realizations != v->realizations || o->seed != v->seed)
         return NL_ERROR(NL_EINVAL, "validate: %zu realizations from seed %llu, but the result was prepared for %zu from %llu",
                         o->realizations, (unsigned long long)o->seed, v->realizations, (unsigned long long)v->seed);
     if (!v->positive_definite)
         st = NL_ERROR(NL_ENOTPD, "the model is not positive definite");
-    else if (meth == NL_VALIDATE_FFT)
-        st = nl_synth_fft_plan_alloc(m, v->dim, v->n, NULL, 0, &pf), plan = pf, fn = run_fft;
-    else if (meth == NL_VALIDATE_CIRCULANT)
-        st = nl_synth_circulant_plan_alloc(m, v->dim, v->n, NULL, 0, 16, &pc), plan = pc, fn = run_circ;
-    else if (meth == NL_VALIDATE_SUBDIV || meth == NL_VALIDATE_SUBDIV_CORR)
-        st = plan_subdiv(m, o, meth == NL_VALIDATE_SUBDIV_CORR, v, &pd), plan = pd, fn = run_sub;
-    else if (v->dim > 2)
-        st = NL_ERROR(NL_EINVAL, "sparse convolution: expected a 1D or 2D grid, got %dD", v->dim);
     else
-        st = nl_synth_sparse_plan_model(m, v->dim, NULL, o->sparse_radius, o->sparse_cell, o->sparse_density, &ps),
-        plan = ps, fn = run_sparse;
+        st = plan_slot(m, sl, o, v, &p);
     if (st)
         refuse(&v->method[meth], st);
     else
-        run_method(v, meth, fn, plan, o);
-    nl_synth_fft_plan_free(pf), nl_synth_circulant_plan_free(pc), nl_synth_sparse_plan_free(ps);
-    nl_subdiv_plan_free(pd);
+        run_method(v, meth, p, o);
+    nl_method_plan_free(p);
     v->method[meth].seconds = now() - t0;
     return NL_OK;
 }
@@ -241,7 +326,7 @@ int nl_validate_model(const nl_model *m, int dim, const size_t *n, int positive_
                       const nl_validate_options *o, nl_validate_result *v)
 {
     int st = nl_validate_init(m, dim, n, positive_definite, o, v);
-    for (int meth = 0; meth < NL_VALIDATE_METHODS && !st; meth++)
+    for (int meth = 0; meth < nl_validate_method_count() && !st; meth++)
         st = nl_validate_method(m, meth, o, v);
     return st;
 }

@@ -1,8 +1,10 @@
 /* Validation of a model's synthesis: does each method reproduce the target,
  * and by how much does it miss?
  *
- * For each method (periodic FFT, circulant embedding, periodic generalized
- * subdivision, sparse convolution) the model is planned once and M
+ * For each method the registry marks NL_METHOD_VALIDATED (synth/method.h),
+ * exact methods first (nl_method_ranked), and for each other choice of its
+ * CHOICE options (a variant, "METHOD-CHOICE": subdivision with correlated
+ * displacements) the model is planned once and M
  * realizations (seeds S..S+M-1, S = 1 by default) are synthesised on a grid of unit spacing (lags
  * in samples, frequencies in cycles per sample).  Each realization gives
  * the unbiased ACF with known mean 0 (analysis/acf.h, E r(l) = C(l)) and the
@@ -49,12 +51,15 @@
  *     when lo > E (shown to exceed E), NL_VALIDATE_UNRESOLVED otherwise (the
  *     interval straddles E: more realizations or a larger grid resolve it).
  *
- * The plans: FFT (synth/fft.h) and circulant embedding up to 16 n per axis
- * (synth/circulant.h) without clamping; subdivision (synth/subdiv.h, 1D and
- * 2D) periodic, with the options' neighbourhood, levels (0: a coarse grid of
- * at least 16 samples per axis), tol and random neighbourhoods; sparse
- * convolution (synth/sparse.h, 1D and 2D) of the model's kernel at the
- * options' radius and cell (0: the defaults) and density, wrapped.
+ * The plans, through the registry (nl_method_plan_alloc) at unit spacing,
+ * without clamping, each method's defaults but for these options of
+ * nl_validate_options, given to every method that has an option of that
+ * name: levels (0: a coarse grid of at least 16 samples per axis),
+ * neighborhood (0: auto, growing up to max-neighborhood 6), tol,
+ * random-neighborhoods, radius and cell (0: the defaults), density; a flag
+ * making the field a periodic tile (sparse's wrap) is set.  Subdivision
+ * (synth/subdiv.h) is then periodic; circulant embedding grows up to 16 n
+ * per axis.  A method without the grid's dimension is refused.
  *
  * Subdivision (Lewis 1987) estimates new points from earlier levels only, so
  * its covariance differs from R except for Markovian models in 1D.  Its
@@ -93,15 +98,10 @@ extern "C" {
 /* Octave bands of the spectrum. */
 #define NL_VALIDATE_BANDS 16
 
-/* The methods, in the order nl_validate_model runs them. */
-enum {
-    NL_VALIDATE_FFT,
-    NL_VALIDATE_CIRCULANT,
-    NL_VALIDATE_SUBDIV,
-    NL_VALIDATE_SUBDIV_CORR, /* subdivision with correlated displacements (synth/subdiv.h) */
-    NL_VALIDATE_SPARSE,
-    NL_VALIDATE_METHODS
-};
+/* The methods and variants validate runs, numbered 0 .. NL_VALIDATE_METHODS
+ * - 1 in the order nl_validate_model runs them (the registry's, module
+ * comment; nl_validate_method_count() of them, which tests check equal). */
+#define NL_VALIDATE_METHODS 5
 
 /* The directions: lag l stands for (l, 0, 0), (0, l, 0), (0, 0, l) and
  * (l, l, 0) in 2D or (l, l, l) in 3D. */
@@ -110,9 +110,18 @@ enum { NL_VALIDATE_X, NL_VALIDATE_Y, NL_VALIDATE_Z, NL_VALIDATE_DIAG, NL_VALIDAT
 /* Verdicts against the tolerance. */
 enum { NL_VALIDATE_WITHIN, NL_VALIDATE_OFF, NL_VALIDATE_UNRESOLVED };
 
-/* "fft", "circulant", "subdiv", "subdiv-correlated", "sparse"; NULL outside
- * 0..NL_VALIDATE_METHODS - 1. */
+/* How many methods and variants the registry gives validate (at most
+ * NL_VALIDATE_METHODS). */
+int nl_validate_method_count(void);
+
+/* Method `method`'s name: the registry's ("fft"), or a variant's
+ * ("subdiv-correlated"); NULL outside 0..nl_validate_method_count() - 1. */
 const char *nl_validate_method_name(int method);
+
+/* 1 when method `method`'s field is periodic (its expected spectrum the
+ * model's sampled on the periodic grid), 0 when not (the Fejer-smoothed
+ * one: circulant embedding) or out of range. */
+int nl_validate_method_periodic(int method);
 
 /* "x", "y", "z", "diagonal"; NULL outside 0..NL_VALIDATE_DIRS - 1. */
 const char *nl_validate_dir_name(int dir);

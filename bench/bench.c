@@ -14,11 +14,11 @@
 #include "../core/fftw_plan.h"
 #include "../core/mem.h"
 #include "../core/model.h"
+#include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../synth/circulant.h"
-#include "../synth/fft.h"
+#include "../synth/method.h"
 #include "../synth/rank1.h"
-#include "../synth/sparse.h"
 #include "../synth/subdiv.h"
 
 #include <complex.h>
@@ -182,50 +182,58 @@ static void bench_gauss(size_t n, int reps)
     cli_bench_row(name, n * n, cli_bench_median(t, reps), "streaming write", tw, "streaming write", tw);
 }
 
-static void bench_fft(const nl_model *m, size_t n, int reps)
+/* A method of the registry planned once for m on an n x n grid with its
+ * defaults but for `opts` (pairs of option name and value, NULL-ended),
+ * then executed reps times: the median time; the plan in *keep. */
+static double method_time(const char *name, const nl_model *m, size_t n, const char *const *opts, int reps,
+                          nl_method_plan **keep)
 {
-    size_t nn[2] = {n, n};
-    double t[16], tb;
-    int st;
-    nl_synth_fft_plan *p;
-    nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-    if (!f || (st = nl_synth_fft_plan_alloc(m, 2, nn, NULL, 0, &p)))
+    const nl_method_type *t = nl_method_find(name);
+    nl_method_grid g = {2, {n, n, 1}, {1, 1, 1}, {0, 0}};
+    nl_method_options o;
+    double tm[16];
+    int st = t ? NL_OK : NL_ERROR(NL_EINVAL, "bench: no method \"%s\"", name);
+    nl_field *f = t ? nl_field_alloc(2, g.n, NULL, &st) : NULL;
+    if (t)
+        nl_method_options_default(t, &o);
+    for (int k = 0; !st && opts && opts[k]; k += 2)
+        st = nl_method_options_set(&o, opts[k], opts[k + 1], opts[k]);
+    if (!f || st || (st = nl_method_plan_alloc(t, m, &g, &o, keep)))
         cli_die_status(st);
     for (int r = 0; r < reps; r++) {
         double t0 = cli_bench_now();
-        nl_synth_fft_execute(p, (uint64_t)r + 1, f);
-        t[r] = cli_bench_now() - t0;
+        nl_method_execute(*keep, (uint64_t)r + 1, f);
+        tm[r] = cli_bench_now() - t0;
     }
+    nl_field_free(f);
+    return cli_bench_median(tm, reps);
+}
+
+static void bench_fft(const nl_model *m, size_t n, int reps)
+{
+    nl_method_plan *p;
+    double tb, t = method_time("fft", m, n, NULL, reps, &p);
     double tf = c2r_floor(n, n, reps, &tb);
-    cli_bench_row("fft", n * n, cli_bench_median(t, reps), "gaussian fill + c2r", tf, "fftw c2r", tb);
-    nl_synth_fft_plan_free(p), nl_field_free(f);
+    cli_bench_row("fft", n * n, t, "gaussian fill + c2r", tf, "fftw c2r", tb);
+    nl_method_plan_free(p);
 }
 
 static void bench_circulant(const nl_model *m, size_t n, int reps)
 {
-    size_t nn[2] = {n, n};
-    double t[16];
-    int st;
-    nl_synth_circulant_plan *p;
+    nl_method_plan *p;
     nl_synth_circulant_info info;
-    double tb, tf;
-    nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-    if (!f || (st = nl_synth_circulant_plan_alloc(m, 2, nn, NULL, 0, 16, &p)))
-        cli_die_status(st);
-    nl_synth_circulant_plan_info(p, &info);
-    for (int r = 0; r < reps; r++) {
-        double t0 = cli_bench_now();
-        nl_synth_circulant_execute(p, (uint64_t)r + 1, f);
-        t[r] = cli_bench_now() - t0;
-    }
+    double tb, tf, t = method_time("circulant", m, n, NULL, reps, &p);
+    nl_synth_circulant_plan_info(nl_method_plan_impl(p), &info);
     tf = c2r_floor(info.m[0], info.m[1], reps, &tb);
-    cli_bench_row("circulant", n * n, cli_bench_median(t, reps), "gaussian fill + c2r of the embedding", tf, "fftw c2r of the embedding",
+    cli_bench_row("circulant", n * n, t, "gaussian fill + c2r of the embedding", tf, "fftw c2r of the embedding",
              tb);
-    nl_synth_circulant_plan_free(p), nl_field_free(f);
+    nl_method_plan_free(p);
 }
 
 /* A 2N x 2N neighbourhood, coarse grid 8x8, coefficients (and with taps
- * > 0 the correlated displacements' filters) made once; the median time. */
+ * > 0 the correlated displacements' filters) made once; the median time of
+ * the refinement alone (not through the registry: the plan's execute also
+ * makes the coarse grid, which the floor leaves out). */
 static double subdiv_time(const nl_model *m, size_t n, int N, int taps, int reps)
 {
     size_t nn[2] = {n, n};
@@ -261,23 +269,15 @@ static void bench_subdiv(const nl_model *m, size_t n, int reps)
     }
 }
 
+/* The model's kernel, wrapped: a periodic tile. */
 static void bench_sparse(const nl_model *m, size_t n, int reps)
 {
-    size_t nn[2] = {n, n};
-    double t[16];
-    int st;
-    nl_synth_sparse_plan *p;
-    nl_field *f = nl_field_alloc(2, nn, NULL, &st);
-    if (!f || (st = nl_synth_sparse_plan_model(m, 2, NULL, 0, 0, 4, &p)))
-        cli_die_status(st);
-    for (int r = 0; r < reps; r++) {
-        double t0 = cli_bench_now();
-        nl_synth_sparse_execute(p, (uint64_t)r + 1, 1, NULL, f);
-        t[r] = cli_bench_now() - t0;
-    }
-    cli_bench_row("sparse", n * n, cli_bench_median(t, reps), "gaussian rng + one pass", rng_floor(n * n, reps), "streaming write",
+    static const char *const opts[] = {"density", "4", "wrap", "", NULL};
+    nl_method_plan *p;
+    double t = method_time("sparse", m, n, opts, reps, &p);
+    cli_bench_row("sparse", n * n, t, "gaussian rng + one pass", rng_floor(n * n, reps), "streaming write",
              stream_floor(n * n, reps));
-    nl_synth_sparse_plan_free(p), nl_field_free(f);
+    nl_method_plan_free(p);
 }
 
 static void bench_estimators(size_t n, int reps)

@@ -36,8 +36,9 @@ static const char help[] =
     "                   negative spectrum (fft, circulant, sparse, lattice) or variances\n"
     "                   (subdiv); flagged \"clamped\" in the output, the change in the report\n"
     "  --preview        8-bit PNG of a 2D field (the first slice of 3D), mean +- 3 sd\n"
-    "  --json           print the synthesis report as JSON\n"
-    "  --condition DATA.tsv --extent a:b[,c:d[,e:f]]  fft, circulant, subdiv: honour the\n"
+    "  --json           print the synthesis report as JSON\n";
+/* then --condition's first line, naming the conditionable methods */
+static const char help_condition[] =
     "                   data (conditional simulation, Journel: the field plus the ordinary\n"
     "                   kriging of data minus field; --mean M: simple); sample i at\n"
     "                   a + (i + 0.5)(b - a)/N; --interpolation bilinear|nearest reads the field\n"
@@ -53,10 +54,10 @@ static const char help[] =
     "                   size, spacing, origin, version, flags, processes; read by noiselab-mpi,\n"
     "                   which noiselab hands .h5 runs to); nothing is written unless every\n"
     "                   sample is finite (and, in float32, within its range)\n"
-    "  --precision single|double  .h5 outputs: float32 (default) or float64\n"
-    "Under an MPI launcher (mpirun -np P noiselab synth ... -o OUT.h5) fft, circulant,\n"
-    "subdiv and sparse run distributed, each process holding 1/P of the field\n"
-    "(docs/scale-out.md).\n";
+    "  --precision single|double  .h5 outputs: float32 (default) or float64\n";
+/* then the paragraph on distributed runs, naming the distributed methods,
+ * filled to this width */
+#define HELP_MPI_WIDTH 82
 
 /* Every method's options, each name once (the registry's rows, in its
  * order), with getopt codes CLI_MOPT + k. */
@@ -298,6 +299,7 @@ static const struct option *options_table(void)
 
 static void print_help(void)
 {
+    char list[256], mpi[512];
     fputs(help_usage, stdout);
     for (int i = 0; i < nl_method_count(); i++) {
         const char *p = nl_method_at(i)->help;
@@ -309,6 +311,13 @@ static void print_help(void)
         }
     }
     fputs(help, stdout);
+    nl_method_names(NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT_FIRST, NULL, ", ", ", ", list, sizeof list);
+    printf("  --condition DATA.tsv --extent a:b[,c:d[,e:f]]  %s: honour the\n", list);
+    fputs(help_condition, stdout);
+    nl_method_names(NL_METHOD_DISTRIBUTED | NL_METHOD_EXACT_FIRST, NULL, ", ", " and ", list, sizeof list);
+    snprintf(mpi, sizeof mpi, "Under an MPI launcher (mpirun -np P noiselab synth ... -o OUT.h5) %s run "
+             "distributed, each process holding 1/P of the field (docs/scale-out.md).", list);
+    cli_fill(stdout, mpi, HELP_MPI_WIDTH);
 }
 
 /* getopt over argv into job and g; returns 1 when --help was printed. */

@@ -1,6 +1,7 @@
 /* synth -o OUT.h5 under an MPI launcher: each process synthesises its slab
- * of the field (fft and circulant through FFTW-MPI, mpi/fft.h; subdiv and
- * sparse by their slab executes) and all write one HDF5 file together
+ * of the field (the methods filtering white noise on the periodic grid or
+ * its circulant embedding through FFTW-MPI, mpi/fft.h; the others by their
+ * slab executes) and all write one HDF5 file together
  * (mpi/h5.h).  Rank 0 owns the output's temporary name (cli/outputs.c) and
  * renames it when every process has written; every failure is agreed on
  * first, so all processes stop together with rank 0 naming the cause. */
@@ -10,6 +11,8 @@
 #include "../mpi/dist.h"
 #include "../mpi/fft.h"
 #include "../mpi/h5.h"
+#include "../synth/circulant_internal.h"
+#include "../synth/fft_internal.h"
 #include "../synth/sparse.h"
 #include "../synth/subdiv.h"
 
@@ -29,7 +32,7 @@ static void check_all(int st) { cli_check(nl_mpi_agree(MPI_COMM_WORLD, st)); }
 /* Bytes per process of a method on P processes (for the memory check). */
 typedef struct {
     const cli_synth_job *job;   /* the request */
-    size_t m[3];                /* fft: the grid; circulant: the first embedding */
+    size_t m[3];                /* the FFT grid: the field's, or its first circulant embedding */
 } mem_model;
 
 static size_t bytes_for(int P, const void *arg)
@@ -41,7 +44,7 @@ static size_t bytes_for(int P, const void *arg)
         rest *= job->n[a];
     if (!job->type->execute_slab)
         return nl_mpi_fft_bytes(job->dim, mm->m, P) + b * rest * sizeof(double);
-    /* subdiv and sparse: the slab, plus about as much again for the finest
+    /* slab executes: the slab, plus about as much again for the finest
      * level's neighbours and the level below (an estimate) */
     return 2 * b * rest * sizeof(double);
 }
@@ -54,7 +57,7 @@ static void check_memory_on(const cli_synth_job *job, int P)
     int enough;
     cli_check(nl_mem_limit(&lim));
     for (int a = 0; a < job->dim; a++)
-        mm.m[a] = strcmp(job->method, "circulant") ? job->n[a] : nl_synth_circulant_size(job->n[a]);
+        mm.m[a] = job->type->caps & NL_METHOD_EMBEDDING ? nl_synth_circulant_size(job->n[a]) : job->n[a];
     if (!lim || (need = bytes_for(P, &mm)) <= lim)
         return;
     enough = nl_mpi_processes_needed(bytes_for, &mm, lim, 1 << 20);
@@ -89,13 +92,15 @@ static const char *begin_output(const char *out, int rank)
     return tmp;
 }
 
-/* fft and circulant: plan over every process, then execute into f. */
+/* The FFTW-MPI methods (NL_METHOD_TORUS, NL_METHOD_EMBEDDING): plan over
+ * every process, then execute into f. */
 static nl_field *run_fft(cli_synth_job *job, cli_synth_result *res)
 {
     unsigned fl = job->clamp ? NL_SYNTH_FFT_CLAMP : 0;
     size_t n[3] = {job->n[0], job->n[1], job->n[2]};
+    static nl_method_report mr;
     nl_field *f;
-    if (!strcmp(job->method, "fft")) {
+    if (job->type->caps & NL_METHOD_TORUS) {
         nl_mpi_fft_plan *p;
         nl_synth_fft_info info;
         cli_check(nl_mpi_fft_plan_alloc(MPI_COMM_WORLD, job->m, job->dim, job->n, job->h, fl, &p));
@@ -105,7 +110,7 @@ static nl_field *run_fft(cli_synth_job *job, cli_synth_result *res)
         check_all(nl_mpi_fft_execute(p, job->seed, f->data));
         nl_mpi_fft_plan_info(p, &info);
         nl_mpi_fft_plan_free(p);
-        cli_synth_fft_describe(&info, res);
+        cli_check(nl_synth_fft_report(&info, &mr));
     } else {
         nl_mpi_circulant_plan *p;
         nl_synth_circulant_info info;
@@ -116,8 +121,10 @@ static nl_field *run_fft(cli_synth_job *job, cli_synth_result *res)
         check_all(nl_mpi_circulant_execute(p, job->seed, f->data));
         nl_mpi_circulant_plan_info(p, &info);
         nl_mpi_circulant_plan_free(p);
-        cli_synth_circulant_describe(job, &info, res);
+        cli_check(nl_synth_circulant_report(&info, job->m, job->dim, &mr));
     }
+    snprintf(res->method, sizeof res->method, "%.*s", (int)sizeof res->method - 1, mr.method);
+    cli_synth_take_report(&mr, res);
     return f;
 }
 
@@ -158,9 +165,11 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int 
     const char *tmp;
     MPI_Comm_size(MPI_COMM_WORLD, &P);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    if (!(job->type->caps & NL_METHOD_DISTRIBUTED))
-        cli_die(2, "synth %s: runs on one process; distributed: fft, circulant, subdiv, sparse (or run it without "
-                "mpirun)", job->method);
+    if (!(job->type->caps & NL_METHOD_DISTRIBUTED)) {
+        char list[256];
+        nl_method_names(NL_METHOD_DISTRIBUTED | NL_METHOD_EXACT_FIRST, NULL, ", ", ", ", list, sizeof list);
+        cli_die(2, "synth %s: runs on one process; distributed: %s (or run it without mpirun)", job->method, list);
+    }
     if (!job->m && !takes_other_kernel(job->type))
         cli_die(2, "synth %s: expected --acf or --spectrum", job->method);
     check_memory_on(job, P);

@@ -100,9 +100,8 @@ void cli_synth_cond_free(cli_synth_cond *c);
  * (or, with job->slab, its slab), describe; the method's report when it
  * has one.  Exits through cli_die on bad input; returns only on success. */
 void cli_synth_run(const cli_synth_job *job, nl_field *f, cli_synth_result *r);
-/* What fft and circulant record of their plans (method, flags, report),
- * shared with the distributed runs (cli/h5_synth.c). */
-void cli_synth_fft_describe(const nl_synth_fft_info *info, cli_synth_result *r);
-void cli_synth_circulant_describe(const cli_synth_job *job, const nl_synth_circulant_info *info, cli_synth_result *r);
+/* A method's report (synth/method.h) as the result's flags, preview range
+ * and JSON report (shared with the distributed runs, cli/h5_synth.c). */
+void cli_synth_take_report(const nl_method_report *mr, cli_synth_result *r);
 
 #endif

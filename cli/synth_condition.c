@@ -45,8 +45,11 @@ static void check_given(const cli_synth_cond *c, const cli_synth_job *job, int f
     if (from)
         cli_die(2, "synth: --from FILE and --condition exclude each other (a conditional field regenerates with "
                 "its data: give the options again)");
-    if (!(job->type->caps & NL_METHOD_CONDITIONABLE))
-        cli_die(2, "synth %s: --condition applies to fft, circulant and subdiv only", job->method);
+    if (!(job->type->caps & NL_METHOD_CONDITIONABLE)) {
+        char list[256];
+        nl_method_names(NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT_FIRST, NULL, ", ", " and ", list, sizeof list);
+        cli_die(2, "synth %s: --condition applies to %s only", job->method, list);
+    }
     if (!c->extent)
         cli_die(2, "synth: --extent: expected the grid's extent a:b[,c:d[,e:f]] with --condition");
     if (spacing)

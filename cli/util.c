@@ -196,14 +196,7 @@ int cli_has_ext(const char *path, const char *ext)
     return lp > le && strcasecmp(path + lp - le, ext) == 0;
 }
 
-void cli_subdiv_flags(unsigned flags, char *buf, size_t len)
-{
-    size_t k = 0;
-    buf[0] = 0;
-    for (unsigned b = 0; b < 6; b++)
-        if (flags & (1u << b))
-            k += (size_t)snprintf(buf + k, len - k, "%s%s", k ? "," : "", nl_subdiv_flag_name(b));
-}
+void cli_subdiv_flags(unsigned flags, char *buf, size_t len) { nl_subdiv_flag_names(flags, buf, len); }
 
 const char *cli_spectrum_spec(const char *s, char *buf, size_t len)
 {

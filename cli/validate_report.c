@@ -65,7 +65,8 @@ static json_t *spectrum_json(const nl_validate_result *res, const nl_validate_me
     for (size_t k = 0; k < res->nbands; k++)
         json_array_append_new(b, json_pack("{s:o,s:o,s:o}", "mean", num(r->band_mean[k]), "se", num(r->band_se[k]),
                                            "relative_error", interval(&r->band_error[k])));
-    return json_pack("{s:s,s:o,s:o}", "expected", r == &res->method[NL_VALIDATE_CIRCULANT] ? "fejer" : "periodic",
+    return json_pack("{s:s,s:o,s:o}", "expected",
+                     nl_validate_method_periodic((int)(r - res->method)) ? "periodic" : "fejer",
                      "max_relative_error", interval(&r->spectrum_error), "bands", b);
 }
 

@@ -338,7 +338,9 @@ static void directions_md(FILE *fp, const cli_validate *v)
 static void subdiv_md(FILE *fp, const cli_validate *v)
 {
     const nl_validate_result *res = &v->r;
-    const nl_validate_method_result *r = &res->method[NL_VALIDATE_SUBDIV];
+    const nl_validate_method_result *r = NULL;
+    for (int meth = 0; meth < NM && !r; meth++) /* the method compared with its exact ACF */
+        r = res->method[meth].have_exact ? &res->method[meth] : NULL;
     fprintf(fp, "## Subdivision against its own exact ACF\n\nSubdivision estimates new points from earlier levels "
                 "only, so its covariance differs from R except for Markovian models in 1D. ");
     if (!res->have_exact) {
@@ -348,7 +350,7 @@ static void subdiv_md(FILE *fp, const cli_validate *v)
     }
     fprintf(fp, "Its exact expected ACF differs from R by up to %.3g R(0) (at lag (%ld, %ld)): the method's error "
                 "by construction.", res->exact_effect, res->exact_worst[0], res->exact_worst[1]);
-    if (r->ran && r->have_exact) {
+    if (r && r->ran) {
         fprintf(fp, " The ensemble against that exact ACF: effect size ");
         interval_md(fp, &r->vs_exact.effect);
         fprintf(fp, ", max |z| %.2f (an implementation that works as designed stays within noise of it). The "

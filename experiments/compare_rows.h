@@ -115,7 +115,10 @@ static int p_miller(const target *t, const size_t *n, void **st)
     *st = H;
     return e;
 }
-static int r_miller(void *st, uint64_t s, nl_field *f) { return nl_midpoint_miller(0, *(double *)st, 1, 1, s, f); }
+static int r_miller(void *st, uint64_t s, nl_field *f)
+{
+    return nl_synth_midpoint_miller(0, *(double *)st, 1, 1, s, f);
+}
 
 static int p_fault(const target *t, const size_t *n, void **st)
 {
@@ -137,17 +140,21 @@ static int r_fault(void *st, uint64_t s, nl_field *f)
 static int p_sparse(const target *t, const size_t *n, void **st)
 {
     nl_synth_sparse_info info;
-    int e = nl_synth_sparse_plan_model_flags(t->ma, 2, NULL, 0, 0, 1.0, 0, (nl_synth_sparse_plan **)st);
+    int e = nl_synth_sparse_plan_model(t->ma, 2, NULL, &(nl_synth_sparse_options){0, 0, 1.0, 0},
+                                       (nl_synth_sparse_plan **)st);
     if (!e) {
         nl_synth_sparse_plan_info(*st, &info);
         if (2 * (size_t)info.radius + 1 <= n[0])
             return NL_OK;
         nl_synth_sparse_plan_free(*st);
     }
-    return nl_synth_sparse_plan_model_flags(t->ma, 2, NULL, (int)(n[0] / 2) - 1, 0, 1.0, 0,
-                                            (nl_synth_sparse_plan **)st);
+    return nl_synth_sparse_plan_model(t->ma, 2, NULL, &(nl_synth_sparse_options){(int)(n[0] / 2) - 1, 0, 1.0, 0},
+                                      (nl_synth_sparse_plan **)st);
 }
-static int r_sparse(void *st, uint64_t s, nl_field *f) { return nl_synth_sparse_execute(st, s, 1, NULL, f); }
+static int r_sparse(void *st, uint64_t s, nl_field *f)
+{
+    return nl_synth_sparse_execute(st, s, NL_SYNTH_SPARSE_WRAP, NULL, f);
+}
 static void f_sparse(void *st) { nl_synth_sparse_plan_free(st); }
 
 static int p_perlin(const target *t, const size_t *n, void **st)
@@ -157,7 +164,7 @@ static int p_perlin(const target *t, const size_t *n, void **st)
     int e;
     if (!p)
         return NL_ERROR(NL_ENOMEM, "out of memory");
-    if ((e = nl_synth_lattice_plan_init(t->ms, 2, c0, nl_synth_lattice_default_octaves(c0), p)))
+    if ((e = nl_synth_lattice_plan_init(t->ms, 2, c0, nl_synth_lattice_default_octaves(c0), 0, p)))
         free(p), p = NULL;
     *st = p;
     return e;

@@ -121,7 +121,7 @@ int main(int argc, char **argv)
     }
     radius = atoi(argv[2]), cell = atoi(argv[3]), density = atof(argv[4]);
     c.f = (double)c.w / 2 / tan(FOV / 2);
-    if ((st = nl_synth_sparse_plan_expr(argv[1], 2, radius, cell, density, &p)) ||
+    if ((st = nl_synth_sparse_plan_expr(argv[1], 2, &(nl_synth_sparse_options){radius, cell, density, 0}, &p)) ||
         (st = nl_synth_sparse_set_bands(p, 5))) {
         fprintf(stderr, "sparse_depth: %s\n", nl_errmsg());
         return 1;

@@ -24,7 +24,7 @@ static nl_validate_result res;
 
 static int method_of(const char *name)
 {
-    for (int k = 0; k < NL_VALIDATE_METHODS; k++)
+    for (int k = 0; k < nl_validate_method_count(); k++)
         if (strcmp(name, nl_validate_method_name(k)) == 0)
             return k;
     return -1;
@@ -51,7 +51,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "validate_coverage: %s\n", r->ran ? nl_errmsg() : r->why);
             return 1;
         }
-        truth = meth == NL_VALIDATE_SUBDIV && res.have_exact ? res.exact_effect : 0;
+        truth = res.method[meth].have_exact ? res.exact_effect : 0;
         runs++;
         cover += r->all.effect.lo <= truth && truth <= r->all.effect.hi;
         alarms += !r->pass;
@@ -62,7 +62,7 @@ int main(int argc, char **argv)
     printf("ensembles\tcoverage\tz_alarms\texcluding_0\texact_coverage\tspectrum_coverage\ttrue_error\n"
            "%zu\t%.3f\t%.3f\t%.3f\t%.3f\t%.3f\t%.4g\n", runs, (double)cover / runs, (double)alarms / runs,
            (double)resolved / runs, (double)exact_cover / runs, (double)spectrum_cover / runs,
-           meth == NL_VALIDATE_SUBDIV && res.have_exact ? res.exact_effect : 0.0);
+           res.method[meth].have_exact ? res.exact_effect : 0.0);
     nl_model_free(m);
     return 0;
 }

@@ -4,6 +4,7 @@
 #define NL_SYNTH_CIRCULANT_INTERNAL_H
 
 #include "circulant.h"
+#include "method.h"
 
 #include <stddef.h>
 
@@ -26,5 +27,11 @@ int nl_synth_circulant_embed(const nl_model *m, int dim, const size_t *n, const 
  * doublings, clamp_error).  Pure. */
 double nl_synth_circulant_loss(const nl_model *m, int dim, double variance);
 int nl_synth_circulant_refuse(const nl_model *m, const nl_synth_circulant_info *info, const size_t *mm);
+
+/* circulant's report (synth/method.h) from its plan's info, one process's
+ * or the distributed plan's (mpi/fft.h), for model m in dim: method, flags,
+ * sd (sqrt R(0), or 1) and json of r. */
+int nl_synth_circulant_report(const nl_synth_circulant_info *info, const nl_model *m, int dim,
+                              nl_method_report *r);
 
 #endif

@@ -4,6 +4,7 @@
 #define NL_SYNTH_FFT_INTERNAL_H
 
 #include "fft.h"
+#include "method.h"
 
 #include <stddef.h>
 
@@ -16,5 +17,9 @@
  * message `name` leads. */
 int nl_synth_fft_verdict(const char *name, size_t count, double sum, double neg, unsigned flags,
                          nl_synth_fft_info *info);
+
+/* fft's report (synth/method.h) from its plan's info, one process's or the
+ * distributed plan's (mpi/fft.h): method, flags, sd and json of r. */
+int nl_synth_fft_report(const nl_synth_fft_info *info, nl_method_report *r);
 
 #endif

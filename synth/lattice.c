@@ -276,11 +276,6 @@ static int check_power(int dim, const nl_model *m, const nl_synth_lattice_plan *
     return NL_OK;
 }
 
-int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p)
-{
-    return nl_synth_lattice_plan_init_flags(m, dim, cell0, octaves, 0, p);
-}
-
 /* The families with a closed-form spectrum, for the message: the spectral
  * ones in every dimension ("power:, spectrum:"), then those with a 1D
  * spectrum ("or a 1D markov, gauss"), from the registry. */
@@ -301,8 +296,8 @@ static void closed_form_families(char *buf, size_t size)
     }
 }
 
-int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
-                                     nl_synth_lattice_plan *p)
+int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
+                               nl_synth_lattice_plan *p)
 {
     double probe[2] = {0.1, 0};
     int st;

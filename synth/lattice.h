@@ -66,18 +66,14 @@ typedef struct {
  * fit band (every weight 0: a spectrum falling faster than the basis, such
  * as a Gaussian one); NL_ENOMEM.  (GSL's weighted
  * least squares, an SVD of finite values, does not fail; it would give
- * NL_EFAIL.) */
-int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, nl_synth_lattice_plan *p);
-
-/* As nl_synth_lattice_plan_init (which is this with flags 0), with the
- * positive-definiteness rule of the other methods on the target at the 96
- * fit frequencies: a target that is not finite there is NL_EINVAL; one that
- * is negative there is NL_ENOTPD, or with NL_SYNTH_LATTICE_CLAMP fitted
- * without those values, p->negatives and p->clamp_error (their power,
- * weighted by f^dim on the log-spaced frequencies, relative to the positive
- * power) saying so. */
-int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
-                                     nl_synth_lattice_plan *p);
+ * NL_EFAIL.)  The positive-definiteness rule of the other methods holds on
+ * the target at the 96 fit frequencies: a target that is not finite there
+ * is NL_EINVAL; one that is negative there is NL_ENOTPD, or with flags
+ * NL_SYNTH_LATTICE_CLAMP (else 0) fitted without those values,
+ * p->negatives and p->clamp_error (their power, weighted by f^dim on the
+ * log-spaced frequencies, relative to the positive power) saying so. */
+int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
+                               nl_synth_lattice_plan *p);
 
 /* The basis spectrum at cell c (samples) and frequency f (cycles per
  * sample), dim 1 or 2, per (cycles per sample)^dim; 0 from 8 / c up.  0
@@ -99,14 +95,14 @@ int nl_synth_lattice_default_octaves(double cell0);
 /* The positive-definiteness rule of fft (synth/fft.h) for a spectrum model
  * on the dim-D output grid n (unit spacing): the lattice's weight fit
  * ignores where the spectrum is negative, so the negative mass relative to
- * the positive must stay within NL_SYNTH_FFT_CLAMP_TOL, or clamp accepts it
- * and *clamp_error receives that ratio (0 when within, and for models that
- * are not spectrum: models, which are not checked here).  Returns NL_OK,
- * NL_ENOTPD (beyond the tolerance without clamp), NL_EINVAL (no positive
- * part), or the codes of nl_wk_sample_spectrum_half (a spectrum that is not
+ * the positive must stay within NL_SYNTH_FFT_CLAMP_TOL, or flags
+ * NL_SYNTH_LATTICE_CLAMP (else 0) accepts it and *clamp_error receives that
+ * ratio (0 when within, and for models that are not spectrum: models, which
+ * are not checked here).  Returns NL_OK, NL_ENOTPD (beyond the tolerance
+ * without the flag), NL_EINVAL (no positive part), or the codes of nl_wk_sample_spectrum_half (a spectrum that is not
  * finite or not even; NL_ETOOBIG, NL_ENOMEM).  Not thread-safe (it may plan
  * FFTW). */
-int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, int clamp, double *clamp_error);
+int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, unsigned flags, double *clamp_error);
 
 /* The Wiener-interpolated noise lattice (Lewis 1987, "Comparison of
  * Stochastic Synthesis Methods": "a variation of the interpolated noise

@@ -22,7 +22,7 @@ int nl_synth_lattice_default_octaves(double cell0)
  * the weight fit ignores where a spectrum model is negative, so the
  * negative mass, sampled on the grid at unit spacing (the lattice's units),
  * must stay within NL_SYNTH_FFT_CLAMP_TOL of the positive mass. */
-int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, int clamp, double *clamp_error)
+int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, unsigned flags, double *clamp_error)
 {
     const double one[3] = {1, 1, 1};
     size_t h0 = n[0] / 2 + 1, rows = 1, negs = 0;
@@ -48,7 +48,7 @@ int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, int
     err = pos > 0 ? neg / pos : INFINITY;
     if (!(pos > 0))
         return NL_ERROR(NL_EINVAL, "%s: the sampled spectrum has no positive part on this grid", nl_model_spec(m));
-    if (err > NL_SYNTH_FFT_CLAMP_TOL && !clamp)
+    if (err > NL_SYNTH_FFT_CLAMP_TOL && !(flags & NL_SYNTH_LATTICE_CLAMP))
         return NL_ERROR(NL_ENOTPD, "%s: not positive definite on this grid: min spectrum %.3g; the lattice would drop "
                         "the %zu negative values, changing the covariance by up to %.2g of R(0), above %.0e (use "
                         "--clamp to accept)", nl_model_spec(m), lmin, negs, err, NL_SYNTH_FFT_CLAMP_TOL);

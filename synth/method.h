@@ -46,8 +46,18 @@ enum {
     NL_METHOD_CONDITIONABLE = 1u << 5, /* conditional simulation (synth --condition) */
     NL_METHOD_EXACT = 1u << 6,         /* the covariance is exactly the model's on the grid */
     NL_METHOD_CLAMP = 1u << 7,         /* honours NL_METHOD_OPT_CLAMP (a model not positive definite) */
-    NL_METHOD_SERIAL = 1u << 8         /* one execute at a time per plan (the plan holds its workspace) */
+    NL_METHOD_SERIAL = 1u << 8,        /* one execute at a time per plan (the plan holds its workspace) */
+    NL_METHOD_TORUS = 1u << 9,         /* distributed: white noise filtered on the periodic grid by FFTW-MPI */
+    NL_METHOD_EMBEDDING = 1u << 10,    /* distributed: the same on a circulant embedding of the grid */
+    NL_METHOD_VALIDATED = 1u << 11,    /* run by validate (analysis/validate.h), also once per other choice
+                                          of each CHOICE option */
+    NL_METHOD_SUBDIVISION = 1u << 12   /* the plan is an nl_subdiv_plan (nl_method_plan_impl): its exact
+                                          expected ACF is known (analysis/subdiv_exact.h) */
 };
+
+/* nl_method_names: list the exact methods first, each group in the
+ * registry's order (the order validate runs them). */
+#define NL_METHOD_EXACT_FIRST (1u << 30)
 
 /* Option types. */
 typedef enum {
@@ -126,6 +136,16 @@ typedef struct {
 
 typedef struct nl_method_plan nl_method_plan;
 
+/* What a plan reports of itself and of a field it made (nl_method_report_of). */
+typedef struct {
+    char method[4096]; /* the method string (nl_method_describe) */
+    char flags[256];   /* what the method flagged, comma-separated ("clamped", "truncated=0.0012"); "" none */
+    double sd;         /* the field's scale: a preview spans offset +- 3 sd */
+    double offset;     /* the preview's centre */
+    char json[8192];   /* the method's numbers as the text of one JSON object (reals with 17 significant
+                          digits and a '.' or exponent; a non-finite one written nan), or "": none */
+} nl_method_report;
+
 /* A method.  plan: made once from the model (NULL for NL_METHOD_NO_MODEL or
  * a model-replacing option), grid and options (g and o are copied; the
  * strings o holds, m and the fields of NL_METHOD_FILE options must outlive
@@ -133,11 +153,15 @@ typedef struct nl_method_plan nl_method_plan;
  * realization of the whole grid for a seed; execute_slab (NULL when not
  * distributed): rows s0 .. s0 + f->n[dim - 1] - 1 of the slowest axis, the
  * same bits as the whole field's; describe: the method string with every
- * option that shapes the field; free.  Each int returns NL_OK or an NL_E*
- * code with its message (core/nl_error.h). */
+ * option that shapes the field; report (NULL: none beyond the method
+ * string) fills flags, sd, offset and json of r for the field f made with
+ * seed, or for the plan alone when f is NULL (nl_method_report_of has set
+ * r's method and defaults); free.  Each int returns NL_OK or an NL_E* code
+ * with its message (core/nl_error.h). */
 struct nl_method_type {
     const char *name;                       /* "fft", ... */
     const char *summary;                    /* one line */
+    const char *noun;                       /* what messages call it: "subdivision", "sparse convolution" */
     const char *help;                       /* synth --help's paragraph: lines joined by '\n' */
     unsigned dims;                          /* bit d - 1 set: dD grids (1u << 0 | 1u << 1: 1D and 2D) */
     unsigned caps;                          /* NL_METHOD_* capabilities */
@@ -149,6 +173,8 @@ struct nl_method_type {
     int (*execute)(nl_method_plan *p, uint64_t seed, nl_field *f);
     int (*execute_slab)(nl_method_plan *p, uint64_t seed, size_t s0, nl_field *f);
     int (*describe)(const nl_method_plan *p, char *buf, size_t size);
+    int (*report)(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f,
+                  nl_method_report *r);
     void (*free)(nl_method_plan *p);
 };
 
@@ -158,14 +184,21 @@ struct nl_method_type {
 int nl_method_count(void);
 const nl_method_type *nl_method_at(int i);
 const nl_method_type *nl_method_find(const char *name);
+/* The registry with its exact methods (NL_METHOD_EXACT) first, each group
+ * in the registry's order: method i of 0 .. nl_method_count() - 1, NULL
+ * out of range.  Validate runs methods, and capability messages name them,
+ * in this order. */
+const nl_method_type *nl_method_ranked(int i);
 
 /* Is `name` reserved for a method not in this version?  1 or 0. */
 int nl_method_planned(const char *name);
 
 /* The method names joined: "a, b or c" with `sep` (", ") between them and
  * `last` (" or ") before the last one, into buf (size bytes, NUL-terminated, truncated if short).
- * Only methods with every capability in `caps` are listed (0: all);
- * opt != NULL: only those taking that option.  Returns the number listed. */
+ * Only methods with every capability in `caps` are listed (0: all), in the
+ * registry's order or, with NL_METHOD_EXACT_FIRST in caps, the exact
+ * methods first (nl_method_ranked); opt != NULL: only those taking that
+ * option.  Returns the number listed. */
 int nl_method_names(unsigned caps, const char *opt, const char *sep, const char *last, char *buf, size_t size);
 
 /* The row of option `name` in t's table, or -1. */
@@ -194,6 +227,14 @@ int nl_method_execute_slab(nl_method_plan *p, uint64_t seed, size_t s0, nl_field
 /* The method string (what synth records as noiselab.method) into buf;
  * NL_EINVAL when it does not fit. */
 int nl_method_describe(const nl_method_plan *p, char *buf, size_t size);
+/* What the plan p (made for model m, NULL when it has none) reports of
+ * itself and of the field f it made for seed (f NULL: of the plan alone,
+ * without the numbers of a field): r->method by nl_method_describe, then no
+ * flags, sd the field's root mean square (1 if 0 or no field), offset 0 and
+ * no json unless the method's report says otherwise.
+ * Returns NL_OK, or NL_EINVAL (the method string or the json does not fit). */
+int nl_method_report_of(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f,
+                        nl_method_report *r);
 /* The plan's method, and the per-method plan under it (nl_synth_fft_plan *
  * for fft, nl_subdiv_plan * for subdiv and midpoint unless miller, ...:
  * see each synth/method_<name>.c), owned by p. */

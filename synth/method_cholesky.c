@@ -5,6 +5,7 @@
 #include "../core/nl_error.h"
 #include "cholesky.h"
 
+#include <math.h>
 #include <stdlib.h>
 
 static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_options *o, nl_method_plan **out)
@@ -36,13 +37,22 @@ static void plan_free(nl_method_plan *p)
     free(p);
 }
 
+static int report(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f, nl_method_report *r)
+{
+    const double zero[3] = {0, 0, 0};
+    (void)seed, (void)f;
+    r->sd = sqrt(nl_model_acf(m, p->grid.dim, zero));
+    return NL_OK;
+}
+
 const nl_method_type nl_method_cholesky = {
     .name = "cholesky",
     .summary = "direct simulation by the Cholesky factor of the covariance matrix (exact, small grids)",
+    .noun = "Cholesky factorization",
     .help =
         "direct simulation by the Cholesky factor of the covariance matrix; exact,\n"
         "O(N^3), at most 8192 samples: the ground truth for small grids",
     .dims = 7,
     .caps = NL_METHOD_MODEL | NL_METHOD_EXACT | NL_METHOD_SERIAL,
-    .plan = plan, .execute = execute, .describe = describe, .free = plan_free,
+    .plan = plan, .execute = execute, .describe = describe, .report = report, .free = plan_free,
 };

@@ -2,8 +2,10 @@
  * Its nl_method_plan_impl is the nl_synth_circulant_plan. */
 #include "method_internal.h"
 #include "../core/nl_error.h"
-#include "circulant.h"
+#include "circulant_internal.h"
 
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 /* The embedding doubles at most this many times (up to 16x the size). */
@@ -41,15 +43,47 @@ static void plan_free(nl_method_plan *p)
     free(p);
 }
 
+int nl_synth_circulant_report(const nl_synth_circulant_info *i, const nl_model *m, int dim, nl_method_report *r)
+{
+    const double zero[3] = {0, 0, 0};
+    int clamped = i->clamp_error > NL_SYNTH_FFT_CLAMP_TOL, lost = fabs(i->variance_loss) > NL_SYNTH_CIRCULANT_LOSS_TOL;
+    int st;
+    snprintf(r->method, sizeof r->method, "circulant:embedding=%zux%zux%zu", i->m[0], i->m[1], i->m[2]);
+    snprintf(r->flags, sizeof r->flags, "%s%s%s", clamped ? "clamped" : "", clamped && lost ? "," : "",
+             lost ? "variance-changed" : "");
+    r->sd = sqrt(nl_model_acf(m, dim, zero));
+    if (!(r->sd > 0))
+        r->sd = 1;
+    r->json[0] = '\0';
+    st = nl_method_json(r, "{\"embedding\": [%zu, %zu, %zu], \"min_eigenvalue\": %s, \"max_eigenvalue\": %s, "
+                        "\"clamp_error\": %s, \"doublings\": %d", i->m[0], i->m[1], i->m[2],
+                        NL_METHOD_REAL(i->min_eigenvalue), NL_METHOD_REAL(i->max_eigenvalue),
+                        NL_METHOD_REAL(i->clamp_error), i->doublings);
+    /* the spectral models' loss to the embedding's frequency sampling (synth/circulant.h) */
+    if (!st && lost)
+        st = nl_method_json(r, ", \"variance_loss\": %s", NL_METHOD_REAL(i->variance_loss));
+    return st ? st : nl_method_json(r, "}");
+}
+
+static int report(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f, nl_method_report *r)
+{
+    nl_synth_circulant_info info;
+    (void)seed, (void)f;
+    nl_synth_circulant_plan_info(p->impl, &info);
+    return nl_synth_circulant_report(&info, m, p->grid.dim, r);
+}
+
 const nl_method_type nl_method_circulant = {
     .name = "circulant",
     .summary = "exact stationary field on a non-periodic grid by circulant embedding",
+    .noun = "circulant embedding",
     .help =
         "exact stationary field on a NON-periodic grid by circulant embedding\n"
         "(Dietrich-Newsam, Wood-Chan): the embedding doubles until its eigenvalues\n"
         "are non-negative, up to 16x the size; the report gives the embedding and\n"
         "the smallest eigenvalue",
     .dims = 7,
-    .caps = NL_METHOD_MODEL | NL_METHOD_DISTRIBUTED | NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT | NL_METHOD_CLAMP,
-    .plan = plan, .execute = execute, .describe = describe, .free = plan_free,
+    .caps = NL_METHOD_MODEL | NL_METHOD_DISTRIBUTED | NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT | NL_METHOD_CLAMP |
+            NL_METHOD_EMBEDDING | NL_METHOD_VALIDATED,
+    .plan = plan, .execute = execute, .describe = describe, .report = report, .free = plan_free,
 };

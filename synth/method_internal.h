@@ -31,4 +31,12 @@ int nl_method_check_dim(const nl_method_type *t, const nl_method_grid *g);
 int nl_method_append(char *buf, size_t size, size_t *len, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 
+/* A report's numbers: appended to r->json as with nl_method_append.  A
+ * real is written by nl_method_real into a buffer (NL_METHOD_REAL(x) gives
+ * one for the statement): 17 significant digits, ".0" added to an
+ * integral value, "nan" when not finite (which no JSON reader accepts). */
+int nl_method_json(nl_method_report *r, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+const char *nl_method_real(char buf[32], double x);
+#define NL_METHOD_REAL(x) nl_method_real((char[32]){0}, (x))
+
 #endif

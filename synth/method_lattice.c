@@ -4,6 +4,8 @@
 #include "lattice.h"
 #include "../core/nl_error.h"
 
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 typedef struct {
@@ -44,9 +46,9 @@ static int plan_perlin(const nl_model *m, const nl_method_grid *g, const nl_meth
                                              : nl_synth_lattice_default_cell(g->n);
     lp->octaves = nl_method_opt_set(o, "octaves") ? (int)nl_method_opt_int(o, "octaves")
                                                    : nl_synth_lattice_default_octaves(lp->cell0);
-    if ((st = nl_synth_lattice_check_grid(m, g->dim, g->n, (fl & NL_SYNTH_LATTICE_CLAMP) != 0, &lp->grid_clamp_error)))
+    if ((st = nl_synth_lattice_check_grid(m, g->dim, g->n, fl, &lp->grid_clamp_error)))
         return st;
-    return nl_synth_lattice_plan_init_flags(m, g->dim, lp->cell0, lp->octaves, fl, &lp->perlin);
+    return nl_synth_lattice_plan_init(m, g->dim, lp->cell0, lp->octaves, fl, &lp->perlin);
 }
 
 static void plan_free(nl_method_plan *p)
@@ -88,9 +90,46 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
     return nl_method_append(buf, size, &len, "lattice:cell=%.17g,octaves=%d", lp->cell0, lp->octaves);
 }
 
+static int report_wiener(const nl_lattice_method_plan *lp, nl_method_report *r)
+{
+    nl_synth_lattice_wiener_info i;
+    nl_synth_lattice_wiener_plan_info(lp->plan, &i);
+    if (i.negatives)
+        snprintf(r->flags, sizeof r->flags, "clamped");
+    r->sd = sqrt(i.variance);
+    return nl_method_json(r, "{\"cell\": %d, \"nodes\": [%zu, %zu], \"variance\": %s, \"mean_error_variance\": %s, "
+                          "\"max_error_variance\": %s, \"rank\": %d}", i.cell, i.nodes[0], i.nodes[1],
+                          NL_METHOD_REAL(i.variance), NL_METHOD_REAL(i.mean_error), NL_METHOD_REAL(i.max_error),
+                          i.rank);
+}
+
+/* Perlin: each octave's weight and leakage; the preview over the field's own range. */
+static int report(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f, nl_method_report *r)
+{
+    const nl_lattice_method_plan *lp = p->impl;
+    const nl_synth_lattice_plan *pp = &lp->perlin;
+    int st;
+    (void)m, (void)seed, (void)f;
+    if (lp->wiener)
+        return report_wiener(lp, r);
+    if (lp->grid_clamp_error > 0 || pp->negatives)
+        snprintf(r->flags, sizeof r->flags, "clamped");
+    st = nl_method_json(r, "{\"octaves\": [");
+    for (int o = 0; o < pp->octaves && !st; o++)
+        st = nl_method_json(r, "%s{\"cell\": %s, \"weight\": %s, \"peak\": %s, \"leakage\": %s}", o ? ", " : "",
+                            NL_METHOD_REAL(pp->cell[o]), NL_METHOD_REAL(pp->weight[o]), NL_METHOD_REAL(pp->peak[o]),
+                            NL_METHOD_REAL(pp->leakage[o]));
+    if (!st)
+        st = nl_method_json(r, "]");
+    if (!st && pp->negatives)
+        st = nl_method_json(r, ", \"clamp_error\": %s", NL_METHOD_REAL(pp->clamp_error));
+    return st ? st : nl_method_json(r, "}");
+}
+
 const nl_method_type nl_method_lattice = {
     .name = "lattice",
     .summary = "interpolated noise lattice (Perlin gradient noise) summed over octaves",
+    .noun = "lattice noise",
     .help =
         "interpolated noise lattice (Perlin gradient noise) summed over octaves,\n"
         "weighted to the target spectrum's power in each octave's band; --cell C\n"
@@ -102,5 +141,5 @@ const nl_method_type nl_method_lattice = {
     .dims = 3,
     .caps = NL_METHOD_MODEL | NL_METHOD_CLAMP,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),
-    .plan = plan, .execute = execute, .describe = describe, .free = plan_free,
+    .plan = plan, .execute = execute, .describe = describe, .report = report, .free = plan_free,
 };

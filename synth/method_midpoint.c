@@ -46,7 +46,7 @@ static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_opti
     if (isnan(mp.H) && (st = nl_subdiv_midpoint_hurst(m, g->dim, &mp.H)))
         return st;
     if (mp.miller && !mp.levels)
-        mp.levels = nl_midpoint_miller_default_levels(g->dim, g->n);
+        mp.levels = nl_synth_midpoint_miller_default_levels(g->dim, g->n);
     if (!mp.miller) {
         if ((st = nl_subdiv_plan_alloc_midpoint(g->dim, g->n, g->h[0], mp.levels, mp.H, 1.0, mp.vscale, &mp.plan)))
             return st;
@@ -67,7 +67,7 @@ static int execute(nl_method_plan *p, uint64_t seed, nl_field *f)
 {
     const nl_midpoint_method_plan *mp = p->impl;
     if (mp->miller)
-        return nl_midpoint_miller(mp->levels, mp->H, 1.0, mp->vscale, seed, f);
+        return nl_synth_midpoint_miller(mp->levels, mp->H, 1.0, mp->vscale, seed, f);
     return nl_subdiv_plan_execute(mp->plan, seed, f);
 }
 
@@ -79,9 +79,24 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
                             mp->levels, mp->vscale, mp->miller ? ",interpolant=miller" : "");
 }
 
+static int report(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f, nl_method_report *r)
+{
+    const nl_midpoint_method_plan *mp = p->impl;
+    nl_subdiv_info info;
+    (void)m, (void)seed, (void)f;
+    if (mp->miller)
+        return nl_method_json(r, "{\"H\": %s, \"levels\": %d, \"variance_scale\": %s, \"interpolant\": \"miller\"}",
+                              NL_METHOD_REAL(mp->H), mp->levels, NL_METHOD_REAL(mp->vscale));
+    nl_subdiv_plan_info(mp->plan, &info);
+    r->sd = sqrt(info.variance);
+    return nl_method_json(r, "{\"H\": %s, \"levels\": %d, \"variance_scale\": %s}", NL_METHOD_REAL(mp->H),
+                          info.levels, NL_METHOD_REAL(mp->vscale));
+}
+
 const nl_method_type nl_method_midpoint = {
     .name = "midpoint",
     .summary = "midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours only",
+    .noun = "midpoint displacement",
     .help =
         "midpoint displacement (Fournier, Fussell and Carpenter), nearest neighbours\n"
         "only; --H h (Hurst exponent) or --acf/--spectrum power:d=D with d = 2H + 1\n"
@@ -94,5 +109,5 @@ const nl_method_type nl_method_midpoint = {
     .caps = NL_METHOD_MODEL,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),
     .model_conflict = "give either --H or a power-law model, not both",
-    .plan = plan, .execute = execute, .describe = describe, .free = plan_free,
+    .plan = plan, .execute = execute, .describe = describe, .report = report, .free = plan_free,
 };

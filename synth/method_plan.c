@@ -1,8 +1,10 @@
 /* Planning, executing and describing through a method's descriptor
  * (synth/method.h). */
 #include "method_internal.h"
+#include "../core/field_stats.h"
 #include "../core/nl_error.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -60,6 +62,42 @@ void nl_method_plan_free(nl_method_plan *p)
 {
     if (p)
         p->type->free(p);
+}
+
+int nl_method_report_of(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f,
+                        nl_method_report *r)
+{
+    double rms = f ? nl_field_rms(f) : 0;
+    int st = nl_method_describe(p, r->method, sizeof r->method);
+    r->flags[0] = r->json[0] = '\0';
+    r->sd = rms > 0 ? rms : 1;
+    r->offset = 0;
+    return st || !p->type->report ? st : p->type->report(p, m, seed, f, r);
+}
+
+int nl_method_json(nl_method_report *r, const char *fmt, ...)
+{
+    size_t len = strlen(r->json);
+    va_list ap;
+    int w;
+    va_start(ap, fmt);
+    w = vsnprintf(r->json + len, sizeof r->json - len, fmt, ap);
+    va_end(ap);
+    if (w < 0 || (size_t)w >= sizeof r->json - len)
+        return NL_ERROR(NL_EINVAL, "method report: longer than %zu bytes", sizeof r->json);
+    return NL_OK;
+}
+
+/* As a JSON writer writes a real (jansson's 17 digits): read back, the
+ * same double. */
+const char *nl_method_real(char buf[32], double x)
+{
+    if (!isfinite(x))
+        return "nan";
+    snprintf(buf, 32, "%.17g", x);
+    if (strspn(buf, "0123456789-") == strlen(buf))
+        strcat(buf, ".0");
+    return buf;
 }
 
 int nl_method_append(char *buf, size_t size, size_t *len, const char *fmt, ...)

@@ -38,6 +38,15 @@ const nl_method_type *nl_method_find(const char *name)
     return NULL;
 }
 
+const nl_method_type *nl_method_ranked(int i)
+{
+    for (int pass = 0, k = 0; pass < 2; pass++)
+        for (int j = 0; j < COUNT(methods); j++)
+            if ((!(methods[j]->caps & NL_METHOD_EXACT)) == pass && k++ == i)
+                return methods[j];
+    return NULL;
+}
+
 int nl_method_planned(const char *name)
 {
     for (int i = 0; name && i < COUNT(planned); i++)
@@ -48,6 +57,7 @@ int nl_method_planned(const char *name)
 
 static int listed(const nl_method_type *t, unsigned caps, const char *opt)
 {
+    caps &= ~NL_METHOD_EXACT_FIRST;
     return (t->caps & caps) == caps && (!opt || nl_method_option_index(t, opt) >= 0);
 }
 
@@ -60,9 +70,10 @@ int nl_method_names(unsigned caps, const char *opt, const char *sep, const char 
     if (size)
         buf[0] = 0;
     for (int i = 0; i < COUNT(methods) && size; i++) {
-        if (!listed(methods[i], caps, opt))
+        const nl_method_type *t = caps & NL_METHOD_EXACT_FIRST ? nl_method_ranked(i) : methods[i];
+        if (!listed(t, caps, opt))
             continue;
-        int w = snprintf(buf + len, size - len, "%s%s", k == 0 ? "" : k + 1 == total ? last : sep, methods[i]->name);
+        int w = snprintf(buf + len, size - len, "%s%s", k == 0 ? "" : k + 1 == total ? last : sep, t->name);
         k++;
         if (w < 0 || (size_t)w >= size - len)
             break;

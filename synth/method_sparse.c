@@ -7,6 +7,7 @@
 #include "../core/nl_error.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 typedef struct {
@@ -42,14 +43,14 @@ static int model_plan(const nl_model *m, const nl_method_grid *g, const nl_metho
     double density = nl_method_opt_double(o, "density");
     if ((o->flags & NL_METHOD_OPT_RECORDED) && radius) {
         nl_synth_sparse_info info;
-        if (!nl_synth_sparse_plan_model_flags(m, g->dim, g->h, 0, cell, density, fl, p)) {
+        if (!nl_synth_sparse_plan_model(m, g->dim, g->h, &(nl_synth_sparse_options){0, cell, density, fl}, p)) {
             nl_synth_sparse_plan_info(*p, &info);
             if (info.radius == radius)
                 return NL_OK;
             nl_synth_sparse_plan_free(*p);
         }
     }
-    return nl_synth_sparse_plan_model_flags(m, g->dim, g->h, radius, cell, density, fl, p);
+    return nl_synth_sparse_plan_model(m, g->dim, g->h, &(nl_synth_sparse_options){radius, cell, density, fl}, p);
 }
 
 static int exemplar_plan(sparse_plan *sp, const nl_method_grid *g, const nl_method_options *o)
@@ -63,8 +64,9 @@ static int exemplar_plan(sparse_plan *sp, const nl_method_grid *g, const nl_meth
     if (g->dim != 2)
         return NL_ERROR(NL_EINVAL, "--exemplar: expected a 2D image and a 2D --size, got %dD %s and a %dD --size",
                         img->dim, v->s, g->dim);
-    return nl_synth_sparse_plan_exemplar(img, (int)nl_method_opt_int(o, "radius"), (int)nl_method_opt_int(o, "cell"),
-                                         nl_method_opt_double(o, "density"), (nl_synth_sparse_plan **)&sp->head.impl);
+    return nl_synth_sparse_plan_exemplar(img, &(nl_synth_sparse_options){(int)nl_method_opt_int(o, "radius"),
+                                         (int)nl_method_opt_int(o, "cell"), nl_method_opt_double(o, "density"), 0},
+                                         (nl_synth_sparse_plan **)&sp->head.impl);
 }
 
 static int kernel_plan(sparse_plan *sp, const nl_model *m, const nl_method_grid *g, const nl_method_options *o)
@@ -78,13 +80,14 @@ static int kernel_plan(sparse_plan *sp, const nl_model *m, const nl_method_grid 
                         "or --exemplar FILE");
     /* an explicit radius: the work is known before the kernel is made */
     if ((radius || kernel) &&
-        (st = nl_synth_sparse_check_work(g->dim, g->n, radius ? radius : EXPR_RADIUS, cell, density, angle != NULL)))
+        (st = nl_synth_sparse_check_work(g->dim, g->n, radius ? radius : EXPR_RADIUS, cell, density,
+                                               angle ? NL_SYNTH_SPARSE_ANGLE : 0)))
         return st;
     if (m)
         st = model_plan(m, g, o, (nl_synth_sparse_plan **)&sp->head.impl);
     else if (kernel)
-        st = nl_synth_sparse_plan_expr(kernel, g->dim, radius ? radius : EXPR_RADIUS, cell, density,
-                                       (nl_synth_sparse_plan **)&sp->head.impl);
+        st = nl_synth_sparse_plan_expr(kernel, g->dim, &(nl_synth_sparse_options){radius ? radius : EXPR_RADIUS, cell,
+                                       density, 0}, (nl_synth_sparse_plan **)&sp->head.impl);
     else
         st = exemplar_plan(sp, g, o);
     if (!st && angle)
@@ -116,14 +119,14 @@ static int plan(const nl_model *m, const nl_method_grid *g, const nl_method_opti
 static int execute(nl_method_plan *p, uint64_t seed, nl_field *f)
 {
     int wrap = (int)nl_method_opt_int(&p->opt, "wrap");
-    return nl_synth_sparse_execute(p->impl, seed, wrap, wrap ? NULL : p->grid.origin, f);
+    return nl_synth_sparse_execute(p->impl, seed, wrap ? NL_SYNTH_SPARSE_WRAP : 0, wrap ? NULL : p->grid.origin, f);
 }
 
 static int execute_slab(nl_method_plan *p, uint64_t seed, size_t s0, nl_field *f)
 {
     long o[2] = {p->grid.origin[0], p->grid.origin[1]};
     if (nl_method_opt_int(&p->opt, "wrap"))
-        return nl_synth_sparse_execute_slab(p->impl, seed, 1, p->grid.n, s0, f);
+        return nl_synth_sparse_execute_slab(p->impl, seed, NL_SYNTH_SPARSE_WRAP, p->grid.n, s0, f);
     o[p->grid.dim - 1] += (long)s0;
     return nl_synth_sparse_execute(p->impl, seed, 0, o, f);
 }
@@ -153,9 +156,35 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
     return st;
 }
 
+/* Flags: a clamped spectrum, and a kernel that loses more than TRUNC_FLAG
+ * of its energy at the radius (the variance is then R(0) less that
+ * fraction; the report gives it as truncated_energy). */
+#define TRUNC_FLAG 1e-3
+
+static int report(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f, nl_method_report *r)
+{
+    nl_synth_sparse_info i;
+    int k = 0, st;
+    (void)m, (void)seed, (void)f;
+    nl_synth_sparse_plan_info(p->impl, &i);
+    if (i.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
+        k = snprintf(r->flags, sizeof r->flags, "clamped");
+    if (i.truncated > TRUNC_FLAG)
+        snprintf(r->flags + k, sizeof r->flags - (size_t)k, "%struncated=%.2g", k ? "," : "", i.truncated);
+    r->sd = sqrt(i.variance);
+    r->offset = i.mean;
+    st = nl_method_json(r, "{\"radius\": %d, \"cell\": %d, \"density\": %s, \"variance\": %s, \"excess_kurtosis\": %s, "
+                        "\"truncated_energy\": %s", i.radius, i.cell, NL_METHOD_REAL(i.density),
+                        NL_METHOD_REAL(i.variance), NL_METHOD_REAL(i.kurtosis), NL_METHOD_REAL(i.truncated));
+    if (!st && i.clamp_error > NL_SYNTH_FFT_CLAMP_TOL)
+        st = nl_method_json(r, ", \"clamp_error\": %s", NL_METHOD_REAL(i.clamp_error));
+    return st ? st : nl_method_json(r, "}");
+}
+
 const nl_method_type nl_method_sparse = {
     .name = "sparse",
     .summary = "sparse convolution (Lewis GI '86): Poisson impulses in cells convolved with a kernel",
+    .noun = "sparse convolution",
     .help =
         "sparse convolution (Lewis GI '86): Poisson impulses in cells, convolved with\n"
         "a kernel: the model's (R = h * h), --kernel EXPR in x, y (t, r), or --exemplar\n"
@@ -166,9 +195,10 @@ const nl_method_type nl_method_sparse = {
         "kurtosis 3 sum h^4 / (lambda (sum h^2)^2); a kernel losing more than 1e-3\n"
         "of its energy at the radius is flagged truncated=FRACTION",
     .dims = 3,
-    .caps = NL_METHOD_MODEL | NL_METHOD_WINDOW | NL_METHOD_DISTRIBUTED | NL_METHOD_CLAMP,
+    .caps = NL_METHOD_MODEL | NL_METHOD_WINDOW | NL_METHOD_DISTRIBUTED | NL_METHOD_CLAMP | NL_METHOD_VALIDATED,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),
     .model_conflict = "expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE",
     .model_missing = "expected exactly one kernel: --acf/--spectrum SPEC, --kernel EXPR or --exemplar FILE",
-    .plan = plan, .execute = execute, .execute_slab = execute_slab, .describe = describe, .free = plan_free,
+    .plan = plan, .execute = execute, .execute_slab = execute_slab, .describe = describe, .report = report,
+    .free = plan_free,
 };

@@ -29,6 +29,8 @@ static const nl_method_option options[] = {
     {"displacements", NL_METHOD_CHOICE, 0, 0, 0, "independent|correlated", "independent or correlated",
      "independent", "new points displaced independently or together"},
     {"taps", NL_METHOD_INT, 0, 1, NL_SUBDIV_MAX_TAPS, NULL, NULL, NULL, "correlated: the filter's half-width"},
+    {"max-neighborhood", NL_METHOD_INT, 0, 1, 64, NULL, NULL, NULL,
+     "auto: the largest half-width tried (default 16 in 1D, 6 in 2D)"},
 };
 
 static void to_options(const nl_method_options *mo, nl_subdiv_options *o)
@@ -44,6 +46,7 @@ static void to_options(const nl_method_options *mo, nl_subdiv_options *o)
     o->random_nb = (int)nl_method_opt_int(mo, "random-neighborhoods");
     o->displacements = nl_method_opt_int(mo, "displacements") ? NL_SUBDIV_DISP_ERROR : NL_SUBDIV_DISP_INDEPENDENT;
     o->taps = (int)nl_method_opt_int(mo, "taps");
+    o->nmax = (int)nl_method_opt_int(mo, "max-neighborhood");
 }
 
 /* The seed image (read unless given read) and the levels it needs. */
@@ -144,6 +147,8 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
                           img ? ",seed-image" : "");
     if (!st && rnb)
         st = nl_method_append(buf, size, &len, ",random-neighborhoods=%ld", rnb);
+    if (!st && nl_method_opt_set(&p->opt, "max-neighborhood"))
+        st = nl_method_append(buf, size, &len, ",max-neighborhood=%ld", nl_method_opt_int(&p->opt, "max-neighborhood"));
     if (!st && c->level[0].filt)
         st = nl_method_append(buf, size, &len, ",displacements=correlated,taps=%d", c->level[0].taps);
     if (!st && nonper)
@@ -153,9 +158,50 @@ static int describe(const nl_method_plan *p, char *buf, size_t size)
     return st;
 }
 
+/* Each level's neighbourhood, largest variance and flags. */
+static int report_levels(const nl_subdiv_coeffs *c, nl_method_report *r)
+{
+    int st = nl_method_json(r, "[");
+    for (int k = 0; k < c->levels && !st; k++) {
+        const nl_subdiv_level *l = &c->level[k];
+        unsigned fl = 0;
+        double v = 0;
+        char buf[128];
+        for (int j = 0; j < l->nclass; j++)
+            fl |= l->cls[j].flags, v = fmax(v, l->cls[j].variance);
+        nl_subdiv_flag_names(fl, buf, sizeof buf);
+        st = nl_method_json(r, "%s{\"level\": %d, \"spacing\": %s, \"N\": %d, \"max_variance\": %s, \"flags\": \"%s\"",
+                            k ? ", " : "", k, NL_METHOD_REAL(l->spacing), l->N, NL_METHOD_REAL(v), buf);
+        if (!st && l->filt)
+            st = nl_method_json(r, ", \"taps\": %d, \"filter_error\": %s", l->taps, NL_METHOD_REAL(l->filt_error));
+        if (!st)
+            st = nl_method_json(r, "}");
+    }
+    return st ? st : nl_method_json(r, "]");
+}
+
+static int report(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f, nl_method_report *r)
+{
+    const nl_subdiv_coeffs *c = nl_subdiv_plan_coeffs(p->impl);
+    nl_subdiv_info info;
+    int st;
+    (void)m, (void)seed, (void)f;
+    nl_subdiv_plan_info(p->impl, &info);
+    nl_subdiv_flag_names(c->flags, r->flags, sizeof r->flags);
+    r->sd = sqrt(c->r0);
+    st = nl_method_json(r, "{\"spacing0\": %s, \"variance\": %s, \"levels\": ", NL_METHOD_REAL(info.spacing0),
+                        NL_METHOD_REAL(c->r0));
+    if (!st)
+        st = report_levels(c, r);
+    if (!st && nl_method_opt_int(&p->opt, "nonperiodic"))
+        st = nl_method_json(r, ", \"coarse_correlation\": %s", NL_METHOD_REAL(info.coarse_correlation));
+    return st ? st : nl_method_json(r, "}");
+}
+
 const nl_method_type nl_method_subdiv = {
     .name = "subdiv",
     .summary = "generalized stochastic subdivision (Lewis 1987)",
+    .noun = "subdivision",
     .help =
         "generalized stochastic subdivision (Lewis 1987), 1D or 2D:\n"
         "--levels L          levels of refinement (default: down to a coarse grid\n"
@@ -176,7 +222,8 @@ const nl_method_type nl_method_subdiv = {
         "                    1D, 2 in 2D; at most 16)",
     .dims = 3,
     .caps = NL_METHOD_MODEL | NL_METHOD_PERIODIC | NL_METHOD_WINDOW | NL_METHOD_DISTRIBUTED |
-            NL_METHOD_CONDITIONABLE | NL_METHOD_CLAMP,
+            NL_METHOD_CONDITIONABLE | NL_METHOD_CLAMP | NL_METHOD_VALIDATED | NL_METHOD_SUBDIVISION,
     .options = options, .noptions = (int)(sizeof options / sizeof *options),
-    .plan = plan, .execute = execute, .execute_slab = execute_slab, .describe = describe, .free = plan_free,
+    .plan = plan, .execute = execute, .execute_slab = execute_slab, .describe = describe, .report = report,
+    .free = plan_free,
 };

@@ -48,35 +48,35 @@ extern "C" {
  * P0, P1 (1D: 3/4, 1/4); the other new points take it mirrored.  w holds 4
  * doubles (dim 2) or 2 (dim 1); dim is 1 or 2 (other values: w untouched).
  * Pure; thread-safe. */
-void nl_midpoint_miller_mask(int dim, double *w);
+void nl_synth_midpoint_miller_mask(int dim, double *w);
 
 /* The coarse variance (*r0) and the displacement variances v[0..levels-1]
  * of fBm (0 < H < 1, sigma2 > 0, vscale > 0) refined from coarse spacing
  * spacing0 > 0 (module comment).  NL_EINVAL for arguments out of range or a
  * variance that is not finite.  Pure; thread-safe. */
-int nl_midpoint_miller_variances(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
-                                 double *r0, double *v);
+int nl_synth_midpoint_miller_variances(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
+                                       double *r0, double *v);
 
 /* One level: in (n[0] x n[1] samples, n[1] = 1 in 1D, periodic) to out
  * (2 n[0] x 2 n[1] in 2D, 2 n[0] in 1D), each new point the mask applied
  * to its parent square plus sd times its Gaussian of level `level` (sd = 0:
  * the interpolant alone).  Arrays row-major, x fastest; in and out must
  * not overlap.  Pure; thread-safe. */
-void nl_midpoint_miller_refine(int dim, const size_t *n, const double *in, double sd, uint64_t seed, int level,
-                               double *out);
+void nl_synth_midpoint_miller_refine(int dim, const size_t *n, const double *in, double sd, uint64_t seed, int level,
+                                     double *out);
 
 /* The default levels for n[0..dim-1] samples: the most that leave a coarse
  * grid of 2 samples per axis (0 when none does).  Pure; thread-safe. */
-int nl_midpoint_miller_default_levels(int dim, const size_t *n);
+int nl_synth_midpoint_miller_default_levels(int dim, const size_t *n);
 
 /* Square-square synthesis of fBm into out (1D or 2D, unit spacing in
  * samples; out->h is not read): levels L (0: the most that leave a coarse
  * grid of 2 samples per axis) with each out->n[a] a multiple of 2^L of at
  * least 2 coarse samples.  Errors: NL_EINVAL (out 3D, sizes, levels outside
- * 0..NL_MILLER_MAX_LEVELS, and those of nl_midpoint_miller_variances),
+ * 0..NL_MILLER_MAX_LEVELS, and those of nl_synth_midpoint_miller_variances),
  * NL_ETOOBIG (the scratch grid exceeds the memory available), NL_ENOMEM.
  * Pure in its arguments (bit-identical for equal ones); thread-safe. */
-int nl_midpoint_miller(int levels, double H, double sigma2, double vscale, uint64_t seed, nl_field *out);
+int nl_synth_midpoint_miller(int levels, double H, double sigma2, double vscale, uint64_t seed, nl_field *out);
 
 /* What the midpoint method's plan holds (nl_method_plan_impl of a
  * "midpoint" plan, synth/method.h; owned by that plan). */

@@ -8,7 +8,7 @@
 #include <math.h>
 #include <string.h>
 
-void nl_midpoint_miller_mask(int dim, double *w)
+void nl_synth_midpoint_miller_mask(int dim, double *w)
 {
     if (dim == 1)
         w[0] = 0.75, w[1] = 0.25;
@@ -22,8 +22,8 @@ static double gam(double sigma2, double H, double dx, double dy)
     return 0.5 * sigma2 * pow(hypot(dx, dy), 2 * H);
 }
 
-int nl_midpoint_miller_variances(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
-                                 double *r0, double *v)
+int nl_synth_midpoint_miller_variances(int dim, int levels, double spacing0, double H, double sigma2, double vscale,
+                                       double *r0, double *v)
 {
     double w[4], px[4], py[4];
     int nc = dim == 1 ? 2 : 4;
@@ -37,7 +37,7 @@ int nl_midpoint_miller_variances(int dim, int levels, double spacing0, double H,
         !isfinite(vscale))
         return NL_ERROR(NL_EINVAL, "midpoint: expected a positive finite spacing, variance and variance-scale, got "
                         "%g, %g and %g", spacing0, sigma2, vscale);
-    nl_midpoint_miller_mask(dim, w);
+    nl_synth_midpoint_miller_mask(dim, w);
     *r0 = 0.5 * sigma2 * pow(spacing0, 2 * H);
     for (int k = 0; k < levels; k++) {
         double s = ldexp(spacing0, -k), t = 0.25 * s, e = 0;
@@ -59,13 +59,13 @@ int nl_midpoint_miller_variances(int dim, int levels, double spacing0, double H,
 
 static uint64_t index2(size_t i, size_t j) { return ((uint64_t)j << 32) | (uint64_t)i; }
 
-void nl_midpoint_miller_refine(int dim, const size_t *n, const double *in, double sd, uint64_t seed, int level,
-                               double *out)
+void nl_synth_midpoint_miller_refine(int dim, const size_t *n, const double *in, double sd, uint64_t seed, int level,
+                                     double *out)
 {
     double w[4];
     size_t nx = n[0], ny = dim == 2 ? n[1] : 1, ox = 2 * nx;
     uint32_t stream = NL_MILLER_STREAM + 1u + (uint32_t)level;
-    nl_midpoint_miller_mask(dim, w);
+    nl_synth_midpoint_miller_mask(dim, w);
     for (size_t j = 0; j < ny; j++) {
         size_t j1 = dim == 2 ? (j + 1) % ny : 0;
         for (size_t i = 0; i < nx; i++) {
@@ -89,7 +89,7 @@ void nl_midpoint_miller_refine(int dim, const size_t *n, const double *in, doubl
     }
 }
 
-int nl_midpoint_miller_default_levels(int dim, const size_t *n)
+int nl_synth_midpoint_miller_default_levels(int dim, const size_t *n)
 {
     int L = 0;
     while (L < NL_MILLER_MAX_LEVELS) {
@@ -112,7 +112,7 @@ static int check_size(int dim, const size_t *n, int L)
     return NL_OK;
 }
 
-int nl_midpoint_miller(int levels, double H, double sigma2, double vscale, uint64_t seed, nl_field *out)
+int nl_synth_midpoint_miller(int levels, double H, double sigma2, double vscale, uint64_t seed, nl_field *out)
 {
     int dim = out->dim, L, st;
     double v[NL_MILLER_MAX_LEVELS], r0, *a, *b;
@@ -121,12 +121,12 @@ int nl_midpoint_miller(int levels, double H, double sigma2, double vscale, uint6
         return NL_ERROR(NL_EINVAL, "midpoint: expected a 1D or 2D field, got %dD", dim);
     if (levels < 0 || levels > NL_MILLER_MAX_LEVELS)
         return NL_ERROR(NL_EINVAL, "midpoint: levels: expected 1 to %d, got %d", NL_MILLER_MAX_LEVELS, levels);
-    L = levels ? levels : nl_midpoint_miller_default_levels(dim, out->n);
+    L = levels ? levels : nl_synth_midpoint_miller_default_levels(dim, out->n);
     if (L < 1)
         return NL_ERROR(NL_EINVAL, "midpoint: --size: expected sizes divisible by 2 with at least 4 samples, got "
                         "%zu", out->n[0]);
     if ((st = check_size(dim, out->n, L)) || (st = nl_size_check(dim, out->n, sizeof(double), 1, &count)) ||
-        (st = nl_midpoint_miller_variances(dim, L, ldexp(1.0, L), H, sigma2, vscale, &r0, v)))
+        (st = nl_synth_midpoint_miller_variances(dim, L, ldexp(1.0, L), H, sigma2, vscale, &r0, v)))
         return st;
     if (!(a = nl_alloc(count * sizeof *a)))
         return NL_ERROR(NL_ENOMEM, "out of memory");
@@ -142,7 +142,7 @@ int nl_midpoint_miller(int levels, double H, double sigma2, double vscale, uint6
         a = b, b = t;
     }
     for (int k = 0; k < L; k++) {
-        nl_midpoint_miller_refine(dim, n, a, sqrt(v[k]), seed, k, b);
+        nl_synth_midpoint_miller_refine(dim, n, a, sqrt(v[k]), seed, k, b);
         double *t = a;
         a = b, b = t;
         n[0] *= 2, n[1] = dim == 2 ? 2 * n[1] : 1;

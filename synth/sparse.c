@@ -194,9 +194,17 @@ static int auto_radius(const fftw_complex *g, const size_t *mm, int dim, double 
     return R;
 }
 
-int nl_synth_sparse_plan_model_flags(const nl_model *m, int dim, const double *h, int radius, int cell,
-                                     double density, unsigned flags, nl_synth_sparse_plan **out)
+void nl_synth_sparse_options_default(nl_synth_sparse_options *o)
 {
+    *o = (nl_synth_sparse_options){.radius = 0, .cell = 0, .density = 1, .flags = 0};
+}
+
+int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, const nl_synth_sparse_options *o,
+                               nl_synth_sparse_plan **out)
+{
+    int radius = o->radius, cell = o->cell;
+    double density = o->density;
+    unsigned flags = o->flags;
     size_t mm[2], span;
     double hh[2] = {h ? h[0] : 1, h && dim == 2 ? h[1] : 1};
     double total = 0, kept = 0, zero[2] = {0, 0}, r0;
@@ -246,15 +254,11 @@ int nl_synth_sparse_plan_model_flags(const nl_model *m, int dim, const double *h
     return st;
 }
 
-int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
-                               nl_synth_sparse_plan **out)
+int nl_synth_sparse_plan_expr(const char *expr, int dim, const nl_synth_sparse_options *o,
+                              nl_synth_sparse_plan **out)
 {
-    return nl_synth_sparse_plan_model_flags(m, dim, h, radius, cell, density, 0, out);
-}
-
-int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
-                           nl_synth_sparse_plan **out)
-{
+    int radius = o->radius, cell = o->cell;
+    double density = o->density;
     static const char *const names[] = {"x", "y", "t", "r"};
     void *ev;
     char *copy = strdup(expr);
@@ -302,8 +306,10 @@ int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, d
     return st;
 }
 
-int nl_synth_sparse_plan_image(const nl_field *img, int cell, double density, nl_synth_sparse_plan **out)
+int nl_synth_sparse_plan_image(const nl_field *img, const nl_synth_sparse_options *o, nl_synth_sparse_plan **out)
 {
+    int cell = o->cell;
+    double density = o->density;
     size_t w = img->n[0], hgt = img->dim == 2 ? img->n[1] : 1;
     int R = (int)((w > hgt ? w : hgt) / 2), st;
     double mean = 0, var = 0;
@@ -361,9 +367,9 @@ int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr)
 
 void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_info *info) { *info = p->info; }
 
-int nl_synth_sparse_plan_exemplar(const nl_field *img, int radius, int cell, double density,
-                                  nl_synth_sparse_plan **out)
+int nl_synth_sparse_plan_exemplar(const nl_field *img, const nl_synth_sparse_options *o, nl_synth_sparse_plan **out)
 {
+    int radius = o->radius;
     nl_field *crop = NULL;
     double mean;
     int st;
@@ -384,7 +390,7 @@ int nl_synth_sparse_plan_exemplar(const nl_field *img, int radius, int cell, dou
         img = crop;
     }
     mean = nl_field_mean(img);
-    st = nl_synth_sparse_plan_image(img, cell, density, out);
+    st = nl_synth_sparse_plan_image(img, o, out);
     nl_field_free(crop);
     if (!st)
         (*out)->info.mean = mean;
@@ -497,9 +503,10 @@ double nl_sparse_table_at(const double *h, int R, double u, double v)
     return s;
 }
 
-int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, int angle)
+int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, unsigned flags)
 {
-    double reach = angle ? ceil(radius * M_SQRT2) + 1 : radius, C = cell > 0 ? cell : nl_sparse_default_cell(radius);
+    double reach = flags & NL_SYNTH_SPARSE_ANGLE ? ceil(radius * M_SQRT2) + 1 : radius;
+    double C = cell > 0 ? cell : nl_sparse_default_cell(radius);
     double count = 1, cells = 1, per = 2 * reach / C + 2, work;
     for (int a = 0; a < dim; a++) {
         count *= (double)n[a];
@@ -516,9 +523,10 @@ int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, d
 
 long nl_sparse_floordiv(long a, long b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
-int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out)
+int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, unsigned flags, const long *origin,
+                            nl_field *out)
 {
-    const int dim = p->dim, R = p->radius, C = p->cell, w = 2 * R + 1;
+    const int dim = p->dim, R = p->radius, C = p->cell, w = 2 * R + 1, wrap = (flags & NL_SYNTH_SPARSE_WRAP) != 0;
     const long reach = p->angle ? (long)ceil(R * M_SQRT2) + 1 : R;
     long nx = (long)out->n[0], ny = dim == 2 ? (long)out->n[1] : 1, ox = 0, oy = 0;
     long cx0, cx1, cy0 = 0, cy1 = 0;
@@ -548,7 +556,7 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
         if (dim == 2)
             cy0 = nl_sparse_floordiv(oy - reach, C), cy1 = nl_sparse_floordiv(oy + ny - 1 + reach, C);
     }
-    if ((st = nl_synth_sparse_check_work(dim, out->n, R, C, p->density, p->angle != NULL)))
+    if ((st = nl_synth_sparse_check_work(dim, out->n, R, C, p->density, p->angle ? NL_SYNTH_SPARSE_ANGLE : 0)))
         return st;
     if ((st = nl_sparse_impulses_make(p, seed, cx0, cx1, cy0, cy1, &im)))
         return st;

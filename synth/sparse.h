@@ -74,11 +74,29 @@ typedef struct {
     size_t negatives;       /* model kernels: negative spectrum samples zeroed */
 } nl_synth_sparse_info;
 
+/* Executes: the field is a periodic tile of the grid's size (else a window
+ * of the infinite field). */
+#define NL_SYNTH_SPARSE_WRAP 1u
+/* nl_synth_sparse_check_work: the kernel rotates with position (an angle
+ * expression, nl_synth_sparse_set_angle). */
+#define NL_SYNTH_SPARSE_ANGLE 2u
+
+/* How a plan is made (nl_synth_sparse_options_default: radius 0, cell 0,
+ * density 1, flags 0). */
+typedef struct {
+    int radius;      /* kernel half-width, samples; 0: automatic (below) */
+    int cell;        /* cell size, samples; 0: automatic (below) */
+    double density;  /* mean impulses per cell */
+    unsigned flags;  /* model kernels: NL_SYNTH_FFT_CLAMP, or 0 (refuse what is not positive definite) */
+} nl_synth_sparse_options;
+
+void nl_synth_sparse_options_default(nl_synth_sparse_options *o);
+
 /* Plans own their kernel table (and angle expression); free with
  * nl_synth_sparse_plan_free.  Making a plan evaluates the model or a
  * libmatheval expression and plans FFTW (model kernels): NOT thread-safe.
- * Radius and cell are in grid samples; h[] (NULL: unit) is the spacing in
- * the model's lag units.
+ * Radius and cell (of the options) are in grid samples; h[] (NULL: unit) is
+ * the spacing in the model's lag units.
  * radius <= 0: the smallest radius keeping all but NL_SPARSE_ENERGY_TOL of the kernel's
  * energy (model kernels) or the image's half-size.  cell <= 0: the
  * smallest power of two >= max(4, radius).
@@ -92,8 +110,8 @@ typedef struct {
  *   NL_ENOTPD  a model not positive definite on the kernel's grid: the
  *              rule of FFT synthesis (synth/fft.h), the negative mass of
  *              the sampled spectrum above NL_SYNTH_FFT_CLAMP_TOL of its
- *              positive mass; with flags NL_SYNTH_FFT_CLAMP (the _flags
- *              form) the negative part is zeroed instead and info.clamp_error
+ *              positive mass; with the options' flags NL_SYNTH_FFT_CLAMP
+ *              the negative part is zeroed instead and info.clamp_error
  *              bounds the change;
  *   NL_ETOOBIG the kernel table, or a model kernel's FFT grid (up to
  *              4 radius + 4 samples per axis), exceeds this machine's
@@ -103,23 +121,19 @@ typedef struct {
  * variance is R(0) times (1 - truncated), its ACF that of the truncated
  * kernel (callers flag it).  A spectrum model with no closed-form R(0) is
  * scaled to the kernel's own energy, R(0) as sampled. */
-int nl_synth_sparse_plan_model_flags(const nl_model *m, int dim, const double *h, int radius, int cell,
-                                     double density, unsigned flags, nl_synth_sparse_plan **out);
-/* nl_synth_sparse_plan_model_flags with flags 0 (refuses what is not
- * positive definite). */
-int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, int radius, int cell, double density,
-                            nl_synth_sparse_plan **out);
-int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
-                           nl_synth_sparse_plan **out);
-int nl_synth_sparse_plan_image(const nl_field *img, int cell, double density, nl_synth_sparse_plan **out);
+int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, const nl_synth_sparse_options *o,
+                               nl_synth_sparse_plan **out);
+int nl_synth_sparse_plan_expr(const char *expr, int dim, const nl_synth_sparse_options *o,
+                              nl_synth_sparse_plan **out);
+/* (the image's own radius: o->radius is not read) */
+int nl_synth_sparse_plan_image(const nl_field *img, const nl_synth_sparse_options *o, nl_synth_sparse_plan **out);
 
-/* Texture resynthesis from an exemplar: with radius > 0 the central
- * 2 radius x 2 radius window of img (2D) is the exemplar, else all of it;
- * planned as nl_synth_sparse_plan_image, and the exemplar's mean (info.mean)
+/* Texture resynthesis from an exemplar: with the options' radius > 0 the
+ * central 2 radius x 2 radius window of img (2D) is the exemplar, else all
+ * of it; planned as nl_synth_sparse_plan_image, and the exemplar's mean (info.mean)
  * is added to every sample the plan synthesises.  NL_EINVAL (img not 2D,
  * window larger than img, constant exemplar, cell/density), NL_ENOMEM. */
-int nl_synth_sparse_plan_exemplar(const nl_field *img, int radius, int cell, double density,
-                                  nl_synth_sparse_plan **out);
+int nl_synth_sparse_plan_exemplar(const nl_field *img, const nl_synth_sparse_options *o, nl_synth_sparse_plan **out);
 
 /* Rotate the kernel by the angle expression theta(x, y) (radians, x and y
  * in grid samples); the plan keeps the compiled expression.  NL_EINVAL (a 1D
@@ -129,7 +143,8 @@ int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr);
 void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_info *info);
 
 /* The window of samples origin[a] .. origin[a] + n[a] - 1 (NULL: 0) into
- * out (the plan's dim, row-major, x fastest).  With wrap, the field is
+ * out (the plan's dim, row-major, x fastest).  With flags
+ * NL_SYNTH_SPARSE_WRAP (wrap; else 0), the field is
  * periodic with the grid's size (each a multiple of the cell size) and
  * origin must be NULL.  Bit-identical for equal arguments; a plan without
  * an angle is only read (thread-safe); with an angle the libmatheval
@@ -140,16 +155,17 @@ void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_in
  * NL_ETOOBIG (the impulses of the window's cells exceed the memory
  * available, checked before allocating, or the work exceeds
  * NL_SPARSE_WORK_MAX), NL_ENOMEM. */
-int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin, nl_field *out);
+int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, unsigned flags, const long *origin,
+                            nl_field *out);
 
 /* A slab along the slowest axis (y in 2D, x in 1D), for synthesis
  * distributed by rows: the samples of slowest-axis indices s0 .. s0 + ns - 1
  * (every index of the other axis) of the field of n_global[0..dim-1]
- * samples, bit for bit those of nl_synth_sparse_execute(p, seed, wrap,
+ * samples, bit for bit those of nl_synth_sparse_execute(p, seed, flags,
  * NULL, field) (each sample sums the same impulses in the same order).
  * out: the plan's dim, n[dim - 1] = ns >= 1, the other axis n_global's; its
- * first sample is the global (0, s0).  wrap 0: the window at origin (0, s0)
- * (1D: s0), of any n_global; wrap 1: the periodic tile of n_global (each a
+ * first sample is the global (0, s0).  flags 0: the window at origin (0, s0)
+ * (1D: s0), of any n_global; NL_SYNTH_SPARSE_WRAP: the periodic tile of n_global (each a
  * multiple of the cell size, the kernel within it): the impulses of the
  * cells the slab's kernels reach, wrapped round the tile, are drawn in
  * unwrapped cell coordinates (the slab's cells plus the reach, whatever
@@ -159,23 +175,23 @@ int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wr
  * NL_OK, or NL_EINVAL (dims, a row length not n_global[0], a slab not within
  * n_global, wrap with a tile not a multiple of the cell or smaller than the
  * kernel, an angle not finite at an impulse), NL_ETOOBIG, NL_ENOMEM. */
-int nl_synth_sparse_execute_slab(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const size_t *n_global,
+int nl_synth_sparse_execute_slab(const nl_synth_sparse_plan *p, uint64_t seed, unsigned flags, const size_t *n_global,
                                  size_t s0, nl_field *out);
 
 /* The bytes nl_synth_sparse_execute_slab allocates (the impulses of the
  * cells the slab reaches, as first reserved: 1.5 times their expected count
  * plus 64; a slab whose cells draw more impulses grows them by doubling), for
- * a slab of ns rows (1D: samples) of n_global, whatever s0 and wrap; not
+ * a slab of ns rows (1D: samples) of n_global, whatever s0 and flags; not
  * out itself.  O((ns + 2 reach) (n[0] + 2 reach) density / cell^2) in 2D.
  * SIZE_MAX when it overflows.  Pure. */
-size_t nl_synth_sparse_slab_bytes(const nl_synth_sparse_plan *p, int wrap, const size_t *n_global, size_t ns);
+size_t nl_synth_sparse_slab_bytes(const nl_synth_sparse_plan *p, unsigned flags, const size_t *n_global, size_t ns);
 
 /* The work bound of nl_synth_sparse_execute for an output of n[0..dim-1]
- * samples, a kernel of this radius (rotated: angle != 0), cell (<= 0: the
- * default) and density, checkable before a plan is made: NL_OK, or
+ * samples, a kernel of this radius (rotated: NL_SYNTH_SPARSE_ANGLE in
+ * flags, else 0), cell (<= 0: the default) and density, checkable before a plan is made: NL_OK, or
  * NL_ETOOBIG naming the values when the impulses drawn and gathered exceed
  * NL_SPARSE_WORK_MAX.  Thread-safe. */
-int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, int angle);
+int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, unsigned flags);
 
 /* Depth band-limiting (GI '86, sec. 3.1: "the noise can be accurately and
  * efficiently anti-aliased by selecting appropriate precomputed bandlimited

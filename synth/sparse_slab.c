@@ -88,10 +88,10 @@ static void slab_cells(const nl_synth_sparse_plan *p, const size_t *n, size_t s0
     c1[p->dim - 1] = nl_sparse_floordiv((long)(s0 + ns) - 1 + reach, C);
 }
 
-int nl_synth_sparse_execute_slab(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const size_t *n_global,
+int nl_synth_sparse_execute_slab(const nl_synth_sparse_plan *p, uint64_t seed, unsigned flags, const size_t *n_global,
                                  size_t s0, nl_field *out)
 {
-    const int dim = p->dim;
+    const int dim = p->dim, wrap = (flags & NL_SYNTH_SPARSE_WRAP) != 0;
     const size_t ns = out->n[dim - 1], row = dim == 2 ? out->n[0] : 1;
     const long per[2] = {(long)n_global[0] / p->cell, dim == 2 ? (long)n_global[1] / p->cell : 1};
     long c0[2], c1[2];
@@ -103,7 +103,8 @@ int nl_synth_sparse_execute_slab(const nl_synth_sparse_plan *p, uint64_t seed, i
         const long origin[2] = {dim == 2 ? 0 : (long)s0, (long)s0};
         return nl_synth_sparse_execute(p, seed, 0, origin, out);
     }
-    if ((st = nl_synth_sparse_check_work(dim, out->n, p->radius, p->cell, p->density, p->angle != NULL)))
+    if ((st = nl_synth_sparse_check_work(dim, out->n, p->radius, p->cell, p->density,
+                                          p->angle ? NL_SYNTH_SPARSE_ANGLE : 0)))
         return st;
     slab_cells(p, n_global, s0, ns, c0, c1);
     if ((st = nl_sparse_impulses_make_periodic(p, seed, c0[0], c1[0], c0[1], c1[1], per, &im)))
@@ -120,7 +121,7 @@ int nl_synth_sparse_execute_slab(const nl_synth_sparse_plan *p, uint64_t seed, i
     return NL_OK;
 }
 
-size_t nl_synth_sparse_slab_bytes(const nl_synth_sparse_plan *p, int wrap, const size_t *n_global, size_t ns)
+size_t nl_synth_sparse_slab_bytes(const nl_synth_sparse_plan *p, unsigned flags, const size_t *n_global, size_t ns)
 {
     const long C = p->cell, reach = kernel_reach(p);
     size_t n[2] = {n_global[0], p->dim == 2 ? n_global[1] : 1}, ncell = 1, cap;
@@ -131,7 +132,7 @@ size_t nl_synth_sparse_slab_bytes(const nl_synth_sparse_plan *p, int wrap, const
     /* the cells of a slab from s0 = 0, and one more row of them along the
      * slowest axis for the worst alignment of s0 */
     slab_cells(p, n, 0, ns, c0, c1);
-    (void)wrap; /* a window reaches the same cells as a periodic slab */
+    (void)flags; /* a window reaches the same cells as a periodic slab */
     c1[p->dim - 1] = c0[p->dim - 1] + ((long)ns - 1 + 2 * reach) / C + 1;
     for (int a = 0; a < p->dim; a++)
         ncell *= (size_t)(c1[a] - c0[a] + 1);

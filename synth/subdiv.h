@@ -67,6 +67,9 @@ enum {
 
 /* Names of the flags, in bit order ("singular", "pseudo-inverse", ...). */
 const char *nl_subdiv_flag_name(unsigned bit);
+/* The names of the flags set in `flags`, comma-separated, into buf (len
+ * bytes, NUL-terminated, truncated if short; "" when none). */
+void nl_subdiv_flag_names(unsigned flags, char *buf, size_t len);
 const char *nl_subdiv_class_name(int cls);
 
 typedef struct {

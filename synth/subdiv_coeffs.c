@@ -9,6 +9,7 @@
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_linalg.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,6 +17,15 @@ static const char *const flag_names[] = {"singular", "pseudo-inverse", "not-posi
                                          "negative-variance", "diagonal-bias", "nearest-neighbour-reset"};
 
 const char *nl_subdiv_flag_name(unsigned bit) { return bit < 6 ? flag_names[bit] : "?"; }
+
+void nl_subdiv_flag_names(unsigned flags, char *buf, size_t len)
+{
+    size_t k = 0;
+    buf[0] = 0;
+    for (unsigned b = 0; b < 6 && k < len; b++)
+        if (flags & (1u << b))
+            k += (size_t)snprintf(buf + k, len - k, "%s%s", k ? "," : "", nl_subdiv_flag_name(b));
+}
 
 const char *nl_subdiv_class_name(int cls)
 {

@@ -28,7 +28,7 @@ Test(lattice, spectrum_is_the_predicted_octave_sum)
     nl_field *f = nl_field_alloc(1, n, NULL, NULL), *P;
     double *acc = calloc(4097, sizeof *acc), top = 0;
     cr_assert_eq(nl_model_parse("power:d=2.5,fmin=0.001", &m), 0);
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 512, 8, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 512, 8, 0, &p), 0, "%s", nl_errmsg());
     for (uint64_t s = 1; s <= 32; s++) {
         cr_assert_eq(nl_synth_lattice_execute(&p, s, f), 0);
         cr_assert_eq(nl_psd_periodogram(f, NAN, &P), 0);
@@ -66,14 +66,14 @@ Test(lattice, deterministic_periodic_and_validated)
     size_t n[2] = {64, 64};
     nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
     cr_assert_eq(nl_model_parse("power:d=3", &m), 0);
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 2, 16, 4, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 2, 16, 4, 0, &p), 0, "%s", nl_errmsg());
     cr_assert_eq(nl_synth_lattice_execute(&p, 3, a), 0);
     cr_assert_eq(nl_synth_lattice_execute(&p, 3, b), 0);
     cr_assert_eq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
-    cr_expect_eq(nl_synth_lattice_plan_init(m, 2, 16, 5, &p), NL_EINVAL, "cells below 2 samples");
+    cr_expect_eq(nl_synth_lattice_plan_init(m, 2, 16, 5, 0, &p), NL_EINVAL, "cells below 2 samples");
     nl_model_free(m);
     cr_assert_eq(nl_model_parse("markov", &m), 0);
-    cr_expect_eq(nl_synth_lattice_plan_init(m, 2, 16, 2, &p), NL_EINVAL, "no closed-form 2D spectrum");
+    cr_expect_eq(nl_synth_lattice_plan_init(m, 2, 16, 2, 0, &p), NL_EINVAL, "no closed-form 2D spectrum");
     nl_model_free(m), nl_field_free(a), nl_field_free(b);
 }
 
@@ -86,7 +86,7 @@ Test(lattice, bit_reproducible_across_threads)
     size_t n[2] = {512, 256};
     nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
     cr_assert_eq(nl_model_parse("power:d=3,fmin=0.002", &m), 0);
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 2, 128, 6, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 2, 128, 6, 0, &p), 0, "%s", nl_errmsg());
     omp_set_num_threads(1);
     cr_assert_eq(nl_synth_lattice_execute(&p, 9, a), 0);
     omp_set_num_threads(2);

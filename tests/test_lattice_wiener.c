@@ -115,7 +115,7 @@ Test(lattice_wiener, acf_is_its_own_and_closer_than_perlin)
     double mw[NL], sw[NL], mp[NL], sp[NL], R[NL], E[NL];
     cr_assert_eq(nl_model_parse("gauss:scale=8", &m), 0);
     cr_assert_eq(nl_synth_lattice_wiener_plan_alloc(m, 1, n, 4, 0, &wp), NL_OK);
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 64, 5, &pp), NL_OK); /* cells 64 .. 4 */
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 64, 5, 0, &pp), NL_OK); /* cells 64 .. 4 */
     ensemble(f, make_wiener, wp, mw, sw);
     ensemble(f, make_perlin, &pp, mp, sp);
     for (int l = 0; l < NL; l++) {
@@ -157,7 +157,7 @@ Test(lattice_wiener, refusals)
     nl_model *g;
     nl_synth_lattice_plan pp;
     cr_assert_eq(nl_model_parse("spectrum:pi*36*exp(-(6*pi*k)^2)", &g), 0);
-    cr_expect_eq(nl_synth_lattice_plan_init(g, 2, 16, 4, &pp), NL_EINVAL);
+    cr_expect_eq(nl_synth_lattice_plan_init(g, 2, 16, 4, 0, &pp), NL_EINVAL);
     nl_model_free(g);
     nl_model_free(m), nl_model_free(s);
 }

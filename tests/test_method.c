@@ -10,6 +10,7 @@
 #include "../synth/subdiv.h"
 
 #include <criterion/criterion.h>
+#include <jansson.h>
 #include <string.h>
 
 Test(method, every_method_is_found_by_its_name_once)
@@ -39,6 +40,61 @@ Test(method, names_are_listed_by_capability_and_option)
     cr_expect_str_eq(buf, "subdiv or sparse");
     nl_method_names(0, NULL, ", ", " or ", buf, 12); /* truncated, still terminated */
     cr_expect_lt(strlen(buf), 12u);
+}
+
+/* Exact methods first, each group in the registry's order: the order of
+ * validate's methods and of the capability messages. */
+Test(method, ranked_lists_the_exact_methods_first)
+{
+    char buf[256];
+    int n = nl_method_count(), seen_approx = 0;
+    for (int i = 0; i < n; i++) {
+        const nl_method_type *t = nl_method_ranked(i);
+        cr_assert_not_null(t);
+        cr_expect(!(seen_approx && (t->caps & NL_METHOD_EXACT)), "%s after an approximate method", t->name);
+        seen_approx |= !(t->caps & NL_METHOD_EXACT);
+    }
+    cr_expect_null(nl_method_ranked(n));
+    nl_method_names(NL_METHOD_DISTRIBUTED | NL_METHOD_EXACT_FIRST, NULL, ", ", " and ", buf, sizeof buf);
+    cr_expect_str_eq(buf, "fft, circulant, subdiv and sparse");
+    nl_method_names(NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT_FIRST, NULL, ", ", " and ", buf, sizeof buf);
+    cr_expect_str_eq(buf, "fft, circulant and subdiv");
+}
+
+/* Every method's report is one JSON object (or none), with a positive
+ * preview scale, for a field and for the plan alone.  Each method gets the
+ * first model it plans (midpoint needs a power law). */
+Test(method, every_report_is_a_json_object)
+{
+    static nl_method_report r;
+    nl_model *m[2];
+    cr_assert_eq(nl_model_parse("markov:scale=4.385", &m[0]), 0);
+    cr_assert_eq(nl_model_parse("power:d=2.385", &m[1]), 0);
+    for (int i = 0; i < nl_method_count(); i++) {
+        const nl_method_type *t = nl_method_at(i);
+        nl_method_grid g = {2, {16, 16, 1}, {1, 1, 1}, {0, 0}};
+        nl_method_options o;
+        nl_method_plan *p = NULL;
+        int st = NL_OK, k = 0;
+        nl_field *f = nl_field_alloc(2, g.n, NULL, &st);
+        cr_assert_not_null(f);
+        nl_method_options_default(t, &o);
+        for (k = 0; k < 2 && !p; k++)
+            st = nl_method_plan_alloc(t, t->caps & NL_METHOD_NO_MODEL ? NULL : m[k], &g, &o, &p);
+        cr_assert_eq(st, NL_OK, "%s: %s", t->name, nl_errmsg());
+        cr_assert_eq(nl_method_execute(p, 7, f), NL_OK, "%s", t->name);
+        for (int with = 0; with < 2; with++) {
+            cr_assert_eq(nl_method_report_of(p, m[k - 1], 7, with ? f : NULL, &r), NL_OK, "%s", t->name);
+            cr_expect_eq(strncmp(r.method, t->name, strlen(t->name)), 0, "%s", r.method);
+            cr_expect_gt(r.sd, 0, "%s", t->name);
+            json_t *j = r.json[0] ? json_loads(r.json, 0, NULL) : json_object();
+            cr_expect(json_is_object(j), "%s: %s", t->name, r.json);
+            json_decref(j);
+        }
+        nl_method_plan_free(p);
+        nl_field_free(f);
+    }
+    nl_model_free(m[0]), nl_model_free(m[1]);
 }
 
 /* The same bits as the per-method plan for one seed. */

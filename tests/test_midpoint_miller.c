@@ -19,8 +19,8 @@
 Test(midpoint_miller, mask_is_millers_kernel)
 {
     double w1[2], w2[4], sum = 0;
-    nl_midpoint_miller_mask(1, w1);
-    nl_midpoint_miller_mask(2, w2);
+    nl_synth_midpoint_miller_mask(1, w1);
+    nl_synth_midpoint_miller_mask(2, w2);
     cr_expect_float_eq(w2[0], 9.0 / 16, 1e-15);
     cr_expect_float_eq(w2[1], 3.0 / 16, 1e-15);
     cr_expect_float_eq(w2[2], 3.0 / 16, 1e-15);
@@ -41,7 +41,7 @@ Test(midpoint_miller, refinement_reproduces_a_plane)
     for (int j = 0; j < NY; j++)
         for (int i = 0; i < NX; i++)
             in[j * NX + i] = c + a * i + b * j;
-    nl_midpoint_miller_refine(2, n, in, 0, 1, 0, out);
+    nl_synth_midpoint_miller_refine(2, n, in, 0, 1, 0, out);
     /* new point (2i + p, 2j + q) lies at (i + 1/4 + p/2, j + 1/4 + q/2); away from the periodic seam */
     for (int J = 0; J < 2 * (NY - 1); J++)
         for (int I = 0; I < 2 * (NX - 1); I++) {
@@ -54,7 +54,7 @@ Test(midpoint_miller, refinement_reproduces_a_plane)
     size_t n1[1] = {NX};
     for (int i = 0; i < NX; i++)
         l[i] = c + a * i;
-    nl_midpoint_miller_refine(1, n1, l, 0, 1, 0, lo);
+    nl_synth_midpoint_miller_refine(1, n1, l, 0, 1, 0, lo);
     for (int I = 0; I < 2 * (NX - 1); I++)
         cr_expect_float_eq(lo[I], c + a * (0.25 + 0.5 * I), 1e-12, "1D point %d", I);
 }
@@ -62,7 +62,7 @@ Test(midpoint_miller, refinement_reproduces_a_plane)
 Test(midpoint_miller, variances_are_the_interpolants_error)
 {
     double r0, v[6], H = 0.385, s0 = 64, sigma2 = 2.385;
-    cr_assert_eq(nl_midpoint_miller_variances(1, 6, s0, H, sigma2, 1, &r0, v), NL_OK);
+    cr_assert_eq(nl_synth_midpoint_miller_variances(1, 6, s0, H, sigma2, 1, &r0, v), NL_OK);
     cr_expect_float_eq(r0, 0.5 * sigma2 * pow(s0, 2 * H), 1e-12 * r0);
     for (int k = 0; k < 6; k++) {
         double s = s0 / pow(2, k);
@@ -73,8 +73,8 @@ Test(midpoint_miller, variances_are_the_interpolants_error)
     }
     /* 2D: the same decay, and the variance-scale's extra factor per level */
     double w[6];
-    cr_assert_eq(nl_midpoint_miller_variances(2, 6, s0, H, sigma2, 1, &r0, v), NL_OK);
-    cr_assert_eq(nl_midpoint_miller_variances(2, 6, s0, H, sigma2, 0.5, &r0, w), NL_OK);
+    cr_assert_eq(nl_synth_midpoint_miller_variances(2, 6, s0, H, sigma2, 1, &r0, v), NL_OK);
+    cr_assert_eq(nl_synth_midpoint_miller_variances(2, 6, s0, H, sigma2, 0.5, &r0, w), NL_OK);
     for (int k = 1; k < 6; k++) {
         cr_expect_float_eq(v[k] / v[k - 1], pow(2, -2 * H), 1e-12);
         cr_expect_float_eq(w[k] / v[k], pow(0.5, k), 1e-12);
@@ -87,12 +87,12 @@ Test(midpoint_miller, synthesis_sizes_and_errors)
     int st;
     nl_field *f = nl_field_alloc(2, n, NULL, &st);
     cr_assert_eq(st, NL_OK);
-    cr_expect_eq(nl_midpoint_miller_default_levels(2, n), 4); /* 48 = 3 * 2^4: coarse 4 x 3 */
-    cr_expect_eq(nl_midpoint_miller(0, 0.7, 1, 1, 3, f), NL_OK);
+    cr_expect_eq(nl_synth_midpoint_miller_default_levels(2, n), 4); /* 48 = 3 * 2^4: coarse 4 x 3 */
+    cr_expect_eq(nl_synth_midpoint_miller(0, 0.7, 1, 1, 3, f), NL_OK);
     for (size_t i = 0; i < f->count; i++)
         cr_assert(isfinite(f->data[i]));
-    cr_expect_eq(nl_midpoint_miller(5, 0.7, 1, 1, 3, f), NL_EINVAL); /* 48 / 32 is not whole */
-    cr_expect_eq(nl_midpoint_miller(0, 1.0, 1, 1, 3, f), NL_EINVAL);
-    cr_expect_eq(nl_midpoint_miller(0, 0.7, 1, 0, 3, f), NL_EINVAL);
+    cr_expect_eq(nl_synth_midpoint_miller(5, 0.7, 1, 1, 3, f), NL_EINVAL); /* 48 / 32 is not whole */
+    cr_expect_eq(nl_synth_midpoint_miller(0, 1.0, 1, 1, 3, f), NL_EINVAL);
+    cr_expect_eq(nl_synth_midpoint_miller(0, 0.7, 1, 0, 3, f), NL_EINVAL);
     nl_field_free(f);
 }

@@ -10,6 +10,7 @@
 #include "../synth/rank1_model.h"
 #include "../synth/sparse.h"
 #include "../synth/subdiv.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
@@ -176,9 +177,9 @@ Test(model_nugget, methods_refuse)
     nl_synth_lattice_plan l;
     cr_assert_eq(nl_subdiv_coeffs_alloc(m, 2, 3, 8, 2, 0, 0, &c), NL_EINVAL);
     cr_assert(strstr(nl_errmsg(), "subdiv") && strstr(nl_errmsg(), "nugget=0.5"), "%s", nl_errmsg());
-    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 8, 0, 1, &s), NL_EINVAL);
+    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, SPARSE_OPTS(8, 0, 1), &s), NL_EINVAL);
     cr_assert(strstr(nl_errmsg(), "sparse") && strstr(nl_errmsg(), "nugget=0.5"), "%s", nl_errmsg());
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, 2, &l), NL_EINVAL);
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, 2, 0, &l), NL_EINVAL);
     cr_assert(strstr(nl_errmsg(), "lattice") && strstr(nl_errmsg(), "nugget=0.5"), "%s", nl_errmsg());
     cr_assert_eq(nl_rank1_model_check(m, 2), NL_EINVAL);
     cr_assert(strstr(nl_errmsg(), "rank1") && strstr(nl_errmsg(), "nugget=0.5"), "%s", nl_errmsg());

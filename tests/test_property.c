@@ -57,6 +57,7 @@
 #include "../synth/lattice.h"
 #include "../synth/sparse.h"
 #include "../synth/subdiv.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
@@ -243,7 +244,7 @@ static int plan(const ctx *c, runner *r, const size_t *n, int *flagged)
         nl_subdiv_options_default(&o);
         st = nl_subdiv_plan_alloc(c->m, c->dim, n, 1, &o, (nl_subdiv_plan **)&r->plan);
     } else if (r->method == 4) {
-        st = nl_synth_sparse_plan_model(c->m, c->dim, NULL, 0, 0, 8, (nl_synth_sparse_plan **)&r->plan);
+        st = nl_synth_sparse_plan_model(c->m, c->dim, NULL, SPARSE_OPTS(0, 0, 8), (nl_synth_sparse_plan **)&r->plan);
         if (st == NL_OK) {
             nl_synth_sparse_info in;
             nl_synth_sparse_plan_info(r->plan, &in);
@@ -251,7 +252,7 @@ static int plan(const ctx *c, runner *r, const size_t *n, int *flagged)
         }
     } else {
         st = nl_synth_lattice_plan_init(c->m, c->dim, nl_synth_lattice_default_cell(n),
-                                        nl_synth_lattice_default_octaves(nl_synth_lattice_default_cell(n)), &r->lat);
+                                        nl_synth_lattice_default_octaves(nl_synth_lattice_default_cell(n)), 0, &r->lat);
         if (st == NL_OK) {
             for (int o = 0; o < r->lat.octaves; o++)
                 cr_expect(isfinite(r->lat.leakage[o]) && isfinite(r->lat.weight[o]),

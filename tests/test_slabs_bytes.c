@@ -104,7 +104,7 @@ Test(slabs, sparse_bytes_measured)
     long before;
     skip_unless_measurable();
     m = test_model("gauss:scale=3.3");
-    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 0, 0, 24.0, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, SPARSE_OPTS(0, 0, 24.0), &p), NL_OK, "%s", nl_errmsg());
     f = nl_field_alloc(2, ns, NULL, NULL);
     cr_assert_not_null(f);
     memset(f->data, 0, f->count * sizeof *f->data);
@@ -112,8 +112,8 @@ Test(slabs, sparse_bytes_measured)
      * next run's arrays then reuse resident heap pages, unmeasured */
     reset_peak();
     before = status_kb("VmRSS");
-    cr_assert_eq(nl_synth_sparse_execute_slab(p, 3, 1, n, 1536, f), NL_OK, "%s", nl_errmsg());
-    compare("sparse 2048x2048, 512 rows, wrap", before, nl_synth_sparse_slab_bytes(p, 1, n, 512));
+    cr_assert_eq(nl_synth_sparse_execute_slab(p, 3, NL_SYNTH_SPARSE_WRAP, n, 1536, f), NL_OK, "%s", nl_errmsg());
+    compare("sparse 2048x2048, 512 rows, wrap", before, nl_synth_sparse_slab_bytes(p, NL_SYNTH_SPARSE_WRAP, n, 512));
     nl_field_free(f);
     nl_synth_sparse_plan_free(p);
     nl_model_free(m);

@@ -20,7 +20,7 @@ typedef struct {
 static int sparse_slab(const void *ctx, size_t s0, nl_field *f)
 {
     const sparse_ctx *c = ctx;
-    return nl_synth_sparse_execute_slab(c->p, c->seed, c->wrap, c->n, s0, f);
+    return nl_synth_sparse_execute_slab(c->p, c->seed, c->wrap ? NL_SYNTH_SPARSE_WRAP : 0, c->n, s0, f);
 }
 
 /* The whole grid of p, then its slabs, with and without wrap. */
@@ -31,7 +31,8 @@ static void check_sparse(const nl_synth_sparse_plan *p, int dim, size_t nx, size
         nl_field *full = nl_field_alloc(dim, n, NULL, NULL);
         sparse_ctx c = {p, 0xabcdef12345u + (uint64_t)wrap, wrap, n};
         cr_assert_not_null(full);
-        cr_assert_eq(nl_synth_sparse_execute(p, c.seed, wrap, NULL, full), NL_OK, "%s: %s", what, nl_errmsg());
+        cr_assert_eq(nl_synth_sparse_execute(p, c.seed, wrap ? NL_SYNTH_SPARSE_WRAP : 0, NULL, full), NL_OK,
+                     "%s: %s", what, nl_errmsg());
         check_slab_splits(full, sparse_slab, &c, what);
         nl_field_free(full);
     }
@@ -41,7 +42,8 @@ static nl_synth_sparse_plan *model_plan(const char *spec, int dim, int radius, i
 {
     nl_model *m = test_model(spec);
     nl_synth_sparse_plan *p;
-    cr_assert_eq(nl_synth_sparse_plan_model(m, dim, NULL, radius, cell, density, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_model(m, dim, NULL, SPARSE_OPTS(radius, cell, density), &p), NL_OK, "%s",
+                 nl_errmsg());
     nl_model_free(m);
     return p;
 }
@@ -70,7 +72,8 @@ Test(slabs, sparse_threaded)
 Test(slabs, sparse_angle_and_expression)
 {
     nl_synth_sparse_plan *p;
-    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-(x*x/30+y*y/4))", 2, 9, 0, 3.1, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-(x*x/30+y*y/4))", 2, SPARSE_OPTS(9, 0, 3.1), &p), NL_OK, "%s",
+                 nl_errmsg());
     check_sparse(p, 2, 64, 48, "expression kernel");
     cr_assert_eq(nl_synth_sparse_set_angle(p, "x/17+y/29"), NL_OK, "%s", nl_errmsg());
     check_sparse(p, 2, 64, 48, "rotated kernel");
@@ -94,7 +97,7 @@ Test(slabs, sparse_exemplar_mean)
     nl_synth_sparse_plan *p;
     for (size_t i = 0; i < img->count; i++)
         img->data[i] = 7.5 + 0.41 * (double)((i * 7919) % 31) - 0.13 * (double)(i % 5);
-    cr_assert_eq(nl_synth_sparse_plan_exemplar(img, 0, 8, 2.9, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_exemplar(img, SPARSE_OPTS(0, 8, 2.9), &p), NL_OK, "%s", nl_errmsg());
     check_sparse(p, 2, 64, 48, "exemplar");
     nl_synth_sparse_plan_free(p);
     nl_field_free(img);
@@ -105,10 +108,12 @@ Test(slabs, sparse_refusals)
     nl_synth_sparse_plan *p = model_plan("gauss:scale=3.3", 2, 6, 8, 2.0);
     size_t n[2] = {64, 64}, a[2] = {64, 8}, d[2] = {32, 8}, odd[2] = {64, 60};
     nl_field *f = nl_field_alloc(2, a, NULL, NULL), *g = nl_field_alloc(2, d, NULL, NULL);
-    cr_assert_eq(nl_synth_sparse_execute_slab(p, 1, 1, n, 57, f), NL_EINVAL, "rows 57..64 pass the field's 64");
-    cr_assert_eq(nl_synth_sparse_execute_slab(p, 1, 1, n, 56, f), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_execute_slab(p, 1, NL_SYNTH_SPARSE_WRAP, n, 57, f), NL_EINVAL,
+                 "rows 57..64 pass the field's 64");
+    cr_assert_eq(nl_synth_sparse_execute_slab(p, 1, NL_SYNTH_SPARSE_WRAP, n, 56, f), NL_OK, "%s", nl_errmsg());
     cr_assert_eq(nl_synth_sparse_execute_slab(p, 1, 0, n, 0, g), NL_EINVAL, "rows of 32, not 64");
-    cr_assert_eq(nl_synth_sparse_execute_slab(p, 1, 1, odd, 0, f), NL_EINVAL, "60 rows: not a multiple of the cell");
+    cr_assert_eq(nl_synth_sparse_execute_slab(p, 1, NL_SYNTH_SPARSE_WRAP, odd, 0,
+                 f), NL_EINVAL, "60 rows: not a multiple of the cell");
     cr_assert_eq(nl_synth_sparse_execute_slab(p, 1, 0, odd, 0, f), NL_OK, "a window needs no whole cells");
     nl_synth_sparse_plan_free(p);
     nl_field_free(f), nl_field_free(g);
@@ -120,7 +125,8 @@ Test(slabs, sparse_bytes_scale_with_the_slab)
 {
     nl_synth_sparse_plan *p = model_plan("gauss:scale=3.3", 2, 0, 0, 8.0);
     size_t n[2] = {1024, 1024};
-    size_t whole = nl_synth_sparse_slab_bytes(p, 1, n, 1024), quarter = nl_synth_sparse_slab_bytes(p, 1, n, 256);
+    size_t whole = nl_synth_sparse_slab_bytes(p, NL_SYNTH_SPARSE_WRAP, n, 1024),
+           quarter = nl_synth_sparse_slab_bytes(p, NL_SYNTH_SPARSE_WRAP, n, 256);
     cr_assert_lt(quarter, whole * 3 / 10, "a quarter slab: %zu bytes, the whole grid %zu", quarter, whole);
     cr_assert_gt(quarter, whole / 5);
     nl_synth_sparse_plan_free(p);

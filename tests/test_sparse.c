@@ -10,6 +10,7 @@
 #include "../core/model.h"
 #include "../core/nl_error.h"
 #include "../synth/sparse.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <gsl/gsl_cdf.h>
@@ -36,9 +37,9 @@ static void check(const char *spec, double (*R)(double, double), int dim)
     for (size_t i = 0; i < L; i++)
         lags[i][0] = dim == 1 ? (long)i : (long)(i <= 10 ? i : 0), lags[i][1] = dim == 1 ? 0 : (long)(i <= 10 ? 0 : i - 10);
     cr_assert_eq(nl_model_parse(spec, &m), 0);
-    cr_assert_eq(nl_synth_sparse_plan_model(m, dim, NULL, 0, 0, 32, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_model(m, dim, NULL, SPARSE_OPTS(0, 0, 32), &p), 0, "%s", nl_errmsg());
     for (size_t s = 1; s <= M; s++) {
-        cr_assert_eq(nl_synth_sparse_execute(p, s, 1, NULL, f), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_synth_sparse_execute(p, s, NL_SYNTH_SPARSE_WRAP, NULL, f), 0, "%s", nl_errmsg());
         cr_assert_eq(nl_acf_full(f, 0.0, NL_ACF_UNBIASED, &full), 0);
         for (size_t i = 0; i < L; i++) {
             double v = full->data[(size_t)lags[i][1] * full->n[0] + (size_t)lags[i][0]];
@@ -80,11 +81,11 @@ Test(sparse, kurtosis_against_density)
         nl_synth_sparse_plan *p;
         nl_synth_sparse_info info;
         double s1 = 0, s2 = 0;
-        cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 0, 16, dens[d], &p), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, SPARSE_OPTS(0, 16, dens[d]), &p), 0, "%s", nl_errmsg());
         nl_synth_sparse_plan_info(p, &info);
         for (uint64_t s = 1; s <= 16; s++) {
             nl_moments mo;
-            cr_assert_eq(nl_synth_sparse_execute(p, s, 1, NULL, f), 0);
+            cr_assert_eq(nl_synth_sparse_execute(p, s, NL_SYNTH_SPARSE_WRAP, NULL, f), 0);
             nl_moments_compute(f, &mo);
             s1 += mo.kurtosis, s2 += mo.kurtosis * mo.kurtosis;
         }
@@ -107,7 +108,7 @@ Test(sparse, windows_agree)
     size_t n[2] = {50, 40};
     long o1[2] = {-13, 7}, o2[2] = {0, 0};
     nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
-    cr_assert_eq(nl_synth_sparse_plan_expr("cos(0.5*x+0.3*y)*exp(-r/4)", 2, 12, 8, 3, &p), 0);
+    cr_assert_eq(nl_synth_sparse_plan_expr("cos(0.5*x+0.3*y)*exp(-r/4)", 2, SPARSE_OPTS(12, 8, 3), &p), 0);
     cr_assert_eq(nl_synth_sparse_set_angle(p, "0.01*x"), 0);
     cr_assert_eq(nl_synth_sparse_execute(p, 4, 0, o1, a), 0);
     cr_assert_eq(nl_synth_sparse_execute(p, 4, 0, o2, b), 0);
@@ -122,10 +123,11 @@ Test(sparse, refusals)
     nl_synth_sparse_plan *p;
     size_t n[2] = {40, 40};
     nl_field *f = nl_field_alloc(2, n, NULL, NULL);
-    cr_expect_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, 8, 8, -1, &p), NL_EINVAL);
-    cr_expect_eq(nl_synth_sparse_plan_expr("exp(-q)", 2, 8, 8, 1, &p), NL_EINVAL);
-    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, 30, 8, 1, &p), 0);
-    cr_expect_eq(nl_synth_sparse_execute(p, 1, 1, NULL, f), NL_EINVAL, "kernel larger than the tile");
+    cr_expect_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, SPARSE_OPTS(8, 8, -1), &p), NL_EINVAL);
+    cr_expect_eq(nl_synth_sparse_plan_expr("exp(-q)", 2, SPARSE_OPTS(8, 8, 1), &p), NL_EINVAL);
+    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, SPARSE_OPTS(30, 8, 1), &p), 0);
+    cr_expect_eq(nl_synth_sparse_execute(p, 1, NL_SYNTH_SPARSE_WRAP, NULL, f), NL_EINVAL,
+                 "kernel larger than the tile");
     cr_expect(strstr(nl_errmsg(), "larger than the tile") != NULL, "%s", nl_errmsg());
     nl_synth_sparse_plan_free(p);
     nl_field_free(f);
@@ -140,13 +142,13 @@ Test(sparse, bit_reproducible_across_threads)
     nl_synth_sparse_plan *p;
     nl_field *a = nl_field_alloc(2, n, NULL, NULL), *b = nl_field_alloc(2, n, NULL, NULL);
     cr_assert_eq(nl_model_parse("matern:nu=1.5,scale=5", &m), 0);
-    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 0, 0, 8, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, SPARSE_OPTS(0, 0, 8), &p), 0, "%s", nl_errmsg());
     omp_set_num_threads(1);
-    cr_assert_eq(nl_synth_sparse_execute(p, 9, 1, NULL, a), 0);
+    cr_assert_eq(nl_synth_sparse_execute(p, 9, NL_SYNTH_SPARSE_WRAP, NULL, a), 0);
     omp_set_num_threads(2);
-    cr_assert_eq(nl_synth_sparse_execute(p, 9, 1, NULL, b), 0);
+    cr_assert_eq(nl_synth_sparse_execute(p, 9, NL_SYNTH_SPARSE_WRAP, NULL, b), 0);
     cr_expect_eq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
-    cr_assert_eq(nl_synth_sparse_execute(p, 10, 1, NULL, b), 0);
+    cr_assert_eq(nl_synth_sparse_execute(p, 10, NL_SYNTH_SPARSE_WRAP, NULL, b), 0);
     cr_expect_neq(memcmp(a->data, b->data, a->count * sizeof(double)), 0);
     nl_synth_sparse_plan_free(p), nl_model_free(m), nl_field_free(a), nl_field_free(b);
 }

@@ -7,6 +7,7 @@
 #include "../core/field.h"
 #include "../core/nl_error.h"
 #include "../synth/sparse.h"
+#include "util.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
@@ -15,7 +16,7 @@
 static nl_synth_sparse_plan *plan(const char *k, int radius, const char *angle)
 {
     nl_synth_sparse_plan *p;
-    cr_assert_eq(nl_synth_sparse_plan_expr(k, 2, radius, 16, 6.5, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_expr(k, 2, SPARSE_OPTS(radius, 16, 6.5), &p), NL_OK, "%s", nl_errmsg());
     if (angle)
         cr_assert_eq(nl_synth_sparse_set_angle(p, angle), NL_OK, "%s", nl_errmsg());
     return p;
@@ -128,7 +129,7 @@ Test(sparse_kernel, refusals)
     ok[0] = 3e9;
     cr_assert_eq(nl_synth_sparse_execute_points(p, 1, 1, ok, NULL, out), NL_EINVAL);
     cr_assert_eq(nl_synth_sparse_execute_points(p, 1, 0, ok, NULL, out), NL_OK);
-    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-abs(t))", 1, 4, 0, 1, &q), NL_OK);
+    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-abs(t))", 1, SPARSE_OPTS(4, 0, 1), &q), NL_OK);
     cr_assert_eq(nl_synth_sparse_set_bands(q, 1), NL_EINVAL);
     cr_assert_eq(nl_synth_sparse_execute_points(q, 1, 1, ok, NULL, out), NL_EINVAL);
     nl_synth_sparse_plan_free(q), nl_synth_sparse_plan_free(p);

@@ -99,11 +99,11 @@ Test(synth_hostile, sparse_positive_definite_rule)
     nl_model *m = test_model("expr:exp(-r^4/256)");
     nl_synth_sparse_plan *p = (nl_synth_sparse_plan *)1;
     nl_synth_sparse_info info;
-    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 0, 0, 1, &p), NL_ENOTPD);
+    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, SPARSE_OPTS(0, 0, 1), &p), NL_ENOTPD);
     cr_assert_null(p);
     says("--clamp");
-    cr_assert_eq(nl_synth_sparse_plan_model_flags(m, 2, NULL, 0, 0, 1, NL_SYNTH_FFT_CLAMP, &p), NL_OK, "%s",
-                 nl_errmsg());
+    nl_synth_sparse_options so = {.density = 1, .flags = NL_SYNTH_FFT_CLAMP};
+    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, &so, &p), NL_OK, "%s", nl_errmsg());
     nl_synth_sparse_plan_info(p, &info);
     /* the same measure as fft's: the negative mass is 0.2 of the positive */
     cr_assert(info.clamp_error > 0.1 && info.clamp_error < 0.3, "clamp error %g", info.clamp_error);
@@ -117,14 +117,14 @@ Test(synth_hostile, sparse_truncation_and_spectrum_models)
     nl_model *m = test_model("markov:scale=4"), *s = test_model("spectrum:exp(-k*k*5)");
     nl_synth_sparse_plan *p;
     nl_synth_sparse_info info;
-    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, 2, 0, 1, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_model(m, 2, NULL, SPARSE_OPTS(2, 0, 1), &p), NL_OK, "%s", nl_errmsg());
     nl_synth_sparse_plan_info(p, &info);
     /* a radius of 2 keeps 85% of a scale-4 Markov kernel's energy; the variance says so */
     cr_assert(info.truncated > 0.1 && info.truncated < 0.2, "truncated %g", info.truncated);
     cr_assert_float_eq(info.variance, 1 - info.truncated, 1e-12);
     nl_synth_sparse_plan_free(p);
     /* a spectrum model has no closed-form R(0): the kernel's own energy scales it */
-    cr_assert_eq(nl_synth_sparse_plan_model(s, 2, NULL, 0, 0, 1, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_model(s, 2, NULL, SPARSE_OPTS(0, 0, 1), &p), NL_OK, "%s", nl_errmsg());
     nl_synth_sparse_plan_info(p, &info);
     cr_assert(isfinite(info.variance) && info.variance > 0, "variance %g", info.variance);
     nl_synth_sparse_plan_free(p);
@@ -136,11 +136,11 @@ Test(synth_hostile, sparse_execute_bounds)
     nl_synth_sparse_plan *p;
     nl_field *f = field(2, 64, 64);
     long far[2] = {NL_SPARSE_ORIGIN_MAX - 8, 0};
-    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, 4, 4, 1e6, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, SPARSE_OPTS(4, 4, 1e6), &p), NL_OK, "%s", nl_errmsg());
     cr_assert_eq(nl_synth_sparse_execute(p, 1, 0, NULL, f), NL_ETOOBIG, "1e6 impulses per cell");
     says("impulse evaluations");
     nl_synth_sparse_plan_free(p);
-    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, 4, 0, 1, &p), NL_OK);
+    cr_assert_eq(nl_synth_sparse_plan_expr("exp(-r)", 2, SPARSE_OPTS(4, 0, 1), &p), NL_OK);
     cr_assert_eq(nl_synth_sparse_execute(p, 1, 0, far, f), NL_EINVAL, "a window past 2^30");
     says("origin");
     cr_assert_eq(nl_synth_sparse_set_angle(p, "log(x-1000)"), NL_OK);

@@ -209,12 +209,12 @@ Test(trap_lattice, einval)
     nl_synth_lattice_plan p;
     size_t n3[3] = {8, 8, 8};
     nl_field *f3 = nl_field_alloc(3, n3, NULL, NULL);
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 3, 16, 2, &p), NL_EINVAL, "dimension");
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, 0, &p), NL_EINVAL, "no octave");
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, NL_LATTICE_MAX_OCTAVES + 1, &p), NL_EINVAL);
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, 5, &p), NL_EINVAL, "cells below 2 samples");
-    cr_assert_eq(nl_synth_lattice_plan_init(r, 2, 16, 2, &p), NL_EINVAL, "no closed-form 2D spectrum");
-    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, 2, &p), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 3, 16, 2, 0, &p), NL_EINVAL, "dimension");
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, 0, 0, &p), NL_EINVAL, "no octave");
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, NL_LATTICE_MAX_OCTAVES + 1, 0, &p), NL_EINVAL);
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, 5, 0, &p), NL_EINVAL, "cells below 2 samples");
+    cr_assert_eq(nl_synth_lattice_plan_init(r, 2, 16, 2, 0, &p), NL_EINVAL, "no closed-form 2D spectrum");
+    cr_assert_eq(nl_synth_lattice_plan_init(m, 1, 16, 2, 0, &p), NL_OK, "%s", nl_errmsg());
     cr_assert_eq(nl_synth_lattice_execute(&p, 1, f3), NL_EINVAL);
     nl_field_free(f3), nl_model_free(m), nl_model_free(r);
 }
@@ -224,7 +224,7 @@ Test(trap_lattice, enomem)
 {
     nl_model *m = test_model("power:d=2.6,fmin=0.001");
     nl_synth_lattice_plan p;
-    EXPECT_ENOMEM(nl_synth_lattice_plan_init(m, 2, 16, 2, &p));
+    EXPECT_ENOMEM(nl_synth_lattice_plan_init(m, 2, 16, 2, 0, &p));
     nl_model_free(m);
 }
 
@@ -527,9 +527,9 @@ Test(trap_lattice, not_positive_definite)
 {
     nl_model *neg = test_model("spectrum:cos(20*f)/(1+f*f)");
     nl_synth_lattice_plan p;
-    cr_assert_eq(nl_synth_lattice_plan_init(neg, 2, 16, 3, &p), NL_ENOTPD);
+    cr_assert_eq(nl_synth_lattice_plan_init(neg, 2, 16, 3, 0, &p), NL_ENOTPD);
     cr_assert(strstr(nl_errmsg(), "not positive definite"), "%s", nl_errmsg());
-    cr_assert_eq(nl_synth_lattice_plan_init_flags(neg, 2, 16, 3, NL_SYNTH_LATTICE_CLAMP, &p), NL_OK, "%s",
+    cr_assert_eq(nl_synth_lattice_plan_init(neg, 2, 16, 3, NL_SYNTH_LATTICE_CLAMP, &p), NL_OK, "%s",
                  nl_errmsg());
     cr_assert(p.negatives > 0 && p.clamp_error > 0);
     nl_model_free(neg);

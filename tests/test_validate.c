@@ -23,6 +23,34 @@
 /* The result is large: one per test process, off the stack. */
 static nl_validate_result res;
 
+/* A method's number by its name (the registry's order). */
+static int meth(const char *name)
+{
+    for (int k = 0; k < nl_validate_method_count(); k++)
+        if (strcmp(name, nl_validate_method_name(k)) == 0)
+            return k;
+    cr_assert_fail("validate runs no method \"%s\"", name);
+    return -1;
+}
+#define FFT meth("fft")
+#define CIRCULANT meth("circulant")
+#define SUBDIV meth("subdiv")
+#define SPARSE meth("sparse")
+
+/* The registry gives validate its methods: the exact ones first, then
+ * subdivision, its correlated variant and sparse convolution, one slot
+ * each. */
+Test(validate, methods_come_from_the_registry)
+{
+    static const char *const names[] = {"fft", "circulant", "subdiv", "subdiv-correlated", "sparse"};
+    cr_assert_eq(nl_validate_method_count(), NL_VALIDATE_METHODS);
+    for (int k = 0; k < NL_VALIDATE_METHODS; k++) {
+        cr_expect_str_eq(nl_validate_method_name(k), names[k]);
+        cr_expect_eq(nl_validate_method_periodic(k), strcmp(names[k], "circulant") != 0, "%s", names[k]);
+    }
+    cr_expect_null(nl_validate_method_name(-1));
+}
+
 static void count_progress(void *ctx, int method, size_t done, size_t total)
 {
     size_t *calls = ctx;
@@ -75,7 +103,7 @@ Test(validate, exact_methods_cover_zero)
         cr_expect(x->seconds >= 0);
     }
     cr_expect(res.have_exact && res.exact_effect < 1e-9, "%g", res.exact_effect);
-    cr_expect(res.method[NL_VALIDATE_SUBDIV].have_exact && res.method[NL_VALIDATE_SUBDIV].vs_exact.effect.lo == 0);
+    cr_expect(res.method[SUBDIV].have_exact && res.method[SUBDIV].vs_exact.effect.lo == 0);
     nl_model_free(m);
 }
 
@@ -92,7 +120,7 @@ Test(validate, wrong_target_is_off_and_verdict_follows_tolerance)
 {
     nl_model *m = test_model("markov:scale=8"), *wrong = test_model("markov:scale=4");
     nl_validate_options o;
-    const nl_validate_interval *e = &res.method[NL_VALIDATE_FFT].all.effect;
+    const nl_validate_interval *e = &res.method[FFT].all.effect;
     size_t n[1] = {1024};
     double lo, hi;
     nl_validate_options_default(&o);
@@ -111,15 +139,15 @@ Test(validate, wrong_target_is_off_and_verdict_follows_tolerance)
     }
     lo = e->lo, hi = e->hi;
     res.tolerance = hi * 1.01;
-    cr_assert_eq(nl_validate_method(m, NL_VALIDATE_FFT, &o, &res), NL_OK);
-    cr_expect_eq(res.method[NL_VALIDATE_FFT].verdict, NL_VALIDATE_WITHIN);
+    cr_assert_eq(nl_validate_method(m, FFT, &o, &res), NL_OK);
+    cr_expect_eq(res.method[FFT].verdict, NL_VALIDATE_WITHIN);
     cr_expect(e->lo == lo && e->hi == hi, "the same seeds give the same interval");
     res.tolerance = (lo + hi) / 2;
-    cr_assert_eq(nl_validate_method(m, NL_VALIDATE_FFT, &o, &res), NL_OK);
-    cr_expect_eq(res.method[NL_VALIDATE_FFT].verdict, NL_VALIDATE_UNRESOLVED);
+    cr_assert_eq(nl_validate_method(m, FFT, &o, &res), NL_OK);
+    cr_expect_eq(res.method[FFT].verdict, NL_VALIDATE_UNRESOLVED);
     res.tolerance = lo * 0.99;
-    cr_assert_eq(nl_validate_method(m, NL_VALIDATE_FFT, &o, &res), NL_OK);
-    cr_expect_eq(res.method[NL_VALIDATE_FFT].verdict, NL_VALIDATE_OFF);
+    cr_assert_eq(nl_validate_method(m, FFT, &o, &res), NL_OK);
+    cr_expect_eq(res.method[FFT].verdict, NL_VALIDATE_OFF);
     nl_model_free(m);
     nl_model_free(wrong);
 }
@@ -135,11 +163,11 @@ Test(validate, subdivision_error_is_measured)
 {
     nl_model *m = test_model("gauss:scale=4");
     nl_validate_options o;
-    const nl_validate_method_result *x = &res.method[NL_VALIDATE_SUBDIV];
+    const nl_validate_method_result *x = &res.method[SUBDIV];
     nl_validate_options_default(&o);
     o.realizations = 256;
     cr_assert_eq(nl_validate_init(m, 1, (size_t[]){512}, 1, &o, &res), NL_OK);
-    cr_assert_eq(nl_validate_method(m, NL_VALIDATE_SUBDIV, &o, &res), NL_OK);
+    cr_assert_eq(nl_validate_method(m, SUBDIV, &o, &res), NL_OK);
     cr_assert(x->ran && res.have_exact && x->have_exact, "%s", x->why);
     cr_expect(res.exact_effect > 0.03 && res.exact_effect < 0.045, "%g", res.exact_effect);
     cr_expect(x->all.effect.lo > 0 && x->all.effect.lo <= res.exact_effect && res.exact_effect <= x->all.effect.hi,
@@ -170,7 +198,7 @@ Test(validate, spectrum_expectation_per_method)
     cr_expect(res.band_lo[0] == 0.25 && res.band_hi[0] == 0.5 && res.band_lo[6] == 0, "%g %g %g", res.band_lo[0],
               res.band_hi[0], res.band_lo[6]);
     cr_expect(res.band_fejer[0] > 2 * res.band_periodic[0], "%g %g", res.band_fejer[0], res.band_periodic[0]);
-    for (int k = NL_VALIDATE_FFT; k <= NL_VALIDATE_CIRCULANT; k++) {
+    for (int k = FFT; k <= CIRCULANT; k++) {
         const nl_validate_interval *b = &res.method[k].band_error[0];
         cr_assert_eq(nl_validate_method(m, k, &o, &res), NL_OK);
         cr_expect(b->lo <= 0 && 0 <= b->hi, "%s: band 0 error %g [%g, %g]", res.method[k].name, b->est, b->lo, b->hi);
@@ -217,14 +245,14 @@ Test(validate, three_d)
     nl_validate_options_default(&o);
     o.realizations = 4;
     cr_assert_eq(nl_validate_model(m, 3, (size_t[]){16, 16, 16}, 1, &o, &res), NL_OK);
-    cr_expect(res.method[NL_VALIDATE_FFT].ran, "%s", res.method[NL_VALIDATE_FFT].why);
-    cr_expect_eq(res.method[NL_VALIDATE_FFT].all.effect.lo, 0);
+    cr_expect(res.method[FFT].ran, "%s", res.method[FFT].why);
+    cr_expect_eq(res.method[FFT].all.effect.lo, 0);
     for (size_t b = 0; b < res.nbands; b++) {
-        const nl_validate_interval *e = &res.method[NL_VALIDATE_FFT].band_error[b];
+        const nl_validate_interval *e = &res.method[FFT].band_error[b];
         cr_expect(e->lo <= e->est && e->est <= e->hi, "band %zu: %g [%g, %g]", b, e->est, e->lo, e->hi);
     }
-    cr_expect(!res.method[NL_VALIDATE_SUBDIV].ran && res.method[NL_VALIDATE_SUBDIV].status == NL_EINVAL);
-    cr_expect(!res.method[NL_VALIDATE_SPARSE].ran && res.method[NL_VALIDATE_SPARSE].status == NL_EINVAL);
+    cr_expect(!res.method[SUBDIV].ran && res.method[SUBDIV].status == NL_EINVAL);
+    cr_expect(!res.method[SPARSE].ran && res.method[SPARSE].status == NL_EINVAL);
     nl_model_free(m);
 }
 
@@ -241,12 +269,12 @@ Test(validate, large_bands)
     nl_validate_options_default(&o);
     o.realizations = 4;
     cr_assert_eq(nl_validate_init(m, 2, (size_t[]){256, 256}, 1, &o, &res), NL_OK);
-    cr_assert_eq(nl_validate_method(m, NL_VALIDATE_FFT, &o, &res), NL_OK);
-    cr_assert(res.method[NL_VALIDATE_FFT].ran, "%s", res.method[NL_VALIDATE_FFT].why);
+    cr_assert_eq(nl_validate_method(m, FFT, &o, &res), NL_OK);
+    cr_assert(res.method[FFT].ran, "%s", res.method[FFT].why);
     cr_expect(4 * res.band_shape_periodic[0] > 5e4, "%g", res.band_shape_periodic[0]);
-    cr_expect(res.method[NL_VALIDATE_FFT].band_error[0].hi - res.method[NL_VALIDATE_FFT].band_error[0].lo < 0.03);
+    cr_expect(res.method[FFT].band_error[0].hi - res.method[FFT].band_error[0].lo < 0.03);
     for (size_t b = 0; b < res.nbands; b++) {
-        const nl_validate_interval *e = &res.method[NL_VALIDATE_FFT].band_error[b];
+        const nl_validate_interval *e = &res.method[FFT].band_error[b];
         cr_expect(e->lo <= e->est && e->est <= e->hi, "band %zu: %g [%g, %g]", b, e->est, e->lo, e->hi);
     }
     nl_model_free(m);
@@ -267,14 +295,14 @@ Test(validate, refusals)
     for (int k = 0; k < NL_VALIDATE_METHODS; k++)
         cr_expect(!res.method[k].ran && res.method[k].status == NL_ENOTPD, "%s", nl_validate_method_name(k));
     cr_assert_eq(nl_validate_model(m, 2, (size_t[]){64, 64}, 1, &o, &res), NL_OK);
-    cr_expect(!res.method[NL_VALIDATE_FFT].ran && res.method[NL_VALIDATE_FFT].status == NL_ENOTPD);
-    cr_expect(!res.method[NL_VALIDATE_SUBDIV].ran && res.method[NL_VALIDATE_SUBDIV].status == NL_ENOTPD);
-    cr_expect(strstr(res.method[NL_VALIDATE_SUBDIV].why, "not positive definite on this grid"), "%s",
-              res.method[NL_VALIDATE_SUBDIV].why);
-    cr_expect(res.method[NL_VALIDATE_CIRCULANT].ran, "%s", res.method[NL_VALIDATE_CIRCULANT].why);
+    cr_expect(!res.method[FFT].ran && res.method[FFT].status == NL_ENOTPD);
+    cr_expect(!res.method[SUBDIV].ran && res.method[SUBDIV].status == NL_ENOTPD);
+    cr_expect(strstr(res.method[SUBDIV].why, "not positive definite on this grid"), "%s",
+              res.method[SUBDIV].why);
+    cr_expect(res.method[CIRCULANT].ran, "%s", res.method[CIRCULANT].why);
     cr_expect(res.have_exact && fabs(res.exact[NL_VALIDATE_X][0] - 1) < 1e-3);
     cr_assert_eq(nl_validate_model(tri, 1, (size_t[]){128}, 1, &o, &res), NL_OK);
-    cr_expect(!res.method[NL_VALIDATE_SUBDIV].ran && res.method[NL_VALIDATE_SUBDIV].status == NL_ENOTPD);
+    cr_expect(!res.method[SUBDIV].ran && res.method[SUBDIV].status == NL_ENOTPD);
     cr_expect(!res.have_exact);
     nl_model_free(m);
     nl_model_free(tri);
@@ -329,14 +357,14 @@ Test(validate, error_paths)
     cr_expect_eq(nl_validate_method(m, -1, &o, &res), NL_EINVAL);
     cr_expect_eq(nl_validate_method(m, NL_VALIDATE_METHODS, &o, &res), NL_EINVAL);
     o.realizations = 5;
-    cr_expect_eq(nl_validate_method(m, NL_VALIDATE_FFT, &o, &res), NL_EINVAL);
+    cr_expect_eq(nl_validate_method(m, FFT, &o, &res), NL_EINVAL);
     cr_expect(memcmp(&copy, &res, sizeof res) == 0, "a refused call changed the result");
     cr_expect_null(nl_validate_method_name(NL_VALIDATE_METHODS));
-    cr_expect_str_eq(nl_validate_method_name(NL_VALIDATE_SPARSE), "sparse");
+    cr_expect_str_eq(nl_validate_method_name(SPARSE), "sparse");
     cr_expect_str_eq(nl_validate_dir_name(NL_VALIDATE_DIAG), "diagonal");
     cr_expect_null(nl_validate_dir_name(NL_VALIDATE_DIRS));
     cr_expect_str_eq(nl_validate_verdict_name(NL_VALIDATE_UNRESOLVED), "unresolved");
     cr_expect_null(nl_validate_verdict_name(-1));
-    cr_expect_str_eq(res.method[NL_VALIDATE_SUBDIV].name, "subdiv");
+    cr_expect_str_eq(res.method[SUBDIV].name, "subdiv");
     nl_model_free(m);
 }

@@ -32,4 +32,7 @@ int count_lines(const char *s);
  * the message otherwise); released by nl_model_free. */
 nl_model *test_model(const char *spec);
 
+/* Sparse convolution's plan options (synth/sparse.h): radius, cell, density; flags 0. */
+#define SPARSE_OPTS(r, c, d) (&(nl_synth_sparse_options){.radius = (r), .cell = (c), .density = (d)})
+
 #endif

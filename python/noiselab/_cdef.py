@@ -235,8 +235,8 @@ int nl_subdiv_plan_execute_window(const nl_subdiv_plan *p, uint64_t seed, const 
 void nl_subdiv_plan_free(nl_subdiv_plan *p);
 
 /* synth/midpoint.h, synth/faulting.h */
-int nl_midpoint_miller_default_levels(int dim, const size_t *n);
-int nl_midpoint_miller(int levels, double H, double sigma2, double vscale, uint64_t seed, nl_field *out);
+int nl_synth_midpoint_miller_default_levels(int dim, const size_t *n);
+int nl_synth_midpoint_miller(int levels, double H, double sigma2, double vscale, uint64_t seed, nl_field *out);
 int nl_synth_faulting(uint64_t seed, double density, nl_field *f, size_t *count);
 
 /* synth/sparse.h */
@@ -253,14 +253,21 @@ typedef struct {
     double clamp_error;
     size_t negatives;
 } nl_synth_sparse_info;
-int nl_synth_sparse_plan_model_flags(const nl_model *m, int dim, const double *h, int radius, int cell,
-                                     double density, unsigned flags, nl_synth_sparse_plan **out);
-int nl_synth_sparse_plan_expr(const char *expr, int dim, int radius, int cell, double density,
+typedef struct {
+    int radius;
+    int cell;
+    double density;
+    unsigned flags;
+} nl_synth_sparse_options;
+void nl_synth_sparse_options_default(nl_synth_sparse_options *o);
+int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, const nl_synth_sparse_options *o,
+                               nl_synth_sparse_plan **out);
+int nl_synth_sparse_plan_expr(const char *expr, int dim, const nl_synth_sparse_options *o,
                               nl_synth_sparse_plan **out);
 void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_info *info);
-int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, int wrap, const long *origin,
+int nl_synth_sparse_execute(const nl_synth_sparse_plan *p, uint64_t seed, unsigned flags, const long *origin,
                             nl_field *out);
-int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, int angle);
+int nl_synth_sparse_check_work(int dim, const size_t *n, int radius, int cell, double density, unsigned flags);
 void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p);
 
 /* synth/lattice.h */
@@ -273,12 +280,12 @@ typedef struct {
     size_t negatives;
     double clamp_error;
 } nl_synth_lattice_plan;
-int nl_synth_lattice_plan_init_flags(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
-                                     nl_synth_lattice_plan *p);
+int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int octaves, unsigned flags,
+                               nl_synth_lattice_plan *p);
 int nl_synth_lattice_execute(const nl_synth_lattice_plan *p, uint64_t seed, nl_field *out);
 double nl_synth_lattice_default_cell(const size_t *n);
 int nl_synth_lattice_default_octaves(double cell0);
-int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, int clamp, double *clamp_error);
+int nl_synth_lattice_check_grid(const nl_model *m, int dim, const size_t *n, unsigned flags, double *clamp_error);
 
 typedef struct nl_synth_lattice_wiener_plan nl_synth_lattice_wiener_plan;
 typedef struct {
@@ -301,7 +308,8 @@ void nl_synth_lattice_wiener_plan_free(nl_synth_lattice_wiener_plan *p);
 enum {
     NL_METHOD_MODEL = 1, NL_METHOD_NO_MODEL = 2, NL_METHOD_PERIODIC = 4, NL_METHOD_WINDOW = 8,
     NL_METHOD_DISTRIBUTED = 16, NL_METHOD_CONDITIONABLE = 32, NL_METHOD_EXACT = 64, NL_METHOD_CLAMP = 128,
-    NL_METHOD_SERIAL = 256
+    NL_METHOD_SERIAL = 256, NL_METHOD_TORUS = 512, NL_METHOD_EMBEDDING = 1024,
+    NL_METHOD_VALIDATED = 2048, NL_METHOD_SUBDIVISION = 4096
 };
 enum {
     NL_METHOD_OPEN = 1, NL_METHOD_REPLACES_MODEL = 2, NL_METHOD_FILE = 4, NL_METHOD_SUFFIX = 8,
@@ -341,9 +349,17 @@ typedef struct {
     long origin[2];
 } nl_method_grid;
 typedef struct nl_method_plan nl_method_plan;
+typedef struct {
+    char method[4096];
+    char flags[256];
+    double sd;
+    double offset;
+    char json[8192];
+} nl_method_report;
 struct nl_method_type {
     const char *name;
     const char *summary;
+    const char *noun;
     const char *help;
     unsigned dims;
     unsigned caps;
@@ -355,6 +371,8 @@ struct nl_method_type {
     int (*execute)(nl_method_plan *p, uint64_t seed, nl_field *f);
     int (*execute_slab)(nl_method_plan *p, uint64_t seed, size_t s0, nl_field *f);
     int (*describe)(const nl_method_plan *p, char *buf, size_t size);
+    int (*report)(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f,
+                  nl_method_report *r);
     void (*free)(nl_method_plan *p);
 };
 int nl_method_count(void);
@@ -367,6 +385,8 @@ int nl_method_plan_alloc(const nl_method_type *t, const nl_model *m, const nl_me
                          const nl_method_options *o, nl_method_plan **out);
 int nl_method_execute(nl_method_plan *p, uint64_t seed, nl_field *f);
 int nl_method_describe(const nl_method_plan *p, char *buf, size_t size);
+int nl_method_report_of(const nl_method_plan *p, const nl_model *m, uint64_t seed, const nl_field *f,
+                        nl_method_report *r);
 void *nl_method_plan_impl(const nl_method_plan *p);
 void nl_method_plan_free(nl_method_plan *p);
 typedef struct {

@@ -1,11 +1,11 @@
 """Synthesis: noiselab.synth and noiselab.Plan (as `noiselab synth`)."""
+import json
 import threading
 
 import numpy as np
 
 from ._ffi import (Error, Model, alloc_field, check, cstr, ffi, free_data, grid_args, lib, owned_field, planner,
                    size_tuple, spacing_tuple)
-
 
 
 def _registry():
@@ -55,8 +55,6 @@ def methods():
 
 
 _CLAMP = 1  # NL_SYNTH_FFT_CLAMP == NL_SYNTH_LATTICE_CLAMP
-_FFT_CLAMP_TOL = 1e-6  # NL_SYNTH_FFT_CLAMP_TOL
-_CIRC_LOSS_TOL = 1e-3  # NL_SYNTH_CIRCULANT_LOSS_TOL
 
 
 def _int(name, v, lo, hi):
@@ -124,8 +122,8 @@ class Plan:
 
     Attributes: ``method`` (the method string the CLI records, e.g.
     "circulant:embedding=128x128x1"), ``model`` (the spec), ``flags`` (e.g.
-    "clamped"), ``info`` (a dict of the plan's report: variance, eigenvalue
-    range, ...), ``shape``, ``spacing``.
+    "clamped"), ``info`` (a dict of the plan's report, the
+    ``--json`` report of ``noiselab synth``: variance, eigenvalue range, ...), ``shape``, ``spacing``.
     """
 
     def __init__(self, method, acf=None, spectrum=None, size=None, spacing=1.0, clamp=False, **options):
@@ -170,9 +168,10 @@ class Plan:
             self._lock = threading.Lock()  # the plan holds its workspace
         if any(rows[k].flags & lib.NL_METHOD_EXPRESSION for k in given if k in rows):
             self._lock = planner  # an expression evaluated per call (libmatheval)
-        report = getattr(self, "_report_" + method, None)
-        if report:
-            report(lib.nl_method_plan_impl(self._p))
+        r = ffi.new("nl_method_report *")
+        check(lib.nl_method_report_of(self._p, self._m.ptr if self._m else ffi.NULL, 0, ffi.NULL, r))
+        self.flags = ffi.string(r.flags).decode()
+        self.info = json.loads(ffi.string(r.json).decode()) if r.json[0] != b"\0" else {}
 
     def _window(self, t, rows, given):
         """origin against the options that make or unmake a window."""
@@ -213,75 +212,6 @@ class Plan:
             check(lib.nl_method_options_set(o, r.name, c, cstr(k, k)))
         self._opts = o
         return o
-
-    # -- what each method reports of its plan (optional, by method name) --
-
-    def _report_fft(self, impl):
-        info = ffi.new("nl_synth_fft_info *")
-        lib.nl_synth_fft_plan_info(ffi.cast("nl_synth_fft_plan *", impl), info)
-        self.flags = "clamped" if info.clamp_error > _FFT_CLAMP_TOL else ""
-        self.info = dict(variance=info.variance, min_spectrum=info.min_lambda, max_spectrum=info.max_lambda,
-                         clamped=int(info.negatives), clamp_error=info.clamp_error)
-
-    def _report_circulant(self, impl):
-        info = ffi.new("nl_synth_circulant_info *")
-        lib.nl_synth_circulant_plan_info(ffi.cast("nl_synth_circulant_plan *", impl), info)
-        clamped, lost = info.clamp_error > _FFT_CLAMP_TOL, abs(info.variance_loss) > _CIRC_LOSS_TOL
-        self.flags = ",".join(x for x, c in (("clamped", clamped), ("variance-changed", lost)) if c)
-        self.info = dict(embedding=tuple(info.m), min_eigenvalue=info.min_eigenvalue,
-                         max_eigenvalue=info.max_eigenvalue, clamp_error=info.clamp_error,
-                         doublings=info.doublings, variance_loss=info.variance_loss)
-
-    def _report_subdiv(self, impl):
-        p = ffi.cast("nl_subdiv_plan *", impl)
-        info = ffi.new("nl_subdiv_info *")
-        lib.nl_subdiv_plan_info(p, info)
-        c = lib.nl_subdiv_plan_coeffs(p)
-        self.flags = ",".join(ffi.string(lib.nl_subdiv_flag_name(b)).decode()
-                              for b in range(6) if c.flags & (1 << b))
-        self.info = dict(levels=info.levels, spacing0=info.spacing0, variance=c.r0)
-        if self.options.get("nonperiodic"):
-            self.info["coarse_correlation"] = info.coarse_correlation
-
-    def _report_midpoint(self, impl):
-        mp = ffi.cast("nl_midpoint_method_plan *", impl)
-        self.info = dict(H=mp.H, levels=mp.levels, variance_scale=mp.vscale)
-        if mp.miller:
-            self.info["interpolant"] = "miller"
-        else:
-            info = ffi.new("nl_subdiv_info *")
-            lib.nl_subdiv_plan_info(mp.plan, info)
-            self.info["variance"] = info.variance
-
-    def _report_faulting(self, impl):
-        t = _METHODS["faulting"]
-        self.info = dict(density=self._opts.v[lib.nl_method_option_index(t, b"density")].d)
-
-    def _report_sparse(self, impl):
-        info = ffi.new("nl_synth_sparse_info *")
-        lib.nl_synth_sparse_plan_info(ffi.cast("nl_synth_sparse_plan *", impl), info)
-        fl = []
-        if info.clamp_error > _FFT_CLAMP_TOL:
-            fl.append("clamped")
-        if info.truncated > 1e-3:
-            fl.append("truncated=%.2g" % info.truncated)
-        self.flags = ",".join(fl)
-        self.info = dict(radius=info.radius, cell=info.cell, density=info.density, variance=info.variance,
-                         mean=info.mean, excess_kurtosis=info.kurtosis, truncated_energy=info.truncated)
-
-    def _report_lattice(self, impl):
-        lp = ffi.cast("nl_lattice_method_plan *", impl)
-        if lp.wiener:
-            info = ffi.new("nl_synth_lattice_wiener_info *")
-            lib.nl_synth_lattice_wiener_plan_info(lp.plan, info)
-            self.flags = "clamped" if info.negatives else ""
-            self.info = dict(cell=info.cell, nodes=tuple(info.nodes), variance=info.variance,
-                             mean_error_variance=info.mean_error, max_error_variance=info.max_error, rank=info.rank)
-            return
-        p = lp.perlin
-        self.flags = "clamped" if lp.grid_clamp_error > 0 or p.negatives else ""
-        self.info = dict(octaves=[dict(cell=p.cell[o], weight=p.weight[o], peak=p.peak[o], leakage=p.leakage[o])
-                                  for o in range(p.octaves)])
 
     # -- execution --------------------------------------------------------
 

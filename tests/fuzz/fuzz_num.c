@@ -8,12 +8,11 @@
  *               ACF (full, axis, radial, direct), periodogram, Welch,
  *               moments, histogram, spectral slope
  * The fuzzer's bytes are decoded into a structured choice (num_case.h),
- * not parsed as text: a method (fft, circulant, cholesky, sparse, lattice,
- * subdiv), a model name with each parameter either absent or drawn from a
+ * not parsed as text: a method of the registry that takes a model, a model name with each parameter either absent or drawn from a
  * table of hostile but parseable numbers (0, -0, denormals, 1e308, values
  * just inside and outside each parameter's limits, nan, inf), anisotropy
  * options, a size of at most 32 x 32 (8^3 in 3D), a spacing and the
- * method's options.  So every input reaches the numbers after the parser.
+ * method's options (from its option table).  So every input reaches the numbers after the parser.
  *
  * The checker traps (__builtin_trap, a crash libFuzzer records) when
  *   - a call returns NL_OK and its output holds a non-finite number;
@@ -28,12 +27,7 @@
 #include "../../core/io.h"
 #include "../../core/model.h"
 #include "../../core/nl_error.h"
-#include "../../synth/cholesky.h"
-#include "../../synth/circulant.h"
-#include "../../synth/fft.h"
-#include "../../synth/lattice.h"
-#include "../../synth/sparse.h"
-#include "../../synth/subdiv.h"
+#include "../../synth/method.h"
 #include "num_case.h"
 #if FUZZ_TARGET == 9
 #include "../../analysis/slope.h"
@@ -89,59 +83,24 @@ static void analyse(const nl_field *x)
     nl_field_free(p);
 }
 
-/* Plan and execute the method; returns the status of the first failure. */
+/* Plan and execute the method through the registry; returns the status
+ * of the first failure. */
 static int synth(const fcase *c, const nl_model *m, nl_field *out)
 {
-    double h[3] = {atof(c->h), atof(c->h), atof(c->h)};
-    unsigned fl = c->clamp ? NL_SYNTH_FFT_CLAMP : 0;
-    int st;
-    if (c->method == 0) {
-        nl_synth_fft_plan *p;
-        if ((st = nl_synth_fft_plan_alloc(m, c->dim, c->n, h, fl, &p)) == NL_OK) {
-            st = nl_synth_fft_execute(p, c->seed, out);
-            nl_synth_fft_plan_free(p);
-        }
-    } else if (c->method == 1) {
-        nl_synth_circulant_plan *p;
-        if ((st = nl_synth_circulant_plan_alloc(m, c->dim, c->n, h, fl, c->max_factor, &p)) == NL_OK) {
-            st = nl_synth_circulant_execute(p, c->seed, out);
-            nl_synth_circulant_plan_free(p);
-        }
-    } else if (c->method == 2) {
-        nl_synth_cholesky_plan *p;
-        if ((st = nl_synth_cholesky_plan_alloc(m, c->dim, c->n, h, &p)) == NL_OK) {
-            st = nl_synth_cholesky_execute(p, c->seed, out);
-            nl_synth_cholesky_plan_free(p);
-        }
-    } else if (c->method == 3) {
-        nl_synth_sparse_plan *p;
-        if ((st = nl_synth_sparse_plan_model(m, c->dim, h, atoi(c->radius), atoi(c->cell), atof(c->density), &p)) ==
-            NL_OK) {
-            st = nl_synth_sparse_execute(p, c->seed, c->nonperiodic, c->nonperiodic ? NULL : c->origin, out);
-            nl_synth_sparse_plan_free(p);
-        }
-    } else if (c->method == 4) {
-        nl_synth_lattice_plan p;
-        double cell0 = atof(c->cell) > 0 ? atof(c->cell) : nl_synth_lattice_default_cell(c->n);
-        int oct = c->octaves ? c->octaves : nl_synth_lattice_default_octaves(cell0);
-        if ((st = nl_synth_lattice_plan_init(m, c->dim, cell0, oct, &p)) == NL_OK)
-            st = nl_synth_lattice_execute(&p, c->seed, out);
-    } else {
-        nl_subdiv_options o;
-        nl_subdiv_options_default(&o);
-        o.levels = c->levels;
-        o.N = c->N;
-        o.tol = atof(c->tol);
-        o.nonperiodic = c->nonperiodic;
-        o.allow_not_pd = c->clamp;
-        o.random_nb = c->dim == 2 ? c->random_nb : 0;
-        o.random_seed = c->seed;
-        nl_subdiv_plan *p;
-        if ((st = nl_subdiv_plan_alloc(m, c->dim, c->n, h[0], &o, &p)) == NL_OK) {
-            st = c->nonperiodic ? nl_subdiv_plan_execute_window(p, c->seed, c->origin, out)
-                                : nl_subdiv_plan_execute(p, c->seed, out);
-            nl_subdiv_plan_free(p);
-        }
+    const nl_method_type *t = c->method;
+    nl_method_grid g = {c->dim, {c->n[0], c->n[1], c->n[2]}, {atof(c->h), atof(c->h), atof(c->h)},
+                        {c->origin[0], c->origin[1]}};
+    nl_method_options o;
+    nl_method_plan *p;
+    int st = NL_OK;
+    nl_method_options_default(t, &o);
+    o.flags = c->clamp ? NL_METHOD_OPT_CLAMP : 0;
+    for (int k = 0; k < t->noptions && !st; k++)
+        if (c->opt[k])
+            st = nl_method_options_set(&o, t->options[k].name, c->opt[k], t->options[k].name);
+    if (!st && (st = nl_method_plan_alloc(t, m, &g, &o, &p)) == NL_OK) {
+        st = nl_method_execute(p, c->seed, out);
+        nl_method_plan_free(p);
     }
     return st;
 }
@@ -162,9 +121,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     check(st, "nl_field_alloc");
     if (out) {
         st = synth(&c, m, out);
-        check(st, methods[c.method]);
+        check(st, c.method->name);
         if (st == NL_OK) {
-            check_field(out, methods[c.method]);
+            check_field(out, c.method->name);
             analyse(out);
         }
         nl_field_free(out);

@@ -71,7 +71,7 @@ static int has_nonfinite(const char *s)
 static void fail(const fcase *c, const char *kind, const char *why, const char *detail)
 {
     char what[32];
-    snprintf(what, sizeof what, "cli-%s", methods[c->method]);
+    snprintf(what, sizeof what, "cli-%s", c->method->name);
     if (ignored(what, kind))
         return;
     fprintf(stderr, "fuzz: %s: %s\n", why, detail);
@@ -110,7 +110,7 @@ static void sweep(void)
 
 /* The command line of case c: argv (at most 40 entries) points into buf. */
 typedef struct {
-    char sz[64], seed[32], org[64], lv[8], nb[8], oc[8], rn[8];
+    char sz[64], seed[32], org[64], opt[NL_METHOD_MAX_OPTIONS][64];
 } argbuf;
 
 static int build_argv(const fcase *c, argbuf *b, char **argv)
@@ -127,35 +127,20 @@ static int build_argv(const fcase *c, argbuf *b, char **argv)
         snprintf(b->sz, sizeof b->sz, c->dim == 2 ? "%zux%zu" : "%zux%zux%zu", c->n[0], c->n[1], c->n[2]),
             snprintf(b->org, sizeof b->org, "%ld,%ld", c->origin[0], c->origin[1]);
     snprintf(b->seed, sizeof b->seed, "%llu", (unsigned long long)c->seed);
-    snprintf(b->lv, sizeof b->lv, "%d", c->levels), snprintf(b->nb, sizeof b->nb, "%d", c->N);
-    snprintf(b->oc, sizeof b->oc, "%d", c->octaves), snprintf(b->rn, sizeof b->rn, "%d", c->random_nb);
 #define ARG(s) (argv[argc++] = (char *)(s))
-    ARG("noiselab"), ARG("synth"), ARG(methods[c->method]), ARG(spectral ? "--spectrum" : "--acf"), ARG(c->model);
+    ARG("noiselab"), ARG("synth"), ARG(c->method->name), ARG(spectral ? "--spectrum" : "--acf"), ARG(c->model);
     ARG("--size"), ARG(b->sz), ARG("--seed"), ARG(b->seed), ARG("--spacing"), ARG(c->h), ARG("--json");
     if (c->clamp)
         ARG("--clamp");
-    if (c->method == 3) {
-        ARG("--density"), ARG(c->density), ARG("--radius"), ARG(c->radius), ARG("--cell"), ARG(c->cell);
-        if (c->nonperiodic)
-            ARG("--wrap");
-        else if (c->origin[0] || c->origin[1])
-            ARG("--origin"), ARG(b->org);
-    }
-    if (c->method == 4 && strcmp(c->cell, "0"))
-        ARG("--cell"), ARG(c->cell);
-    if (c->method == 4 && c->octaves)
-        ARG("--octaves"), ARG(b->oc);
-    if (c->method == 5) {
-        if (c->levels)
-            ARG("--levels"), ARG(b->lv);
-        if (c->N)
-            ARG("--neighborhood"), ARG(b->nb);
-        ARG("--tol"), ARG(c->tol);
-        if (c->nonperiodic)
-            ARG("--nonperiodic"), ARG("--origin"), ARG(b->org);
-        if (c->random_nb && c->dim == 2)
-            ARG("--random-neighborhoods"), ARG(b->rn);
-    }
+    for (int k = 0; k < c->method->noptions; k++) /* each given option; a flag without a value */
+        if (c->opt[k]) {
+            snprintf(b->opt[k], sizeof b->opt[k], "--%s", c->method->options[k].name);
+            ARG(b->opt[k]);
+            if (c->method->options[k].type != NL_METHOD_FLAG)
+                ARG(c->opt[k]);
+        }
+    if (c->origin[0] || c->origin[1])
+        ARG("--origin"), ARG(b->org);
     ARG("-o"), ARG("out.exr");
 #undef ARG
     argv[argc] = NULL;

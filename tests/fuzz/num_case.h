@@ -9,6 +9,7 @@
 #define NL_FUZZ_NUM_CASE_H
 
 #include "../../core/family.h"
+#include "../../synth/method.h"
 
 #include <limits.h>
 #include <stdint.h>
@@ -26,7 +27,9 @@ static const char *const num[] = {
     "1e-3",   "200",    "0.1",   "12",    "1e6",   "1e7",    "8193",   "4096",     "1e-12",  "90", "-45"};
 enum { NNUM = sizeof num / sizeof *num };
 
-static const char *const methods[] = {"fft", "circulant", "cholesky", "sparse", "lattice", "subdiv"};
+/* Small integers for integer options (levels, neighbourhoods, radii, ...). */
+static const char *const ints[] = {"0", "1", "2", "3", "4", "5", "6", "7", "8", "12", "16", "17", "30", "31", "64",
+                                   "256", "4096", "4097", "-1", "2147483647"};
 static const char *const exprs[] = {"exp(-abs(t)/%s)", "%s*exp(-t^2)", "exp(-abs(t)^%s)", "cos(%s*t)*exp(-abs(t))",
                                     "1/(1+(t/%s)^2)",  "sin(%s*t)/t", "1-abs(t)/%s",      "exp(-r/%s)*(1+r/%s)",
                                     "exp(-abs(x)/%s-abs(y))"};
@@ -49,18 +52,15 @@ static unsigned take(bytes *b)
 static const char *pick_num(bytes *b) { return num[take(b) % NNUM]; }
 
 typedef struct {
-    int method, dim;
+    const nl_method_type *method;         /* a method of the registry that takes a model */
+    int dim;
     size_t n[3];
     const char *h;
     char model[512];
     uint64_t seed;
     int clamp;
-    int max_factor;                       /* circulant (library only) */
-    const char *radius, *cell, *density;  /* sparse; cell also lattice's cell0 */
-    int octaves;                          /* lattice, 0 = default */
-    int levels, N, nonperiodic, random_nb; /* subdiv */
-    const char *tol;
-    long origin[2];                       /* windows of subdiv and sparse */
+    const char *opt[NL_METHOD_MAX_OPTIONS]; /* each option's value as text ("" for a flag), or NULL: not given */
+    long origin[2];                       /* windows of the methods that make them */
 } fcase;
 
 /* Window origins, near the integer limits too. */
@@ -119,33 +119,66 @@ static void decode_model(bytes *b, char *s, size_t cap)
         add(s, cap, "%s%s", sep == ':' ? ":" : ",", "sep");
 }
 
+/* The k-th method (modulo their number) of those taking a model. */
+static const nl_method_type *pick_method(unsigned k)
+{
+    int n = 0;
+    for (int i = 0; i < nl_method_count(); i++)
+        n += (nl_method_at(i)->caps & NL_METHOD_MODEL) != 0;
+    k %= (unsigned)n;
+    for (int i = 0;; i++)
+        if ((nl_method_at(i)->caps & NL_METHOD_MODEL) && k-- == 0)
+            return nl_method_at(i);
+}
+
+/* Each option of the method given or not, its value by type: hostile
+ * numbers, small integers, any choice, flags; text options (expressions,
+ * files) are left out. */
+static void decode_options(bytes *b, fcase *c)
+{
+    const nl_method_type *t = c->method;
+    for (int k = 0; k < t->noptions; k++) {
+        const nl_method_option *r = &t->options[k];
+        unsigned x = take(b);
+        c->opt[k] = NULL;
+        if (!(x & 1) || r->type == NL_METHOD_STRING)
+            continue;
+        if (r->type == NL_METHOD_FLAG)
+            c->opt[k] = "";
+        else if (r->type == NL_METHOD_INT)
+            c->opt[k] = x & 2 ? pick_num(b) : ints[(x >> 2) % (sizeof ints / sizeof *ints)];
+        else if (r->type == NL_METHOD_DOUBLE)
+            c->opt[k] = pick_num(b);
+        else { /* a choice: its word, kept in a static table of the method's words */
+            static char words[NL_METHOD_MAX_OPTIONS][64];
+            const char *w = r->words;
+            for (unsigned i = (x >> 1) % 4; i > 0 && strchr(w, '|'); i--)
+                w = strchr(w, '|') + 1;
+            snprintf(words[k], sizeof words[k], "%.*s", (int)strcspn(w, "|"), w);
+            c->opt[k] = words[k];
+        }
+    }
+}
+
 static void decode(const uint8_t *data, size_t size, fcase *c)
 {
     bytes b = {data, size};
     memset(c, 0, sizeof *c);
-    c->method = take(&b) % 6;
+    c->method = pick_method(take(&b));
     c->dim = 1 + take(&b) % 3;
     for (int a = 0; a < 3; a++)
         c->n[a] = a < c->dim ? 1 + take(&b) % (c->dim == 3 ? 8 : 32) : 1;
     c->h = take(&b) & 1 ? pick_num(&b) : "1";
     decode_model(&b, c->model, sizeof c->model);
     c->seed = take(&b);
-    unsigned o = take(&b);
-    c->clamp = o & 1;
-    c->nonperiodic = (o >> 1) & 1;
-    c->max_factor = (int[]){2, 4, 16, 1}[(o >> 2) & 3];
-    c->radius = o & 0x10 ? pick_num(&b) : "0";
-    c->cell = o & 0x20 ? pick_num(&b) : "0";
-    c->density = o & 0x40 ? pick_num(&b) : "1";
-    c->tol = o & 0x80 ? pick_num(&b) : "1e-4";
-    c->octaves = take(&b) % 20;
-    c->levels = take(&b) % 10;
-    c->N = take(&b) % 10;
-    c->random_nb = take(&b) % 4;
+    c->clamp = take(&b) & 1;
+    decode_options(&b, c);
     unsigned w = take(&b);
-    c->origin[0] = origins[(w & 15) % (sizeof origins / sizeof *origins)];
-    c->origin[1] = origins[(w >> 4) % (sizeof origins / sizeof *origins)];
-    if (c->method == 2) /* Cholesky: O(count^3), at most 256 samples here */
+    if (c->method->caps & NL_METHOD_WINDOW) {
+        c->origin[0] = origins[(w & 15) % (sizeof origins / sizeof *origins)];
+        c->origin[1] = origins[(w >> 4) % (sizeof origins / sizeof *origins)];
+    }
+    if (c->method->caps & NL_METHOD_SERIAL) /* a dense factor in the plan (Cholesky): at most 256 samples */
         while (c->n[0] * c->n[1] * c->n[2] > 256)
             for (int a = 0; a < c->dim; a++)
                 c->n[a] = c->n[a] > 1 ? c->n[a] / 2 : 1;
@@ -155,12 +188,13 @@ static void debug(const fcase *c)
 {
     if (!getenv("FUZZ_DEBUG"))
         return;
-    fprintf(stderr,
-            "case: %s dim %d n %zux%zux%zu h %s model '%s' seed %llu clamp %d nonperiodic %d max_factor %d radius %s "
-            "cell %s density %s tol %s octaves %d levels %d N %d random_nb %d origin %ld,%ld\n",
-            methods[c->method], c->dim, c->n[0], c->n[1], c->n[2], c->h, c->model, (unsigned long long)c->seed,
-            c->clamp, c->nonperiodic, c->max_factor, c->radius, c->cell, c->density, c->tol, c->octaves, c->levels,
-            c->N, c->random_nb, c->origin[0], c->origin[1]);
+    fprintf(stderr, "case: %s dim %d n %zux%zux%zu h %s model '%s' seed %llu clamp %d origin %ld,%ld",
+            c->method->name, c->dim, c->n[0], c->n[1], c->n[2], c->h, c->model, (unsigned long long)c->seed, c->clamp,
+            c->origin[0], c->origin[1]);
+    for (int k = 0; k < c->method->noptions; k++)
+        if (c->opt[k])
+            fprintf(stderr, " --%s %s", c->method->options[k].name, c->opt[k]);
+    fputc('\n', stderr);
 }
 
 /* FUZZ_IGNORE=tag,tag,...: findings already recorded that should not stop
