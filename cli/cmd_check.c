@@ -1,9 +1,9 @@
 /* noiselab check: is a model a valid autocorrelation, how smooth, how singular. */
 #include "cli.h"
+#include "opt.h"
 #include "../analysis/check.h"
 #include "../core/model.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -227,30 +227,34 @@ static void print_text(const char *spec, const nl_check *k, const char *nb)
                ldexp(k->scale, -24));
 }
 
+/* The command's options. */
+typedef struct {
+    const char *spec; /* --acf or --spectrum */
+    int dim, json;    /* --dim, --json */
+    int prof;         /* --profile-1d given */
+    double rmax;      /* its largest lag (0: the default) */
+} opts_t;
+
+static const cli_opt rows[] = {
+    CLI_OPT_MODEL(opts_t, spec),
+    CLI_OPT_DIMS(opts_t, dim, 3),
+    CLI_OPT_JSON(opts_t, json),
+    {.name = "profile-1d", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, rmax), CLI_GIVEN(opts_t, prof),
+     .flags = CLI_OPTIONAL, .what = "largest lag"},
+    {0}};
+
 int cli_cmd_check(int argc, char **argv)
 {
-    static const struct option opts[] = {{"acf", required_argument, 0, 'a'}, {"spectrum", required_argument, 0, 'a'},
-                                         {"dim", required_argument, 0, 'd'}, {"json", no_argument, 0, 'j'},
-                                         {"help", no_argument, 0, 'h'},      {"profile-1d", optional_argument, 0, 'p'},
-                                         {0}};
-    const char *spec = NULL;
-    int c, dim = 0, json = 0, st, prof = 0;
-    double rmax = 0;
+    opts_t a = {0};
+    int st;
     nl_model *m;
     nl_check k;
     char nb[4096];
-    while ((c = cli_getopt(argc, argv, ":h", opts, "check")) != -1) {
-        switch (c) {
-        case 'a': spec = optarg; break;
-        case 'd': dim = cli_parse_dim(optarg, 3); break;
-        case 'j': json = 1; break;
-        case 'p':
-            prof = 1;
-            rmax = optarg ? cli_parse_positive("--profile-1d", optarg, "largest lag") : 0;
-            break;
-        case 'h': fputs(help, stdout); return 0;
-        }
-    }
+    if (cli_opt_parse("check", help, rows, &a, argc, argv))
+        return 0;
+    const char *spec = a.spec;
+    int dim = a.dim, json = a.json, prof = a.prof;
+    double rmax = a.rmax;
     cli_no_operands("check", argc, argv);
     if (!spec)
         cli_die(2, "check: --acf: expected a model (see noiselab models)");

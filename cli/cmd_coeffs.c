@@ -1,9 +1,9 @@
 /* noiselab coeffs: midpoint estimation coefficients of generalized
  * stochastic subdivision, level by level. */
 #include "coeffs.h"
+#include "opt.h"
 #include "synth.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -116,44 +116,41 @@ typedef struct {
     double tol, s0;
 } coeffs_args;
 
+static void neighborhood_option(void *obj, const char *label, const char *arg)
+{
+    ((coeffs_args *)obj)->N = strcmp(arg, "auto") == 0 ? 0 : (int)cli_parse_count(label, arg, 1);
+}
+
+static void tol_option(void *obj, const char *label, const char *arg)
+{
+    coeffs_args *a = obj;
+    a->tol = cli_synth_parse_tol(label, arg, &a->stop);
+}
+
+#define STR_(x) #x
+#define STR(x) STR_(x)
+static const char *const displacements[] = {"independent", "correlated", NULL};
+
+static const cli_opt rows[] = {
+    {.name = "acf", .type = CLI_OPT_STRING, CLI_AT(coeffs_args, spec)},
+    CLI_OPT_DIMS(coeffs_args, dim, 2),
+    {.name = "neighborhood", .type = CLI_OPT_CALL, .fn = neighborhood_option},
+    {.name = "tol", .type = CLI_OPT_CALL, .fn = tol_option},
+    {.name = "levels", .type = CLI_OPT_INT, CLI_AT(coeffs_args, levels), .lo = 1},
+    {.name = "spacing0", .type = CLI_OPT_POSITIVE, CLI_AT(coeffs_args, s0), .what = "number"},
+    CLI_OPT_JSON(coeffs_args, json),
+    {.name = "displacements", .type = CLI_OPT_CHOICE, CLI_AT(coeffs_args, disp), .choices = displacements},
+    {.name = "taps", .type = CLI_OPT_INT, CLI_AT(coeffs_args, taps), .lo = 1, .flags = CLI_RANGE_HI,
+     .hi = NL_SUBDIV_MAX_TAPS, .what = "1 to " STR(NL_SUBDIV_MAX_TAPS)},
+    {.name = "error", .type = CLI_OPT_FLAG, CLI_AT(coeffs_args, error)},
+    {.name = "size", .type = CLI_OPT_STRING, CLI_AT(coeffs_args, size)},
+    {0}};
+
 /* Returns 1 when --help was printed. */
 static int parse(int argc, char **argv, coeffs_args *a)
 {
-    static const struct option opts[] = {
-        {"acf", required_argument, 0, 'a'},      {"dim", required_argument, 0, 'd'},
-        {"neighborhood", required_argument, 0, 'N'}, {"tol", required_argument, 0, 't'},
-        {"levels", required_argument, 0, 'L'},   {"spacing0", required_argument, 0, 's'},
-        {"json", no_argument, 0, 'j'},           {"help", no_argument, 0, 'h'},
-        {"displacements", required_argument, 0, 'X'}, {"taps", required_argument, 0, 'T'},
-        {"error", no_argument, 0, 'e'},          {"size", required_argument, 0, 'n'},
-        {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":h", opts, "coeffs")) != -1) {
-        switch (c) {
-        case 'a': a->spec = optarg; break;
-        case 'd': a->dim = cli_parse_dim(optarg, 2); break;
-        case 'N':
-            a->N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
-            break;
-        case 't': a->tol = cli_synth_parse_tol("--tol", optarg, &a->stop); break;
-        case 'L': a->levels = (int)cli_parse_count("--levels", optarg, 1); break;
-        case 's': a->s0 = cli_parse_positive("--spacing0", optarg, "number"); break;
-        case 'j': a->json = 1; break;
-        case 'X':
-            if (strcmp(optarg, "independent") && strcmp(optarg, "correlated"))
-                cli_die(2, "--displacements: expected independent or correlated, got \"%s\"", optarg);
-            a->disp = strcmp(optarg, "correlated") == 0;
-            break;
-        case 'T':
-            a->taps = (int)cli_parse_count("--taps", optarg, 1);
-            if (a->taps > NL_SUBDIV_MAX_TAPS)
-                cli_die(2, "--taps: expected 1 to %d, got \"%s\"", NL_SUBDIV_MAX_TAPS, optarg);
-            break;
-        case 'e': a->error = 1; break;
-        case 'n': a->size = optarg; break;
-        case 'h': fputs(help, stdout); return 1;
-        }
-    }
+    if (cli_opt_parse("coeffs", help, rows, a, argc, argv))
+        return 1;
     cli_no_operands("coeffs", argc, argv);
     return 0;
 }

@@ -1,11 +1,11 @@
 /* noiselab detect: creases and aliasing in a subdivision field. */
 #include "cli.h"
+#include "opt.h"
 #include "../core/nl_error.h"
 #include "../analysis/aliasing.h"
 #include "../analysis/creases.h"
 #include "../core/model.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -21,24 +21,29 @@ static const char help[] =
     "            above 0.1; with a model, also the value its spectrum predicts\n"
     "Exit status 0 whatever is found; the flags are in the output.\n";
 
+/* The command's options. */
+typedef struct {
+    const char *spec;  /* --acf or --spectrum */
+    int levels, json;  /* --levels, --json */
+} opts_t;
+
+static const cli_opt rows[] = {
+    {.name = "levels", .type = CLI_OPT_INT, CLI_AT(opts_t, levels), .lo = 1},
+    CLI_OPT_MODEL(opts_t, spec),
+    CLI_OPT_JSON(opts_t, json),
+    {0}};
+
 int cli_cmd_detect(int argc, char **argv)
 {
-    static const struct option opts[] = {{"levels", required_argument, 0, 'L'}, {"acf", required_argument, 0, 'a'},
-                                         {"spectrum", required_argument, 0, 'a'}, {"json", no_argument, 0, 'j'},         {"help", no_argument, 0, 'h'},
-                                         {0}};
-    const char *spec = NULL;
-    int c, L = 0, json = 0, st;
+    opts_t a = {0};
+    int st;
     double A, P = NAN;
     nl_creases cr;
     nl_field *x;
-    while ((c = cli_getopt(argc, argv, ":h", opts, "detect")) != -1) {
-        switch (c) {
-        case 'L': L = (int)cli_parse_count("--levels", optarg, 1); break;
-        case 'a': spec = optarg; break;
-        case 'j': json = 1; break;
-        case 'h': fputs(help, stdout); return 0;
-        }
-    }
+    if (cli_opt_parse("detect", help, rows, &a, argc, argv))
+        return 0;
+    const char *spec = a.spec;
+    int L = a.levels, json = a.json;
     const char *in = cli_one_operand("detect", "input file", argc, argv);
     if (!L)
         cli_die(2, "detect: --levels: expected the number of subdivision levels of the field");

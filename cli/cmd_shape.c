@@ -1,9 +1,9 @@
 /* noiselab shape: memoryless distribution shaping of a field. */
 #include "cli.h"
+#include "opt.h"
 #include "../core/dist.h"
 #include "../synth/shape.h"
 
-#include <getopt.h>
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -23,24 +23,29 @@ static const char help[] =
     "      expr:x^2, expr:exp(x), expr:2*step(x)-1; variable x; with --empirical z is\n"
     "      the Gaussian score of the rank)\n";
 
+/* The command's options. */
+typedef struct {
+    const char *to, *out; /* --to DIST, -o */
+    int empirical;        /* --empirical */
+} opts_t;
+
+static const cli_opt rows[] = {
+    {.name = "to", .type = CLI_OPT_STRING, CLI_AT(opts_t, to)},
+    {.name = "empirical", .type = CLI_OPT_FLAG, CLI_AT(opts_t, empirical)},
+    CLI_OPT_OUTPUT(opts_t, out),
+    {0}};
+
 int cli_cmd_shape(int argc, char **argv)
 {
-    static const struct option opts[] = {{"to", required_argument, 0, 't'}, {"empirical", no_argument, 0, 'e'},
-                                         {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
-                                         {0}};
-    const char *to = NULL, *out = NULL, *tmp;
-    int c, empirical = 0;
+    opts_t a = {0};
+    const char *tmp;
     nl_dist *d;
     nl_field *x;
     nl_meta meta;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "shape")) != -1) {
-        switch (c) {
-        case 't': to = optarg; break;
-        case 'e': empirical = 1; break;
-        case 'o': out = optarg; break;
-        case 'h': fputs(help, stdout); return 0;
-        }
-    }
+    if (cli_opt_parse("shape", help, rows, &a, argc, argv))
+        return 0;
+    const char *to = a.to, *out = a.out;
+    int empirical = a.empirical;
     const char *in = cli_one_operand("shape", "input file", argc, argv);
     if (!to)
         cli_die(2, "shape: --to: expected a distribution (e.g. --to laplace)");

@@ -1,0 +1,86 @@
+/* Options as tables, in the manner of git's parse-options: one row per
+ * option (its names, its type, the range or choices it takes, the field it
+ * fills and the message details), rows shared by commands in groups, and one
+ * parse that builds getopt_long's table from the rows and checks each value
+ * as it comes, with the messages the commands print (cli/opt.c). */
+#ifndef NL_CLI_OPT_H
+#define NL_CLI_OPT_H
+
+#include <stddef.h>
+
+/* What an option takes and how its value is checked.  Messages name the
+ * option by its label ("--width", or "-o"); "..." is the value. */
+typedef enum {
+    CLI_OPT_END = 0,  /* ends a table */
+    CLI_OPT_FLAG,     /* no value: int field = ival (1 unless given) */
+    CLI_OPT_STRING,   /* const char * field, unchecked */
+    CLI_OPT_DOUBLE,   /* double: a finite number, in [lo, hi] when range is set */
+    CLI_OPT_POSITIVE, /* double > 0: "expected a positive WHAT, got ..." */
+    CLI_OPT_COUNT,    /* size_t: an integer >= lo, and <= hi when range is set */
+    CLI_OPT_INT,      /* int: the same as COUNT */
+    CLI_OPT_U64,      /* uint64_t: an integer from 0 to 2^64-1 */
+    CLI_OPT_CHOICE,   /* int field = the index of the value in choices (or vals[index]) */
+    CLI_OPT_SIZE,     /* size_t[3] field: N, NxM or NxMxK, each >= lo; the count of
+                       * sizes to the int field at aux */
+    CLI_OPT_DIM,      /* int: 1 to hi (cli_parse_dim's message) */
+    CLI_OPT_CALL,     /* fn(obj, label, value) does all of it */
+    CLI_OPT_GROUP     /* the rows of sub, their fields at off within this struct */
+} cli_opt_type;
+
+/* The field's place in the options struct, and an optional int that is set
+ * to 1 when the option is given (0 when none; see CLI_GIVEN). */
+#define CLI_AT(T, F) .off = offsetof(T, F)
+#define CLI_GIVEN(T, F) .given = offsetof(T, F) + 1
+#define CLI_AUX(T, F) .aux = offsetof(T, F) + 1
+
+/* A range check: lo <= v <= hi, strict where lo_open / hi_open; for COUNT
+ * and INT, lo is the least value and hi (when range is set) the largest. */
+enum { CLI_RANGE_LO = 1, CLI_RANGE_HI = 2, CLI_RANGE_LO_OPEN = 4, CLI_RANGE_HI_OPEN = 8, CLI_OPTIONAL = 16 };
+
+/* One row of an option table. */
+typedef struct cli_opt {
+    const char *name;              /* the long name, without "--" */
+    char letter;                   /* the short option, or 0 */
+    cli_opt_type type;             /* what it takes */
+    size_t off;                    /* its field (CLI_AT), or the group's struct */
+    size_t given;                  /* offset + 1 of an int set when given, or 0 */
+    size_t aux;                    /* offset + 1 of a second field (SIZE: the dim), or 0 */
+    unsigned flags;                /* CLI_RANGE_*, CLI_OPTIONAL (the value may be left out:
+                                    * a DOUBLE or POSITIVE field is then 0) */
+    double lo, hi;                 /* the range (see above) */
+    int ival;                      /* FLAG: the value set (0: 1) */
+    const char *label;             /* the name in messages (NULL: "--NAME") */
+    const char *what;              /* POSITIVE: the noun; DOUBLE, COUNT, CHOICE: the
+                                    * expected range in words, e.g. "degrees in [0, 90]"
+                                    * (CHOICE: NULL for "a, b or c") */
+    const char *const *choices;    /* CHOICE: the values, NULL-terminated */
+    const int *vals;               /* CHOICE: what each sets (NULL: its index) */
+    void (*fn)(void *obj, const char *label, const char *arg); /* CALL; arg NULL when left out */
+    const struct cli_opt *sub;     /* GROUP: the rows */
+} cli_opt;
+
+/* Parse argv[1..] for subcommand cmd by the rows, filling obj.  --help
+ * (and -h) prints help when it is not NULL and returns 1 at once; 0 when
+ * every option is read (optind at the first operand).  An unknown option,
+ * a missing value, a bad value or one out of range exits 2 with the
+ * option's message (cli_die). */
+int cli_opt_parse(const char *cmd, const char *help, const cli_opt *rows, void *obj, int argc, char **argv);
+
+/* Rows many commands share: one definition each (T the options struct, F
+ * the field). */
+#define CLI_OPT_OUTPUT(T, F) {.name = "output", .letter = 'o', .type = CLI_OPT_STRING, CLI_AT(T, F), .label = "-o"}
+#define CLI_OPT_JSON(T, F) {.name = "json", .type = CLI_OPT_FLAG, CLI_AT(T, F)}
+/* --seed S, and G set when given */
+#define CLI_OPT_SEED(T, F, G) {.name = "seed", .type = CLI_OPT_U64, CLI_AT(T, F), CLI_GIVEN(T, G)}
+#define CLI_OPT_DIMS(T, F, MAX) {.name = "dim", .type = CLI_OPT_DIM, CLI_AT(T, F), .hi = (MAX)}
+/* --size N[xM[xK]] each >= MIN, its number of axes to D */
+#define CLI_OPT_SIZES(T, F, D, MIN) {.name = "size", .type = CLI_OPT_SIZE, CLI_AT(T, F), CLI_AUX(T, D), .lo = (MIN)}
+/* --acf SPEC and --spectrum SPEC, both filling one model spec */
+#define CLI_OPT_MODEL(T, F)                                                                                       \
+    {.name = "acf", .type = CLI_OPT_STRING, CLI_AT(T, F)}, {.name = "spectrum", .type = CLI_OPT_STRING, CLI_AT(T, F)}
+/* The variogram's bins (--width, --cutoff) in an nl_variogram_options field */
+#define CLI_OPT_BINS(T, F)                                                                                        \
+    {.name = "width", .type = CLI_OPT_POSITIVE, CLI_AT(T, F.width), .what = "bin width"},                       \
+        {.name = "cutoff", .type = CLI_OPT_POSITIVE, CLI_AT(T, F.cutoff), .what = "cutoff distance"}
+
+#endif
