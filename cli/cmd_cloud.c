@@ -1,8 +1,8 @@
 /* noiselab cloud: render a cloud scene (kriged shape + noise) to a picture. */
 #include "cli.h"
+#include "opt.h"
 #include "../render/cloud_scene.h"
 
-#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,20 +44,22 @@ static void write_lum(const char *etmp, const nl_cloud_scene *s, const double *l
     nl_field_free(f);
 }
 
+/* The command's options. */
+typedef struct {
+    const char *out, *exr; /* -o, --exr */
+} opts_t;
+
+static const cli_opt rows[] = {
+    CLI_OPT_OUTPUT(opts_t, out), {.name = "exr", .type = CLI_OPT_STRING, CLI_AT(opts_t, exr)}, {0}};
+
 int cli_cmd_cloud(int argc, char **argv)
 {
-    static const struct option opts[] = {{"output", required_argument, 0, 'o'}, {"exr", required_argument, 0, 'e'},
-                                         {"help", no_argument, 0, 'h'},         {0}};
-    const char *out = NULL, *exr = NULL, *path, *tmp, *etmp = NULL;
-    int c;
+    opts_t a = {0};
+    const char *path, *tmp, *etmp = NULL;
     nl_cloud_scene s;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "cloud")) != -1) {
-        switch (c) {
-        case 'o': out = optarg; break;
-        case 'e': exr = optarg; break;
-        case 'h': fputs(help, stdout); return 0;
-        }
-    }
+    if (cli_opt_parse("cloud", help, rows, &a, argc, argv))
+        return 0;
+    const char *out = a.out, *exr = a.exr;
     path = cli_one_operand("cloud", "scene file", argc, argv);
     if (!out || !cli_has_ext(out, ".png"))
         cli_die(2, "cloud: -o: expected an output file ending in .png");

@@ -1,12 +1,12 @@
 /* noiselab ocean: Tessendorf's ocean on a rank-1 lattice or a grid. */
 #include "cli.h"
+#include "opt.h"
 #include "../core/nl_error.h"
 #include "../core/io_obj.h"
 #include "../render/shade.h"
 #include "../synth/ocean.h"
 
 #include <float.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -72,58 +72,39 @@ typedef struct {
     nl_ocean_params o;                            /* the ocean (angle in radians) */
 } opts_t;
 
+static void wind_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    if (sscanf(arg, "%lf,%lf", &a->v, &a->ang) != 2 || !(a->v > 0) || !isfinite(a->ang))
+        cli_die(2, "%s: expected V,ANGLE with a positive speed in m/s, got \"%s\"", label, arg);
+}
+
+static const char *const draws[] = {"series", "delaunay", NULL};
+
+static const cli_opt rows[] = {
+    {.name = "lattice", .type = CLI_OPT_STRING, CLI_AT(opts_t, lat)},
+    {.name = "points", .type = CLI_OPT_COUNT, CLI_AT(opts_t, N), .lo = 3},
+    {.name = "grid", .type = CLI_OPT_COUNT, CLI_AT(opts_t, M), .lo = 4},
+    {.name = "wind", .type = CLI_OPT_CALL, .fn = wind_option},
+    {.name = "time", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, t0)},
+    {.name = "frames", .type = CLI_OPT_INT, CLI_AT(opts_t, frames), .lo = 1, .flags = CLI_RANGE_HI, .hi = 10000,
+     .what = "at most 10000 frames"},
+    {.name = "dt", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, dt)},
+    {.name = "patch", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, o.patch), .what = "size in metres"},
+    {.name = "amplitude", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, o.amplitude), .what = "number"},
+    {.name = "seed", .type = CLI_OPT_U64, CLI_AT(opts_t, seed)},
+    {.name = "size", .type = CLI_OPT_COUNT, CLI_AT(opts_t, W), .lo = 8},
+    CLI_OPT_OUTPUT(opts_t, out),
+    {.name = "image", .type = CLI_OPT_STRING, CLI_AT(opts_t, image)},
+    {.name = "tile", .type = CLI_OPT_STRING, CLI_AT(opts_t, tile)},
+    {.name = "mesh", .type = CLI_OPT_STRING, CLI_AT(opts_t, mesh)},
+    {.name = "draw", .type = CLI_OPT_CHOICE, CLI_AT(opts_t, delaunay), .choices = draws},
+    {0}};
+
 static void parse(int argc, char **argv, opts_t *a)
 {
-    static const struct option opts[] = {
-        {"lattice", required_argument, 0, 'l'}, {"points", required_argument, 0, 'n'},
-        {"grid", required_argument, 0, 'g'},    {"wind", required_argument, 0, 'w'},
-        {"time", required_argument, 0, 't'},    {"frames", required_argument, 0, 'F'},
-        {"dt", required_argument, 0, 'D'},      {"patch", required_argument, 0, 'P'},
-        {"amplitude", required_argument, 0, 'A'}, {"seed", required_argument, 0, 's'},
-        {"size", required_argument, 0, 'W'},    {"output", required_argument, 0, 'o'},
-        {"image", required_argument, 0, 'i'},   {"tile", required_argument, 0, 'T'},
-        {"mesh", required_argument, 0, 'M'},    {"draw", required_argument, 0, 'd'},
-        {"help", no_argument, 0, 'h'},
-        {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "ocean")) != -1) {
-        switch (c) {
-        case 'l': a->lat = optarg; break;
-        case 'n': a->N = cli_parse_count("--points", optarg, 3); break;
-        case 'g': a->M = cli_parse_count("--grid", optarg, 4); break;
-        case 'w':
-            if (sscanf(optarg, "%lf,%lf", &a->v, &a->ang) != 2 || !(a->v > 0) || !isfinite(a->ang))
-                cli_die(2, "--wind: expected V,ANGLE with a positive speed in m/s, got \"%s\"", optarg);
-            break;
-        case 't': a->t0 = cli_parse_double("--time", optarg); break;
-        case 'F': {
-            size_t fr = cli_parse_count("--frames", optarg, 1);
-            if (fr > 10000)
-                cli_die(2, "--frames: expected at most 10000 frames, got \"%s\"", optarg);
-            a->frames = (int)fr;
-            break;
-        }
-        case 'D': a->dt = cli_parse_double("--dt", optarg); break;
-        case 'P':
-            a->o.patch = cli_parse_positive("--patch", optarg, "size in metres");
-            break;
-        case 'A':
-            a->o.amplitude = cli_parse_positive("--amplitude", optarg, "number");
-            break;
-        case 's': a->seed = cli_parse_u64("--seed", optarg); break;
-        case 'W': a->W = cli_parse_count("--size", optarg, 8); break;
-        case 'o': a->out = optarg; break;
-        case 'i': a->image = optarg; break;
-        case 'T': a->tile = optarg; break;
-        case 'M': a->mesh = optarg; break;
-        case 'd':
-            if (strcmp(optarg, "series") && strcmp(optarg, "delaunay"))
-                cli_die(2, "--draw: expected series or delaunay, got \"%s\"", optarg);
-            a->delaunay = !strcmp(optarg, "delaunay");
-            break;
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    if (cli_opt_parse("ocean", help, rows, a, argc, argv))
+        exit(0);
 }
 
 static void check(int argc, char **argv, const opts_t *a)
