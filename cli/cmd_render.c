@@ -1,5 +1,6 @@
 /* noiselab render: a 2D field as an 8-bit picture, grey levels or shaded relief. */
 #include "cli.h"
+#include "opt.h"
 #include "../render/colorbar.h"
 #include "../render/shade.h"
 #include "../render/terrain.h"
@@ -41,14 +42,6 @@ static const char help[] =
     "  --cloud-plane Z,S   the plane's height above the camera and terrain samples per\n"
     "                      cloud sample (default 200,4)\n";
 
-/* "A,B" with both finite, or exit 2 naming the option. */
-static void pair(const char *opt, const char *s, double *a, double *b)
-{
-    char c;
-    if (sscanf(s, "%lf,%lf%c", a, b, &c) != 2 || !isfinite(*a) || !isfinite(*b))
-        cli_die(2, "%s: expected two numbers A,B, got \"%s\"", opt, s);
-}
-
 static void perspective(const char *in, const nl_field *x, const char *tmp, nl_render_view *v)
 {
     size_t n[2] = {v->width, v->height};
@@ -74,61 +67,62 @@ typedef struct {
     int persp, tile, sea, given_zs, view_opts, colorbar;       /* flags; view options given */
 } opts_t;
 
+static void range_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    char junk;
+    if (sscanf(arg, "%lf:%lf%c", &a->lo, &a->hi, &junk) != 2 || !(a->hi > a->lo) || !isfinite(a->lo) ||
+        !isfinite(a->hi) || !isfinite(a->hi - a->lo))
+        cli_die(2, "%s: expected LO:HI with LO < HI, both finite and HI - LO finite, got \"%s\"", label, arg);
+}
+
+static void shade_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    char junk;
+    if (sscanf(arg, "%lf,%lf%c", &a->az, &a->el, &junk) != 2 || !(a->el > 0 && a->el <= 90) ||
+        !(fabs(a->az) <= 360))
+        cli_die(2, "%s: expected AZ,EL in degrees with -360 <= AZ <= 360 and 0 < EL <= 90, got \"%s\"", label,
+                arg);
+}
+
+static void plane_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    cli_parse_pair(label, arg, &a->plane[0], &a->plane[1]);
+    if (!(a->plane[0] > 0 && a->plane[1] > 0))
+        cli_die(2, "%s: expected a positive height and scale, got \"%s\"", label, arg);
+}
+
+/* A view option: it needs --perspective. */
+#define VIEW CLI_GIVEN(opts_t, view_opts)
+
+static const cli_opt rows[] = {
+    {.name = "range", .type = CLI_OPT_CALL, .fn = range_option},
+    {.name = "shade", .type = CLI_OPT_CALL, .fn = shade_option},
+    {.name = "zscale", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, zs), CLI_GIVEN(opts_t, given_zs), .what = "factor"},
+    CLI_OPT_OUTPUT(opts_t, out),
+    {.name = "matrix", .type = CLI_OPT_STRING, CLI_AT(opts_t, matrix)},
+    {.name = "step", .type = CLI_OPT_COUNT, CLI_AT(opts_t, step), .lo = 1},
+    {.name = "perspective", .type = CLI_OPT_FLAG, CLI_AT(opts_t, persp)},
+    {.name = "size", .type = CLI_OPT_STRING, CLI_AT(opts_t, size), VIEW},
+    {.name = "camera", .type = CLI_OPT_STRING, CLI_AT(opts_t, camera), VIEW},
+    {.name = "look", .type = CLI_OPT_STRING, CLI_AT(opts_t, look), VIEW},
+    {.name = "fov", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, fov), VIEW},
+    {.name = "sun", .type = CLI_OPT_PAIR, CLI_AT(opts_t, sun), VIEW},
+    {.name = "haze", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, haze), VIEW},
+    {.name = "water", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, water), VIEW},
+    {.name = "tile", .type = CLI_OPT_FLAG, CLI_AT(opts_t, tile), VIEW},
+    {.name = "sea", .type = CLI_OPT_FLAG, CLI_AT(opts_t, sea), VIEW},
+    {.name = "clouds", .type = CLI_OPT_STRING, CLI_AT(opts_t, clouds), VIEW},
+    {.name = "cloud-plane", .type = CLI_OPT_CALL, .fn = plane_option, VIEW},
+    {.name = "colorbar", .type = CLI_OPT_FLAG, CLI_AT(opts_t, colorbar)},
+    {0}};
+
 static void parse(int argc, char **argv, opts_t *a)
 {
-    static const struct option opts[] = {{"range", required_argument, 0, 'r'}, {"shade", required_argument, 0, 's'},
-                                         {"zscale", required_argument, 0, 'z'}, {"output", required_argument, 0, 'o'},
-                                         {"matrix", required_argument, 0, 'm'}, {"step", required_argument, 0, 'k'},
-                                         {"perspective", no_argument, 0, 'P'},  {"size", required_argument, 0, 'S'},
-                                         {"camera", required_argument, 0, 'c'}, {"look", required_argument, 0, 'l'},
-                                         {"fov", required_argument, 0, 'f'},    {"sun", required_argument, 0, 'u'},
-                                         {"haze", required_argument, 0, 'H'},   {"water", required_argument, 0, 'w'},
-                                         {"tile", no_argument, 0, 't'},         {"sea", no_argument, 0, 'e'},
-                                         {"clouds", required_argument, 0, 'C'}, {"cloud-plane", required_argument, 0, 'Z'},
-                                         {"colorbar", no_argument, 0, 'b'},     {"help", no_argument, 0, 'h'},
-                                         {0}};
-    int c;
-    char junk;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "render")) != -1) {
-        switch (c) {
-        case 'r':
-            if (sscanf(optarg, "%lf:%lf%c", &a->lo, &a->hi, &junk) != 2 || !(a->hi > a->lo) || !isfinite(a->lo) ||
-                !isfinite(a->hi) || !isfinite(a->hi - a->lo))
-                cli_die(2, "--range: expected LO:HI with LO < HI, both finite and HI - LO finite, got \"%s\"", optarg);
-            break;
-        case 's':
-            if (sscanf(optarg, "%lf,%lf%c", &a->az, &a->el, &junk) != 2 || !(a->el > 0 && a->el <= 90) ||
-                !(fabs(a->az) <= 360))
-                cli_die(2, "--shade: expected AZ,EL in degrees with -360 <= AZ <= 360 and 0 < EL <= 90, got \"%s\"",
-                        optarg);
-            break;
-        case 'z':
-            a->zs = cli_parse_positive("--zscale", optarg, "factor");
-            a->given_zs = 1;
-            break;
-        case 'P': a->persp = 1; break;
-        case 'S': a->size = optarg, a->view_opts++; break;
-        case 'c': a->camera = optarg, a->view_opts++; break;
-        case 'l': a->look = optarg, a->view_opts++; break;
-        case 'f': a->fov = cli_parse_double("--fov", optarg), a->view_opts++; break;
-        case 'u': pair("--sun", optarg, &a->sun[0], &a->sun[1]), a->view_opts++; break;
-        case 'H': a->haze = cli_parse_double("--haze", optarg), a->view_opts++; break;
-        case 'w': a->water = cli_parse_double("--water", optarg), a->view_opts++; break;
-        case 't': a->tile = 1, a->view_opts++; break;
-        case 'e': a->sea = 1, a->view_opts++; break;
-        case 'C': a->clouds = optarg, a->view_opts++; break;
-        case 'Z':
-            pair("--cloud-plane", optarg, &a->plane[0], &a->plane[1]), a->view_opts++;
-            if (!(a->plane[0] > 0 && a->plane[1] > 0))
-                cli_die(2, "--cloud-plane: expected a positive height and scale, got \"%s\"", optarg);
-            break;
-        case 'o': a->out = optarg; break;
-        case 'm': a->matrix = optarg; break;
-        case 'k': a->step = cli_parse_count("--step", optarg, 1); break;
-        case 'b': a->colorbar = 1; break;
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    if (cli_opt_parse("render", help, rows, a, argc, argv))
+        exit(0);
 }
 
 static void check(int argc, char **argv, const opts_t *a)
@@ -168,7 +162,7 @@ static void view(const opts_t *a, const nl_field *x, nl_render_view *v)
             cli_die(2, "--camera: expected X,Y,H with H > 0, got \"%s\"", a->camera);
     }
     if (a->look)
-        pair("--look", a->look, &v->azimuth, &v->pitch);
+        cli_parse_pair("--look", a->look, &v->azimuth, &v->pitch);
     if (!isnan(a->fov))
         v->fov = a->fov;
     if (!isnan(a->sun[0]))

@@ -106,6 +106,7 @@ static void take(const cli_opt *r, void *obj, size_t base, const char *label, co
         break;
     }
     case CLI_OPT_DIM: *(int *)p = cli_parse_dim(arg, (int)r->hi); break;
+    case CLI_OPT_PAIR: cli_parse_pair(label, arg, (double *)p, (double *)p + 1); break;
     case CLI_OPT_CALL: r->fn((char *)obj + base, label, arg); break;
     default: break;
     }

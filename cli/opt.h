@@ -23,6 +23,7 @@ typedef enum {
     CLI_OPT_SIZE,     /* size_t[3] field: N, NxM or NxMxK, each >= lo; the count of
                        * sizes to the int field at aux */
     CLI_OPT_DIM,      /* int: 1 to hi (cli_parse_dim's message) */
+    CLI_OPT_PAIR,     /* double[2] field: "A,B", both finite */
     CLI_OPT_CALL,     /* fn(obj, label, value) does all of it */
     CLI_OPT_GROUP     /* the rows of sub, their fields at off within this struct */
 } cli_opt_type;
