@@ -9,7 +9,6 @@
 #include "../core/nl_error.h"
 
 #include <float.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -54,41 +53,28 @@ typedef struct {
     size_t nl;                           /* lags 0 .. nl - 1 */
 } acf_opts;
 
+static const char *const axes[] = {"x", "y", "z", NULL};
+
+static const cli_opt rows[] = {
+    {.name = "max-lag", .type = CLI_OPT_DOUBLE, CLI_AT(acf_opts, maxlag), .flags = CLI_RANGE_LO, .lo = 0,
+     .what = "a non-negative lag"},
+    {.name = "axis", .type = CLI_OPT_CHOICE, CLI_AT(acf_opts, axis), .choices = axes},
+    {.name = "radial", .type = CLI_OPT_FLAG, CLI_AT(acf_opts, radial)},
+    {.name = "unbiased", .type = CLI_OPT_FLAG, CLI_AT(acf_opts, unbiased)},
+    {.name = "mean", .type = CLI_OPT_DOUBLE, CLI_AT(acf_opts, mean)},
+    {.name = "target", .type = CLI_OPT_STRING, CLI_AT(acf_opts, target)},
+    CLI_OPT_JSON(acf_opts, json),
+    CLI_OPT_OUTPUT(acf_opts, out),
+    {.name = "direct", .type = CLI_OPT_FLAG, CLI_AT(acf_opts, direct)},
+    {.name = "bands", .type = CLI_OPT_FLAG, CLI_AT(acf_opts, bands)},
+    {.type = CLI_OPT_GROUP, .sub = cli_inputs_rows, CLI_AT(acf_opts, src)},
+    {0}};
+
 static void parse(int argc, char **argv, acf_opts *o)
 {
-    static const struct option opts[] = {
-        {"max-lag", required_argument, 0, 'L'}, {"axis", required_argument, 0, 'a'},
-        {"radial", no_argument, 0, 'r'},        {"unbiased", no_argument, 0, 'u'},
-        {"mean", required_argument, 0, 'm'},    {"target", required_argument, 0, 't'},
-        {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
-        {"help", no_argument, 0, 'h'},          {"direct", no_argument, 0, 'D'},
-        {"bands", no_argument, 0, 'B'},          CLI_INPUTS_OPTIONS, {0}};
-    int c;
     o->maxlag = o->mean = NAN;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "acf")) != -1) {
-        switch (c) {
-        case 'L':
-            o->maxlag = cli_parse_double("--max-lag", optarg);
-            if (!(o->maxlag >= 0))
-                cli_die(2, "--max-lag: expected a non-negative lag, got \"%s\"", optarg);
-            break;
-        case 'a':
-            if (strlen(optarg) != 1 || !strchr("xyz", optarg[0]))
-                cli_die(2, "--axis: expected x, y or z, got \"%s\"", optarg);
-            o->axis = optarg[0] - 'x';
-            break;
-        case 'r': o->radial = 1; break;
-        case 'u': o->unbiased = 1; break;
-        case 'm': o->mean = cli_parse_double("--mean", optarg); break;
-        case 't': o->target = optarg; break;
-        case 'j': o->json = 1; break;
-        case 'D': o->direct = 1; break;
-        case 'B': o->bands = 1; break;
-        case 'o': o->out = optarg; break;
-        case 'h': fputs(help, stdout); exit(0);
-        default: cli_inputs_option(&o->src, c, optarg); /* --realizations, --acf, --size, --seed */
-        }
-    }
+    if (cli_opt_parse("acf", help, rows, o, argc, argv))
+        exit(0);
     cli_inputs_operands(&o->src, "acf", argc, argv);
     o->nin = o->src.count;
     if (o->nin > 1 && (o->bands || (o->out && cli_has_ext(o->out, ".exr"))))
