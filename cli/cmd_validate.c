@@ -1,8 +1,7 @@
 /* noiselab validate: every applicable method on one model, measured. */
-#include "synth.h"
+#include "opt.h"
 #include "validate_report.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -51,49 +50,51 @@ static const char help[] =
     "or unresolved or none could run (the model is not positive definite), 2 for bad\n"
     "input, 1 when an output cannot be written.\n";
 
-static void parse_method_option(int c, cli_validate *v)
+/* The options: the report's, then --acf and --spectrum apart. */
+typedef struct {
+    cli_validate v;          /* what the report takes */
+    const char *acf, *spec;  /* --acf, --spectrum */
+} opts_t;
+
+static void neighborhood_option(void *obj, const char *label, const char *arg)
 {
-    switch (c) {
-    case 'L': v->o.subdiv_levels = cli_synth_parse_int("--levels", optarg, 1, 30); break;
-    case 'N': v->o.subdiv_N = cli_synth_parse_neighborhood(optarg); break;
-    case 't': v->o.subdiv_tol = cli_parse_positive("--tol", optarg, "number"); break;
-    case 'R': v->o.subdiv_random = cli_synth_parse_int("--random-neighborhoods", optarg, 1, 256); break;
-    case 'D': v->o.sparse_density = cli_parse_positive("--density", optarg, "number"); break;
-    case 'r': v->o.sparse_radius = cli_synth_parse_int("--radius", optarg, 1, 4096); break;
-    case 'C': v->o.sparse_cell = cli_synth_parse_int("--cell", optarg, 1, 1 << 20); break;
-    }
+    static const cli_opt n = {.type = CLI_OPT_INT, CLI_AT(opts_t, v.o.subdiv_N), CLI_FROM_TO(1, 2147483647)};
+    if (strcmp(arg, "auto") == 0)
+        ((opts_t *)obj)->v.o.subdiv_N = 0;
+    else
+        cli_opt_take(&n, obj, label, arg);
 }
 
-/* getopt over argv; returns 1 when --help was printed. */
+static const cli_opt rows[] = {
+    {.name = "acf", .type = CLI_OPT_STRING, CLI_AT(opts_t, acf)},
+    {.name = "spectrum", .type = CLI_OPT_STRING, CLI_AT(opts_t, spec)},
+    CLI_OPT_DIMS(opts_t, v.dim, 3),
+    CLI_OPT_OUTPUT(opts_t, v.dir),
+    {.name = "size", .type = CLI_OPT_COUNT, CLI_AT(opts_t, v.N), .lo = 16},
+    {.name = "realizations", .type = CLI_OPT_COUNT, CLI_AT(opts_t, v.M), .lo = 4},
+    {.name = "tolerance", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, v.o.tolerance), .what = "relative error"},
+    CLI_OPT_JSON(opts_t, v.json),
+    {.name = "seed", .type = CLI_OPT_U64, CLI_AT(opts_t, v.o.seed)},
+    /* the methods' options, as for synth */
+    {.name = "levels", .type = CLI_OPT_INT, CLI_AT(opts_t, v.o.subdiv_levels), CLI_FROM_TO(1, 30)},
+    {.name = "neighborhood", .type = CLI_OPT_CALL, .fn = neighborhood_option},
+    {.name = "tol", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, v.o.subdiv_tol), .what = "number"},
+    {.name = "random-neighborhoods", .type = CLI_OPT_INT, CLI_AT(opts_t, v.o.subdiv_random), CLI_FROM_TO(1, 256)},
+    {.name = "density", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, v.o.sparse_density), .what = "number"},
+    {.name = "radius", .type = CLI_OPT_INT, CLI_AT(opts_t, v.o.sparse_radius), CLI_FROM_TO(1, 4096)},
+    {.name = "cell", .type = CLI_OPT_INT, CLI_AT(opts_t, v.o.sparse_cell), CLI_FROM_TO(1, 1048576)},
+    {0}};
+
+/* The options into v, acf and spec; returns 1 when --help was printed. */
 static int parse_options(int argc, char **argv, cli_validate *v, const char **acf, const char **spec)
 {
-    static const struct option opts[] = {
-        {"acf", required_argument, 0, 'a'},          {"spectrum", required_argument, 0, 'S'},
-        {"dim", required_argument, 0, 'd'},          {"output", required_argument, 0, 'o'},
-        {"size", required_argument, 0, 'n'},         {"realizations", required_argument, 0, 'M'},
-        {"tolerance", required_argument, 0, 'E'},    {"json", no_argument, 0, 'j'},
-        {"levels", required_argument, 0, 'L'},       {"neighborhood", required_argument, 0, 'N'},
-        {"tol", required_argument, 0, 't'},          {"random-neighborhoods", required_argument, 0, 'R'},
-        {"density", required_argument, 0, 'D'},      {"radius", required_argument, 0, 'r'},
-        {"cell", required_argument, 0, 'C'},         {"seed", required_argument, 0, 's'},
-        {"help", no_argument, 0, 'h'},
-        {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "validate")) != -1) {
-        switch (c) {
-        case 'a': *acf = optarg; break;
-        case 'S': *spec = optarg; break;
-        case 'd': v->dim = cli_parse_dim(optarg, 3); break;
-        case 'o': v->dir = optarg; break;
-        case 'n': v->N = cli_parse_count("--size", optarg, 16); break;
-        case 'M': v->M = cli_parse_count("--realizations", optarg, 4); break;
-        case 'E': v->o.tolerance = cli_parse_positive("--tolerance", optarg, "relative error"); break;
-        case 'j': v->json = 1; break;
-        case 's': v->o.seed = cli_parse_u64("--seed", optarg); break;
-        case 'h': fputs(help, stdout); return 1;
-        default: parse_method_option(c, v);
-        }
-    }
+    static opts_t w;
+    int help_given;
+    w.v = *v, w.acf = w.spec = NULL;
+    help_given = cli_opt_parse("validate", help, rows, &w, argc, argv);
+    *v = w.v, *acf = w.acf, *spec = w.spec;
+    if (help_given)
+        return 1;
     cli_no_operands("validate", argc, argv);
     return 0;
 }

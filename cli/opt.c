@@ -67,7 +67,7 @@ static void range_or_die(const cli_opt *r, const char *label, double v, const ch
         cli_die(2, "%s: expected %s, got \"%s\"", label, r->what, arg);
 }
 
-/* Check the value of row r and store it in obj. */
+/* Check the value of row r and store it in obj (its rows' struct at base). */
 static void take(const cli_opt *r, void *obj, size_t base, const char *label, const char *arg)
 {
     void *p = field(obj, base, r->off);
@@ -111,6 +111,8 @@ static void take(const cli_opt *r, void *obj, size_t base, const char *label, co
     default: break;
     }
 }
+
+void cli_opt_take(const cli_opt *r, void *obj, const char *label, const char *arg) { take(r, obj, 0, label, arg); }
 
 /* getopt_long's table (the rows' index + 256 as codes, then --help) and
  * the short options. */

@@ -67,6 +67,13 @@ typedef struct cli_opt {
  * option's message (cli_die). */
 int cli_opt_parse(const char *cmd, const char *help, const cli_opt *rows, void *obj, int argc, char **argv);
 
+/* An INT or COUNT from LO to HI (integer literals), "expected LO to HI" beyond. */
+#define CLI_FROM_TO(LO, HI) .lo = (LO), .flags = CLI_RANGE_HI, .hi = (HI), .what = #LO " to " #HI
+
+/* Take one row's value (a callback that checks more, or less, than a row
+ * can): as cli_opt_parse does for an option named label. */
+void cli_opt_take(const cli_opt *r, void *obj, const char *label, const char *arg);
+
 /* Rows many commands share: one definition each (T the options struct, F
  * the field). */
 #define CLI_OPT_OUTPUT(T, F) {.name = "output", .letter = 'o', .type = CLI_OPT_STRING, CLI_AT(T, F), .label = "-o"}
