@@ -56,18 +56,12 @@ typedef struct {
 static const char *const axes[] = {"x", "y", "z", NULL};
 
 static const cli_opt rows[] = {
-    {.name = "max-lag", .type = CLI_OPT_DOUBLE, CLI_AT(acf_opts, maxlag), .flags = CLI_RANGE_LO, .lo = 0,
-     .what = "a non-negative lag"},
-    {.name = "axis", .type = CLI_OPT_CHOICE, CLI_AT(acf_opts, axis), .choices = axes},
-    {.name = "radial", .type = CLI_OPT_FLAG, CLI_AT(acf_opts, radial)},
-    {.name = "unbiased", .type = CLI_OPT_FLAG, CLI_AT(acf_opts, unbiased)},
-    {.name = "mean", .type = CLI_OPT_DOUBLE, CLI_AT(acf_opts, mean)},
-    {.name = "target", .type = CLI_OPT_STRING, CLI_AT(acf_opts, target)},
-    CLI_OPT_JSON(acf_opts, json),
-    CLI_OPT_OUTPUT(acf_opts, out),
-    {.name = "direct", .type = CLI_OPT_FLAG, CLI_AT(acf_opts, direct)},
-    {.name = "bands", .type = CLI_OPT_FLAG, CLI_AT(acf_opts, bands)},
-    {.type = CLI_OPT_GROUP, .sub = cli_inputs_rows, CLI_AT(acf_opts, src)},
+    CLI_DOUBLE("max-lag", acf_opts, maxlag, .flags = CLI_RANGE_LO, .lo = 0, .what = "a non-negative lag"),
+    CLI_CHOICE("axis", acf_opts, axis, .choices = axes), CLI_FLAG("radial", acf_opts, radial),
+    CLI_FLAG("unbiased", acf_opts, unbiased), CLI_DOUBLE("mean", acf_opts, mean),
+    CLI_STRING("target", acf_opts, target), CLI_OPT_JSON(acf_opts, json), CLI_OPT_OUTPUT(acf_opts, out),
+    CLI_FLAG("direct", acf_opts, direct), CLI_FLAG("bands", acf_opts, bands),
+    CLI_GROUP(cli_inputs_rows, acf_opts, src),
     {0}};
 
 static void parse(int argc, char **argv, acf_opts *o)

@@ -236,11 +236,9 @@ typedef struct {
 } opts_t;
 
 static const cli_opt rows[] = {
-    CLI_OPT_MODEL(opts_t, spec),
-    CLI_OPT_DIMS(opts_t, dim, 3),
-    CLI_OPT_JSON(opts_t, json),
-    {.name = "profile-1d", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, rmax), CLI_GIVEN(opts_t, prof),
-     .flags = CLI_OPTIONAL, .what = "largest lag"},
+    CLI_OPT_MODEL(opts_t, spec, .need = "a model (see noiselab models)"),
+    CLI_OPT_DIMS(opts_t, dim, 3, .need = "1, 2 or 3"), CLI_OPT_JSON(opts_t, json),
+    CLI_POSITIVE("profile-1d", opts_t, rmax, CLI_GIVEN(opts_t, prof), .flags = CLI_OPTIONAL, .what = "largest lag"),
     {0}};
 
 int cli_cmd_check(int argc, char **argv)
@@ -252,27 +250,21 @@ int cli_cmd_check(int argc, char **argv)
     char nb[4096];
     if (cli_opt_parse("check", help, rows, &a, argc, argv))
         return 0;
-    const char *spec = a.spec;
-    int dim = a.dim, json = a.json, prof = a.prof;
-    double rmax = a.rmax;
     cli_no_operands("check", argc, argv);
-    if (!spec)
-        cli_die(2, "check: --acf: expected a model (see noiselab models)");
-    if (!dim)
-        cli_die(2, "check: --dim: expected 1, 2 or 3");
-    if (prof && dim != 2)
-        cli_die(2, "check: --profile-1d: expected --dim 2 (eq. (14) is the 2D sweep), got --dim %d", dim);
-    if (!(st = nl_model_parse(spec, &m)) && prof && nl_model_is_spectral(m))
-        cli_die(2, "check: --profile-1d: expected a model defined by R (eq. (14) sweeps R(t)), got %s", spec);
-    if (st || (st = nl_check_model(m, dim, &k)) ||
+    cli_opt_need("check", rows, &a);
+    if (a.prof && a.dim != 2)
+        cli_die(2, "check: --profile-1d: expected --dim 2 (eq. (14) is the 2D sweep), got --dim %d", a.dim);
+    if (!(st = nl_model_parse(a.spec, &m)) && a.prof && nl_model_is_spectral(m))
+        cli_die(2, "check: --profile-1d: expected a model defined by R (eq. (14) sweeps R(t)), got %s", a.spec);
+    if (st || (st = nl_check_model(m, a.dim, &k)) ||
         (st = nl_check_neighbours(m, &k, nb, sizeof nb)))
         cli_die_status(st);
-    if (json)
-        print_json(spec, &k, nb, prof ? m : NULL, rmax);
+    if (a.json)
+        print_json(a.spec, &k, nb, a.prof ? m : NULL, a.rmax);
     else
-        print_text(spec, &k, nb);
-    if (prof && !json)
-        profile_1d(m, &k, rmax, NULL);
+        print_text(a.spec, &k, nb);
+    if (a.prof && !a.json)
+        profile_1d(m, &k, a.rmax, NULL);
     nl_model_free(m);
     return 0;
 }

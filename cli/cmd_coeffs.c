@@ -127,23 +127,16 @@ static void tol_option(void *obj, const char *label, const char *arg)
     a->tol = cli_synth_parse_tol(label, arg, &a->stop);
 }
 
-#define STR_(x) #x
-#define STR(x) STR_(x)
 static const char *const displacements[] = {"independent", "correlated", NULL};
 
 static const cli_opt rows[] = {
-    {.name = "acf", .type = CLI_OPT_STRING, CLI_AT(coeffs_args, spec)},
-    CLI_OPT_DIMS(coeffs_args, dim, 2),
-    {.name = "neighborhood", .type = CLI_OPT_CALL, .fn = neighborhood_option},
-    {.name = "tol", .type = CLI_OPT_CALL, .fn = tol_option},
-    {.name = "levels", .type = CLI_OPT_INT, CLI_AT(coeffs_args, levels), .lo = 1},
-    {.name = "spacing0", .type = CLI_OPT_POSITIVE, CLI_AT(coeffs_args, s0), .what = "number"},
-    CLI_OPT_JSON(coeffs_args, json),
-    {.name = "displacements", .type = CLI_OPT_CHOICE, CLI_AT(coeffs_args, disp), .choices = displacements},
-    {.name = "taps", .type = CLI_OPT_INT, CLI_AT(coeffs_args, taps), .lo = 1, .flags = CLI_RANGE_HI,
-     .hi = NL_SUBDIV_MAX_TAPS, .what = "1 to " STR(NL_SUBDIV_MAX_TAPS)},
-    {.name = "error", .type = CLI_OPT_FLAG, CLI_AT(coeffs_args, error)},
-    {.name = "size", .type = CLI_OPT_STRING, CLI_AT(coeffs_args, size)},
+    CLI_STRING("acf", coeffs_args, spec, .need = "an autocorrelation model (see noiselab models)"),
+    CLI_OPT_DIMS(coeffs_args, dim, 2, .need = "1 or 2"), CLI_CALL("neighborhood", neighborhood_option),
+    CLI_CALL("tol", tol_option), CLI_INT("levels", coeffs_args, levels, .lo = 1),
+    CLI_POSITIVE("spacing0", coeffs_args, s0, .what = "number"), CLI_OPT_JSON(coeffs_args, json),
+    CLI_CHOICE("displacements", coeffs_args, disp, .choices = displacements),
+    CLI_INT("taps", coeffs_args, taps, CLI_FROM_TO(1, NL_SUBDIV_MAX_TAPS)), CLI_FLAG("error", coeffs_args, error),
+    CLI_STRING("size", coeffs_args, size),
     {0}};
 
 /* Returns 1 when --help was printed. */
@@ -158,10 +151,7 @@ static int parse(int argc, char **argv, coeffs_args *a)
 /* The options against each other and the work they ask for. */
 static void check_args(coeffs_args *a, size_t *n)
 {
-    if (!a->spec)
-        cli_die(2, "coeffs: --acf: expected an autocorrelation model (see noiselab models)");
-    if (!a->dim)
-        cli_die(2, "coeffs: --dim: expected 1 or 2");
+    cli_opt_need("coeffs", rows, a);
     if (a->taps && !a->disp)
         cli_die(2, "--taps %d: expected --displacements correlated (independent displacements have no filter)",
                 a->taps);

@@ -77,37 +77,29 @@ typedef struct {
     char names[NL_FIT_MAX_FIX][32]; /* --fix names */
 } opts_t;
 
-static void parse_fix(opts_t *a, const char *s)
+static void parse_fix(void *obj, const char *label, const char *s)
 {
+    opts_t *a = obj;
     const char *eq = strchr(s, '=');
     size_t k = a->o.nfix;
     if (!eq || eq == s || (size_t)(eq - s) >= sizeof a->names[0])
-        cli_die(2, "--fix: expected NAME=VALUE, got \"%s\"", s);
+        cli_die(2, "%s: expected NAME=VALUE, got \"%s\"", label, s);
     if (k >= NL_FIT_MAX_FIX)
-        cli_die(2, "--fix: expected at most %d, got \"%s\" beyond them", NL_FIT_MAX_FIX, s);
+        cli_die(2, "%s: expected at most %d, got \"%s\" beyond them", label, NL_FIT_MAX_FIX, s);
     memcpy(a->names[k], s, (size_t)(eq - s));
     a->names[k][eq - s] = 0;
     a->o.fix_name[k] = a->names[k];
-    a->o.fix_value[k] = cli_parse_double("--fix", eq + 1);
+    a->o.fix_value[k] = cli_parse_double(label, eq + 1);
     a->o.nfix++;
-}
-
-static void fix_option(void *obj, const char *label, const char *arg)
-{
-    (void)label;
-    parse_fix(obj, arg);
 }
 
 static const char *const methods[] = {"wls", "ml", "reml", NULL};
 static const char *const weights[] = {"cressie", "pairs", "reweighted", "distance", NULL};
 
 static const cli_opt rows[] = {
-    {.name = "model", .type = CLI_OPT_STRING, CLI_AT(opts_t, o.family)},
-    {.name = "nugget", .type = CLI_OPT_FLAG, CLI_AT(opts_t, o.nugget)},
-    {.name = "fix", .type = CLI_OPT_CALL, .fn = fix_option},
-    {.name = "method", .type = CLI_OPT_CHOICE, CLI_AT(opts_t, method), .choices = methods},
-    {.name = "weights", .type = CLI_OPT_CHOICE, CLI_AT(opts_t, o.weights), .choices = weights},
-    CLI_OPT_BINS(opts_t, vo),
+    CLI_STRING("model", opts_t, o.family), CLI_FLAG("nugget", opts_t, o.nugget), CLI_CALL("fix", parse_fix),
+    CLI_CHOICE("method", opts_t, method, .choices = methods),
+    CLI_CHOICE("weights", opts_t, o.weights, .choices = weights), CLI_OPT_BINS(opts_t, vo),
     CLI_OPT_JSON(opts_t, json),
     {0}};
 

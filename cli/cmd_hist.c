@@ -74,12 +74,9 @@ typedef struct {
 } hist_test;
 
 static const cli_opt rows[] = {
-    {.name = "bins", .type = CLI_OPT_COUNT, CLI_AT(hist_opts, bins), .lo = 1},
-    CLI_OPT_JSON(hist_opts, json),
-    {.name = "against", .type = CLI_OPT_STRING, CLI_AT(hist_opts, against)},
-    {.name = "independent", .type = CLI_OPT_FLAG, CLI_AT(hist_opts, independent)},
-    CLI_OPT_OUTPUT(hist_opts, out),
-    {.type = CLI_OPT_GROUP, .sub = cli_inputs_rows, CLI_AT(hist_opts, src)},
+    CLI_COUNT("bins", hist_opts, bins, .lo = 1), CLI_OPT_JSON(hist_opts, json),
+    CLI_STRING("against", hist_opts, against), CLI_FLAG("independent", hist_opts, independent),
+    CLI_OPT_OUTPUT(hist_opts, out), CLI_GROUP(cli_inputs_rows, hist_opts, src),
     {0}};
 
 static void parse(int argc, char **argv, hist_opts *o)

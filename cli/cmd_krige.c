@@ -79,22 +79,17 @@ static const char *const drifts[] = {"constant", "linear", "quadratic", NULL};
 static const int drift_vals[] = {NL_DRIFT_CONSTANT, NL_DRIFT_LINEAR, NL_DRIFT_QUADRATIC};
 
 static const cli_opt rows[] = {
-    {.name = "data", .type = CLI_OPT_STRING, CLI_AT(opts_t, data)},
-    {.name = "acf", .type = CLI_OPT_STRING, CLI_AT(opts_t, spec)},
-    {.name = "grid", .type = CLI_OPT_STRING, CLI_AT(opts_t, grid)},
-    {.name = "extent", .type = CLI_OPT_STRING, CLI_AT(opts_t, ext)},
-    {.name = "mean", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, mean)},
-    {.name = "strict", .type = CLI_OPT_FLAG, CLI_AT(opts_t, strict)},
-    CLI_OPT_JSON(opts_t, json),
-    CLI_OPT_OUTPUT(opts_t, out),
-    {.name = "variance", .type = CLI_OPT_STRING, CLI_AT(opts_t, vout)},
+    CLI_STRING("data", opts_t, data, .need = "a table of points (x, y[, z], value)"),
+    CLI_STRING("acf", opts_t, spec, .need = "a covariance model (see noiselab models)"),
+    CLI_STRING("grid", opts_t, grid, .need = "the output grid WxH[xD]"),
+    CLI_STRING("extent", opts_t, ext, .need = "the grid's extent a:b,c:d[,e:f]"), CLI_DOUBLE("mean", opts_t, mean),
+    CLI_FLAG("strict", opts_t, strict), CLI_OPT_JSON(opts_t, json),
+    CLI_OPT_OUTPUT(opts_t, out, .need = "an output file (.exr or .tsv)"), CLI_STRING("variance", opts_t, vout),
     /* the local or universal path */
-    {.name = "nmax", .type = CLI_OPT_COUNT, CLI_AT(opts_t, nmax), CLI_GIVEN(opts_t, local), .lo = 1},
-    {.name = "radius", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, radius), CLI_GIVEN(opts_t, local),
-     .what = "distance"},
-    {.name = "drift", .type = CLI_OPT_CHOICE, CLI_AT(opts_t, drift), CLI_GIVEN(opts_t, local), .choices = drifts,
-     .vals = drift_vals},
-    {.name = "cross-validate", .type = CLI_OPT_FLAG, CLI_AT(opts_t, cv), CLI_GIVEN(opts_t, local)},
+    CLI_COUNT("nmax", opts_t, nmax, CLI_GIVEN(opts_t, local), .lo = 1),
+    CLI_POSITIVE("radius", opts_t, radius, CLI_GIVEN(opts_t, local), .what = "distance"),
+    CLI_CHOICE("drift", opts_t, drift, CLI_GIVEN(opts_t, local), .choices = drifts, .vals = drift_vals),
+    CLI_FLAG("cross-validate", opts_t, cv, CLI_GIVEN(opts_t, local)),
     {0}};
 
 /* --cross-validate: no grid; -o (optional) is a TSV of the points. */
@@ -122,16 +117,7 @@ static void parse(int argc, char **argv, opts_t *a)
         parse_cv(a);
         return;
     }
-    if (!a->data)
-        cli_die(2, "krige: --data: expected a table of points (x, y[, z], value)");
-    if (!a->spec)
-        cli_die(2, "krige: --acf: expected a covariance model (see noiselab models)");
-    if (!a->grid)
-        cli_die(2, "krige: --grid: expected the output grid WxH[xD]");
-    if (!a->ext)
-        cli_die(2, "krige: --extent: expected the grid's extent a:b,c:d[,e:f]");
-    if (!a->out)
-        cli_die(2, "krige: -o: expected an output file (.exr or .tsv)");
+    cli_opt_need("krige", rows, a);
     if (a->drift != NL_DRIFT_CONSTANT && !isnan(a->mean))
         cli_die(2, "--mean: expected no --drift with a known mean, got --mean %g", a->mean);
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);

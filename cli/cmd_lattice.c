@@ -48,18 +48,11 @@ typedef struct {
     uint64_t seed;                        /* --seed */
 } opts_t;
 
-static void acf_option(void *obj, const char *label, const char *arg)
+/* --acf SPEC or --spectrum SPEC: the last one given counts. */
+static void model_option(void *obj, const char *label, const char *arg)
 {
     opts_t *a = obj;
-    (void)label;
-    a->spec = arg, a->spectral = 0;
-}
-
-static void spectrum_option(void *obj, const char *label, const char *arg)
-{
-    opts_t *a = obj;
-    (void)label;
-    a->spec = arg, a->spectral = 1;
+    a->spec = arg, a->spectral = strcmp(label, "--spectrum") == 0;
 }
 
 static void size_option(void *obj, const char *label, const char *arg)
@@ -82,21 +75,12 @@ static void at_option(void *obj, const char *label, const char *arg)
 }
 
 static const cli_opt rows[] = {
-    {.name = "points", .type = CLI_OPT_COUNT, CLI_AT(opts_t, N), .lo = 2},
-    CLI_OPT_DIMS(opts_t, s, 4),
-    {.name = "generator", .type = CLI_OPT_STRING, CLI_AT(opts_t, gen)},
-    {.name = "acf", .type = CLI_OPT_CALL, .fn = acf_option},
-    {.name = "spectrum", .type = CLI_OPT_CALL, .fn = spectrum_option},
-    {.name = "extent", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, extent), .what = "length"},
-    {.name = "seed", .type = CLI_OPT_U64, CLI_AT(opts_t, seed)},
-    {.name = "wave-vectors", .type = CLI_OPT_FLAG, CLI_AT(opts_t, wv)},
-    CLI_OPT_JSON(opts_t, json),
-    CLI_OPT_OUTPUT(opts_t, out),
-    {.name = "mesh", .type = CLI_OPT_STRING, CLI_AT(opts_t, mesh)},
-    {.name = "clamp", .type = CLI_OPT_FLAG, CLI_AT(opts_t, clamp)},
-    {.name = "image", .type = CLI_OPT_STRING, CLI_AT(opts_t, image)},
-    {.name = "size", .type = CLI_OPT_CALL, .fn = size_option},
-    {.name = "at", .type = CLI_OPT_CALL, .fn = at_option},
+    CLI_COUNT("points", opts_t, N, .lo = 2, .need = "the number of lattice points"),
+    CLI_OPT_DIMS(opts_t, s, 4, .need = "1 to 4"), CLI_STRING("generator", opts_t, gen), CLI_CALL("acf", model_option),
+    CLI_CALL("spectrum", model_option), CLI_POSITIVE("extent", opts_t, extent, .what = "length"),
+    CLI_U64("seed", opts_t, seed), CLI_FLAG("wave-vectors", opts_t, wv), CLI_OPT_JSON(opts_t, json),
+    CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("mesh", opts_t, mesh), CLI_FLAG("clamp", opts_t, clamp),
+    CLI_STRING("image", opts_t, image), CLI_CALL("size", size_option), CLI_CALL("at", at_option),
     {0}};
 
 static void parse(int argc, char **argv, opts_t *a)
@@ -104,10 +88,7 @@ static void parse(int argc, char **argv, opts_t *a)
     if (cli_opt_parse("lattice", help, rows, a, argc, argv))
         exit(0);
     cli_no_operands("lattice", argc, argv);
-    if (!a->N)
-        cli_die(2, "lattice: --points: expected the number of lattice points");
-    if (!a->s)
-        cli_die(2, "lattice: --dim: expected 1 to 4");
+    cli_opt_need("lattice", rows, a);
     if (a->N > (1u << 24))
         cli_die(2, "--points: expected at most 16777216, got %zu", a->N);
     if (a->mesh && a->s != 2)

@@ -40,17 +40,10 @@ typedef struct {
 } opts_t;
 
 static const cli_opt rows[] = {
-    {.name = "acf", .type = CLI_OPT_STRING, CLI_AT(opts_t, spec)},
-    {.name = "g", .type = CLI_OPT_STRING, CLI_AT(opts_t, gspec)},
-    {.name = "size", .type = CLI_OPT_COUNT, CLI_AT(opts_t, n), .lo = 16},
-    {.name = "spacing", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, h), .what = "number"},
-    {.name = "terms", .type = CLI_OPT_INT, CLI_AT(opts_t, K), .lo = 2},
-    CLI_OPT_JSON(opts_t, json),
-    {.name = "design", .type = CLI_OPT_FLAG, CLI_AT(opts_t, design)},
-    {.name = "target", .type = CLI_OPT_STRING, CLI_AT(opts_t, tspec)},
-    {.name = "verify", .type = CLI_OPT_COUNT, CLI_AT(opts_t, verify), .lo = 1},
-    CLI_OPT_OUTPUT(opts_t, out),
-    {.name = "psd", .type = CLI_OPT_STRING, CLI_AT(opts_t, pout)},
+    CLI_STRING("acf", opts_t, spec), CLI_STRING("g", opts_t, gspec), CLI_COUNT("size", opts_t, n, .lo = 16),
+    CLI_POSITIVE("spacing", opts_t, h, .what = "number"), CLI_INT("terms", opts_t, K, .lo = 2),
+    CLI_OPT_JSON(opts_t, json), CLI_FLAG("design", opts_t, design), CLI_STRING("target", opts_t, tspec),
+    CLI_COUNT("verify", opts_t, verify, .lo = 1), CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("psd", opts_t, pout),
     {0}};
 
 static void parse(int argc, char **argv, opts_t *a)

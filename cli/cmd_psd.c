@@ -80,16 +80,10 @@ static void slope_option(void *obj, const char *label, const char *arg)
 }
 
 static const cli_opt rows[] = {
-    {.name = "radial", .type = CLI_OPT_FLAG, CLI_AT(psd_opts, radial)},
-    {.name = "mean", .type = CLI_OPT_DOUBLE, CLI_AT(psd_opts, mean)},
-    {.name = "target", .type = CLI_OPT_STRING, CLI_AT(psd_opts, target)},
-    CLI_OPT_JSON(psd_opts, json),
-    CLI_OPT_OUTPUT(psd_opts, out),
-    {.name = "slope", .type = CLI_OPT_CALL, .fn = slope_option},
-    {.name = "welch", .type = CLI_OPT_COUNT, CLI_AT(psd_opts, welch), .lo = 4},
-    {.name = "angular", .type = CLI_OPT_FLAG, CLI_AT(psd_opts, angular)},
-    {.name = "preview", .type = CLI_OPT_STRING, CLI_AT(psd_opts, preview)},
-    {.type = CLI_OPT_GROUP, .sub = cli_inputs_rows, CLI_AT(psd_opts, src)},
+    CLI_FLAG("radial", psd_opts, radial), CLI_DOUBLE("mean", psd_opts, mean), CLI_STRING("target", psd_opts, target),
+    CLI_OPT_JSON(psd_opts, json), CLI_OPT_OUTPUT(psd_opts, out), CLI_CALL("slope", slope_option),
+    CLI_COUNT("welch", psd_opts, welch, .lo = 4), CLI_FLAG("angular", psd_opts, angular),
+    CLI_STRING("preview", psd_opts, preview), CLI_GROUP(cli_inputs_rows, psd_opts, src),
     {0}};
 
 static void parse(int argc, char **argv, psd_opts *o)

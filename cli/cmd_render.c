@@ -98,32 +98,16 @@ static void plane_option(void *obj, const char *label, const char *arg)
 #define VIEW CLI_GIVEN(opts_t, view_opts)
 
 static const cli_opt rows[] = {
-    {.name = "range", .type = CLI_OPT_CALL, .fn = range_option},
-    {.name = "shade", .type = CLI_OPT_CALL, .fn = shade_option},
-    {.name = "zscale", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, zs), CLI_GIVEN(opts_t, given_zs), .what = "factor"},
-    CLI_OPT_OUTPUT(opts_t, out),
-    {.name = "matrix", .type = CLI_OPT_STRING, CLI_AT(opts_t, matrix)},
-    {.name = "step", .type = CLI_OPT_COUNT, CLI_AT(opts_t, step), .lo = 1},
-    {.name = "perspective", .type = CLI_OPT_FLAG, CLI_AT(opts_t, persp)},
-    {.name = "size", .type = CLI_OPT_STRING, CLI_AT(opts_t, size), VIEW},
-    {.name = "camera", .type = CLI_OPT_STRING, CLI_AT(opts_t, camera), VIEW},
-    {.name = "look", .type = CLI_OPT_STRING, CLI_AT(opts_t, look), VIEW},
-    {.name = "fov", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, fov), VIEW},
-    {.name = "sun", .type = CLI_OPT_PAIR, CLI_AT(opts_t, sun), VIEW},
-    {.name = "haze", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, haze), VIEW},
-    {.name = "water", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, water), VIEW},
-    {.name = "tile", .type = CLI_OPT_FLAG, CLI_AT(opts_t, tile), VIEW},
-    {.name = "sea", .type = CLI_OPT_FLAG, CLI_AT(opts_t, sea), VIEW},
-    {.name = "clouds", .type = CLI_OPT_STRING, CLI_AT(opts_t, clouds), VIEW},
-    {.name = "cloud-plane", .type = CLI_OPT_CALL, .fn = plane_option, VIEW},
-    {.name = "colorbar", .type = CLI_OPT_FLAG, CLI_AT(opts_t, colorbar)},
+    CLI_CALL("range", range_option), CLI_CALL("shade", shade_option),
+    CLI_POSITIVE("zscale", opts_t, zs, CLI_GIVEN(opts_t, given_zs), .what = "factor"), CLI_OPT_OUTPUT(opts_t, out),
+    CLI_STRING("matrix", opts_t, matrix), CLI_COUNT("step", opts_t, step, .lo = 1),
+    CLI_FLAG("perspective", opts_t, persp), CLI_STRING("size", opts_t, size, VIEW),
+    CLI_STRING("camera", opts_t, camera, VIEW), CLI_STRING("look", opts_t, look, VIEW),
+    CLI_DOUBLE("fov", opts_t, fov, VIEW), CLI_PAIR("sun", opts_t, sun, VIEW), CLI_DOUBLE("haze", opts_t, haze, VIEW),
+    CLI_DOUBLE("water", opts_t, water, VIEW), CLI_FLAG("tile", opts_t, tile, VIEW),
+    CLI_FLAG("sea", opts_t, sea, VIEW), CLI_STRING("clouds", opts_t, clouds, VIEW),
+    CLI_CALL("cloud-plane", plane_option, VIEW), CLI_FLAG("colorbar", opts_t, colorbar),
     {0}};
-
-static void parse(int argc, char **argv, opts_t *a)
-{
-    if (cli_opt_parse("render", help, rows, a, argc, argv))
-        exit(0);
-}
 
 static void check(int argc, char **argv, const opts_t *a)
 {
@@ -220,7 +204,8 @@ int cli_cmd_render(int argc, char **argv)
     opts_t a = {.plane = {200, 4}, .step = 1, .lo = NAN, .hi = NAN, .az = NAN, .el = NAN, .zs = 1, .fov = NAN,
                 .sun = {NAN, NAN}, .haze = NAN, .water = NAN};
     nl_field *x;
-    parse(argc, argv, &a);
+    if (cli_opt_parse("render", help, rows, &a, argc, argv))
+        return 0;
     check(argc, argv, &a);
     x = cli_read_field(argv[optind], NULL);
     if (x->dim != 2)

@@ -39,12 +39,9 @@ static const char *const interps[] = {"nearest", "bilinear", NULL};
 static const int interp_vals[] = {NL_INTERP_NEAREST, NL_INTERP_LINEAR};
 
 static const cli_opt rows[] = {
-    {.name = "points", .type = CLI_OPT_STRING, CLI_AT(opts_t, points)},
-    {.name = "random", .type = CLI_OPT_COUNT, CLI_AT(opts_t, random), .lo = 1},
+    CLI_STRING("points", opts_t, points), CLI_COUNT("random", opts_t, random, .lo = 1),
     CLI_OPT_SEED(opts_t, seed, given_seed),
-    {.name = "interpolation", .type = CLI_OPT_CHOICE, CLI_AT(opts_t, interp), .choices = interps,
-     .vals = interp_vals},
-    CLI_OPT_OUTPUT(opts_t, out),
+    CLI_CHOICE("interpolation", opts_t, interp, .choices = interps, .vals = interp_vals), CLI_OPT_OUTPUT(opts_t, out),
     {0}};
 
 static void parse(int argc, char **argv, opts_t *a)

@@ -30,9 +30,8 @@ typedef struct {
 } opts_t;
 
 static const cli_opt rows[] = {
-    {.name = "to", .type = CLI_OPT_STRING, CLI_AT(opts_t, to)},
-    {.name = "empirical", .type = CLI_OPT_FLAG, CLI_AT(opts_t, empirical)},
-    CLI_OPT_OUTPUT(opts_t, out),
+    CLI_STRING("to", opts_t, to, .need = "a distribution (e.g. --to laplace)"),
+    CLI_FLAG("empirical", opts_t, empirical), CLI_OPT_OUTPUT(opts_t, out, .need = "an output file (.exr or .tsv)"),
     {0}};
 
 int cli_cmd_shape(int argc, char **argv)
@@ -47,10 +46,7 @@ int cli_cmd_shape(int argc, char **argv)
     const char *to = a.to, *out = a.out;
     int empirical = a.empirical;
     const char *in = cli_one_operand("shape", "input file", argc, argv);
-    if (!to)
-        cli_die(2, "shape: --to: expected a distribution (e.g. --to laplace)");
-    if (!out)
-        cli_die(2, "shape: -o: expected an output file (.exr or .tsv)");
+    cli_opt_need("shape", rows, &a);
     if (!cli_has_ext(out, ".exr") && !cli_has_ext(out, ".tsv"))
         cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", out);
     cli_check(nl_dist_parse(to, &d));

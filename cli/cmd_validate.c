@@ -50,54 +50,29 @@ static const char help[] =
     "or unresolved or none could run (the model is not positive definite), 2 for bad\n"
     "input, 1 when an output cannot be written.\n";
 
-/* The options: the report's, then --acf and --spectrum apart. */
-typedef struct {
-    cli_validate v;          /* what the report takes */
-    const char *acf, *spec;  /* --acf, --spectrum */
-} opts_t;
-
 static void neighborhood_option(void *obj, const char *label, const char *arg)
 {
-    static const cli_opt n = {.type = CLI_OPT_INT, CLI_AT(opts_t, v.o.subdiv_N), CLI_FROM_TO(1, 2147483647)};
+    static const cli_opt n = {.type = CLI_OPT_INT, CLI_AT(cli_validate, o.subdiv_N), CLI_FROM_TO(1, 2147483647)};
     if (strcmp(arg, "auto") == 0)
-        ((opts_t *)obj)->v.o.subdiv_N = 0;
+        ((cli_validate *)obj)->o.subdiv_N = 0;
     else
         cli_opt_take(&n, obj, label, arg);
 }
 
 static const cli_opt rows[] = {
-    {.name = "acf", .type = CLI_OPT_STRING, CLI_AT(opts_t, acf)},
-    {.name = "spectrum", .type = CLI_OPT_STRING, CLI_AT(opts_t, spec)},
-    CLI_OPT_DIMS(opts_t, v.dim, 3),
-    CLI_OPT_OUTPUT(opts_t, v.dir),
-    {.name = "size", .type = CLI_OPT_COUNT, CLI_AT(opts_t, v.N), .lo = 16},
-    {.name = "realizations", .type = CLI_OPT_COUNT, CLI_AT(opts_t, v.M), .lo = 4},
-    {.name = "tolerance", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, v.o.tolerance), .what = "relative error"},
-    CLI_OPT_JSON(opts_t, v.json),
-    {.name = "seed", .type = CLI_OPT_U64, CLI_AT(opts_t, v.o.seed)},
+    CLI_STRING("acf", cli_validate, spec), CLI_STRING("spectrum", cli_validate, spectrum),
+    CLI_OPT_DIMS(cli_validate, dim, 3, .need = "1, 2 or 3"), CLI_OPT_OUTPUT(cli_validate, dir),
+    CLI_COUNT("size", cli_validate, N, .lo = 16), CLI_COUNT("realizations", cli_validate, M, .lo = 4),
+    CLI_POSITIVE("tolerance", cli_validate, o.tolerance, .what = "relative error"), CLI_OPT_JSON(cli_validate, json),
+    CLI_U64("seed", cli_validate, o.seed),
     /* the methods' options, as for synth */
-    {.name = "levels", .type = CLI_OPT_INT, CLI_AT(opts_t, v.o.subdiv_levels), CLI_FROM_TO(1, 30)},
-    {.name = "neighborhood", .type = CLI_OPT_CALL, .fn = neighborhood_option},
-    {.name = "tol", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, v.o.subdiv_tol), .what = "number"},
-    {.name = "random-neighborhoods", .type = CLI_OPT_INT, CLI_AT(opts_t, v.o.subdiv_random), CLI_FROM_TO(1, 256)},
-    {.name = "density", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, v.o.sparse_density), .what = "number"},
-    {.name = "radius", .type = CLI_OPT_INT, CLI_AT(opts_t, v.o.sparse_radius), CLI_FROM_TO(1, 4096)},
-    {.name = "cell", .type = CLI_OPT_INT, CLI_AT(opts_t, v.o.sparse_cell), CLI_FROM_TO(1, 1048576)},
+    CLI_INT("levels", cli_validate, o.subdiv_levels, CLI_FROM_TO(1, 30)),
+    CLI_CALL("neighborhood", neighborhood_option), CLI_POSITIVE("tol", cli_validate, o.subdiv_tol, .what = "number"),
+    CLI_INT("random-neighborhoods", cli_validate, o.subdiv_random, CLI_FROM_TO(1, 256)),
+    CLI_POSITIVE("density", cli_validate, o.sparse_density, .what = "number"),
+    CLI_INT("radius", cli_validate, o.sparse_radius, CLI_FROM_TO(1, 4096)),
+    CLI_INT("cell", cli_validate, o.sparse_cell, CLI_FROM_TO(1, 1048576)),
     {0}};
-
-/* The options into v, acf and spec; returns 1 when --help was printed. */
-static int parse_options(int argc, char **argv, cli_validate *v, const char **acf, const char **spec)
-{
-    static opts_t w;
-    int help_given;
-    w.v = *v, w.acf = w.spec = NULL;
-    help_given = cli_opt_parse("validate", help, rows, &w, argc, argv);
-    *v = w.v, *acf = w.acf, *spec = w.spec;
-    if (help_given)
-        return 1;
-    cli_no_operands("validate", argc, argv);
-    return 0;
-}
 
 /* The size, within the work limit: every method synthesises and estimates
  * M fields, about 2e5 samples a second, so 2^24 samples keep each method
@@ -117,16 +92,16 @@ static void check_size(cli_validate *v)
 
 static void parse(int argc, char **argv, cli_validate *v)
 {
-    const char *acf = NULL, *spec = NULL;
     static char sbuf[1200];
     nl_validate_options_default(&v->o);
     v->M = 64;
-    if (parse_options(argc, argv, v, &acf, &spec))
+    if (cli_opt_parse("validate", help, rows, v, argc, argv))
         exit(0);
+    cli_no_operands("validate", argc, argv);
+    const char *acf = v->spec, *spec = v->spectrum;
     if (!acf == !spec)
         cli_die(2, "validate: expected exactly one of --acf SPEC or --spectrum SPEC");
-    if (!v->dim)
-        cli_die(2, "validate: --dim: expected 1, 2 or 3");
+    cli_opt_need("validate", rows, v);
     if (!v->dir && !v->json)
         cli_die(2, "validate: expected -o DIR, --json or both");
     check_size(v);

@@ -37,14 +37,11 @@ static const char *const estimators[] = {"matheron", "cressie", NULL};
 static const int estimator_vals[] = {NL_VARIOGRAM_MATHERON, NL_VARIOGRAM_CRESSIE};
 
 static const cli_opt rows[] = {
-    CLI_OPT_BINS(opts_t, o),
-    {.name = "direction", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, o.direction), CLI_GIVEN(opts_t, has_dir)},
-    {.name = "angle-tolerance", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, o.tolerance), CLI_GIVEN(opts_t, has_tol),
-     .flags = CLI_RANGE_LO | CLI_RANGE_HI, .lo = 0, .hi = 90, .what = "degrees in [0, 90]"},
-    {.name = "estimator", .type = CLI_OPT_CHOICE, CLI_AT(opts_t, o.estimator), .choices = estimators,
-     .vals = estimator_vals},
-    CLI_OPT_JSON(opts_t, json),
-    CLI_OPT_OUTPUT(opts_t, out),
+    CLI_OPT_BINS(opts_t, o), CLI_DOUBLE("direction", opts_t, o.direction, CLI_GIVEN(opts_t, has_dir)),
+    CLI_DOUBLE("angle-tolerance", opts_t, o.tolerance, CLI_GIVEN(opts_t, has_tol), .flags = CLI_RANGE_LO | CLI_RANGE_HI,
+               .lo = 0, .hi = 90, .what = "degrees in [0, 90]"),
+    CLI_CHOICE("estimator", opts_t, o.estimator, .choices = estimators, .vals = estimator_vals),
+    CLI_OPT_JSON(opts_t, json), CLI_OPT_OUTPUT(opts_t, out),
     {0}};
 
 static void parse(int argc, char **argv, opts_t *a)

@@ -7,10 +7,8 @@
 #include <stdlib.h>
 
 const cli_opt cli_inputs_rows[] = {
-    {.name = "realizations", .type = CLI_OPT_COUNT, CLI_AT(cli_inputs, K), .lo = 1, .flags = CLI_RANGE_HI,
-     .hi = 100000, .what = "at most 100000"},
-    {.name = "acf", .type = CLI_OPT_STRING, CLI_AT(cli_inputs, spec)},
-    CLI_OPT_SIZES(cli_inputs, n, dim, 2),
+    CLI_COUNT("realizations", cli_inputs, K, .lo = 1, .flags = CLI_RANGE_HI, .hi = 100000, .what = "at most 100000"),
+    CLI_STRING("acf", cli_inputs, spec), CLI_OPT_SIZES(cli_inputs, n, dim, 2),
     CLI_OPT_SEED(cli_inputs, seed, seed_set),
     {0}};
 

@@ -53,18 +53,18 @@ static int pick(const cli_opt *r, const char *label, const char *arg)
     cli_die(2, "%s: expected %s, got \"%s\"", label, r->what ? r->what : words, arg);
 }
 
-/* Is v outside the row's range? */
-static int out_of_range(const cli_opt *r, double v)
-{
-    if ((r->flags & CLI_RANGE_LO) && (r->flags & CLI_RANGE_LO_OPEN ? !(v > r->lo) : !(v >= r->lo)))
-        return 1;
-    return (r->flags & CLI_RANGE_HI) && (r->flags & CLI_RANGE_HI_OPEN ? !(v < r->hi) : !(v <= r->hi));
-}
-
 static void range_or_die(const cli_opt *r, const char *label, double v, const char *arg)
 {
-    if (out_of_range(r, v))
+    if (((r->flags & CLI_RANGE_LO) && !(v >= r->lo)) || ((r->flags & CLI_RANGE_HI) && !(v <= r->hi)))
         cli_die(2, "%s: expected %s, got \"%s\"", label, r->what, arg);
+}
+
+static const char *label_of(const cli_opt *r, char *buf, size_t len)
+{
+    if (r->label)
+        return r->label;
+    snprintf(buf, len, "--%s", r->name);
+    return buf;
 }
 
 /* Check the value of row r and store it in obj (its rows' struct at base). */
@@ -89,8 +89,7 @@ static void take(const cli_opt *r, void *obj, size_t base, const char *label, co
     case CLI_OPT_COUNT:
     case CLI_OPT_INT: {
         size_t v = cli_parse_count(label, arg, (size_t)r->lo);
-        if ((r->flags & CLI_RANGE_HI) && v > r->hi)
-            cli_die(2, "%s: expected %s, got \"%s\"", label, r->what, arg);
+        range_or_die(r, label, (double)v, arg);
         if (r->type == CLI_OPT_INT)
             *(int *)p = (int)v;
         else
@@ -154,11 +153,23 @@ int cli_opt_parse(const char *cmd, const char *help, const cli_opt *rows, void *
                 ;
         if (i < 0 || i >= f.n)
             continue;
-        if (f.row[i]->label)
-            snprintf(label, sizeof label, "%s", f.row[i]->label);
-        else
-            snprintf(label, sizeof label, "--%s", f.row[i]->name);
-        take(f.row[i], obj, f.base[i], label, optarg);
+        take(f.row[i], obj, f.base[i], label_of(f.row[i], label, sizeof label), optarg);
     }
     return 0;
+}
+
+void cli_opt_need(const char *cmd, const cli_opt *rows, const void *obj)
+{
+    flat_rows f = {.n = 0};
+    char label[64];
+    flatten(&f, rows, 0);
+    for (int i = 0; i < f.n; i++) {
+        const cli_opt *r = f.row[i];
+        const char *p = (const char *)obj + f.base[i] + r->off;
+        int set = r->type == CLI_OPT_STRING  ? *(const char *const *)p != NULL
+                  : r->type == CLI_OPT_COUNT ? *(const size_t *)p != 0
+                                             : *(const int *)p != 0;
+        if (r->need && !set)
+            cli_die(2, "%s: %s: expected %s", cmd, label_of(r, label, sizeof label), r->need);
+    }
 }

@@ -34,9 +34,9 @@ typedef enum {
 #define CLI_GIVEN(T, F) .given = offsetof(T, F) + 1
 #define CLI_AUX(T, F) .aux = offsetof(T, F) + 1
 
-/* A range check: lo <= v <= hi, strict where lo_open / hi_open; for COUNT
- * and INT, lo is the least value and hi (when range is set) the largest. */
-enum { CLI_RANGE_LO = 1, CLI_RANGE_HI = 2, CLI_RANGE_LO_OPEN = 4, CLI_RANGE_HI_OPEN = 8, CLI_OPTIONAL = 16 };
+/* A range check: lo <= v <= hi; for COUNT and INT, lo is the least value
+ * and hi (when CLI_RANGE_HI is set) the largest. */
+enum { CLI_RANGE_LO = 1, CLI_RANGE_HI = 2, CLI_OPTIONAL = 4 };
 
 /* One row of an option table. */
 typedef struct cli_opt {
@@ -58,6 +58,7 @@ typedef struct cli_opt {
     const int *vals;               /* CHOICE: what each sets (NULL: its index) */
     void (*fn)(void *obj, const char *label, const char *arg); /* CALL; arg NULL when left out */
     const struct cli_opt *sub;     /* GROUP: the rows */
+    const char *need;              /* required: what cli_opt_need says is expected */
 } cli_opt;
 
 /* Parse argv[1..] for subcommand cmd by the rows, filling obj.  --help
@@ -67,8 +68,29 @@ typedef struct cli_opt {
  * option's message (cli_die). */
 int cli_opt_parse(const char *cmd, const char *help, const cli_opt *rows, void *obj, int argc, char **argv);
 
-/* An INT or COUNT from LO to HI (integer literals), "expected LO to HI" beyond. */
-#define CLI_FROM_TO(LO, HI) .lo = (LO), .flags = CLI_RANGE_HI, .hi = (HI), .what = #LO " to " #HI
+/* A row by its type, in the manner of git's OPT_BOOL: long name N, the
+ * field F of options struct T, then any more of the row's fields. */
+#define CLI_FLAG(N, T, F, ...) {.name = N, .type = CLI_OPT_FLAG, CLI_AT(T, F), __VA_ARGS__}
+#define CLI_STRING(N, T, F, ...) {.name = N, .type = CLI_OPT_STRING, CLI_AT(T, F), __VA_ARGS__}
+#define CLI_DOUBLE(N, T, F, ...) {.name = N, .type = CLI_OPT_DOUBLE, CLI_AT(T, F), __VA_ARGS__}
+#define CLI_POSITIVE(N, T, F, ...) {.name = N, .type = CLI_OPT_POSITIVE, CLI_AT(T, F), __VA_ARGS__}
+#define CLI_COUNT(N, T, F, ...) {.name = N, .type = CLI_OPT_COUNT, CLI_AT(T, F), __VA_ARGS__}
+#define CLI_INT(N, T, F, ...) {.name = N, .type = CLI_OPT_INT, CLI_AT(T, F), __VA_ARGS__}
+#define CLI_U64(N, T, F, ...) {.name = N, .type = CLI_OPT_U64, CLI_AT(T, F), __VA_ARGS__}
+#define CLI_CHOICE(N, T, F, ...) {.name = N, .type = CLI_OPT_CHOICE, CLI_AT(T, F), __VA_ARGS__}
+#define CLI_PAIR(N, T, F, ...) {.name = N, .type = CLI_OPT_PAIR, CLI_AT(T, F), __VA_ARGS__}
+#define CLI_CALL(N, FN, ...) {.name = N, .type = CLI_OPT_CALL, .fn = (FN), __VA_ARGS__}
+#define CLI_GROUP(ROWS, T, F) {.type = CLI_OPT_GROUP, .sub = (ROWS), CLI_AT(T, F)}
+
+/* An INT or COUNT from LO to HI (integers, or macros of them), "expected LO
+ * to HI" beyond. */
+#define CLI_STR_(X) #X
+#define CLI_STR(X) CLI_STR_(X)
+#define CLI_FROM_TO(LO, HI) .lo = (LO), .flags = CLI_RANGE_HI, .hi = (HI), .what = CLI_STR(LO) " to " CLI_STR(HI)
+
+/* The first row with need whose field is unset (NULL or 0), in the rows'
+ * order: exit 2 with "CMD: LABEL: expected NEED". */
+void cli_opt_need(const char *cmd, const cli_opt *rows, const void *obj);
 
 /* Take one row's value (a callback that checks more, or less, than a row
  * can): as cli_opt_parse does for an option named label. */
@@ -76,16 +98,17 @@ void cli_opt_take(const cli_opt *r, void *obj, const char *label, const char *ar
 
 /* Rows many commands share: one definition each (T the options struct, F
  * the field). */
-#define CLI_OPT_OUTPUT(T, F) {.name = "output", .letter = 'o', .type = CLI_OPT_STRING, CLI_AT(T, F), .label = "-o"}
+#define CLI_OPT_OUTPUT(T, F, ...)                                                                                 \
+    {.name = "output", .letter = 'o', .type = CLI_OPT_STRING, CLI_AT(T, F), .label = "-o", __VA_ARGS__}
 #define CLI_OPT_JSON(T, F) {.name = "json", .type = CLI_OPT_FLAG, CLI_AT(T, F)}
 /* --seed S, and G set when given */
 #define CLI_OPT_SEED(T, F, G) {.name = "seed", .type = CLI_OPT_U64, CLI_AT(T, F), CLI_GIVEN(T, G)}
-#define CLI_OPT_DIMS(T, F, MAX) {.name = "dim", .type = CLI_OPT_DIM, CLI_AT(T, F), .hi = (MAX)}
+#define CLI_OPT_DIMS(T, F, MAX, ...) {.name = "dim", .type = CLI_OPT_DIM, CLI_AT(T, F), .hi = (MAX), __VA_ARGS__}
 /* --size N[xM[xK]] each >= MIN, its number of axes to D */
 #define CLI_OPT_SIZES(T, F, D, MIN) {.name = "size", .type = CLI_OPT_SIZE, CLI_AT(T, F), CLI_AUX(T, D), .lo = (MIN)}
-/* --acf SPEC and --spectrum SPEC, both filling one model spec */
-#define CLI_OPT_MODEL(T, F)                                                                                       \
-    {.name = "acf", .type = CLI_OPT_STRING, CLI_AT(T, F)}, {.name = "spectrum", .type = CLI_OPT_STRING, CLI_AT(T, F)}
+/* --acf SPEC and --spectrum SPEC, both filling one model spec (the rest
+ * of the row goes with --acf: a need names it) */
+#define CLI_OPT_MODEL(T, F, ...) CLI_STRING("acf", T, F, __VA_ARGS__), CLI_STRING("spectrum", T, F)
 /* The variogram's bins (--width, --cutoff) in an nl_variogram_options field */
 #define CLI_OPT_BINS(T, F)                                                                                        \
     {.name = "width", .type = CLI_OPT_POSITIVE, CLI_AT(T, F.width), .what = "bin width"},                       \
