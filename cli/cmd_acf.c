@@ -12,7 +12,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab acf IN...|--realizations K --acf SPEC --size N [--seed S]\n"
@@ -61,8 +60,7 @@ static const cli_opt rows[] = {
     CLI_FLAG("unbiased", acf_opts, unbiased), CLI_DOUBLE("mean", acf_opts, mean),
     CLI_STRING("target", acf_opts, target), CLI_OPT_JSON(acf_opts, json), CLI_OPT_OUTPUT(acf_opts, out),
     CLI_FLAG("direct", acf_opts, direct), CLI_FLAG("bands", acf_opts, bands),
-    CLI_GROUP(cli_inputs_rows, acf_opts, src),
-    {0}};
+    CLI_GROUP(cli_inputs_rows, acf_opts, src), {0}};
 
 static void parse(int argc, char **argv, acf_opts *o)
 {

@@ -38,7 +38,8 @@ typedef struct {
     const char *out, *spec; /* -o, --acf or --spectrum */
 } opts_t;
 
-static const cli_opt rows[] = {CLI_OPT_OUTPUT(opts_t, out), CLI_OPT_MODEL(opts_t, spec), {0}};
+static const cli_opt rows[] = {
+    CLI_OPT_OUTPUT(opts_t, out), CLI_OPT_MODEL(opts_t, spec), {0}};
 
 static const char *parse(int argc, char **argv, const char **spec)
 {

@@ -6,7 +6,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab coeffs --acf SPEC --dim 1|2 [--neighborhood N|auto] [--tol [variance:]E]\n"
@@ -116,11 +115,6 @@ typedef struct {
     double tol, s0;
 } coeffs_args;
 
-static void neighborhood_option(void *obj, const char *label, const char *arg)
-{
-    ((coeffs_args *)obj)->N = strcmp(arg, "auto") == 0 ? 0 : (int)cli_parse_count(label, arg, 1);
-}
-
 static void tol_option(void *obj, const char *label, const char *arg)
 {
     coeffs_args *a = obj;
@@ -131,13 +125,12 @@ static const char *const displacements[] = {"independent", "correlated", NULL};
 
 static const cli_opt rows[] = {
     CLI_STRING("acf", coeffs_args, spec, .need = "an autocorrelation model (see noiselab models)"),
-    CLI_OPT_DIMS(coeffs_args, dim, 2, .need = "1 or 2"), CLI_CALL("neighborhood", neighborhood_option),
-    CLI_CALL("tol", tol_option), CLI_INT("levels", coeffs_args, levels, .lo = 1),
-    CLI_POSITIVE("spacing0", coeffs_args, s0, .what = "number"), CLI_OPT_JSON(coeffs_args, json),
-    CLI_CHOICE("displacements", coeffs_args, disp, .choices = displacements),
+    CLI_OPT_DIMS(coeffs_args, dim, 2, .need = "1 or 2"),
+    CLI_INT("neighborhood", coeffs_args, N, .lo = 1, .flags = CLI_AUTO), CLI_CALL("tol", tol_option),
+    CLI_INT("levels", coeffs_args, levels, .lo = 1), CLI_POSITIVE("spacing0", coeffs_args, s0, .what = "number"),
+    CLI_OPT_JSON(coeffs_args, json), CLI_CHOICE("displacements", coeffs_args, disp, .choices = displacements),
     CLI_INT("taps", coeffs_args, taps, CLI_FROM_TO(1, NL_SUBDIV_MAX_TAPS)), CLI_FLAG("error", coeffs_args, error),
-    CLI_STRING("size", coeffs_args, size),
-    {0}};
+    CLI_STRING("size", coeffs_args, size), {0}};
 
 /* Returns 1 when --help was printed. */
 static int parse(int argc, char **argv, coeffs_args *a)

@@ -29,8 +29,7 @@ typedef struct {
 
 static const cli_opt rows[] = {
     CLI_INT("levels", opts_t, levels, .lo = 1, .need = "the number of subdivision levels of the field"),
-    CLI_OPT_MODEL(opts_t, spec), CLI_OPT_JSON(opts_t, json),
-    {0}};
+    CLI_OPT_MODEL(opts_t, spec), CLI_OPT_JSON(opts_t, json), {0}};
 
 int cli_cmd_detect(int argc, char **argv)
 {

@@ -76,8 +76,7 @@ typedef struct {
 static const cli_opt rows[] = {
     CLI_COUNT("bins", hist_opts, bins, .lo = 1), CLI_OPT_JSON(hist_opts, json),
     CLI_STRING("against", hist_opts, against), CLI_FLAG("independent", hist_opts, independent),
-    CLI_OPT_OUTPUT(hist_opts, out), CLI_GROUP(cli_inputs_rows, hist_opts, src),
-    {0}};
+    CLI_OPT_OUTPUT(hist_opts, out), CLI_GROUP(cli_inputs_rows, hist_opts, src), {0}};
 
 static void parse(int argc, char **argv, hist_opts *o)
 {

@@ -75,8 +75,7 @@ static void check_reach(const opts_t *a, const nl_points *pt)
     }
 }
 
-static const char *const drifts[] = {"constant", "linear", "quadratic", NULL};
-static const int drift_vals[] = {NL_DRIFT_CONSTANT, NL_DRIFT_LINEAR, NL_DRIFT_QUADRATIC};
+static const char *const drifts[] = {"constant", "linear", "quadratic", NULL}; /* NL_DRIFT_* by index */
 
 static const cli_opt rows[] = {
     CLI_STRING("data", opts_t, data, .need = "a table of points (x, y[, z], value)"),
@@ -88,9 +87,8 @@ static const cli_opt rows[] = {
     /* the local or universal path */
     CLI_COUNT("nmax", opts_t, nmax, CLI_GIVEN(opts_t, local), .lo = 1),
     CLI_POSITIVE("radius", opts_t, radius, CLI_GIVEN(opts_t, local), .what = "distance"),
-    CLI_CHOICE("drift", opts_t, drift, CLI_GIVEN(opts_t, local), .choices = drifts, .vals = drift_vals),
-    CLI_FLAG("cross-validate", opts_t, cv, CLI_GIVEN(opts_t, local)),
-    {0}};
+    CLI_CHOICE("drift", opts_t, drift, CLI_GIVEN(opts_t, local), .choices = drifts),
+    CLI_FLAG("cross-validate", opts_t, cv, CLI_GIVEN(opts_t, local)), {0}};
 
 /* --cross-validate: no grid; -o (optional) is a TSV of the points. */
 static void parse_cv(opts_t *a)

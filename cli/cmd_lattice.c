@@ -80,8 +80,7 @@ static const cli_opt rows[] = {
     CLI_CALL("spectrum", model_option), CLI_POSITIVE("extent", opts_t, extent, .what = "length"),
     CLI_U64("seed", opts_t, seed), CLI_FLAG("wave-vectors", opts_t, wv), CLI_OPT_JSON(opts_t, json),
     CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("mesh", opts_t, mesh), CLI_FLAG("clamp", opts_t, clamp),
-    CLI_STRING("image", opts_t, image), CLI_CALL("size", size_option), CLI_CALL("at", at_option),
-    {0}};
+    CLI_STRING("image", opts_t, image), CLI_CALL("size", size_option), CLI_CALL("at", at_option), {0}};
 
 static void parse(int argc, char **argv, opts_t *a)
 {

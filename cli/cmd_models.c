@@ -20,7 +20,8 @@ static const char help[] =
 
 int cli_cmd_models(int argc, char **argv)
 {
-    static const cli_opt rows[] = {{.name = "json", .type = CLI_OPT_FLAG}, {0}};
+    static const cli_opt rows[] = {
+    {.name = "json", .type = CLI_OPT_FLAG}, {0}};
     int json = 0;
     size_t n;
     const nl_model_info *cat = nl_model_catalogue(&n);

@@ -43,8 +43,7 @@ static const cli_opt rows[] = {
     CLI_STRING("acf", opts_t, spec), CLI_STRING("g", opts_t, gspec), CLI_COUNT("size", opts_t, n, .lo = 16),
     CLI_POSITIVE("spacing", opts_t, h, .what = "number"), CLI_INT("terms", opts_t, K, .lo = 2),
     CLI_OPT_JSON(opts_t, json), CLI_FLAG("design", opts_t, design), CLI_STRING("target", opts_t, tspec),
-    CLI_COUNT("verify", opts_t, verify, .lo = 1), CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("psd", opts_t, pout),
-    {0}};
+    CLI_COUNT("verify", opts_t, verify, .lo = 1), CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("psd", opts_t, pout), {0}};
 
 static void parse(int argc, char **argv, opts_t *a)
 {

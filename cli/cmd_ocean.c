@@ -84,13 +84,12 @@ static const char *const draws[] = {"series", "delaunay", NULL};
 static const cli_opt rows[] = {
     CLI_STRING("lattice", opts_t, lat), CLI_COUNT("points", opts_t, N, .lo = 3),
     CLI_COUNT("grid", opts_t, M, .lo = 4), CLI_CALL("wind", wind_option), CLI_DOUBLE("time", opts_t, t0),
-    CLI_INT("frames", opts_t, frames, .lo = 1, .flags = CLI_RANGE_HI, .hi = 10000, .what = "at most 10000 frames"),
+    CLI_INT("frames", opts_t, frames, .lo = 1, .hi = 10000, .what = "at most 10000 frames"),
     CLI_DOUBLE("dt", opts_t, dt), CLI_POSITIVE("patch", opts_t, o.patch, .what = "size in metres"),
     CLI_POSITIVE("amplitude", opts_t, o.amplitude, .what = "number"), CLI_U64("seed", opts_t, seed),
     CLI_COUNT("size", opts_t, W, .lo = 8), CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("image", opts_t, image),
     CLI_STRING("tile", opts_t, tile), CLI_STRING("mesh", opts_t, mesh),
-    CLI_CHOICE("draw", opts_t, delaunay, .choices = draws),
-    {0}};
+    CLI_CHOICE("draw", opts_t, delaunay, .choices = draws), {0}};
 
 static void check(int argc, char **argv, const opts_t *a)
 {
@@ -231,7 +230,7 @@ int cli_cmd_ocean(int argc, char **argv)
     opts_t a = {.W = 512, .v = NAN, .frames = 1, .seed = 1, .o = {0, 0, 100, 1e-4}};
     nl_rank1_lattice L;
     if (cli_opt_parse("ocean", help, rows, &a, argc, argv))
-        return 0;
+        exit(0);
     check(argc, argv, &a);
     a.o.wind = a.v, a.o.angle = a.ang * M_PI / 180;
     memset(&L, 0, sizeof L);

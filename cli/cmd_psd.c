@@ -83,8 +83,7 @@ static const cli_opt rows[] = {
     CLI_FLAG("radial", psd_opts, radial), CLI_DOUBLE("mean", psd_opts, mean), CLI_STRING("target", psd_opts, target),
     CLI_OPT_JSON(psd_opts, json), CLI_OPT_OUTPUT(psd_opts, out), CLI_CALL("slope", slope_option),
     CLI_COUNT("welch", psd_opts, welch, .lo = 4), CLI_FLAG("angular", psd_opts, angular),
-    CLI_STRING("preview", psd_opts, preview), CLI_GROUP(cli_inputs_rows, psd_opts, src),
-    {0}};
+    CLI_STRING("preview", psd_opts, preview), CLI_GROUP(cli_inputs_rows, psd_opts, src), {0}};
 
 static void parse(int argc, char **argv, psd_opts *o)
 {

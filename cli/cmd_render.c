@@ -106,8 +106,7 @@ static const cli_opt rows[] = {
     CLI_DOUBLE("fov", opts_t, fov, VIEW), CLI_PAIR("sun", opts_t, sun, VIEW), CLI_DOUBLE("haze", opts_t, haze, VIEW),
     CLI_DOUBLE("water", opts_t, water, VIEW), CLI_FLAG("tile", opts_t, tile, VIEW),
     CLI_FLAG("sea", opts_t, sea, VIEW), CLI_STRING("clouds", opts_t, clouds, VIEW),
-    CLI_CALL("cloud-plane", plane_option, VIEW), CLI_FLAG("colorbar", opts_t, colorbar),
-    {0}};
+    CLI_CALL("cloud-plane", plane_option, VIEW), CLI_FLAG("colorbar", opts_t, colorbar), {0}};
 
 static void check(int argc, char **argv, const opts_t *a)
 {
@@ -205,7 +204,7 @@ int cli_cmd_render(int argc, char **argv)
                 .sun = {NAN, NAN}, .haze = NAN, .water = NAN};
     nl_field *x;
     if (cli_opt_parse("render", help, rows, &a, argc, argv))
-        return 0;
+        exit(0);
     check(argc, argv, &a);
     x = cli_read_field(argv[optind], NULL);
     if (x->dim != 2)

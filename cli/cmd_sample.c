@@ -35,14 +35,12 @@ typedef struct {
     int interp, given_seed;           /* NL_INTERP_*, --seed given */
 } opts_t;
 
-static const char *const interps[] = {"nearest", "bilinear", NULL};
-static const int interp_vals[] = {NL_INTERP_NEAREST, NL_INTERP_LINEAR};
+static const char *const interps[] = {"nearest", "bilinear", NULL}; /* NL_INTERP_* by index */
 
 static const cli_opt rows[] = {
     CLI_STRING("points", opts_t, points), CLI_COUNT("random", opts_t, random, .lo = 1),
-    CLI_OPT_SEED(opts_t, seed, given_seed),
-    CLI_CHOICE("interpolation", opts_t, interp, .choices = interps, .vals = interp_vals), CLI_OPT_OUTPUT(opts_t, out),
-    {0}};
+    CLI_OPT_SEED(opts_t, seed, given_seed), CLI_CHOICE("interpolation", opts_t, interp, .choices = interps),
+    CLI_OPT_OUTPUT(opts_t, out), {0}};
 
 static void parse(int argc, char **argv, opts_t *a)
 {

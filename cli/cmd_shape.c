@@ -43,28 +43,26 @@ int cli_cmd_shape(int argc, char **argv)
     nl_meta meta;
     if (cli_opt_parse("shape", help, rows, &a, argc, argv))
         return 0;
-    const char *to = a.to, *out = a.out;
-    int empirical = a.empirical;
     const char *in = cli_one_operand("shape", "input file", argc, argv);
     cli_opt_need("shape", rows, &a);
-    if (!cli_has_ext(out, ".exr") && !cli_has_ext(out, ".tsv"))
-        cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", out);
-    cli_check(nl_dist_parse(to, &d));
+    if (!cli_has_ext(a.out, ".exr") && !cli_has_ext(a.out, ".tsv"))
+        cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", a.out);
+    cli_check(nl_dist_parse(a.to, &d));
     x = cli_read_field(in, &meta);
-    if (cli_has_ext(out, ".tsv") && x->dim != 1)
-        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", x->dim, out);
-    tmp = cli_out_begin(out);
-    cli_check(nl_synth_shape(x, d, empirical));
+    if (cli_has_ext(a.out, ".tsv") && x->dim != 1)
+        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", x->dim, a.out);
+    tmp = cli_out_begin(a.out);
+    cli_check(nl_synth_shape(x, d, a.empirical));
     for (size_t i = 0; i < x->count; i++)
-        if (!isfinite(x->data[i]) || (cli_has_ext(out, ".exr") && !(fabs(x->data[i]) <= FLT_MAX)))
+        if (!isfinite(x->data[i]) || (cli_has_ext(a.out, ".exr") && !(fabs(x->data[i]) <= FLT_MAX)))
             cli_die(2, "--to: %s gives the value %g at sample %zu, beyond %s; expected a distribution whose "
-                    "values fit the output", to, x->data[i], i, cli_has_ext(out, ".exr") ? "the float32 range of "
+                    "values fit the output", a.to, x->data[i], i, cli_has_ext(a.out, ".exr") ? "the float32 range of "
                     "EXR" : "the finite numbers");
     size_t len = strlen(meta.method);
-    snprintf(meta.method + len, sizeof meta.method - len, "%s shape:%s%s", len ? " +" : "", to,
-             empirical ? ",empirical" : "");
-    cli_write_field(out, tmp, x, &meta);
-    cli_out_commit(out);
+    snprintf(meta.method + len, sizeof meta.method - len, "%s shape:%s%s", len ? " +" : "", a.to,
+             a.empirical ? ",empirical" : "");
+    cli_write_field(a.out, tmp, x, &meta);
+    cli_out_commit(a.out);
     nl_field_free(x);
     nl_dist_free(d);
     return 0;

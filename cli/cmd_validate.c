@@ -50,15 +50,6 @@ static const char help[] =
     "or unresolved or none could run (the model is not positive definite), 2 for bad\n"
     "input, 1 when an output cannot be written.\n";
 
-static void neighborhood_option(void *obj, const char *label, const char *arg)
-{
-    static const cli_opt n = {.type = CLI_OPT_INT, CLI_AT(cli_validate, o.subdiv_N), CLI_FROM_TO(1, 2147483647)};
-    if (strcmp(arg, "auto") == 0)
-        ((cli_validate *)obj)->o.subdiv_N = 0;
-    else
-        cli_opt_take(&n, obj, label, arg);
-}
-
 static const cli_opt rows[] = {
     CLI_STRING("acf", cli_validate, spec), CLI_STRING("spectrum", cli_validate, spectrum),
     CLI_OPT_DIMS(cli_validate, dim, 3, .need = "1, 2 or 3"), CLI_OPT_OUTPUT(cli_validate, dir),
@@ -67,12 +58,12 @@ static const cli_opt rows[] = {
     CLI_U64("seed", cli_validate, o.seed),
     /* the methods' options, as for synth */
     CLI_INT("levels", cli_validate, o.subdiv_levels, CLI_FROM_TO(1, 30)),
-    CLI_CALL("neighborhood", neighborhood_option), CLI_POSITIVE("tol", cli_validate, o.subdiv_tol, .what = "number"),
+    CLI_INT("neighborhood", cli_validate, o.subdiv_N, CLI_FROM_TO(1, 2147483647), .flags = CLI_AUTO),
+    CLI_POSITIVE("tol", cli_validate, o.subdiv_tol, .what = "number"),
     CLI_INT("random-neighborhoods", cli_validate, o.subdiv_random, CLI_FROM_TO(1, 256)),
     CLI_POSITIVE("density", cli_validate, o.sparse_density, .what = "number"),
     CLI_INT("radius", cli_validate, o.sparse_radius, CLI_FROM_TO(1, 4096)),
-    CLI_INT("cell", cli_validate, o.sparse_cell, CLI_FROM_TO(1, 1048576)),
-    {0}};
+    CLI_INT("cell", cli_validate, o.sparse_cell, CLI_FROM_TO(1, 1048576)), {0}};
 
 /* The size, within the work limit: every method synthesises and estimates
  * M fields, about 2e5 samples a second, so 2^24 samples keep each method

@@ -8,7 +8,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab variogram DATA.tsv|FIELD.exr [--width W] [--cutoff C]\n"
@@ -33,16 +32,14 @@ typedef struct {
     nl_variogram_options o; /* the library's options */
 } opts_t;
 
-static const char *const estimators[] = {"matheron", "cressie", NULL};
-static const int estimator_vals[] = {NL_VARIOGRAM_MATHERON, NL_VARIOGRAM_CRESSIE};
+static const char *const estimators[] = {"matheron", "cressie", NULL}; /* NL_VARIOGRAM_* by index */
 
 static const cli_opt rows[] = {
     CLI_OPT_BINS(opts_t, o), CLI_DOUBLE("direction", opts_t, o.direction, CLI_GIVEN(opts_t, has_dir)),
-    CLI_DOUBLE("angle-tolerance", opts_t, o.tolerance, CLI_GIVEN(opts_t, has_tol), .flags = CLI_RANGE_LO | CLI_RANGE_HI,
-               .lo = 0, .hi = 90, .what = "degrees in [0, 90]"),
-    CLI_CHOICE("estimator", opts_t, o.estimator, .choices = estimators, .vals = estimator_vals),
-    CLI_OPT_JSON(opts_t, json), CLI_OPT_OUTPUT(opts_t, out),
-    {0}};
+    CLI_DOUBLE("angle-tolerance", opts_t, o.tolerance, CLI_GIVEN(opts_t, has_tol),
+               .flags = CLI_RANGE_LO | CLI_RANGE_HI, .lo = 0, .hi = 90, .what = "degrees in [0, 90]"),
+    CLI_CHOICE("estimator", opts_t, o.estimator, .choices = estimators), CLI_OPT_JSON(opts_t, json),
+    CLI_OPT_OUTPUT(opts_t, out), {0}};
 
 static void parse(int argc, char **argv, opts_t *a)
 {

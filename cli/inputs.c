@@ -7,10 +7,10 @@
 #include <stdlib.h>
 
 const cli_opt cli_inputs_rows[] = {
-    CLI_COUNT("realizations", cli_inputs, K, .lo = 1, .flags = CLI_RANGE_HI, .hi = 100000, .what = "at most 100000"),
-    CLI_STRING("acf", cli_inputs, spec), CLI_OPT_SIZES(cli_inputs, n, dim, 2),
-    CLI_OPT_SEED(cli_inputs, seed, seed_set),
-    {0}};
+    CLI_COUNT("realizations", cli_inputs, K, .lo = 1, .hi = 100000, .what = "at most 100000"),
+    CLI_STRING("acf", cli_inputs, spec),
+    {.name = "size", .type = CLI_OPT_SIZE, CLI_AT(cli_inputs, n), CLI_AUX(cli_inputs, dim), .lo = 2},
+    CLI_OPT_SEED(cli_inputs, seed, seed_set), {0}};
 
 void cli_inputs_operands(cli_inputs *in, const char *cmd, int argc, char **argv)
 {

@@ -53,9 +53,9 @@ static int pick(const cli_opt *r, const char *label, const char *arg)
     cli_die(2, "%s: expected %s, got \"%s\"", label, r->what ? r->what : words, arg);
 }
 
-static void range_or_die(const cli_opt *r, const char *label, double v, const char *arg)
+static void range_or_die(const cli_opt *r, unsigned flags, const char *label, double v, const char *arg)
 {
-    if (((r->flags & CLI_RANGE_LO) && !(v >= r->lo)) || ((r->flags & CLI_RANGE_HI) && !(v <= r->hi)))
+    if (((flags & CLI_RANGE_LO) && !(v >= r->lo)) || ((flags & CLI_RANGE_HI) && !(v <= r->hi)))
         cli_die(2, "%s: expected %s, got \"%s\"", label, r->what, arg);
 }
 
@@ -79,17 +79,17 @@ static void take(const cli_opt *r, void *obj, size_t base, const char *label, co
         return;
     }
     switch (r->type) {
-    case CLI_OPT_FLAG: *(int *)p = r->ival ? r->ival : 1; break;
+    case CLI_OPT_FLAG: *(int *)p = 1; break;
     case CLI_OPT_STRING: *(const char **)p = arg; break;
     case CLI_OPT_DOUBLE:
         *(double *)p = cli_parse_double(label, arg);
-        range_or_die(r, label, *(double *)p, arg);
+        range_or_die(r, r->flags, label, *(double *)p, arg);
         break;
     case CLI_OPT_POSITIVE: *(double *)p = cli_parse_positive(label, arg, r->what); break;
     case CLI_OPT_COUNT:
     case CLI_OPT_INT: {
-        size_t v = cli_parse_count(label, arg, (size_t)r->lo);
-        range_or_die(r, label, (double)v, arg);
+        size_t v = (r->flags & CLI_AUTO) && strcmp(arg, "auto") == 0 ? 0 : cli_parse_count(label, arg, (size_t)r->lo);
+        range_or_die(r, r->hi > 0 ? CLI_RANGE_HI : 0, label, (double)v, arg);
         if (r->type == CLI_OPT_INT)
             *(int *)p = (int)v;
         else
@@ -110,8 +110,6 @@ static void take(const cli_opt *r, void *obj, size_t base, const char *label, co
     default: break;
     }
 }
-
-void cli_opt_take(const cli_opt *r, void *obj, const char *label, const char *arg) { take(r, obj, 0, label, arg); }
 
 /* getopt_long's table (the rows' index + 256 as codes, then --help) and
  * the short options. */
@@ -148,11 +146,9 @@ int cli_opt_parse(const char *cmd, const char *help, const cli_opt *rows, void *
                 fputs(help, stdout);
             return 1;
         }
-        if (c < 256)
-            for (i = 0; i < f.n && f.row[i]->letter != c; i++)
+        if (c < 256) /* a short option: its row */
+            for (i = 0; f.row[i]->letter != c; i++)
                 ;
-        if (i < 0 || i >= f.n)
-            continue;
         take(f.row[i], obj, f.base[i], label_of(f.row[i], label, sizeof label), optarg);
     }
     return 0;

@@ -14,7 +14,7 @@
 
 /* A command's options, one field per type. */
 typedef struct {
-    int flag, level, given, choice, drift, dim, sdim, views;
+    int flag, level, given, choice, drift, dim, sdim, views, nb;
     const char *str, *out;
     double x, angle, pos, pair[2], opt;
     size_t count, n[3];
@@ -37,7 +37,6 @@ static const int drift_vals[] = {7, 9};
 
 static const cli_opt rows[] = {
     {.name = "flag", .letter = 'f', .type = CLI_OPT_FLAG, CLI_AT(opts_t, flag)},
-    {.name = "level", .type = CLI_OPT_FLAG, CLI_AT(opts_t, level), .ival = 3},
     {.name = "str", .type = CLI_OPT_STRING, CLI_AT(opts_t, str), CLI_GIVEN(opts_t, given)},
     {.name = "x", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, x)},
     {.name = "angle", .type = CLI_OPT_DOUBLE, CLI_AT(opts_t, angle), .flags = CLI_RANGE_LO | CLI_RANGE_HI, .lo = 0,
@@ -52,6 +51,7 @@ static const cli_opt rows[] = {
     {.name = "opt", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, opt), CLI_GIVEN(opts_t, views), .flags = CLI_OPTIONAL,
      .what = "largest lag"},
     {.name = "call", .type = CLI_OPT_CALL, .fn = call},
+    CLI_INT("nb", opts_t, nb, CLI_FROM_TO(1, 9), .flags = CLI_AUTO, .need = "a neighbourhood"),
     CLI_OPT_DIMS(opts_t, dim, 3),
     CLI_OPT_OUTPUT(opts_t, out),
     {.name = "grid", .type = CLI_OPT_SIZE, CLI_AT(opts_t, n), CLI_AUX(opts_t, sdim), .lo = 2},
@@ -100,10 +100,9 @@ static int parse(opts_t *o, const char *args)
 Test(opt, each_type_fills_its_field)
 {
     opts_t o;
-    cr_assert_eq(parse(&o, "-f --level --str s --x -2.5 --angle 90 --pos 0.25 --count 2 --small 30 --choice gamma "
+    cr_assert_eq(parse(&o, "-f --str s --x -2.5 --angle 90 --pos 0.25 --count 2 --small 30 --choice gamma "
                            "--drift linear --pair 1.5,-2 --call v --dim 2 -o out.tsv --grid 4x5"), 0, "%s", msg);
     cr_expect_eq(o.flag, 1);
-    cr_expect_eq(o.level, 3);
     cr_expect_str_eq(o.str, "s");
     cr_expect_eq(o.given, 1);
     cr_expect_eq(o.x, -2.5);
@@ -186,4 +185,25 @@ Test(opt, shared_group_lands_in_its_struct)
     cr_expect_eq(o.x, 1, "the command's own rows beside the group's");
     bad("--realizations 100001", "noiselab: --realizations: expected at most 100000, got \"100001\"\n");
     bad("--size 1", "noiselab: --size: expected N, NxM or NxMxK with each N >= 2, got \"1\"\n");
+}
+
+Test(opt, auto_and_need)
+{
+    opts_t o;
+    cr_assert_eq(parse(&o, "--nb auto"), 0, "%s", msg);
+    cr_expect_eq(o.nb, 0, "auto is 0");
+    cr_assert_eq(parse(&o, "--nb 9"), 0, "%s", msg);
+    cr_expect_eq(o.nb, 9);
+    bad("--nb 10", "noiselab: --nb: expected 1 to 9, got \"10\"\n");
+    bad("--nb automatic", "noiselab: --nb: expected an integer >= 1, got \"automatic\"\n");
+    memset(&o, 0, sizeof o);
+    o.nb = 3;
+    cli_opt_need("t", rows, &o); /* set: no exit */
+    o.nb = 0;
+    stderr = open_memstream(&msg, &msglen);
+    if (setjmp(back) == 0)
+        cli_opt_need("t", rows, &o);
+    fclose(stderr);
+    cr_expect_eq(code, 2);
+    cr_expect_str_eq(msg, "noiselab: t: --nb: expected a neighbourhood\n");
 }
