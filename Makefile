@@ -147,8 +147,10 @@ $(BUILD)/tests/mpi/%: $(BUILD)/tests/mpi/%.o $(MPILIB) $(LIB)
 python: $(SOLIB)
 	PYTHONPATH=python $(PYTHON) -c 'import noiselab'
 
-$(BUILD)/tests/run: $(TEST_OBJ) $(LIB)
-	$(CC) $(CFLAGS) -o $@ $(TEST_OBJ) $(LIB) $(LDLIBS) -lcriterion
+# The option tables' tests (tests/test_opt.c) link the command line's parser.
+CLI_OPT_OBJ := $(patsubst %,$(BUILD)/cli/%.o,opt util inputs outputs progress)
+$(BUILD)/tests/run: $(TEST_OBJ) $(CLI_OPT_OBJ) $(LIB)
+	$(CC) $(CFLAGS) -o $@ $(TEST_OBJ) $(CLI_OPT_OBJ) $(LIB) $(LDLIBS) -lcriterion
 
 # The catalogue of hostile inputs checks field outputs with this.
 $(BUILD)/tests/finite: $(BUILD)/tests/bad/finite.o $(LIB)

@@ -75,6 +75,8 @@ double cli_parse_double(const char *opt, const char *s);
 size_t cli_parse_count(const char *opt, const char *s, size_t min);
 /* A finite number > 0; otherwise "OPT: expected a positive WHAT, got ..." */
 double cli_parse_positive(const char *opt, const char *s, const char *what);
+/* "A,B" with both finite; otherwise "OPT: expected two numbers A,B, got ..." */
+void cli_parse_pair(const char *opt, const char *s, double *a, double *b);
 /* --dim D with 1 <= D <= max (dies with exit 2 otherwise) */
 int cli_parse_dim(const char *s, int max);
 int cli_parse_spacing(const char *opt, const char *s, int dim, double *h);

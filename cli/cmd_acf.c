@@ -9,11 +9,9 @@
 #include "../core/nl_error.h"
 
 #include <float.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab acf IN...|--realizations K --acf SPEC --size N [--seed S]\n"
@@ -54,41 +52,21 @@ typedef struct {
     size_t nl;                           /* lags 0 .. nl - 1 */
 } acf_opts;
 
+static const char *const axes[] = {"x", "y", "z", NULL};
+
+static const cli_opt rows[] = {
+    CLI_DOUBLE("max-lag", acf_opts, maxlag, .flags = CLI_RANGE_LO, .lo = 0, .what = "a non-negative lag"),
+    CLI_CHOICE("axis", acf_opts, axis, .choices = axes), CLI_FLAG("radial", acf_opts, radial),
+    CLI_FLAG("unbiased", acf_opts, unbiased), CLI_DOUBLE("mean", acf_opts, mean),
+    CLI_STRING("target", acf_opts, target), CLI_OPT_JSON(acf_opts, json), CLI_OPT_OUTPUT(acf_opts, out),
+    CLI_FLAG("direct", acf_opts, direct), CLI_FLAG("bands", acf_opts, bands),
+    CLI_GROUP(cli_inputs_rows, acf_opts, src), {0}};
+
 static void parse(int argc, char **argv, acf_opts *o)
 {
-    static const struct option opts[] = {
-        {"max-lag", required_argument, 0, 'L'}, {"axis", required_argument, 0, 'a'},
-        {"radial", no_argument, 0, 'r'},        {"unbiased", no_argument, 0, 'u'},
-        {"mean", required_argument, 0, 'm'},    {"target", required_argument, 0, 't'},
-        {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
-        {"help", no_argument, 0, 'h'},          {"direct", no_argument, 0, 'D'},
-        {"bands", no_argument, 0, 'B'},          CLI_INPUTS_OPTIONS, {0}};
-    int c;
     o->maxlag = o->mean = NAN;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "acf")) != -1) {
-        switch (c) {
-        case 'L':
-            o->maxlag = cli_parse_double("--max-lag", optarg);
-            if (!(o->maxlag >= 0))
-                cli_die(2, "--max-lag: expected a non-negative lag, got \"%s\"", optarg);
-            break;
-        case 'a':
-            if (strlen(optarg) != 1 || !strchr("xyz", optarg[0]))
-                cli_die(2, "--axis: expected x, y or z, got \"%s\"", optarg);
-            o->axis = optarg[0] - 'x';
-            break;
-        case 'r': o->radial = 1; break;
-        case 'u': o->unbiased = 1; break;
-        case 'm': o->mean = cli_parse_double("--mean", optarg); break;
-        case 't': o->target = optarg; break;
-        case 'j': o->json = 1; break;
-        case 'D': o->direct = 1; break;
-        case 'B': o->bands = 1; break;
-        case 'o': o->out = optarg; break;
-        case 'h': fputs(help, stdout); exit(0);
-        default: cli_inputs_option(&o->src, c, optarg); /* --realizations, --acf, --size, --seed */
-        }
-    }
+    if (cli_opt_parse("acf", help, rows, o, argc, argv))
+        exit(0);
     cli_inputs_operands(&o->src, "acf", argc, argv);
     o->nin = o->src.count;
     if (o->nin > 1 && (o->bands || (o->out && cli_has_ext(o->out, ".exr"))))

@@ -4,6 +4,7 @@
  * radially averaged) and its histogram.  The data go to a temporary folder
  * (cli/card_data.c) and gnuplot draws them. */
 #include "cli.h"
+#include "opt.h"
 #include "card.h"
 #include "../analysis/hist.h"
 #include "../analysis/psd.h"
@@ -32,20 +33,21 @@ static const char help[] =
     "Fields larger than 512 samples a side are shown every k-th sample (the field)\n"
     "or as k x k block means (the periodogram); the estimates use every sample.\n";
 
+/* The command's options. */
+typedef struct {
+    const char *out, *spec; /* -o, --acf or --spectrum */
+} opts_t;
+
+static const cli_opt rows[] = {
+    CLI_OPT_OUTPUT(opts_t, out), CLI_OPT_MODEL(opts_t, spec), {0}};
+
 static const char *parse(int argc, char **argv, const char **spec)
 {
-    static const struct option opts[] = {{"output", required_argument, 0, 'o'}, {"acf", required_argument, 0, 'a'},
-                                         {"spectrum", required_argument, 0, 'a'}, {"help", no_argument, 0, 'h'},
-                                         {0}};
-    const char *out = NULL;
-    int c;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "card")) != -1) {
-        switch (c) {
-        case 'o': out = optarg; break;
-        case 'a': *spec = optarg; break;
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    opts_t a = {0};
+    if (cli_opt_parse("card", help, rows, &a, argc, argv))
+        exit(0);
+    const char *out = a.out;
+    *spec = a.spec;
     cli_one_operand("card", "field file", argc, argv);
     if (!out || !cli_has_ext(out, ".png"))
         cli_die(2, "card: -o: expected an output file ending in .png");

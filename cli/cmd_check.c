@@ -1,9 +1,9 @@
 /* noiselab check: is a model a valid autocorrelation, how smooth, how singular. */
 #include "cli.h"
+#include "opt.h"
 #include "../analysis/check.h"
 #include "../core/model.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -227,48 +227,44 @@ static void print_text(const char *spec, const nl_check *k, const char *nb)
                ldexp(k->scale, -24));
 }
 
+/* The command's options. */
+typedef struct {
+    const char *spec; /* --acf or --spectrum */
+    int dim, json;    /* --dim, --json */
+    int prof;         /* --profile-1d given */
+    double rmax;      /* its largest lag (0: the default) */
+} opts_t;
+
+static const cli_opt rows[] = {
+    CLI_OPT_MODEL(opts_t, spec, .need = "a model (see noiselab models)"),
+    CLI_OPT_DIMS(opts_t, dim, 3, .need = "1, 2 or 3"), CLI_OPT_JSON(opts_t, json),
+    CLI_POSITIVE("profile-1d", opts_t, rmax, CLI_GIVEN(opts_t, prof), .flags = CLI_OPTIONAL, .what = "largest lag"),
+    {0}};
+
 int cli_cmd_check(int argc, char **argv)
 {
-    static const struct option opts[] = {{"acf", required_argument, 0, 'a'}, {"spectrum", required_argument, 0, 'a'},
-                                         {"dim", required_argument, 0, 'd'}, {"json", no_argument, 0, 'j'},
-                                         {"help", no_argument, 0, 'h'},      {"profile-1d", optional_argument, 0, 'p'},
-                                         {0}};
-    const char *spec = NULL;
-    int c, dim = 0, json = 0, st, prof = 0;
-    double rmax = 0;
+    opts_t a = {0};
+    int st;
     nl_model *m;
     nl_check k;
     char nb[4096];
-    while ((c = cli_getopt(argc, argv, ":h", opts, "check")) != -1) {
-        switch (c) {
-        case 'a': spec = optarg; break;
-        case 'd': dim = cli_parse_dim(optarg, 3); break;
-        case 'j': json = 1; break;
-        case 'p':
-            prof = 1;
-            rmax = optarg ? cli_parse_positive("--profile-1d", optarg, "largest lag") : 0;
-            break;
-        case 'h': fputs(help, stdout); return 0;
-        }
-    }
+    if (cli_opt_parse("check", help, rows, &a, argc, argv))
+        return 0;
     cli_no_operands("check", argc, argv);
-    if (!spec)
-        cli_die(2, "check: --acf: expected a model (see noiselab models)");
-    if (!dim)
-        cli_die(2, "check: --dim: expected 1, 2 or 3");
-    if (prof && dim != 2)
-        cli_die(2, "check: --profile-1d: expected --dim 2 (eq. (14) is the 2D sweep), got --dim %d", dim);
-    if (!(st = nl_model_parse(spec, &m)) && prof && nl_model_is_spectral(m))
-        cli_die(2, "check: --profile-1d: expected a model defined by R (eq. (14) sweeps R(t)), got %s", spec);
-    if (st || (st = nl_check_model(m, dim, &k)) ||
+    cli_opt_need("check", rows, &a);
+    if (a.prof && a.dim != 2)
+        cli_die(2, "check: --profile-1d: expected --dim 2 (eq. (14) is the 2D sweep), got --dim %d", a.dim);
+    if (!(st = nl_model_parse(a.spec, &m)) && a.prof && nl_model_is_spectral(m))
+        cli_die(2, "check: --profile-1d: expected a model defined by R (eq. (14) sweeps R(t)), got %s", a.spec);
+    if (st || (st = nl_check_model(m, a.dim, &k)) ||
         (st = nl_check_neighbours(m, &k, nb, sizeof nb)))
         cli_die_status(st);
-    if (json)
-        print_json(spec, &k, nb, prof ? m : NULL, rmax);
+    if (a.json)
+        print_json(a.spec, &k, nb, a.prof ? m : NULL, a.rmax);
     else
-        print_text(spec, &k, nb);
-    if (prof && !json)
-        profile_1d(m, &k, rmax, NULL);
+        print_text(a.spec, &k, nb);
+    if (a.prof && !a.json)
+        profile_1d(m, &k, a.rmax, NULL);
     nl_model_free(m);
     return 0;
 }

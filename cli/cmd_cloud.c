@@ -1,8 +1,8 @@
 /* noiselab cloud: render a cloud scene (kriged shape + noise) to a picture. */
 #include "cli.h"
+#include "opt.h"
 #include "../render/cloud_scene.h"
 
-#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,41 +44,42 @@ static void write_lum(const char *etmp, const nl_cloud_scene *s, const double *l
     nl_field_free(f);
 }
 
+/* The command's options. */
+typedef struct {
+    const char *out, *exr; /* -o, --exr */
+} opts_t;
+
+static const cli_opt rows[] = {
+    CLI_OPT_OUTPUT(opts_t, out), {.name = "exr", .type = CLI_OPT_STRING, CLI_AT(opts_t, exr)}, {0}};
+
 int cli_cmd_cloud(int argc, char **argv)
 {
-    static const struct option opts[] = {{"output", required_argument, 0, 'o'}, {"exr", required_argument, 0, 'e'},
-                                         {"help", no_argument, 0, 'h'},         {0}};
-    const char *out = NULL, *exr = NULL, *path, *tmp, *etmp = NULL;
-    int c;
+    opts_t a = {0};
+    const char *path, *tmp, *etmp = NULL;
     nl_cloud_scene s;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "cloud")) != -1) {
-        switch (c) {
-        case 'o': out = optarg; break;
-        case 'e': exr = optarg; break;
-        case 'h': fputs(help, stdout); return 0;
-        }
-    }
+    if (cli_opt_parse("cloud", help, rows, &a, argc, argv))
+        return 0;
     path = cli_one_operand("cloud", "scene file", argc, argv);
-    if (!out || !cli_has_ext(out, ".png"))
+    if (!a.out || !cli_has_ext(a.out, ".png"))
         cli_die(2, "cloud: -o: expected an output file ending in .png");
-    if (exr && !cli_has_ext(exr, ".exr"))
-        cli_die(2, "--exr: expected a file ending in .exr, got \"%s\"", exr);
+    if (a.exr && !cli_has_ext(a.exr, ".exr"))
+        cli_die(2, "--exr: expected a file ending in .exr, got \"%s\"", a.exr);
     cli_check(nl_cloud_scene_read(path, &s));
     size_t px[2] = {s.width, s.height};
     cli_check(nl_size_check(2, px, 3 + sizeof(double), 1, NULL));
-    tmp = cli_out_begin(out);
-    etmp = cli_out_begin(exr);
+    tmp = cli_out_begin(a.out);
+    etmp = cli_out_begin(a.exr);
     unsigned char *rgb = cli_malloc(s.width * s.height * 3);
-    double *lum = exr ? cli_malloc(s.width * s.height * sizeof *lum) : NULL;
+    double *lum = a.exr ? cli_malloc(s.width * s.height * sizeof *lum) : NULL;
     cli_progress("cloud", 0);
     cli_check(nl_render_cloud(&s, rgb, lum, progress));
     cli_progress_done();
     cli_check(nl_png_write_rgb8(tmp, s.width, s.height, rgb));
-    if (exr) {
+    if (a.exr) {
         write_lum(etmp, &s, lum, path);
-        cli_out_commit(exr);
+        cli_out_commit(a.exr);
     }
-    cli_out_commit(out);
+    cli_out_commit(a.out);
     free(rgb), free(lum);
     nl_cloud_scene_free(&s);
     return 0;

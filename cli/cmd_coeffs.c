@@ -1,12 +1,11 @@
 /* noiselab coeffs: midpoint estimation coefficients of generalized
  * stochastic subdivision, level by level. */
 #include "coeffs.h"
+#include "opt.h"
 #include "synth.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab coeffs --acf SPEC --dim 1|2 [--neighborhood N|auto] [--tol [variance:]E]\n"
@@ -116,44 +115,28 @@ typedef struct {
     double tol, s0;
 } coeffs_args;
 
+static void tol_option(void *obj, const char *label, const char *arg)
+{
+    coeffs_args *a = obj;
+    a->tol = cli_synth_parse_tol(label, arg, &a->stop);
+}
+
+static const char *const displacements[] = {"independent", "correlated", NULL};
+
+static const cli_opt rows[] = {
+    CLI_STRING("acf", coeffs_args, spec, .need = "an autocorrelation model (see noiselab models)"),
+    CLI_OPT_DIMS(coeffs_args, dim, 2, .need = "1 or 2"),
+    CLI_INT("neighborhood", coeffs_args, N, .lo = 1, .flags = CLI_AUTO), CLI_CALL("tol", tol_option),
+    CLI_INT("levels", coeffs_args, levels, .lo = 1), CLI_POSITIVE("spacing0", coeffs_args, s0, .what = "number"),
+    CLI_OPT_JSON(coeffs_args, json), CLI_CHOICE("displacements", coeffs_args, disp, .choices = displacements),
+    CLI_INT("taps", coeffs_args, taps, CLI_FROM_TO(1, NL_SUBDIV_MAX_TAPS)), CLI_FLAG("error", coeffs_args, error),
+    CLI_STRING("size", coeffs_args, size), {0}};
+
 /* Returns 1 when --help was printed. */
 static int parse(int argc, char **argv, coeffs_args *a)
 {
-    static const struct option opts[] = {
-        {"acf", required_argument, 0, 'a'},      {"dim", required_argument, 0, 'd'},
-        {"neighborhood", required_argument, 0, 'N'}, {"tol", required_argument, 0, 't'},
-        {"levels", required_argument, 0, 'L'},   {"spacing0", required_argument, 0, 's'},
-        {"json", no_argument, 0, 'j'},           {"help", no_argument, 0, 'h'},
-        {"displacements", required_argument, 0, 'X'}, {"taps", required_argument, 0, 'T'},
-        {"error", no_argument, 0, 'e'},          {"size", required_argument, 0, 'n'},
-        {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":h", opts, "coeffs")) != -1) {
-        switch (c) {
-        case 'a': a->spec = optarg; break;
-        case 'd': a->dim = cli_parse_dim(optarg, 2); break;
-        case 'N':
-            a->N = strcmp(optarg, "auto") == 0 ? 0 : (int)cli_parse_count("--neighborhood", optarg, 1);
-            break;
-        case 't': a->tol = cli_synth_parse_tol("--tol", optarg, &a->stop); break;
-        case 'L': a->levels = (int)cli_parse_count("--levels", optarg, 1); break;
-        case 's': a->s0 = cli_parse_positive("--spacing0", optarg, "number"); break;
-        case 'j': a->json = 1; break;
-        case 'X':
-            if (strcmp(optarg, "independent") && strcmp(optarg, "correlated"))
-                cli_die(2, "--displacements: expected independent or correlated, got \"%s\"", optarg);
-            a->disp = strcmp(optarg, "correlated") == 0;
-            break;
-        case 'T':
-            a->taps = (int)cli_parse_count("--taps", optarg, 1);
-            if (a->taps > NL_SUBDIV_MAX_TAPS)
-                cli_die(2, "--taps: expected 1 to %d, got \"%s\"", NL_SUBDIV_MAX_TAPS, optarg);
-            break;
-        case 'e': a->error = 1; break;
-        case 'n': a->size = optarg; break;
-        case 'h': fputs(help, stdout); return 1;
-        }
-    }
+    if (cli_opt_parse("coeffs", help, rows, a, argc, argv))
+        return 1;
     cli_no_operands("coeffs", argc, argv);
     return 0;
 }
@@ -161,10 +144,7 @@ static int parse(int argc, char **argv, coeffs_args *a)
 /* The options against each other and the work they ask for. */
 static void check_args(coeffs_args *a, size_t *n)
 {
-    if (!a->spec)
-        cli_die(2, "coeffs: --acf: expected an autocorrelation model (see noiselab models)");
-    if (!a->dim)
-        cli_die(2, "coeffs: --dim: expected 1 or 2");
+    cli_opt_need("coeffs", rows, a);
     if (a->taps && !a->disp)
         cli_die(2, "--taps %d: expected --displacements correlated (independent displacements have no filter)",
                 a->taps);

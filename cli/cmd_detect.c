@@ -1,11 +1,11 @@
 /* noiselab detect: creases and aliasing in a subdivision field. */
 #include "cli.h"
+#include "opt.h"
 #include "../core/nl_error.h"
 #include "../analysis/aliasing.h"
 #include "../analysis/creases.h"
 #include "../core/model.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -21,54 +21,54 @@ static const char help[] =
     "            above 0.1; with a model, also the value its spectrum predicts\n"
     "Exit status 0 whatever is found; the flags are in the output.\n";
 
+/* The command's options. */
+typedef struct {
+    const char *spec;  /* --acf or --spectrum */
+    int levels, json;  /* --levels, --json */
+} opts_t;
+
+static const cli_opt rows[] = {
+    CLI_INT("levels", opts_t, levels, .lo = 1, .need = "the number of subdivision levels of the field"),
+    CLI_OPT_MODEL(opts_t, spec), CLI_OPT_JSON(opts_t, json), {0}};
+
 int cli_cmd_detect(int argc, char **argv)
 {
-    static const struct option opts[] = {{"levels", required_argument, 0, 'L'}, {"acf", required_argument, 0, 'a'},
-                                         {"spectrum", required_argument, 0, 'a'}, {"json", no_argument, 0, 'j'},         {"help", no_argument, 0, 'h'},
-                                         {0}};
-    const char *spec = NULL;
-    int c, L = 0, json = 0, st;
+    opts_t a = {0};
+    int st;
     double A, P = NAN;
     nl_creases cr;
     nl_field *x;
-    while ((c = cli_getopt(argc, argv, ":h", opts, "detect")) != -1) {
-        switch (c) {
-        case 'L': L = (int)cli_parse_count("--levels", optarg, 1); break;
-        case 'a': spec = optarg; break;
-        case 'j': json = 1; break;
-        case 'h': fputs(help, stdout); return 0;
-        }
-    }
+    if (cli_opt_parse("detect", help, rows, &a, argc, argv))
+        return 0;
     const char *in = cli_one_operand("detect", "input file", argc, argv);
-    if (!L)
-        cli_die(2, "detect: --levels: expected the number of subdivision levels of the field");
-    if (L > 40)
-        cli_die(2, "--levels: expected at most 40, got %d", L);
+    cli_opt_need("detect", rows, &a);
+    if (a.levels > 40)
+        cli_die(2, "--levels: expected at most 40, got %d", a.levels);
     x = cli_read_field(in, NULL);
-    if ((st = nl_creases_measure(x, L, &cr)) || (st = nl_aliasing_measure(x, &A)))
-        cli_die(nl_error_is_input(st) ? 2 : 1, "--levels %d on %s: %s", L, in, nl_errmsg());
+    if ((st = nl_creases_measure(x, a.levels, &cr)) || (st = nl_aliasing_measure(x, &A)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--levels %d on %s: %s", a.levels, in, nl_errmsg());
     if (!isfinite(A) || !isfinite(cr.index))
         cli_die(2, "detect: %s gives an undefined measure (crease index %g, aliasing %g); expected a random field",
                 in, cr.index, A);
-    if (spec) {
+    if (a.spec) {
         nl_model *m;
-        if ((st = nl_model_parse(spec, &m)) || (st = nl_aliasing_predict(m, x, &P)))
+        if ((st = nl_model_parse(a.spec, &m)) || (st = nl_aliasing_predict(m, x, &P)))
             cli_die_status(st);
         nl_model_free(m);
     }
-    if (json) {
+    if (a.json) {
         json_t *fl = json_array();
         if (cr.flagged)
             json_array_append_new(fl, json_string("crease"));
         if (A > NL_ALIAS_MAX)
             json_array_append_new(fl, json_string("aliasing"));
         cli_json_print(json_pack("{s:f,s:o,s:f,s:o,s:o}", "crease_index", cr.index, "crease_ratios",
-                                 cli_json_array(cr.ratio, (size_t)L + 1), "aliasing", A, "aliasing_predicted",
+                                 cli_json_array(cr.ratio, (size_t)a.levels + 1), "aliasing", A, "aliasing_predicted",
                                  isnan(P) ? json_null() : json_real(P), "flags", fl));
     } else {
         printf("crease index %.3f (threshold %.1f)%s\n", cr.index, NL_CREASE_MAX, cr.flagged ? "  crease" : "");
         printf("  curvature ratio by level:");
-        for (int k = 0; k <= L; k++)
+        for (int k = 0; k <= a.levels; k++)
             if (!isnan(cr.ratio[k]))
                 printf(" %d:%.2f", k, cr.ratio[k]);
         printf("\naliasing %.4f (threshold %.1f)%s", A, NL_ALIAS_MAX, A > NL_ALIAS_MAX ? "  aliasing" : "");

@@ -1,12 +1,12 @@
 /* noiselab fit: fit a covariance model to scattered data or a field. */
 #include "cli.h"
+#include "opt.h"
 #include "../analysis/fit.h"
 #include "../analysis/variogram.h"
 #include "../core/family.h"
 #include "../core/io_points.h"
 #include "../core/nl_error.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -77,57 +77,37 @@ typedef struct {
     char names[NL_FIT_MAX_FIX][32]; /* --fix names */
 } opts_t;
 
-static void parse_fix(opts_t *a, const char *s)
+static void parse_fix(void *obj, const char *label, const char *s)
 {
+    opts_t *a = obj;
     const char *eq = strchr(s, '=');
     size_t k = a->o.nfix;
     if (!eq || eq == s || (size_t)(eq - s) >= sizeof a->names[0])
-        cli_die(2, "--fix: expected NAME=VALUE, got \"%s\"", s);
+        cli_die(2, "%s: expected NAME=VALUE, got \"%s\"", label, s);
     if (k >= NL_FIT_MAX_FIX)
-        cli_die(2, "--fix: expected at most %d, got \"%s\" beyond them", NL_FIT_MAX_FIX, s);
+        cli_die(2, "%s: expected at most %d, got \"%s\" beyond them", label, NL_FIT_MAX_FIX, s);
     memcpy(a->names[k], s, (size_t)(eq - s));
     a->names[k][eq - s] = 0;
     a->o.fix_name[k] = a->names[k];
-    a->o.fix_value[k] = cli_parse_double("--fix", eq + 1);
+    a->o.fix_value[k] = cli_parse_double(label, eq + 1);
     a->o.nfix++;
 }
 
-static int pick(const char *opt, const char *s, const char *const *words, int n)
-{
-    char list[128] = "";
-    for (int i = 0; i < n; i++)
-        if (strcmp(s, words[i]) == 0)
-            return i;
-    for (int i = 0; i < n; i++)
-        snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", i == 0 ? "" : i < n - 1 ? ", " : " or ",
-                 words[i]);
-    cli_die(2, "%s: expected %s, got \"%s\"", opt, list, s);
-}
+static const char *const methods[] = {"wls", "ml", "reml", NULL};
+static const char *const weights[] = {"cressie", "pairs", "reweighted", "distance", NULL};
+
+static const cli_opt rows[] = {
+    CLI_STRING("model", opts_t, o.family), CLI_FLAG("nugget", opts_t, o.nugget), CLI_CALL("fix", parse_fix),
+    CLI_CHOICE("method", opts_t, method, .choices = methods),
+    CLI_CHOICE("weights", opts_t, o.weights, .choices = weights), CLI_OPT_BINS(opts_t, vo),
+    CLI_OPT_JSON(opts_t, json), {0}};
 
 static void parse(int argc, char **argv, opts_t *a)
 {
-    static const struct option opts[] = {
-        {"model", required_argument, 0, 'm'},  {"nugget", no_argument, 0, 'n'},
-        {"fix", required_argument, 0, 'f'},    {"method", required_argument, 0, 'M'},
-        {"weights", required_argument, 0, 'W'},{"width", required_argument, 0, 'w'},
-        {"cutoff", required_argument, 0, 'c'}, {"json", no_argument, 0, 'j'},
-        {"help", no_argument, 0, 'h'},         {0}};
-    static const char *const methods[] = {"wls", "ml", "reml"}, *const weights[] = {"cressie", "pairs", "reweighted",
-                                                                                       "distance"};
-    int c;
     nl_variogram_options_default(&a->vo);
-    while ((c = cli_getopt(argc, argv, ":h", opts, "fit")) != -1) {
-        switch (c) {
-        case 'm': a->o.family = optarg; break;
-        case 'n': a->o.nugget = 1; break;
-        case 'f': parse_fix(a, optarg); break;
-        case 'M': a->method = pick("--method", optarg, methods, 3); break;
-        case 'W': a->o.weights = (nl_fit_weights)pick("--weights", optarg, weights, 4); break;
-        case 'w': a->vo.width = cli_parse_positive("--width", optarg, "bin width"); break;
-        case 'c': a->vo.cutoff = cli_parse_positive("--cutoff", optarg, "cutoff distance"); break;
-        case 'j': a->json = 1; break;
-        case 'h': print_help(); exit(0);
-        }
+    if (cli_opt_parse("fit", NULL, rows, a, argc, argv)) {
+        print_help();
+        exit(0);
     }
     a->in = cli_one_operand("fit", "input (points .tsv or field .exr)", argc, argv);
     if (!a->o.family)

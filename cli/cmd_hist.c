@@ -10,7 +10,6 @@
 #include "../core/dist.h"
 #include "../core/nl_error.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -74,26 +73,16 @@ typedef struct {
     double n_eff, tau;         /* effective n, correlation left (kept / n_eff) */
 } hist_test;
 
+static const cli_opt rows[] = {
+    CLI_COUNT("bins", hist_opts, bins, .lo = 1), CLI_OPT_JSON(hist_opts, json),
+    CLI_STRING("against", hist_opts, against), CLI_FLAG("independent", hist_opts, independent),
+    CLI_OPT_OUTPUT(hist_opts, out), CLI_GROUP(cli_inputs_rows, hist_opts, src), {0}};
+
 static void parse(int argc, char **argv, hist_opts *o)
 {
-    static const struct option opts[] = {{"bins", required_argument, 0, 'b'}, {"json", no_argument, 0, 'j'},
-                                         {"against", required_argument, 0, 'a'},
-                                         {"independent", no_argument, 0, 'I'},
-                                         {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
-                                         CLI_INPUTS_OPTIONS, {0}};
-    int c;
     o->bins = 50;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "hist")) != -1) {
-        switch (c) {
-        case 'b': o->bins = cli_parse_count("--bins", optarg, 1); break;
-        case 'a': o->against = optarg; break;
-        case 'I': o->independent = 1; break;
-        case 'j': o->json = 1; break;
-        case 'o': o->out = optarg; break;
-        case 'h': fputs(help, stdout); exit(0);
-        default: cli_inputs_option(&o->src, c, optarg); /* --realizations, --acf, --size, --seed */
-        }
-    }
+    if (cli_opt_parse("hist", help, rows, o, argc, argv))
+        exit(0);
     cli_inputs_operands(&o->src, "hist", argc, argv);
     o->nin = o->src.count;
     if (o->out && !cli_has_ext(o->out, ".tsv"))

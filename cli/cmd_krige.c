@@ -1,5 +1,6 @@
 /* noiselab krige: ordinary or simple kriging of scattered data onto a grid. */
 #include "cli.h"
+#include "opt.h"
 #include "../analysis/krige.h"
 #include "../analysis/krige_local.h"
 #include "../core/io_points.h"
@@ -7,7 +8,6 @@
 #include "../core/nl_error.h"
 
 #include <float.h>
-#include <getopt.h>
 #include <string.h>
 #include <math.h>
 #include <stdio.h>
@@ -75,16 +75,20 @@ static void check_reach(const opts_t *a, const nl_points *pt)
     }
 }
 
-static int parse_drift(const char *s)
-{
-    if (strcmp(s, "constant") == 0)
-        return NL_DRIFT_CONSTANT;
-    if (strcmp(s, "linear") == 0)
-        return NL_DRIFT_LINEAR;
-    if (strcmp(s, "quadratic") == 0)
-        return NL_DRIFT_QUADRATIC;
-    cli_die(2, "--drift: expected constant, linear or quadratic, got \"%s\"", s);
-}
+static const char *const drifts[] = {"constant", "linear", "quadratic", NULL}; /* NL_DRIFT_* by index */
+
+static const cli_opt rows[] = {
+    CLI_STRING("data", opts_t, data, .need = "a table of points (x, y[, z], value)"),
+    CLI_STRING("acf", opts_t, spec, .need = "a covariance model (see noiselab models)"),
+    CLI_STRING("grid", opts_t, grid, .need = "the output grid WxH[xD]"),
+    CLI_STRING("extent", opts_t, ext, .need = "the grid's extent a:b,c:d[,e:f]"), CLI_DOUBLE("mean", opts_t, mean),
+    CLI_FLAG("strict", opts_t, strict), CLI_OPT_JSON(opts_t, json),
+    CLI_OPT_OUTPUT(opts_t, out, .need = "an output file (.exr or .tsv)"), CLI_STRING("variance", opts_t, vout),
+    /* the local or universal path */
+    CLI_COUNT("nmax", opts_t, nmax, CLI_GIVEN(opts_t, local), .lo = 1),
+    CLI_POSITIVE("radius", opts_t, radius, CLI_GIVEN(opts_t, local), .what = "distance"),
+    CLI_CHOICE("drift", opts_t, drift, CLI_GIVEN(opts_t, local), .choices = drifts),
+    CLI_FLAG("cross-validate", opts_t, cv, CLI_GIVEN(opts_t, local)), {0}};
 
 /* --cross-validate: no grid; -o (optional) is a TSV of the points. */
 static void parse_cv(opts_t *a)
@@ -104,47 +108,14 @@ static void parse_cv(opts_t *a)
 
 static void parse(int argc, char **argv, opts_t *a)
 {
-    static const struct option opts[] = {
-        {"data", required_argument, 0, 'd'}, {"acf", required_argument, 0, 'a'},    {"grid", required_argument, 0, 'g'},
-        {"extent", required_argument, 0, 'e'}, {"mean", required_argument, 0, 'm'}, {"strict", no_argument, 0, 's'},
-        {"json", no_argument, 0, 'j'},       {"output", required_argument, 0, 'o'}, {"variance", required_argument, 0, 'v'},
-        {"nmax", required_argument, 0, 'n'}, {"radius", required_argument, 0, 'r'},
-        {"drift", required_argument, 0, 'D'}, {"cross-validate", no_argument, 0, 'c'},
-        {"help", no_argument, 0, 'h'},       {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "krige")) != -1) {
-        switch (c) {
-        case 'd': a->data = optarg; break;
-        case 'a': a->spec = optarg; break;
-        case 'g': a->grid = optarg; break;
-        case 'e': a->ext = optarg; break;
-        case 'm': a->mean = cli_parse_double("--mean", optarg); break;
-        case 's': a->strict = 1; break;
-        case 'j': a->json = 1; break;
-        case 'o': a->out = optarg; break;
-        case 'v': a->vout = optarg; break;
-        case 'n': a->nmax = cli_parse_count("--nmax", optarg, 1), a->local = 1; break;
-        case 'r': a->radius = cli_parse_positive("--radius", optarg, "distance"), a->local = 1; break;
-        case 'D': a->drift = parse_drift(optarg), a->local = 1; break;
-        case 'c': a->cv = 1, a->local = 1; break;
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    if (cli_opt_parse("krige", help, rows, a, argc, argv))
+        exit(0);
     cli_no_operands("krige", argc, argv);
     if (a->cv) {
         parse_cv(a);
         return;
     }
-    if (!a->data)
-        cli_die(2, "krige: --data: expected a table of points (x, y[, z], value)");
-    if (!a->spec)
-        cli_die(2, "krige: --acf: expected a covariance model (see noiselab models)");
-    if (!a->grid)
-        cli_die(2, "krige: --grid: expected the output grid WxH[xD]");
-    if (!a->ext)
-        cli_die(2, "krige: --extent: expected the grid's extent a:b,c:d[,e:f]");
-    if (!a->out)
-        cli_die(2, "krige: -o: expected an output file (.exr or .tsv)");
+    cli_opt_need("krige", rows, a);
     if (a->drift != NL_DRIFT_CONSTANT && !isnan(a->mean))
         cli_die(2, "--mean: expected no --drift with a known mean, got --mean %g", a->mean);
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);

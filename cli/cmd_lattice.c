@@ -1,12 +1,12 @@
 /* noiselab lattice: rank-1 lattices, their wave vectors, and random fields
  * synthesised on them with one FFT (Keller 2001). */
 #include "cli.h"
+#include "opt.h"
 #include "../core/nl_error.h"
 #include "../core/io_obj.h"
 #include "../synth/rank1_model.h"
 
 #include <errno.h>
-#include <getopt.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -48,58 +48,46 @@ typedef struct {
     uint64_t seed;                        /* --seed */
 } opts_t;
 
+/* --acf SPEC or --spectrum SPEC: the last one given counts. */
+static void model_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    a->spec = arg, a->spectral = strcmp(label, "--spectrum") == 0;
+}
+
+static void size_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    a->W = cli_parse_count(label, arg, 2);
+    if (a->W > 8192)
+        cli_die(2, "--size: expected at most 8192 pixels a side, got %zu", a->W);
+}
+
+static void at_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    char *e;
+    a->at[0] = strtod(arg, &e);
+    if (*e == ',')
+        a->at[1] = strtod(e + 1, &e);
+    if (*e || !(fabs(a->at[0]) <= 1e9) || !(fabs(a->at[1]) <= 1e9))
+        cli_die(2, "%s: expected X3[,X4] within 1e9, got \"%s\"", label, arg);
+}
+
+static const cli_opt rows[] = {
+    CLI_COUNT("points", opts_t, N, .lo = 2, .need = "the number of lattice points"),
+    CLI_OPT_DIMS(opts_t, s, 4, .need = "1 to 4"), CLI_STRING("generator", opts_t, gen), CLI_CALL("acf", model_option),
+    CLI_CALL("spectrum", model_option), CLI_POSITIVE("extent", opts_t, extent, .what = "length"),
+    CLI_U64("seed", opts_t, seed), CLI_FLAG("wave-vectors", opts_t, wv), CLI_OPT_JSON(opts_t, json),
+    CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("mesh", opts_t, mesh), CLI_FLAG("clamp", opts_t, clamp),
+    CLI_STRING("image", opts_t, image), CLI_CALL("size", size_option), CLI_CALL("at", at_option), {0}};
+
 static void parse(int argc, char **argv, opts_t *a)
 {
-    static const struct option opts[] = {
-        {"points", required_argument, 0, 'n'}, {"dim", required_argument, 0, 'd'},
-        {"generator", required_argument, 0, 'g'}, {"acf", required_argument, 0, 'a'},
-        {"spectrum", required_argument, 0, 'S'}, {"extent", required_argument, 0, 'E'},
-        {"seed", required_argument, 0, 's'},    {"wave-vectors", no_argument, 0, 'w'},
-        {"json", no_argument, 0, 'j'},          {"output", required_argument, 0, 'o'},
-        {"mesh", required_argument, 0, 'M'},    {"help", no_argument, 0, 'h'},
-        {"clamp", no_argument, 0, 'c'},         {"image", required_argument, 0, 'i'},
-        {"size", required_argument, 0, 'W'},    {"at", required_argument, 0, 'A'},
-        {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "lattice")) != -1) {
-        switch (c) {
-        case 'n': a->N = cli_parse_count("--points", optarg, 2); break;
-        case 'd': a->s = cli_parse_dim(optarg, 4); break;
-        case 'g': a->gen = optarg; break;
-        case 'a': a->spec = optarg; a->spectral = 0; break;
-        case 'S': a->spec = optarg; a->spectral = 1; break;
-        case 'E':
-            a->extent = cli_parse_positive("--extent", optarg, "length");
-            break;
-        case 's': a->seed = cli_parse_u64("--seed", optarg); break;
-        case 'w': a->wv = 1; break;
-        case 'c': a->clamp = 1; break;
-        case 'j': a->json = 1; break;
-        case 'o': a->out = optarg; break;
-        case 'M': a->mesh = optarg; break;
-        case 'i': a->image = optarg; break;
-        case 'W':
-            a->W = cli_parse_count("--size", optarg, 2);
-            if (a->W > 8192)
-                cli_die(2, "--size: expected at most 8192 pixels a side, got %zu", a->W);
-            break;
-        case 'A': {
-            char *e;
-            a->at[0] = strtod(optarg, &e);
-            if (*e == ',')
-                a->at[1] = strtod(e + 1, &e);
-            if (*e || !(fabs(a->at[0]) <= 1e9) || !(fabs(a->at[1]) <= 1e9))
-                cli_die(2, "--at: expected X3[,X4] within 1e9, got \"%s\"", optarg);
-            break;
-        }
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    if (cli_opt_parse("lattice", help, rows, a, argc, argv))
+        exit(0);
     cli_no_operands("lattice", argc, argv);
-    if (!a->N)
-        cli_die(2, "lattice: --points: expected the number of lattice points");
-    if (!a->s)
-        cli_die(2, "lattice: --dim: expected 1 to 4");
+    cli_opt_need("lattice", rows, a);
     if (a->N > (1u << 24))
         cli_die(2, "--points: expected at most 16777216, got %zu", a->N);
     if (a->mesh && a->s != 2)

@@ -1,8 +1,8 @@
 /* noiselab models: the model catalogue. */
 #include "cli.h"
+#include "opt.h"
 #include "../core/model.h"
 
-#include <getopt.h>
 #include <stdio.h>
 
 static const char help[] =
@@ -20,19 +20,16 @@ static const char help[] =
 
 int cli_cmd_models(int argc, char **argv)
 {
-    static const struct option opts[] = {{"json", no_argument, 0, 'j'}, {"help", no_argument, 0, 'h'}, {0}};
-    int c, json = 0;
+    static const cli_opt rows[] = {
+    {.name = "json", .type = CLI_OPT_FLAG}, {0}};
+    int json = 0;
     size_t n;
     const nl_model_info *cat = nl_model_catalogue(&n);
-    while ((c = cli_getopt(argc, argv, ":h", opts, "models")) != -1) {
-        if (c == 'j')
-            json = 1;
-        else if (c == 'h') {
-            char list[256];
-            nl_family_names(NL_FAMILY_ARGUMENT, 0, " and ", list, sizeof list);
-            printf(help, list);
-            return 0;
-        }
+    if (cli_opt_parse("models", NULL, rows, &json, argc, argv)) {
+        char list[256];
+        nl_family_names(NL_FAMILY_ARGUMENT, 0, " and ", list, sizeof list);
+        printf(help, list);
+        return 0;
     }
     cli_no_operands("models", argc, argv);
     if (json) {

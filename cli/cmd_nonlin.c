@@ -1,11 +1,11 @@
 /* noiselab nonlin: predicted ACF and spectrum after a memoryless nonlinearity. */
 #include "cli.h"
+#include "opt.h"
 #include "../core/field.h"
 #include "../analysis/nonlin.h"
 #include "../core/model.h"
 #include "../core/wk.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -39,33 +39,16 @@ typedef struct {
     int K, json, design;                            /* --terms, --json, --design */
 } opts_t;
 
+static const cli_opt rows[] = {
+    CLI_STRING("acf", opts_t, spec), CLI_STRING("g", opts_t, gspec), CLI_COUNT("size", opts_t, n, .lo = 16),
+    CLI_POSITIVE("spacing", opts_t, h, .what = "number"), CLI_INT("terms", opts_t, K, .lo = 2),
+    CLI_OPT_JSON(opts_t, json), CLI_FLAG("design", opts_t, design), CLI_STRING("target", opts_t, tspec),
+    CLI_COUNT("verify", opts_t, verify, .lo = 1), CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("psd", opts_t, pout), {0}};
+
 static void parse(int argc, char **argv, opts_t *a)
 {
-    static const struct option opts[] = {
-        {"acf", required_argument, 0, 'a'},   {"g", required_argument, 0, 'g'},   {"size", required_argument, 0, 'n'},
-        {"spacing", required_argument, 0, 'H'}, {"terms", required_argument, 0, 'K'}, {"json", no_argument, 0, 'j'},
-        {"design", no_argument, 0, 'D'},      {"target", required_argument, 0, 'T'}, {"verify", required_argument, 0, 'V'},
-        {"output", required_argument, 0, 'o'}, {"psd", required_argument, 0, 'p'}, {"help", no_argument, 0, 'h'},
-        {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "nonlin")) != -1) {
-        switch (c) {
-        case 'a': a->spec = optarg; break;
-        case 'g': a->gspec = optarg; break;
-        case 'n': a->n = cli_parse_count("--size", optarg, 16); break;
-        case 'H':
-            a->h = cli_parse_positive("--spacing", optarg, "number");
-            break;
-        case 'K': a->K = (int)cli_parse_count("--terms", optarg, 2); break;
-        case 'j': a->json = 1; break;
-        case 'D': a->design = 1; break;
-        case 'T': a->tspec = optarg; break;
-        case 'V': a->verify = cli_parse_count("--verify", optarg, 1); break;
-        case 'o': a->out = optarg; break;
-        case 'p': a->pout = optarg; break;
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    if (cli_opt_parse("nonlin", help, rows, a, argc, argv))
+        exit(0);
     cli_no_operands("nonlin", argc, argv);
     if (a->design) {
         if (a->spec)

@@ -1,12 +1,12 @@
 /* noiselab ocean: Tessendorf's ocean on a rank-1 lattice or a grid. */
 #include "cli.h"
+#include "opt.h"
 #include "../core/nl_error.h"
 #include "../core/io_obj.h"
 #include "../render/shade.h"
 #include "../synth/ocean.h"
 
 #include <float.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -72,59 +72,24 @@ typedef struct {
     nl_ocean_params o;                            /* the ocean (angle in radians) */
 } opts_t;
 
-static void parse(int argc, char **argv, opts_t *a)
+static void wind_option(void *obj, const char *label, const char *arg)
 {
-    static const struct option opts[] = {
-        {"lattice", required_argument, 0, 'l'}, {"points", required_argument, 0, 'n'},
-        {"grid", required_argument, 0, 'g'},    {"wind", required_argument, 0, 'w'},
-        {"time", required_argument, 0, 't'},    {"frames", required_argument, 0, 'F'},
-        {"dt", required_argument, 0, 'D'},      {"patch", required_argument, 0, 'P'},
-        {"amplitude", required_argument, 0, 'A'}, {"seed", required_argument, 0, 's'},
-        {"size", required_argument, 0, 'W'},    {"output", required_argument, 0, 'o'},
-        {"image", required_argument, 0, 'i'},   {"tile", required_argument, 0, 'T'},
-        {"mesh", required_argument, 0, 'M'},    {"draw", required_argument, 0, 'd'},
-        {"help", no_argument, 0, 'h'},
-        {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "ocean")) != -1) {
-        switch (c) {
-        case 'l': a->lat = optarg; break;
-        case 'n': a->N = cli_parse_count("--points", optarg, 3); break;
-        case 'g': a->M = cli_parse_count("--grid", optarg, 4); break;
-        case 'w':
-            if (sscanf(optarg, "%lf,%lf", &a->v, &a->ang) != 2 || !(a->v > 0) || !isfinite(a->ang))
-                cli_die(2, "--wind: expected V,ANGLE with a positive speed in m/s, got \"%s\"", optarg);
-            break;
-        case 't': a->t0 = cli_parse_double("--time", optarg); break;
-        case 'F': {
-            size_t fr = cli_parse_count("--frames", optarg, 1);
-            if (fr > 10000)
-                cli_die(2, "--frames: expected at most 10000 frames, got \"%s\"", optarg);
-            a->frames = (int)fr;
-            break;
-        }
-        case 'D': a->dt = cli_parse_double("--dt", optarg); break;
-        case 'P':
-            a->o.patch = cli_parse_positive("--patch", optarg, "size in metres");
-            break;
-        case 'A':
-            a->o.amplitude = cli_parse_positive("--amplitude", optarg, "number");
-            break;
-        case 's': a->seed = cli_parse_u64("--seed", optarg); break;
-        case 'W': a->W = cli_parse_count("--size", optarg, 8); break;
-        case 'o': a->out = optarg; break;
-        case 'i': a->image = optarg; break;
-        case 'T': a->tile = optarg; break;
-        case 'M': a->mesh = optarg; break;
-        case 'd':
-            if (strcmp(optarg, "series") && strcmp(optarg, "delaunay"))
-                cli_die(2, "--draw: expected series or delaunay, got \"%s\"", optarg);
-            a->delaunay = !strcmp(optarg, "delaunay");
-            break;
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    opts_t *a = obj;
+    if (sscanf(arg, "%lf,%lf", &a->v, &a->ang) != 2 || !(a->v > 0) || !isfinite(a->ang))
+        cli_die(2, "%s: expected V,ANGLE with a positive speed in m/s, got \"%s\"", label, arg);
 }
+
+static const char *const draws[] = {"series", "delaunay", NULL};
+
+static const cli_opt rows[] = {
+    CLI_STRING("lattice", opts_t, lat), CLI_COUNT("points", opts_t, N, .lo = 3),
+    CLI_COUNT("grid", opts_t, M, .lo = 4), CLI_CALL("wind", wind_option), CLI_DOUBLE("time", opts_t, t0),
+    CLI_INT("frames", opts_t, frames, .lo = 1, .hi = 10000, .what = "at most 10000 frames"),
+    CLI_DOUBLE("dt", opts_t, dt), CLI_POSITIVE("patch", opts_t, o.patch, .what = "size in metres"),
+    CLI_POSITIVE("amplitude", opts_t, o.amplitude, .what = "number"), CLI_U64("seed", opts_t, seed),
+    CLI_COUNT("size", opts_t, W, .lo = 8), CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("image", opts_t, image),
+    CLI_STRING("tile", opts_t, tile), CLI_STRING("mesh", opts_t, mesh),
+    CLI_CHOICE("draw", opts_t, delaunay, .choices = draws), {0}};
 
 static void check(int argc, char **argv, const opts_t *a)
 {
@@ -264,7 +229,8 @@ int cli_cmd_ocean(int argc, char **argv)
 {
     opts_t a = {.W = 512, .v = NAN, .frames = 1, .seed = 1, .o = {0, 0, 100, 1e-4}};
     nl_rank1_lattice L;
-    parse(argc, argv, &a);
+    if (cli_opt_parse("ocean", help, rows, &a, argc, argv))
+        exit(0);
     check(argc, argv, &a);
     a.o.wind = a.v, a.o.angle = a.ang * M_PI / 180;
     memset(&L, 0, sizeof L);

@@ -11,7 +11,6 @@
 #include "../core/model.h"
 #include "../core/nl_error.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -64,42 +63,33 @@ typedef struct {
     const char *preview, *pvtmp;           /* picture (and its temporary) */
     double mean, f1, f2;                   /* known mean (NAN: sample), slope band */
     int json, slope, angular;
+    int radial;                            /* --radial: nD output is always radial; accepted for clarity */
     size_t welch, nseg;                    /* segment side (0: periodogram), segments */
     double sector[18], aniso;              /* angular sectors */
     nl_slope sl;                           /* slope fit */
 } psd_opts;
 
+static void slope_option(void *obj, const char *label, const char *arg)
+{
+    psd_opts *o = obj;
+    char *end;
+    o->f1 = strtod(arg, &end);
+    if (end == arg || *end != ':' || (o->f2 = strtod(end + 1, &end), *end) || !(o->f1 > 0) || !(o->f2 > o->f1))
+        cli_die(2, "%s: expected F1:F2 with 0 < F1 < F2, got \"%s\"", label, arg);
+    o->slope = 1;
+}
+
+static const cli_opt rows[] = {
+    CLI_FLAG("radial", psd_opts, radial), CLI_DOUBLE("mean", psd_opts, mean), CLI_STRING("target", psd_opts, target),
+    CLI_OPT_JSON(psd_opts, json), CLI_OPT_OUTPUT(psd_opts, out), CLI_CALL("slope", slope_option),
+    CLI_COUNT("welch", psd_opts, welch, .lo = 4), CLI_FLAG("angular", psd_opts, angular),
+    CLI_STRING("preview", psd_opts, preview), CLI_GROUP(cli_inputs_rows, psd_opts, src), {0}};
+
 static void parse(int argc, char **argv, psd_opts *o)
 {
-    static const struct option opts[] = {
-        {"radial", no_argument, 0, 'r'},     {"mean", required_argument, 0, 'm'},
-        {"target", required_argument, 0, 't'}, {"json", no_argument, 0, 'j'},
-        {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
-        {"slope", required_argument, 0, 's'},  {"welch", required_argument, 0, 'W'},
-        {"angular", no_argument, 0, 'A'},      {"preview", required_argument, 0, 'p'}, CLI_INPUTS_OPTIONS, {0}};
-    int c;
-    char *end;
     o->mean = NAN, o->nseg = 1, o->aniso = NAN;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "psd")) != -1) {
-        switch (c) {
-        case 'r': break; /* nD output is always radial; accepted for clarity */
-        case 'm': o->mean = cli_parse_double("--mean", optarg); break;
-        case 't': o->target = optarg; break;
-        case 'W': o->welch = cli_parse_count("--welch", optarg, 4); break;
-        case 'A': o->angular = 1; break;
-        case 'p': o->preview = optarg; break;
-        case 's':
-            o->f1 = strtod(optarg, &end);
-            if (end == optarg || *end != ':' || (o->f2 = strtod(end + 1, &end), *end) || !(o->f1 > 0) || !(o->f2 > o->f1))
-                cli_die(2, "--slope: expected F1:F2 with 0 < F1 < F2, got \"%s\"", optarg);
-            o->slope = 1;
-            break;
-        case 'j': o->json = 1; break;
-        case 'o': o->out = optarg; break;
-        case 'h': fputs(help, stdout); exit(0);
-        default: cli_inputs_option(&o->src, c, optarg); /* --realizations, --acf, --size, --seed */
-        }
-    }
+    if (cli_opt_parse("psd", help, rows, o, argc, argv))
+        exit(0);
     cli_inputs_operands(&o->src, "psd", argc, argv);
     o->nin = o->src.count;
     if (o->slope && o->nin > 1)

@@ -1,5 +1,6 @@
 /* noiselab render: a 2D field as an 8-bit picture, grey levels or shaded relief. */
 #include "cli.h"
+#include "opt.h"
 #include "../render/colorbar.h"
 #include "../render/shade.h"
 #include "../render/terrain.h"
@@ -41,14 +42,6 @@ static const char help[] =
     "  --cloud-plane Z,S   the plane's height above the camera and terrain samples per\n"
     "                      cloud sample (default 200,4)\n";
 
-/* "A,B" with both finite, or exit 2 naming the option. */
-static void pair(const char *opt, const char *s, double *a, double *b)
-{
-    char c;
-    if (sscanf(s, "%lf,%lf%c", a, b, &c) != 2 || !isfinite(*a) || !isfinite(*b))
-        cli_die(2, "%s: expected two numbers A,B, got \"%s\"", opt, s);
-}
-
 static void perspective(const char *in, const nl_field *x, const char *tmp, nl_render_view *v)
 {
     size_t n[2] = {v->width, v->height};
@@ -74,62 +67,46 @@ typedef struct {
     int persp, tile, sea, given_zs, view_opts, colorbar;       /* flags; view options given */
 } opts_t;
 
-static void parse(int argc, char **argv, opts_t *a)
+static void range_option(void *obj, const char *label, const char *arg)
 {
-    static const struct option opts[] = {{"range", required_argument, 0, 'r'}, {"shade", required_argument, 0, 's'},
-                                         {"zscale", required_argument, 0, 'z'}, {"output", required_argument, 0, 'o'},
-                                         {"matrix", required_argument, 0, 'm'}, {"step", required_argument, 0, 'k'},
-                                         {"perspective", no_argument, 0, 'P'},  {"size", required_argument, 0, 'S'},
-                                         {"camera", required_argument, 0, 'c'}, {"look", required_argument, 0, 'l'},
-                                         {"fov", required_argument, 0, 'f'},    {"sun", required_argument, 0, 'u'},
-                                         {"haze", required_argument, 0, 'H'},   {"water", required_argument, 0, 'w'},
-                                         {"tile", no_argument, 0, 't'},         {"sea", no_argument, 0, 'e'},
-                                         {"clouds", required_argument, 0, 'C'}, {"cloud-plane", required_argument, 0, 'Z'},
-                                         {"colorbar", no_argument, 0, 'b'},     {"help", no_argument, 0, 'h'},
-                                         {0}};
-    int c;
+    opts_t *a = obj;
     char junk;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "render")) != -1) {
-        switch (c) {
-        case 'r':
-            if (sscanf(optarg, "%lf:%lf%c", &a->lo, &a->hi, &junk) != 2 || !(a->hi > a->lo) || !isfinite(a->lo) ||
-                !isfinite(a->hi) || !isfinite(a->hi - a->lo))
-                cli_die(2, "--range: expected LO:HI with LO < HI, both finite and HI - LO finite, got \"%s\"", optarg);
-            break;
-        case 's':
-            if (sscanf(optarg, "%lf,%lf%c", &a->az, &a->el, &junk) != 2 || !(a->el > 0 && a->el <= 90) ||
-                !(fabs(a->az) <= 360))
-                cli_die(2, "--shade: expected AZ,EL in degrees with -360 <= AZ <= 360 and 0 < EL <= 90, got \"%s\"",
-                        optarg);
-            break;
-        case 'z':
-            a->zs = cli_parse_positive("--zscale", optarg, "factor");
-            a->given_zs = 1;
-            break;
-        case 'P': a->persp = 1; break;
-        case 'S': a->size = optarg, a->view_opts++; break;
-        case 'c': a->camera = optarg, a->view_opts++; break;
-        case 'l': a->look = optarg, a->view_opts++; break;
-        case 'f': a->fov = cli_parse_double("--fov", optarg), a->view_opts++; break;
-        case 'u': pair("--sun", optarg, &a->sun[0], &a->sun[1]), a->view_opts++; break;
-        case 'H': a->haze = cli_parse_double("--haze", optarg), a->view_opts++; break;
-        case 'w': a->water = cli_parse_double("--water", optarg), a->view_opts++; break;
-        case 't': a->tile = 1, a->view_opts++; break;
-        case 'e': a->sea = 1, a->view_opts++; break;
-        case 'C': a->clouds = optarg, a->view_opts++; break;
-        case 'Z':
-            pair("--cloud-plane", optarg, &a->plane[0], &a->plane[1]), a->view_opts++;
-            if (!(a->plane[0] > 0 && a->plane[1] > 0))
-                cli_die(2, "--cloud-plane: expected a positive height and scale, got \"%s\"", optarg);
-            break;
-        case 'o': a->out = optarg; break;
-        case 'm': a->matrix = optarg; break;
-        case 'k': a->step = cli_parse_count("--step", optarg, 1); break;
-        case 'b': a->colorbar = 1; break;
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    if (sscanf(arg, "%lf:%lf%c", &a->lo, &a->hi, &junk) != 2 || !(a->hi > a->lo) || !isfinite(a->lo) ||
+        !isfinite(a->hi) || !isfinite(a->hi - a->lo))
+        cli_die(2, "%s: expected LO:HI with LO < HI, both finite and HI - LO finite, got \"%s\"", label, arg);
 }
+
+static void shade_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    char junk;
+    if (sscanf(arg, "%lf,%lf%c", &a->az, &a->el, &junk) != 2 || !(a->el > 0 && a->el <= 90) ||
+        !(fabs(a->az) <= 360))
+        cli_die(2, "%s: expected AZ,EL in degrees with -360 <= AZ <= 360 and 0 < EL <= 90, got \"%s\"", label,
+                arg);
+}
+
+static void plane_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    cli_parse_pair(label, arg, &a->plane[0], &a->plane[1]);
+    if (!(a->plane[0] > 0 && a->plane[1] > 0))
+        cli_die(2, "%s: expected a positive height and scale, got \"%s\"", label, arg);
+}
+
+/* A view option: it needs --perspective. */
+#define VIEW CLI_GIVEN(opts_t, view_opts)
+
+static const cli_opt rows[] = {
+    CLI_CALL("range", range_option), CLI_CALL("shade", shade_option),
+    CLI_POSITIVE("zscale", opts_t, zs, CLI_GIVEN(opts_t, given_zs), .what = "factor"), CLI_OPT_OUTPUT(opts_t, out),
+    CLI_STRING("matrix", opts_t, matrix), CLI_COUNT("step", opts_t, step, .lo = 1),
+    CLI_FLAG("perspective", opts_t, persp), CLI_STRING("size", opts_t, size, VIEW),
+    CLI_STRING("camera", opts_t, camera, VIEW), CLI_STRING("look", opts_t, look, VIEW),
+    CLI_DOUBLE("fov", opts_t, fov, VIEW), CLI_PAIR("sun", opts_t, sun, VIEW), CLI_DOUBLE("haze", opts_t, haze, VIEW),
+    CLI_DOUBLE("water", opts_t, water, VIEW), CLI_FLAG("tile", opts_t, tile, VIEW),
+    CLI_FLAG("sea", opts_t, sea, VIEW), CLI_STRING("clouds", opts_t, clouds, VIEW),
+    CLI_CALL("cloud-plane", plane_option, VIEW), CLI_FLAG("colorbar", opts_t, colorbar), {0}};
 
 static void check(int argc, char **argv, const opts_t *a)
 {
@@ -168,7 +145,7 @@ static void view(const opts_t *a, const nl_field *x, nl_render_view *v)
             cli_die(2, "--camera: expected X,Y,H with H > 0, got \"%s\"", a->camera);
     }
     if (a->look)
-        pair("--look", a->look, &v->azimuth, &v->pitch);
+        cli_parse_pair("--look", a->look, &v->azimuth, &v->pitch);
     if (!isnan(a->fov))
         v->fov = a->fov;
     if (!isnan(a->sun[0]))
@@ -226,7 +203,8 @@ int cli_cmd_render(int argc, char **argv)
     opts_t a = {.plane = {200, 4}, .step = 1, .lo = NAN, .hi = NAN, .az = NAN, .el = NAN, .zs = 1, .fov = NAN,
                 .sun = {NAN, NAN}, .haze = NAN, .water = NAN};
     nl_field *x;
-    parse(argc, argv, &a);
+    if (cli_opt_parse("render", help, rows, &a, argc, argv))
+        exit(0);
     check(argc, argv, &a);
     x = cli_read_field(argv[optind], NULL);
     if (x->dim != 2)

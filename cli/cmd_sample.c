@@ -1,10 +1,10 @@
 /* noiselab sample: a field's values at given or random points, as a data table. */
 #include "cli.h"
+#include "opt.h"
 #include "../core/field_sample.h"
 #include "../core/io_coords.h"
 #include "../core/nl_error.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -35,30 +35,17 @@ typedef struct {
     int interp, given_seed;           /* NL_INTERP_*, --seed given */
 } opts_t;
 
+static const char *const interps[] = {"nearest", "bilinear", NULL}; /* NL_INTERP_* by index */
+
+static const cli_opt rows[] = {
+    CLI_STRING("points", opts_t, points), CLI_COUNT("random", opts_t, random, .lo = 1),
+    CLI_OPT_SEED(opts_t, seed, given_seed), CLI_CHOICE("interpolation", opts_t, interp, .choices = interps),
+    CLI_OPT_OUTPUT(opts_t, out), {0}};
+
 static void parse(int argc, char **argv, opts_t *a)
 {
-    static const struct option opts[] = {
-        {"points", required_argument, 0, 'p'}, {"random", required_argument, 0, 'r'},
-        {"seed", required_argument, 0, 's'},   {"interpolation", required_argument, 0, 'i'},
-        {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'}, {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "sample")) != -1) {
-        switch (c) {
-        case 'p': a->points = optarg; break;
-        case 'r': a->random = cli_parse_count("--random", optarg, 1); break;
-        case 's': a->seed = cli_parse_u64("--seed", optarg), a->given_seed = 1; break;
-        case 'i':
-            if (!strcmp(optarg, "nearest"))
-                a->interp = NL_INTERP_NEAREST;
-            else if (!strcmp(optarg, "bilinear"))
-                a->interp = NL_INTERP_LINEAR;
-            else
-                cli_die(2, "--interpolation: expected nearest or bilinear, got \"%s\"", optarg);
-            break;
-        case 'o': a->out = optarg; break;
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    if (cli_opt_parse("sample", help, rows, a, argc, argv))
+        exit(0);
     a->field = cli_one_operand("sample", "FIELD", argc, argv);
     if (!a->points == !a->random)
         cli_die(2, "sample: expected exactly one of --points PTS.tsv or --random N");

@@ -1,9 +1,9 @@
 /* noiselab shape: memoryless distribution shaping of a field. */
 #include "cli.h"
+#include "opt.h"
 #include "../core/dist.h"
 #include "../synth/shape.h"
 
-#include <getopt.h>
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -23,47 +23,46 @@ static const char help[] =
     "      expr:x^2, expr:exp(x), expr:2*step(x)-1; variable x; with --empirical z is\n"
     "      the Gaussian score of the rank)\n";
 
+/* The command's options. */
+typedef struct {
+    const char *to, *out; /* --to DIST, -o */
+    int empirical;        /* --empirical */
+} opts_t;
+
+static const cli_opt rows[] = {
+    CLI_STRING("to", opts_t, to, .need = "a distribution (e.g. --to laplace)"),
+    CLI_FLAG("empirical", opts_t, empirical), CLI_OPT_OUTPUT(opts_t, out, .need = "an output file (.exr or .tsv)"),
+    {0}};
+
 int cli_cmd_shape(int argc, char **argv)
 {
-    static const struct option opts[] = {{"to", required_argument, 0, 't'}, {"empirical", no_argument, 0, 'e'},
-                                         {"output", required_argument, 0, 'o'}, {"help", no_argument, 0, 'h'},
-                                         {0}};
-    const char *to = NULL, *out = NULL, *tmp;
-    int c, empirical = 0;
+    opts_t a = {0};
+    const char *tmp;
     nl_dist *d;
     nl_field *x;
     nl_meta meta;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "shape")) != -1) {
-        switch (c) {
-        case 't': to = optarg; break;
-        case 'e': empirical = 1; break;
-        case 'o': out = optarg; break;
-        case 'h': fputs(help, stdout); return 0;
-        }
-    }
+    if (cli_opt_parse("shape", help, rows, &a, argc, argv))
+        return 0;
     const char *in = cli_one_operand("shape", "input file", argc, argv);
-    if (!to)
-        cli_die(2, "shape: --to: expected a distribution (e.g. --to laplace)");
-    if (!out)
-        cli_die(2, "shape: -o: expected an output file (.exr or .tsv)");
-    if (!cli_has_ext(out, ".exr") && !cli_has_ext(out, ".tsv"))
-        cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", out);
-    cli_check(nl_dist_parse(to, &d));
+    cli_opt_need("shape", rows, &a);
+    if (!cli_has_ext(a.out, ".exr") && !cli_has_ext(a.out, ".tsv"))
+        cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", a.out);
+    cli_check(nl_dist_parse(a.to, &d));
     x = cli_read_field(in, &meta);
-    if (cli_has_ext(out, ".tsv") && x->dim != 1)
-        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", x->dim, out);
-    tmp = cli_out_begin(out);
-    cli_check(nl_synth_shape(x, d, empirical));
+    if (cli_has_ext(a.out, ".tsv") && x->dim != 1)
+        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", x->dim, a.out);
+    tmp = cli_out_begin(a.out);
+    cli_check(nl_synth_shape(x, d, a.empirical));
     for (size_t i = 0; i < x->count; i++)
-        if (!isfinite(x->data[i]) || (cli_has_ext(out, ".exr") && !(fabs(x->data[i]) <= FLT_MAX)))
+        if (!isfinite(x->data[i]) || (cli_has_ext(a.out, ".exr") && !(fabs(x->data[i]) <= FLT_MAX)))
             cli_die(2, "--to: %s gives the value %g at sample %zu, beyond %s; expected a distribution whose "
-                    "values fit the output", to, x->data[i], i, cli_has_ext(out, ".exr") ? "the float32 range of "
+                    "values fit the output", a.to, x->data[i], i, cli_has_ext(a.out, ".exr") ? "the float32 range of "
                     "EXR" : "the finite numbers");
     size_t len = strlen(meta.method);
-    snprintf(meta.method + len, sizeof meta.method - len, "%s shape:%s%s", len ? " +" : "", to,
-             empirical ? ",empirical" : "");
-    cli_write_field(out, tmp, x, &meta);
-    cli_out_commit(out);
+    snprintf(meta.method + len, sizeof meta.method - len, "%s shape:%s%s", len ? " +" : "", a.to,
+             a.empirical ? ",empirical" : "");
+    cli_write_field(a.out, tmp, x, &meta);
+    cli_out_commit(a.out);
     nl_field_free(x);
     nl_dist_free(d);
     return 0;

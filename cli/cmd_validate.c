@@ -1,8 +1,7 @@
 /* noiselab validate: every applicable method on one model, measured. */
-#include "synth.h"
+#include "opt.h"
 #include "validate_report.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -51,52 +50,20 @@ static const char help[] =
     "or unresolved or none could run (the model is not positive definite), 2 for bad\n"
     "input, 1 when an output cannot be written.\n";
 
-static void parse_method_option(int c, cli_validate *v)
-{
-    switch (c) {
-    case 'L': v->o.subdiv_levels = cli_synth_parse_int("--levels", optarg, 1, 30); break;
-    case 'N': v->o.subdiv_N = cli_synth_parse_neighborhood(optarg); break;
-    case 't': v->o.subdiv_tol = cli_parse_positive("--tol", optarg, "number"); break;
-    case 'R': v->o.subdiv_random = cli_synth_parse_int("--random-neighborhoods", optarg, 1, 256); break;
-    case 'D': v->o.sparse_density = cli_parse_positive("--density", optarg, "number"); break;
-    case 'r': v->o.sparse_radius = cli_synth_parse_int("--radius", optarg, 1, 4096); break;
-    case 'C': v->o.sparse_cell = cli_synth_parse_int("--cell", optarg, 1, 1 << 20); break;
-    }
-}
-
-/* getopt over argv; returns 1 when --help was printed. */
-static int parse_options(int argc, char **argv, cli_validate *v, const char **acf, const char **spec)
-{
-    static const struct option opts[] = {
-        {"acf", required_argument, 0, 'a'},          {"spectrum", required_argument, 0, 'S'},
-        {"dim", required_argument, 0, 'd'},          {"output", required_argument, 0, 'o'},
-        {"size", required_argument, 0, 'n'},         {"realizations", required_argument, 0, 'M'},
-        {"tolerance", required_argument, 0, 'E'},    {"json", no_argument, 0, 'j'},
-        {"levels", required_argument, 0, 'L'},       {"neighborhood", required_argument, 0, 'N'},
-        {"tol", required_argument, 0, 't'},          {"random-neighborhoods", required_argument, 0, 'R'},
-        {"density", required_argument, 0, 'D'},      {"radius", required_argument, 0, 'r'},
-        {"cell", required_argument, 0, 'C'},         {"seed", required_argument, 0, 's'},
-        {"help", no_argument, 0, 'h'},
-        {0}};
-    int c;
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "validate")) != -1) {
-        switch (c) {
-        case 'a': *acf = optarg; break;
-        case 'S': *spec = optarg; break;
-        case 'd': v->dim = cli_parse_dim(optarg, 3); break;
-        case 'o': v->dir = optarg; break;
-        case 'n': v->N = cli_parse_count("--size", optarg, 16); break;
-        case 'M': v->M = cli_parse_count("--realizations", optarg, 4); break;
-        case 'E': v->o.tolerance = cli_parse_positive("--tolerance", optarg, "relative error"); break;
-        case 'j': v->json = 1; break;
-        case 's': v->o.seed = cli_parse_u64("--seed", optarg); break;
-        case 'h': fputs(help, stdout); return 1;
-        default: parse_method_option(c, v);
-        }
-    }
-    cli_no_operands("validate", argc, argv);
-    return 0;
-}
+static const cli_opt rows[] = {
+    CLI_STRING("acf", cli_validate, spec), CLI_STRING("spectrum", cli_validate, spectrum),
+    CLI_OPT_DIMS(cli_validate, dim, 3, .need = "1, 2 or 3"), CLI_OPT_OUTPUT(cli_validate, dir),
+    CLI_COUNT("size", cli_validate, N, .lo = 16), CLI_COUNT("realizations", cli_validate, M, .lo = 4),
+    CLI_POSITIVE("tolerance", cli_validate, o.tolerance, .what = "relative error"), CLI_OPT_JSON(cli_validate, json),
+    CLI_U64("seed", cli_validate, o.seed),
+    /* the methods' options, as for synth */
+    CLI_INT("levels", cli_validate, o.subdiv_levels, CLI_FROM_TO(1, 30)),
+    CLI_INT("neighborhood", cli_validate, o.subdiv_N, CLI_FROM_TO(1, 2147483647), .flags = CLI_AUTO),
+    CLI_POSITIVE("tol", cli_validate, o.subdiv_tol, .what = "number"),
+    CLI_INT("random-neighborhoods", cli_validate, o.subdiv_random, CLI_FROM_TO(1, 256)),
+    CLI_POSITIVE("density", cli_validate, o.sparse_density, .what = "number"),
+    CLI_INT("radius", cli_validate, o.sparse_radius, CLI_FROM_TO(1, 4096)),
+    CLI_INT("cell", cli_validate, o.sparse_cell, CLI_FROM_TO(1, 1048576)), {0}};
 
 /* The size, within the work limit: every method synthesises and estimates
  * M fields, about 2e5 samples a second, so 2^24 samples keep each method
@@ -116,16 +83,16 @@ static void check_size(cli_validate *v)
 
 static void parse(int argc, char **argv, cli_validate *v)
 {
-    const char *acf = NULL, *spec = NULL;
     static char sbuf[1200];
     nl_validate_options_default(&v->o);
     v->M = 64;
-    if (parse_options(argc, argv, v, &acf, &spec))
+    if (cli_opt_parse("validate", help, rows, v, argc, argv))
         exit(0);
+    cli_no_operands("validate", argc, argv);
+    const char *acf = v->spec, *spec = v->spectrum;
     if (!acf == !spec)
         cli_die(2, "validate: expected exactly one of --acf SPEC or --spectrum SPEC");
-    if (!v->dim)
-        cli_die(2, "validate: --dim: expected 1, 2 or 3");
+    cli_opt_need("validate", rows, v);
     if (!v->dir && !v->json)
         cli_die(2, "validate: expected -o DIR, --json or both");
     check_size(v);

@@ -1,14 +1,13 @@
 /* noiselab variogram: the empirical variogram of scattered points or of a field. */
 #include "cli.h"
+#include "opt.h"
 #include "../analysis/variogram.h"
 #include "../core/io_points.h"
 #include "../core/nl_error.h"
 
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 static const char help[] =
     "usage: noiselab variogram DATA.tsv|FIELD.exr [--width W] [--cutoff C]\n"
@@ -33,41 +32,20 @@ typedef struct {
     nl_variogram_options o; /* the library's options */
 } opts_t;
 
-static int parse_estimator(const char *s)
-{
-    if (strcmp(s, "matheron") == 0)
-        return NL_VARIOGRAM_MATHERON;
-    if (strcmp(s, "cressie") == 0)
-        return NL_VARIOGRAM_CRESSIE;
-    cli_die(2, "--estimator: expected matheron or cressie, got \"%s\"", s);
-}
+static const char *const estimators[] = {"matheron", "cressie", NULL}; /* NL_VARIOGRAM_* by index */
+
+static const cli_opt rows[] = {
+    CLI_OPT_BINS(opts_t, o), CLI_DOUBLE("direction", opts_t, o.direction, CLI_GIVEN(opts_t, has_dir)),
+    CLI_DOUBLE("angle-tolerance", opts_t, o.tolerance, CLI_GIVEN(opts_t, has_tol),
+               .flags = CLI_RANGE_LO | CLI_RANGE_HI, .lo = 0, .hi = 90, .what = "degrees in [0, 90]"),
+    CLI_CHOICE("estimator", opts_t, o.estimator, .choices = estimators), CLI_OPT_JSON(opts_t, json),
+    CLI_OPT_OUTPUT(opts_t, out), {0}};
 
 static void parse(int argc, char **argv, opts_t *a)
 {
-    static const struct option opts[] = {
-        {"width", required_argument, 0, 'w'},     {"cutoff", required_argument, 0, 'c'},
-        {"direction", required_argument, 0, 'd'}, {"angle-tolerance", required_argument, 0, 't'},
-        {"estimator", required_argument, 0, 'e'}, {"json", no_argument, 0, 'j'},
-        {"output", required_argument, 0, 'o'},    {"help", no_argument, 0, 'h'},
-        {0}};
-    int c;
     nl_variogram_options_default(&a->o);
-    while ((c = cli_getopt(argc, argv, ":ho:", opts, "variogram")) != -1) {
-        switch (c) {
-        case 'w': a->o.width = cli_parse_positive("--width", optarg, "bin width"); break;
-        case 'c': a->o.cutoff = cli_parse_positive("--cutoff", optarg, "cutoff distance"); break;
-        case 'd': a->o.direction = cli_parse_double("--direction", optarg), a->has_dir = 1; break;
-        case 't':
-            a->o.tolerance = cli_parse_double("--angle-tolerance", optarg), a->has_tol = 1;
-            if (!(a->o.tolerance >= 0 && a->o.tolerance <= 90))
-                cli_die(2, "--angle-tolerance: expected degrees in [0, 90], got \"%s\"", optarg);
-            break;
-        case 'e': a->o.estimator = parse_estimator(optarg); break;
-        case 'j': a->json = 1; break;
-        case 'o': a->out = optarg; break;
-        case 'h': fputs(help, stdout); exit(0);
-        }
-    }
+    if (cli_opt_parse("variogram", help, rows, a, argc, argv))
+        exit(0);
     a->in = cli_one_operand("variogram", "input (points .tsv or field .exr)", argc, argv);
     if (a->has_dir != a->has_tol)
         cli_die(2, "%s: expected --direction and --angle-tolerance together, got only %s",

@@ -6,19 +6,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-void cli_inputs_option(cli_inputs *in, int c, const char *arg)
-{
-    switch (c) {
-    case CLI_IN_REALIZATIONS:
-        in->K = cli_parse_count("--realizations", arg, 1);
-        if (in->K > 100000)
-            cli_die(2, "--realizations: expected at most 100000, got \"%s\"", arg);
-        break;
-    case CLI_IN_ACF: in->spec = arg; break;
-    case CLI_IN_SIZE: in->dim = cli_parse_size("--size", arg, in->n, 2); break;
-    case CLI_IN_SEED: in->seed = cli_parse_u64("--seed", arg), in->seed_set = 1; break;
-    }
-}
+const cli_opt cli_inputs_rows[] = {
+    CLI_COUNT("realizations", cli_inputs, K, .lo = 1, .hi = 100000, .what = "at most 100000"),
+    CLI_STRING("acf", cli_inputs, spec),
+    {.name = "size", .type = CLI_OPT_SIZE, CLI_AT(cli_inputs, n), CLI_AUX(cli_inputs, dim), .lo = 2},
+    CLI_OPT_SEED(cli_inputs, seed, seed_set), {0}};
 
 void cli_inputs_operands(cli_inputs *in, const char *cmd, int argc, char **argv)
 {

@@ -8,17 +8,10 @@
 #define NL_CLI_INPUTS_H
 
 #include "cli.h"
+#include "opt.h"
 #include "../analysis/ensemble.h"
 #include "../core/model.h"
 #include "../synth/fft.h"
-
-/* The getopt codes of the options cli_inputs_option takes. */
-enum { CLI_IN_REALIZATIONS = 0x1000, CLI_IN_ACF, CLI_IN_SIZE, CLI_IN_SEED };
-
-/* getopt_long entries for the options above, to put in a command's table. */
-#define CLI_INPUTS_OPTIONS                                                                                          \
-    {"realizations", required_argument, 0, CLI_IN_REALIZATIONS}, {"acf", required_argument, 0, CLI_IN_ACF},       \
-        {"size", required_argument, 0, CLI_IN_SIZE}, {"seed", required_argument, 0, CLI_IN_SEED}
 
 /* Where a command's fields come from. */
 typedef struct {
@@ -35,9 +28,10 @@ typedef struct {
     char name[96];             /* the name of the last field asked for */
 } cli_inputs;
 
-/* Take option c (one of CLI_IN_*; other codes are ignored) with its argument;
- * exits 2 on a bad value. */
-void cli_inputs_option(cli_inputs *in, int c, const char *arg);
+/* The rows of --realizations K, --acf SPEC, --size N and --seed S, for a
+ * command's table (cli/opt.h) as a group over its cli_inputs field:
+ * {.type = CLI_OPT_GROUP, .sub = cli_inputs_rows, CLI_AT(type, field)}. */
+extern const cli_opt cli_inputs_rows[];
 
 /* After the options: the operands are the files, unless --realizations was
  * given (then there must be none, and --acf and --size are required).

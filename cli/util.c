@@ -145,6 +145,13 @@ double cli_parse_positive(const char *opt, const char *s, const char *what)
     return v;
 }
 
+void cli_parse_pair(const char *opt, const char *s, double *a, double *b)
+{
+    char c;
+    if (sscanf(s, "%lf,%lf%c", a, b, &c) != 2 || !isfinite(*a) || !isfinite(*b))
+        cli_die(2, "%s: expected two numbers A,B, got \"%s\"", opt, s);
+}
+
 int cli_parse_dim(const char *s, int max)
 {
     if (strlen(s) != 1 || s[0] < '1' || s[0] > '0' + max)

@@ -10,6 +10,7 @@
 /* What validate works on and what it found. */
 typedef struct {
     const char *spec, *dir;  /* model as given, output directory (NULL: none) */
+    const char *spectrum;    /* --spectrum as given (spec is --acf until the options are checked) */
     int spectral;            /* given with --spectrum */
     int dim;                 /* 1..3 */
     int json;                /* --json */
