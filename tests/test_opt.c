@@ -200,6 +200,7 @@ Test(opt, auto_and_need)
     o.nb = 3;
     cli_opt_need("t", rows, &o); /* set: no exit */
     o.nb = 0;
+    free(msg), msg = NULL;
     stderr = open_memstream(&msg, &msglen);
     if (setjmp(back) == 0)
         cli_opt_need("t", rows, &o);
