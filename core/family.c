@@ -21,8 +21,7 @@ size_t nl_family_count(void) { return sizeof registry / sizeof *registry; }
 
 const nl_family *nl_family_get(size_t i) { return i < nl_family_count() ? registry[i] : NULL; }
 
-/* Is w (len bytes) one of the space-separated words of list? */
-static int in_words(const char *list, const char *w, size_t len)
+int nl_model_word_in(const char *list, const char *w, size_t len)
 {
     const char *p = list;
     while (p && *p) {
@@ -41,7 +40,7 @@ const nl_family *nl_family_find(const char *name, size_t len)
         if (strlen(registry[i]->name) == len && strncmp(name, registry[i]->name, len) == 0)
             return registry[i];
     for (size_t i = 0; i < nl_family_count(); i++)
-        if (in_words(registry[i]->aliases, name, len))
+        if (nl_model_word_in(registry[i]->aliases, name, len))
             return registry[i];
     return NULL;
 }

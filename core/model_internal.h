@@ -24,6 +24,9 @@ struct nl_model {
     size_t tw, th;       /* image: table size */
 };
 
+/* Is w (len bytes) one of the space-separated words of list? (core/family.c) */
+int nl_model_word_in(const char *list, const char *w, size_t len);
+
 /* The value of the family's parameter `name` (which it must have). */
 double nl_model_p(const nl_model *m, const char *name);
 

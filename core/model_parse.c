@@ -63,7 +63,7 @@ int nl_model_parse_params(nl_model *m, const char *s)
         memcpy(key, s, klen);
         key[klen] = 0;
         k = nl_family_param_index(m->fam, key);
-        aniso = !strcmp(key, "sep") || !strcmp(key, "angle") || !strcmp(key, "ratio") || !strcmp(key, "zratio");
+        aniso = nl_model_word_in(aniso_keys, key, klen);
         if (k < 0 && !aniso) {
             char keys[256];
             family_keys(m->fam, keys, sizeof keys);

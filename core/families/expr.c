@@ -26,20 +26,10 @@ int nl_expr_compile(nl_model *m, const char *arg, const char *allowed)
     if (!m->eval)
         return NL_ERROR(NL_EINVAL, "%s: malformed expression \"%s\"", name, arg);
     evaluator_get_variables(m->eval, &names, &count);
-    for (int i = 0; i < count; i++) {
-        size_t len = strlen(names[i]);
-        const char *p = allowed;
-        int ok = 0;
-        while (*p && !ok) {
-            size_t l = strcspn(p, " ");
-            ok = l == len && strncmp(p, names[i], len) == 0;
-            p += l;
-            p += strspn(p, " ");
-        }
-        if (!ok)
+    for (int i = 0; i < count; i++)
+        if (!nl_model_word_in(allowed, names[i], strlen(names[i])))
             return NL_ERROR(NL_EINVAL, "%s: unknown variable \"%s\" in \"%s\" (expected %s)", name, names[i], arg,
                             allowed);
-    }
     return NL_OK;
 }
 
