@@ -80,6 +80,12 @@ const char *nl_validate_method_name(int method)
     return s ? s->name : NULL;
 }
 
+const nl_method_type *nl_validate_method_type(int method)
+{
+    const slot *s = slot_at(method);
+    return s ? s->type : NULL;
+}
+
 int nl_validate_method_periodic(int method)
 {
     const slot *s = slot_at(method);

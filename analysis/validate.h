@@ -85,6 +85,7 @@ extern "C" {
 #endif
 
 #include "../core/model.h"
+#include "../synth/method.h"
 
 #include <stddef.h>
 #include <stdint.h>
@@ -117,6 +118,10 @@ int nl_validate_method_count(void);
 /* Method `method`'s name: the registry's ("fft"), or a variant's
  * ("subdiv-correlated"); NULL outside 0..nl_validate_method_count() - 1. */
 const char *nl_validate_method_name(int method);
+
+/* The registry's method that method `method` runs (a variant: the method
+ * whose option it sets); NULL outside 0..nl_validate_method_count() - 1. */
+const nl_method_type *nl_validate_method_type(int method);
 
 /* 1 when method `method`'s field is periodic (its expected spectrum the
  * model's sampled on the periodic grid), 0 when not (the Fejer-smoothed

@@ -93,6 +93,9 @@ int cli_has_ext(const char *path, const char *ext);
 /* Print text (words separated by single spaces; a double space is kept
  * inside a line) filled to width columns, then a newline (cli/text.c). */
 void cli_fill(FILE *f, const char *text, int width);
+/* cli_fill after `lead` (an option's name column), later lines indented
+ * by its length. */
+void cli_fill_lead(FILE *f, const char *lead, const char *text, int width);
 
 /* "noiselab WHAT: NN%" on stderr when it is a terminal and the work has run
  * for over a second since the first call; cli_progress_done clears it. */

@@ -29,12 +29,13 @@ static const char help[] =
     "\n"
     "  --acf SPEC       autocorrelation model (see noiselab models)\n"
     "  --spectrum SPEC  spectrum model: power:d=..., spectrum:EXPR, or a bare EXPR in f/fx/fy/k\n"
-    "  --size           samples per axis, each >= 2 (fft: 1D, 2D or 3D; subdiv: 1D or 2D)\n"
+    ;
+/* then --size, naming each method's dimensions, then: */
+static const char help_seed[] =
     "  --seed           64-bit seed (default 1)\n"
-    "  --spacing        output grid spacing, one value or one per axis (default 1)\n"
-    "  --clamp          synthesise a model that is not positive definite by zeroing its\n"
-    "                   negative spectrum (fft, circulant, sparse, lattice) or variances\n"
-    "                   (subdiv); flagged \"clamped\" in the output, the change in the report\n"
+    "  --spacing        output grid spacing, one value or one per axis (default 1)\n";
+/* then --clamp, naming the methods honouring it, then: */
+static const char help_preview[] =
     "  --preview        8-bit PNG of a 2D field (the first slice of 3D), mean +- 3 sd\n"
     "  --json           print the synthesis report as JSON\n";
 /* then --condition's first line, naming the conditionable methods */
@@ -297,6 +298,47 @@ static const struct option *options_table(void)
     return opts;
 }
 
+/* The methods with every capability in `have`, none in `lack` and, dims
+ * != 0, exactly those dimensions (nl_method_type.dims), joined as
+ * nl_method_names does; returns how many. */
+static int names_where(unsigned have, unsigned lack, unsigned dims, const char *last, char *buf, size_t size)
+{
+    int n = 0, count = 0;
+    size_t len = 0;
+    buf[0] = '\0';
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < nl_method_count(); i++) {
+            const nl_method_type *t = nl_method_at(i);
+            if ((t->caps & have) != have || (t->caps & lack) || (dims && t->dims != dims))
+                continue;
+            if (!pass)
+                count++;
+            else if (len < size)
+                len += (size_t)snprintf(buf + len, size - len, "%s%s", !n ? "" : n == count - 1 ? last : ", ",
+                                        t->name), n++;
+        }
+    return count;
+}
+
+/* --size with the dimensions of each method, --clamp with the methods
+ * honouring it (spectrum methods zero the negative spectrum, subdivision
+ * its negative variances), then --seed and --spacing between them. */
+static void print_size_clamp(void)
+{
+    char text[512], spec[128], var[128], d3[128], d2[128];
+    names_where(0, 0, 7, " and ", d3, sizeof d3);
+    names_where(0, 0, 3, " and ", d2, sizeof d2);
+    snprintf(text, sizeof text, "samples per axis, each >= 2 (1D, 2D or 3D: %s; 1D or 2D: %s)", d3, d2);
+    cli_fill_lead(stdout, "  --size           ", text, 86);
+    fputs(help_seed, stdout);
+    names_where(NL_METHOD_CLAMP, NL_METHOD_SUBDIVISION, 0, ", ", spec, sizeof spec);
+    names_where(NL_METHOD_CLAMP | NL_METHOD_SUBDIVISION, 0, 0, ", ", var, sizeof var);
+    snprintf(text, sizeof text, "synthesise a model that is not positive definite by zeroing its negative spectrum "
+             "(%s) or variances (%s); flagged \"clamped\" in the output, the change in the report", spec, var);
+    cli_fill_lead(stdout, "  --clamp          ", text, 86);
+    fputs(help_preview, stdout);
+}
+
 static void print_help(void)
 {
     char list[256], mpi[512];
@@ -311,6 +353,7 @@ static void print_help(void)
         }
     }
     fputs(help, stdout);
+    print_size_clamp();
     nl_method_names(NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT_FIRST, NULL, ", ", ", ", list, sizeof list);
     printf("  --condition DATA.tsv --extent a:b[,c:d[,e:f]]  %s: honour the\n", list);
     fputs(help_condition, stdout);

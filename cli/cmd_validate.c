@@ -7,14 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char help[] =
+static const char help_usage[] =
     "usage: noiselab validate (--acf SPEC | --spectrum SPEC) --dim 1|2|3 (-o DIR | --json)\n"
     "                         [--size N] [--realizations M] [--seed S] [--tolerance E]\n"
     "                         [method options]\n\n"
-    "Checks the model (noiselab check), synthesises M realizations (seeds S..S+M-1) with every\n"
-    "applicable method (fft, circulant; subdiv, subdiv with correlated\n"
-    "displacements (subdiv-correlated) and sparse in 1D and 2D) on an N^dim grid,\n"
-    "and measures how far each ensemble is from the model:\n"
+    ;
+/* then the paragraph naming the methods validate runs, then: */
+static const char help[] =
     "  effect size      the largest |mean ACF - R| / R(0) over the lags tested, with a\n"
     "                   conservative 95% interval (simultaneous over the lags); lags along\n"
     "                   x (and y and the diagonal in 2D; x, y, z and the diagonal in 3D) up\n"
@@ -43,12 +42,76 @@ static const char help[] =
     "                    verdict.json (as --json), acf.tsv, spectrum.tsv, map.tsv (2D\n"
     "                    and 3D), and with gnuplot acf.png, error.png, spectrum.png and\n"
     "                    map.png\n"
-    "method options, as for noiselab synth:\n"
-    "  --levels L, --neighborhood N|auto, --tol E, --random-neighborhoods K   subdiv\n"
-    "  --density D (default 32), --radius R, --cell C                          sparse\n\n"
+    "method options, as for noiselab synth:\n";
+/* then a line per method taking them, then: */
+static const char help_exit[] =
+    "\n"
     "exit status: 0 when every method that ran is within the tolerance, 3 when one is off\n"
     "or unresolved or none could run (the model is not positive definite), 2 for bad\n"
     "input, 1 when an output cannot be written.\n";
+
+/* validate's method options as its help shows them (rows below). */
+static const struct {
+    const char *name, *arg;
+} method_opts[] = {{"levels", "L"},       {"neighborhood", "N|auto"}, {"tol", "E"}, {"random-neighborhoods", "K"},
+                   {"density", "D (default 32)"}, {"radius", "R"},      {"cell", "C"}};
+
+/* The methods validate runs, grouped by the dimensions they take:
+ * "fft and circulant; subdiv, subdiv-correlated and sparse in 1D and 2D". */
+static void run_list(char *buf, size_t size)
+{
+    size_t len = 0;
+    buf[0] = '\0';
+    for (unsigned dims = 7; dims; dims >>= 1) {
+        int n = 0, count = 0, k;
+        for (k = 0; k < nl_validate_method_count(); k++)
+            count += nl_validate_method_type(k)->dims == dims;
+        for (k = 0; k < nl_validate_method_count() && len < size; k++)
+            if (nl_validate_method_type(k)->dims == dims)
+                len += (size_t)snprintf(buf + len, size - len, "%s%s", n++ ? n == count ? " and " : ", " : len ? "; " : "",
+                                        nl_validate_method_name(k));
+        if (n && dims != 7 && len < size)
+            len += (size_t)snprintf(buf + len, size - len, dims == 3 ? " in 1D and 2D" : " in 1D");
+    }
+}
+
+/* The help: the paragraph and the method options from the registry. */
+static const char *help_text(void)
+{
+    static char *text;
+    size_t size, width = 0;
+    char list[256], par[512], line[256];
+    FILE *f = open_memstream(&text, &size);
+    if (!f)
+        return help;
+    run_list(list, sizeof list);
+    snprintf(par, sizeof par, "Checks the model (noiselab check), synthesises M realizations (seeds S..S+M-1) with "
+             "every applicable method (%s) on an N^dim grid, and measures how far each ensemble is from the model:",
+             list);
+    fputs(help_usage, f);
+    cli_fill(f, par, 88);
+    fputs(help, f);
+    for (int pass = 0; pass < 2; pass++)
+        for (int k = 0; k < nl_validate_method_count(); k++) {
+            const nl_method_type *t = nl_validate_method_type(k);
+            size_t len = 0;
+            if (k && nl_validate_method_type(k - 1) == t)
+                continue;
+            for (size_t j = 0; j < sizeof method_opts / sizeof *method_opts && len < sizeof line; j++)
+                if (nl_method_option_index(t, method_opts[j].name) >= 0)
+                    len += (size_t)snprintf(line + len, sizeof line - len, "%s--%s %s", len ? ", " : "",
+                                            method_opts[j].name, method_opts[j].arg);
+            if (!len)
+                continue;
+            if (!pass && len > width)
+                width = len;
+            if (pass)
+                fprintf(f, "  %-*s   %s\n", (int)width, line, t->name);
+        }
+    fputs(help_exit, f);
+    fclose(f);
+    return text;
+}
 
 static const cli_opt rows[] = {
     CLI_STRING("acf", cli_validate, spec), CLI_STRING("spectrum", cli_validate, spectrum),
@@ -86,7 +149,7 @@ static void parse(int argc, char **argv, cli_validate *v)
     static char sbuf[1200];
     nl_validate_options_default(&v->o);
     v->M = 64;
-    if (cli_opt_parse("validate", help, rows, v, argc, argv))
+    if (cli_opt_parse("validate", help_text(), rows, v, argc, argv))
         exit(0);
     cli_no_operands("validate", argc, argv);
     const char *acf = v->spec, *spec = v->spectrum;
@@ -122,11 +185,11 @@ static void check_grid_lags(const cli_validate *v)
             }
 }
 
-/* Progress of the whole run: four methods of M realizations each. */
+/* Progress of the whole run: every method of M realizations. */
 static void progress(void *ctx, int meth, size_t done, size_t total)
 {
     (void)ctx;
-    cli_progress("validate", (meth + (double)done / (double)total) / NL_VALIDATE_METHODS);
+    cli_progress("validate", (meth + (double)done / (double)total) / nl_validate_method_count());
 }
 
 int cli_cmd_validate(int argc, char **argv)

@@ -4,16 +4,17 @@
 
 #include <string.h>
 
-void cli_fill(FILE *f, const char *text, int width)
+void cli_fill_lead(FILE *f, const char *lead, const char *text, int width)
 {
     const char *p = text;
-    int col = 0;
+    int indent = (int)strlen(lead), col = indent;
+    fputs(lead, f);
     while (*p) {
         size_t len = strcspn(p, " ");
-        if (col > 0 && col + 1 + (int)len > width) {
-            fputc('\n', f);
-            col = 0;
-        } else if (col > 0) {
+        if (col > indent && col + 1 + (int)len > width) {
+            fprintf(f, "\n%*s", indent, "");
+            col = indent;
+        } else if (col > indent) {
             fputc(' ', f);
             col++;
         }
@@ -24,4 +25,9 @@ void cli_fill(FILE *f, const char *text, int width)
             p++;
     }
     fputc('\n', f);
+}
+
+void cli_fill(FILE *f, const char *text, int width)
+{
+    cli_fill_lead(f, "", text, width);
 }

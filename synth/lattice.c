@@ -6,6 +6,7 @@
 #include "../core/nl_error.h"
 #include "../core/rng.h"
 #include "../core/wk.h"
+#include "method.h"
 
 #include <complex.h>
 #include <stdio.h>
@@ -307,9 +308,12 @@ int nl_synth_lattice_plan_init(const nl_model *m, int dim, double cell0, int oct
         return NL_ERROR(NL_EINVAL, "octaves: expected 1 to %d, got %d", NL_LATTICE_MAX_OCTAVES, octaves);
     if (!(cell0 >= 2) || cell0 / pow(2, octaves - 1) < 2)
         return NL_ERROR(NL_EINVAL, "octaves: %d octaves from cell %g reach cells below 2 samples", octaves, cell0);
-    if (nl_model_nugget(m) != 0)
+    if (nl_model_nugget(m) != 0) {
+        char list[64];
+        nl_method_names(NL_METHOD_NUGGET, NULL, ", ", " or ", list, sizeof list);
         return NL_ERROR(NL_EINVAL, "lattice: %s: a nugget is not represented by lattice noise (its closed-form "
-                        "spectrum has no white-noise part); use fft, circulant or cholesky", nl_model_spec(m));
+                        "spectrum has no white-noise part); use %s", nl_model_spec(m), list);
+    }
     if (!isfinite(nl_model_spectrum(m, dim, probe))) {
         char list[512];
         closed_form_families(list, sizeof list);

@@ -4,6 +4,7 @@
 #include "../core/gsl_guard_internal.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
+#include "method.h"
 
 #include <gsl/gsl_linalg.h>
 #include <math.h>
@@ -107,9 +108,11 @@ static int check_args(const nl_model *m, int dim, const size_t *n, int cell)
         if (n[a] % (size_t)cell || n[a] / (size_t)cell < WN)
             return NL_ERROR(NL_EINVAL, "--size: the Wiener lattice needs each size a multiple of the cell %d with at "
                             "least %d nodes, got %zu", cell, WN, n[a]);
-    if (nl_model_nugget(m) != 0)
-        return NL_ERROR(NL_EINVAL, "lattice: %s: a nugget is not represented by lattice noise; use fft, circulant or "
-                        "cholesky", nl_model_spec(m));
+    if (nl_model_nugget(m) != 0) {
+        char list[64];
+        nl_method_names(NL_METHOD_NUGGET, NULL, ", ", " or ", list, sizeof list);
+        return NL_ERROR(NL_EINVAL, "lattice: %s: a nugget is not represented by lattice noise; use %s", nl_model_spec(m), list);
+    }
     r0 = nl_model_acf(m, dim, zero);
     if (!(r0 > 0) || !isfinite(r0))
         return NL_ERROR(NL_EINVAL, "lattice: %s: the Wiener lattice needs R in closed form with R(0) > 0, got %g "

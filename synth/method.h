@@ -51,8 +51,9 @@ enum {
     NL_METHOD_EMBEDDING = 1u << 10,    /* distributed: the same on a circulant embedding of the grid */
     NL_METHOD_VALIDATED = 1u << 11,    /* run by validate (analysis/validate.h), also once per other choice
                                           of each CHOICE option */
-    NL_METHOD_SUBDIVISION = 1u << 12   /* the plan is an nl_subdiv_plan (nl_method_plan_impl): its exact
+    NL_METHOD_SUBDIVISION = 1u << 12,  /* the plan is an nl_subdiv_plan (nl_method_plan_impl): its exact
                                           expected ACF is known (analysis/subdiv_exact.h) */
+    NL_METHOD_NUGGET = 1u << 13        /* represents a model's nugget (white noise added at lag 0) */
 };
 
 /* nl_method_names: list the exact methods first, each group in the

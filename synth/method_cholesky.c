@@ -53,6 +53,6 @@ const nl_method_type nl_method_cholesky = {
         "direct simulation by the Cholesky factor of the covariance matrix; exact,\n"
         "O(N^3), at most 8192 samples: the ground truth for small grids",
     .dims = 7,
-    .caps = NL_METHOD_MODEL | NL_METHOD_EXACT | NL_METHOD_SERIAL,
+    .caps = NL_METHOD_MODEL | NL_METHOD_EXACT | NL_METHOD_SERIAL | NL_METHOD_NUGGET,
     .plan = plan, .execute = execute, .describe = describe, .report = report, .free = plan_free,
 };

@@ -84,6 +84,6 @@ const nl_method_type nl_method_circulant = {
         "the smallest eigenvalue",
     .dims = 7,
     .caps = NL_METHOD_MODEL | NL_METHOD_DISTRIBUTED | NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT | NL_METHOD_CLAMP |
-            NL_METHOD_EMBEDDING | NL_METHOD_VALIDATED,
+            NL_METHOD_EMBEDDING | NL_METHOD_VALIDATED | NL_METHOD_NUGGET,
     .plan = plan, .execute = execute, .describe = describe, .report = report, .free = plan_free,
 };

@@ -65,6 +65,6 @@ const nl_method_type nl_method_fft = {
         "The same seed and size give the same white noise for every model.",
     .dims = 7,
     .caps = NL_METHOD_MODEL | NL_METHOD_PERIODIC | NL_METHOD_DISTRIBUTED | NL_METHOD_CONDITIONABLE |
-            NL_METHOD_EXACT | NL_METHOD_CLAMP | NL_METHOD_TORUS | NL_METHOD_VALIDATED,
+            NL_METHOD_EXACT | NL_METHOD_CLAMP | NL_METHOD_TORUS | NL_METHOD_VALIDATED | NL_METHOD_NUGGET,
     .plan = plan, .execute = execute, .describe = describe, .report = report, .free = plan_free,
 };

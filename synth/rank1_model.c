@@ -4,6 +4,7 @@
 #include "../core/field.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
+#include "method.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -39,9 +40,12 @@ double nl_rank1_model_spectrum(const long *k, int s, void *ctx)
 
 int nl_rank1_model_check(const nl_model *m, int s)
 {
-    if (nl_model_nugget(m) != 0)
+    if (nl_model_nugget(m) != 0) {
+        char list[64];
+        nl_method_names(NL_METHOD_NUGGET, NULL, ", ", " or ", list, sizeof list);
         return NL_ERROR(NL_EINVAL, "rank1: %s: a nugget is not represented by a rank-1 lattice (the Hankel "
-                        "transform has no white-noise part); use fft, circulant or cholesky", nl_model_spec(m));
+                        "transform has no white-noise part); use %s", nl_model_spec(m), list);
+    }
     if (nl_model_family(m)->max_dim && s > nl_model_family(m)->max_dim)
         return NL_ERROR(NL_EINVAL, "rank1: %s: the %s model is positive definite up to %dD only, got %dD",
                         nl_model_spec(m), nl_model_family(m)->name, nl_model_family(m)->max_dim, s);

@@ -8,6 +8,7 @@
 #include "../core/rng.h"
 #include "../core/wk.h"
 #include "fft.h"
+#include "method.h"
 
 #include <complex.h>
 #include <fftw3.h>
@@ -216,9 +217,12 @@ int nl_synth_sparse_plan_model(const nl_model *m, int dim, const double *h, cons
         return NL_ERROR(NL_EINVAL, "sparse: expected dimension 1 or 2, got %d", dim);
     if (radius > 4096)
         return NL_ERROR(NL_EINVAL, "radius: expected 1 to 4096 samples, got %d", radius);
-    if (nl_model_nugget(m) != 0)
+    if (nl_model_nugget(m) != 0) {
+        char list[64];
+        nl_method_names(NL_METHOD_NUGGET, NULL, ", ", " or ", list, sizeof list);
         return NL_ERROR(NL_EINVAL, "sparse: %s: a nugget is not represented by shot noise (its kernel would need a "
-                        "spike of white noise); use fft, circulant or cholesky", nl_model_spec(m));
+                        "spike of white noise); use %s", nl_model_spec(m), list);
+    }
     /* periodic grid for h = IDFT(sqrt(lambda)) / N: large enough that the
      * kernel has decayed where it wraps */
     span = radius > 0 ? (size_t)(4 * radius + 4) : (dim == 1 ? 8192 : 512);

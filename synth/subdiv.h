@@ -127,7 +127,7 @@ typedef struct {
  * without R, R(0) <= 0, a model with a nugget: subdivision keeps the coarse
  * nodes' values, so white noise would have to be added at every level and
  * the finest-level-only alternative changes the coarse nodes' covariance;
- * use fft, circulant or cholesky), NL_EFAIL (an eigenvalue or SVD solve did not
+ * use a method with NL_METHOD_NUGGET), NL_EFAIL (an eigenvalue or SVD solve did not
  * converge), NL_ENOMEM.  Non-positive-definite levels are not errors here:
  * they are flagged (NL_SUBDIV_NOT_PD) and refused by synthesis. */
 int nl_subdiv_coeffs_alloc(const nl_model *m, int dim, int levels, double spacing0, int N, double tol, int nmax,

@@ -4,6 +4,7 @@
 #include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
+#include "method.h"
 
 #include <float.h>
 #include <gsl/gsl_eigen.h>
@@ -445,9 +446,12 @@ int nl_subdiv_coeffs_alloc_rule(const nl_model *m, int dim, int levels, double s
     if (!nl_model_has_acf(m))
         return NL_ERROR(NL_EINVAL, "%s: subdivision needs R(lag); give the autocorrelation, or a power: model "
                         "(whose R is computed by quadrature)", nl_model_spec(m));
-    if (nl_model_nugget(m) != 0)
+    if (nl_model_nugget(m) != 0) {
+        char list[64];
+        nl_method_names(NL_METHOD_NUGGET, NULL, ", ", " or ", list, sizeof list);
         return NL_ERROR(NL_EINVAL, "subdiv: %s: a nugget is not represented by subdivision (coarse nodes would keep "
-                        "their white noise through every level); use fft, circulant or cholesky", nl_model_spec(m));
+                        "their white noise through every level); use %s", nl_model_spec(m), list);
+    }
     c = calloc(1, sizeof *c);
     if (!c || !(c->level = calloc((size_t)levels, sizeof *c->level))) {
         free(c);

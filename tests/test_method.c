@@ -3,6 +3,7 @@
  * for bit those of the per-method functions it calls (the descriptors only
  * forward), and its option table checks values by type and range with
  * messages naming the option. */
+#include "../core/model.h"
 #include "../core/nl_error.h"
 #include "../synth/faulting.h"
 #include "../synth/fft.h"
@@ -59,6 +60,35 @@ Test(method, ranked_lists_the_exact_methods_first)
     cr_expect_str_eq(buf, "fft, circulant, subdiv and sparse");
     nl_method_names(NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT_FIRST, NULL, ", ", " and ", buf, sizeof buf);
     cr_expect_str_eq(buf, "fft, circulant and subdiv");
+}
+
+/* NL_METHOD_NUGGET is what the methods do: each model method with it
+ * plans a model with a nugget, each without it refuses one with a message
+ * naming the methods that have it. */
+Test(method, the_nugget_capability_is_what_planning_does)
+{
+    char list[128];
+    nl_model *m;
+    nl_method_grid g = {2, {32, 32, 1}, {1, 1, 1}, {0, 0}};
+    cr_assert_eq(nl_model_parse("markov:scale=4,nugget=0.1", &m), NL_OK);
+    cr_assert_eq(nl_method_names(NL_METHOD_NUGGET, NULL, ", ", " or ", list, sizeof list), 3);
+    cr_expect_str_eq(list, "fft, circulant or cholesky");
+    for (int i = 0; i < nl_method_count(); i++) {
+        const nl_method_type *t = nl_method_at(i);
+        nl_method_options o;
+        nl_method_plan *p = NULL;
+        if (!(t->caps & NL_METHOD_MODEL) || !(t->dims & 2u) || nl_method_option_index(t, "H") >= 0)
+            continue;
+        nl_method_options_default(t, &o);
+        int st = nl_method_plan_alloc(t, m, &g, &o, &p);
+        if (t->caps & NL_METHOD_NUGGET)
+            cr_expect_eq(st, NL_OK, "%s: %s", t->name, nl_errmsg());
+        else
+            cr_expect(st == NL_EINVAL && strstr(nl_errmsg(), "nugget") && strstr(nl_errmsg(), list),
+                      "%s: %d %s", t->name, st, nl_errmsg());
+        nl_method_plan_free(p);
+    }
+    nl_model_free(m);
 }
 
 /* Every method's report is one JSON object (or none), with a positive
