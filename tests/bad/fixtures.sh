@@ -42,3 +42,7 @@ with h5py.File("huge.h5", "w") as f:
 with h5py.File("ints.h5", "w") as f:
     f["field"] = np.arange(20, dtype=np.int32).reshape(4, 5)
 PY
+# More fixtures, one file per surface (sourced here, in this folder, with $nl)
+for f in "$(dirname "$0")"/fixtures.d/*.sh; do
+    [ -e "$f" ] && . "$f"
+done
