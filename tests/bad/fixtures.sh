@@ -44,5 +44,5 @@ with h5py.File("ints.h5", "w") as f:
 PY
 # More fixtures, one file per surface (sourced here, in this folder, with $nl)
 for f in "$(dirname "$0")"/fixtures.d/*.sh; do
-    [ -e "$f" ] && . "$f"
+    if [ -e "$f" ]; then . "$f"; fi
 done
