@@ -4,8 +4,9 @@ import math
 
 import numpy as np
 
-from ._ffi import (Dist, Error, FieldView, Model, alloc_field, as_field_array, check, cstr, ffi, lib, owned_field,
-                   planner)
+from ._args import (as_array, as_bool, as_choice, as_coords, as_float, as_int, as_positive, as_str, as_values,
+                    refuse)
+from ._ffi import Dist, Error, FieldView, Model, alloc_field, check, ffi, lib, owned_field, planner
 
 _AXES = {"x": 0, "y": 1, "z": 2}
 
@@ -16,12 +17,8 @@ def _dptr(a):
 
 
 def _mean(mean):
-    if mean is None:
-        return float("nan")
-    m = float(mean)
-    if not math.isfinite(m):
-        raise Error("mean: expected a finite number, got %r" % (mean,))
-    return m
+    """The known mean, or NaN (none: the sample mean)."""
+    return float("nan") if mean is None else as_float("mean", mean)
 
 
 def _owned(out_pp):
@@ -30,22 +27,27 @@ def _owned(out_pp):
 
 def _lags(x, axis, radial, max_lag, grid=None):
     """acf's axis index and number of lags for field x (acf's checks)."""
-    if axis not in _AXES or _AXES[axis] >= x.dim:
+    ax = _AXES[as_choice("axis", axis, tuple(_AXES))]
+    if ax >= x.dim:
         raise Error('axis: the field is %dD, got axis "%s"' % (x.dim, axis))
-    ax = _AXES[axis]
-    if radial and x.dim == 1:
+    if as_bool("radial", radial) and x.dim == 1:
         raise Error("radial: expected a 2D or 3D field, got 1D")
-    if grid not in (None, "wrapped", "centred"):
-        raise Error('grid: expected None, "wrapped" or "centred", got %r' % (grid,))
+    _grid(grid)
     n_ax, h_ax = int(x.n[ax]), float(x.h[ax])
     if max_lag is None:
         nl = n_ax // 4
     else:
-        ml = float(max_lag)
-        if not (ml >= 0 and ml / h_ax < n_ax) or math.floor(ml / h_ax + 1e-9) >= n_ax:
+        ml = as_float("max_lag", max_lag, 0.0)
+        if not ml / h_ax < n_ax or math.floor(ml / h_ax + 1e-9) >= n_ax:
             raise Error("max_lag: expected at most %g for %d samples, got %g" % ((n_ax - 1) * h_ax, n_ax, ml))
         nl = int(math.floor(ml / h_ax + 1e-9))
     return ax, nl + 1
+
+
+def _grid(grid):
+    if grid is not None:
+        as_choice("grid", grid, ("wrapped", "centred"))
+    return grid
 
 
 def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False, mean=None, target=None,
@@ -70,12 +72,14 @@ def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False
     of max_lag/h + 1 entries (radial: NaN for an empty bin), the estimate in
     the field's squared units (biased: sum of products / N).
     """
-    v = FieldView(field, spacing, "acf")
+    v = FieldView(field, spacing, "acf: field")
     x = v.f
     ax, nl = _lags(x, axis, radial, max_lag, grid)
+    radial, unbiased, mu = as_bool("radial", radial), as_bool("unbiased", unbiased), _mean(mean)
+    m = None if target is None else Model(target, "target")
     full = ffi.new("nl_field **")
     with planner:
-        check(lib.nl_acf_full(x, _mean(mean), 1 if unbiased else 0, full))
+        check(lib.nl_acf_full(x, mu, 1 if unbiased else 0, full))
     F = full[0]
     if grid == "wrapped":
         return owned_field(F)
@@ -93,13 +97,17 @@ def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False
     finally:
         if grid != "wrapped":
             lib.nl_field_free(F)
-    if target is None:
+    if m is None:
         return lag, val
-    m = Model(target, "target")
     tgt = np.empty(nl)
     with planner:
         check(lib.nl_acf_model_values(m.ptr, x.dim, x.n, x.h, 0 if radial else ax, _dptr(lag), nl, _dptr(tgt)))
     return lag, val, tgt
+
+
+def _welch(welch):
+    """Welch's segment length in samples (0: none)."""
+    return 0 if welch is None else as_int("welch", welch, 4, (1 << 63) - 1)
 
 
 def psd(field, spacing=1.0, welch=None, mean=None, grid=None):
@@ -117,17 +125,15 @@ def psd(field, spacing=1.0, welch=None, mean=None, grid=None):
     (wrapped order, numpy.fft.fftfreq's) and grid="centred" with zero
     frequency at the centre, as arrays over the library's memory.
     """
-    v = FieldView(field, spacing, "psd")
-    if grid not in (None, "wrapped", "centred"):
-        raise Error('grid: expected None, "wrapped" or "centred", got %r' % (grid,))
+    v = FieldView(field, spacing, "psd: field")
+    _grid(grid)
+    welch, mu = _welch(welch), _mean(mean)
     P = ffi.new("nl_field **")
     with planner:
-        if welch is not None:
-            if isinstance(welch, bool) or not isinstance(welch, (int, np.integer)) or welch < 4:
-                raise Error("welch: expected a segment length of at least 4 samples, got %r" % (welch,))
-            check(lib.nl_psd_welch(v.f, int(welch), _mean(mean), P, ffi.NULL))
+        if welch:
+            check(lib.nl_psd_welch(v.f, welch, mu, P, ffi.NULL))
         else:
-            check(lib.nl_psd_periodogram(v.f, _mean(mean), P))
+            check(lib.nl_psd_periodogram(v.f, mu, P))
     if grid == "wrapped":
         return owned_field(P[0])
     try:
@@ -147,11 +153,16 @@ def psd(field, spacing=1.0, welch=None, mean=None, grid=None):
 def moments(field):
     """Mean, unbiased variance, skewness, excess kurtosis, min, max and the
     sample count of a field (nl_moments_compute), as a dict."""
-    v = FieldView(field, 1.0, "moments")
+    v = FieldView(field, 1.0, "moments: field")
     m = ffi.new("nl_moments *")
     check(lib.nl_moments_compute(v.f, m))
     return dict(n=int(m.n), mean=m.mean, variance=m.variance, skewness=m.skewness, kurtosis=m.kurtosis,
                 min=m.min, max=m.max)
+
+
+def _bins(bins):
+    """As the CLI's --bins: 1 to 10^7."""
+    return as_int("bins", bins, 1, 10000000)
 
 
 def hist(field, bins=50):
@@ -159,11 +170,10 @@ def hist(field, bins=50):
     maximum in the last bin), as ``noiselab hist``.  Returns (edges, counts,
     moments): edges bins + 1 values, counts `bins` values (float64), and
     the dict of :func:`moments`."""
-    if isinstance(bins, bool) or not isinstance(bins, (int, np.integer)) or bins < 1:
-        raise Error("bins: expected a positive integer, got %r" % (bins,))
-    v = FieldView(field, 1.0, "hist")
+    bins = _bins(bins)
+    v = FieldView(field, 1.0, "hist: field")
     edges, counts = np.empty(bins + 1), np.empty(bins)
-    check(lib.nl_hist(v.f, int(bins), _dptr(edges), _dptr(counts)))
+    check(lib.nl_hist(v.f, bins, _dptr(edges), _dptr(counts)))
     return edges, counts, moments(v.array)
 
 
@@ -175,7 +185,7 @@ def _model_arg(acf, spectrum):
     if (acf is None) == (spectrum is None):
         raise Error("expected exactly one of acf or spectrum")
     if spectrum is not None:
-        s = cstr(spectrum, "spectrum").decode()
+        s = as_str("spectrum", spectrum).decode()
         return Model(s if s.startswith(("power", "spectrum:")) else "spectrum:" + s, "spectrum")
     return Model(acf, "acf")
 
@@ -187,8 +197,7 @@ def check_model(acf=None, spectrum=None, dim=1):
     "negative-spectrum"), variance, min_spectrum, min_eigenvalue,
     differentiable_order (None: infinitely), r2, spectral_decay, ...,
     and neighbours (valid models near an invalid one, as a string)."""
-    if isinstance(dim, bool) or dim not in (1, 2, 3):
-        raise Error("dim: expected 1, 2 or 3, got %r" % (dim,))
+    dim = as_int("dim", dim, 1, 3)
     m = _model_arg(acf, spectrum)
     c = ffi.new("nl_check *")
     with planner:
@@ -206,6 +215,21 @@ def check_model(acf=None, spectrum=None, dim=1):
     return d
 
 
+def _tol(tol):
+    """(stop rule, tolerance) of a tol argument: a positive number, or
+    "variance:T" / "improvement:T" (as --tol)."""
+    if isinstance(tol, str):
+        for prefix, rule in (("variance:", 1), ("improvement:", 0)):
+            if tol.startswith(prefix):
+                try:
+                    t = float(tol[len(prefix):])
+                except ValueError:
+                    refuse("tol", "a positive number, variance:T or improvement:T", tol)
+                return rule, as_positive("tol", t)
+        refuse("tol", "a positive number, variance:T or improvement:T", tol)
+    return 0, as_positive("tol", tol)
+
+
 def coeffs(acf, dim=1, neighborhood=2, tol=1e-4, levels=10, spacing0=1.0, displacements="independent", taps=None):
     """Generalized stochastic subdivision's coefficients (Lewis 1987, eqs. 4,
     10, 12) per level, as ``noiselab coeffs``.  Returns a list (one per
@@ -214,33 +238,25 @@ def coeffs(acf, dim=1, neighborhood=2, tol=1e-4, levels=10, spacing0=1.0, displa
     in neighbourhood order), variance (eq. 7), condition, min_eigenvalue,
     flags), and with displacements="correlated" the filter taps and
     filter_error."""
-    if dim not in (1, 2):
-        raise Error("dim: expected 1 or 2, got %r" % (dim,))
+    dim = as_int("dim", dim, 1, 2)
+    N = 0 if isinstance(neighborhood, str) and neighborhood == "auto" else \
+        as_int("neighborhood", neighborhood, 1, 64 if dim == 1 else 8)
+    stop, tol = _tol(tol)
+    levels = as_int("levels", levels, 1, 40)
+    s0 = as_positive("spacing0", spacing0)
+    displacements = as_choice("displacements", displacements, ("independent", "correlated"))
+    if taps is not None:
+        taps = as_int("taps", taps, 1, 16)  # NL_SUBDIV_MAX_TAPS
+        if displacements != "correlated":
+            raise Error("taps: expected displacements=\"correlated\" (independent displacements have no filter), "
+                        "got taps=%d" % taps)
     m = Model(acf, "acf")
-    N = 0 if neighborhood == "auto" else int(neighborhood)
-    if N < 0 or (neighborhood != "auto" and N < 1):
-        raise Error("neighborhood: expected a positive integer or \"auto\", got %r" % (neighborhood,))
-    stop = 0
-    if isinstance(tol, str):
-        for prefix, rule in (("variance:", 1), ("improvement:", 0)):
-            if tol.startswith(prefix):
-                stop, tol = rule, tol[len(prefix):]
-    tol = float(tol)
-    if not (math.isfinite(tol) and tol > 0):
-        raise Error("tol: expected a positive number, got %r" % (tol,))
-    if isinstance(levels, bool) or not isinstance(levels, (int, np.integer)) or not 1 <= levels <= 40:
-        raise Error("levels: expected an integer from 1 to 40, got %r" % (levels,))
-    s0 = float(spacing0)
-    if not (math.isfinite(s0) and s0 > 0):
-        raise Error("spacing0: expected a positive number, got %r" % (spacing0,))
-    if displacements not in ("independent", "correlated"):
-        raise Error('displacements: expected independent or correlated, got "%s"' % displacements)
     out = ffi.new("nl_subdiv_coeffs **")
     with planner:
-        check(lib.nl_subdiv_coeffs_alloc_rule(m.ptr, dim, int(levels), s0, N, stop, tol, 16 if dim == 1 else 6, out))
+        check(lib.nl_subdiv_coeffs_alloc_rule(m.ptr, dim, levels, s0, N, stop, tol, 16 if dim == 1 else 6, out))
         co = ffi.gc(out[0], lib.nl_subdiv_coeffs_free)
         if displacements == "correlated":
-            check(lib.nl_subdiv_coeffs_correlate(co, m.ptr, int(taps) if taps else (4 if dim == 1 else 2), 1))
+            check(lib.nl_subdiv_coeffs_correlate(co, m.ptr, taps or (4 if dim == 1 else 2), 1))
     res = []
     for k in range(co.levels):
         lv = co.level[k]
@@ -271,17 +287,15 @@ def nonlin(acf, g, size=4096, spacing=1.0, terms=24):
     input_acf, output_acf (size/2 + 1 lags), freq, input_psd, output_psd
     (two-sided, cycles per unit), hermite_coefficients, output_mean,
     output_variance, truncation."""
+    n = as_int("size", size, 2, 16777216)  # as the CLI's --size
+    h = as_positive("spacing", spacing)
+    terms = as_int("terms", terms, 2, 64)  # NL_HERMITE_MAX
     m = Model(acf, "acf")
     d = Dist(g, "g")
-    n = int(size)
-    if n != size or n < 2:
-        raise Error("size: expected an integer of at least 2, got %r" % (size,))
-    if isinstance(terms, bool) or not isinstance(terms, (int, np.integer)) or not 2 <= terms <= 64:
-        raise Error("terms: expected an integer from 2 to 64, got %r" % (terms,))
     he = ffi.new("nl_hermite *")
     with planner:
-        check(lib.nl_hermite_expand(d.ptr, int(terms), he))
-        R, Ry, S, Sy = (alloc_field((n,), (float(spacing),)) for _ in range(4))
+        check(lib.nl_hermite_expand(d.ptr, terms, he))
+        R, Ry, S, Sy = (alloc_field((n,), (h,)) for _ in range(4))
         try:
             check(lib.nl_wk_sample_acf(m.ptr, R))
             if not R.data[0] > 0:
@@ -308,7 +322,8 @@ def shape(field, to, empirical=False):
     uniform, laplace, hyperbolic, lognormal, chi2-1, power:p=P, table:FILE
     or expr:G (see ``noiselab shape --help``).  Returns a new array (the
     input is not changed)."""
-    a = as_field_array(field, "shape")
+    a = as_array("shape: field", field)
+    empirical = as_bool("empirical", empirical)
     d = Dist(to, "to")
     f = alloc_field(a.shape, (1.0,) * a.ndim)
     out = owned_field(f)
@@ -319,19 +334,8 @@ def shape(field, to, empirical=False):
 
 
 def _points(points, values, what):
-    p = np.ascontiguousarray(points, dtype=np.float64)
-    if p.ndim == 1:
-        p = p.reshape(-1, 1)
-    if p.ndim != 2 or not 1 <= p.shape[1] <= 3 or p.shape[0] < 1:
-        raise Error("%s: points: expected an (n, d) array with d = 1, 2 or 3 and n >= 1, got shape %s"
-                    % (what, np.shape(points)))
-    v = np.ascontiguousarray(values, dtype=np.float64).ravel()
-    if v.shape[0] != p.shape[0]:
-        raise Error("%s: values: expected %d values (one per point), got %d" % (what, p.shape[0], v.shape[0]))
-    for name, a in (("points", p), ("values", v)):
-        if not np.isfinite(a).all():
-            raise Error("%s: %s: expected finite numbers" % (what, name))
-    return p, v
+    p = as_coords(what + ": points", points)
+    return p, as_values(what + ": values", values, p.shape[0])
 
 
 def krige(points, values, acf, at, mean=None, strict=False, variance=False):
@@ -345,18 +349,13 @@ def krige(points, values, acf, at, mean=None, strict=False, variance=False):
     Returns the m estimates, or (estimates, kriging variances) with
     variance=True."""
     p, v = _points(points, values, "krige")
-    x = np.ascontiguousarray(at, dtype=np.float64)
-    if x.ndim == 1 and p.shape[1] == 1:
-        x = x.reshape(-1, 1)
-    if x.ndim != 2 or x.shape[1] != p.shape[1]:
-        raise Error("krige: at: expected an (m, %d) array like the points, got shape %s" % (p.shape[1], np.shape(at)))
-    if not np.isfinite(x).all():
-        raise Error("krige: at: expected finite coordinates")
+    x = as_coords("krige: at", at, p.shape[1])
+    mu, strict, variance = _mean(mean), as_bool("strict", strict), as_bool("variance", variance)
     m = Model(acf, "acf")
     out = ffi.new("nl_krige_plan **")
     with planner:
         check(lib.nl_krige_plan_alloc(m.ptr, p.shape[1], p.shape[0], _dptr(p), _dptr(v), 0 if mean is None else 1,
-                                      0.0 if mean is None else _mean(mean), 1 if strict else 0, out))
+                                      0.0 if mean is None else mu, 1 if strict else 0, out))
         plan = ffi.gc(out[0], lib.nl_krige_plan_free)
         est = np.empty(x.shape[0])
         var = np.empty(x.shape[0]) if variance else None
@@ -366,32 +365,41 @@ def krige(points, values, acf, at, mean=None, strict=False, variance=False):
     return (est, var) if variance else est
 
 
+def _check_spread(what, v):
+    """Refuse values whose squared differences would overflow the
+    variogram's sums: a bin sums at most n (n - 1) / 2 squared differences,
+    each at most (max - min)^2 (Cressie's estimator, the fourth power of a
+    mean square root, stays below 1.1 times that); with a factor 4 for
+    rounding and Cressie's, all stay finite for max - min below
+    sqrt(DBL_MAX / 4 / pairs).  Data near 1e200 would give gamma = inf."""
+    n = float(v.size)
+    pairs = max(n * (n - 1) / 2, 1.0)
+    lo, hi = float(v.min()), float(v.max())
+    bound = math.sqrt(np.finfo(np.float64).max / 4 / pairs)
+    if not hi - lo <= bound:
+        raise Error("%s: the values run from %g to %g: the sums of squared differences of the variogram overflow; "
+                    "expected a range below %.3g (sqrt(DBL_MAX / 4 / %.0f pairs))" % (what, lo, hi, bound, pairs))
+
+
 def _vopts(width, cutoff, estimator, direction, tolerance):
     o = ffi.new("nl_variogram_options *")
     lib.nl_variogram_options_default(o)
     for name, val in (("width", width), ("cutoff", cutoff)):
         if val is not None:
-            x = float(val)
-            if not (math.isfinite(x) and x > 0):
-                raise Error("%s: expected a positive number, got %r" % (name, val))
-            setattr(o, name, x)
-    if estimator not in ("matheron", "cressie"):
-        raise Error('estimator: expected matheron or cressie, got "%s"' % estimator)
-    o.estimator = 1 if estimator == "cressie" else 0
+            setattr(o, name, as_positive(name, val))
+    o.estimator = 1 if as_choice("estimator", estimator, ("matheron", "cressie")) == "cressie" else 0
     if (direction is None) != (tolerance is None):
         raise Error("direction: expected direction and tolerance together")
     if direction is not None:
-        t = float(tolerance)
-        if not 0 <= t <= 90:
-            raise Error("tolerance: expected degrees in [0, 90], got %r" % (tolerance,))
-        o.directional, o.direction, o.tolerance = 1, float(direction), t
+        o.directional, o.direction = 1, as_float("direction", direction)
+        o.tolerance = as_float("tolerance", tolerance, 0.0, 90.0)
     return o
 
 
 def _field_points(field, spacing):
     """A field's samples as points at index * spacing (as the CLI's fit)."""
-    a = as_field_array(field, "fit")
-    v = FieldView(a, spacing, "fit")
+    a = as_array("fit: field", field)
+    v = FieldView(a, spacing, "fit: field")
     idx = np.indices(a.shape).reshape(a.ndim, -1)[::-1].T  # x first
     h = np.array([v.f.h[k] for k in range(a.ndim)])
     return np.ascontiguousarray(idx * h), a.ravel()
@@ -410,10 +418,12 @@ def variogram(points=None, values=None, field=None, spacing=1.0, width=None, cut
     if field is not None:
         if points is not None:
             raise Error("variogram: expected points and values, or field, not both")
-        fv = FieldView(field, spacing, "variogram")
+        fv = FieldView(field, spacing, "variogram: field")
+        _check_spread("variogram: field", fv.array)
         check(lib.nl_variogram_field(fv.f, o, out))
     else:
         p, v = _points(points, values, "variogram")
+        _check_spread("variogram: values", v)
         P = ffi.new("nl_points *")
         P.dim, P.n, P.pts, P.val = p.shape[1], p.shape[0], _dptr(p), _dptr(v)
         check(lib.nl_variogram_points(P, o, out))
@@ -443,21 +453,23 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
         p, v = _field_points(field, spacing)
     else:
         p, v = _points(points, values, "fit")
-    if method not in ("wls", "ml", "reml"):
-        raise Error('method: expected wls, ml or reml, got "%s"' % method)
-    if weights not in _WEIGHTS:
-        raise Error('weights: expected cressie, pairs, reweighted or distance, got "%s"' % weights)
-    fix = dict(fix or {})
+    _check_spread("fit: values", v)
+    method = as_choice("method", method, ("wls", "ml", "reml"))
+    weights = as_choice("weights", weights, _WEIGHTS)
+    if fix is None:
+        fix = {}
+    if not isinstance(fix, dict):
+        refuse("fix", "a dict of parameter names and values", fix)
     if len(fix) > 8:
         raise Error("fix: expected at most 8 parameters, got %d" % len(fix))
     o = ffi.new("nl_fit_options *")
-    keep = [ffi.new("char[]", cstr(model, "model"))]
+    keep = [ffi.new("char[]", as_str("model", model))]
     o.family = keep[0]
-    o.nugget = 1 if nugget else 0
+    o.nugget = 1 if as_bool("nugget", nugget) else 0
     for i, (k, val) in enumerate(fix.items()):
-        keep.append(ffi.new("char[]", cstr(k, "fix")))
+        keep.append(ffi.new("char[]", as_str("fix", k)))
         o.fix_name[i] = keep[-1]
-        o.fix_value[i] = float(val)
+        o.fix_value[i] = as_float("fix: " + k, val)
     o.nfix = len(fix)
     o.weights = _WEIGHTS.index(weights)
     o.likelihood = 1 if method == "reml" else 0

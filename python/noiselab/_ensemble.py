@@ -2,7 +2,8 @@
 (analysis/ensemble.h), as ``noiselab acf|psd|hist F1 F2 ...`` print them."""
 import numpy as np
 
-from ._analysis import _dptr, _lags, _mean
+from ._analysis import _bins, _dptr, _lags, _mean, _welch
+from ._args import as_bool, as_fields
 from ._ffi import Error, FieldView, ffi, lib, owned_field, planner
 
 
@@ -12,8 +13,7 @@ class _Source:
     when the driver hands it back, so that K converted copies never coexist."""
 
     def __init__(self, fields, spacing, what):
-        if isinstance(fields, (str, bytes)) or not hasattr(fields, "__len__") or len(fields) < 1:
-            raise Error("%s: expected a sequence of fields (arrays of one shape), got %r" % (what, type(fields)))
+        self.fields = as_fields(what + ": fields", fields)
         self.fields, self.spacing, self.what = fields, spacing, what
         self.views, self.error = {}, None
         self._get = ffi.callback("int(void *, size_t, const nl_field **)", self.get, error=1, onerror=self.onerror)
@@ -57,8 +57,8 @@ def ensemble_acf(fields, spacing=1.0, max_lag=None, axis="x", radial=False, unbi
     max_lag/h + 1 entries."""
     s = _Source(fields, spacing, "ensemble_acf")
     ax, nl = _lags(s.first(), axis, radial, max_lag)
-    o = ffi.new("nl_ensemble_acf_opts *", dict(mean=_mean(mean), unbiased=1 if unbiased else 0, axis=ax,
-                                                radial=1 if radial else 0, nlag=nl))
+    o = ffi.new("nl_ensemble_acf_opts *", dict(mean=_mean(mean), unbiased=1 if as_bool("unbiased", unbiased) else 0,
+                                                axis=ax, radial=1 if radial else 0, nlag=nl))
     lag, val, se, bad = np.empty(nl), np.empty(nl), np.empty(nl), ffi.new("size_t *")
     with planner:
         st = lib.nl_ensemble_acf(s.src, o, _dptr(lag), _dptr(val), _dptr(se), bad)
@@ -74,9 +74,8 @@ def ensemble_psd(fields, spacing=1.0, welch=None, mean=None, grid=False):
     (wrapped order) as a fourth array over the library's memory."""
     s = _Source(fields, spacing, "ensemble_psd")
     x = s.first()
-    if welch is not None and (isinstance(welch, bool) or not isinstance(welch, (int, np.integer)) or welch < 4):
-        raise Error("welch: expected a segment length of at least 4 samples, got %r" % (welch,))
-    o = ffi.new("nl_ensemble_psd_opts *", dict(mean=_mean(mean), welch=0 if welch is None else int(welch)))
+    grid = as_bool("grid", grid)
+    o = ffi.new("nl_ensemble_psd_opts *", dict(mean=_mean(mean), welch=_welch(welch)))
     k = int(x.n[0] + x.n[1] + x.n[2])
     freq, val, se = np.empty(k), np.empty(k), np.empty(k)
     P, nf, bad = ffi.new("nl_field **"), ffi.new("size_t *"), ffi.new("size_t *")
@@ -101,15 +100,14 @@ def ensemble_hist(fields, bins=50):
     moments, moments_se): moments as :func:`moments` gives them (n the samples
     of all fields, min and max the overall range), moments_se the standard
     errors of mean, variance, skewness and kurtosis."""
-    if isinstance(bins, bool) or not isinstance(bins, (int, np.integer)) or bins < 1:
-        raise Error("bins: expected a positive integer, got %r" % (bins,))
+    bins = _bins(bins)
     s = _Source(fields, 1.0, "ensemble_hist")
     if s.src.K < 2:
         raise Error("ensemble_hist: expected at least 2 fields, got %d" % s.src.K)
     m, mse, bad = ffi.new("nl_moments *"), ffi.new("nl_moments *"), ffi.new("size_t *")
     s.check(lib.nl_ensemble_moments(s.src, m, mse, bad), bad)
     edges, counts, se = np.empty(bins + 1), np.empty(bins), np.empty(bins)
-    s.check(lib.nl_ensemble_hist(s.src, int(bins), m.min, m.max, _dptr(edges), _dptr(counts), _dptr(se), bad), bad)
+    s.check(lib.nl_ensemble_hist(s.src, bins, m.min, m.max, _dptr(edges), _dptr(counts), _dptr(se), bad), bad)
     mse_d = {k: v for k, v in _moments_dict(mse).items() if k in ("mean", "variance", "skewness", "kurtosis")}
     return edges, counts, se, _moments_dict(m), mse_d
 

@@ -8,6 +8,7 @@ import threading
 import numpy as np
 from cffi import FFI
 
+from ._args import Error, as_array, as_spacing, as_str
 from ._cdef import CDEF
 
 
@@ -93,31 +94,12 @@ def h5lib():
 planner = threading.RLock()
 
 
-class Error(ValueError):
-    """A failure reported by libnoiselab: the message is nl_errmsg()'s line
-    (or the binding's own check of an argument, in the same style); `code`
-    is the NL_E* status (1 EINVAL, 2 EINPUT, 3 ETOOBIG, 4 ENOTPD, 5 EIO,
-    6 ENOMEM, 7 EFAIL; 1 for the binding's checks)."""
-
-    def __init__(self, message, code=1):
-        super().__init__(message)
-        self.code = code
-
-
 def check(status):
     """Raise Error with the library's message for a non-zero status.  The
     message is per thread in the library (core/nl_error.h) and is read in
     the thread that made the call."""
     if status:
         raise Error(ffi.string(lib.nl_errmsg()).decode("utf-8", "replace"), int(status))
-
-
-def cstr(s, what):
-    if not isinstance(s, str):
-        raise Error("%s: expected a string, got %r" % (what, s))
-    if "\0" in s:
-        raise Error("%s: expected a string without NUL characters" % what)
-    return s.encode("utf-8")
 
 
 # -- fields ----------------------------------------------------------------
@@ -176,12 +158,12 @@ class FieldView:
     the array alive while the view lives."""
 
     def __init__(self, array, spacing=1.0, what="field", finite=True, writable=False):
-        a = as_field_array(array, what, finite=finite)
+        a = as_array(what, array, finite=finite)
         if writable and not (a is array and a.flags.writeable):
             raise Error("%s: expected a writable C-ordered float64 array to change in place" % what)
         self.array = a
         dim = a.ndim
-        hs = spacing_tuple(spacing, dim, what + ": spacing")
+        hs = as_spacing(what + ": spacing", spacing, dim)
         self.f = ffi.new("nl_field *")
         self.f.dim = dim
         for ax in range(3):
@@ -190,55 +172,6 @@ class FieldView:
         self.f.count = a.size
         self.f.data = ffi.cast("double *", ffi.from_buffer(a, require_writable=writable))
         self._keep = a
-
-
-def as_field_array(array, what="field", finite=True):
-    """float64, C-ordered, 1 to 3 axes, each >= 1 sample, finite: the
-    library's field.  Converts (copies) only when the input is not that."""
-    a = np.ascontiguousarray(array, dtype=np.float64)
-    if a.ndim < 1 or a.ndim > 3:
-        raise Error("%s: expected an array of 1 to 3 axes, got %d" % (what, a.ndim))
-    if a.size == 0:
-        raise Error("%s: expected at least one sample per axis, got shape %s" % (what, a.shape))
-    if finite and not np.isfinite(a).all():
-        bad = int(np.flatnonzero(~np.isfinite(a.ravel()))[0])
-        raise Error("%s: sample %d is %r; expected finite samples" % (what, bad, a.ravel()[bad]))
-    return a
-
-
-def spacing_tuple(spacing, dim, what="spacing"):
-    """One spacing per numpy axis (a scalar: the same on every axis); each
-    positive and finite."""
-    if np.ndim(spacing) == 0:
-        hs = (float(spacing),) * dim
-    else:
-        hs = tuple(float(v) for v in spacing)
-        if len(hs) != dim:
-            raise Error("%s: expected one value or %d (one per axis), got %d" % (what, dim, len(hs)))
-    for v in hs:
-        if not (np.isfinite(v) and v > 0):
-            raise Error("%s: expected positive finite values, got %r" % (what, v))
-    return hs
-
-
-def size_tuple(size, what="size"):
-    """A numpy shape of 1 to 3 axes, each >= 2 samples (as the CLI's --size)."""
-    if size is None:
-        raise Error("%s: expected N, (ny, nx) or (nz, ny, nx)" % what)
-    if np.ndim(size) == 0:
-        size = (size,)
-    try:
-        shape = tuple(int(s) for s in size)
-    except (TypeError, ValueError):
-        raise Error("%s: expected integers, got %r" % (what, size)) from None
-    if any(int(s) != s for s in size):
-        raise Error("%s: expected integers, got %r" % (what, size))
-    if not 1 <= len(shape) <= 3:
-        raise Error("%s: expected 1 to 3 axes, got %d" % (what, len(shape)))
-    for s in shape:
-        if s < 2:
-            raise Error("%s: expected at least 2 samples per axis, got %r" % (what, size))
-    return shape
 
 
 def grid_args(shape, spacing):
@@ -255,7 +188,7 @@ class Model:
 
     def __init__(self, spec, what="acf"):
         out = ffi.new("nl_model **")
-        b = cstr(spec, what)
+        b = as_str(what, spec)
         with planner:  # libmatheval's parser is not thread-safe
             check(lib.nl_model_parse(b, out))
         self.ptr = ffi.gc(out[0], lib.nl_model_free)
@@ -268,7 +201,7 @@ class Dist:
 
     def __init__(self, spec, what="to"):
         out = ffi.new("nl_dist **")
-        b = cstr(spec, what)
+        b = as_str(what, spec)
         with planner:
             check(lib.nl_dist_parse(b, out))
         self.ptr = ffi.gc(out[0], lib.nl_dist_free)

@@ -1,9 +1,8 @@
 """Field files and the model catalogue (core/io.h, core/model.h)."""
-import os
-
 import numpy as np
 
-from ._ffi import Error, FieldView, check, cstr, ffi, h5lib, lib, owned_field
+from ._args import as_bool, as_choice, as_int, as_path, as_str
+from ._ffi import Error, FieldView, check, ffi, h5lib, lib, owned_field
 
 # nl_meta's keys (core/provenance.h), in the order files record them.
 META_KEYS = tuple(ffi.string(lib.nl_meta_key(i)).decode() for i in range(lib.NL_META_NKEYS))
@@ -23,13 +22,14 @@ def read(path, meta=False):
     flags, origin: the strings recorded; the spacing "hx[,hy[,hz]]" lists x
     first) plus "spacing_array": the spacing in the array's axis order.
     """
+    p, b = as_path("read: path", path)
+    meta = as_bool("read: meta", meta)
     out = ffi.new("nl_field **")
     m = ffi.new("nl_meta *")
-    p = os.fspath(path)
     if p.lower().endswith(".h5"):
-        check(h5lib().nl_mpi_h5_read(cstr(p, "read: path"), out, m))
+        check(h5lib().nl_mpi_h5_read(b, out, m))
     else:
-        check(lib.nl_field_read(cstr(p, "read: path"), out, m))
+        check(lib.nl_field_read(b, out, m))
     f = out[0]
     spacing = tuple(float(f.h[a]) for a in reversed(range(f.dim)))
     arr = owned_field(f)
@@ -65,7 +65,7 @@ def write(path, array, spacing=1.0, precision="single", **provenance):
                 sample must fit in float32.
     spacing     one value or one per axis (the array's order).
     provenance  strings stored as noiselab.* attributes (TSV: "# key: value"
-                lines): model, method, seed, flags, origin, version (default:
+                lines): model, method, seed (or an integer), flags, origin, version (default:
                 this library's); size and spacing are recorded from the
                 array and `spacing`.  E.g. ``write(p, plan(seed),
                 **plan.provenance(seed))`` writes the file noiselab synth
@@ -76,26 +76,26 @@ def write(path, array, spacing=1.0, precision="single", **provenance):
     if bad:
         raise Error("write: unknown provenance key %s (expected %s; size and spacing come from the array and "
                     "spacing=)" % (", ".join(sorted(bad)), ", ".join(keys)))
-    p = os.fspath(path)
-    v = FieldView(array, spacing, "write")
+    p, b = as_path("write: path", path)
+    precision = as_choice("write: precision", precision, ("single", "double"))
+    v = FieldView(array, spacing, "write: array")
     f = v.f
     m = ffi.new("nl_meta *")
     auto = _auto_provenance(f)
     for k in META_KEYS:
         s = provenance.get(k) if k in keys else None
-        s = auto.get(k, "") if s is None else str(s)
-        b = cstr(s, "write: " + k)
-        if len(b) >= ffi.sizeof(getattr(m, k)):
-            raise Error("write: %s: expected at most %d bytes, got %d" % (k, ffi.sizeof(getattr(m, k)) - 1, len(b)))
-        setattr(m, k, b)
-    if precision not in ("single", "double"):
-        raise Error('write: precision: expected "single" or "double", got %r' % (precision,))
+        if k == "seed" and s is not None and not isinstance(s, str):
+            s = str(as_int("write: seed", s, 0, (1 << 64) - 1))  # the seed a Plan was called with
+        s = as_str("write: " + k, auto.get(k, "") if s is None else s, empty=True)
+        if len(s) >= ffi.sizeof(getattr(m, k)):
+            raise Error("write: %s: expected at most %d bytes, got %d" % (k, ffi.sizeof(getattr(m, k)) - 1, len(s)))
+        setattr(m, k, s)
     if p.lower().endswith(".h5"):
         dbl = precision == "double"
         if not dbl and lib.nl_field_check_finite(f, _FLT_MAX, ffi.NULL):
             raise Error("write: %s of float32; %s not written"
                         % (ffi.string(lib.nl_errmsg()).decode("utf-8", "replace"), p))
-        check(h5lib().nl_mpi_h5_write_field(cstr(p, "write: path"), f, m, int(dbl)))
+        check(h5lib().nl_mpi_h5_write_field(b, f, m, int(dbl)))
         return
     if precision != "single":
         raise Error('write: precision="double" needs an .h5 path (EXR stores float32), got "%s"' % p)
@@ -106,9 +106,9 @@ def write(path, array, spacing=1.0, precision="single", **provenance):
         if lib.nl_field_check_finite(f, _FLT_MAX, ffi.NULL):
             raise Error("write: %s of float32 EXR; %s not written"
                         % (ffi.string(lib.nl_errmsg()).decode("utf-8", "replace"), p))
-        check(lib.nl_exr_write(cstr(p, "write: path"), f, m))
+        check(lib.nl_exr_write(b, f, m))
     else:
-        check(lib.nl_tsv_write_field(cstr(p, "write: path"), f, m, ffi.NULL, ffi.NULL))
+        check(lib.nl_tsv_write_field(b, f, m, ffi.NULL, ffi.NULL))
 
 
 _ROLES = {0: "shape", 1: "variance", 2: "scale", 3: "nugget", 4: "band"}

@@ -4,8 +4,8 @@ import threading
 
 import numpy as np
 
-from ._ffi import (Error, Model, alloc_field, check, cstr, ffi, free_data, grid_args, lib, owned_field, planner,
-                   size_tuple, spacing_tuple)
+from ._args import as_bool, as_float, as_int, as_size, as_spacing, as_str
+from ._ffi import Error, Model, alloc_field, check, ffi, free_data, grid_args, lib, owned_field, planner
 
 
 def _registry():
@@ -57,12 +57,6 @@ def methods():
 _CLAMP = 1  # NL_SYNTH_FFT_CLAMP == NL_SYNTH_LATTICE_CLAMP
 
 
-def _int(name, v, lo, hi):
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not lo <= v <= hi:
-        raise Error("%s: expected an integer from %d to %d, got %r" % (name, lo, hi, v))
-    return int(v)
-
-
 def _model(method, acf, spectrum, t, replacing):
     """The model as the CLI parses --acf / --spectrum (cli/cmd_synth.c);
     replacing: the options given that stand in for a model."""
@@ -79,7 +73,7 @@ def _model(method, acf, spectrum, t, replacing):
     if replacing:
         raise Error("synth %s: give either %s or a model, not both" % (method, " or ".join(replacing)))
     if spectrum is not None:
-        s = cstr(spectrum, "spectrum").decode()
+        s = as_str("spectrum", spectrum).decode()
         if not (s.startswith("power") or s.startswith("spectrum:")):
             s = "spectrum:" + s
         m = Model(s, "spectrum")
@@ -95,10 +89,13 @@ def _model(method, acf, spectrum, t, replacing):
 def _origin(v):
     if v is None:
         return (0, 0)
-    o = (v,) if np.ndim(v) == 0 else tuple(v)
+    try:
+        o = (v,) if np.ndim(v) == 0 else tuple(v)
+    except TypeError:
+        o = ()
     if not 1 <= len(o) <= 2:
         raise Error("origin: expected X or (X, Y), got %r" % (v,))
-    o = tuple(_int("origin", x, -(1 << 30), 1 << 30) for x in o)
+    o = tuple(as_int("origin", x, -(1 << 30), 1 << 30) for x in o)
     return o + (0,) * (2 - len(o))
 
 
@@ -127,7 +124,7 @@ class Plan:
     """
 
     def __init__(self, method, acf=None, spectrum=None, size=None, spacing=1.0, clamp=False, **options):
-        t = _METHODS.get(method)
+        t = _METHODS.get(method) if isinstance(method, str) else None
         if t is None:
             raise Error('synth: unknown method "%s" (expected %s)' % (method, ", ".join(METHODS)))
         rows = _rows(t)
@@ -136,10 +133,10 @@ class Plan:
         if bad:
             raise Error("synth %s: unknown option %s (this method takes: %s)"
                         % (method, ", ".join(sorted(bad)), ", ".join(sorted(allowed)) or "none"))
-        self.shape = size_tuple(size)
-        self.spacing = spacing_tuple(spacing, len(self.shape))
+        self.shape = as_size("size", size)
+        self.spacing = as_spacing("spacing", spacing, len(self.shape))
         self.method_name = method
-        self.clamp = bool(clamp)
+        self.clamp = as_bool("clamp", clamp)
         self.options = dict(options)
         self.flags = ""
         self.info = {}
@@ -195,21 +192,19 @@ class Plan:
                 continue
             r = rows[k]
             if r.type == lib.NL_METHOD_FLAG:
+                as_bool(k, v)
                 text = None
             elif r.type == lib.NL_METHOD_INT and not isinstance(v, str):
-                if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
-                    raise Error("%s: expected an integer from %d to %d, got %r" % (k, r.min, r.max, v))
-                text = str(int(v))
+                # the library checks the table's range, with the CLI's message
+                want = "an integer from %d to %d" % (r.min, r.max)
+                text = str(as_int(k, v, -(1 << 63), (1 << 63) - 1, want))
             elif r.type == lib.NL_METHOD_DOUBLE and not isinstance(v, str):
-                try:
-                    text = repr(float(v))
-                except (TypeError, ValueError):
-                    raise Error("%s: expected a number, got %r" % (k, v)) from None
+                text = repr(as_float(k, v))
             else:
                 text = v
-            c = cstr(text, k) if text is not None else ffi.NULL
+            c = as_str(k, text) if text is not None else ffi.NULL
             self._keep.append(c)
-            check(lib.nl_method_options_set(o, r.name, c, cstr(k, k)))
+            check(lib.nl_method_options_set(o, r.name, c, as_str(k, k)))
         self._opts = o
         return o
 
@@ -223,14 +218,13 @@ class Plan:
         writable C-ordered float64 array of the plan's shape whose data is
         64-byte aligned (an array returned by a plan is), e.g. to refill one
         array in a loop without allocating."""
-        if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= seed < 2 ** 64:
-            raise Error("seed: expected an integer from 0 to 2^64 - 1, got %r" % (seed,))
+        seed = as_int("seed", seed, 0, (1 << 64) - 1)
         if out is not None:
-            return self._into(int(seed), out)
+            return self._into(seed, out)
         # every method writes every sample: no zeroing needed (core/mem.h's nl_alloc)
         f = alloc_field(self.shape, self.spacing, zero=False)
         try:
-            self._run(int(seed), f)
+            self._run(seed, f)
         except BaseException:
             free_data(f)
             raise
@@ -272,7 +266,7 @@ class Plan:
                 else not any(self.options.get(k) for k in unmakes) and any(self._origin)):
             o = tuple(self._origin)
             origin = "%d" % o[0] if len(self.shape) == 1 else "%d,%d" % o
-        return dict(model=self.model, method=self.method, flags=self.flags, seed=str(int(seed)),
+        return dict(model=self.model, method=self.method, flags=self.flags, seed=str(as_int("seed", seed, 0, (1 << 64) - 1)),
                     origin=origin, spacing=self.spacing)
 
     def __repr__(self):
