@@ -34,6 +34,9 @@ def _lags(x, axis, radial, max_lag, grid=None):
         raise Error("radial: expected a 2D or 3D field, got 1D")
     _grid(grid)
     n_ax, h_ax = int(x.n[ax]), float(x.h[ax])
+    if not math.isfinite(n_ax * h_ax):
+        raise Error("spacing: the lags of %d samples at spacing %g overflow; expected a spacing below %.3g"
+                    % (n_ax, h_ax, np.finfo(np.float64).max / n_ax))
     if max_lag is None:
         nl = n_ax // 4
     else:
@@ -310,9 +313,14 @@ def nonlin(acf, g, size=4096, spacing=1.0, terms=24):
     nl = n // 2 + 1
     h = float(R.h[0])
     R, Ry, S, Sy = (owned_field(f)[:nl] for f in (R, Ry, S, Sy))
-    return dict(lag=np.arange(nl) * h, input_acf=R, output_acf=Ry, freq=np.arange(nl) / (n * h), input_psd=S,
-                output_psd=Sy, hermite_coefficients=np.array([he.c[k] for k in range(he.terms)]),
-                output_mean=he.c[0], output_variance=he.variance, truncation=he.truncation)
+    out = dict(lag=np.arange(nl) * h, input_acf=R, output_acf=Ry, freq=np.arange(nl) / (n * h), input_psd=S,
+               output_psd=Sy, hermite_coefficients=np.array([he.c[k] for k in range(he.terms)]),
+               output_mean=he.c[0], output_variance=he.variance, truncation=he.truncation)
+    for k, x in out.items():
+        if not np.isfinite(x).all():
+            raise Error("nonlin: %s overflows with %s on %d samples at spacing %g; expected a smaller variance "
+                        "or spacing" % (k, m.spec, n, h))
+    return out
 
 
 def shape(field, to, empirical=False):
@@ -325,6 +333,13 @@ def shape(field, to, empirical=False):
     a = as_array("shape: field", field)
     empirical = as_bool("empirical", empirical)
     d = Dist(to, "to")
+    if not empirical and a.size >= 2:
+        # the library's moments refuse a variance that overflows, where
+        # nl_synth_shape's sd would be inf and map every sample to the median
+        m = ffi.new("nl_moments *")
+        st = lib.nl_moments_compute(FieldView(a, 1.0, "shape: field").f, m)
+        if st:
+            raise Error("shape: " + ffi.string(lib.nl_errmsg()).decode("utf-8", "replace"), int(st))
     f = alloc_field(a.shape, (1.0,) * a.ndim)
     out = owned_field(f)
     out[...] = a
