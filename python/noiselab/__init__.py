@@ -13,7 +13,10 @@ Fields the library makes are returned as arrays over its memory (no copy).
     >>> lag, r = noiselab.acf(f, max_lag=16)
 
 Errors raise noiselab.Error (a ValueError) with the library's one-line
-message.  cffi releases the GIL around every C call: threads run in
+message; a bad argument (a wrong type, None, 2.7 for an integer, a number
+out of range, NaN, a string that does not encode, an array of the wrong
+shape or not finite) raises it too, before the library is called, with a
+message naming the argument, what was expected and what came.  cffi releases the GIL around every C call: threads run in
 parallel, and one Plan may be called from several threads.  The library is
 found through $NOISELAB_LIB, then the build/ folder of the source tree next
 to this package, then the installed libnoiselab.so.1.

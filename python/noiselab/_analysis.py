@@ -4,8 +4,8 @@ import math
 
 import numpy as np
 
-from ._args import (as_array, as_bool, as_choice, as_coords, as_float, as_int, as_positive, as_str, as_values,
-                    refuse)
+from ._args import (as_array, as_bool, as_choice, as_coords, as_float, as_int, as_positive, as_spacing, as_str,
+                    as_values, refuse)
 from ._ffi import Dist, Error, FieldView, Model, alloc_field, check, ffi, lib, owned_field, planner
 
 _AXES = {"x": 0, "y": 1, "z": 2}
@@ -242,8 +242,9 @@ def coeffs(acf, dim=1, neighborhood=2, tol=1e-4, levels=10, spacing0=1.0, displa
     flags), and with displacements="correlated" the filter taps and
     filter_error."""
     dim = as_int("dim", dim, 1, 2)
+    top = 64 if dim == 1 else 8  # as the CLI's --neighborhood
     N = 0 if isinstance(neighborhood, str) and neighborhood == "auto" else \
-        as_int("neighborhood", neighborhood, 1, 64 if dim == 1 else 8)
+        as_int("neighborhood", neighborhood, 1, top, 'an integer from 1 to %d or "auto"' % top)
     stop, tol = _tol(tol)
     levels = as_int("levels", levels, 1, 40)
     s0 = as_positive("spacing0", spacing0)
@@ -291,7 +292,7 @@ def nonlin(acf, g, size=4096, spacing=1.0, terms=24):
     (two-sided, cycles per unit), hermite_coefficients, output_mean,
     output_variance, truncation."""
     n = as_int("size", size, 2, 16777216)  # as the CLI's --size
-    h = as_positive("spacing", spacing)
+    h, = as_spacing("spacing", spacing, 1)
     terms = as_int("terms", terms, 2, 64)  # NL_HERMITE_MAX
     m = Model(acf, "acf")
     d = Dist(g, "g")

@@ -77,6 +77,8 @@ def as_float(name, value, lo=-math.inf, hi=math.inf, lo_open=False):
         want = "a finite number in %s%g, %g]" % ("(" if lo_open else "[", lo, hi)
     else:
         want = "a finite number"
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf":
+        value = value[()]
     if _is_bool(value) or not isinstance(value, numbers.Real):
         refuse(name, want, value)
     try:
@@ -165,20 +167,31 @@ def as_size(name, value):
                  for s in items)
 
 
+_DBL_MIN = float(np.finfo(np.float64).tiny)
+
+
+def _spacing(name, value):
+    h = as_positive(name, value)
+    if h < _DBL_MIN:  # as the library's synthesis plans refuse it
+        raise Error("%s: %g is below the smallest normal double %r (its frequencies 1/spacing overflow); "
+                    "expected spacings nearer 1" % (name, h, _DBL_MIN))
+    return h
+
+
 def as_spacing(name, value, dim):
-    """One spacing per numpy axis, each finite and positive (a scalar: the
-    same on every axis)."""
+    """One spacing per numpy axis, each finite, positive and at least the
+    smallest normal double (a scalar: the same on every axis)."""
     if isinstance(value, np.ndarray) and value.ndim == 0:
         value = value[()]
     if isinstance(value, (numbers.Real, np.generic)) or value is None or isinstance(value, (str, bytes)):
-        return (as_positive(name, value),) * dim
+        return (_spacing(name, value),) * dim
     try:
         items = tuple(value)
     except TypeError:
         refuse(name, "a positive number or one per axis", value)
     if len(items) != dim:
         raise Error("%s: expected one value or %d (one per axis), got %d" % (name, dim, len(items)))
-    return tuple(as_positive(name, v) for v in items)
+    return tuple(_spacing(name, v) for v in items)
 
 
 def _real(name, value):

@@ -76,6 +76,8 @@ HOSTILE = [
     # psd
     ("psd-welch-2**64", lambda p: noiselab.psd(X, welch=BIG), "welch"),
     ("psd-mean-str", lambda p: noiselab.psd(X, mean="x"), "mean"),
+    ("psd-spacing-subnormal", lambda p: noiselab.psd(X, spacing=5e-324), "spacing"),
+    ("psd-2d-spacing-subnormal", lambda p: noiselab.psd(X2, spacing=5e-324), "spacing"),
     ("psd-spacing-str", lambda p: noiselab.psd(X, spacing="a"), "spacing"),
     # moments, hist
     ("moments-str", lambda p: noiselab.moments("abc"), "field"),
@@ -90,6 +92,7 @@ HOSTILE = [
     # coeffs
     ("coeffs-neighborhood-2.7", lambda p: noiselab.coeffs("markov:scale=2", neighborhood=2.7), "neighborhood"),
     ("coeffs-neighborhood-bool", lambda p: noiselab.coeffs("markov:scale=2", neighborhood=True), "neighborhood"),
+    ("coeffs-neighborhood-str", lambda p: noiselab.coeffs("markov:scale=2", neighborhood="x"), "neighborhood"),
     ("coeffs-tol-None", lambda p: noiselab.coeffs("markov:scale=2", tol=None), "tol"),
     ("coeffs-tol-rule-junk", lambda p: noiselab.coeffs("markov:scale=2", tol="variance:x"), "tol"),
     ("coeffs-dim-float", lambda p: noiselab.coeffs("markov:scale=2", dim=1.0), "dim"),
@@ -134,6 +137,7 @@ HOSTILE = [
     ("ensemble_acf-axis-list", lambda p: noiselab.ensemble_acf(fields(), axis=["x"]), "axis"),
     ("ensemble_psd-welch-2**64", lambda p: noiselab.ensemble_psd(fields(), welch=BIG), "welch"),
     ("ensemble_psd-grid-str", lambda p: noiselab.ensemble_psd(fields(), grid="no"), "grid"),
+    ("ensemble_psd-spacing-subnormal", lambda p: noiselab.ensemble_psd(fields(), spacing=5e-324), "spacing"),
     ("ensemble_hist-bins-2**62", lambda p: noiselab.ensemble_hist(fields(), bins=2 ** 62), "bins"),
     ("ensemble_hist-strings", lambda p: noiselab.ensemble_hist([["a", "b"], ["c", "d"]]), "field"),
 ]
@@ -177,6 +181,13 @@ def test_paths_refused(call, tmp_path):
     (2, 2), (np.int64(3), 3), (np.uint8(4), 4)])
 def test_integers_pass(value, expected):
     assert noiselab.coeffs("markov:scale=2", neighborhood=value, levels=1)[0]["N"] == expected
+
+
+def test_numbers_pass():
+    """numpy scalars and 0-d arrays are numbers: the converters take them."""
+    a = noiselab.acf(X, mean=np.array(0.25), max_lag=np.float32(4), spacing=np.array(1.0))
+    b = noiselab.acf(X, mean=0.25, max_lag=4)
+    assert np.array_equal(a[1], b[1])
 
 
 def test_message_names_argument_value_and_expectation():
