@@ -365,7 +365,7 @@ def krige(points, values, acf, at, mean=None, strict=False, variance=False):
     Returns the m estimates, or (estimates, kriging variances) with
     variance=True."""
     p, v = _points(points, values, "krige")
-    x = as_coords("krige: at", at, p.shape[1])
+    x = as_coords("krige: at", at, p.shape[1], least=0)
     mu, strict, variance = _mean(mean), as_bool("strict", strict), as_bool("variance", variance)
     m = Model(acf, "acf")
     out = ffi.new("nl_krige_plan **")

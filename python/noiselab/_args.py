@@ -23,6 +23,9 @@ class Error(ValueError):
         self.code = code
 
 
+Error.__module__ = "noiselab"  # its public name (pickles, tracebacks)
+
+
 def _show(value):
     """A value for a message: short, and never failing."""
     try:
@@ -223,14 +226,15 @@ def as_array(name, value, finite=True):
     return a
 
 
-def as_coords(name, value, d=None):
+def as_coords(name, value, d=None, least=1):
     """(n, d) finite coordinates with d = 1, 2 or 3 (or the given d) and
-    n >= 1, float64 C order; a 1D array is n points of one coordinate."""
+    n >= least, float64 C order; a 1D array is n points of one coordinate."""
     a = _real(name, value)
     if a.ndim == 1:
         a = a.reshape(-1, 1)
-    want = "an (n, d) array with d = 1, 2 or 3 and n >= 1" if d is None else "an (n, %d) array with n >= 1" % d
-    if a.ndim != 2 or a.shape[0] < 1 or not (1 <= a.shape[1] <= 3 if d is None else a.shape[1] == d):
+    want = "an (n, d) array with d = 1, 2 or 3" if d is None else "an (n, %d) array" % d
+    want += " and n >= %d" % least if least else ""
+    if a.ndim != 2 or a.shape[0] < least or not (1 <= a.shape[1] <= 3 if d is None else a.shape[1] == d):
         raise Error("%s: expected %s, got shape %s" % (name, want, np.shape(value)))
     a = np.ascontiguousarray(a, dtype=np.float64)
     if not np.isfinite(a).all():

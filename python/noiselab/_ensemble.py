@@ -13,7 +13,7 @@ class _Source:
     when the driver hands it back, so that K converted copies never coexist."""
 
     def __init__(self, fields, spacing, what):
-        self.fields = as_fields(what + ": fields", fields)
+        fields = as_fields(what + ": fields", fields)
         self.fields, self.spacing, self.what = fields, spacing, what
         self.views, self.error = {}, None
         self._get = ffi.callback("int(void *, size_t, const nl_field **)", self.get, error=1, onerror=self.onerror)

@@ -266,7 +266,8 @@ class Plan:
                 else not any(self.options.get(k) for k in unmakes) and any(self._origin)):
             o = tuple(self._origin)
             origin = "%d" % o[0] if len(self.shape) == 1 else "%d,%d" % o
-        return dict(model=self.model, method=self.method, flags=self.flags, seed=str(as_int("seed", seed, 0, (1 << 64) - 1)),
+        seed = as_int("seed", seed, 0, (1 << 64) - 1)
+        return dict(model=self.model, method=self.method, flags=self.flags, seed=str(seed),
                     origin=origin, spacing=self.spacing)
 
     def __repr__(self):
