@@ -93,6 +93,8 @@ HOSTILE = [
     ("coeffs-neighborhood-2.7", lambda p: noiselab.coeffs("markov:scale=2", neighborhood=2.7), "neighborhood"),
     ("coeffs-neighborhood-bool", lambda p: noiselab.coeffs("markov:scale=2", neighborhood=True), "neighborhood"),
     ("coeffs-neighborhood-str", lambda p: noiselab.coeffs("markov:scale=2", neighborhood="x"), "neighborhood"),
+    ("coeffs-neighborhood-empty", lambda p: noiselab.coeffs("markov:scale=2", neighborhood=""), "neighborhood"),
+    ("coeffs-tol-empty", lambda p: noiselab.coeffs("markov:scale=2", tol=""), "tol"),
     ("coeffs-tol-None", lambda p: noiselab.coeffs("markov:scale=2", tol=None), "tol"),
     ("coeffs-tol-rule-junk", lambda p: noiselab.coeffs("markov:scale=2", tol="variance:x"), "tol"),
     ("coeffs-dim-float", lambda p: noiselab.coeffs("markov:scale=2", dim=1.0), "dim"),
@@ -171,7 +173,10 @@ def test_enough_cases():
     lambda p: noiselab.read(p / "missing.tsv"),
     lambda p: noiselab.write(str(p), X),
     lambda p: noiselab.write(str(p / "no" / "f.exr"), X2),
-], ids=["read-dir", "read-missing", "read-missing-pathlike", "write-dir", "write-missing-dir"])
+    lambda p: noiselab.read(""),
+    lambda p: noiselab.write("", X),
+], ids=["read-dir", "read-missing", "read-missing-pathlike", "write-dir", "write-missing-dir", "read-empty",
+        "write-empty"])
 def test_paths_refused(call, tmp_path):
     with pytest.raises(noiselab.Error):
         call(tmp_path)
@@ -188,6 +193,11 @@ def test_numbers_pass():
     a = noiselab.acf(X, mean=np.array(0.25), max_lag=np.float32(4), spacing=np.array(1.0))
     b = noiselab.acf(X, mean=0.25, max_lag=4)
     assert np.array_equal(a[1], b[1])
+
+
+def test_krige_at_no_positions():
+    """No positions is not an error: no estimates."""
+    assert noiselab.krige(PTS, VALS, "markov", np.zeros((0, 2))).shape == (0,)
 
 
 def test_message_names_argument_value_and_expectation():
