@@ -154,7 +154,7 @@ static void once(const char *cmd, const flat_rows *f, int i, const char *arg, in
     const char *now = label_of(f->row[i], l1, sizeof l1);
     if (j >= 0 && !(f->row[i]->flags & CLI_REPEAT)) {
         const char *before = label_of(f->row[j], l2, sizeof l2);
-        if (j == i && !arg)
+        if (j == i && (!arg || !first[s]))
             cli_die(2, "%s: %s: given twice; expected it once", cmd, now);
         if (j == i)
             cli_die(2, "%s: %s: given twice (\"%s\", then \"%s\"); expected it once", cmd, now, first[s] ? first[s] : "",
