@@ -10,7 +10,7 @@ BEGIN { fence = 0; inblock = 0; prevblank = 1; skip = 0; output = 0; blanks = 0 
 /^[ \t]*```/ { fence = !fence; inblock = 0; prevblank = 0; next }
 fence { next }
 /^<!-- doc-test: skip/ { skip = 1; prevblank = 0; next }
-/^<!-- doc-test: output/ { output = 1; prevblank = 0; next }
+/^<!-- doc-test: output/ { output = 1; inblock = 0; blanks = 0; prevblank = 0; next }
 /^    / && (inblock || prevblank) {
     inblock = 1
     line = substr($0, 5)
