@@ -150,8 +150,8 @@ static void check_args(coeffs_args *a, size_t *n)
 {
     cli_opt_need("coeffs", rows, a);
     if (a->tol_text && a->N)
-        cli_die(2, "--tol \"%s\": expected --neighborhood auto (the tolerance stops its growth), got --neighborhood %d%s",
-                a->tol_text, a->N, a->N_given ? "" : " (the default)");
+        cli_die(2, "--tol \"%s\": expected --neighborhood auto (the tolerance stops its growth), got "
+                "--neighborhood %d%s", a->tol_text, a->N, a->N_given ? "" : " (the default)");
     if (a->taps && !a->disp)
         cli_die(2, "--taps %d: expected --displacements correlated (independent displacements have no filter)",
                 a->taps);

@@ -157,8 +157,7 @@ static void once(const char *cmd, const flat_rows *f, int i, const char *arg, in
         if (j == i && (!arg || !first[s]))
             cli_die(2, "%s: %s: given twice; expected it once", cmd, now);
         if (j == i)
-            cli_die(2, "%s: %s: given twice (\"%s\", then \"%s\"); expected it once", cmd, now, first[s] ? first[s] : "",
-                    arg);
+            cli_die(2, "%s: %s: given twice (\"%s\", then \"%s\"); expected it once", cmd, now, first[s], arg);
         cli_die(2, "%s: %s%s%s%s: %s was given too; expected one of %s and %s", cmd, now, arg ? " \"" : "",
                 arg ? arg : "", arg ? "\"" : "", before, before, now);
     }

@@ -227,7 +227,8 @@ Test(opt, an_option_given_twice_is_refused)
     bad("--x 1 --x 2", "noiselab: t: --x: given twice (\"1\", then \"2\"); expected it once\n");
     bad("-f --flag", "noiselab: t: --flag: given twice; expected it once\n");
     bad("-o a.tsv --output b.tsv", "noiselab: t: -o: given twice (\"a.tsv\", then \"b.tsv\"); expected it once\n");
-    bad("--choice alpha --choice alpha", "noiselab: t: --choice: given twice (\"alpha\", then \"alpha\"); expected it once\n");
+    bad("--choice alpha --choice alpha",
+        "noiselab: t: --choice: given twice (\"alpha\", then \"alpha\"); expected it once\n");
     bad("--call a --call b", "noiselab: t: --call: given twice (\"a\", then \"b\"); expected it once\n");
     bad("--opt --opt=2", "noiselab: t: --opt: given twice; expected it once\n");
     bad("--str a --alias b", "noiselab: t: --alias \"b\": --str was given too; expected one of --str and --alias\n");
