@@ -15,16 +15,21 @@
 # printed with their time (every command with DOC_VERBOSE=1), never asserted.
 #
 # The output a page shows is checked too. An indented block just after
-# `<!-- doc-test: output -->` (blank lines allowed between) is what the command
-# before it prints (stdout, then stderr), compared by tests/doc/compare.awk:
-# the shown lines are the output's lines in order, a line `...` standing for
-# any number of lines (so a page may show only the lines it talks about); two
-# lines agree when their text is the same (runs of blanks count as one) and
-# every number the page shows equals the printed number rounded to the digits
-# shown: a page that shows 1.038 needs a printed value that rounds to 1.038 at
-# 3 decimals (1.0378819 does, 1.0385 does not), 2.5e-07 a value whose mantissa
-# rounds to 2.5, 12 one that rounds to 12. DOC_KEEP also keeps what each
-# command printed, in DIR/PAGE/out/LINE (stdout, then stderr), to paste from.
+# `<!-- doc-test: output -->` (blank lines allowed between; the block ends at
+# the next line that is not indented, so some text must come before the next
+# commands) is what the command before it prints, stdout then stderr. The rule
+# (tests/doc/compare.awk): the shown lines are the output's lines in order, a
+# line `...` standing for any number of lines (so a page may show only the
+# lines it talks about), and without `...` at its ends the block starts at the
+# first line printed and ends at the last. Two lines agree when they split
+# into the same text and numbers (a number: optional sign, digits with an
+# optional point, optional exponent): the text between numbers the same (runs
+# of blanks count as one), and each number the page shows equal to the printed
+# one rounded to the digits shown. A page that shows 1.038 needs a printed value
+# that rounds to 1.038 at 3 decimals (1.0378819 does, 1.0386 does not), 2.5e-07
+# one whose mantissa rounds to 2.5, 12 one that rounds to 12; -0.000 is 0.000.
+# DOC_KEEP also keeps what each command printed, in DIR/PAGE/out/LINE (stdout,
+# then stderr), to paste from.
 # The page's links to files of the tree, `](path)` and `](path#anchor)`,
 # must name files that exist (pictures of paper-figures/ included).
 set -u
