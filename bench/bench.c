@@ -525,13 +525,21 @@ int cli_cmd_bench(int argc, char **argv)
     static const struct option opts[] = {{"quick", no_argument, 0, 'q'}, {"repeat", required_argument, 0, 'r'},
                                          {"help", no_argument, 0, 'h'}, {0}};
     int c, quick = 0, reps = 0, st;
+    const char *rtext = NULL; /* --repeat as given */
     size_t d;
     nl_model *m, *me, *mk;
     opterr = 0;
     while ((c = getopt_long(argc, argv, ":h", opts, NULL)) != -1) {
         switch (c) {
-        case 'q': quick = 1; break;
+        case 'q':
+            if (quick)
+                cli_die(2, "bench: --quick: given twice; expected it once");
+            quick = 1;
+            break;
         case 'r':
+            if (rtext)
+                cli_die(2, "bench: --repeat: given twice (\"%s\", then \"%s\"); expected it once", rtext, optarg);
+            rtext = optarg;
             reps = (int)cli_parse_count("--repeat", optarg, 1);
             if (reps > 16)
                 cli_die(2, "--repeat: expected 1 to 16, got \"%s\"", optarg);

@@ -112,13 +112,16 @@ static void check_finite(const nl_model *m, const nl_subdiv_coeffs *c, const cha
 typedef struct {
     const char *spec, *size;
     int dim, N, levels, json, disp, taps, error, stop;
+    int N_given; /* --neighborhood given */
     double tol, s0;
+    const char *tol_text; /* --tol as given, or NULL */
 } coeffs_args;
 
 static void tol_option(void *obj, const char *label, const char *arg)
 {
     coeffs_args *a = obj;
     a->tol = cli_synth_parse_tol(label, arg, &a->stop);
+    a->tol_text = arg;
 }
 
 static const char *const displacements[] = {"independent", "correlated", NULL};
@@ -126,7 +129,8 @@ static const char *const displacements[] = {"independent", "correlated", NULL};
 static const cli_opt rows[] = {
     CLI_STRING("acf", coeffs_args, spec, .need = "an autocorrelation model (see noiselab models)"),
     CLI_OPT_DIMS(coeffs_args, dim, 2, .need = "1 or 2"),
-    CLI_INT("neighborhood", coeffs_args, N, .lo = 1, .flags = CLI_AUTO), CLI_CALL("tol", tol_option),
+    CLI_INT("neighborhood", coeffs_args, N, .lo = 1, .flags = CLI_AUTO, CLI_GIVEN(coeffs_args, N_given)),
+    CLI_CALL("tol", tol_option),
     CLI_INT("levels", coeffs_args, levels, .lo = 1), CLI_POSITIVE("spacing0", coeffs_args, s0, .what = "number"),
     CLI_OPT_JSON(coeffs_args, json), CLI_CHOICE("displacements", coeffs_args, disp, .choices = displacements),
     CLI_INT("taps", coeffs_args, taps, CLI_FROM_TO(1, NL_SUBDIV_MAX_TAPS)), CLI_FLAG("error", coeffs_args, error),
@@ -145,6 +149,9 @@ static int parse(int argc, char **argv, coeffs_args *a)
 static void check_args(coeffs_args *a, size_t *n)
 {
     cli_opt_need("coeffs", rows, a);
+    if (a->tol_text && a->N)
+        cli_die(2, "--tol \"%s\": expected --neighborhood auto (the tolerance stops its growth), got "
+                "--neighborhood %d%s", a->tol_text, a->N, a->N_given ? "" : " (the default)");
     if (a->taps && !a->disp)
         cli_die(2, "--taps %d: expected --displacements correlated (independent displacements have no filter)",
                 a->taps);
@@ -212,7 +219,7 @@ static json_t *levels_json(const nl_subdiv_coeffs *co, const nl_model *m, int au
 
 int cli_cmd_coeffs(int argc, char **argv)
 {
-    coeffs_args a = {NULL, NULL, 0, 2, 0, 0, 0, 0, 0, NL_SUBDIV_STOP_IMPROVEMENT, 1e-4, 1};
+    coeffs_args a = {.N = 2, .stop = NL_SUBDIV_STOP_IMPROVEMENT, .tol = 1e-4, .s0 = 1};
     size_t n[3] = {0, 0, 0};
     nl_model *m;
     nl_subdiv_coeffs *co;

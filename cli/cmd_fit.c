@@ -97,7 +97,8 @@ static const char *const methods[] = {"wls", "ml", "reml", NULL};
 static const char *const weights[] = {"cressie", "pairs", "reweighted", "distance", NULL};
 
 static const cli_opt rows[] = {
-    CLI_STRING("model", opts_t, o.family), CLI_FLAG("nugget", opts_t, o.nugget), CLI_CALL("fix", parse_fix),
+    CLI_STRING("model", opts_t, o.family), CLI_FLAG("nugget", opts_t, o.nugget),
+    CLI_CALL("fix", parse_fix, .flags = CLI_REPEAT),
     CLI_CHOICE("method", opts_t, method, .choices = methods),
     CLI_CHOICE("weights", opts_t, o.weights, .choices = weights), CLI_OPT_BINS(opts_t, vo),
     CLI_OPT_JSON(opts_t, json), {0}};

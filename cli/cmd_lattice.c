@@ -46,9 +46,10 @@ typedef struct {
     char note[240];                       /* what the synthesis approximated, for the header */
     double extent;                        /* --extent */
     uint64_t seed;                        /* --seed */
+    const char *seed_text, *at_text;      /* --seed and --at as given, or NULL */
 } opts_t;
 
-/* --acf SPEC or --spectrum SPEC: the last one given counts. */
+/* --acf SPEC or --spectrum SPEC (one of them: cli/opt.h). */
 static void model_option(void *obj, const char *label, const char *arg)
 {
     opts_t *a = obj;
@@ -72,13 +73,21 @@ static void at_option(void *obj, const char *label, const char *arg)
         a->at[1] = strtod(e + 1, &e);
     if (*e || !(fabs(a->at[0]) <= 1e9) || !(fabs(a->at[1]) <= 1e9))
         cli_die(2, "%s: expected X3[,X4] within 1e9, got \"%s\"", label, arg);
+    a->at_text = arg;
+}
+
+static void seed_option(void *obj, const char *label, const char *arg)
+{
+    opts_t *a = obj;
+    a->seed = cli_parse_u64(label, arg);
+    a->seed_text = arg;
 }
 
 static const cli_opt rows[] = {
     CLI_COUNT("points", opts_t, N, .lo = 2, .need = "the number of lattice points"),
     CLI_OPT_DIMS(opts_t, s, 4, .need = "1 to 4"), CLI_STRING("generator", opts_t, gen), CLI_CALL("acf", model_option),
     CLI_CALL("spectrum", model_option), CLI_POSITIVE("extent", opts_t, extent, .what = "length"),
-    CLI_U64("seed", opts_t, seed), CLI_FLAG("wave-vectors", opts_t, wv), CLI_OPT_JSON(opts_t, json),
+    CLI_CALL("seed", seed_option), CLI_FLAG("wave-vectors", opts_t, wv), CLI_OPT_JSON(opts_t, json),
     CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("mesh", opts_t, mesh), CLI_FLAG("clamp", opts_t, clamp),
     CLI_STRING("image", opts_t, image), CLI_CALL("size", size_option), CLI_CALL("at", at_option), {0}};
 
@@ -92,6 +101,15 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "--points: expected at most 16777216, got %zu", a->N);
     if (a->mesh && a->s != 2)
         cli_die(2, "--mesh: expected --dim 2, got %d", a->s);
+    if (!a->spec && a->seed_text)
+        cli_die(2, "--seed \"%s\": expected a model (--acf or --spectrum): without one there is no field",
+                a->seed_text);
+    if (!a->spec && a->clamp)
+        cli_die(2, "--clamp: expected a model (--acf or --spectrum): without one there is no field");
+    if (!a->image && a->W)
+        cli_die(2, "--size %zu: expected --image (the size of its picture)", a->W);
+    if (!a->image && a->at_text)
+        cli_die(2, "--at \"%s\": expected --image (where its picture cuts the lattice)", a->at_text);
     if (a->image && (a->s < 2 || !a->spec))
         cli_die(2, "--image: expected --dim 2 to 4 and a model (--acf or --spectrum)");
     if (a->image && !cli_has_ext(a->image, ".exr") && !cli_has_ext(a->image, ".png"))

@@ -64,7 +64,7 @@ static void write_png(const char *path, int fr, int frames, const double *img, s
 /* The command's options. */
 typedef struct {
     const char *lat, *out, *image, *tile, *mesh;  /* as given, or NULL */
-    int delaunay;                                 /* --draw delaunay */
+    int delaunay, draw, sized;                    /* --draw delaunay; --draw, --size given */
     size_t N, M, W;                               /* --points, --grid, --size */
     double t0, dt, v, ang;                        /* --time, --dt, --wind speed and degrees */
     int frames;                                   /* --frames */
@@ -87,9 +87,10 @@ static const cli_opt rows[] = {
     CLI_INT("frames", opts_t, frames, .lo = 1, .hi = 10000, .what = "at most 10000 frames"),
     CLI_DOUBLE("dt", opts_t, dt), CLI_POSITIVE("patch", opts_t, o.patch, .what = "size in metres"),
     CLI_POSITIVE("amplitude", opts_t, o.amplitude, .what = "number"), CLI_U64("seed", opts_t, seed),
-    CLI_COUNT("size", opts_t, W, .lo = 8), CLI_OPT_OUTPUT(opts_t, out), CLI_STRING("image", opts_t, image),
+    CLI_COUNT("size", opts_t, W, .lo = 8, CLI_GIVEN(opts_t, sized)), CLI_OPT_OUTPUT(opts_t, out),
+    CLI_STRING("image", opts_t, image),
     CLI_STRING("tile", opts_t, tile), CLI_STRING("mesh", opts_t, mesh),
-    CLI_CHOICE("draw", opts_t, delaunay, .choices = draws), {0}};
+    CLI_CHOICE("draw", opts_t, delaunay, .choices = draws, CLI_GIVEN(opts_t, draw)), {0}};
 
 static void check(int argc, char **argv, const opts_t *a)
 {
@@ -110,6 +111,10 @@ static void check(int argc, char **argv, const opts_t *a)
         cli_die(2, "--time/--dt: expected times within 1e9 s, got %g + %d x %g", a->t0, a->frames - 1, a->dt);
     if (a->delaunay && !a->lat)
         cli_die(2, "--draw: expected --lattice (a grid ocean is drawn from its samples)");
+    if (a->sized && !a->image && !a->tile && !(a->lat && a->out && cli_has_ext(a->out, ".exr")))
+        cli_die(2, "--size %zu: expected --image, --tile or, on the lattice, an .exr -o (the pictures' size)", a->W);
+    if (a->draw && !a->image && !a->tile)
+        cli_die(2, "--draw %s: expected --image or --tile (it says how they are drawn)", draws[a->delaunay]);
     if (a->mesh && !a->lat)
         cli_die(2, "--mesh: expected --lattice");
 }

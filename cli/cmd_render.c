@@ -65,6 +65,7 @@ typedef struct {
     size_t step;                                               /* --step */
     double lo, hi, az, el, zs, fov, sun[2], haze, water;       /* NAN: not given */
     int persp, tile, sea, given_zs, view_opts, colorbar;       /* flags; view options given */
+    int given_step;                                            /* --step given */
 } opts_t;
 
 static void range_option(void *obj, const char *label, const char *arg)
@@ -100,7 +101,7 @@ static void plane_option(void *obj, const char *label, const char *arg)
 static const cli_opt rows[] = {
     CLI_CALL("range", range_option), CLI_CALL("shade", shade_option),
     CLI_POSITIVE("zscale", opts_t, zs, CLI_GIVEN(opts_t, given_zs), .what = "factor"), CLI_OPT_OUTPUT(opts_t, out),
-    CLI_STRING("matrix", opts_t, matrix), CLI_COUNT("step", opts_t, step, .lo = 1),
+    CLI_STRING("matrix", opts_t, matrix), CLI_COUNT("step", opts_t, step, .lo = 1, CLI_GIVEN(opts_t, given_step)),
     CLI_FLAG("perspective", opts_t, persp), CLI_STRING("size", opts_t, size, VIEW),
     CLI_STRING("camera", opts_t, camera, VIEW), CLI_STRING("look", opts_t, look, VIEW),
     CLI_DOUBLE("fov", opts_t, fov, VIEW), CLI_PAIR("sun", opts_t, sun, VIEW), CLI_DOUBLE("haze", opts_t, haze, VIEW),
@@ -122,6 +123,10 @@ static void check(int argc, char **argv, const opts_t *a)
         cli_die(2, "render: --perspective takes none of --matrix, --shade, --range");
     if (a->persp && !a->out)
         cli_die(2, "render: --perspective: expected -o OUT.png");
+    if (a->given_zs && !a->persp && isnan(a->az))
+        cli_die(2, "render: --zscale %g: expected --shade or --perspective (it scales the heights they draw)", a->zs);
+    if (a->given_step && !a->matrix)
+        cli_die(2, "render: --step %zu: expected --matrix (every K-th sample of it)", a->step);
     if (a->colorbar && (a->persp || !isnan(a->az) || !a->out))
         cli_die(2, "render: --colorbar: goes with grey levels into -o OUT.png (not --shade or --perspective)");
 }

@@ -16,50 +16,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The help: the usage, each method's paragraph (its descriptor's help, in
- * the registry's order), then the common options. */
-static const char help_usage[] =
-    "usage: noiselab synth METHOD (--acf SPEC | --spectrum SPEC) --size N[xM[xK]]\n"
-    "                      [--seed S] [--spacing H[,H...]] [--clamp] [--preview P.png]\n"
-    "                      [--json] [method options] -o OUT.exr|OUT.tsv|OUT.h5\n"
-    "                      [--precision single|double]\n\n"
-    "METHOD\n";
-
-static const char help[] =
-    "\n"
-    "  --acf SPEC       autocorrelation model (see noiselab models)\n"
-    "  --spectrum SPEC  spectrum model: power:d=..., spectrum:EXPR, or a bare EXPR in f/fx/fy/k\n"
-    ;
-/* then --size, naming each method's dimensions, then: */
-static const char help_seed[] =
-    "  --seed           64-bit seed (default 1)\n"
-    "  --spacing        output grid spacing, one value or one per axis (default 1)\n";
-/* then --clamp, naming the methods honouring it, then: */
-static const char help_preview[] =
-    "  --preview        8-bit PNG of a 2D field (the first slice of 3D), mean +- 3 sd\n"
-    "  --json           print the synthesis report as JSON\n";
-/* then --condition's first line, naming the conditionable methods */
-static const char help_condition[] =
-    "                   data (conditional simulation, Journel: the field plus the ordinary\n"
-    "                   kriging of data minus field; --mean M: simple); sample i at\n"
-    "                   a + (i + 0.5)(b - a)/N; --interpolation bilinear|nearest reads the field\n"
-    "                   between samples; --realizations K: OUT-1.exr ... OUT-K.exr, seeds S..;\n"
-    "                   --ensemble-mean M.exr, --ensemble-variance V.exr (divisor K - 1);\n"
-    "                   --nmax K: local kriging from the K nearest data (as krige)\n"
-    "  --from FILE      regenerate FILE from what it records (method, options, model,\n"
-    "                   seed, size, spacing): bit for bit for every method\n"
-    "  -o               EXR (any dimension; attributes noiselab.model, .method, .seed,\n"
-    "                   .size, .spacing, .origin, .version, .flags) or TSV (1D: the same as\n"
-    "                   \"# key: value\" lines, then columns t, value, t = (origin + i) h);\n"
-    "                   or HDF5 (.h5: dataset /field, float32, attributes model, method, seed,\n"
-    "                   size, spacing, origin, version, flags, processes; read by noiselab-mpi,\n"
-    "                   which noiselab hands .h5 runs to); nothing is written unless every\n"
-    "                   sample is finite (and, in float32, within its range)\n"
-    "  --precision single|double  .h5 outputs: float32 (default) or float64\n";
-/* then the paragraph on distributed runs, naming the distributed methods,
- * filled to this width */
-#define HELP_MPI_WIDTH 82
-
 /* Every method's options, each name once (the registry's rows, in its
  * order), with getopt codes CLI_MOPT + k. */
 #define CLI_MOPT 1000
@@ -79,6 +35,8 @@ typedef struct {
     const char *mtext[CLI_MAX_MOPTS];                /* method options' values (flags: "") */
     int mgiven[CLI_MAX_MOPTS];                       /* given explicitly (or recorded for another method) */
     cli_synth_cond cond;                             /* --condition and its options */
+    const char *other, *other_value;                 /* the first option --from takes from FILE, and its value */
+    char other_label[96];                            /* (other points here) */
 } cli_synth_args;
 
 static cli_mopt mopts[CLI_MAX_MOPTS];
@@ -298,77 +256,42 @@ static const struct option *options_table(void)
     return opts;
 }
 
-/* The methods with every capability in `have`, none in `lack` and, dims
- * != 0, exactly those dimensions (nl_method_type.dims), joined as
- * nl_method_names does; returns how many. */
-static int names_where(unsigned have, unsigned lack, unsigned dims, const char *last, char *buf, size_t size)
+/* The options a run with --from takes: where the output goes, what it prints. */
+static int with_from(int c)
 {
-    int n = 0, count = 0;
-    size_t len = 0;
-    buf[0] = '\0';
-    for (int pass = 0; pass < 2; pass++)
-        for (int i = 0; i < nl_method_count(); i++) {
-            const nl_method_type *t = nl_method_at(i);
-            if ((t->caps & have) != have || (t->caps & lack) || (dims && t->dims != dims))
-                continue;
-            if (!pass)
-                count++;
-            else if (len < size)
-                len += (size_t)snprintf(buf + len, size - len, "%s%s", !n ? "" : n == count - 1 ? last : ", ",
-                                        t->name), n++;
-        }
-    return count;
+    return c == 'o' || c == 'p' || c == 'j' || c == 'F' || c == 'G' || c == 'h';
 }
 
-/* --size with the dimensions of each method, --clamp with the methods
- * honouring it (spectrum methods zero the negative spectrum, subdivision
- * its negative variances), then --seed and --spacing between them. */
-static void print_size_clamp(void)
+/* Option c given with value arg (NULL: a flag): refused when given before,
+ * as the last would silently win; the first that --from would not use kept
+ * in g.  seen and first: by code, whether given and the first value. */
+static void note_option(const struct option *opts, int c, const char *arg, int *seen, const char **first,
+                        cli_synth_args *g)
 {
-    char text[512], spec[128], var[128], d3[128], d2[128];
-    names_where(0, 0, 7, " and ", d3, sizeof d3);
-    names_where(0, 0, 3, " and ", d2, sizeof d2);
-    snprintf(text, sizeof text, "samples per axis, each >= 2 (1D, 2D or 3D: %s; 1D or 2D: %s)", d3, d2);
-    cli_fill_lead(stdout, "  --size           ", text, 86);
-    fputs(help_seed, stdout);
-    names_where(NL_METHOD_CLAMP, NL_METHOD_SUBDIVISION, 0, ", ", spec, sizeof spec);
-    names_where(NL_METHOD_CLAMP | NL_METHOD_SUBDIVISION, 0, 0, ", ", var, sizeof var);
-    snprintf(text, sizeof text, "synthesise a model that is not positive definite by zeroing its negative spectrum "
-             "(%s) or variances (%s); flagged \"clamped\" in the output, the change in the report", spec, var);
-    cli_fill_lead(stdout, "  --clamp          ", text, 86);
-    fputs(help_preview, stdout);
-}
-
-static void print_help(void)
-{
-    char list[256], mpi[512];
-    fputs(help_usage, stdout);
-    for (int i = 0; i < nl_method_count(); i++) {
-        const char *p = nl_method_at(i)->help;
-        printf("  %-10s", nl_method_at(i)->name);
-        while (*p) {
-            size_t l = strcspn(p, "\n");
-            printf("%s%.*s\n", p == nl_method_at(i)->help ? "" : "            ", (int)l, p);
-            p += l + (p[l] == '\n');
-        }
+    char label[96] = "-o";
+    for (const struct option *o = opts; c != 'o' && o->name; o++)
+        if (o->val == c)
+            snprintf(label, sizeof label, "--%s", o->name);
+    if (seen[c] && !arg)
+        cli_die(2, "synth: %s: given twice; expected it once", label);
+    if (seen[c])
+        cli_die(2, "synth: %s: given twice (\"%s\", then \"%s\"); expected it once", label, first[c], arg);
+    seen[c] = 1, first[c] = arg;
+    if (!with_from(c) && !g->other) {
+        snprintf(g->other_label, sizeof g->other_label, "%s", label);
+        g->other = g->other_label, g->other_value = arg;
     }
-    fputs(help, stdout);
-    print_size_clamp();
-    nl_method_names(NL_METHOD_CONDITIONABLE | NL_METHOD_EXACT_FIRST, NULL, ", ", ", ", list, sizeof list);
-    printf("  --condition DATA.tsv --extent a:b[,c:d[,e:f]]  %s: honour the\n", list);
-    fputs(help_condition, stdout);
-    nl_method_names(NL_METHOD_DISTRIBUTED | NL_METHOD_EXACT_FIRST, NULL, ", ", " and ", list, sizeof list);
-    snprintf(mpi, sizeof mpi, "Under an MPI launcher (mpirun -np P noiselab synth ... -o OUT.h5) %s run "
-             "distributed, each process holding 1/P of the field (docs/scale-out.md).", list);
-    cli_fill(stdout, mpi, HELP_MPI_WIDTH);
 }
 
 /* getopt over argv into job and g; returns 1 when --help was printed. */
 static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
 {
     const struct option *opts = options_table();
-    int c;
+    int c, seen[CLI_MOPT + CLI_MAX_MOPTS] = {0};
+    const char *first[CLI_MOPT + CLI_MAX_MOPTS];
     while ((c = cli_getopt(argc, argv, ":ho:", opts, "synth")) != -1) {
+        if (c >= 0 && c < CLI_MOPT + nmopts)
+            note_option(opts, c, optarg, seen, first, g);
         switch (c) {
         case 'a': g->acf = optarg; break;
         case 'S': g->spec = optarg; break;
@@ -384,7 +307,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'G': g->precision = optarg; break;
         case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q':
             cli_synth_cond_option(&g->cond, c, optarg); break;
-        case 'h': print_help(); return 1;
+        case 'h': cli_synth_print_help(); return 1;
         default:
             if (c >= CLI_MOPT && c < CLI_MOPT + nmopts)
                 method_option(c - CLI_MOPT, optarg, g);
@@ -397,12 +320,15 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
 static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
 {
     if (g->from) {
-        int given = 0;
-        for (int j = 0; j < nmopts; j++)
-            given |= g->mgiven[j];
-        if (optind < argc || g->acf || g->spec || g->size || g->spacing || g->origin || given)
-            cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
-                    "and --json");
+        /* --from regenerates FILE bit for bit: an option that would change it is refused, not ignored */
+        if (g->other)
+            cli_die(2, "synth: %s%s%s%s: expected no option but -o, --preview, --json and --precision with --from %s, "
+                    "which takes the method, its options, model, seed, size and spacing from it", g->other,
+                    g->other_value ? " \"" : "", g->other_value ? g->other_value : "", g->other_value ? "\"" : "",
+                    g->from);
+        if (optind < argc)
+            cli_die(2, "synth: \"%s\": expected no METHOD with --from %s, which takes the method from it",
+                    argv[optind], g->from);
         apply_from(g->from, job, g);
         job->from = 1;
         return;
@@ -449,6 +375,24 @@ static void check_window(const cli_synth_job *job, const cli_synth_args *g)
     }
 }
 
+/* --tol and --max-neighborhood stop and bound the growth of --neighborhood
+ * auto; with a fixed neighbourhood they would do nothing. */
+static void check_auto_only(const cli_synth_job *job, const cli_synth_args *g)
+{
+    static const char *const only_auto[] = {"tol", "max-neighborhood"};
+    int n = mopt_index("neighborhood");
+    if (g->from || nl_method_option_index(job->type, "neighborhood") < 0 ||
+        nl_method_options_get(&job->opts, "neighborhood")->i == 0)
+        return;
+    for (size_t k = 0; k < sizeof only_auto / sizeof *only_auto; k++) {
+        int j = mopt_index(only_auto[k]);
+        if (j >= 0 && g->mgiven[j])
+            cli_die(2, "synth %s: --%s \"%s\": expected --neighborhood auto (it %s its growth), got --neighborhood %s",
+                    job->method, only_auto[k], g->mtext[j], k ? "bounds" : "stops",
+                    g->mgiven[n] ? g->mtext[n] : "2 (the default)");
+    }
+}
+
 /* Each method option against the method it was given with, then their
  * values into the job's options. */
 static void check_method_options(cli_synth_job *job, const cli_synth_args *g)
@@ -468,6 +412,7 @@ static void check_method_options(cli_synth_job *job, const cli_synth_args *g)
             }
     }
     check_window(job, g);
+    check_auto_only(job, g);
     for (int k = 0; k < job->type->noptions; k++) {
         unsigned fl = job->type->options[k].flags;
         int set = nl_method_options_given(&job->opts, job->type->options[k].name);

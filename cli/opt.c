@@ -131,12 +131,46 @@ static void build(const flat_rows *f, struct option *lo, char *so)
     lo[k] = (struct option){0};
 }
 
+/* The first row that fills the field row i fills (or calls its function on
+ * the same struct): the option it is one of. */
+static int slot_of(const flat_rows *f, int i)
+{
+    const cli_opt *r = f->row[i];
+    for (int j = 0; j < i; j++) {
+        const cli_opt *q = f->row[j];
+        if (f->base[j] == f->base[i] && (r->type == CLI_OPT_CALL ? q->type == CLI_OPT_CALL && q->fn == r->fn
+                                                                 : q->type != CLI_OPT_CALL && q->off == r->off))
+            return j;
+    }
+    return i;
+}
+
+/* Row i given with value arg: exit 2 when its option was given before
+ * (row seen[slot] - 1, with value first[slot]) and may not be repeated. */
+static void once(const char *cmd, const flat_rows *f, int i, const char *arg, int *seen, const char **first)
+{
+    char l1[64], l2[64];
+    int s = slot_of(f, i), j = seen[s] - 1;
+    const char *now = label_of(f->row[i], l1, sizeof l1);
+    if (j >= 0 && !(f->row[i]->flags & CLI_REPEAT)) {
+        const char *before = label_of(f->row[j], l2, sizeof l2);
+        if (j == i && (!arg || !first[s]))
+            cli_die(2, "%s: %s: given twice; expected it once", cmd, now);
+        if (j == i)
+            cli_die(2, "%s: %s: given twice (\"%s\", then \"%s\"); expected it once", cmd, now, first[s], arg);
+        cli_die(2, "%s: %s%s%s%s: %s was given too; expected one of %s and %s", cmd, now, arg ? " \"" : "",
+                arg ? arg : "", arg ? "\"" : "", before, before, now);
+    }
+    seen[s] = i + 1, first[s] = arg;
+}
+
 int cli_opt_parse(const char *cmd, const char *help, const cli_opt *rows, void *obj, int argc, char **argv)
 {
     flat_rows f = {.n = 0};
     struct option lo[MAX_ROWS + 2];
     char so[3 * MAX_ROWS + 3], label[64];
-    int c;
+    int c, seen[MAX_ROWS] = {0};
+    const char *first[MAX_ROWS] = {0};
     flatten(&f, rows, 0);
     build(&f, lo, so);
     while ((c = cli_getopt(argc, argv, so, lo, cmd)) != -1) {
@@ -149,6 +183,7 @@ int cli_opt_parse(const char *cmd, const char *help, const cli_opt *rows, void *
         if (c < 256) /* a short option: its row */
             for (i = 0; f.row[i]->letter != c; i++)
                 ;
+        once(cmd, &f, i, optarg, seen, first);
         take(f.row[i], obj, f.base[i], label_of(f.row[i], label, sizeof label), optarg);
     }
     return 0;

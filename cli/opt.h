@@ -33,8 +33,12 @@ typedef enum {
 
 /* flags: DOUBLE's range checks lo <= v and v <= hi; the value may be left
  * out (a DOUBLE or POSITIVE field is then 0); INT: "auto" sets 0.  COUNT
- * and INT take lo as the least value and hi, when not 0, as the largest. */
-enum { CLI_RANGE_LO = 1, CLI_RANGE_HI = 2, CLI_OPTIONAL = 4, CLI_AUTO = 8 };
+ * and INT take lo as the least value and hi, when not 0, as the largest.
+ * CLI_REPEAT: the option may be given more than once (each value taken in
+ * turn; its help says so, "[--fix NAME=VALUE]..."); any other option given
+ * twice, or with another row that fills the same field or calls the same
+ * function (--acf and --spectrum), is refused: the last would silently win. */
+enum { CLI_RANGE_LO = 1, CLI_RANGE_HI = 2, CLI_OPTIONAL = 4, CLI_AUTO = 8, CLI_REPEAT = 16 };
 
 /* One row of an option table. */
 typedef struct cli_opt {
@@ -58,7 +62,8 @@ typedef struct cli_opt {
 
 /* Parse argv[1..] for subcommand cmd by the rows, filling obj: 0, optind at
  * the first operand; 1 at once on --help (-h), after printing help unless
- * NULL.  A bad option or value exits 2 with its message (cli_die). */
+ * NULL.  A bad option or value, or an option given twice (see CLI_REPEAT),
+ * exits 2 with its message (cli_die). */
 int cli_opt_parse(const char *cmd, const char *help, const cli_opt *rows, void *obj, int argc, char **argv);
 
 /* A row by its type, in the manner of git's OPT_BOOL: long name N, the

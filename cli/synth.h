@@ -45,6 +45,9 @@ json_t *cli_synth_json(const cli_synth_job *job, const nl_meta *meta, const cli_
 /* The provenance of a synthesised field (cmd_synth.c). */
 void cli_synth_fill_meta(const cli_synth_job *job, const nl_field *f, const cli_synth_result *res, nl_meta *meta);
 
+/* synth --help (cli/synth_help.c). */
+void cli_synth_print_help(void);
+
 /* An integer option in min..max, checked before it is narrowed to int
  * (exit 2 naming opt otherwise). */
 int cli_synth_parse_int(const char *opt, const char *s, int min, int max);

@@ -22,6 +22,7 @@ typedef struct {
     uint64_t seed;
     cli_inputs in;
     const char *seen; /* the callback's value */
+    int adds;         /* --add's calls */
 } opts_t;
 
 static void call(void *obj, const char *label, const char *arg)
@@ -29,6 +30,12 @@ static void call(void *obj, const char *label, const char *arg)
     if (strcmp(arg, "bad") == 0)
         cli_die(2, "%s: expected anything but bad, got \"%s\"", label, arg);
     ((opts_t *)obj)->seen = arg;
+}
+
+static void add(void *obj, const char *label, const char *arg)
+{
+    (void)label, (void)arg;
+    ((opts_t *)obj)->adds++;
 }
 
 static const char *const words[] = {"alpha", "beta", "gamma", NULL};
@@ -51,6 +58,8 @@ static const cli_opt rows[] = {
     {.name = "opt", .type = CLI_OPT_POSITIVE, CLI_AT(opts_t, opt), CLI_GIVEN(opts_t, views), .flags = CLI_OPTIONAL,
      .what = "largest lag"},
     {.name = "call", .type = CLI_OPT_CALL, .fn = call},
+    {.name = "add", .type = CLI_OPT_CALL, .fn = add, .flags = CLI_REPEAT},
+    {.name = "alias", .type = CLI_OPT_STRING, CLI_AT(opts_t, str)},
     CLI_INT("nb", opts_t, nb, CLI_FROM_TO(1, 9), .flags = CLI_AUTO, .need = "a neighbourhood"),
     CLI_OPT_DIMS(opts_t, dim, 3),
     CLI_OPT_OUTPUT(opts_t, out),
@@ -207,4 +216,25 @@ Test(opt, auto_and_need)
     fclose(stderr);
     cr_expect_eq(code, 2);
     cr_expect_str_eq(msg, "noiselab: t: --nb: expected a neighbourhood\n");
+}
+
+/* The last of two values would silently win: an option given twice is
+ * refused, by any of its spellings, and so are two rows that fill one field
+ * (--acf and --spectrum); one marked CLI_REPEAT takes each value in turn. */
+Test(opt, an_option_given_twice_is_refused)
+{
+    opts_t o;
+    bad("--x 1 --x 2", "noiselab: t: --x: given twice (\"1\", then \"2\"); expected it once\n");
+    bad("-f --flag", "noiselab: t: --flag: given twice; expected it once\n");
+    bad("-o a.tsv --output b.tsv", "noiselab: t: -o: given twice (\"a.tsv\", then \"b.tsv\"); expected it once\n");
+    bad("--choice alpha --choice alpha",
+        "noiselab: t: --choice: given twice (\"alpha\", then \"alpha\"); expected it once\n");
+    bad("--call a --call b", "noiselab: t: --call: given twice (\"a\", then \"b\"); expected it once\n");
+    bad("--opt --opt=2", "noiselab: t: --opt: given twice; expected it once\n");
+    bad("--str a --alias b", "noiselab: t: --alias \"b\": --str was given too; expected one of --str and --alias\n");
+    bad("--size 8 --size 16", "noiselab: t: --size: given twice (\"8\", then \"16\"); expected it once\n");
+    cr_assert_eq(parse(&o, "--pair 1,2 --opt=3"), 0, "%s", msg);
+    cr_expect_eq(o.views, 1, "two options marking one given field are two options");
+    cr_assert_eq(parse(&o, "--add a --x 1 --add b --add c"), 0, "%s", msg);
+    cr_expect_eq(o.adds, 3, "a repeatable option takes every value");
 }

@@ -13,6 +13,23 @@
 # CMD_SECONDS (default 120); DOC_KEEP=DIR keeps each page's folder in DIR
 # (DIR/README/try, DIR/tour/try) instead of removing it.  Failures and commands of 5 s or more are
 # printed with their time (every command with DOC_VERBOSE=1), never asserted.
+#
+# The output a page shows is checked too. An indented block just after
+# `<!-- doc-test: output -->` (blank lines allowed between; the block ends at
+# the next line that is not indented, so some text must come before the next
+# commands) is what the command before it prints, stdout then stderr. The rule
+# (tests/doc/compare.awk): the shown lines are the output's lines in order, a
+# line `...` standing for any number of lines (so a page may show only the
+# lines it talks about), and without `...` at its ends the block starts at the
+# first line printed and ends at the last. Two lines agree when they split
+# into the same text and numbers (a number: optional sign, digits with an
+# optional point, optional exponent): the text between numbers the same (runs
+# of blanks count as one), and each number the page shows equal to the printed
+# one rounded to the digits shown. A page that shows 1.038 needs a printed value
+# that rounds to 1.038 at 3 decimals (1.0378819 does, 1.0386 does not), 2.5e-07
+# one whose mantissa rounds to 2.5, 12 one that rounds to 12; -0.000 is 0.000.
+# DOC_KEEP also keeps what each command printed, in DIR/PAGE/out/LINE (stdout,
+# then stderr), to paste from.
 # The page's links to files of the tree, `](path)` and `](path#anchor)`,
 # must name files that exist (pictures of paper-figures/ included).
 set -u
@@ -33,7 +50,20 @@ PATH="$bin:$PATH"
 export PATH
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 tab=$(printf '\t')
-n=0 links=0 fail=0
+# the output shown since the last command ($work/want) against what it printed
+compare_output() {
+    [ -s "$work/want" ] || return 0
+    outs=$((outs + 1))
+    if [ -z "$last" ]; then
+        fail=$((fail + 1))
+        printf 'FAIL %s:%s shows output before any command\n' "$name" "$(head -n 1 "$work/want" | cut -f 1)"
+    elif ! awk -f "$top/tests/doc/compare.awk" "$work/want" "$pw/out/$last" >"$work/why"; then
+        fail=$((fail + 1))
+        printf 'FAIL %s:%s output of the command on line %s: %s\n' "$name" "$(cut -d ' ' -f 2 "$work/why" | tr -d :)" "$last" "$(cut -d ' ' -f 3- "$work/why")"
+    fi
+    : >"$work/want"
+}
+n=0 links=0 fail=0 outs=0
 for page in "$@"; do
     name=$(basename "$page")
     pdir=$(cd "$(dirname "$page")" && pwd)
@@ -45,8 +75,16 @@ for page in "$@"; do
     rm -rf "$pw" && mkdir -p "$pw/try"
     ln -s "$top/experiments" "$pw/experiments"
     ln -s "$bin" "$pw/bin"
+    mkdir -p "$pw/out"
     awk -f "$top/tests/doc/extract.awk" "$page" >"$work/cmds" || exit 1
-    while IFS="$tab" read -r line cmd; do
+    : >"$work/want"
+    last=""
+    while IFS="$tab" read -r line kind cmd; do
+        if [ "$kind" = o ]; then
+            printf '%s\t%s\n' "$line" "$cmd" >>"$work/want"
+            continue
+        fi
+        compare_output
         case "$cmd" in '#'*) continue ;; esac
         n=$((n + 1))
         want=0
@@ -55,6 +93,8 @@ for page in "$@"; do
         (cd "$pw/try" && timeout -k 5 "$secs" sh -c "$cmd" >"$work/out" 2>"$work/err" </dev/null)
         rc=$?
         took=$(( $(date +%s) - start ))
+        last=$line
+        cat "$work/out" "$work/err" >"$pw/out/$line"
         if [ "$rc" = "$want" ]; then
             [ -z "${DOC_VERBOSE:-}" ] && [ "$took" -lt 5 ] || printf 'ok   %s:%s (%ss) %s\n' "$name" "$line" "$took" "$cmd"
         else
@@ -63,6 +103,7 @@ for page in "$@"; do
             tail -n 5 "$work/err" | sed 's/^/     | /'
         fi
     done <"$work/cmds"
+    compare_output
 done
-echo "documentation: $n commands and $links links, $fail failed"
+echo "documentation: $n commands, $outs outputs and $links links, $fail failed"
 [ "$fail" -eq 0 ]
