@@ -3,6 +3,7 @@
 #include "nl_error.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const char *const names[] = {"x", "y", "z", "value"};
@@ -10,6 +11,18 @@ static const char *const names[] = {"x", "y", "z", "value"};
 int nl_tsv_skipped(const char *line)
 {
     return line[0] == '#' || line[strspn(line, "\r")] == '\n' || line[strspn(line, "\r")] == 0;
+}
+
+/* Is name[0..len) a number (a data row where the header should be)? */
+static int number(const char *name, size_t len)
+{
+    char buf[64], *end;
+    if (len == 0 || len >= sizeof buf)
+        return 0;
+    memcpy(buf, name, len);
+    buf[len] = 0;
+    strtod(buf, &end);
+    return *end == 0;
 }
 
 /* Column `col` (1-based) named name[0..len): record it in c. */
@@ -22,10 +35,13 @@ static int name_column(const char *path, size_t lineno, const char *name, size_t
     if (len == 0)
         return NL_ERROR(NL_EINPUT, "%s:%zu: column %zu of the header has no name; expected x, y, z or value", path,
                         lineno, col);
-    if (k == 4)
+    if (k == 4) {
+        const char *hint = memchr(name, ' ', len) ? ": columns are separated by tabs, not spaces"
+                           : number(name, len)    ? ": a table starts with a header line of column names"
+                                                  : "";
         return NL_ERROR(NL_EINPUT, "%s:%zu: column %zu of the header is named \"%.*s\"; expected x, y, z or value "
-                        "(tab-separated, each once)%s", path, lineno, col, (int)len, name,
-                        memchr(name, ' ', len) ? ": columns are separated by tabs, not spaces" : "");
+                        "(tab-separated, each once)%s", path, lineno, col, (int)len, name, hint);
+    }
     if (c->at[k] >= 0)
         return NL_ERROR(NL_EINPUT, "%s:%zu: the header names \"%s\" twice (columns %d and %zu)", path, lineno,
                         names[k], c->at[k] + 1, col);
