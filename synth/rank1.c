@@ -295,25 +295,17 @@ int nl_rank1_delaunay(const nl_rank1_lattice *L, size_t *n1, size_t *n2, double 
         if (d < b1)
             b1 = d, *n1 = n, v1[0] = v[0], v1[1] = v[1];
     }
-    /* The second vector may lie outside [-1/2, 1/2)^2: for few points the
-     * reduced vectors can all be multiples of the first (N = 3, generator
-     * (1, 2): (1/3, -1/3) and (-1/3, 1/3)), and the basis needs a torus
-     * translate such as (1/3, 2/3). */
-    for (size_t n = 0; n < L->N; n++)
-        for (int i = -1; i <= 1; i++)
-            for (int j = -1; j <= 1; j++) {
-                torus_vec(L, n, v);
-                v[0] += i, v[1] += j;
-                double d = v[0] * v[0] + v[1] * v[1], det = v1[0] * v[1] - v1[1] * v[0];
-                if (fabs(fabs(det) * (double)L->N - 1) < 1e-6 && d < b2)
-                    b2 = d, *n2 = n, v2[0] = v[0], v2[1] = v[1];
-            }
+    for (size_t n = 1; n < L->N; n++) {
+        torus_vec(L, n, v);
+        double d = v[0] * v[0] + v[1] * v[1], det = v1[0] * v[1] - v1[1] * v[0];
+        if (fabs(fabs(det) * (double)L->N - 1) < 1e-6 && d < b2)
+            b2 = d, *n2 = n, v2[0] = v[0], v2[1] = v[1];
+    }
     if (isinf(b2))
-        return NL_ERROR(NL_EFAIL, "delaunay: no second basis vector of %zu points (generator of the lattice "
-                        "degenerate?)", L->N);
+        return NL_ERROR(NL_EFAIL, "delaunay: no basis found");
     if (v1[0] * v2[0] + v1[1] * v2[1] < 0) {
         v2[0] = -v2[0], v2[1] = -v2[1];
-        *n2 = (L->N - *n2) % L->N;
+        *n2 = L->N - *n2;
     }
     return NL_OK;
 }
@@ -333,12 +325,6 @@ static void cell(const nl_rank1_lattice *L, size_t n, size_t n1, size_t n2, cons
     P[1][0] = x[0] + v1[0], P[1][1] = x[1] + v1[1];
     P[2][0] = x[0] + v2[0], P[2][1] = x[1] + v2[1];
     P[3][0] = x[0] + v1[0] + v2[0], P[3][1] = x[1] + v1[1] + v2[1];
-    if (v1[0] * v2[1] - v1[1] * v2[0] < 0) {  /* counter-clockwise triangles */
-        size_t i = id[1];
-        double p0 = P[1][0], p1 = P[1][1];
-        id[1] = id[2], id[2] = i;
-        P[1][0] = P[2][0], P[1][1] = P[2][1], P[2][0] = p0, P[2][1] = p1;
-    }
 }
 
 int nl_rank1_rasterize(const nl_rank1_lattice *L, const double *f, const double *grad, size_t W, double *img,

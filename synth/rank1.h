@@ -110,15 +110,12 @@ int nl_rank1_synthesize(const nl_rank1_lattice *L, const double *c, double exten
                      double *imag);
 
 /* Periodic Delaunay triangulation of a 2D lattice by an O(N) scan: the
- * shortest torus vector v1 = x_{n1}, then the shortest v2 = x_{n2} + (i, j)
- * (i, j in -1..1: with few points every reduced vector can be a multiple of
- * v1, as for N = 3) with |det(v1, v2)| = 1/N (a basis), with v2 replaced by
- * -v2 when v1 . v2 < 0 so that the parallelogram's short diagonal is
- * v2 - v1.  The 2N triangles are (x_n, x_n + v1, x_n + v2) and (x_n + v1,
- * x_n + v1 + v2, x_n + v2), that is, point indices (n, n + n1, n + n2) and
- * (n + n1, n + n1 + n2, n + n2) mod N, unwrapped by the vectors v1, v2 (the
- * mesh and the rasteriser list them counter-clockwise, v1 and v2 swapped
- * when det(v1, v2) < 0).
+ * shortest torus vector v1 = x_{n1}, then the shortest v2 = x_{n2} with
+ * |det(v1, v2)| = 1/N (a basis), with v2 replaced by -v2 when v1 . v2 < 0
+ * so that the parallelogram's short diagonal is v2 - v1.  The 2N triangles
+ * are (x_n, x_n + v1, x_n + v2) and (x_n + v1, x_n + v1 + v2, x_n + v2),
+ * that is, point indices (n, n + n1, n + n2) and (n + n1, n + n1 + n2,
+ * n + n2) mod N, unwrapped by the vectors v1, v2.
  * NL_EINVAL: not 2D, or N < 3; NL_EFAIL: no basis found (not expected for
  * a lattice; kept as a guard). */
 int nl_rank1_delaunay(const nl_rank1_lattice *L, size_t *n1, size_t *n2, double *v1, double *v2);
