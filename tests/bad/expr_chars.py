@@ -1,5 +1,7 @@
-# Generates tests/bad/expr_chars.cases: one case per ASCII character that
-# libmatheval's scanner has no rule for (it would echo it to stdout and drop it).
+#!/usr/bin/env python3
+# Writes tests/bad/expr_chars.cases to stdout: one case per ASCII character
+# that libmatheval's scanner has no rule for (it would echo it to stdout and
+# drop it).  python3 tests/bad/expr_chars.py > tests/bad/expr_chars.cases
 ok = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.+-*/^() \t")
 T = [
     ('$NL synth fft --acf "expr:exp(-abs(t)%s/8)" --size 64 -o out.tsv', 12),
@@ -13,7 +15,7 @@ T = [
 print("# Expressions with a character libmatheval's scanner has no rule for (flex would echo it")
 print("# to stdout and drop it): refused, naming the character and its position, with nothing on")
 print("# stdout.  One case per such ASCII character (NUL cannot be in an argument), cycling")
-print("# through every option that takes an expression.  Generated once; RULE EXIT NEEDLE COMMAND.")
+print("# through every option that takes an expression.  Generated once by tests/bad/expr_chars.py;\n# RULE EXIT NEEDLE COMMAND.")
 k = 0
 for c in range(1, 128):
     ch = chr(c)
