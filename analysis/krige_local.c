@@ -174,19 +174,35 @@ const char *nl_kl_where(const nl_krige_local *k, const double *x, char *buf)
     return buf;
 }
 
+/* What the neighbourhood of a location is, for messages: the data within
+ * the radius, the nmax nearest or all of them, less a datum left out. */
+static const char *hood(const nl_krige_local *k, size_t skip, char *buf)
+{
+    const char *less = skip != (size_t)-1 ? ", less the point left out" : "";
+    if (k->o.radius > 0 && k->o.nmax)
+        snprintf(buf, 96, "the nearest %zu within the radius %g%s", k->o.nmax, k->o.radius, less);
+    else if (k->o.radius > 0)
+        snprintf(buf, 96, "the data within the radius %g%s", k->o.radius, less);
+    else if (k->o.nmax)
+        snprintf(buf, 96, "the nearest %zu, no radius%s", k->o.nmax, less);
+    else
+        snprintf(buf, 96, "all the data, no radius%s", less);
+    return buf;
+}
+
 /* Location x: estimate and variance from the neighbourhood of x (without
  * datum skip). */
 int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w, double *est, double *var)
 {
     size_t K = neighbours(k, x, skip, w), p = k->p;
     int st;
-    char at[64];
+    char at[64], desc[96];
     if (w->overflow)
         return NL_ERROR(NL_EINVAL, "kriging: more than %zu data within the radius %g of %s; expected fewer (set nmax)",
                         k->cap, k->o.radius, nl_kl_where(k, x, at));
     if (K < p || K == 0)
-        return NL_ERROR(NL_EINVAL, "kriging: %zu data within the radius %g of %s; expected at least %zu", K,
-                        k->o.radius, nl_kl_where(k, x, at), p ? p : 1);
+        return NL_ERROR(NL_EINVAL, "kriging: %zu data in the neighbourhood of %s (%s); expected at least %zu", K,
+                        nl_kl_where(k, x, at), hood(k, skip, desc), p ? p : 1);
     if (!(w->valid && K == w->K && memcmp(w->next, w->set, K * sizeof *w->set) == 0)) {
         memcpy(w->set, w->next, K * sizeof *w->set);
         w->K = K, w->valid = 0;

@@ -146,20 +146,65 @@ double nl_hermite_cov(const nl_hermite *h, double rho)
     return s;
 }
 
+/* Steps of the scan of [0, 1] and of [-1, 0] that brackets a root.  The
+ * series need not be monotone: an even g (x^2, |x|) has only even terms and
+ * an even covariance in rho, a mixed one can turn. */
+enum { INVERT_STEPS = 512 };
+
+/* Bisect cov(rho) = cov between a and b, where the difference changes sign. */
+static double bisect(const nl_hermite *h, double cov, double a, double b)
+{
+    double fa = nl_hermite_cov(h, a) - cov;
+    for (int i = 0; i < 100; i++) {
+        double mid = 0.5 * (a + b), f = nl_hermite_cov(h, mid) - cov;
+        if ((f <= 0) == (fa <= 0))
+            a = mid, fa = f;
+        else
+            b = mid;
+    }
+    return 0.5 * (a + b);
+}
+
+/* The root nearest 0 on the side sign (+1 or -1) of 0, or NAN. */
+static double invert_side(const nl_hermite *h, double cov, double sign)
+{
+    double a = 0, fa = -cov;  /* cov(0) = 0: the series starts at n = 1 */
+    if (fa == 0)
+        return 0;
+    for (int i = 1; i <= INVERT_STEPS; i++) {
+        double b = sign * i / (double)INVERT_STEPS, fb = nl_hermite_cov(h, b) - cov;
+        if (fb == 0)
+            return b;
+        if ((fa < 0) != (fb < 0))
+            return bisect(h, cov, a, b);
+        a = b, fa = fb;
+    }
+    return NAN;
+}
+
 double nl_hermite_invert(const nl_hermite *h, double cov)
 {
-    double lo = -1, hi = 1;
-    double flo = nl_hermite_cov(h, lo), fhi = nl_hermite_cov(h, hi);
-    if (cov < fmin(flo, fhi) || cov > fmax(flo, fhi))
+    double first = cov >= 0 ? 1 : -1, r;
+    if (!isfinite(cov))
         return NAN;
-    for (int i = 0; i < 100; i++) {
-        double mid = 0.5 * (lo + hi), f = nl_hermite_cov(h, mid);
-        if ((f < cov) == (fhi > flo))
-            lo = mid;
-        else
-            hi = mid;
+    r = invert_side(h, cov, first);
+    return isnan(r) ? invert_side(h, cov, -first) : r;
+}
+
+/* The rho in [-1, 1] whose output covariance is nearest `cov` (on the scan's
+ * grid): where a target is out of reach, the design's best stand-in.  (Not
+ * the end of the interval on the target's side: through an even g the
+ * covariance never goes negative, and the nearest to a negative target is
+ * rho = 0, not -1.) */
+static double nearest(const nl_hermite *h, double cov)
+{
+    double best = 0, dbest = fabs(cov);
+    for (int i = -INVERT_STEPS; i <= INVERT_STEPS; i++) {
+        double r = i / (double)INVERT_STEPS, d = fabs(nl_hermite_cov(h, r) - cov);
+        if (d < dbest)
+            best = r, dbest = d;
     }
-    return 0.5 * (lo + hi);
+    return best;
 }
 
 int nl_nonlin_design(const nl_hermite *h, const double *target, size_t n, double spacing, double *rho, double *S,
@@ -180,9 +225,9 @@ int nl_nonlin_design(const nl_hermite *h, const double *target, size_t n, double
     scale = var / target[0];
     for (size_t j = 0; j < n; j++) {
         double r = nl_hermite_invert(h, target[j] * scale);
-        if (isnan(r)) {  /* beyond what g can produce: the nearest end */
+        if (isnan(r)) {  /* beyond what g can produce: the nearest it can */
             bad++;
-            r = target[j] * scale > 0 ? 1 : -1;
+            r = nearest(h, target[j] * scale);
         }
         R->data[j] = r;
     }

@@ -53,8 +53,11 @@ int nl_hermite_expand(const nl_dist *to, int terms, nl_hermite *h);
 double nl_hermite_cov(const nl_hermite *h, double rho);
 
 /* Inverse: the input correlation rho in [-1, 1] whose output covariance is
- * `cov` (bisection; the series is increasing in rho for rho >= 0); NAN when
- * cov is out of the attainable range. */
+ * `cov`: of the roots on the side of 0 of cov's sign, the one nearest 0, else
+ * the one nearest 0 on the other side (a scan outward from rho = 0 in steps
+ * of 1/512, then bisection; the series need not be monotone: an even g such
+ * as x^2 gives an even covariance, 2 rho^2, and a positive cov has the root
+ * sqrt(cov / 2) > 0).  NAN when no rho in [-1, 1] gives cov. */
 double nl_hermite_invert(const nl_hermite *h, double cov);
 
 /* Design (GI '86: "in theory it should be possible to design the spectrum
@@ -62,7 +65,8 @@ double nl_hermite_invert(const nl_hermite *h, double cov);
  * distortion"): given the wanted output covariance `target` on a periodic
  * 1D grid (wrapped order, n samples; it is rescaled so that target[0] is
  * the output variance of g), find the input correlation lag by lag with
- * nl_hermite_invert, then project onto valid spectra: the input's spectrum
+ * nl_hermite_invert (a lag out of reach gets the rho whose output is
+ * nearest its target), then project onto valid spectra: the input's spectrum
  * (core/wk.h, spacing h) with negative values set to 0 and its variance
  * back to 1.  rho[] (n) receives the designed input correlation, S[] (n,
  * may be NULL) its spectrum; *err the largest |predicted output - target|

@@ -6,6 +6,7 @@
 #include "../core/nl_error.h"
 #include "../core/spindex.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -174,8 +175,19 @@ static int check_points(const nl_points *p, double *diag, double *gdiag)
     *diag = sqrt(s);
     if (!isfinite(*diag))
         return NL_ERROR(NL_EINVAL, "variogram: the points span a distance that is not finite; expected finite coordinates");
-    if (!(*diag > 0))
-        return NL_ERROR(NL_EINVAL, "variogram: all %zu points are at one place; expected points at two places at least", p->n);
+    if (!(*diag > 0) || s < DBL_MIN) {
+        int k = 0;
+        for (int a = 1; a < dim; a++)
+            if (hi[a] - lo[a] > hi[k] - lo[k])
+                k = a;
+        if (hi[k] == lo[k])
+            return NL_ERROR(NL_EINVAL, "variogram: all %zu points are at one place; expected points at two places at "
+                            "least", p->n);
+        /* distinct, but their squared distances underflow */
+        return NL_ERROR(NL_EINVAL, "variogram: the %zu points span only %g (coordinate %d, %g to %g), below what "
+                        "double precision resolves in squared distances; expected a span of at least %.3g "
+                        "(rescale the coordinates)", p->n, hi[k] - lo[k], k + 1, lo[k], hi[k], sqrt(DBL_MIN));
+    }
     *gdiag = gstat_diagonal(p, lo, hi, *diag);
     return NL_OK;
 }

@@ -71,7 +71,7 @@ static void profile_1d(const nl_model *m, const nl_check *k, double rmax, json_t
     if (!(rmax > 0))
         rmax = k->scale / 4;
     for (int i = 0; i < NL; i++) {
-        r[i] = rmax * i / (NL - 1);
+        r[i] = rmax * ((double)i / (NL - 1)); /* no overflow for rmax near DBL_MAX */
         c1[i] = nl_model_acf(m, 1, &r[i]);
     }
     cli_check(nl_check_matheron_2d(m, NL, r, c2));

@@ -162,6 +162,17 @@ static void make_lattice(opts_t *a, nl_rank1_lattice *L)
         st = nl_rank1_generator(N, s, g, L);
     }
     cli_check(st);
+    /* a 2D default generator of very few points can be degenerate too (N =
+     * 3: (1, 2), every point on x1 + x2 = 0), and then has no Delaunay
+     * mesh; in more dimensions the defaults are left as they were */
+    if (s == 2 && (st = nl_rank1_check_generator(N, s, L->g))) {
+        const char *why = nl_errmsg(), *pre = "generator: degenerate: ";
+        if (strncmp(why, pre, strlen(pre)) == 0)
+            why += strlen(pre);
+        nl_rank1_free(L);
+        cli_die(2, "--points %zu: the %s lattice of %zu points is degenerate: %s; expected more points", N, gen, N,
+                why);
+    }
 }
 
 static void print_wave_vectors(const opts_t *a, const nl_rank1_lattice *L)

@@ -82,7 +82,7 @@ static void wind_option(void *obj, const char *label, const char *arg)
 static const char *const draws[] = {"series", "delaunay", NULL};
 
 static const cli_opt rows[] = {
-    CLI_STRING("lattice", opts_t, lat), CLI_COUNT("points", opts_t, N, .lo = 3),
+    CLI_STRING("lattice", opts_t, lat), CLI_COUNT("points", opts_t, N, .lo = 5), /* 3 points: every one on a line */
     CLI_COUNT("grid", opts_t, M, .lo = 4), CLI_CALL("wind", wind_option), CLI_DOUBLE("time", opts_t, t0),
     CLI_INT("frames", opts_t, frames, .lo = 1, .hi = 10000, .what = "at most 10000 frames"),
     CLI_DOUBLE("dt", opts_t, dt), CLI_POSITIVE("patch", opts_t, o.patch, .what = "size in metres"),

@@ -19,7 +19,7 @@ static const char help[] =
     "its spacing and origin its recorded window origin (noiselab.origin; 0 when\n"
     "absent); a field made on an --extent a:b (synth --condition) has its samples at\n"
     "the cell centres a + (i + 0.5) h.\n"
-    "  --points PTS.tsv  a header x [y [z]] (and optionally value, ignored), then one\n"
+    "  --points PTS.tsv  a header x [y [z]] (any order; a value column is ignored), one\n"
     "                    row per point; every point must lie within the samples' span\n"
     "                    (the first one outside is refused, exit 2)\n"
     "  --random N        N points drawn uniformly within the samples' span, from --seed\n"

@@ -19,7 +19,7 @@ static const char help[] =
     "estimator) and the pair count; empty bins are left out.  Defaults as gstat:\n"
     "C = a third of the bounding-box diagonal (for 3D points gstat's box, whose z\n"
     "extent runs from the smallest z to the first point's), W = C / 15.  DATA.tsv:\n"
-    "a header line x [y [z]] value, then one row per point; a field (.exr, .png) is\n"
+    "a header x [y [z]] value (any order), a row per point; a field (.exr, .png) is\n"
     "read as its samples at i * spacing.  --direction: gstat's alpha, degrees\n"
     "clockwise from +y towards +x, keeping pairs within T degrees (tol.hor) of it.\n"
     "Writes a TSV (distance, gamma, pairs) to -o or stdout; --json prints the three\n"

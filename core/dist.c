@@ -1,6 +1,7 @@
 /* Named distributions through GSL's densities, CDFs and inverse CDFs. */
 #include "dist.h"
 #include "gsl_guard_internal.h"
+#include "matheval_internal.h"
 #include "nl_error.h"
 
 #include <gsl/gsl_cdf.h>
@@ -29,11 +30,11 @@ struct nl_dist {
 static int parse_expr(nl_dist *d, const char *text)
 {
     char **names;
-    int count;
+    int count, st;
     if (!*text)
         return NL_ERROR(NL_EINVAL, "expr: expected a function of x after \"expr:\" (e.g. expr:x^2)");
-    if (!(d->eval = evaluator_create((char *)text)))
-        return NL_ERROR(NL_EINVAL, "%s: malformed expression \"%s\"", d->spec, text);
+    if ((st = nl_matheval_create(d->spec, text, &d->eval)))
+        return st;
     evaluator_get_variables(d->eval, &names, &count);
     for (int i = 0; i < count; i++)
         if (strcmp(names[i], "x"))

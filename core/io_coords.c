@@ -10,49 +10,27 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The header: its column count and whether the last is "value". */
-static int header(FILE *fp, const char *path, size_t *lineno, size_t *cols, int *has_value)
-{
-    char line[4096];
-    *cols = 0;
-    while (!*cols && fgets(line, sizeof line, fp)) {
-        ++*lineno;
-        if (line[0] == '#' || line[0] == '\n')
-            continue;
-        line[strcspn(line, "\r\n")] = 0;
-        const char *last = line, *p = line;
-        for (*cols = 1; (p = strchr(p, '\t')); ++*cols)
-            last = ++p;
-        *has_value = strcmp(last, "value") == 0;
-    }
-    if (!*cols)
-        return NL_ERROR(NL_EINPUT, "%s: expected a header line x [y [z]] and at least one row", path);
-    if (*cols - (size_t)*has_value < 1 || *cols - (size_t)*has_value > 3)
-        return NL_ERROR(NL_EINPUT, "%s:%zu: expected a header of 1 to 3 coordinate columns (x [y [z]], then "
-                        "optionally value), got %zu columns", path, *lineno, *cols);
-    return NL_OK;
-}
-
 int nl_coords_read(const char *path, int *dim, size_t *n, double **pts)
 {
     FILE *fp = fopen(path, "r");
     char line[4096];
     size_t lineno = 0, cols, cap = 256;
-    int has_value = 0, st;
+    nl_point_columns c;
+    int st;
     double *v = NULL;
     *pts = NULL, *n = 0;
     if (!fp)
         return NL_ERROR(NL_EINPUT, "cannot open %s: %s", path, strerror(errno));
-    if ((st = header(fp, path, &lineno, &cols, &has_value))) {
+    if ((st = nl_point_columns_read(fp, path, 0, &lineno, &c))) {
         fclose(fp);
         return st;
     }
-    *dim = (int)(cols - (size_t)has_value);
+    *dim = c.dim, cols = c.cols;
     double *r = malloc(cols * sizeof *r);
     v = malloc(cap * (size_t)*dim * sizeof *v);
     while (!st && v && r && fgets(line, sizeof line, fp)) {
         lineno++;
-        if (line[0] == '#' || line[0] == '\n')
+        if (nl_tsv_skipped(line))
             continue;
         if (*n == cap) {
             size_t want[2] = {2 * cap, (size_t)*dim};
@@ -69,8 +47,11 @@ int nl_coords_read(const char *path, int *dim, size_t *n, double **pts)
         }
         if (!nl_tsv_row(line, cols, r))
             st = NL_ERROR(NL_EINPUT, "%s:%zu: expected %zu tab-separated finite numbers", path, lineno, cols);
-        else
-            memcpy(v + *n * (size_t)*dim, r, (size_t)*dim * sizeof *v), ++*n;
+        else {
+            for (int a = 0; a < *dim; a++)
+                v[*n * (size_t)*dim + (size_t)a] = r[c.at[a]];
+            ++*n;
+        }
     }
     if (!st && (!v || !r))
         st = NL_ERROR(NL_ENOMEM, "out of memory");

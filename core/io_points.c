@@ -17,15 +17,6 @@ void nl_points_free(nl_points *p)
     free(p->pts), free(p->val), free(p);
 }
 
-/* Columns of the header line (tabs + 1). */
-static size_t columns(const char *line)
-{
-    size_t cols = 1;
-    while ((line = strchr(line, '\t')))
-        cols++, line++;
-    return cols;
-}
-
 int nl_tsv_row(const char *line, size_t cols, double *v)
 {
     const char *p = line;
@@ -51,7 +42,7 @@ static int read_rows(FILE *fp, const char *path, size_t cols, size_t lineno, dou
     *n = 0;
     while (v && !full && fgets(line, sizeof line, fp)) {
         lineno++;
-        if (line[0] == '#' || line[0] == '\n')
+        if (nl_tsv_skipped(line))
             continue;
         if (*n == cap) {
             size_t want[2] = {2 * cap, cols};
@@ -81,11 +72,11 @@ static int read_rows(FILE *fp, const char *path, size_t cols, size_t lineno, dou
     return NL_OK;
 }
 
-/* Split rows x [y [z]] value into coordinates and values. */
-static int split(double *raw, size_t n, size_t cols, nl_points **out)
+/* Split the rows into coordinates and values by the header's columns. */
+static int split(const double *raw, size_t n, const nl_point_columns *c, nl_points **out)
 {
     nl_points *p = calloc(1, sizeof *p);
-    int dim = (int)cols - 1;
+    int dim = c->dim;
     if (!p || !(p->pts = malloc(n * (size_t)dim * sizeof *p->pts)) || !(p->val = malloc(n * sizeof *p->val))) {
         nl_points_free(p);
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu points", n);
@@ -93,8 +84,8 @@ static int split(double *raw, size_t n, size_t cols, nl_points **out)
     p->dim = dim, p->n = n;
     for (size_t i = 0; i < n; i++) {
         for (int a = 0; a < dim; a++)
-            p->pts[i * dim + a] = raw[i * cols + a];
-        p->val[i] = raw[i * cols + dim];
+            p->pts[i * (size_t)dim + (size_t)a] = raw[i * c->cols + (size_t)c->at[a]];
+        p->val[i] = raw[i * c->cols + (size_t)c->at[3]];
     }
     *out = p;
     return NL_OK;
@@ -103,33 +94,19 @@ static int split(double *raw, size_t n, size_t cols, nl_points **out)
 int nl_points_read(const char *path, nl_points **out)
 {
     FILE *fp = fopen(path, "r");
-    char line[4096];
-    size_t lineno = 0, cols = 0, n;
+    size_t lineno = 0, n;
+    nl_point_columns c;
     double *raw = NULL;
     int st;
     *out = NULL;
     if (!fp)
         return NL_ERROR(NL_EINPUT, "cannot open %s: %s", path, strerror(errno));
-    while (!cols && fgets(line, sizeof line, fp)) {
-        lineno++;
-        if (line[0] != '#' && line[0] != '\n')
-            cols = columns(line);
-    }
-    if (cols)
-        line[strcspn(line, "\r\n")] = 0;
-    if (!cols)
-        st = NL_ERROR(NL_EINPUT, "%s: expected at least one data row", path);
-    else if (cols < 2 || cols > 4)
-        st = NL_ERROR(NL_EINPUT, "%s:%zu: expected a header of 2 to 4 columns (x [y [z]] value), got %zu", path,
-                      lineno, cols);
-    else if (strcmp(strrchr(line, '\t') + 1, "value") != 0)
-        st = NL_ERROR(NL_EINPUT, "%s:%zu: expected a header x [y [z]] value whose last column is named \"value\", "
-                      "got \"%s\"", path, lineno, strrchr(line, '\t') + 1);
-    else if (!(st = read_rows(fp, path, cols, lineno, &raw, &n)) && !n)
+    if (!(st = nl_point_columns_read(fp, path, 1, &lineno, &c)) && !(st = read_rows(fp, path, c.cols, lineno, &raw, &n)) &&
+        !n)
         st = NL_ERROR(NL_EINPUT, "%s: expected at least one data row", path);
     fclose(fp);
     if (!st)
-        st = split(raw, n, cols, out);
+        st = split(raw, n, &c, out);
     free(raw);
     return st;
 }

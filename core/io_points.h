@@ -1,7 +1,11 @@
 /* Scattered data points from a TSV file: a header line of 2 to 4
- * tab-separated column names (x [y [z]] value), then one row of as many
- * tab-separated finite numbers per point; lines starting with '#' and
- * empty lines are skipped (lines are read up to 4095 characters). */
+ * tab-separated column names, x [y [z]] and value in any order (the columns
+ * are found by name: "y x value" reads the first column as y), then one row
+ * of as many tab-separated finite numbers per point; lines starting with '#'
+ * and empty lines are skipped, a UTF-8 byte order mark and CR before line
+ * ends are ignored (lines are read up to 4095 characters).  Any other name,
+ * an empty one or one given twice is refused: there is no extra column to
+ * drop silently, and no table without a header. */
 #ifndef NL_IO_POINTS_H
 #define NL_IO_POINTS_H
 
@@ -20,8 +24,8 @@ typedef struct {
 
 /* Read path into a new nl_points (*out; NULL on failure), released by
  * nl_points_free.  Errors: NL_EINPUT when the file cannot be opened, the
- * header has fewer than 2 or more than 4 columns or its last column is not
- * named "value", a row is not that many finite numbers, or there is no row
+ * header is not the names above (the message names the column: unknown,
+ * empty, twice, or x, y before z, or value missing), a row is not that many finite numbers, or there is no row
  * (the message names file and line); NL_ETOOBIG when the rows outgrow the
  * memory available (core/field.h); NL_ENOMEM.  Thread-safe. */
 int nl_points_read(const char *path, nl_points **out);

@@ -302,7 +302,8 @@ int nl_rank1_delaunay(const nl_rank1_lattice *L, size_t *n1, size_t *n2, double 
             b2 = d, *n2 = n, v2[0] = v[0], v2[1] = v[1];
     }
     if (isinf(b2))
-        return NL_ERROR(NL_EFAIL, "delaunay: no basis found");
+        return NL_ERROR(NL_EFAIL, "delaunay: the %zu points of generator (%ld, %ld) lie on one line of the torus "
+                        "(no second basis vector); expected a generator that is not degenerate", L->N, L->g[0], L->g[1]);
     if (v1[0] * v2[0] + v1[1] * v2[1] < 0) {
         v2[0] = -v2[0], v2[1] = -v2[1];
         *n2 = L->N - *n2;

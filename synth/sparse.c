@@ -3,6 +3,7 @@
 #include "sparse_internal.h"
 #include "../core/autocorr.h"
 #include "../core/fftw_plan.h"
+#include "../core/matheval_internal.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -265,15 +266,10 @@ int nl_synth_sparse_plan_expr(const char *expr, int dim, const nl_synth_sparse_o
     double density = o->density;
     static const char *const names[] = {"x", "y", "t", "r"};
     void *ev;
-    char *copy = strdup(expr);
     int st;
     *out = NULL;
-    if (!copy)
-        return NL_ERROR(NL_ENOMEM, "out of memory");
-    ev = evaluator_create(copy);
-    free(copy);
-    if (!ev)
-        return NL_ERROR(NL_EINVAL, "kernel: malformed expression \"%s\"", expr);
+    if ((st = nl_matheval_create("kernel", expr, &ev)))
+        return st;
     {
         char **vars;
         int nv;
@@ -349,7 +345,7 @@ int nl_synth_sparse_plan_image(const nl_field *img, const nl_synth_sparse_option
 int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr)
 {
     char *copy, **vars;
-    int nv;
+    int nv, st;
     if (p->dim != 2)
         return NL_ERROR(NL_EINVAL, "angle: a rotated kernel needs a 2D field, got %dD", p->dim);
     copy = strdup(expr);
@@ -359,9 +355,8 @@ int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr)
         evaluator_destroy(p->angle);
     free(p->angle_expr);
     p->angle_expr = copy;
-    p->angle = evaluator_create(copy);
-    if (!p->angle)
-        return NL_ERROR(NL_EINVAL, "angle: malformed expression \"%s\"", expr);
+    if ((st = nl_matheval_create("angle", copy, &p->angle)))
+        return st;
     evaluator_get_variables(p->angle, &vars, &nv);
     for (int i = 0; i < nv; i++)
         if (strcmp(vars[i], "x") && strcmp(vars[i], "y"))

@@ -196,3 +196,44 @@ Test(nonlin, expression_parsing)
     cr_expect_eq(nl_dist_transform(d, 1.5), nl_dist_quantile(d, gsl_cdf_ugaussian_P(1.5)));
     nl_dist_free(d);
 }
+
+/* An even g: g(x) = x^2 of a standard Gaussian has Cov(g(Z1), g(Z2)) =
+ * 2 rho^2 (Isserlis), so every output covariance in [0, 2] is reached by
+ * rho = sqrt(cov / 2) >= 0, and a negative one by none (the nearest is
+ * rho = 0).  A Markov target 2 exp(-t/8) is then met exactly by the input
+ * correlation exp(-t/16), itself a valid (Markov) correlation: the design
+ * reaches every lag and the projection leaves it alone, to the quadrature's
+ * ~1e-12 and the bisection's 2^-100. */
+Test(nonlin, design_even_g_closed_form)
+{
+    nl_dist *d;
+    nl_hermite h;
+    size_t n = 512, bad = 1;
+    double T[512], rho[512], err, worst = 0;
+    cr_assert_eq(nl_dist_parse("expr:x^2", &d), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_hermite_expand(d, 16, &h), 0, "%s", nl_errmsg());
+    cr_expect_float_eq(nl_hermite_cov(&h, 0.6), 2 * 0.36, 1e-9);
+    cr_expect_float_eq(nl_hermite_invert(&h, 0.72), 0.6, 1e-9);
+    cr_expect_float_eq(nl_hermite_invert(&h, 2.0), 1.0, 1e-9);
+    cr_expect(isnan(nl_hermite_invert(&h, -0.1)), "x^2 gives no negative covariance");
+    cr_expect(isnan(nl_hermite_invert(&h, 2.1)), "nor one above its variance 2");
+    for (size_t j = 0; j < n; j++) {
+        double t = (double)(j <= n / 2 ? j : n - j);
+        T[j] = 2.0 * exp(-t / 8);
+    }
+    cr_assert_eq(nl_nonlin_design(&h, T, n, 1.0, rho, NULL, &err, &bad), 0, "%s", nl_errmsg());
+    cr_expect_eq(bad, 0, "%zu lags unreachable", bad);
+    cr_expect_lt(err, 1e-9, "projection error %g", err);
+    for (size_t j = 0; j < n; j++) {
+        double t = (double)(j <= n / 2 ? j : n - j);
+        worst = fmax(worst, fabs(rho[j] - exp(-t / 16)));
+    }
+    cr_expect_lt(worst, 1e-9, "designed rho off exp(-t/16) by %g", worst);
+    /* a negative target lag is out of reach; its stand-in is rho = 0
+     * (output 0), not rho = -1 (output 2, the far end) */
+    T[3] = T[n - 3] = -0.5;
+    cr_assert_eq(nl_nonlin_design(&h, T, n, 1.0, rho, NULL, &err, &bad), 0, "%s", nl_errmsg());
+    cr_expect_eq(bad, 2);
+    cr_expect_lt(err, 0.6, "nearest stand-in keeps the error near 0.5 / 2, got %g", err);
+    nl_dist_free(d);
+}

@@ -100,6 +100,7 @@ Test(trap_rank1, efail_degenerate_lattice)
     double v1[2], v2[2];
     cr_assert_eq(nl_rank1_generator(10, 2, g, &L), NL_OK);
     cr_assert_eq(nl_rank1_delaunay(&L, &n1, &n2, v1, v2), NL_EFAIL);
+    cr_expect(strstr(nl_errmsg(), "10 points of generator (1, 0) lie on one line") != NULL, "%s", nl_errmsg());
     nl_rank1_mesh me;
     cr_assert_eq(nl_rank1_mesh_init(&L, 1, NULL, &me), NL_EFAIL);
     nl_rank1_free(&L);

@@ -228,6 +228,13 @@ Test(variogram, refusals)
     p.n = 3;
     cr_expect_eq(nl_variogram_points(&p, &o, &v), NL_EINVAL);
     cr_expect(strstr(nl_errmsg(), "one place") != NULL, "%s", nl_errmsg());
+    /* distinct points 1e-300 apart: their squared distances underflow, and
+     * the message says so rather than "at one place" */
+    pts[2] = 0, pts[3] = 1e-300, pts[0] = 0, pts[1] = 0, pts[4] = 1e-300, pts[5] = 0;
+    cr_expect_eq(nl_variogram_points(&p, &o, &v), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "span only 1e-300") != NULL && strstr(nl_errmsg(), "one place") == NULL, "%s",
+              nl_errmsg());
+    pts[0] = 1, pts[1] = 2, pts[2] = 1, pts[3] = 2, pts[4] = 1, pts[5] = 2;
     pts[0] = 0, val[1] = NAN;
     cr_expect_eq(nl_variogram_points(&p, &o, &v), NL_EINVAL);
     cr_expect(strstr(nl_errmsg(), "finite") != NULL, "%s", nl_errmsg());

@@ -1,5 +1,6 @@
 /* expr: an autocorrelation given as a libmatheval expression of the lag. */
 #include "families_internal.h"
+#include "../matheval_internal.h"
 #include "../nl_error.h"
 
 #include <matheval.h>
@@ -19,12 +20,11 @@ int nl_expr_compile(nl_model *m, const char *arg, const char *allowed)
 {
     const char *name = m->fam->name;
     char **names;
-    int count;
+    int count, st;
     if (!*arg)
         return NL_ERROR(NL_EINVAL, "%s: expected an expression after \"%s:\"", name, name);
-    m->eval = evaluator_create((char *)arg);
-    if (!m->eval)
-        return NL_ERROR(NL_EINVAL, "%s: malformed expression \"%s\"", name, arg);
+    if ((st = nl_matheval_create(name, arg, &m->eval)))
+        return st;
     evaluator_get_variables(m->eval, &names, &count);
     for (int i = 0; i < count; i++)
         if (!nl_model_word_in(allowed, names[i], strlen(names[i])))
