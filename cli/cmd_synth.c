@@ -47,7 +47,9 @@ static const char help_condition[] =
     "                   --ensemble-mean M.exr, --ensemble-variance V.exr (divisor K - 1);\n"
     "                   --nmax K: local kriging from the K nearest data (as krige)\n"
     "  --from FILE      regenerate FILE from what it records (method, options, model,\n"
-    "                   seed, size, spacing): bit for bit for every method\n"
+    "                   seed, size, spacing): bit for bit for every method; a file the\n"
+    "                   record names (model image:F, --seed-image F, --exemplar F) is read\n"
+    "                   only when the command line names it too (--acf image:F, ...)\n"
     "  -o               EXR (any dimension; attributes noiselab.model, .method, .seed,\n"
     "                   .size, .spacing, .origin, .version, .flags) or TSV (1D: the same as\n"
     "                   \"# key: value\" lines, then columns t, value, t = (origin + i) h);\n"
@@ -156,6 +158,15 @@ static void set_option(cli_synth_job *job, const char *name, const char *v, cons
     cli_check(nl_method_options_set(&job->opts, name, v, label));
 }
 
+/* A record is data: a file it names (image:FILE, --seed-image FILE) is read
+ * only when the command line names the same file. */
+static void confirm_file(const char *path, const char *opt, const char *v, const char *given)
+{
+    if (!given || strcmp(given, v))
+        cli_die(2, "--from: %s records %s %s; give %s %s on the command line to read that file", path, opt, v,
+                opt, v);
+}
+
 /* One recorded key: the method's option, the window origin, or (a key of
  * another method's) marked given for the checks; others are ignored. */
 static void apply_key(char *kv, int suffix, cli_synth_job *job, cli_synth_args *g)
@@ -174,6 +185,11 @@ static void apply_key(char *kv, int suffix, cli_synth_job *job, cli_synth_args *
     }
     k = nl_method_option_index(job->type, kv);
     if (k >= 0 && !(job->type->options[k].flags & NL_METHOD_SUFFIX) == !suffix) {
+        if (job->type->options[k].flags & NL_METHOD_FILE) {
+            snprintf(label, sizeof label, "--%s", kv);
+            j = mopt_index(kv);
+            confirm_file(g->from, label, v, j >= 0 && g->mgiven[j] ? g->mtext[j] : NULL);
+        }
         snprintf(label, sizeof label, "--from: %s", kv);
         set_option(job, kv, job->type->options[k].type == NL_METHOD_FLAG ? NULL : v, label);
     } else if (k < 0 && !suffix && (j = mopt_index(kv)) >= 0) {
@@ -203,6 +219,7 @@ static void apply_keys(char *rest, cli_synth_job *job, cli_synth_args *g)
 static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
 {
     static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
+    const nl_family *fam;
     nl_meta meta;
     nl_provenance prov;
     char *rest;
@@ -220,8 +237,15 @@ static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
         cli_die(2, "--from: %s was post-processed (\"%s\"); only synthesised fields regenerate", path, meta.method);
     job->method = methbuf;
     /* size and spacing are read as --size and --spacing are, with their checks */
-    cli_check(nl_provenance_parse(&meta, NL_PROV_SEED | NL_PROV_MODEL, &prov));
+    cli_check(nl_provenance_parse(&meta, NL_PROV_SEED | NL_PROV_MODEL | NL_PROV_METHOD, &prov));
     job->seed = prov.seed;
+    fam = nl_family_find(prov.model, strcspn(prov.model, ":"));
+    if (prov.model[0] && fam && (fam->flags & NL_FAMILY_FILE))
+        confirm_file(path, fam->flags & NL_FAMILY_SPECTRAL ? "--spectrum" : "--acf", prov.model,
+                     g->acf ? g->acf : g->spec);
+    else if (g->acf || g->spec)
+        cli_die(2, "--from: %s records the model \"%s\"; with --from, --acf and --spectrum only name a file the "
+                "record reads (image:FILE)", path, prov.model);
     snprintf(sizebuf, sizeof sizebuf, "%s", meta.size), g->size = sizebuf;
     snprintf(spbuf, sizeof spbuf, "%s", meta.spacing), g->spacing = spbuf[0] ? spbuf : NULL;
     if (prov.model[0]) {
@@ -397,13 +421,21 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
 static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
 {
     if (g->from) {
-        int given = 0;
-        for (int j = 0; j < nmopts; j++)
-            given |= g->mgiven[j];
-        if (optind < argc || g->acf || g->spec || g->size || g->spacing || g->origin || given)
-            cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview "
-                    "and --json");
+        int given = 0, file[CLI_MAX_MOPTS];
+        for (int j = 0; j < nmopts; j++) {
+            file[j] = g->mgiven[j] && (mopts[j].row->flags & NL_METHOD_FILE);
+            given |= g->mgiven[j] && !file[j];
+        }
+        if (optind < argc || g->size || g->spacing || g->origin || given)
+            cli_die(2, "synth: --from FILE takes the method and every option from FILE; give only -o, --preview, "
+                    "--json and the files FILE records");
         apply_from(g->from, job, g);
+        for (int j = 0; j < nmopts; j++) {
+            int k = file[j] && job->type ? nl_method_option_index(job->type, mopts[j].row->name) : -1;
+            if (file[j] && (k < 0 || !job->opts.v[k].set))
+                cli_die(2, "--from: %s records no --%s; with --from give only -o, --preview, --json and the files "
+                        "FILE records", g->from, mopts[j].row->name);
+        }
         job->from = 1;
         return;
     }
