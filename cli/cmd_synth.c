@@ -244,8 +244,9 @@ static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
         confirm_file(path, fam->flags & NL_FAMILY_SPECTRAL ? "--spectrum" : "--acf", prov.model,
                      g->acf ? g->acf : g->spec);
     else if (g->acf || g->spec)
-        cli_die(2, "--from: %s records the model \"%s\"; with --from, --acf and --spectrum only name a file the "
-                "record reads (image:FILE)", path, prov.model);
+        cli_die(2, "--from: %s records %s%s%s; with --from, --acf and --spectrum only name a file the record reads "
+                "(image:FILE)", path, prov.model[0] ? "the model \"" : "no model", prov.model,
+                prov.model[0] ? "\"" : "");
     snprintf(sizebuf, sizeof sizebuf, "%s", meta.size), g->size = sizebuf;
     snprintf(spbuf, sizeof spbuf, "%s", meta.spacing), g->spacing = spbuf[0] ? spbuf : NULL;
     if (prov.model[0]) {
