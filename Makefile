@@ -274,26 +274,28 @@ asan: $(DEPS_OK)
 # (tests/fuzz/fuzz_cli.c), 7-8 decode the input into a synthesis on a tiny
 # grid, run by the library (tests/fuzz/fuzz_num.c) and by the command line
 # (tests/fuzz/fuzz_synthcli.c), 9 into a tiny field for the analysis
-# (fuzz_num.c), 10 the point tables (tests/fuzz/fuzz_points.c).
+# (fuzz_num.c), 10 the point tables (tests/fuzz/fuzz_points.c), 11 the
+# HDF5 reader of mpi/h5.c on a temporary file (fuzz_h5.c).
 # `make fuzz FUZZ_TARGETS="synthnum synthcli"` runs some of them.
 FUZZ_SECONDS ?= 30
-FUZZ_TARGETS ?= model dist field cli krige cloud synthnum synthcli fieldnum points
+FUZZ_TARGETS ?= model dist field cli krige cloud synthnum synthcli fieldnum points h5
 FUZZ_CLI_SRC := $(filter-out cli/main.c,$(CLI_SRC)) $(BENCH_SRC)
 fuzz: $(DEPS_OK)
 	@mkdir -p $(BUILD)/fuzz
 	@for t in $(FUZZ_TARGETS); do \
-	    case $$t in \
+	    x= l= m=4096; case $$t in \
 	    model) n=1 src=tests/fuzz/fuzz_parse.c ;; dist) n=2 src=tests/fuzz/fuzz_parse.c ;; \
 	    field) n=3 src=tests/fuzz/fuzz_parse.c ;; cli) n=4 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; \
 	    krige) n=5 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; cloud) n=6 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; \
 	    synthnum) n=7 src=tests/fuzz/fuzz_num.c ;; synthcli) n=8 src="tests/fuzz/fuzz_synthcli.c $(FUZZ_CLI_SRC)" ;; \
 	    fieldnum) n=9 src=tests/fuzz/fuzz_num.c ;; points) n=10 src=tests/fuzz/fuzz_points.c ;; \
+	    h5) n=11 src="tests/fuzz/fuzz_h5.c $(MPI_SRC)" x="$(MPI_CFLAGS)" l="$(MPI_LIBS)" m=16384 ;; \
 	    *) echo "fuzz: no target $$t"; exit 1 ;; \
 	    esac; \
-	    clang -O1 -g -fsanitize=fuzzer,address,undefined -DFUZZ_TARGET=$$n -D_GNU_SOURCE -I/usr/include/OpenEXR \
-	        $$src $(LIB_SRC) -o $(BUILD)/fuzz/$$t $(LDLIBS) -lgomp -lm || exit 1; \
+	    clang -O1 -g -fsanitize=fuzzer,address,undefined -DFUZZ_TARGET=$$n -D_GNU_SOURCE -I/usr/include/OpenEXR $$x \
+	        $$src $(LIB_SRC) -o $(BUILD)/fuzz/$$t $(LDLIBS) $$l -lgomp -lm || exit 1; \
 	    mkdir -p $(BUILD)/fuzz/corpus-$$t $(BUILD)/fuzz/work-$$t && cp tests/fuzz/corpus/$$t/* $(BUILD)/fuzz/corpus-$$t/; \
-	    (cd $(BUILD)/fuzz/work-$$t && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1 ../$$t -max_total_time=$(FUZZ_SECONDS) -max_len=4096 \
+	    (cd $(BUILD)/fuzz/work-$$t && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1 ../$$t -max_total_time=$(FUZZ_SECONDS) -max_len=$$m \
 	        -timeout=20 -artifact_prefix=../$$t- ../corpus-$$t) || exit 1; \
 	done
 

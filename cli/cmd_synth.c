@@ -114,6 +114,15 @@ static void set_option(cli_synth_job *job, const char *name, const char *v, cons
     cli_check(nl_method_options_set(&job->opts, name, v, label));
 }
 
+/* A record is data: a file it names (image:FILE, --seed-image FILE) is read
+ * only when the command line names the same file. */
+static void confirm_file(const char *path, const char *opt, const char *v, const char *given)
+{
+    if (!given || strcmp(given, v))
+        cli_die(2, "--from: %s records %s %s; give %s %s on the command line to read that file", path, opt, v,
+                opt, v);
+}
+
 /* One recorded key: the method's option, the window origin, or (a key of
  * another method's) marked given for the checks; others are ignored. */
 static void apply_key(char *kv, int suffix, cli_synth_job *job, cli_synth_args *g)
@@ -132,6 +141,11 @@ static void apply_key(char *kv, int suffix, cli_synth_job *job, cli_synth_args *
     }
     k = nl_method_option_index(job->type, kv);
     if (k >= 0 && !(job->type->options[k].flags & NL_METHOD_SUFFIX) == !suffix) {
+        if (job->type->options[k].flags & NL_METHOD_FILE) {
+            snprintf(label, sizeof label, "--%s", kv);
+            j = mopt_index(kv);
+            confirm_file(g->from, label, v, j >= 0 && g->mgiven[j] ? g->mtext[j] : NULL);
+        }
         snprintf(label, sizeof label, "--from: %s", kv);
         set_option(job, kv, job->type->options[k].type == NL_METHOD_FLAG ? NULL : v, label);
     } else if (k < 0 && !suffix && (j = mopt_index(kv)) >= 0) {
@@ -161,6 +175,7 @@ static void apply_keys(char *rest, cli_synth_job *job, cli_synth_args *g)
 static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
 {
     static char mbuf[1100], sizebuf[64], spbuf[128], methbuf[256];
+    const nl_family *fam;
     nl_meta meta;
     nl_provenance prov;
     char *rest;
@@ -178,8 +193,16 @@ static void apply_from(const char *path, cli_synth_job *job, cli_synth_args *g)
         cli_die(2, "--from: %s was post-processed (\"%s\"); only synthesised fields regenerate", path, meta.method);
     job->method = methbuf;
     /* size and spacing are read as --size and --spacing are, with their checks */
-    cli_check(nl_provenance_parse(&meta, NL_PROV_SEED | NL_PROV_MODEL, &prov));
+    cli_check(nl_provenance_parse(&meta, NL_PROV_SEED | NL_PROV_MODEL | NL_PROV_METHOD, &prov));
     job->seed = prov.seed;
+    fam = nl_family_find(prov.model, strcspn(prov.model, ":"));
+    if (prov.model[0] && fam && (fam->flags & NL_FAMILY_FILE))
+        confirm_file(path, fam->flags & NL_FAMILY_SPECTRAL ? "--spectrum" : "--acf", prov.model,
+                     g->acf ? g->acf : g->spec);
+    else if (g->acf || g->spec)
+        cli_die(2, "--from: %s records %s%s%s; with --from, --acf and --spectrum only name a file the record reads "
+                "(image:FILE)", path, prov.model[0] ? "the model \"" : "no model", prov.model,
+                prov.model[0] ? "\"" : "");
     snprintf(sizebuf, sizeof sizebuf, "%s", meta.size), g->size = sizebuf;
     snprintf(spbuf, sizeof spbuf, "%s", meta.spacing), g->spacing = spbuf[0] ? spbuf : NULL;
     if (prov.model[0]) {
@@ -256,10 +279,13 @@ static const struct option *options_table(void)
     return opts;
 }
 
-/* The options a run with --from takes: where the output goes, what it prints. */
+/* The options a run with --from takes: where the output goes, what it
+ * prints, and the files its record names (--acf image:F, a file option),
+ * checked against the record by apply_from. */
 static int with_from(int c)
 {
-    return c == 'o' || c == 'p' || c == 'j' || c == 'F' || c == 'G' || c == 'h';
+    return c == 'o' || c == 'p' || c == 'j' || c == 'F' || c == 'G' || c == 'h' || c == 'a' || c == 'S' ||
+           (c >= CLI_MOPT && c < CLI_MOPT + nmopts && (mopts[c - CLI_MOPT].row->flags & NL_METHOD_FILE));
 }
 
 /* Option c given with value arg (NULL: a flag): refused when given before,
@@ -320,16 +346,25 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
 static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_args *g)
 {
     if (g->from) {
+        int file[CLI_MAX_MOPTS];
         /* --from regenerates FILE bit for bit: an option that would change it is refused, not ignored */
         if (g->other)
-            cli_die(2, "synth: %s%s%s%s: expected no option but -o, --preview, --json and --precision with --from %s, "
-                    "which takes the method, its options, model, seed, size and spacing from it", g->other,
-                    g->other_value ? " \"" : "", g->other_value ? g->other_value : "", g->other_value ? "\"" : "",
-                    g->from);
+            cli_die(2, "synth: %s%s%s%s: expected no option but -o, --preview, --json, --precision and the files "
+                    "the record names with --from %s, which takes the method, its options, model, seed, size and "
+                    "spacing from it", g->other, g->other_value ? " \"" : "", g->other_value ? g->other_value : "",
+                    g->other_value ? "\"" : "", g->from);
         if (optind < argc)
             cli_die(2, "synth: \"%s\": expected no METHOD with --from %s, which takes the method from it",
                     argv[optind], g->from);
+        for (int j = 0; j < nmopts; j++)
+            file[j] = g->mgiven[j] && (mopts[j].row->flags & NL_METHOD_FILE);
         apply_from(g->from, job, g);
+        for (int j = 0; j < nmopts; j++) {
+            int k = file[j] && job->type ? nl_method_option_index(job->type, mopts[j].row->name) : -1;
+            if (file[j] && (k < 0 || !job->opts.v[k].set))
+                cli_die(2, "--from: %s records no --%s; with --from give only -o, --preview, --json and the files "
+                        "FILE records", g->from, mopts[j].row->name);
+        }
         job->from = 1;
         return;
     }

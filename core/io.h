@@ -55,7 +55,9 @@ int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta);
  * (may be NULL) receives the attributes found.  Samples are widened to
  * double exactly (they may be non-finite: nl_field_read checks).  NL_EINPUT
  * on a bad file (not EXR, tiled or deep, no "Y" channel and several others,
- * subsampled, empty window, noiselab.size or .spacing inconsistent). */
+ * subsampled, empty window, noiselab.size or .spacing inconsistent, a
+ * noiselab.* attribute that is not a string, is longer than its nl_meta
+ * capacity less one, or holds a NUL or control character). */
 int nl_exr_read(const char *path, nl_field **out, nl_meta *meta);
 
 /* Read an 8- or 16-bit PNG (grey, or colour converted to grey by the
@@ -112,7 +114,9 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
  * more than two columns (scattered points are not a series), a row with a
  * different column count, a value or coordinate that is not a finite
  * number, a coordinate column that is constant, decreasing or irregular, a
- * line longer than 4095 characters, or fewer than 2 samples; NL_ETOOBIG or
+ * line longer than 4095 characters, fewer than 2 samples, or a "# key:"
+ * line given twice, longer than its nl_meta capacity less one, or holding a
+ * control character; NL_ETOOBIG or
  * NL_ENOMEM when the samples do not fit in memory. */
 int nl_tsv_read_field(const char *path, nl_field **out);
 

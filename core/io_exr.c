@@ -5,6 +5,7 @@
 #include "provenance.h"
 #include "nl_error.h"
 
+#include <math.h>
 #include <openexr.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -187,7 +188,8 @@ static int layout(const char *path, const nl_meta *m, int32_t w, int32_t hh, int
     if (m->size[0]) {
         size_t nn[3] = {1, 1, 1};
         int d;
-        if (parse_dims(m->size, nn, &d) || nn[0] != (size_t)w || nn[1] * nn[2] != (size_t)hh)
+        if (parse_dims(m->size, nn, &d) || nn[0] != (size_t)w || nn[1] > (size_t)hh || nn[2] > (size_t)hh ||
+            nn[1] * nn[2] != (size_t)hh)
             return NL_ERROR(NL_EINPUT, "%s: noiselab.size \"%s\" does not match the %dx%d image", path, m->size, w,
                             hh);
         memcpy(n, nn, sizeof nn);
@@ -197,13 +199,43 @@ static int layout(const char *path, const nl_meta *m, int32_t w, int32_t hh, int
         const char *p = m->spacing;
         char *end;
         for (int a = 0; a < *dim; a++) {
-            h[a] = strtod(p, &end);
-            if (end == p || !(h[a] > 0))
-                return NL_ERROR(NL_EINPUT, "%s: noiselab.spacing \"%s\": expected %d positive numbers", path,
-                                m->spacing, *dim);
-            p = *end == ',' ? end + 1 : end;
+            h[a] = *p == '-' || *p == '+' || (*p >= '0' && *p <= '9') || *p == '.' ? strtod(p, &end) : 0;
+            if (!(h[a] > 0) || !isfinite(h[a]) || *end != (a + 1 < *dim ? ',' : 0))
+                return NL_ERROR(NL_EINPUT, "%s: noiselab.spacing \"%s\": expected %d positive finite numbers "
+                                "separated by commas", path, m->spacing, *dim);
+            p = end + 1;
         }
     }
+    return NL_OK;
+}
+
+/* The attribute noiselab.KEY of provenance key i, when present, into m: a
+ * string of at most its capacity - 1 bytes, with no NUL or control
+ * character inside (what the writer records), or refused. */
+static int read_attr(exr_context_t ctx, const char *path, int i, nl_meta *m)
+{
+    const exr_attribute_t *a = NULL;
+    char name[64];
+    size_t cap = nl_meta_capacity(i), len;
+    exr_result_t rv = exr_get_attribute_by_name(ctx, 0, attr_name(i, name, sizeof name), &a);
+    if (rv == EXR_ERR_NO_ATTR_BY_NAME)
+        return NL_OK;
+    if (rv || !a)
+        return NL_ERROR(NL_EINPUT, "%s: %s cannot be read: %s", path, name, exr_msg);
+    if (a->type != EXR_ATTR_STRING || !a->string || a->string->length < 0 || (a->string->length && !a->string->str))
+        return NL_ERROR(NL_EINPUT, "%s: %s: expected a string attribute, got type \"%.32s\"", path, name,
+                        a->type_name ? a->type_name : "?");
+    len = (size_t)a->string->length;
+    if (len >= cap)
+        return NL_ERROR(NL_EINPUT, "%s: %s: expected at most %zu bytes, got %zu", path, name, cap - 1, len);
+    for (size_t k = 0; k < len; k++) {
+        unsigned char c = (unsigned char)a->string->str[k];
+        if (c < 0x20 || c == 0x7f)
+            return NL_ERROR(NL_EINPUT, "%s: %s: expected text without control characters or NUL, got byte 0x%02x "
+                            "at %zu", path, name, c, k);
+    }
+    memcpy(nl_meta_slot(m, i), a->string->str, len);
+    nl_meta_slot(m, i)[len] = 0;
     return NL_OK;
 }
 
@@ -284,14 +316,9 @@ int nl_exr_read_mem(const char *path, const unsigned char *file, size_t len, nl_
         exr_finish(&ctx);
         return NL_ERROR(NL_EINPUT, "%s: EXR data window is empty", path);
     }
-    for (int i = 0; i < NL_META_NKEYS; i++) {
-        const char *s = NULL;
-        char name[64];
-        int32_t len = 0;
-        if (exr_attr_get_string(ctx, 0, attr_name(i, name, sizeof name), &len, &s) == EXR_ERR_SUCCESS && s)
-            snprintf(nl_meta_slot(&m, i), nl_meta_capacity(i), "%.*s", (int)len, s);
-    }
-    if ((st = layout(path, &m, w, hh, &dim, n, h))) {
+    for (int i = 0; i < NL_META_NKEYS && !st; i++)
+        st = read_attr(ctx, path, i, &m);
+    if (st || (st = layout(path, &m, w, hh, &dim, n, h))) {
         exr_finish(&ctx);
         return st;
     }

@@ -51,7 +51,7 @@ static void write_meta(FILE *fp, const nl_meta *meta)
             continue;
         fprintf(fp, "# %s: ", nl_meta_key(i));
         for (size_t k = 0; k < n; k++)
-            fputc((unsigned char)v[k] < 0x20 ? ' ' : v[k], fp);
+            fputc((unsigned char)v[k] < 0x20 || v[k] == 0x7f ? ' ' : v[k], fp);
         fputc('\n', fp);
     }
 }
@@ -95,17 +95,30 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
 }
 
 /* A comment line before the header: "# key: value" into meta when the key
- * is one of nl_meta's; anything else is a comment. */
-static void read_meta_line(const char *line, nl_meta *meta)
+ * is one of nl_meta's (once, fitting its capacity, no control character);
+ * anything else is a comment. */
+static int read_meta_line(const char *path, size_t lineno, const char *line, nl_meta *meta)
 {
     for (int i = 0; i < NL_META_NKEYS; i++) {
-        size_t k = strlen(nl_meta_key(i));
+        size_t k = strlen(nl_meta_key(i)), len;
         if (line[1] == ' ' && strncmp(line + 2, nl_meta_key(i), k) == 0 && line[2 + k] == ':' && line[3 + k] == ' ') {
             const char *v = line + 4 + k;
-            snprintf(nl_meta_slot(meta, i), nl_meta_capacity(i), "%.*s", (int)strcspn(v, "\r\n"), v);
-            return;
+            len = strcspn(v, "\r\n");
+            if (*nl_meta_slot(meta, i))
+                return NL_ERROR(NL_EINPUT, "%s:%zu: # %s: recorded twice; expected it once", path, lineno,
+                                nl_meta_key(i));
+            if (len >= nl_meta_capacity(i))
+                return NL_ERROR(NL_EINPUT, "%s:%zu: # %s: expected at most %zu bytes, got %zu", path, lineno,
+                                nl_meta_key(i), nl_meta_capacity(i) - 1, len);
+            for (size_t c = 0; c < len; c++)
+                if ((unsigned char)v[c] < 0x20 || v[c] == 0x7f)
+                    return NL_ERROR(NL_EINPUT, "%s:%zu: # %s: expected text without control characters, got "
+                                    "byte 0x%02x at %zu", path, lineno, nl_meta_key(i), (unsigned char)v[c], c);
+            memcpy(nl_meta_slot(meta, i), v, len);
+            return NL_OK;
         }
     }
+    return NL_OK;
 }
 
 /* The spacing of a series with a coordinate column: t1 - t0, or the
@@ -269,8 +282,8 @@ int nl_tsv_read_stream(FILE *fp, const char *path, nl_field **out, nl_meta *meta
     memset(meta, 0, sizeof *meta);
     while (get_line(line, sizeof line, fp, path, lineno + 1, &st)) {
         lineno++;
-        if (line[0] == '#')
-            read_meta_line(line, meta);
+        if (line[0] == '#' && (st = read_meta_line(path, lineno, line, meta)))
+            break;
         if (line[0] == '#' || line[0] == '\n')
             continue;
         ncol = split(line, fld, 64);

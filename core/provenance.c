@@ -1,5 +1,6 @@
 /* Provenance: the typed record and its key/value text (core/provenance.h). */
 #include "provenance.h"
+#include "family.h"
 #include "model.h"
 #include "nl_error.h"
 
@@ -181,17 +182,6 @@ static int parse_origin(const char *v, nl_provenance *p)
     return NL_OK;
 }
 
-static int parse_model(const char *v, nl_provenance *p)
-{
-    nl_model *m;
-    int st = nl_model_parse(v, &m);
-    if (st)
-        return st;
-    nl_model_free(m);
-    snprintf(p->model, sizeof p->model, "%s", v);
-    return NL_OK;
-}
-
 /* A text key: copied when it holds no control character. */
 static int parse_text(int i, const char *v, char *dst, size_t cap)
 {
@@ -200,6 +190,23 @@ static int parse_text(int i, const char *v, char *dst, size_t cap)
             return NL_ERROR(NL_EINPUT, "noiselab.%s: expected text without control characters, got byte 0x%02x "
                             "at %zu", keys[i].key, *c, (size_t)((const char *)c - v));
     snprintf(dst, cap, "%s", v);
+    return NL_OK;
+}
+
+/* A record is data: a model whose spec names a file (image:FILE) is checked
+ * for its family and its text, and the file is not opened. */
+static int parse_model(const char *v, nl_provenance *p)
+{
+    const nl_family *f = nl_family_find(v, strcspn(v, ":"));
+    nl_model *m;
+    int st;
+    if (f && (f->flags & NL_FAMILY_FILE))
+        return parse_text(K_MODEL, v, p->model, sizeof p->model);
+    st = nl_model_parse(v, &m);
+    if (st)
+        return st;
+    nl_model_free(m);
+    snprintf(p->model, sizeof p->model, "%s", v);
     return NL_OK;
 }
 

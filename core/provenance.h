@@ -33,7 +33,7 @@ enum { NL_META_NKEYS = 8 };
 
 /* Which keys nl_provenance_parse reads (a bit per key, or'ed). */
 enum {
-    NL_PROV_MODEL = 1 << 0,   /* model: a spec nl_model_parse accepts */
+    NL_PROV_MODEL = 1 << 0,   /* model: a spec nl_model_parse accepts (image:FILE unread) */
     NL_PROV_METHOD = 1 << 1,  /* method: any text */
     NL_PROV_SEED = 1 << 2,    /* seed: decimal 0 .. 2^64 - 1 */
     NL_PROV_SPACING = 1 << 3, /* spacing: one positive finite number per axis */
@@ -89,7 +89,9 @@ int nl_provenance_format(const nl_provenance *p, nl_meta *kv);
  * in the order seed, model, size, spacing, origin, then the text keys:
  * each value must be NUL-terminated within its capacity, hold no control
  * character and be what its key holds (see the NL_PROV_* list; a model is
- * parsed and released, so a model of an image: reads that image).  Returns
+ * parsed and released, except that a model naming a file, image:FILE, is
+ * checked for its family and its text only: a record is data, and the
+ * file it names is not opened).  Returns
  * NL_OK, or NL_EINPUT (p emptied) with a message of one line naming the
  * key "noiselab.KEY" and quoting the value, or what nl_model_parse returns
  * for a bad model, with its message. */

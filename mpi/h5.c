@@ -153,37 +153,141 @@ int nl_mpi_h5_is_hdf5(const char *path)
     return yes;
 }
 
-static void read_attrs(hid_t d, nl_meta *meta)
+/* A string attribute's text: UTF-8 (ASCII when cset says so) without
+ * control characters, as noiselab writes it. */
+static int check_text(const char *path, const char *key, const char *s, size_t len, H5T_cset_t cset)
 {
-    memset(meta, 0, sizeof *meta);
-    for (int k = 0; k < NL_META_NKEYS; k++) {
-        hid_t a, t, mt;
-        if (H5Aexists(d, nl_meta_key(k)) <= 0 || (a = H5Aopen(d, nl_meta_key(k), H5P_DEFAULT)) < 0)
-            continue;
-        t = H5Aget_type(a);
-        if (t >= 0 && H5Tget_class(t) == H5T_STRING && H5Tis_variable_str(t) > 0) {
-            char *s = NULL, *v = nl_meta_slot(meta, k);
-            mt = H5Tcopy(H5T_C_S1);
-            H5Tset_size(mt, H5T_VARIABLE);
-            H5Tset_cset(mt, H5Tget_cset(t));
-            if (H5Aread(a, mt, &s) >= 0 && s)
-                snprintf(v, nl_meta_capacity(k), "%s", s);
-            H5free_memory(s);
-            H5Tclose(mt);
-        } else if (t >= 0 && H5Tget_class(t) == H5T_STRING && H5Tget_size(t) < nl_meta_capacity(k)) {
-            char *v = nl_meta_slot(meta, k);
-            mt = H5Tcopy(t);
-            H5Tset_size(mt, nl_meta_capacity(k) - 1);
-            H5Tset_strpad(mt, H5T_STR_NULLTERM);
-            if (H5Aread(a, mt, v) < 0)
-                v[0] = 0;
-            v[nl_meta_capacity(k) - 1] = 0;
-            H5Tclose(mt);
-        }
-        if (t >= 0)
-            H5Tclose(t);
-        H5Aclose(a);
+    for (size_t i = 0; i < len;) {
+        unsigned char c = (unsigned char)s[i];
+        size_t k = c < 0x80 ? 0 : (c & 0xe0) == 0xc0 && c >= 0xc2 ? 1 : (c & 0xf0) == 0xe0 ? 2
+                 : (c & 0xf8) == 0xf0 && c <= 0xf4 ? 3 : 4;
+        if (c < 0x20 || c == 0x7f)
+            return NL_ERROR(NL_EINPUT, "%s: attribute %s: expected text without control characters, got byte "
+                            "0x%02x at %zu", path, key, c, i);
+        if (k && cset != H5T_CSET_UTF8)
+            return NL_ERROR(NL_EINPUT, "%s: attribute %s: expected ASCII text (its encoding), got byte 0x%02x at "
+                            "%zu", path, key, c, i);
+        for (size_t j = 1; j <= k && k < 4; j++)
+            if (i + j >= len || ((unsigned char)s[i + j] & 0xc0) != 0x80)
+                k = 4;
+        if (k == 4)
+            return NL_ERROR(NL_EINPUT, "%s: attribute %s: expected UTF-8 text, got byte 0x%02x at %zu", path,
+                            key, c, i);
+        i += k + 1;
     }
+    return NL_OK;
+}
+
+/* A variable-length string attribute into v (capacity cap). */
+static int read_vlen(const char *path, const char *key, hid_t a, hid_t t, char *v, size_t cap)
+{
+    char *s = NULL;
+    hid_t mt = H5Tcopy(H5T_C_S1);
+    int st = NL_OK;
+    if (mt < 0 || H5Tset_size(mt, H5T_VARIABLE) < 0 || H5Tset_cset(mt, H5Tget_cset(t)) < 0 ||
+        H5Aread(a, mt, &s) < 0)
+        st = NL_ERROR(NL_EINPUT, "%s: attribute %s cannot be read", path, key);
+    else if (s && strlen(s) >= cap)
+        st = NL_ERROR(NL_EINPUT, "%s: attribute %s: expected at most %zu bytes, got %zu", path, key, cap - 1,
+                      strlen(s));
+    else if (s && !(st = check_text(path, key, s, strlen(s), H5Tget_cset(t))))
+        memcpy(v, s, strlen(s) + 1);
+    if (s)
+        H5free_memory(s);
+    if (mt >= 0)
+        H5Tclose(mt);
+    return st;
+}
+
+/* A fixed-length string attribute into v: its bytes up to the first NUL,
+ * and only NULs after it. */
+static int read_fixed(const char *path, const char *key, hid_t a, hid_t t, char *v, size_t cap)
+{
+    size_t size = H5Tget_size(t), len;
+    char raw[1024];
+    if (size >= cap || size >= sizeof raw)
+        return NL_ERROR(NL_EINPUT, "%s: attribute %s: expected at most %zu bytes, got a string of %zu", path, key,
+                        cap - 1, size);
+    if (H5Aread(a, t, raw) < 0)
+        return NL_ERROR(NL_EINPUT, "%s: attribute %s cannot be read", path, key);
+    len = strnlen(raw, size);
+    for (size_t i = len; i < size; i++)
+        if (raw[i])
+            return NL_ERROR(NL_EINPUT, "%s: attribute %s: expected one string, got a NUL at byte %zu inside it",
+                            path, key, len);
+    raw[len] = 0;
+    if (check_text(path, key, raw, len, H5Tget_cset(t)))
+        return NL_EINPUT;
+    memcpy(v, raw, len + 1);
+    return NL_OK;
+}
+
+/* Whether attribute a holds one element (a scalar dataspace). */
+static int is_scalar(hid_t a)
+{
+    hid_t sp = H5Aget_space(a);
+    int yes = sp >= 0 && H5Sget_simple_extent_type(sp) == H5S_SCALAR;
+    if (sp >= 0)
+        H5Sclose(sp);
+    return yes;
+}
+
+/* The string attribute key of d, when present, into v: a scalar string
+ * (fixed or variable length) of at most cap - 1 bytes, or refused. */
+static int read_string(const char *path, hid_t d, const char *key, char *v, size_t cap)
+{
+    hid_t a, t;
+    int st;
+    if (H5Aexists(d, key) <= 0)
+        return NL_OK;
+    if ((a = H5Aopen(d, key, H5P_DEFAULT)) < 0)
+        return NL_ERROR(NL_EINPUT, "%s: attribute %s cannot be opened", path, key);
+    t = H5Aget_type(a);
+    if (t < 0 || H5Tget_class(t) != H5T_STRING || !is_scalar(a))
+        st = NL_ERROR(NL_EINPUT, "%s: attribute %s: expected one string (a scalar, as noiselab writes), got %s",
+                      path, key, t < 0 || H5Tget_class(t) != H5T_STRING ? "another type" : "several or none");
+    else if (H5Tis_variable_str(t) > 0)
+        st = read_vlen(path, key, a, t, v, cap);
+    else
+        st = read_fixed(path, key, a, t, v, cap);
+    if (t >= 0)
+        H5Tclose(t);
+    H5Aclose(a);
+    return st;
+}
+
+/* The "processes" attribute, when present: one integer >= 1. */
+static int check_processes(const char *path, hid_t d)
+{
+    hid_t a, t;
+    long long p = 0;
+    int ok;
+    if (H5Aexists(d, "processes") <= 0)
+        return NL_OK;
+    if ((a = H5Aopen(d, "processes", H5P_DEFAULT)) < 0)
+        return NL_ERROR(NL_EINPUT, "%s: attribute processes cannot be opened", path);
+    t = H5Aget_type(a);
+    ok = t >= 0 && H5Tget_class(t) == H5T_INTEGER && is_scalar(a) && H5Aread(a, H5T_NATIVE_LLONG, &p) >= 0 &&
+         p >= 1;
+    if (t >= 0)
+        H5Tclose(t);
+    H5Aclose(a);
+    return ok ? NL_OK : NL_ERROR(NL_EINPUT, "%s: attribute processes: expected one integer >= 1", path);
+}
+
+/* The provenance attributes of d into meta (zeroed first; left zeroed on
+ * failure). */
+static int read_attrs(const char *path, hid_t d, nl_meta *meta)
+{
+    int st = NL_OK;
+    memset(meta, 0, sizeof *meta);
+    for (int k = 0; k < NL_META_NKEYS && !st; k++)
+        st = read_string(path, d, nl_meta_key(k), nl_meta_slot(meta, k), nl_meta_capacity(k));
+    if (!st)
+        st = check_processes(path, d);
+    if (st)
+        memset(meta, 0, sizeof *meta);
+    return st;
 }
 
 /* Spacing "h0[,h1[,h2]]" (positive finite numbers); unit when absent. */
@@ -210,6 +314,22 @@ static int parse_spacing(const char *path, const char *s, int dim, double *h)
     return NL_OK;
 }
 
+/* /field's samples: numbers (floating point, as noiselab writes, or
+ * integers), converted to double by HDF5. */
+static int check_type(const char *path, hid_t d)
+{
+    static const char *names[] = {"integer", "float", "time", "string", "bitfield", "opaque", "compound",
+                                  "reference", "enum", "variable-length", "array"};
+    hid_t t = H5Dget_type(d);
+    H5T_class_t c = t < 0 ? H5T_NO_CLASS : H5Tget_class(t);
+    if (t >= 0)
+        H5Tclose(t);
+    if (c == H5T_FLOAT || c == H5T_INTEGER)
+        return NL_OK;
+    return NL_ERROR(NL_EINPUT, "%s: /field holds %s samples; expected floating-point numbers (float32 or float64)",
+                    path, c >= 0 && c < (H5T_class_t)(sizeof names / sizeof *names) ? names[c] : "unknown");
+}
+
 /* Open path's /field: its rank and size (x first). */
 static int open_field(const char *path, MPI_Comm comm, hid_t *file, hid_t *d, int *dim, size_t *n)
 {
@@ -225,6 +345,8 @@ static int open_field(const char *path, MPI_Comm comm, hid_t *file, hid_t *d, in
         return NL_ERROR(NL_EINPUT, "%s: not a readable HDF5 file", path);
     if (H5Lexists(*file, "field", H5P_DEFAULT) <= 0 || (*d = H5Dopen2(*file, "field", H5P_DEFAULT)) < 0)
         return NL_ERROR(NL_EINPUT, "%s: no dataset /field; expected a field written by noiselab", path);
+    if ((r = check_type(path, *d)))
+        return r;
     sp = H5Dget_space(*d);
     r = sp < 0 ? -1 : H5Sget_simple_extent_ndims(sp);
     if (r < 1 || r > 3 || H5Sget_simple_extent_dims(sp, dims, NULL) < 0) {
@@ -283,10 +405,8 @@ int nl_mpi_h5_read(const char *path, nl_field **out, nl_meta *meta)
     *out = NULL;
     quiet();
     st = open_field(path, MPI_COMM_NULL, &file, &d, &dim, n);
-    if (!st) {
-        read_attrs(d, &m);
+    if (!st && !(st = read_attrs(path, d, &m)))
         st = parse_spacing(path, m.spacing, dim, h);
-    }
     if (!st && (*out = nl_field_alloc(dim, n, h, &st)) != NULL &&
         !(st = read_rows(path, MPI_COMM_NULL, d, dim, n, 0, n[dim - 1], (*out)->data)))
         st = check_finite(path, (*out)->data, (*out)->count, 0);
@@ -309,7 +429,7 @@ int nl_mpi_h5_read_meta(const char *path, nl_meta *meta)
     quiet();
     st = open_field(path, MPI_COMM_NULL, &file, &d, &dim, n);
     if (!st)
-        read_attrs(d, meta);
+        st = read_attrs(path, d, meta);
     else
         memset(meta, 0, sizeof *meta);
     if (d >= 0) H5Dclose(d);
@@ -328,10 +448,8 @@ int nl_mpi_h5_read_slab(const char *path, MPI_Comm comm, int *dim, size_t *n, do
     MPI_Comm_size(comm, &P);
     MPI_Comm_rank(comm, &r);
     st = open_field(path, comm, &file, &d, dim, n);
-    if (!st) {
-        read_attrs(d, &m);
+    if (!st && !(st = read_attrs(path, d, &m)))
         st = parse_spacing(path, m.spacing, *dim, h);
-    }
     if (!st) {
         size_t loc[3] = {n[0], n[1], n[2]};
         nl_mpi_block(n[*dim - 1], P, r, s0, ns);

@@ -17,8 +17,17 @@
  * with the same path, sizes and provenance, and its own slab (mpi/dist.h),
  * possibly empty.  Collective calls agree on their status (nl_mpi_agree).
  *
+ * Reading checks what the file declares before reading it: /field holds
+ * numbers (floating point or integer; not compound, string, enum, array,
+ * ...), each provenance attribute present is one string (a scalar, fixed
+ * or variable length) of at most its nl_meta capacity less one bytes, one
+ * string with no NUL or control character inside, ASCII or UTF-8 as its
+ * encoding says, and "processes" is one integer >= 1; anything else is
+ * NL_EINPUT naming the file and the attribute.
+ *
  * Returns NL_OK, NL_EIO (the file cannot be created or written), NL_EINPUT
- * (not an HDF5 file, no /field, a rank or size that is not a field's),
+ * (not an HDF5 file, no /field, a rank, size, sample type or attribute
+ * that is not a field's),
  * NL_ETOOBIG (the size does not fit this process: nl_size_check, honouring
  * NOISELAB_MEMORY_LIMIT), NL_ENOMEM.  HDF5's own error printing is turned
  * off by these functions (process-wide: the library never prints).

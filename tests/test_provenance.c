@@ -135,3 +135,17 @@ Test(provenance, format_refuses_a_bad_record)
     p = sample_record(), memset(p.version, 'v', sizeof p.version);
     cr_expect_eq(nl_provenance_format(&p, &kv), NL_EINVAL);
 }
+
+/* A record is data: a model naming a file is checked for its family and
+ * text, and the file is not opened (a missing one is no error here; synth
+ * --from reads it only when the command line names it). */
+Test(provenance, image_model_is_not_opened)
+{
+    nl_meta kv = {0};
+    nl_provenance q;
+    snprintf(kv.model, sizeof kv.model, "image:/nonexistent/exemplar.exr");
+    cr_assert_eq(nl_provenance_parse(&kv, NL_PROV_MODEL, &q), NL_OK, "%s", nl_errmsg());
+    cr_expect_str_eq(q.model, "image:/nonexistent/exemplar.exr");
+    snprintf(kv.model, sizeof kv.model, "image:a\nb");
+    cr_expect_eq(nl_provenance_parse(&kv, NL_PROV_MODEL, &q), NL_EINPUT);
+}

@@ -40,7 +40,7 @@ const nl_family nl_family_image = {
     .argument = "FILE",
     .usage = "PNG (8/16-bit grey) or EXR",
     .formula = "R = empirical autocorrelation of the exemplar (Lewis 1987, eq. 15)",
-    .flags = NL_FAMILY_ARGUMENT,
+    .flags = NL_FAMILY_ARGUMENT | NL_FAMILY_FILE,
     .validity = "the exemplar's empirical autocorrelation, positive semi-definite in 1D and 2D",
     .nparams = sizeof params / sizeof *params,
     .params = params,
