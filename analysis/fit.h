@@ -113,6 +113,20 @@ extern "C" {
 
 #define NL_FIT_MAX_FIX 8
 #define NL_FIT_ML_MAX 10000     /* most data for a likelihood fit */
+/* The work budget of a likelihood fit (nl_fit_options.max_work 0), in
+ * floating-point operations: see "Cost" above. */
+#define NL_FIT_ML_WORK_MAX 2e12
+/* The least reciprocal condition number of an information matrix whose
+ * inverse is reported: sqrt(DBL_EPSILON), see "Identifiability" above. */
+#define NL_FIT_RCOND_MIN 1.4901161193847656e-08
+
+/* nl_fit_param.flags */
+enum {
+    NL_FIT_PARAM_SINGULAR = 1,  /* not identifiable: the information matrix is singular in its
+                                   direction (se, lower, upper NaN) */
+    NL_FIT_PARAM_AT_BOUND = 2   /* ended at an end of its family's fit range, or a nugget at 0
+                                   (se NaN; the interval reaches that end) */
+};
 
 typedef enum { NL_FIT_CRESSIE = 0, NL_FIT_PAIRS = 1, NL_FIT_REWEIGHTED = 2, NL_FIT_DISTANCE = 3 } nl_fit_weights;
 typedef enum { NL_FIT_ML = 0, NL_FIT_REML = 1 } nl_fit_likelihood;
@@ -131,17 +145,18 @@ typedef struct {
                                             nl_fit_result.param; NaN: automatic) */
     nl_fit_intervals intervals;          /* ML/REML: profile intervals of none, every free
                                             parameter, or the scale alone */
+    double max_work;                     /* ML/REML: the work budget (0: NL_FIT_ML_WORK_MAX) */
 } nl_fit_options;
 
 /* One fitted parameter. */
 typedef struct {
     char name[16];                        /* its spec name: var, scale, nugget, nu, ... */
     double value;                         /* fitted (or fixed) value */
-    double se;                            /* standard error (0 when fixed; NaN when the
-                                             information matrix is singular) */
+    double se;                            /* standard error (0 when fixed; NaN when flagged) */
     double lower, upper;                  /* 95% profile-likelihood interval (see above): its ends,
                                              NaN where not computed, upper +inf where unbounded */
     int fixed;                            /* held at the given value */
+    unsigned flags;                       /* NL_FIT_PARAM_* */
 } nl_fit_param;
 
 /* A fit's result.  param has np entries, as many as the family's fitted
@@ -161,6 +176,9 @@ typedef struct {
     size_t nobs;                          /* bins used (WLS) or data (ML) */
     int iterations;                       /* optimiser steps */
     int converged;                        /* the optimiser's test was met */
+    double rcond;                         /* the information matrix's reciprocal condition
+                                             number (0 when not computable) */
+    unsigned flags;                       /* the OR of the parameters' flags */
 } nl_fit_result;
 
 /* Release a result's parameters (param = NULL, np = 0; NULL or a released
@@ -178,6 +196,11 @@ int nl_fit_check_options(const nl_fit_options *o, int dim);
  * evaluation).  Fills *res. */
 int nl_fit_variogram(const double *distance, const double *gamma, const double *pairs, size_t nbins, int dim,
                      const nl_fit_options *o, nl_fit_result *res);
+
+/* The estimated work of a likelihood fit of n data with options o, in
+ * floating-point operations (see "Cost" above); 0 when the options are
+ * invalid.  Thread-safe. */
+double nl_fit_ml_work(size_t n, int dim, const nl_fit_options *o);
 
 /* ML or REML fit to n data: coords[i * dim + a] the a-th coordinate of point
  * i, values[i] its value.  Allocates an n x n matrix (checked against the

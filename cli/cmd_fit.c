@@ -162,7 +162,9 @@ static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
         nl_fit_result_free(r);
         ml.start = start;
         ml.intervals = NL_FIT_INTERVALS_ALL;
+        cli_phase("fit", a->method == 2 ? "restricted maximum likelihood" : "maximum likelihood");
         st = nl_fit_ml(p->pts, p->val, p->n, p->dim, &ml, r);
+        cli_progress_done();
         free(start);
     }
     return st;
@@ -176,6 +178,47 @@ static const char *end_text(double v, char *buf, size_t size)
     else
         snprintf(buf, size, "unbounded");
     return buf;
+}
+
+/* A parameter's status word for JSON and the notes below the table. */
+static const char *status_word(const nl_fit_param *q)
+{
+    if (q->fixed)
+        return "fixed";
+    if (q->flags & NL_FIT_PARAM_AT_BOUND)
+        return "at bound";
+    return q->flags & NL_FIT_PARAM_SINGULAR ? "not identifiable (singular information)" : "ok";
+}
+
+/* The fit range of a shape parameter, from the registry (0, 0: none). */
+static void fit_range(const char *family, const char *name, double *lo, double *hi)
+{
+    const nl_family *f = nl_family_find(family, strlen(family));
+    int k = f ? nl_family_param_index(f, name) : -1;
+    *lo = k >= 0 ? f->params[k].fit_lo : 0;
+    *hi = k >= 0 ? f->params[k].fit_hi : 0;
+}
+
+/* Notes on flagged parameters: which, and why there are no numbers. */
+static void print_status(const opts_t *a, const nl_fit_result *r)
+{
+    char names[128] = "";
+    for (size_t k = 0; k < r->np; k++) {
+        const nl_fit_param *q = &r->param[k];
+        double lo, hi;
+        if (q->flags & NL_FIT_PARAM_SINGULAR)
+            snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", *names ? ", " : "", q->name);
+        else if ((q->flags & NL_FIT_PARAM_AT_BOUND) && strcmp(q->name, "nugget") == 0)
+            printf("at bound    nugget = %.3g: at 0 (below var's rounding: no nugget in the data)\n", q->value);
+        else if (q->flags & NL_FIT_PARAM_AT_BOUND) {
+            fit_range(a->o.family, q->name, &lo, &hi);
+            printf("at bound    %s = %g: at an end of its fit range %g to %g (the data ask for a value beyond)\n",
+                   q->name, q->value, lo, hi);
+        }
+    }
+    if (*names)
+        printf("not identifiable  %s: the information matrix is singular in their direction (reciprocal condition "
+               "number %.2g, below %.2g): no standard error or interval\n", names, r->rcond, NL_FIT_RCOND_MIN);
 }
 
 static void print_text(const opts_t *a, const nl_fit_result *r)
@@ -193,6 +236,10 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
         const nl_fit_param *q = &r->param[k];
         if (q->fixed)
             snprintf(se, sizeof se, "fixed");
+        else if (q->flags & NL_FIT_PARAM_AT_BOUND)
+            snprintf(se, sizeof se, "n/a (at bound)");
+        else if (q->flags & NL_FIT_PARAM_SINGULAR)
+            snprintf(se, sizeof se, "n/a (not identifiable)");
         else if (isfinite(q->se))
             snprintf(se, sizeof se, "%.4g", q->se);
         else
@@ -203,6 +250,7 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
             printf("%-11s %-13.6g %-16s %s to %s\n", q->name, q->value, se, end_text(q->lower, lo, sizeof lo),
                    end_text(q->upper, hi, sizeof hi));
     }
+    print_status(a, r);
     if (a->method)
         printf("mean        %.6g\n", r->mean);
     printf("objective   %.8g (%s)\n", r->objective, a->method ? "-2 log likelihood" : "weighted sum of squares");
@@ -212,15 +260,25 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
 static void print_json(const opts_t *a, const nl_fit_result *r)
 {
     static const char *const mname[] = {"wls", "ml", "reml"};
-    json_t *par = json_object(), *se = json_object(), *j;
+    json_t *par = json_object(), *se = json_object(), *status = json_object(), *flags = json_array(), *j;
     for (size_t k = 0; k < r->np; k++) {
         const nl_fit_param *q = &r->param[k];
         json_object_set_new(par, q->name, json_real(q->value));
         json_object_set_new(se, q->name, isfinite(q->se) ? json_real(q->se) : json_null());
+        json_object_set_new(status, q->name, json_string(status_word(q)));
     }
+    if (r->flags & NL_FIT_PARAM_SINGULAR)
+        json_array_append_new(flags, json_string("singular-information"));
+    if (r->flags & NL_FIT_PARAM_AT_BOUND)
+        json_array_append_new(flags, json_string("at-bound"));
+    if (!r->converged)
+        json_array_append_new(flags, json_string("not-converged"));
     j = json_pack("{s:s,s:o,s:o,s:f,s:f,s:s,s:I,s:b,s:i}", "model", r->spec, "parameters", par, "standard_errors", se,
                   "objective", r->objective, "aic", r->aic, "method", mname[a->method], "n", (json_int_t)r->nobs,
                   "converged", r->converged, "iterations", r->iterations);
+    json_object_set_new(j, "status", status);
+    json_object_set_new(j, "flags", flags);
+    json_object_set_new(j, "rcond", json_real(r->rcond));
     if (a->method) {
         json_t *iv = json_object();
         for (size_t k = 0; k < r->np; k++) {
