@@ -93,9 +93,13 @@ static int check_coincident(const nl_fit_params *p, const double *x, const doubl
 
 /* Finite values, finite coordinates spanning a finite extent, not all at
  * one place, some variation. */
+#define ML_SPREAD_MIN 1e-150
+#define ML_SPREAD_MAX 1e150
+
 static int check_values(const double *x, const double *z, size_t n, int dim)
 {
     size_t d = (size_t)dim;
+    double zlo = z[0], zhi = z[0];
     for (size_t i = 0; i < n; i++) {
         if (!isfinite(z[i]))
             return NL_ERROR(NL_EINVAL, "fit: value %zu is not finite (%g)", i + 1, z[i]);
@@ -116,9 +120,15 @@ static int check_values(const double *x, const double *z, size_t n, int dim)
             return NL_ERROR(NL_EINVAL, "fit: all %zu points are identical; expected distinct locations", n);
     }
     for (size_t i = 1; i < n; i++)
-        if (z[i] != z[0])
-            return NL_OK;
-    return NL_ERROR(NL_EINVAL, "fit: no variation: all %zu values are %g; nothing to fit", n, z[0]);
+        zlo = fmin(zlo, z[i]), zhi = fmax(zhi, z[i]);
+    if (zlo == zhi)
+        return NL_ERROR(NL_EINVAL, "fit: no variation: all %zu values are %g; nothing to fit", n, z[0]);
+    /* the variance, about the square of the spread, must be a normal double */
+    if (!(zhi - zlo >= ML_SPREAD_MIN && zhi - zlo <= ML_SPREAD_MAX))
+        return NL_ERROR(NL_EINVAL, "fit: the values spread over %g (%g to %g): expected a spread between %g and "
+                        "%g, whose square is a normal double (rescale them)", zhi - zlo, zlo, zhi, ML_SPREAD_MIN,
+                        ML_SPREAD_MAX);
+    return NL_OK;
 }
 
 int nl_fit_ml_check(const nl_fit_params *p, const double *x, const double *z, size_t n, const nl_fit_options *o)

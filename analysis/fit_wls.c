@@ -219,6 +219,12 @@ static int fit_variogram(const double *distance, const double *gamma, const doub
         return NL_ERROR(NL_ENOMEM, "out of memory");
     d = (wls_data){.p = &p, .h = buf, .g = buf + nbins, .n = buf + 2 * nbins,
                    .m = used_bins(distance, gamma, pairs, nbins, buf), .weights = o->weights, .w = buf + 3 * nbins};
+    for (size_t j = 0; j < nbins && d.m < p.nfree + 1; j++)
+        if (pairs[j] > 0 && gamma[j] == INFINITY) {
+            free(buf);
+            return NL_ERROR(NL_EINVAL, "fit: the variogram overflows (infinite at distance %g): expected values "
+                            "below about 1e154 (rescale them)", distance[j]);
+        }
     if (d.m < p.nfree + 1) {
         free(buf);
         return NL_ERROR(NL_EINVAL, "fit: %zu variogram bins with pairs; expected at least %zu (the %zu free "
@@ -227,7 +233,8 @@ static int fit_variogram(const double *distance, const double *gamma, const doub
     for (size_t j = 0; j < d.m && d.g[j] == 0; j++)
         if (j == d.m - 1) {
             free(buf);
-            return NL_ERROR(NL_EINVAL, "fit: no variation: the variogram is 0 in all %zu bins; nothing to fit", d.m);
+            return NL_ERROR(NL_EINVAL, "fit: no variation: the variogram is 0 in all %zu bins (the values are equal, "
+                            "or differ by less than about 1e-154, whose squares underflow); nothing to fit", d.m);
         }
     wls_start(&p, &d, o->start);
     st = solve_weighted(&d, res, cov);

@@ -218,7 +218,8 @@ static void print_status(const opts_t *a, const nl_fit_result *r)
     }
     if (*names)
         printf("not identifiable  %s: the information matrix is singular in their direction (reciprocal condition "
-               "number %.2g, below %.2g): no standard error or interval\n", names, r->rcond, NL_FIT_RCOND_MIN);
+               "number %.2g, below %.2g%s): no standard error or interval\n", names, r->rcond, NL_FIT_RCOND_MIN,
+               r->rcond > 0 ? "" : "; 0: not positive definite, or the likelihood undefined a step away");
 }
 
 static void print_text(const opts_t *a, const nl_fit_result *r)
