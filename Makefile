@@ -274,10 +274,10 @@ asan: $(DEPS_OK)
 # (tests/fuzz/fuzz_cli.c), 7-8 decode the input into a synthesis on a tiny
 # grid, run by the library (tests/fuzz/fuzz_num.c) and by the command line
 # (tests/fuzz/fuzz_synthcli.c), 9 into a tiny field for the analysis
-# (fuzz_num.c).
+# (fuzz_num.c), 10 into a small point set for the fitters (fuzz_fit.c).
 # `make fuzz FUZZ_TARGETS="synthnum synthcli"` runs some of them.
 FUZZ_SECONDS ?= 30
-FUZZ_TARGETS ?= model dist field cli krige cloud synthnum synthcli fieldnum
+FUZZ_TARGETS ?= model dist field cli krige cloud synthnum synthcli fieldnum fit
 FUZZ_CLI_SRC := $(filter-out cli/main.c,$(CLI_SRC)) $(BENCH_SRC)
 fuzz: $(DEPS_OK)
 	@mkdir -p $(BUILD)/fuzz
@@ -287,7 +287,7 @@ fuzz: $(DEPS_OK)
 	    field) n=3 src=tests/fuzz/fuzz_parse.c ;; cli) n=4 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; \
 	    krige) n=5 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; cloud) n=6 src="tests/fuzz/fuzz_cli.c $(FUZZ_CLI_SRC)" ;; \
 	    synthnum) n=7 src=tests/fuzz/fuzz_num.c ;; synthcli) n=8 src="tests/fuzz/fuzz_synthcli.c $(FUZZ_CLI_SRC)" ;; \
-	    fieldnum) n=9 src=tests/fuzz/fuzz_num.c ;; \
+	    fieldnum) n=9 src=tests/fuzz/fuzz_num.c ;; fit) n=10 src=tests/fuzz/fuzz_fit.c ;; \
 	    *) echo "fuzz: no target $$t"; exit 1 ;; \
 	    esac; \
 	    clang -O1 -g -fsanitize=fuzzer,address,undefined -DFUZZ_TARGET=$$n -D_GNU_SOURCE -I/usr/include/OpenEXR \

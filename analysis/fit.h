@@ -13,6 +13,31 @@
  * Starts: the family's descriptor gives each shape parameter's start and
  * the factor on the automatic scale start (2 for the spherical range).
  *
+ * Bounds.  A shape parameter with a fit range in its descriptor
+ * (nl_family_param.fit_lo, fit_hi) is held to it, starts included: matern's
+ * nu to 0.2..30 (GSTools' bounds for Matern; at 30 R is gauss's within 1%),
+ * markaussian's and gencauchy's alpha to 0.05..2, gencauchy's beta to
+ * 0.05..50; gauss-osc's and oscillatory's omega (a frequency in the data's
+ * units) have none.  A fit that ends within 1e-4 (relative) of an end is
+ * flagged NL_FIT_PARAM_AT_BOUND, as is a nugget below DBL_EPSILON var (0 to
+ * the covariance's rounding): no standard error (the curvature across a
+ * bound is not information); the profile interval stops at the end.
+ *
+ * Identifiability.  The information matrix of the free transformed
+ * parameters (ML: the Hessian of -l; WLS: J^T J / s^2) is tested by its
+ * eigenvalues: a direction of curvature below NL_FIT_RCOND_MIN =
+ * sqrt(DBL_EPSILON) = 1.5e-8 times the largest (a second difference keeps
+ * about half of the objective's digits; the transformed parameters are
+ * unit-free, so the ratio is meaningful), or not positive, or one where a
+ * Hessian step leaves the positive definite covariances, is singular, and
+ * the parameters carrying over a tenth of its weight are flagged
+ * NL_FIT_PARAM_SINGULAR ("not identifiable"): se, lower and upper NaN.  The
+ * others' standard errors then come from the pseudo-inverse over the
+ * regular directions.  A profile interval narrower than its solver's
+ * tolerance (2e-3 transformed units) is flagged the same way, never
+ * reported with width 0.  rcond is the matrix's reciprocal condition
+ * number.
+ *
  * Semivariogram of a model: gamma(h) = var + nugget - R(h) for h > 0 (R(h)
  * excludes the nugget there), the convention of gstat and GSTools (nugget:
  * the jump at the origin; sill = var + nugget).  Scales against theirs:
@@ -64,8 +89,20 @@
  * Cholesky factor of C by GSL.  Standard errors from the observed
  * information: the inverse of the Hessian of -l, by central differences
  * (step 2e-3 in the transformed parameters).  AIC = -2 l + 2 p, p the free
- * covariance parameters plus the mean.  O(n^3) per step: n up to a few
- * thousand (NL_FIT_ML_MAX).
+ * covariance parameters plus the mean.  Two data at one place share the
+ * continuous part of the covariance but not the nugget's white noise; they
+ * are refused without a nugget (C would be singular).  Data without
+ * variation are refused by both fits (WLS: a variogram 0 in every bin).
+ *
+ * Cost (nl_fit_ml_work).  O(n^3) per likelihood evaluation: the estimate
+ * is E (n^3 / 3 + 50 n^2) operations (the Cholesky factor and the model at
+ * n^2 / 2 pairs) with E = 150 k + 2 k^2 + 1 + 20 m (1 + 40 (k - 1))
+ * evaluations for k free parameters and m profile intervals (the simplex,
+ * the Hessian, about 10 profile points per end).  A fit above the budget
+ * (max_work, or NL_FIT_ML_WORK_MAX = 2e12: about 3 minutes at the 1e10
+ * operations per second of a 2020s core; markov with a nugget and every
+ * interval: up to about 1000 data; without intervals about 2000) is
+ * refused with NL_ETOOBIG, as is n above NL_FIT_ML_MAX.
  *
  * Intervals (ML and REML, nl_fit_options.intervals): the 95% profile-
  * likelihood interval of each chosen free parameter, the parameter values
@@ -94,9 +131,12 @@
  * Statuses: NL_OK; NL_EINVAL (an unknown weighting, a family that cannot be fitted, a fixed
  * parameter the family does not have or out of its range, fewer bins with
  * pairs than free parameters + 1, fewer data than free parameters + 2, a
- * non-finite coordinate or value, all points identical, dim not 1..3);
- * NL_ETOOBIG (n above NL_FIT_ML_MAX or its n x n matrix beyond the memory
- * limit); NL_ENOMEM; NL_EFAIL (the optimiser found no finite objective, or
+ * non-finite coordinate or value, coordinates spanning no finite extent,
+ * all points identical, no variation, values spreading over less than
+ * 1e-150 or more than 1e150, a variogram that overflows, two data at one
+ * place without a nugget, dim not 1..3);
+ * NL_ETOOBIG (n above NL_FIT_ML_MAX, work above the budget, or its n x n
+ * matrix beyond the memory limit); NL_ENOMEM; NL_EFAIL (the optimiser found no finite objective, or
  * the reweighted fit met a model semivariogram of 0).
  * A fit that stops at the iteration limit is NL_OK with converged = 0.
  * Thread safety: fits parse and evaluate models of named families only,
