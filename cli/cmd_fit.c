@@ -24,27 +24,49 @@ static const char help[] =
     "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2 of the fitted model "
     "(cressie: Cressie's criterion; reweighted: the weights held at the last fit and refitted to a "
     "fixed point, gstat's fit.method 2), N (pairs, fit.method 1) or N/h^2 (distance, fit.method 7).  "
-    "ml, reml: the Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step (a "
-    "few thousand data), started from the wls fit.  Prints the fitted model as a spec for --acf, "
+    "ml, reml: the Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step (refused "
+    "above a work budget: below), started from the wls fit.  Prints the fitted model as a spec for --acf, "
     "standard errors, the objective and AIC (compare models fitted by one method to one data set: "
     "lower is better).  ml and reml also print each free parameter's 95% profile-likelihood interval "
     "(the values within 3.841 of the minimum -2 log likelihood, the others re-optimised; \"unbounded\" "
     "when the data set no upper limit).  --json keys: model, parameters, standard_errors, objective, "
-    "aic, method, n, and for ml and reml mean and intervals ([lower, upper] per free parameter, upper "
-    "null when unbounded).";
+    "aic, method, n, converged, iterations, status (per parameter: ok, fixed, at bound, or not "
+    "identifiable (singular information)), flags (singular-information, at-bound, not-converged), rcond "
+    "(the information matrix's reciprocal condition number), and for ml and reml mean and intervals "
+    "([lower, upper] per free parameter, upper null when unbounded).";
 
 static const char help_errors[] =
     "Standard errors: ml and reml's describe the spread of the estimates for\n"
     "regular models (markov with a nugget); the spherical range's understate it by\n"
     "about 2x (its likelihood is not smooth in the range): quote the profile\n"
     "intervals, which need no curvature (experiments/fit_coverage.c measures both).\n"
-    "wls's treat correlated variogram bins as independent and understate the spread.\n";
+    "wls's treat correlated variogram bins as independent and understate the spread.\n"
+    "A parameter the data cannot resolve (the information matrix singular in its\n"
+    "direction: reciprocal condition number below %.2g) is \"not identifiable\",\n"
+    "one that ends at an end of its fit range (above) or a nugget at 0 \"at bound\":\n"
+    "neither has a standard error (null in JSON).  Two data at one place need\n"
+    "--nugget; data without variation are refused.  ml and reml refuse more than\n"
+    "%.2g operations of work (n^3/3 per likelihood evaluation: about 1000 data with\n"
+    "a nugget; the message gives the most): fit the variogram (wls) or a subsample.\n";
+
+/* "; fit ranges: FAMILY's NAME LO to HI, ..." from the registry. */
+static void fit_ranges(char *buf, size_t size)
+{
+    size_t len = 0;
+    for (size_t i = 0; i < nl_family_count(); i++) {
+        const nl_family *f = nl_family_get(i);
+        for (size_t k = 0; (f->flags & NL_FAMILY_FIT) && k < f->nparams && len < size; k++)
+            if (f->params[k].fit_hi > 0)
+                len += (size_t)snprintf(buf + len, size - len, "%s%s's %s %g to %g", len ? ", " : "; fit ranges: ",
+                                        f->name, f->params[k].name, f->params[k].fit_lo, f->params[k].fit_hi);
+    }
+}
 
 /* The usage, then the families `fit` accepts and their shape parameters,
  * from the registry, then the rest. */
 static void print_help(void)
 {
-    char families[512], shapes[256] = "", text[4096];
+    char families[512], shapes[512] = "", text[4096];
     size_t len = 0;
     nl_family_names(NL_FAMILY_FIT, 0, ", ", families, sizeof families);
     for (size_t i = 0; i < nl_family_count(); i++) {
@@ -59,12 +81,13 @@ static void print_help(void)
     }
     if (len)
         shapes[len - 1] = 0;  /* the last comma */
+    fit_ranges(shapes + strlen(shapes), sizeof shapes - strlen(shapes));
     snprintf(text, sizeof text, "Fits a model family (%s) to data: its var, scale (the spherical model's range), "
              "the nugget with --nugget, and its shape parameters (%s), each unless fixed by --fix.  wls (default): "
              "weighted least squares on the empirical variogram (as %s", families, shapes, help);
     fputs(help_usage, stdout);
     cli_fill(stdout, text, 80);
-    fputs(help_errors, stdout);
+    printf(help_errors, NL_FIT_RCOND_MIN, NL_FIT_ML_WORK_MAX);
 }
 
 /* The command's options. */
