@@ -33,7 +33,8 @@
  * the parameters carrying over a tenth of its weight are flagged
  * NL_FIT_PARAM_SINGULAR ("not identifiable"): se, lower and upper NaN.  The
  * others' standard errors then come from the pseudo-inverse over the
- * regular directions.  A profile interval narrower than its solver's
+ * regular directions: conditional on the flagged parameters, as for fixed
+ * ones (smaller than a marginal error would be where they correlate).  A profile interval narrower than its solver's
  * tolerance (2e-3 transformed units) is flagged the same way, never
  * reported with width 0.  rcond is the matrix's reciprocal condition
  * number.
