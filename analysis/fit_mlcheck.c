@@ -47,9 +47,10 @@ static int check_work(const nl_fit_params *p, size_t n, const nl_fit_options *o)
     if (!(work <= budget)) {
         while (most > 2 && e * per_evaluation((double)most) > budget)
             most--;
-        return NL_ERROR(NL_ETOOBIG, "fit: a likelihood fit of %zu data costs about %.2g operations (%.0f "
-                        "evaluations of O(n^3)), over the budget of %.2g; expected at most %zu data: fit the "
-                        "variogram (method wls), or fit a subsample", n, work, e, budget, most);
+        return NL_ERROR(NL_ETOOBIG, "fit: a likelihood fit of %zu data costs about %.3g operations (%.0f "
+                        "evaluations of O(n^3); some %.0f s at 1e10 a second), over the budget of %.3g; expected at "
+                        "most %zu data: fit the variogram (method wls), or fit a subsample", n, work, e, work / 1e10,
+                        budget, most);
     }
     return NL_OK;
 }
