@@ -19,8 +19,8 @@
  * markaussian's and gencauchy's alpha to 0.05..2, gencauchy's beta to
  * 0.05..50; gauss-osc's and oscillatory's omega (a frequency in the data's
  * units) have none.  A fit that ends within 1e-4 (relative) of an end is
- * flagged NL_FIT_PARAM_AT_BOUND, as is a nugget below DBL_EPSILON var (0 to
- * the covariance's rounding): no standard error (the curvature across a
+ * flagged NL_FIT_PARAM_AT_BOUND, as is a nugget below NL_FIT_RCOND_MIN var
+ * (0 to the precision the information matrix keeps): no standard error (the curvature across a
  * bound is not information); the profile interval stops at the end.
  *
  * Identifiability.  The information matrix of the free transformed

@@ -2,7 +2,6 @@
 #include "fit_internal.h"
 #include "../core/nl_error.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <stdio.h>
@@ -110,8 +109,8 @@ void nl_fit_params_start(nl_fit_params *p, double sill, double scale, const doub
 
 /* At a bound: within NL_FIT_BOUND_REL of an end (a logistic parameter
  * approaches its upper end without reaching it); a nugget at its lower
- * end 0 when below var's rounding (DBL_EPSILON var: C's diagonal does not
- * see it). */
+ * end 0 when below NL_FIT_RCOND_MIN var (it changes C's diagonal by less
+ * than the relative precision the information matrix keeps). */
 #define NL_FIT_BOUND_REL 1e-4
 
 void nl_fit_params_at_bound(const nl_fit_params *p, unsigned *flags)
@@ -121,7 +120,7 @@ void nl_fit_params_at_bound(const nl_fit_params *p, unsigned *flags)
         double v = p->value[p->free_idx[k]];
         if (fp->fit_hi > 0 && (v <= fp->fit_lo * (1 + NL_FIT_BOUND_REL) || v >= fp->fit_hi * (1 - NL_FIT_BOUND_REL)))
             flags[k] |= NL_FIT_PARAM_AT_BOUND;
-        if (fp->role == NL_ROLE_NUGGET && v <= DBL_EPSILON * p->value[0])
+        if (fp->role == NL_ROLE_NUGGET && v <= NL_FIT_RCOND_MIN * p->value[0])
             flags[k] |= NL_FIT_PARAM_AT_BOUND;
     }
 }

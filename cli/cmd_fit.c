@@ -232,7 +232,8 @@ static void print_status(const opts_t *a, const nl_fit_result *r)
         if (q->flags & NL_FIT_PARAM_SINGULAR)
             snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", *names ? ", " : "", q->name);
         else if ((q->flags & NL_FIT_PARAM_AT_BOUND) && strcmp(q->name, "nugget") == 0)
-            printf("at bound    nugget = %.3g: at 0 (below var's rounding: no nugget in the data)\n", q->value);
+            printf("at bound    nugget = %.3g: at 0 (below %.2g var: no nugget in the data)\n", q->value,
+                   NL_FIT_RCOND_MIN);
         else if (q->flags & NL_FIT_PARAM_AT_BOUND) {
             fit_range(a->o.family, q->name, &lo, &hi);
             printf("at bound    %s = %g: at an end of its fit range %g to %g (the data ask for a value beyond)\n",
