@@ -9,6 +9,7 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_multimin.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -167,7 +168,7 @@ done:
  * spherical model's range), shape parameters 1. */
 static void ml_start(nl_fit_params *p, const double *x, const double *z, size_t n, const double *start)
 {
-    double mean = 0, var = 0, diag = 0;
+    double mean = 0, var = 0, diag = 0, safe = 0;
     for (size_t i = 0; i < n; i++)
         mean += z[i] / (double)n;
     for (size_t i = 0; i < n; i++)
@@ -176,9 +177,12 @@ static void ml_start(nl_fit_params *p, const double *x, const double *z, size_t 
         double lo = INFINITY, hi = -INFINITY;
         for (size_t i = 0; i < n; i++)
             lo = fmin(lo, x[i * (size_t)p->dim + (size_t)a]), hi = fmax(hi, x[i * (size_t)p->dim + (size_t)a]);
-        diag = hypot(diag, hi - lo); /* no overflow for huge extents, nor underflow for tiny */
+        diag += (hi - lo) * (hi - lo);
+        safe = hypot(safe, hi - lo);
     }
     var = var > 0 ? var : 1;
+    /* the sum of squares where it neither overflows nor underflows */
+    diag = isfinite(diag) && diag >= DBL_MIN ? sqrt(diag) : safe;
     nl_fit_params_start(p, var, diag / 10, start);
 }
 
