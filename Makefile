@@ -275,10 +275,11 @@ asan: $(DEPS_OK)
 # grid, run by the library (tests/fuzz/fuzz_num.c) and by the command line
 # (tests/fuzz/fuzz_synthcli.c), 9 into a tiny field for the analysis
 # (fuzz_num.c), 10 the point tables (tests/fuzz/fuzz_points.c), 11 the
-# HDF5 reader of mpi/h5.c on a temporary file (fuzz_h5.c).
+# HDF5 reader of mpi/h5.c on a temporary file (fuzz_h5.c), 12 a small point
+# set for the fitters (fuzz_fit.c).
 # `make fuzz FUZZ_TARGETS="synthnum synthcli"` runs some of them.
 FUZZ_SECONDS ?= 30
-FUZZ_TARGETS ?= model dist field cli krige cloud synthnum synthcli fieldnum points h5
+FUZZ_TARGETS ?= model dist field cli krige cloud synthnum synthcli fieldnum points h5 fit
 FUZZ_CLI_SRC := $(filter-out cli/main.c,$(CLI_SRC)) $(BENCH_SRC)
 fuzz: $(DEPS_OK)
 	@mkdir -p $(BUILD)/fuzz
@@ -290,6 +291,7 @@ fuzz: $(DEPS_OK)
 	    synthnum) n=7 src=tests/fuzz/fuzz_num.c ;; synthcli) n=8 src="tests/fuzz/fuzz_synthcli.c $(FUZZ_CLI_SRC)" ;; \
 	    fieldnum) n=9 src=tests/fuzz/fuzz_num.c ;; points) n=10 src=tests/fuzz/fuzz_points.c ;; \
 	    h5) n=11 src="tests/fuzz/fuzz_h5.c $(MPI_SRC)" x="$(MPI_CFLAGS)" l="$(MPI_LIBS)" m=16384 ;; \
+	    fit) n=12 src=tests/fuzz/fuzz_fit.c ;; \
 	    *) echo "fuzz: no target $$t"; exit 1 ;; \
 	    esac; \
 	    clang -O1 -g -fsanitize=fuzzer,address,undefined -DFUZZ_TARGET=$$n -D_GNU_SOURCE -I/usr/include/OpenEXR $$x \

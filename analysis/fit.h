@@ -13,6 +13,32 @@
  * Starts: the family's descriptor gives each shape parameter's start and
  * the factor on the automatic scale start (2 for the spherical range).
  *
+ * Bounds.  A shape parameter with a fit range in its descriptor
+ * (nl_family_param.fit_lo, fit_hi) is held to it, starts included: matern's
+ * nu to 0.2..30 (GSTools' bounds for Matern; at 30 R is gauss's within 1%),
+ * markaussian's and gencauchy's alpha to 0.05..2, gencauchy's beta to
+ * 0.05..50; gauss-osc's and oscillatory's omega (a frequency in the data's
+ * units) have none.  A fit that ends within 1e-4 (relative) of an end is
+ * flagged NL_FIT_PARAM_AT_BOUND, as is a nugget below NL_FIT_RCOND_MIN var
+ * (0 to the precision the information matrix keeps): no standard error (the curvature across a
+ * bound is not information); the profile interval stops at the end.
+ *
+ * Identifiability.  The information matrix of the free transformed
+ * parameters (ML: the Hessian of -l; WLS: J^T J / s^2) is tested by its
+ * eigenvalues: a direction of curvature below NL_FIT_RCOND_MIN =
+ * sqrt(DBL_EPSILON) = 1.5e-8 times the largest (a second difference keeps
+ * about half of the objective's digits; the transformed parameters are
+ * unit-free, so the ratio is meaningful), or not positive, or one where a
+ * Hessian step leaves the positive definite covariances, is singular, and
+ * the parameters carrying over a tenth of its weight are flagged
+ * NL_FIT_PARAM_SINGULAR ("not identifiable"): se, lower and upper NaN.  The
+ * others' standard errors then come from the pseudo-inverse over the
+ * regular directions: conditional on the flagged parameters, as for fixed
+ * ones (smaller than a marginal error would be where they correlate).  A profile interval narrower than its solver's
+ * tolerance (2e-3 transformed units) is flagged the same way, never
+ * reported with width 0.  rcond is the matrix's reciprocal condition
+ * number.
+ *
  * Semivariogram of a model: gamma(h) = var + nugget - R(h) for h > 0 (R(h)
  * excludes the nugget there), the convention of gstat and GSTools (nugget:
  * the jump at the origin; sill = var + nugget).  Scales against theirs:
@@ -64,8 +90,20 @@
  * Cholesky factor of C by GSL.  Standard errors from the observed
  * information: the inverse of the Hessian of -l, by central differences
  * (step 2e-3 in the transformed parameters).  AIC = -2 l + 2 p, p the free
- * covariance parameters plus the mean.  O(n^3) per step: n up to a few
- * thousand (NL_FIT_ML_MAX).
+ * covariance parameters plus the mean.  Two data at one place share the
+ * continuous part of the covariance but not the nugget's white noise; they
+ * are refused without a nugget (C would be singular).  Data without
+ * variation are refused by both fits (WLS: a variogram 0 in every bin).
+ *
+ * Cost (nl_fit_ml_work).  O(n^3) per likelihood evaluation: the estimate
+ * is E (n^3 / 3 + 50 n^2) operations (the Cholesky factor and the model at
+ * n^2 / 2 pairs) with E = 150 k + 2 k^2 + 1 + 20 m (1 + 40 (k - 1))
+ * evaluations for k free parameters and m profile intervals (the simplex,
+ * the Hessian, about 10 profile points per end).  A fit above the budget
+ * (max_work, or NL_FIT_ML_WORK_MAX = 2e12: about 3 minutes at the 1e10
+ * operations per second of a 2020s core; markov with a nugget and every
+ * interval: up to about 1000 data; without intervals about 2000) is
+ * refused with NL_ETOOBIG, as is n above NL_FIT_ML_MAX.
  *
  * Intervals (ML and REML, nl_fit_options.intervals): the 95% profile-
  * likelihood interval of each chosen free parameter, the parameter values
@@ -94,9 +132,12 @@
  * Statuses: NL_OK; NL_EINVAL (an unknown weighting, a family that cannot be fitted, a fixed
  * parameter the family does not have or out of its range, fewer bins with
  * pairs than free parameters + 1, fewer data than free parameters + 2, a
- * non-finite coordinate or value, all points identical, dim not 1..3);
- * NL_ETOOBIG (n above NL_FIT_ML_MAX or its n x n matrix beyond the memory
- * limit); NL_ENOMEM; NL_EFAIL (the optimiser found no finite objective, or
+ * non-finite coordinate or value, coordinates spanning no finite extent,
+ * all points identical, no variation, values spreading over less than
+ * 1e-150 or more than 1e150, a variogram that overflows, two data at one
+ * place without a nugget, dim not 1..3);
+ * NL_ETOOBIG (n above NL_FIT_ML_MAX, work above the budget, or its n x n
+ * matrix beyond the memory limit); NL_ENOMEM; NL_EFAIL (the optimiser found no finite objective, or
  * the reweighted fit met a model semivariogram of 0).
  * A fit that stops at the iteration limit is NL_OK with converged = 0.
  * Thread safety: fits parse and evaluate models of named families only,
@@ -113,6 +154,20 @@ extern "C" {
 
 #define NL_FIT_MAX_FIX 8
 #define NL_FIT_ML_MAX 10000     /* most data for a likelihood fit */
+/* The work budget of a likelihood fit (nl_fit_options.max_work 0), in
+ * floating-point operations: see "Cost" above. */
+#define NL_FIT_ML_WORK_MAX 2e12
+/* The least reciprocal condition number of an information matrix whose
+ * inverse is reported: sqrt(DBL_EPSILON), see "Identifiability" above. */
+#define NL_FIT_RCOND_MIN 1.4901161193847656e-08
+
+/* nl_fit_param.flags */
+enum {
+    NL_FIT_PARAM_SINGULAR = 1,  /* not identifiable: the information matrix is singular in its
+                                   direction (se, lower, upper NaN) */
+    NL_FIT_PARAM_AT_BOUND = 2   /* ended at an end of its family's fit range, or a nugget at 0
+                                   (se NaN; the interval reaches that end) */
+};
 
 typedef enum { NL_FIT_CRESSIE = 0, NL_FIT_PAIRS = 1, NL_FIT_REWEIGHTED = 2, NL_FIT_DISTANCE = 3 } nl_fit_weights;
 typedef enum { NL_FIT_ML = 0, NL_FIT_REML = 1 } nl_fit_likelihood;
@@ -131,17 +186,18 @@ typedef struct {
                                             nl_fit_result.param; NaN: automatic) */
     nl_fit_intervals intervals;          /* ML/REML: profile intervals of none, every free
                                             parameter, or the scale alone */
+    double max_work;                     /* ML/REML: the work budget (0: NL_FIT_ML_WORK_MAX) */
 } nl_fit_options;
 
 /* One fitted parameter. */
 typedef struct {
     char name[16];                        /* its spec name: var, scale, nugget, nu, ... */
     double value;                         /* fitted (or fixed) value */
-    double se;                            /* standard error (0 when fixed; NaN when the
-                                             information matrix is singular) */
+    double se;                            /* standard error (0 when fixed; NaN when flagged) */
     double lower, upper;                  /* 95% profile-likelihood interval (see above): its ends,
                                              NaN where not computed, upper +inf where unbounded */
     int fixed;                            /* held at the given value */
+    unsigned flags;                       /* NL_FIT_PARAM_* */
 } nl_fit_param;
 
 /* A fit's result.  param has np entries, as many as the family's fitted
@@ -161,6 +217,9 @@ typedef struct {
     size_t nobs;                          /* bins used (WLS) or data (ML) */
     int iterations;                       /* optimiser steps */
     int converged;                        /* the optimiser's test was met */
+    double rcond;                         /* the information matrix's reciprocal condition
+                                             number (0 when not computable) */
+    unsigned flags;                       /* the OR of the parameters' flags */
 } nl_fit_result;
 
 /* Release a result's parameters (param = NULL, np = 0; NULL or a released
@@ -178,6 +237,11 @@ int nl_fit_check_options(const nl_fit_options *o, int dim);
  * evaluation).  Fills *res. */
 int nl_fit_variogram(const double *distance, const double *gamma, const double *pairs, size_t nbins, int dim,
                      const nl_fit_options *o, nl_fit_result *res);
+
+/* The estimated work of a likelihood fit of n data with options o, in
+ * floating-point operations (see "Cost" above); 0 when the options are
+ * invalid.  Thread-safe. */
+double nl_fit_ml_work(size_t n, int dim, const nl_fit_options *o);
 
 /* ML or REML fit to n data: coords[i * dim + a] the a-th coordinate of point
  * i, values[i] its value.  Allocates an n x n matrix (checked against the

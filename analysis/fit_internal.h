@@ -51,9 +51,37 @@ double nl_fit_ml_minus2l_u(nl_fit_mldata *d, const double *u);
  * u_hat (-2 l = f_hat), cov the Hessian's covariance of u (a first guess of
  * the widths; NaN allowed).  Fills lower[k], upper[k] for each of the
  * d->p->np parameters (values, NaN for parameters not profiled) and leaves
- * d at u_hat.  NL_OK or NL_ENOMEM. */
+ * d at u_hat.  flags (per free parameter): those flagged
+ * NL_FIT_PARAM_SINGULAR on entry are not profiled (an end beyond a fit
+ * range is that end); an interval narrower than the solver's tolerance (a profile
+ * that rises past the cutoff within one tolerance of the optimum, as where
+ * the covariance stops being positive definite) is left NaN and flagged
+ * NL_FIT_PARAM_SINGULAR.  NL_OK or NL_ENOMEM. */
 int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const double *cov, int which,
-                   double *lower, double *upper);
+                   double *lower, double *upper, unsigned *flags);
+
+/* The identifiability test of an information matrix (analysis/fit_info.c):
+ * info (k x k, row-major, of the free transformed parameters; entries of
+ * flagged parameters ignored) whose eigenvalues below NL_FIT_RCOND_MIN
+ * times the largest (or not positive) make singular directions; each
+ * parameter with over NL_FIT_NULL_SHARE of a singular direction's weight
+ * is flagged NL_FIT_PARAM_SINGULAR in flags (k entries, in/out; a
+ * non-finite entry flags its row and column).  Returns the reciprocal
+ * condition number of the unflagged block (0 when none).  cov, when not
+ * NULL, receives the pseudo-inverse over the regular directions (NaN in
+ * flagged rows and columns).  NL_ENOMEM leaves -1. */
+#define NL_FIT_NULL_SHARE 0.1
+double nl_fit_info_check(const double *info, size_t k, unsigned *flags, double *cov);
+
+/* Flag the free parameters whose values sit at an end of their family's
+ * fit range (NL_FIT_PARAM_AT_BOUND in flags, nfree entries). */
+void nl_fit_params_at_bound(const nl_fit_params *p, unsigned *flags);
+
+/* A likelihood fit's refusals before it starts (analysis/fit_mlcheck.c):
+ * too few or too many data, work over the budget, non-finite data, no
+ * variation, coincident points without a nugget.  NL_OK or a status with
+ * its message. */
+int nl_fit_ml_check(const nl_fit_params *p, const double *x, const double *z, size_t n, const nl_fit_options *o);
 
 /* Check the family and the fixes, set names, fixed values, NaN elsewhere. */
 int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p);
@@ -86,5 +114,9 @@ int nl_fit_params_model(const nl_fit_params *p, nl_model **m);
  * or NL_EINVAL when the spec does not fit (res->param then NULL). */
 int nl_fit_params_result(const nl_fit_params *p, const double *cov, const double *lower, const double *upper,
                          nl_fit_result *res);
+
+/* Apply the free parameters' flags (nfree entries) to res: se, lower and
+ * upper NaN where flagged; res->flags their OR. */
+void nl_fit_result_flags(const nl_fit_params *p, const unsigned *flags, nl_fit_result *res);
 
 #endif

@@ -9,6 +9,7 @@
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_linalg.h>
 #include <gsl/gsl_multimin.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,18 +20,26 @@
 
 typedef nl_fit_mldata ml_data;
 
+/* C_ij = R(x_i - x_j), the nugget on the diagonal only: two data at one
+ * place share the continuous part, not the white noise (the model's R(0)
+ * has the nugget, so it is taken off there). */
 static int fill_cov(ml_data *d)
 {
     nl_model *m;
     int st = nl_fit_params_model(d->p, &m), dim = d->p->dim;
+    double nugget;
     if (st)
         return st;
+    nugget = nl_model_nugget(m);
     for (size_t i = 0; i < d->n; i++)
         for (size_t j = 0; j <= i; j++) {
-            double lag[3] = {0, 0, 0};
+            double lag[3] = {0, 0, 0}, c;
             for (int a = 0; a < dim; a++)
                 lag[a] = d->x[i * (size_t)dim + (size_t)a] - d->x[j * (size_t)dim + (size_t)a];
-            gsl_matrix_set(d->C, i, j, nl_model_acf(m, dim, lag));
+            c = nl_model_acf(m, dim, lag);
+            if (i != j && lag[0] == 0 && lag[1] == 0 && lag[2] == 0)
+                c -= nugget;
+            gsl_matrix_set(d->C, i, j, c);
         }
     nl_model_free(m);
     return NL_OK;
@@ -79,26 +88,41 @@ static double at_u(ml_data *d, const double *u0, size_t i, double di, size_t j, 
     return objective(&v.vector, d);
 }
 
+/* A stencil value, NaN where the covariance is not positive definite (the
+ * curvature there is not the likelihood's). */
+static double stencil(ml_data *d, const double *u0, size_t i, double di, size_t j, double dj)
+{
+    double f = at_u(d, u0, i, di, j, dj);
+    return f < ML_BAD ? f : NAN;
+}
+
 /* The covariance of u: the inverse of the Hessian of -l = (-2 l) / 2 by
- * central differences; NaN where it is not positive definite. */
-static void ml_covariance(ml_data *d, const double *u0, double f0, double *cov)
+ * central differences, where it is regular (nl_fit_info_check: flags the
+ * free parameters in directions it is not, their entries NaN, the others
+ * from the pseudo-inverse).  Returns the reciprocal condition number. */
+static double ml_covariance(ml_data *d, const double *u0, double f0, double *cov, unsigned *flags)
 {
     size_t k = d->p->nfree;
-    double h = ML_HSTEP, hh[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS];
+    double h = ML_HSTEP, hh[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS], info[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS];
+    double rcond;
+    int any = 0;
     gsl_matrix_view H = gsl_matrix_view_array(hh, k, k);
     for (size_t i = 0; i < k; i++)
         for (size_t j = 0; j <= i; j++) {
-            double v = i == j ? (at_u(d, u0, i, h, j, 0) - 2 * f0 + at_u(d, u0, i, -h, j, 0)) / (h * h)
-                              : (at_u(d, u0, i, h, j, h) - at_u(d, u0, i, h, j, -h) - at_u(d, u0, i, -h, j, h) +
-                                 at_u(d, u0, i, -h, j, -h)) / (4 * h * h);
+            double v = i == j ? (stencil(d, u0, i, h, j, 0) - 2 * f0 + stencil(d, u0, i, -h, j, 0)) / (h * h)
+                              : (stencil(d, u0, i, h, j, h) - stencil(d, u0, i, h, j, -h) -
+                                 stencil(d, u0, i, -h, j, h) + stencil(d, u0, i, -h, j, -h)) / (4 * h * h);
             hh[i * k + j] = hh[j * k + i] = v / 2;
         }
-    if (gsl_linalg_cholesky_decomp1(&H.matrix) || gsl_linalg_cholesky_invert(&H.matrix))
-        for (size_t i = 0; i < k * k; i++)
-            cov[i] = NAN;
-    else
+    memcpy(info, hh, k * k * sizeof *info);
+    rcond = nl_fit_info_check(info, k, flags, cov);
+    for (size_t i = 0; i < k; i++)
+        any |= flags[i] != 0;
+    /* all regular: the Cholesky inverse of the whole */
+    if (!any && !gsl_linalg_cholesky_decomp1(&H.matrix) && !gsl_linalg_cholesky_invert(&H.matrix))
         memcpy(cov, hh, k * k * sizeof *cov);
     nl_fit_ml_minus2l_u(d, u0); /* restore the parameters (and beta) of u0 */
+    return rcond;
 }
 
 /* Nelder-Mead from the current parameters, restarted once from its optimum
@@ -140,36 +164,11 @@ done:
     return st;
 }
 
-static int check_data(const double *x, const double *z, size_t n, int dim, size_t nfree)
-{
-    int distinct = 0;
-    if (n < nfree + 2)
-        return NL_ERROR(NL_EINVAL, "fit: %zu data; expected at least %zu (the %zu free parameters and the mean + 1)",
-                        n, nfree + 2, nfree);
-    if (n > NL_FIT_ML_MAX)
-        return NL_ERROR(NL_ETOOBIG, "fit: %zu data for a likelihood fit; expected at most %d (use the variogram "
-                        "fit)", n, NL_FIT_ML_MAX);
-    for (size_t i = 0; i < n; i++) {
-        if (!isfinite(z[i]))
-            return NL_ERROR(NL_EINVAL, "fit: value %zu is not finite (%g)", i + 1, z[i]);
-        for (int a = 0; a < dim; a++) {
-            double c = x[i * (size_t)dim + (size_t)a];
-            if (!isfinite(c))
-                return NL_ERROR(NL_EINVAL, "fit: coordinate %d of point %zu is not finite (%g)", a + 1, i + 1, c);
-            if (c != x[a])
-                distinct = 1;
-        }
-    }
-    if (!distinct)
-        return NL_ERROR(NL_EINVAL, "fit: all %zu points are identical; expected distinct locations", n);
-    return NL_OK;
-}
-
 /* Automatic start: the sample variance as the sill, the scale a tenth of the bounding box's diagonal (a fifth for the
  * spherical model's range), shape parameters 1. */
 static void ml_start(nl_fit_params *p, const double *x, const double *z, size_t n, const double *start)
 {
-    double mean = 0, var = 0, diag = 0;
+    double mean = 0, var = 0, diag = 0, safe = 0;
     for (size_t i = 0; i < n; i++)
         mean += z[i] / (double)n;
     for (size_t i = 0; i < n; i++)
@@ -179,9 +178,11 @@ static void ml_start(nl_fit_params *p, const double *x, const double *z, size_t 
         for (size_t i = 0; i < n; i++)
             lo = fmin(lo, x[i * (size_t)p->dim + (size_t)a]), hi = fmax(hi, x[i * (size_t)p->dim + (size_t)a]);
         diag += (hi - lo) * (hi - lo);
+        safe = hypot(safe, hi - lo);
     }
     var = var > 0 ? var : 1;
-    diag = sqrt(diag);
+    /* the sum of squares where it neither overflows nor underflows */
+    diag = isfinite(diag) && diag >= DBL_MIN ? sqrt(diag) : safe;
     nl_fit_params_start(p, var, diag / 10, start);
 }
 
@@ -190,30 +191,36 @@ static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_
     nl_fit_params p;
     ml_data d;
     double u[NL_FIT_MAX_PARAMS], cov[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS];
-    double lower[NL_FIT_MAX_PARAMS], upper[NL_FIT_MAX_PARAMS];
+    double lower[NL_FIT_MAX_PARAMS], upper[NL_FIT_MAX_PARAMS], rcond = 0;
+    unsigned flags[NL_FIT_MAX_PARAMS] = {0};
     size_t nn[2] = {n, n};
     int st;
     memset(res, 0, sizeof *res);
     for (size_t k = 0; k < NL_FIT_MAX_PARAMS; k++)
         lower[k] = upper[k] = NAN;
-    if ((st = nl_fit_params_init(o, dim, &p)) || (st = check_data(x, z, n, dim, p.nfree)) ||
-        (st = nl_size_check(2, nn, sizeof(double), 1, NULL)))
+    if ((st = nl_fit_params_init(o, dim, &p)))
         return st;
     if (p.nfree == 0)
         return NL_ERROR(NL_EINVAL, "fix: every parameter of %s is fixed; expected at least one free", p.family);
+    if ((st = nl_fit_ml_check(&p, x, z, n, o)) || (st = nl_size_check(2, nn, sizeof(double), 1, NULL)))
+        return st;
     ml_start(&p, x, z, n, o->start);
     d = (ml_data){&p, x, z, n, o->likelihood, gsl_matrix_alloc(n, n), gsl_vector_alloc(n), gsl_vector_alloc(n), 0};
     if (!d.C || !d.y || !d.a)
         st = NL_ERROR(NL_ENOMEM, "out of memory for the %zu x %zu covariance matrix", n, n);
     if (!st && !(st = ml_minimise(&d, res, u))) {
-        ml_covariance(&d, u, res->objective, cov);
-        if (o->intervals && (st = nl_fit_profile(&d, u, res->objective, cov, o->intervals, lower, upper)))
+        nl_fit_params_at_bound(&p, flags);
+        rcond = ml_covariance(&d, u, res->objective, cov, flags);
+        if (o->intervals && (st = nl_fit_profile(&d, u, res->objective, cov, o->intervals, lower, upper, flags)))
             goto done;
         res->mean = d.beta;
         res->nobs = n;
         /* ML: the free covariance parameters and the mean */
         res->aic = res->objective + 2.0 * (double)(p.nfree + 1);
-        st = nl_fit_params_result(&p, cov, lower, upper, res);
+        if (!(st = nl_fit_params_result(&p, cov, lower, upper, res))) {
+            nl_fit_result_flags(&p, flags, res);
+            res->rcond = rcond;
+        }
     }
 done:
     gsl_vector_free(d.a);

@@ -86,6 +86,12 @@ int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p)
     return NL_OK;
 }
 
+/* A value held to its family's fit range (none: as is). */
+static double clamp_fit(const nl_family_param *fp, double v)
+{
+    return fp->fit_hi > 0 ? fmin(fmax(v, fp->fit_lo), fp->fit_hi) : v;
+}
+
 void nl_fit_params_start(nl_fit_params *p, double sill, double scale, const double *start)
 {
     int nugget = nl_fit_params_find(p, "nugget") >= 0;
@@ -97,7 +103,25 @@ void nl_fit_params_start(nl_fit_params *p, double sill, double scale, const doub
         if (start && isfinite(start[k]) && start[k] > 0)
             v = start[k];
         if (!p->fixed[k])
-            p->value[k] = v;
+            p->value[k] = clamp_fit(fp, v);
+    }
+}
+
+/* At a bound: within NL_FIT_BOUND_REL of an end (a logistic parameter
+ * approaches its upper end without reaching it); a nugget at its lower
+ * end 0 when below NL_FIT_RCOND_MIN var (it changes C's diagonal by less
+ * than the relative precision the information matrix keeps). */
+#define NL_FIT_BOUND_REL 1e-4
+
+void nl_fit_params_at_bound(const nl_fit_params *p, unsigned *flags)
+{
+    for (size_t k = 0; k < p->nfree; k++) {
+        const nl_family_param *fp = p->param[p->free_idx[k]];
+        double v = p->value[p->free_idx[k]];
+        if (fp->fit_hi > 0 && (v <= fp->fit_lo * (1 + NL_FIT_BOUND_REL) || v >= fp->fit_hi * (1 - NL_FIT_BOUND_REL)))
+            flags[k] |= NL_FIT_PARAM_AT_BOUND;
+        if (fp->role == NL_ROLE_NUGGET && v <= NL_FIT_RCOND_MIN * p->value[0])
+            flags[k] |= NL_FIT_PARAM_AT_BOUND;
     }
 }
 
@@ -119,13 +143,14 @@ void nl_fit_params_to_u(const nl_fit_params *p, double *u)
 }
 
 /* Transformed coordinates are clamped so that values stay normal doubles
- * (a nugget heading to 0 stops at e^-700 var-units instead of underflowing). */
+ * (a nugget heading to 0 stops at e^-700 var-units instead of underflowing),
+ * and shape parameters to their family's fit range. */
 void nl_fit_params_from_u(nl_fit_params *p, const double *u)
 {
     for (size_t k = 0; k < p->nfree; k++) {
         size_t i = p->free_idx[k];
         double x = fmax(-700, fmin(700, u[k]));
-        p->value[i] = p->tr[i] == NL_FIT_LOG ? exp(x) : p->hi[i] / (1 + exp(-x));
+        p->value[i] = clamp_fit(p->param[i], p->tr[i] == NL_FIT_LOG ? exp(x) : p->hi[i] / (1 + exp(-x)));
     }
 }
 
@@ -192,6 +217,20 @@ int nl_fit_params_result(const nl_fit_params *p, const double *cov, const double
     if (st)
         nl_fit_result_free(res);
     return st;
+}
+
+void nl_fit_result_flags(const nl_fit_params *p, const unsigned *flags, nl_fit_result *res)
+{
+    res->flags = 0;
+    for (size_t k = 0; k < p->nfree; k++) {
+        nl_fit_param *q = &res->param[p->free_idx[k]];
+        q->flags = flags[k];
+        res->flags |= flags[k];
+        if (flags[k])
+            q->se = NAN;
+        if (flags[k] & NL_FIT_PARAM_SINGULAR)
+            q->lower = q->upper = NAN;
+    }
 }
 
 void nl_fit_result_free(nl_fit_result *res)

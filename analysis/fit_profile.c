@@ -114,15 +114,16 @@ static double find_end(profile *pr, gsl_root_fsolver *rs, const double *u_hat, d
 }
 
 /* A transformed value back to the parameter's (infinities to the domain's
- * edges). */
+ * edges, or to the ends of its fit range). */
 static double value_of(const nl_fit_params *p, size_t k, double u)
 {
     size_t i = p->free_idx[k];
-    return p->tr[i] == NL_FIT_LOG ? exp(u) : p->hi[i] / (1 + exp(-u));
+    double v = p->tr[i] == NL_FIT_LOG ? exp(u) : p->hi[i] / (1 + exp(-u));
+    return p->param[i]->fit_hi > 0 ? fmin(fmax(v, p->param[i]->fit_lo), p->param[i]->fit_hi) : v;
 }
 
 int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const double *cov, int which,
-                   double *lower, double *upper)
+                   double *lower, double *upper, unsigned *flags)
 {
     nl_fit_params *p = d->p;
     size_t k = p->nfree;
@@ -139,12 +140,19 @@ int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const do
     }
     for (size_t j = 0; j < k; j++) {
         size_t q = p->free_idx[j];
-        double se = sqrt(cov[j * k + j]);
-        if (which == NL_FIT_INTERVALS_SCALE && strcmp(p->name[q], "scale") != 0)
+        double se = sqrt(cov[j * k + j]), lo, hi;
+        if ((flags[j] & NL_FIT_PARAM_SINGULAR) || (which == NL_FIT_INTERVALS_SCALE && strcmp(p->name[q], "scale") != 0))
             continue;
         pr.j = j;
-        lower[q] = value_of(p, j, find_end(&pr, rs, u_hat, se, -1));
-        upper[q] = value_of(p, j, find_end(&pr, rs, u_hat, se, +1));
+        lo = find_end(&pr, rs, u_hat, se, -1);
+        hi = find_end(&pr, rs, u_hat, se, +1);
+        /* narrower than the solver resolves: no curvature the data give */
+        if (hi - lo < 2 * PR_TOL) {
+            flags[j] |= NL_FIT_PARAM_SINGULAR;
+            continue;
+        }
+        lower[q] = value_of(p, j, lo);
+        upper[q] = value_of(p, j, hi);
     }
 done:
     if (pr.nm)

@@ -17,6 +17,8 @@ typedef struct {
     size_t m;               /* used bins */
     nl_fit_weights weights; /* the weighting */
     double *w;              /* m weights held fixed (reweighted, distance) */
+    unsigned flags[NL_FIT_MAX_PARAMS]; /* the free parameters' NL_FIT_PARAM_* of the last solve */
+    double rcond;           /* J^T J's reciprocal condition number, last solve */
 } wls_data;
 
 /* Outer steps of the reweighted fit at most, and its stop: every free
@@ -91,6 +93,27 @@ static size_t used_bins(const double *h, const double *g, const double *n, size_
     return m;
 }
 
+/* s^2 (J^T J)^-1 where J^T J is regular (nl_fit_info_check), else the
+ * flagged parameters NaN and the others from the pseudo-inverse; the
+ * parameters at a bound of their fit range are flagged too. */
+static void wls_covariance(wls_data *d, const gsl_matrix *J, double ss, gsl_matrix *C, double *cov)
+{
+    size_t k = d->p->nfree;
+    double s2 = d->m > k ? ss / (double)(d->m - k) : NAN, info[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS];
+    int any = 0;
+    gsl_matrix_view I = gsl_matrix_view_array(info, k, k);
+    memset(d->flags, 0, sizeof d->flags);
+    nl_fit_params_at_bound(d->p, d->flags);
+    gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, J, J, 0.0, &I.matrix);
+    d->rcond = nl_fit_info_check(info, k, d->flags, cov);
+    for (size_t i = 0; i < k; i++)
+        any |= d->flags[i] != 0;
+    if (!any && gsl_multifit_nlinear_covar(J, 0.0, C) == GSL_SUCCESS)
+        memcpy(cov, C->data, k * k * sizeof *cov);
+    for (size_t i = 0; i < k * k; i++)
+        cov[i] *= s2;
+}
+
 static int solve(wls_data *d, nl_fit_result *res, double *cov)
 {
     const gsl_multifit_nlinear_type *T = gsl_multifit_nlinear_trust;
@@ -122,14 +145,7 @@ static int solve(wls_data *d, nl_fit_result *res, double *cov)
             st = NL_ERROR(NL_EFAIL, "fit: no finite objective near the data (model %s)", d->p->family);
             goto done;
         }
-        if (gsl_multifit_nlinear_covar(gsl_multifit_nlinear_jac(w), 0.0, C) == GSL_SUCCESS) {
-            double s2 = d->m > d->p->nfree ? ss / (double)(d->m - d->p->nfree) : NAN;
-            for (size_t i = 0; i < d->p->nfree * d->p->nfree; i++)
-                cov[i] = s2 * C->data[i];
-        } else {
-            for (size_t i = 0; i < d->p->nfree * d->p->nfree; i++)
-                cov[i] = NAN;
-        }
+        wls_covariance(d, gsl_multifit_nlinear_jac(w), ss, C, cov);
     }
 done:
     gsl_matrix_free(C);
@@ -201,19 +217,34 @@ static int fit_variogram(const double *distance, const double *gamma, const doub
         return NL_ERROR(NL_EINVAL, "weights: expected cressie, pairs, reweighted or distance, got %d", (int)o->weights);
     if (!(buf = malloc((4 * nbins + 1) * sizeof *buf)))
         return NL_ERROR(NL_ENOMEM, "out of memory");
-    d = (wls_data){&p, buf, buf + nbins, buf + 2 * nbins, used_bins(distance, gamma, pairs, nbins, buf),
-                   o->weights, buf + 3 * nbins};
+    d = (wls_data){.p = &p, .h = buf, .g = buf + nbins, .n = buf + 2 * nbins,
+                   .m = used_bins(distance, gamma, pairs, nbins, buf), .weights = o->weights, .w = buf + 3 * nbins};
+    for (size_t j = 0; j < nbins && d.m < p.nfree + 1; j++)
+        if (pairs[j] > 0 && gamma[j] == INFINITY) {
+            free(buf);
+            return NL_ERROR(NL_EINVAL, "fit: the variogram overflows (infinite at distance %g): expected values "
+                            "below about 1e154 (rescale them)", distance[j]);
+        }
     if (d.m < p.nfree + 1) {
         free(buf);
         return NL_ERROR(NL_EINVAL, "fit: %zu variogram bins with pairs; expected at least %zu (the %zu free "
                         "parameters + 1)", d.m, p.nfree + 1, p.nfree);
     }
+    for (size_t j = 0; j < d.m && d.g[j] == 0; j++)
+        if (j == d.m - 1) {
+            free(buf);
+            return NL_ERROR(NL_EINVAL, "fit: no variation: the variogram is 0 in all %zu bins (the values are equal, "
+                            "or differ by less than about 1e-154, whose squares underflow); nothing to fit", d.m);
+        }
     wls_start(&p, &d, o->start);
     st = solve_weighted(&d, res, cov);
     if (!st) {
         res->nobs = d.m;
         res->aic = (double)d.m * log(res->objective / (double)d.m) + 2.0 * (double)p.nfree;
-        st = nl_fit_params_result(&p, cov, NULL, NULL, res);
+        if (!(st = nl_fit_params_result(&p, cov, NULL, NULL, res))) {
+            nl_fit_result_flags(&p, d.flags, res);
+            res->rcond = d.rcond;
+        }
     }
     free(buf);
     return st;

@@ -24,27 +24,49 @@ static const char help[] =
     "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2 of the fitted model "
     "(cressie: Cressie's criterion; reweighted: the weights held at the last fit and refitted to a "
     "fixed point, gstat's fit.method 2), N (pairs, fit.method 1) or N/h^2 (distance, fit.method 7).  "
-    "ml, reml: the Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step (a "
-    "few thousand data), started from the wls fit.  Prints the fitted model as a spec for --acf, "
+    "ml, reml: the Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step (refused "
+    "above a work budget: below), started from the wls fit.  Prints the fitted model as a spec for --acf, "
     "standard errors, the objective and AIC (compare models fitted by one method to one data set: "
     "lower is better).  ml and reml also print each free parameter's 95% profile-likelihood interval "
     "(the values within 3.841 of the minimum -2 log likelihood, the others re-optimised; \"unbounded\" "
     "when the data set no upper limit).  --json keys: model, parameters, standard_errors, objective, "
-    "aic, method, n, and for ml and reml mean and intervals ([lower, upper] per free parameter, upper "
-    "null when unbounded).";
+    "aic, method, n, converged, iterations, status (per parameter: ok, fixed, at bound, or not "
+    "identifiable (singular information)), flags (singular-information, at-bound, not-converged), rcond "
+    "(the information matrix's reciprocal condition number), and for ml and reml mean and intervals "
+    "([lower, upper] per free parameter, upper null when unbounded).";
 
 static const char help_errors[] =
     "Standard errors: ml and reml's describe the spread of the estimates for\n"
     "regular models (markov with a nugget); the spherical range's understate it by\n"
     "about 2x (its likelihood is not smooth in the range): quote the profile\n"
     "intervals, which need no curvature (experiments/fit_coverage.c measures both).\n"
-    "wls's treat correlated variogram bins as independent and understate the spread.\n";
+    "wls's treat correlated variogram bins as independent and understate the spread.\n"
+    "A parameter the data cannot resolve (the information matrix singular in its\n"
+    "direction: reciprocal condition number below %.2g) is \"not identifiable\",\n"
+    "one that ends at an end of its fit range (above) or a nugget at 0 \"at bound\":\n"
+    "neither has a standard error (null in JSON).  Two data at one place need\n"
+    "--nugget; data without variation are refused.  ml and reml refuse more than\n"
+    "%.2g operations of work (n^3/3 per likelihood evaluation: about 1000 data with\n"
+    "a nugget; the message gives the most): fit the variogram (wls) or a subsample.\n";
+
+/* "; fit ranges: FAMILY's NAME LO to HI, ..." from the registry. */
+static void fit_ranges(char *buf, size_t size)
+{
+    size_t len = 0;
+    for (size_t i = 0; i < nl_family_count(); i++) {
+        const nl_family *f = nl_family_get(i);
+        for (size_t k = 0; (f->flags & NL_FAMILY_FIT) && k < f->nparams && len < size; k++)
+            if (f->params[k].fit_hi > 0)
+                len += (size_t)snprintf(buf + len, size - len, "%s%s's %s %g to %g", len ? ", " : "; fit ranges: ",
+                                        f->name, f->params[k].name, f->params[k].fit_lo, f->params[k].fit_hi);
+    }
+}
 
 /* The usage, then the families `fit` accepts and their shape parameters,
  * from the registry, then the rest. */
 static void print_help(void)
 {
-    char families[512], shapes[256] = "", text[4096];
+    char families[512], shapes[512] = "", text[4096];
     size_t len = 0;
     nl_family_names(NL_FAMILY_FIT, 0, ", ", families, sizeof families);
     for (size_t i = 0; i < nl_family_count(); i++) {
@@ -59,12 +81,13 @@ static void print_help(void)
     }
     if (len)
         shapes[len - 1] = 0;  /* the last comma */
+    fit_ranges(shapes + strlen(shapes), sizeof shapes - strlen(shapes));
     snprintf(text, sizeof text, "Fits a model family (%s) to data: its var, scale (the spherical model's range), "
              "the nugget with --nugget, and its shape parameters (%s), each unless fixed by --fix.  wls (default): "
              "weighted least squares on the empirical variogram (as %s", families, shapes, help);
     fputs(help_usage, stdout);
     cli_fill(stdout, text, 80);
-    fputs(help_errors, stdout);
+    printf(help_errors, NL_FIT_RCOND_MIN, NL_FIT_ML_WORK_MAX);
 }
 
 /* The command's options. */
@@ -163,7 +186,9 @@ static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
         nl_fit_result_free(r);
         ml.start = start;
         ml.intervals = NL_FIT_INTERVALS_ALL;
+        cli_phase("fit", a->method == 2 ? "restricted maximum likelihood" : "maximum likelihood");
         st = nl_fit_ml(p->pts, p->val, p->n, p->dim, &ml, r);
+        cli_progress_done();
         free(start);
     }
     return st;
@@ -177,6 +202,49 @@ static const char *end_text(double v, char *buf, size_t size)
     else
         snprintf(buf, size, "unbounded");
     return buf;
+}
+
+/* A parameter's status word for JSON and the notes below the table. */
+static const char *status_word(const nl_fit_param *q)
+{
+    if (q->fixed)
+        return "fixed";
+    if (q->flags & NL_FIT_PARAM_AT_BOUND)
+        return "at bound";
+    return q->flags & NL_FIT_PARAM_SINGULAR ? "not identifiable (singular information)" : "ok";
+}
+
+/* The fit range of a shape parameter, from the registry (0, 0: none). */
+static void fit_range(const char *family, const char *name, double *lo, double *hi)
+{
+    const nl_family *f = nl_family_find(family, strlen(family));
+    int k = f ? nl_family_param_index(f, name) : -1;
+    *lo = k >= 0 ? f->params[k].fit_lo : 0;
+    *hi = k >= 0 ? f->params[k].fit_hi : 0;
+}
+
+/* Notes on flagged parameters: which, and why there are no numbers. */
+static void print_status(const opts_t *a, const nl_fit_result *r)
+{
+    char names[128] = "";
+    for (size_t k = 0; k < r->np; k++) {
+        const nl_fit_param *q = &r->param[k];
+        double lo, hi;
+        if (q->flags & NL_FIT_PARAM_SINGULAR)
+            snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", *names ? ", " : "", q->name);
+        else if ((q->flags & NL_FIT_PARAM_AT_BOUND) && strcmp(q->name, "nugget") == 0)
+            printf("at bound    nugget = %.3g: at 0 (below %.2g var: no nugget in the data)\n", q->value,
+                   NL_FIT_RCOND_MIN);
+        else if (q->flags & NL_FIT_PARAM_AT_BOUND) {
+            fit_range(a->o.family, q->name, &lo, &hi);
+            printf("at bound    %s = %g: at an end of its fit range %g to %g (the data ask for a value beyond)\n",
+                   q->name, q->value, lo, hi);
+        }
+    }
+    if (*names)
+        printf("not identifiable  %s: the information matrix is singular in their direction (reciprocal condition "
+               "number %.2g, below %.2g%s): no standard error or interval\n", names, r->rcond, NL_FIT_RCOND_MIN,
+               r->rcond > 0 ? "" : "; 0: not positive definite, or the likelihood undefined a step away");
 }
 
 static void print_text(const opts_t *a, const nl_fit_result *r)
@@ -194,6 +262,10 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
         const nl_fit_param *q = &r->param[k];
         if (q->fixed)
             snprintf(se, sizeof se, "fixed");
+        else if (q->flags & NL_FIT_PARAM_AT_BOUND)
+            snprintf(se, sizeof se, "n/a (at bound)");
+        else if (q->flags & NL_FIT_PARAM_SINGULAR)
+            snprintf(se, sizeof se, "n/a (not identifiable)");
         else if (isfinite(q->se))
             snprintf(se, sizeof se, "%.4g", q->se);
         else
@@ -204,6 +276,7 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
             printf("%-11s %-13.6g %-16s %s to %s\n", q->name, q->value, se, end_text(q->lower, lo, sizeof lo),
                    end_text(q->upper, hi, sizeof hi));
     }
+    print_status(a, r);
     if (a->method)
         printf("mean        %.6g\n", r->mean);
     printf("objective   %.8g (%s)\n", r->objective, a->method ? "-2 log likelihood" : "weighted sum of squares");
@@ -213,15 +286,25 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
 static void print_json(const opts_t *a, const nl_fit_result *r)
 {
     static const char *const mname[] = {"wls", "ml", "reml"};
-    json_t *par = json_object(), *se = json_object(), *j;
+    json_t *par = json_object(), *se = json_object(), *status = json_object(), *flags = json_array(), *j;
     for (size_t k = 0; k < r->np; k++) {
         const nl_fit_param *q = &r->param[k];
         json_object_set_new(par, q->name, json_real(q->value));
         json_object_set_new(se, q->name, isfinite(q->se) ? json_real(q->se) : json_null());
+        json_object_set_new(status, q->name, json_string(status_word(q)));
     }
+    if (r->flags & NL_FIT_PARAM_SINGULAR)
+        json_array_append_new(flags, json_string("singular-information"));
+    if (r->flags & NL_FIT_PARAM_AT_BOUND)
+        json_array_append_new(flags, json_string("at-bound"));
+    if (!r->converged)
+        json_array_append_new(flags, json_string("not-converged"));
     j = json_pack("{s:s,s:o,s:o,s:f,s:f,s:s,s:I,s:b,s:i}", "model", r->spec, "parameters", par, "standard_errors", se,
                   "objective", r->objective, "aic", r->aic, "method", mname[a->method], "n", (json_int_t)r->nobs,
                   "converged", r->converged, "iterations", r->iterations);
+    json_object_set_new(j, "status", status);
+    json_object_set_new(j, "flags", flags);
+    json_object_set_new(j, "rcond", json_real(r->rcond));
     if (a->method) {
         json_t *iv = json_object();
         for (size_t k = 0; k < r->np; k++) {

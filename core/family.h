@@ -66,6 +66,8 @@ typedef struct {
                                 scale when start_per_scale is set: a frequency); of the
                                 scale, the factor on the automatic start (analysis/fit.h) */
     int start_per_scale;
+    double fit_lo, fit_hi;   /* fit: the range a fitted shape parameter is held to (a fit that
+                                ends at either end is flagged "at bound"); both 0: none */
 } nl_family_param;
 
 /* Family flags. */

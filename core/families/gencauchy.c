@@ -9,8 +9,11 @@ enum { ALPHA, BETA };
 
 static const nl_family_param params[] = {
     {.name = "alpha", .def = NAN, .placeholder = "A", .example = "1", .range = NL_RANGE_UPTO, .hi = 2,
-     .why = "above 2 the ACF is not positive definite", .start = 1},
-    {.name = "beta", .def = NAN, .placeholder = "B", .example = "1.5", .range = NL_RANGE_POSITIVE, .start = 1},
+     .why = "above 2 the ACF is not positive definite", .start = 1, .fit_lo = 0.05, .fit_hi = 2},
+    /* fits: beta from 0.05 (R ~ |t|^-0.05, no decay a data set sees) to 50
+     * (a decay the scale absorbs) */
+    {.name = "beta", .def = NAN, .placeholder = "B", .example = "1.5", .range = NL_RANGE_POSITIVE, .start = 1,
+     .fit_lo = 0.05, .fit_hi = 50},
     NL_PARAM_SCALE, NL_PARAM_VAR, NL_PARAM_NUGGET,
 };
 

@@ -7,7 +7,7 @@ enum { ALPHA };
 static const nl_family_param params[] = {
     /* exp(-|t|^alpha) is positive definite exactly for 0 < alpha <= 2 */
     {.name = "alpha", .def = NAN, .placeholder = "A", .example = "1.4", .range = NL_RANGE_UPTO, .hi = 2,
-     .why = "above 2 the ACF is not positive definite", .start = 1},
+     .why = "above 2 the ACF is not positive definite", .start = 1, .fit_lo = 0.05, .fit_hi = 2},
     NL_PARAM_SCALE, NL_PARAM_VAR, NL_PARAM_NUGGET,
 };
 

@@ -8,7 +8,12 @@
 enum { NU };
 
 static const nl_family_param params[] = {
-    {.name = "nu", .def = NAN, .placeholder = "V", .example = "1.5", .range = NL_RANGE_POSITIVE, .start = 1},
+    /* fits hold nu to GSTools' bounds for Matern (0.2 to 30): below, the
+     * field is rougher than data sets resolve; above, it is the gauss model
+     * within 1% (the large-nu form below: R off by 0.23 / nu), and each
+     * step of a fit would evaluate K_nu at orders that cost time ~ nu */
+    {.name = "nu", .def = NAN, .placeholder = "V", .example = "1.5", .range = NL_RANGE_POSITIVE, .start = 1,
+     .fit_lo = 0.2, .fit_hi = 30},
     NL_PARAM_SCALE, NL_PARAM_VAR, NL_PARAM_NUGGET,
 };
 

@@ -452,6 +452,15 @@ def variogram(points=None, values=None, field=None, spacing=1.0, width=None, cut
 _WEIGHTS = ("cressie", "pairs", "reweighted", "distance")
 
 
+def _fit_status(q):
+    """A fitted parameter's status word (as the CLI's JSON)."""
+    if q.fixed:
+        return "fixed"
+    if q.flags & 2:
+        return "at bound"
+    return "not identifiable (singular information)" if q.flags & 1 else "ok"
+
+
 def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugget=False, fix=None, method="wls",
         weights="cressie", width=None, cutoff=None):
     """Fit a model family to data, as ``noiselab fit``: weighted least
@@ -462,7 +471,10 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
     ...} parameters held.  Returns a dict: spec
     (ready for acf=), parameters, standard_errors, intervals (ml/reml:
     {name: (lower, upper)}), objective, aic, mean (ml/reml), n, converged,
-    iterations."""
+    iterations, status ({name: "ok", "fixed", "at bound" or "not
+    identifiable (singular information)"}, as the CLI's JSON: the last two
+    have a NaN standard error) and rcond (the information matrix's
+    reciprocal condition number)."""
     if field is not None:
         if points is not None:
             raise Error("fit: expected points and values, or field, not both")
@@ -513,7 +525,8 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
                    iterations=r.iterations, objective=r.objective, aic=r.aic,
                    parameters={nm: x.value for nm, x in zip(names, q)},
                    standard_errors={nm: x.se for nm, x in zip(names, q)},
-                   fixed={nm: bool(x.fixed) for nm, x in zip(names, q)})
+                   fixed={nm: bool(x.fixed) for nm, x in zip(names, q)},
+                   status={nm: _fit_status(x) for nm, x in zip(names, q)}, rcond=r.rcond)
         if method != "wls":
             res["mean"] = r.mean
             res["intervals"] = {nm: (x.lower, x.upper) for nm, x in zip(names, q)

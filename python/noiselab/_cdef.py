@@ -93,6 +93,7 @@ typedef struct {
     const char *why;
     double start;
     int start_per_scale;
+    double fit_lo, fit_hi;
 } nl_family_param;
 typedef struct nl_family {
     const char *name;
@@ -559,6 +560,7 @@ typedef struct {
     int likelihood;
     const double *start;
     int intervals;
+    double max_work;
 } nl_fit_options;
 typedef struct {
     char name[16];
@@ -566,6 +568,7 @@ typedef struct {
     double se;
     double lower, upper;
     int fixed;
+    unsigned flags;
 } nl_fit_param;
 typedef struct {
     char spec[512];
@@ -578,11 +581,14 @@ typedef struct {
     size_t nobs;
     int iterations;
     int converged;
+    double rcond;
+    unsigned flags;
 } nl_fit_result;
 void nl_fit_result_free(nl_fit_result *res);
 int nl_fit_check_options(const nl_fit_options *o, int dim);
 int nl_fit_variogram(const double *distance, const double *gamma, const double *pairs, size_t nbins, int dim,
                      const nl_fit_options *o, nl_fit_result *res);
+double nl_fit_ml_work(size_t n, int dim, const nl_fit_options *o);
 int nl_fit_ml(const double *coords, const double *values, size_t n, int dim, const nl_fit_options *o,
               nl_fit_result *res);
 """

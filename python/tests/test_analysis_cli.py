@@ -171,3 +171,23 @@ def test_fit_ml_points(cli, tmp_path):
             close([r["mean"]], [j["mean"]])
             for k, (lo, hi) in j["intervals"].items():
                 close([r["intervals"][k][0]], [lo])
+
+
+def test_fit_status_as_cli(cli, tmp_path):
+    """A matern fit whose nu runs to an end of its fit range (0.2 to 30) says
+    so, as the CLI's JSON does, with no standard error; two data at one
+    place with different values are refused without a nugget."""
+    rng = np.random.default_rng(3)
+    pts = rng.random((40, 2))
+    val = rng.random(40)
+    tsv = tmp_path / "pts.tsv"
+    tsv.write_text("x\ty\tvalue\n" + "".join("%r\t%r\t%r\n" % (x, y, v) for (x, y), v in zip(pts, val)))
+    j = js(cli, "fit", str(tsv), "--model", "matern")
+    r = noiselab.fit(pts, val, model="matern")
+    assert r["status"] == j["status"]
+    assert r["status"]["nu"] == "at bound" and r["parameters"]["nu"] in (0.2, 30)
+    assert np.isnan(r["standard_errors"]["nu"]) and j["standard_errors"]["nu"] is None
+    close([r["rcond"]], [j["rcond"]])
+    pts[1] = pts[0]
+    with pytest.raises(noiselab.Error, match="nugget"):
+        noiselab.fit(pts, val, model="markov", method="ml")
