@@ -74,21 +74,28 @@ void cli_h5_check_memory(const cli_synth_job *job, cli_synth_run_fn run)
     check_memory_on(job, 1);
 }
 
-/* The output's temporary, made by rank 0 and named to every process; the
- * folder is checked on every process first, so that rank 0 cannot fail
- * alone. */
+/* The output's temporary, made by rank 0 and named to every process.  The
+ * output must resolve to the same file on every process (a collective
+ * create of files that differ never returns), its folder writable on
+ * each, so that rank 0 cannot fail alone; then every process must see
+ * rank 0's temporary itself (node-local folders of one name do not). */
 static const char *begin_output(const char *out, int rank)
 {
     static char tmp[PATH_MAX];
     char dir[PATH_MAX];
     const char *slash = strrchr(out, '/');
+    int st;
     snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - out) + 1 : 1, slash ? out : ".");
+    if ((st = nl_mpi_same_file(MPI_COMM_WORLD, out, 1)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "-o: %s", nl_errmsg());
     check_all(access(dir, W_OK | X_OK) ? NL_ERROR(NL_EINVAL, "-o: cannot write \"%s\": its folder \"%s\" is not "
                                                    "writable or does not exist", out, dir) : NL_OK);
     memset(tmp, 0, sizeof tmp);
     if (rank == 0)
         snprintf(tmp, sizeof tmp, "%s", cli_out_begin(out));
     MPI_Bcast(tmp, PATH_MAX, MPI_CHAR, 0, MPI_COMM_WORLD);
+    if ((st = nl_mpi_same_file(MPI_COMM_WORLD, tmp, 0)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "-o: \"%s\": its temporary %s", out, nl_errmsg());
     return tmp;
 }
 
