@@ -31,8 +31,10 @@ static int read_meta(const char *path, nl_meta *meta)
 {
     int st = hooks.size > 1 ? nl_mpi_same_file(MPI_COMM_WORLD, path, 0) : NL_OK;
     if (st) {
+        char msg[512]; /* the message is rewritten from itself */
+        snprintf(msg, sizeof msg, "%s", nl_errmsg());
         memset(meta, 0, sizeof *meta);
-        return NL_ERROR(st, "--from: %s", nl_errmsg());
+        return NL_ERROR(st, "--from: %s", msg);
     }
     return nl_mpi_h5_read_meta(path, meta);
 }

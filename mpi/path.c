@@ -17,7 +17,8 @@
 
 /* What one process sees at a path. */
 typedef struct {
-    char real[PATH_MAX]; /* the resolved path ("" when it cannot be resolved) */
+    char given[PATH_MAX]; /* the path as this process was given it */
+    char real[PATH_MAX];  /* the resolved path ("" when it cannot be resolved) */
     int err;             /* errno of resolving it, 0 when resolved */
     uint64_t dev, ino;   /* the file's identity (create: its folder's) */
     int64_t size;        /* bytes (create: 0) */
@@ -31,6 +32,7 @@ static void resolve(const char *path, int create, ident *id)
     const char *slash = strrchr(path, '/'), *name = slash ? slash + 1 : path;
     struct stat st;
     memset(id, 0, sizeof *id);
+    snprintf(id->given, sizeof id->given, "%s", path);
     if (create)
         snprintf(dir, sizeof dir, "%.*s", slash ? (slash == path ? 1 : (int)(slash - path)) : 1, slash ? path : ".");
     if (!realpath(create ? dir : path, create ? rdir : id->real) || stat(create ? rdir : id->real, &st)) {
@@ -52,10 +54,11 @@ static void resolve(const char *path, int create, ident *id)
 }
 
 /* This process's verdict against process 0's view (z) and its node's first
- * process's (nz): NL_OK or NL_EINPUT with the message. */
-static int compare(const char *path, int create, const ident *me, const ident *z, const ident *nz, int rank)
+ * process's (nz): NL_OK or NL_EINPUT with the message, which names the path
+ * as process 0 has it (the processes may be given other spellings). */
+static int compare(int create, const ident *me, const ident *z, const ident *nz, int rank)
 {
-    const char *what = create ? "its folder" : "the file";
+    const char *path = z->given, *what = create ? "its folder" : "the file";
     if (me->err || z->err) {
         if (me->err && z->err)
             return NL_OK; /* the same failure everywhere: the caller's open tells */
@@ -104,7 +107,7 @@ int nl_mpi_same_file(MPI_Comm comm, const char *path, int create)
         MPI_Bcast(nz, sizeof *nz, MPI_BYTE, 0, node) != MPI_SUCCESS)
         st = NL_ERROR(NL_EFAIL, "MPI: comparing \"%s\" between processes failed", path);
     else
-        st = compare(path, create, me, z, nz, rank);
+        st = compare(create, me, z, nz, rank);
     if (node != MPI_COMM_NULL)
         MPI_Comm_free(&node);
     free(me);
