@@ -65,6 +65,37 @@ static void on_exit_code(int code)
     }
 }
 
+/* Under a launcher every process must run one command: a size or seed
+ * that differs makes slabs of other fields, or collective calls that do
+ * not match (a hang).  argv[1..] of each against process 0's. */
+static void check_same_command(int argc, char **argv)
+{
+    unsigned long long len = 0;
+    char *zero, *p;
+    int k = 1, st = NL_OK;
+    for (int i = 1; i < argc; i++)
+        len += strlen(argv[i]) + 1;
+    MPI_Bcast(&len, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
+    if (!(zero = calloc(len + 1, 1)))
+        cli_die(1, "out of memory comparing the command with process 0's");
+    for (int i = 1, off = 0; hooks.rank == 0 && i < argc; off += (int)strlen(argv[i++]) + 1)
+        memcpy(zero + off, argv[i], strlen(argv[i]) + 1);
+    MPI_Bcast(zero, (int)len, MPI_CHAR, 0, MPI_COMM_WORLD);
+    for (p = zero; k < argc && p < zero + len && !strcmp(p, argv[k]); p += strlen(p) + 1)
+        k++;
+    if (k < argc && p < zero + len)
+        st = NL_ERROR(NL_EINVAL, "the processes were given different commands: argument %d is \"%s\" on process 0 "
+                      "but \"%s\" on process %d; expected the same command on every process", k, p, argv[k],
+                      hooks.rank);
+    else if (k < argc || p < zero + len)
+        st = NL_ERROR(NL_EINVAL, "the processes were given different commands: %s arguments on process %d than on "
+                      "process 0; expected the same command on every process", k < argc ? "more" : "fewer",
+                      hooks.rank);
+    free(zero);
+    if ((st = nl_mpi_agree(MPI_COMM_WORLD, st)))
+        cli_die(2, "%s", nl_errmsg());
+}
+
 int main(int argc, char **argv)
 {
     int provided;
@@ -99,6 +130,8 @@ int main(int argc, char **argv)
             return 1;
     }
     cli_h5 = &hooks;
+    if (hooks.size > 1)
+        check_same_command(argc, argv);
     if (hooks.size > 1 && argc > 1 && strcmp(argv[1], "synth") && strcmp(argv[1], "acf") && strcmp(argv[1], "psd") &&
         strcmp(argv[1], "hist") && strcmp(argv[1], "--help") && strcmp(argv[1], "--version"))
         cli_die(2, "%s runs on one process; under mpirun with %d processes: synth, acf, psd, hist", argv[1],

@@ -86,6 +86,9 @@ if [ -n "$new" ]; then
     rm -rf $new
     rc=96
 fi
+# (the process folders' "../out.h5" is the fixture folder's)
+new=$(cd "$fix" && ls -A | grep -E '^(out|big)\.h5')
+[ -z "$new" ] || { echo "np2: left in the fixture folder: $(echo $new) (status $rc)" >&2; (cd "$fix" && rm -f $new); rc=96; }
 if [ -n "$sig" ]; then
     b=$(mktemp)
     printf '%s\n' "$before" >"$b"
