@@ -1,5 +1,6 @@
 /* noiselab-mpi: the command line with HDF5 files and MPI runs.  Under a
- * launcher every process runs the same command on its share of the field;
+ * launcher every process runs the same command (checked first) on its
+ * share of the field, with paths that name the same files (mpi/path.c);
  * only rank 0 prints (the others' standard output and error go to
  * /dev/null), and errors are agreed on first, so every process stops
  * together with rank 0 telling why. */
@@ -12,9 +13,9 @@
 #include "../core/nl_error.h"
 
 #include <fftw3-mpi.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <signal.h>
 #include <string.h>
 #include <sys/prctl.h>
 #include <unistd.h>
