@@ -74,21 +74,28 @@ void cli_h5_check_memory(const cli_synth_job *job, cli_synth_run_fn run)
     check_memory_on(job, 1);
 }
 
-/* The output's temporary, made by rank 0 and named to every process; the
- * folder is checked on every process first, so that rank 0 cannot fail
- * alone. */
+/* The output's temporary, made by rank 0 and named to every process.  The
+ * output must resolve to the same file on every process (a collective
+ * create of files that differ never returns), its folder writable on
+ * each, so that rank 0 cannot fail alone; then every process must see
+ * rank 0's temporary itself (node-local folders of one name do not). */
 static const char *begin_output(const char *out, int rank)
 {
     static char tmp[PATH_MAX];
     char dir[PATH_MAX];
     const char *slash = strrchr(out, '/');
+    int st;
     snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - out) + 1 : 1, slash ? out : ".");
+    if ((st = nl_mpi_same_file(MPI_COMM_WORLD, out, 1)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "-o: %s", nl_errmsg());
     check_all(access(dir, W_OK | X_OK) ? NL_ERROR(NL_EINVAL, "-o: cannot write \"%s\": its folder \"%s\" is not "
                                                    "writable or does not exist", out, dir) : NL_OK);
     memset(tmp, 0, sizeof tmp);
     if (rank == 0)
         snprintf(tmp, sizeof tmp, "%s", cli_out_begin(out));
     MPI_Bcast(tmp, PATH_MAX, MPI_CHAR, 0, MPI_COMM_WORLD);
+    if ((st = nl_mpi_same_file(MPI_COMM_WORLD, tmp, 0)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "-o: \"%s\": its temporary %s", out, nl_errmsg());
     return tmp;
 }
 
@@ -145,6 +152,27 @@ static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_
     cli_json_print(o);
 }
 
+/* NL_OK when every sample of this process's slab is finite (and, f32,
+ * within float32), else NL_EINVAL naming the first bad one by its index and
+ * coordinates in the whole field, as the one-process synth does. */
+static int check_samples(const cli_synth_job *job, const nl_field *f, int f32, const char *out)
+{
+    size_t k, g = job->s0, n0 = job->n[0], n1 = job->dim > 1 ? job->n[1] : 1;
+    const char *sp = job->m ? " " : "", *spec = job->m ? nl_model_spec(job->m) : "";
+    double v;
+    if (!job->ns || !nl_field_check_finite(f, f32 ? FLT_MAX : INFINITY, &k))
+        return NL_OK;
+    for (int a = 0; a + 1 < job->dim; a++)
+        g *= job->n[a];
+    g += k, v = f->data[k];
+    if (!isfinite(v))
+        return NL_ERROR(NL_EINVAL, "synth %s%s%s: sample %zu (x %zu, y %zu, z %zu) is %g, expected a finite number; "
+                        "%s not written", job->method, sp, spec, g, g % n0, g / n0 % n1, g / (n0 * n1), v, out);
+    return NL_ERROR(NL_EINVAL, "synth %s%s%s: sample %zu (x %zu, y %zu, z %zu) is %g, beyond the largest magnitude "
+                    "%g of float32 (lower the variance); %s not written", job->method, sp, spec, g, g % n0,
+                    g / n0 % n1, g / (n0 * n1), v, (double)FLT_MAX, out);
+}
+
 /* Has the method an option that stands in for a model (a kernel)? */
 static int takes_other_kernel(const nl_method_type *t)
 {
@@ -158,7 +186,6 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int 
 {
     double t[3];
     int P, rank, f32 = !cli_h5_double;
-    size_t k = 0;
     cli_synth_result res;
     nl_meta meta;
     nl_field *f;
@@ -188,12 +215,9 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int 
         run(job, f, &res);
     }
     t[1] = MPI_Wtime();
-    /* nothing is written unless every sample is finite (and fits float32) */
-    int st = job->ns && nl_field_check_finite(f, f32 ? FLT_MAX : INFINITY, &k) ? NL_EINVAL : NL_OK;
-    if (st)
-        st = NL_ERROR(NL_EINVAL, "synth %s %s: %s%s; %s not written", job->method, job->m ? nl_model_spec(job->m) : "",
-                      nl_errmsg(), f32 ? " (or beyond float32: lower the variance)" : "", out);
-    check_all(st);
+    /* nothing is written unless every sample is finite (and fits float32):
+     * the lowest rank's first bad sample is the field's first */
+    check_all(check_samples(job, f, f32, out));
     /* the attributes are written collectively: rank 0's, on every process */
     cli_synth_fill_meta(job, f, &res, &meta);
     MPI_Bcast(&meta, sizeof meta, MPI_BYTE, 0, MPI_COMM_WORLD);

@@ -38,6 +38,19 @@ void nl_mpi_block(size_t N, int P, int r, size_t *s0, size_t *ns);
  * Returns NL_EFAIL when the communication itself fails. */
 int nl_mpi_agree(MPI_Comm comm, int status);
 
+/* Collective: does `path` name the same file on every process of comm?
+ * Each process resolves it (realpath; with `create`, of its folder, plus
+ * the name, for a file about to be made) and compares with process 0: the
+ * resolved path; the device and inode of the file (create: the folder)
+ * with the first process of its own node (device numbers are per machine);
+ * without `create`, the size and modification time with process 0.  A
+ * collective MPI-IO open of a path that differs never returns, so call this
+ * first.  NL_OK when every process sees the same (or every process fails
+ * to resolve it alike: the open then says why); NL_EINPUT, the same on
+ * every process, naming the path, the process that differs and what
+ * differs; NL_EFAIL, NL_ENOMEM. */
+int nl_mpi_same_file(MPI_Comm comm, const char *path, int create);
+
 /* Collective: the smallest number of processes P >= 1 for which
  * bytes(P, arg) <= limit, looking up to pmax (0 when none fits).  bytes
  * is the peak memory of the busiest process of P (the caller's model of

@@ -124,6 +124,9 @@ int nl_mpi_h5_write(const char *path, MPI_Comm comm, int dim, const size_t *n, s
         return st;
     if (st)
         return st;
+    /* a collective create of files that differ between processes hangs */
+    if (comm != MPI_COMM_NULL && (st = nl_mpi_same_file(comm, path, 1)))
+        return st;
     fapl = fapl_for(comm);
     /* creating is collective: every process gets the same answer */
     bad = fapl < 0 || (file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl)) < 0;
@@ -447,7 +450,10 @@ int nl_mpi_h5_read_slab(const char *path, MPI_Comm comm, int *dim, size_t *n, do
     quiet();
     MPI_Comm_size(comm, &P);
     MPI_Comm_rank(comm, &r);
-    st = open_field(path, comm, &file, &d, dim, n);
+    file = d = -1;
+    /* a collective open of files that differ between processes hangs */
+    if (!(st = nl_mpi_same_file(comm, path, 0)))
+        st = open_field(path, comm, &file, &d, dim, n);
     if (!st && !(st = read_attrs(path, d, &m)))
         st = parse_spacing(path, m.spacing, *dim, h);
     if (!st) {

@@ -15,7 +15,9 @@
  * process alone (HDF5's default POSIX driver: no MPI_Init needed); with a
  * communicator, through MPI-IO, collectively: every process of comm calls
  * with the same path, sizes and provenance, and its own slab (mpi/dist.h),
- * possibly empty.  Collective calls agree on their status (nl_mpi_agree).
+ * possibly empty.  Collective calls first check that path names the same
+ * file on every process (nl_mpi_same_file: NL_EINPUT, not a hang, when it
+ * does not) and agree on their status (nl_mpi_agree).
  *
  * Reading checks what the file declares before reading it: /field holds
  * numbers (floating point or integer; not compound, string, enum, array,

@@ -1,0 +1,39 @@
+#!/bin/sh
+# A signal to mpirun during a 4096^2 synthesis (about 1 to 5 s here):
+# within 15 s no process of the run remains and neither the output nor its
+# temporary is left.  SIGINT and SIGTERM: mpirun sends its processes
+# SIGTERM, whose handler (cli/outputs.c) removes the temporary; SIGKILL:
+# mpirun cannot, the kernel does (PR_SET_PDEATHSIG, cli/h5_main.c), where
+# Open MPI would end them without removing it.  Usage: signals.sh BINDIR
+set -u
+N="$1/noiselab"
+w=$(mktemp -d)
+trap 'rm -rf "$w"' EXIT
+fail=0
+# the run's live processes (a zombie's environment reads empty)
+left() { grep -lsxz "NL_SIGNAL_TEST=$1" /proc/[0-9]*/environ | cut -d/ -f3; }
+# $1 signal, $2 seconds after the start
+stop() {
+    mark=$$-$1-$2
+    $MPIRUN -np 2 -x NL_SIGNAL_TEST=$mark -x OMP_NUM_THREADS=1 "$N" synth fft --acf markov:scale=20 --size 4096x4096 \
+        -o "$w/big.h5" 2>"$w/err" &
+    pid=$!
+    sleep "$2"
+    kill -"$1" $pid
+    t=0
+    while { kill -0 $pid 2>/dev/null || [ -n "$(left $mark)" ]; } && [ $t -lt 15 ]; do sleep 1; t=$((t + 1)); done
+    procs=$(left $mark)
+    if kill -0 $pid 2>/dev/null || [ -n "$procs" ]; then
+        echo "signals.sh: SIG$1 at $2 s: mpirun or its processes still run after 15 s"; fail=1
+        kill -KILL $pid $procs 2>/dev/null
+    fi
+    wait $pid 2>/dev/null
+    if [ -n "$(ls -A "$w" | grep -v '^err$')" ]; then
+        echo "signals.sh: SIG$1 at $2 s: left $(ls -A "$w" | grep -v '^err$' | tr '\n' ' ')"; fail=1
+        rm -f "$w"/big.h5*
+    fi
+}
+stop INT 0.5
+stop TERM 1.5
+stop KILL 1.5
+exit $fail
