@@ -1,5 +1,6 @@
 #!/bin/sh
-# A signal to mpirun during a 4096^2 synthesis (about 1 to 5 s here):
+# A signal to mpirun during a 4096^2 synthesis (about 1 to 5 s here), $2 s
+# after both of its processes started:
 # within 15 s no process of the run remains and neither the output nor its
 # temporary is left.  SIGINT and SIGTERM: mpirun sends its processes
 # SIGTERM, whose handler (cli/outputs.c) removes the temporary; SIGKILL:
@@ -18,6 +19,12 @@ stop() {
     $MPIRUN -np 2 -x NL_SIGNAL_TEST=$mark -x OMP_NUM_THREADS=1 "$N" synth fft --acf markov:scale=20 --size 4096x4096 \
         -o "$w/big.h5" 2>"$w/err" &
     pid=$!
+    # the offset counts from when both processes run (not from mpirun's own
+    # start-up, whose length varies with the machine's load)
+    t=0
+    while [ "$(left $mark | wc -l)" -lt 2 ] && [ $t -lt 200 ] && kill -0 $pid 2>/dev/null; do
+        sleep 0.1; t=$((t + 1))
+    done
     sleep "$2"
     kill -"$1" $pid
     t=0
@@ -33,7 +40,7 @@ stop() {
         rm -f "$w"/big.h5*
     fi
 }
-stop INT 0.5
-stop TERM 1.5
-stop KILL 1.5
+stop INT 0.3
+stop TERM 0.8
+stop KILL 0.8
 exit $fail
