@@ -283,15 +283,13 @@ static int check_scene(const nl_cloud_scene *s)
         (s->noise_kind != NL_CLOUD_NOISE_GRID && s->noise_kind != NL_CLOUD_NOISE_POINT))
         return NL_ERROR(NL_EINVAL, "cloud: expected ordinary or simple kriging and grid or point noise, got %d and %d",
                         s->kriging, s->noise_kind);
-    if ((st = check_work(s)))
-        return st;
     /* the shape, light and noise volumes */
     size_t vs[3] = {s->grid, s->grid, s->grid}, vn[3] = {s->noise_grid, s->noise_grid, s->noise_grid};
     /* shape and light, and with point noise the density sampled for the light */
     if ((st = nl_size_check(3, vs, (s->noise_kind == NL_CLOUD_NOISE_POINT ? 3 : 2) * sizeof(double), 1, NULL)) ||
         (st = nl_size_check(3, vn, 2 * sizeof(double), 1, NULL)))
         return st;
-    return NL_OK;
+    return check_work(s);
 }
 
 int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double))
