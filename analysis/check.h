@@ -147,9 +147,13 @@ int nl_check_neighbours(const nl_model *m, const nl_check *c, char *buf, size_t 
  * at the n lags r[i] >= 0 (m's lag units) into c2[i] (variance units;
  * C_2(0) = R(0), a nugget included only there).  Valid in 2D whenever m is
  * valid in 1D.  Adaptive quadrature to 1e-12 relative, 1e-13 R(0)
- * absolute (analysis/check_matheron.c).  NL_OK, NL_EINVAL (a spectral
+ * absolute (analysis/check_matheron.c), at most 1000 subintervals per
+ * lag and 1e7 evaluations of R in all.  NL_OK, NL_EINVAL (a spectral
  * model or one not defined in 1D, R(0) not positive, a negative or
- * non-finite lag), NL_EFAIL (the quadrature did not converge), NL_ENOMEM.
+ * non-finite lag), NL_ETOOBIG (a lag where the profile oscillates more
+ * often than the subintervals resolve, or the evaluations spent: the
+ * message names the lag), NL_EFAIL (the quadrature did not converge
+ * otherwise), NL_ENOMEM.
  * Thread safety: as the model. */
 int nl_check_matheron_2d(const nl_model *m, size_t n, const double *r, double *c2);
 

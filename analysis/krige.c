@@ -107,6 +107,11 @@ static int factorize(nl_krige_plan *p, const gsl_matrix *C, int strict)
             st = NL_ERROR(NL_EINVAL, "kriging: the %zu x %zu covariance matrix is singular (reciprocal condition "
                           "%.2g): duplicate data points, or points closer than %s resolves",
                           n, n, p->info.rcond, nl_model_spec(p->m));
+        else if (n > NL_KRIGE_PINV_MAX)
+            st = NL_ERROR(NL_ETOOBIG, "kriging: the %zu x %zu covariance matrix is singular (reciprocal condition "
+                          "%.2g) and its pseudo-inverse (an SVD, about 12 n^3 operations) is refused above %d points: "
+                          "remove duplicate points, add a nugget to %s, or krige from neighbourhoods", n, n,
+                          p->info.rcond, NL_KRIGE_PINV_MAX, nl_model_spec(p->m));
         else {
             st = pseudo_inverse(p, C);
             p->info.pseudo_inverse = 1;

@@ -78,7 +78,9 @@ int nl_krige_local_grid(const nl_krige_local *k, const double *lo, nl_field *est
  * variance (divisor n - 1) of the errors z_i - pred_i and of the
  * standardised errors (z_i - pred_i) / sqrt(var_i), and the root mean
  * square error.  Errors as nl_krige_local_eval (a zero variance gives
- * NL_EINVAL). */
+ * NL_EINVAL); NL_EINVAL, before any work, for values whose max - min
+ * exceeds sqrt(DBL_MAX / n) / 16 (the squared errors would overflow), and
+ * when a sum of the summary is not finite all the same. */
 typedef struct {
     double mean_error, var_error; /* of z - pred */
     double mean_z, var_z;         /* of (z - pred) / sqrt(var) */

@@ -4,6 +4,7 @@
 #include "krige_local_internal.h"
 #include "../core/nl_error.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -300,11 +301,27 @@ int nl_krige_local_grid(const nl_krige_local *k, const double *lo, nl_field *est
     return run(k, &L, est->count, est->data, var ? var->data : NULL);
 }
 
+/* Values whose cross-validation errors stay representable: an error is a
+ * datum minus a weighted mean of others, a few times the values' range at
+ * most, and n squared errors are summed: max - min at most
+ * sqrt(DBL_MAX / n) / 16. */
+static int check_cv_values(const nl_krige_local *k)
+{
+    double lo = INFINITY, hi = -INFINITY, bound = sqrt(DBL_MAX / (double)k->n) / 16;
+    for (size_t i = 0; i < k->n; i++)
+        lo = fmin(lo, k->val[i]), hi = fmax(hi, k->val[i]);
+    if (!(hi - lo <= bound))
+        return NL_ERROR(NL_EINVAL, "kriging: cross-validation: the data's values run from %g to %g: the squared "
+                        "errors overflow; expected max - min below %.3g (sqrt(DBL_MAX / n) / 16, n = %zu)", lo, hi,
+                        bound, k->n);
+    return NL_OK;
+}
+
 int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_krige_cv_summary *s)
 {
     locs_t L = {.cv = 1};
-    int st = run(k, &L, k->n, pred, var);
-    if (st)
+    int st = check_cv_values(k);
+    if (st || (st = run(k, &L, k->n, pred, var)))
         return st;
     double se = 0, sz = 0, se2 = 0, sz2 = 0, n = (double)k->n;
     for (size_t i = 0; i < k->n; i++) {
@@ -316,5 +333,9 @@ int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_kri
     }
     s->mean_error = se / n, s->mean_z = sz / n, s->rmse = sqrt(se2 / n);
     s->var_error = (se2 - se * se / n) / (n - 1), s->var_z = (sz2 - sz * sz / n) / (n - 1);
+    if (!(isfinite(s->rmse) && isfinite(s->var_error) && isfinite(sz2) && isfinite(s->var_z)))
+        return NL_ERROR(NL_EINVAL, "kriging: cross-validation: the squared errors or standardised errors of the data's "
+                        "values overflow with %s (mean error %g); expected values of smaller magnitude or a model "
+                        "variance nearer their spread", nl_model_spec(k->m), s->mean_error);
     return NL_OK;
 }

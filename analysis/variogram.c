@@ -11,6 +11,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Pairs within the cutoff one variogram of points may visit: about half a
+ * minute per core at the 3e7 pairs a second the pair walk runs. */
+#define VG_MAX_PAIRS 1e9
+
 void nl_variogram_options_default(nl_variogram_options *o)
 {
     *o = (nl_variogram_options){.estimator = NL_VARIOGRAM_MATHERON};
@@ -35,6 +39,22 @@ int nl_vg_check_options(const nl_variogram_options *o)
     if (o->directional && (!isfinite(o->direction) || !(o->tolerance >= 0 && o->tolerance <= 90)))
         return NL_ERROR(NL_EINVAL, "variogram: expected a finite direction and a tolerance in [0, 90] degrees, got %g and %g",
                         o->direction, o->tolerance);
+    return NL_OK;
+}
+
+int nl_vg_check_values(const double *z, size_t n, const char *what)
+{
+    double lo = INFINITY, hi = -INFINITY, bound = sqrt(DBL_MAX / ((double)n * ((double)n - 1)));
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(z[i]))
+            return NL_ERROR(NL_EINVAL, "variogram: %s: number %zu is %g; expected finite numbers", what, i + 1, z[i]);
+        lo = fmin(lo, z[i]), hi = fmax(hi, z[i]);
+    }
+    /* each bin sums up to n (n - 1) / 2 squared differences, each at most (hi - lo)^2 */
+    if (!(hi - lo <= bound))
+        return NL_ERROR(NL_EINVAL, "variogram: %s run from %g to %g: their squared differences summed over the pairs "
+                        "overflow; expected max - min below %.3g (sqrt(DBL_MAX / (n (n - 1))), n = %zu)", what, lo, hi,
+                        bound, n);
     return NL_OK;
 }
 
@@ -189,6 +209,32 @@ static int check_points(const nl_points *p, double *diag, double *gdiag)
                         "(rescale the coordinates)", p->n, hi[k] - lo[k], k + 1, lo[k], hi[k], sqrt(DBL_MIN));
     }
     *gdiag = gstat_diagonal(p, lo, hi, *diag);
+    return nl_vg_check_values(p->val, p->n, "the points' values");
+}
+
+static int count_pair(void *ctx, size_t i, size_t j, double d2)
+{
+    (void)i, (void)j, (void)d2;
+    ++*(double *)ctx;
+    return 0;
+}
+
+/* The work before it is done: the pairs within the cutoff, estimated from
+ * the pairs of VG_SAMPLE positions spread over the index's order (each
+ * position's share of the pair walk), refused above VG_MAX_PAIRS. */
+#define VG_SAMPLE 128
+static int check_work(const nl_spindex *s, const nl_points *p, const nl_vg_acc *a)
+{
+    double n = (double)p->n, found = 0, est;
+    if (n * (n - 1) / 2 <= VG_MAX_PAIRS)
+        return NL_OK;
+    for (size_t t = 0; t < VG_SAMPLE; t++)
+        nl_spindex_pairs_at(s, (size_t)((double)t * n / VG_SAMPLE), a->cutoff, count_pair, &found);
+    est = found * n / VG_SAMPLE;
+    if (est > VG_MAX_PAIRS)
+        return NL_ERROR(NL_ETOOBIG, "variogram: %zu points have about %.3g pairs within the cutoff %g; expected at "
+                        "most %.0e (about half a minute of work): set a smaller cutoff, thin the points, or grid them "
+                        "(the variogram of a field costs samples x offsets)", p->n, est, a->cutoff, VG_MAX_PAIRS);
     return NL_OK;
 }
 
@@ -235,7 +281,7 @@ int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_va
         return st;
     if ((st = nl_spindex_alloc(p->dim, p->n, p->pts, &s)))
         return st;
-    if (!(st = nl_vg_sums_alloc(a.nb, &sums)) && !(st = accumulate(s, p, &a, sums)))
+    if (!(st = check_work(s, p, &a)) && !(st = nl_vg_sums_alloc(a.nb, &sums)) && !(st = accumulate(s, p, &a, sums)))
         st = nl_vg_finish(&a, sums, out);
     free(sums);
     nl_spindex_free(s);

@@ -61,13 +61,19 @@ typedef struct {
  * not finite, all points at one place (no positive distance), a width or
  * cutoff that is negative or not finite, more than 10^6 bins, an unknown
  * estimator, a direction or tolerance that is not finite (tolerance must lie
- * in [0, 90]), or no pair within the cutoff; NL_ETOOBIG or NL_ENOMEM when the
- * index outgrows memory.  Thread-safe. */
+ * in [0, 90]), values whose max - min exceeds sqrt(DBL_MAX / (n (n - 1)))
+ * (their squared differences summed over the pairs would overflow), or no
+ * pair within the cutoff; NL_ETOOBIG when the pairs within the cutoff,
+ * estimated from a sample of the points before any is walked, exceed 1e9
+ * (about half a minute of work per core: a smaller cutoff, fewer points,
+ * or the variogram of a gridded field), or when the index outgrows
+ * memory; NL_ENOMEM.  Thread-safe. */
 int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out);
 
 /* The variogram of a field: sample (i, j, k) at (i h[0], j h[1], k h[2]),
  * all pairs of samples (same binning and errors as nl_variogram_points;
- * non-finite samples are refused).  Time O(count x offsets within the
+ * non-finite samples and samples whose max - min exceeds
+ * sqrt(DBL_MAX / (count (count - 1))) are refused).  Time O(count x offsets within the
  * cutoff).  Thread-safe. */
 int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_variogram **out);
 

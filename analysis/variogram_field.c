@@ -50,6 +50,8 @@ int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_vari
         return NL_ERROR(NL_EINVAL, "variogram: expected a field of 2 samples at least, got %zu", f ? f->count : 0);
     if (nl_field_check_finite(f, INFINITY, &bad))
         return NL_ERROR(NL_EINVAL, "variogram: sample %zu of the field is %g; expected finite samples", bad, f->data[bad]);
+    if ((st = nl_vg_check_values(f->data, f->count, "the field's samples")))
+        return st;
     for (int k = 0; k < f->dim; k++)
         diag += ((double)f->n[k] - 1) * f->h[k] * ((double)f->n[k] - 1) * f->h[k];
     if ((st = nl_vg_check_options(o)) || (st = nl_vg_bins(o, sqrt(diag), &a)))

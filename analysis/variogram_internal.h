@@ -17,6 +17,10 @@ typedef struct {
 } nl_vg_acc;
 
 int nl_vg_check_options(const nl_variogram_options *o);
+/* The n values z, all finite, whose squared differences summed over every
+ * pair stay finite: max - min at most sqrt(DBL_MAX / (n (n - 1))).  `what`
+ * names them ("the points' values", "the field's samples"). */
+int nl_vg_check_values(const double *z, size_t n, const char *what);
 int nl_vg_bins(const nl_variogram_options *o, double diag, nl_vg_acc *acc);
 /* 3 sums per bin: distances, squared (or root) differences, pairs. */
 int nl_vg_sums_alloc(size_t nb, double **s);

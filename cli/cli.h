@@ -124,12 +124,15 @@ void cli_progress_abandon(void);
 const char *cli_out_begin(const char *path);
 void cli_out_commit(const char *path);
 
-/* A folder of outputs named by option `opt` (e.g. a report): created when
- * missing, and then removed with its contents on failure; when it exists,
- * the files this run adds to it are removed on failure.  Exit 2 naming opt
- * and the folder when it cannot be made or is a file.  The files inside are
- * written under their own names. */
-void cli_out_dir(const char *opt, const char *dir);
+/* A folder of outputs named by option `opt` (e.g. a report), whose files
+ * are written through cli_out_begin like any output (temporaries renamed
+ * together at the end).  A missing folder is created, and removed on
+ * failure or a signal once this run's temporaries in it are gone, if
+ * nothing else is in it; an existing one is never removed, nor anything
+ * in it but this run's temporaries.  Exit 2 naming opt and the folder when
+ * it cannot be made, is a file, is the root folder, or exists and is not
+ * empty unless `force`. */
+void cli_out_dir(const char *opt, const char *dir, int force);
 
 /* mkdtemp(templ) for scratch files, removed with its contents at the end of
  * the run whatever happens; NULL (errno set) when it cannot be made. */

@@ -3,6 +3,7 @@
 #include "opt.h"
 #include "../analysis/check.h"
 #include "../core/model.h"
+#include "../core/nl_error.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -68,13 +69,17 @@ static void profile_1d(const nl_model *m, const nl_check *k, double rmax, json_t
 {
     enum { NL = 33 };
     double r[NL], c1[NL], c2[NL], lo = INFINITY, lolag = 0;
-    if (!(rmax > 0))
+    int given = rmax > 0;
+    if (!given)
         rmax = k->scale / 4;
     for (int i = 0; i < NL; i++) {
         r[i] = rmax * ((double)i / (NL - 1)); /* no overflow for rmax near DBL_MAX */
         c1[i] = nl_model_acf(m, 1, &r[i]);
     }
-    cli_check(nl_check_matheron_2d(m, NL, r, c2));
+    int st = nl_check_matheron_2d(m, NL, r, c2);
+    if (st)
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--profile-1d: RMAX %g%s: %s", rmax,
+                given ? "" : " (a quarter of the scale; set --profile-1d=RMAX)", nl_errmsg());
     for (int i = 0; i < NL; i++)
         if (c2[i] < lo)
             lo = c2[i], lolag = r[i];

@@ -27,12 +27,17 @@ static const char help[] =
     "\"simple\" (mean 0: scenes made before ordinary kriging render as they did);\n"
     "\"rotation\": [ax, ay, az] degrees about x, y, z (the ellipsoid turned by\n"
     "Rz Ry Rx); in \"noise\": \"kind\": \"grid\" (default) or \"point\" (a gauss: acf;\n"
-    "no period or grid) with \"density\": impulses per scale^3 (default 8).\n";
+    "no period or grid) with \"density\": impulses per scale^3 (default 8).\n"
+    "The shape kriges with every point: at most 2000 points, and grid^3 (points +\n"
+    "7 grid) at most 1e9 (about half a minute); a singular system (duplicate points) is solved by the pseudo-inverse\n"
+    "(up to 1000 points), said on stderr and flagged in the EXR.\n";
 
 static void progress(double f) { cli_progress("cloud", f); }
 
-/* The luminance as an EXR field. */
-static void write_lum(const char *etmp, const nl_cloud_scene *s, const double *lum, const char *path)
+/* The luminance as an EXR field (flagged when the shape's kriging system
+ * was singular). */
+static void write_lum(const char *etmp, const nl_cloud_scene *s, const double *lum, const char *path,
+                      const nl_krige_info *info)
 {
     size_t n[2] = {s->width, s->height};
     nl_field *f = cli_field_alloc(2, n, NULL);
@@ -40,6 +45,8 @@ static void write_lum(const char *etmp, const nl_cloud_scene *s, const double *l
     memcpy(f->data, lum, s->width * s->height * sizeof *lum);
     snprintf(meta.model, sizeof meta.model, "%s", nl_model_spec(s->shape));
     snprintf(meta.method, sizeof meta.method, "cloud:%s", path);
+    if (info->pseudo_inverse)
+        snprintf(meta.flags, sizeof meta.flags, "singular,pseudo-inverse");
     cli_check(nl_exr_write(etmp, f, &meta));
     nl_field_free(f);
 }
@@ -57,6 +64,7 @@ int cli_cmd_cloud(int argc, char **argv)
     opts_t a = {0};
     const char *path, *tmp, *etmp = NULL;
     nl_cloud_scene s;
+    nl_krige_info info;
     if (cli_opt_parse("cloud", help, rows, &a, argc, argv))
         return 0;
     path = cli_one_operand("cloud", "scene file", argc, argv);
@@ -72,11 +80,14 @@ int cli_cmd_cloud(int argc, char **argv)
     unsigned char *rgb = cli_malloc(s.width * s.height * 3);
     double *lum = a.exr ? cli_malloc(s.width * s.height * sizeof *lum) : NULL;
     cli_progress("cloud", 0);
-    cli_check(nl_render_cloud(&s, rgb, lum, progress));
+    cli_check(nl_render_cloud_info(&s, rgb, lum, progress, &info));
     cli_progress_done();
+    if (info.pseudo_inverse) /* as krige says it */
+        fprintf(stderr, "noiselab: cloud: the shape's kriging system is singular (reciprocal condition %.2g); solved "
+                "by the pseudo-inverse%s\n", info.rcond, a.exr ? " (flagged in the EXR)" : "");
     cli_check(nl_png_write_rgb8(tmp, s.width, s.height, rgb));
     if (a.exr) {
-        write_lum(etmp, &s, lum, path);
+        write_lum(etmp, &s, lum, path, &info);
         cli_out_commit(a.exr);
     }
     cli_out_commit(a.out);

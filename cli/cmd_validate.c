@@ -8,7 +8,7 @@
 #include <string.h>
 
 static const char help_usage[] =
-    "usage: noiselab validate (--acf SPEC | --spectrum SPEC) --dim 1|2|3 (-o DIR | --json)\n"
+    "usage: noiselab validate (--acf SPEC | --spectrum SPEC) --dim 1|2|3 (-o DIR [--force] | --json)\n"
     "                         [--size N] [--realizations M] [--seed S] [--tolerance E]\n"
     "                         [method options]\n\n"
     ;
@@ -41,7 +41,11 @@ static const char help[] =
     "  -o DIR            DIR/index.md (the report, led by a table of the methods),\n"
     "                    verdict.json (as --json), acf.tsv, spectrum.tsv, map.tsv (2D\n"
     "                    and 3D), and with gnuplot acf.png, error.png, spectrum.png and\n"
-    "                    map.png\n"
+    "                    map.png; DIR is made when missing, and an existing DIR must be\n"
+    "                    empty (not /).  The files appear together when the run succeeds;\n"
+    "                    a failure or an interrupt removes only what this run made\n"
+    "  --force           write into an existing DIR that holds files, replacing those\n"
+    "                    of the report's names\n"
     "method options, as for noiselab synth:\n";
 /* then a line per method taking them, then: */
 static const char help_exit[] =
@@ -118,7 +122,7 @@ static const cli_opt rows[] = {
     CLI_OPT_DIMS(cli_validate, dim, 3, .need = "1, 2 or 3"), CLI_OPT_OUTPUT(cli_validate, dir),
     CLI_COUNT("size", cli_validate, N, .lo = 16), CLI_COUNT("realizations", cli_validate, M, .lo = 4),
     CLI_POSITIVE("tolerance", cli_validate, o.tolerance, .what = "relative error"), CLI_OPT_JSON(cli_validate, json),
-    CLI_U64("seed", cli_validate, o.seed),
+    CLI_U64("seed", cli_validate, o.seed), CLI_FLAG("force", cli_validate, force),
     /* the methods' options, as for synth */
     CLI_INT("levels", cli_validate, o.subdiv_levels, CLI_FROM_TO(1, 30)),
     CLI_INT("neighborhood", cli_validate, o.subdiv_N, CLI_FROM_TO(1, 2147483647), .flags = CLI_AUTO),
@@ -205,9 +209,9 @@ int cli_cmd_validate(int argc, char **argv)
     n[0] = n[1] = n[2] = v.N;
     v.o.realizations = v.M, v.o.progress = progress;
     /* the folder is made once every check has passed; a failure from here
-     * on removes it, or what this run added to it (cli_out_dir) */
+     * on removes it when this run made it (cli_out_dir) */
     if (v.dir)
-        cli_out_dir("-o", v.dir);
+        cli_out_dir("-o", v.dir, v.force);
     if ((st = nl_validate_model(v.m, v.dim, n, v.k.positive_definite, &v.o, &v.r)))
         cli_die_status(st);
     cli_progress_done();

@@ -4,7 +4,8 @@
  * marked ready by cli_out_commit; the renames happen together when the
  * command returns success (cli_out_finish from cli_main).  A failure
  * (cli_die, a non-zero return, exit) and a fatal signal remove every
- * temporary and every folder this run created.  The table of outputs grows
+ * temporary and then every folder this run created, when it is empty (a
+ * file another process put there stays, and so does the folder).  The table of outputs grows
  * in chunks that never move, and an entry is filled before its state is
  * published, so the signal handler can walk it at any moment using only
  * unlink, rmdir and directory reads (async-signal-safe). */
@@ -25,11 +26,10 @@
 #include <unistd.h>
 
 /* An entry: a file's temporary (PENDING until committed, READY after), a
- * folder this run made (DIR_NEW: emptied and removed on failure) or one it
- * writes into (DIR_OLD: the files that were not there at the start and are
- * newer than it are removed on failure), a scratch folder (TMP_DIR: emptied
+ * folder this run made (DIR_NEW: removed on failure once the temporaries in
+ * it are gone, if nothing else is there), a scratch folder (TMP_DIR: emptied
  * and removed at the end whatever happens); DONE once renamed. */
-enum { FREE, PENDING, READY, DONE, DIR_NEW, DIR_OLD, TMP_DIR };
+enum { FREE, PENDING, READY, DONE, DIR_NEW, TMP_DIR };
 enum { CHUNK = 16 };
 
 typedef struct {
@@ -38,7 +38,6 @@ typedef struct {
     char final[PATH_MAX]; /* the output's name as given */
     dev_t dev;            /* the folder holding the output, to find one output named twice */
     ino_t ino;
-    char *names;          /* DIR_OLD: the entries present at the start, each NUL-terminated, "" last */
 } entry;
 
 typedef struct chunk {
@@ -49,7 +48,6 @@ typedef struct chunk {
 static chunk first;
 static size_t used;                   /* entries handed out in this run (main thread only) */
 static _Atomic int committing, caught; /* renaming now; the signal that came meanwhile */
-static struct timespec started;        /* when the run began (coarse clock, as file times) */
 static int cmd_argc;
 static char **cmd_argv;
 
@@ -68,18 +66,9 @@ static entry *at(size_t i)
     return &c->e[i % CHUNK];
 }
 
-/* Is `name` among the NUL-separated list `names`? */
-static int listed(const char *names, const char *name)
-{
-    for (const char *p = names; p && *p; p += strlen(p) + 1)
-        if (strcmp(p, name) == 0)
-            return 1;
-    return 0;
-}
-
-/* Remove what this run put in folder e (async-signal-safe: getdents64,
- * fstatat, unlinkat, rmdir). */
-static void purge_dir(const entry *e, int made)
+/* Empty and remove scratch folder e (async-signal-safe: getdents64,
+ * unlinkat, rmdir). */
+static void purge_dir(const entry *e)
 {
     char buf[4096];
     long got;
@@ -95,33 +84,34 @@ static void purge_dir(const entry *e, int made)
                 unsigned char type;
                 char name[];
             } *d = (void *)(buf + off);
-            struct stat st;
             off += d->reclen;
             if (strcmp(d->name, ".") == 0 || strcmp(d->name, "..") == 0)
-                continue;
-            if (!made && (listed(e->names, d->name) || fstatat(fd, d->name, &st, AT_SYMLINK_NOFOLLOW) ||
-                          !S_ISREG(st.st_mode) || st.st_mtim.tv_sec < started.tv_sec ||
-                          (st.st_mtim.tv_sec == started.tv_sec && st.st_mtim.tv_nsec < started.tv_nsec)))
                 continue;
             unlinkat(fd, d->name, 0);
         }
     close(fd);
-    if (made)
-        rmdir(e->tmp);
+    rmdir(e->tmp);
 }
 
-/* Undo every output of this run (async-signal-safe). */
+/* Undo every output of this run (async-signal-safe): the files' temporaries
+ * and scratch folders first, then the folders made for outputs, which only
+ * go when nothing else is left in them (rmdir). */
 static void remove_all(void)
 {
-    for (chunk *c = &first; c; c = atomic_load(&c->next))
-        for (int i = 0; i < CHUNK; i++) {
-            entry *e = &c->e[i];
-            int s = atomic_exchange(&e->state, FREE);
-            if (s == PENDING || s == READY)
-                unlink(e->tmp);
-            else if (s == DIR_NEW || s == DIR_OLD || s == TMP_DIR)
-                purge_dir(e, s != DIR_OLD);
-        }
+    for (int pass = 0; pass < 2; pass++)
+        for (chunk *c = &first; c; c = atomic_load(&c->next))
+            for (int i = 0; i < CHUNK; i++) {
+                entry *e = &c->e[i];
+                int s = atomic_load(&e->state);
+                if ((s == DIR_NEW) != pass || atomic_exchange(&e->state, FREE) != s)
+                    continue;
+                if (s == PENDING || s == READY)
+                    unlink(e->tmp);
+                else if (s == TMP_DIR)
+                    purge_dir(e);
+                else if (s == DIR_NEW)
+                    rmdir(e->tmp);
+            }
 }
 
 static void on_signal(int sig)
@@ -146,10 +136,7 @@ void cli_out_start(int argc, char **argv)
     static int installed;
     cmd_argc = argc, cmd_argv = argv;
     remove_all();
-    for (size_t i = 0; i < used; i++)
-        free(at(i)->names), at(i)->names = NULL;
     used = 0;
-    clock_gettime(CLOCK_REALTIME_COARSE, &started);
     if (!installed++) {
         static const int sigs[] = {SIGINT,  SIGTERM, SIGHUP,  SIGPIPE, SIGQUIT, SIGXCPU, SIGXFSZ, SIGALRM,
                                    SIGUSR1, SIGUSR2, SIGABRT, SIGSEGV, SIGBUS,  SIGFPE,  SIGILL};
@@ -295,52 +282,47 @@ void cli_out_commit(const char *path)
     }
 }
 
-/* The names in folder `dir` now, NUL-separated with "" last (NULL if none). */
-static char *snapshot(const char *dir)
+/* Is dir the root folder (whatever its spelling: "/", "//", "/.."...)? */
+static int is_root(const struct stat *st)
+{
+    struct stat root;
+    return stat("/", &root) == 0 && root.st_dev == st->st_dev && root.st_ino == st->st_ino;
+}
+
+/* Does folder dir hold anything? */
+static int has_entries(const char *dir)
 {
     DIR *d = opendir(dir);
     struct dirent *de;
-    size_t len = 0, cap = 256;
-    char *names = malloc(cap);
-    while (d && names && (de = readdir(d))) {
-        size_t l = strlen(de->d_name) + 1;
-        while (len + l + 1 > cap) {
-            char *more = realloc(names, cap *= 2);
-            if (!more) {
-                free(names);
-                closedir(d);
-                cli_die(1, "out of memory listing \"%s\"", dir);
-            }
-            names = more;
-        }
-        memcpy(names + len, de->d_name, l);
-        len += l;
-    }
+    int any = 0;
+    while (d && !any && (de = readdir(d)))
+        any = strcmp(de->d_name, ".") != 0 && strcmp(de->d_name, "..") != 0;
     if (d)
         closedir(d);
-    if (!names)
-        cli_die(1, "out of memory listing \"%s\"", dir);
-    names[len] = 0;
-    return names;
+    return any || !d;
 }
 
-void cli_out_dir(const char *opt, const char *dir)
+void cli_out_dir(const char *opt, const char *dir, int force)
 {
     struct stat st;
     entry *e;
     if (!*dir)
         cli_die(2, "%s: expected a folder name, got \"\"", opt);
-    if (snprintf(at(used)->tmp, PATH_MAX, "%s", dir) >= PATH_MAX)
+    if (strlen(dir) >= PATH_MAX)
         cli_die(2, "%s: path too long: \"%s\"", opt, dir);
-    e = at(used++);
-    e->final[0] = 0;
     if (stat(dir, &st) == 0) {
         if (!S_ISDIR(st.st_mode))
             cli_die(2, "%s: \"%s\" exists and is not a folder", opt, dir);
-        e->names = snapshot(dir);
-        atomic_store(&e->state, DIR_OLD);
+        if (is_root(&st))
+            cli_die(2, "%s: \"%s\" is the root folder; expected a folder of its own for the files", opt, dir);
+        if (!force && has_entries(dir))
+            cli_die(2, "%s: folder \"%s\" exists and is not empty; expected a new or empty folder (--force writes "
+                    "into it, replacing files of the same names)", opt, dir);
         return;
     }
+    e = at(used++);
+    e->final[0] = 0;
+    snprintf(e->tmp, PATH_MAX, "%s", dir);
     atomic_store(&e->state, DIR_NEW); /* before it exists, as for files */
     if (mkdir(dir, 0755)) {
         int err = errno;
@@ -377,7 +359,7 @@ void cli_out_finish(int ok)
         if (s == PENDING)
             unlink(e->tmp);
         else if (s == TMP_DIR)
-            purge_dir(e, 1);
+            purge_dir(e);
         e->final[0] = 0;
     }
     atomic_store(&committing, 0);

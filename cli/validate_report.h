@@ -14,6 +14,7 @@ typedef struct {
     int spectral;            /* given with --spectrum */
     int dim;                 /* 1..3 */
     int json;                /* --json */
+    int force;               /* --force: write into an existing folder that holds files */
     size_t N, M;             /* side, realizations */
     nl_validate_options o;   /* realizations, tolerance, method options */
     nl_model *m;             /* the parsed model */

@@ -1,23 +1,44 @@
 /* noiselab validate: DIR/index.md, its tables, plots and data. */
 #include "validate_report.h"
 
+#include <fcntl.h>
 #include <math.h>
+#include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #define NM NL_VALIDATE_METHODS
 #define ND NL_VALIDATE_DIRS
 
 static const char *const colour[NM] = {"#1f4e99", "#2e8b57", "#b22222", "#d2691e", "#8b6914"};
 
-static FILE *open_in(const cli_validate *v, const char *name)
+/* Every file of the report is written to a temporary beside its name and
+ * renamed at the end of a successful run (cli_out_begin): a failure or a
+ * signal removes only what this run made. */
+static const char *report_tmp(const cli_validate *v, const char *name)
 {
     char path[4096];
-    FILE *fp;
+    if (snprintf(path, sizeof path, "%s/%s", v->dir, name) >= (int)sizeof path)
+        cli_die(2, "-o: path too long: \"%s\"", v->dir);
+    return cli_out_begin(path);
+}
+
+static void report_commit(const cli_validate *v, const char *name)
+{
+    char path[4096];
     snprintf(path, sizeof path, "%s/%s", v->dir, name);
-    if (!(fp = fopen(path, "w")))
-        cli_die(1, "-o: cannot write %s", path);
+    cli_out_commit(path);
+}
+
+static FILE *open_in(const cli_validate *v, const char *name)
+{
+    const char *tmp = report_tmp(v, name);
+    FILE *fp = fopen(tmp, "w");
+    if (!fp)
+        cli_die(1, "-o: cannot write %s/%s", v->dir, name);
     return fp;
 }
 
@@ -25,6 +46,21 @@ static void close_in(FILE *fp, const cli_validate *v, const char *name)
 {
     if (ferror(fp) | fclose(fp))
         cli_die(1, "-o: cannot write %s/%s", v->dir, name);
+    report_commit(v, name);
+}
+
+/* The folder as a gnuplot string (single quotes, a quote doubled). */
+static const char *gp_dir(const cli_validate *v)
+{
+    static char buf[8200];
+    size_t k = 0;
+    for (const char *p = v->dir; *p && k + 3 < sizeof buf; p++) {
+        if (*p == '\'')
+            buf[k++] = '\'';
+        buf[k++] = *p;
+    }
+    buf[k] = 0;
+    return buf;
 }
 
 /* One TSV cell: the number, or "-" where there is none (no nan in files). */
@@ -141,15 +177,15 @@ static void map_plot(FILE *fp, const cli_validate *v, double top)
         np += v->r.method[meth].ran;
     if (!np)
         return;
-    fprintf(fp, "set terminal pngcairo size %d,470 font 'DejaVu Sans,10'\nset output '%s/map.png'\nunset logscale\n"
+    fprintf(fp, "set terminal pngcairo size %d,470 font 'DejaVu Sans,10'\nset output D.'/map.png'.S\nunset logscale\n"
                 "unset key\nunset grid\nset autoscale fix\nset size ratio -1\nset palette defined (-1 '#2166ac', 0 'white', 1 '#b2182b')\n"
                 "set cbrange [%g:%g]\nset xlabel 'lag x'\nset ylabel 'lag y'\nset multiplot layout 1,%d title "
                 "'%s, %dD: (ensemble mean - R) / R(0) over the lag map%s'\n",
-            60 + 420 * np, v->dir, -top, top, np, v->spec, v->dim, v->dim > 2 ? " (plane lz = 0)" : "");
+            60 + 420 * np, -top, top, np, v->spec, v->dim, v->dim > 2 ? " (plane lz = 0)" : "");
     for (int meth = 0; meth < NM; meth++)
         if (v->r.method[meth].ran)
-            fprintf(fp, "set title '%s'\n%splot '%s/map.tsv' using 1:2:%d with image\n", v->r.method[meth].name,
-                    ++k == np ? "set colorbox\n" : "unset colorbox\n", v->dir, 4 + meth);
+            fprintf(fp, "set title '%s'\n%splot D.'/map.tsv'.S using 1:2:%d with image\n", v->r.method[meth].name,
+                    ++k == np ? "set colorbox\n" : "unset colorbox\n", 4 + meth);
     fprintf(fp, "unset multiplot\n");
 }
 
@@ -174,19 +210,19 @@ static void panels(FILE *fp, const cli_validate *v, int kind)
             fprintf(fp, "plot %g with lines dt 2 lc rgb 'black' title 'tolerance', %g with lines dt 2 lc rgb 'black' notitle, "
                         "0 with lines lc rgb 'gray' notitle", r->tolerance, -r->tolerance);
         else
-            fprintf(fp, "plot '%s/acf.tsv' index %d using 3:4 with lines lw 3 lc rgb 'black' title 'target'", v->dir, block);
+            fprintf(fp, "plot D.'/acf.tsv'.S index %d using 3:4 with lines lw 3 lc rgb 'black' title 'target'", block);
         for (int meth = 0; meth < NM; meth++)
             if (r->method[meth].ran && kind)
-                fprintf(fp, ", '%s/acf.tsv' index %d using ($3+%g):(($%d-$4)/%g):(%g*$%d/%g) with yerrorbars pt 7 ps 0.4 "
-                            "lc rgb '%s' title '%s'", v->dir, block, 0.15 * (meth - 1.5), 6 + 2 * meth, r0, r->ci_factor,
+                fprintf(fp, ", D.'/acf.tsv'.S index %d using ($3+%g):(($%d-$4)/%g):(%g*$%d/%g) with yerrorbars pt 7 ps 0.4 "
+                            "lc rgb '%s' title '%s'", block, 0.15 * (meth - 1.5), 6 + 2 * meth, r0, r->ci_factor,
                         7 + 2 * meth, r0, colour[meth], r->method[meth].name);
             else if (r->method[meth].ran)
                 fprintf(fp, ", '' index %d using 3:%d:%d with yerrorlines pt 7 ps 0.4 lc rgb '%s' title '%s'", block,
                         6 + 2 * meth, 7 + 2 * meth, colour[meth], r->method[meth].name);
         if (r->have_exact)
-            fprintf(fp, kind ? ", '%s/acf.tsv' index %d using 3:(($5-$4)/%g) with lines dt 2 lw 2 lc rgb '#b22222' title 'subdiv exact'"
-                             : ", '%s/acf.tsv' index %d using 3:5 with lines dt 2 lw 2 lc rgb '#b22222' title 'subdiv exact'",
-                    v->dir, block, r0);
+            fprintf(fp, kind ? ", D.'/acf.tsv'.S index %d using 3:(($5-$4)/%g) with lines dt 2 lw 2 lc rgb '#b22222' title 'subdiv exact'"
+                             : ", D.'/acf.tsv'.S index %d using 3:5 with lines dt 2 lw 2 lc rgb '#b22222' title 'subdiv exact'",
+                    block, r0);
         fprintf(fp, "\n");
         block++;
     }
@@ -195,38 +231,79 @@ static void panels(FILE *fp, const cli_validate *v, int kind)
 
 static void spectrum_plot(FILE *fp, const cli_validate *v)
 {
-    fprintf(fp, "set output '%s/spectrum.png'\nset title '%s, %dD: periodogram / its expectation - 1, by octave band "
+    fprintf(fp, "set output D.'/spectrum.png'.S\nset title '%s, %dD: periodogram / its expectation - 1, by octave band "
                 "(95%% simultaneous)'\nset xlabel 'radial frequency (cycles per sample)'\nset logscale x\nset grid\n"
                 "set key top left\nset offsets 0, 0, graph 0.06, graph 0.06\nplot 0 with lines lc rgb 'gray' notitle",
-            v->dir, v->spec, v->dim);
+            v->spec, v->dim);
     for (int meth = 0; meth < NM; meth++)
         if (v->r.method[meth].ran)
-            fprintf(fp, ", '%s/spectrum.tsv' using ($4*%g):%d:%d:%d with yerrorbars pt 7 ps 0.6 lc rgb '%s' title '%s'",
-                    v->dir, pow(1.06, meth - 1.5), 7 + 3 * meth, 8 + 3 * meth, 9 + 3 * meth, colour[meth],
+            fprintf(fp, ", D.'/spectrum.tsv'.S using ($4*%g):%d:%d:%d with yerrorbars pt 7 ps 0.6 lc rgb '%s' title '%s'",
+                    pow(1.06, meth - 1.5), 7 + 3 * meth, 8 + 3 * meth, 9 + 3 * meth, colour[meth],
                     v->r.method[meth].name);
     fprintf(fp, "\n");
 }
 
-/* The gnuplot script and its three plots; returns whether they were made. */
+/* gnuplot on the script's temporary, without a shell, the suffix of the
+ * temporaries in S (the script names its files D.'/name'.S); 1 when it
+ * succeeded. */
+static int run_gnuplot(const char *script, const char *suffix)
+{
+    extern char **environ;
+    char s[64];
+    char *argv[] = {"gnuplot", "-e", s, (char *)script, NULL};
+    posix_spawn_file_actions_t fa;
+    pid_t pid;
+    int status = -1, ok;
+    snprintf(s, sizeof s, "S='%s'", suffix);
+    if (posix_spawn_file_actions_init(&fa))
+        return 0;
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+    ok = posix_spawnp(&pid, "gnuplot", &fa, NULL, argv, environ) == 0;
+    posix_spawn_file_actions_destroy(&fa);
+    while (ok && waitpid(pid, &status, 0) < 0)
+        ;
+    return ok && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+/* The gnuplot script and its plots; returns whether they were made.  The
+ * plots are written by gnuplot to their temporaries and kept only when it
+ * succeeds. */
 static int write_plots(const cli_validate *v)
 {
-    char cmd[4200];
-    int ndir = 0;
-    FILE *fp = open_in(v, "plots.gp");
+    static const char *const png[] = {"acf.png", "error.png", "spectrum.png", "map.png"};
+    char path[4200];
+    int ndir = 0, nran = 0, npng, ok;
+    const char *script = report_tmp(v, "plots.gp");
+    FILE *fp = fopen(script, "w");
+    if (!fp)
+        cli_die(1, "-o: cannot write %s/plots.gp", v->dir);
     for (int d = 0; d < ND; d++)
         ndir += v->r.nlag[d] > 0;
+    for (int meth = 0; meth < NM; meth++)
+        nran += v->r.method[meth].ran;
+    npng = v->r.nmap && nran ? 4 : 3;
+    fprintf(fp, "# the report's plots: gnuplot DIR/plots.gp where validate ran, or gnuplot -e \"D='.'\" plots.gp in DIR\n"
+                "# (D: the report's folder; S: a suffix of the file names)\nif (!exists(\"D\")) D = '%s'\n"
+                "if (!exists(\"S\")) S = ''\n",
+            gp_dir(v));
     fprintf(fp, "set terminal pngcairo size %d,520 font 'DejaVu Sans,10'\nset datafile missing '-'\n"
-                "set output '%s/acf.png'\n", 420 + 380 * ndir, v->dir);
+                "set output D.'/acf.png'.S\n", 420 + 380 * ndir);
     panels(fp, v, 0);
-    fprintf(fp, "set output '%s/error.png'\n", v->dir);
+    fprintf(fp, "set output D.'/error.png'.S\n");
     panels(fp, v, 1);
     fprintf(fp, "set terminal pngcairo size 900,560 font 'DejaVu Sans,11'\n");
     spectrum_plot(fp, v);
     if (v->r.nmap)
         map_plot(fp, v, write_map_tsv(v));
     close_in(fp, v, "plots.gp");
-    snprintf(cmd, sizeof cmd, "gnuplot '%s/plots.gp' 2>/dev/null", v->dir);
-    return system(cmd) == 0;
+    for (int k = 0; k < npng; k++)
+        report_tmp(v, png[k]);
+    snprintf(path, sizeof path, "%s/plots.gp", v->dir);
+    ok = run_gnuplot(script, script + strlen(path));
+    for (int k = 0; ok && k < npng; k++)
+        report_commit(v, png[k]);
+    return ok;
 }
 
 /* "%.*g", or what an undefined (NaN) or unbounded figure means. */
@@ -406,7 +483,8 @@ void cli_validate_write(const cli_validate *v)
         fprintf(fp, "(gnuplot failed: no plots.)\n");
     close_in(fp, v, "index.md");
     snprintf(path, sizeof path, "%s/verdict.json", v->dir);
-    if (json_dump_file(j, path, JSON_INDENT(2) | JSON_PRESERVE_ORDER))
+    if (json_dump_file(j, report_tmp(v, "verdict.json"), JSON_INDENT(2) | JSON_PRESERVE_ORDER))
         cli_die(1, "-o: cannot write %s", path);
+    report_commit(v, "verdict.json");
     json_decref(j);
 }

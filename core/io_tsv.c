@@ -244,13 +244,18 @@ static int read_row(const char *path, size_t lineno, char *line, int ncol, int v
     return NL_OK;
 }
 
-/* fgets that refuses a line longer than the buffer (it would be split). */
+/* fgets that refuses a line longer than the buffer (it would be split)
+ * and binary bytes. */
 static char *get_line(char *line, int size, FILE *fp, const char *path, size_t lineno, int *st)
 {
     if (!fgets(line, size, fp))
         return NULL;
-    if (!strchr(line, '\n') && !feof(fp)) {
-        *st = NL_ERROR(NL_EINPUT, "%s:%zu: expected lines shorter than %d characters", path, lineno, size - 1);
+    if (!strchr(line, '\n') && !feof(fp)) { /* a full buffer: a NUL byte stops strlen short of it */
+        if (strlen(line) + 1 < (size_t)size)
+            *st = NL_ERROR(NL_EINPUT, "%s:%zu: expected text, found a NUL byte (a binary file that is not EXR or PNG?)",
+                           path, lineno);
+        else
+            *st = NL_ERROR(NL_EINPUT, "%s:%zu: expected lines shorter than %d characters", path, lineno, size - 1);
         return NULL;
     }
     return line;

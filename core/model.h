@@ -109,7 +109,8 @@ double nl_model_spectrum(const nl_model *m, int dim, const double *f);
  * radial frequency w (cycles per unit), by the Hankel transform of Lewis
  * 1987 eq. (13) with GSL quadrature and Bessel functions (4D uses the model's
  * 3D profile, which is the same function of |lag|).  NAN on failure (dim
- * outside 1..4, R(0) not positive, quadrature not converged).  Slow: up to
+ * outside 1..4, R(0) not positive, quadrature not converged, |R| still
+ * above 1e-12 R(0) at lag 1e7, where no transform exists).  Slow: up to
  * thousands of evaluations of R per frequency.  The continuous part only
  * (the nugget, a value at one lag, has no weight in the integral). */
 double nl_model_spectrum_iso(const nl_model *m, int dim, double w);

@@ -168,7 +168,8 @@ double nl_model_power_acf(const nl_model *m, int dim, double r)
  *     S(w) = 2 pi w^(1 - n/2) int_0^inf R(r) J_{n/2 - 1}(2 pi w r) r^(n/2) dr,
  * for w > 0 (J_{-1/2}(x) = sqrt(2 / (pi x)) cos x in 1D), and
  *     S(0) = (surface of the unit sphere) int_0^inf R(r) r^(n-1) dr,
- * by GSL adaptive quadrature up to the lag beyond which |R| < 1e-12 R(0). */
+ * by GSL adaptive quadrature up to the lag beyond which |R| < 1e-12 R(0)
+ * (NaN when R has not fallen that low by lag 1e7). */
 struct hankel_arg {
     const nl_model *m;
     int dim;   /* the model's dimension (<= 3) for R */
@@ -196,11 +197,16 @@ static double spectrum_iso(const nl_model *m, int dim, double w)
     gsl_function F = {hankel_integrand, &a};
     if (!(r0 > 0) || dim < 1 || dim > 4)
         return NAN;
-    for (double t = 1e-3; t < 1e7; t *= 1.25) {
+    double t = 1e-3;
+    for (; t < 1e7; t *= 1.25) {
         double lag[3] = {t, 0, 0};
         if (fabs(nl_model_acf(m, a.dim, lag)) >= 1e-12 * r0)
             rmax = t * 1.25;
     }
+    /* R not below 1e-12 R(0) at the last lag tried (cos(t)): no transform to
+     * integrate, and minutes of Bessel functions over 1e7 lags to find it */
+    if (rmax >= t)
+        return NAN;
     ws = gsl_integration_workspace_alloc(4000);
     if (!ws)
         return NAN;

@@ -1,6 +1,7 @@
 /* Clouds (Stam and Fiume 1991): kriged shape + noise density, light volume,
  * ray marching. */
 #include "cloud_internal.h"
+#include "../analysis/krige_local.h"
 #include "../core/nl_error.h"
 #include "../synth/fft.h"
 #include "../synth/sparse_point.h"
@@ -221,6 +222,26 @@ static int check_camera(const nl_cloud_scene *s, double size)
     return NL_OK;
 }
 
+/* The work of the volumes, in covariance evaluations (about 3e7 a second):
+ * the shape kriges every grid sample from all n points (G^3 n, after an
+ * O(n^3) factorisation), and the light marches from every grid sample
+ * toward the sun (about G steps of some 7 evaluations each).  Refused: more
+ * points than krige takes in one neighbourhood (NL_KRIGE_LOCAL_MAX), and
+ * over CLOUD_MAX_WORK (about half a minute). */
+#define CLOUD_MAX_WORK 1e9
+static int check_work(const nl_cloud_scene *s)
+{
+    double G = (double)s->grid, work = G * G * G * ((double)s->npoints + 7 * G);
+    if (s->npoints > NL_KRIGE_LOCAL_MAX)
+        return NL_ERROR(NL_EINVAL, "cloud: \"points\": the shape kriges with all %zu points at once; expected at most "
+                        "%d (as krige's neighbourhoods; O(n^3))", s->npoints, NL_KRIGE_LOCAL_MAX);
+    if (work > CLOUD_MAX_WORK)
+        return NL_ERROR(NL_EINVAL, "cloud: \"grid\" %zu with %zu points: about %.3g covariance evaluations for the "
+                        "shape and light volumes (grid^3 (points + 7 grid)); expected at most %.0e (about half a "
+                        "minute): a smaller grid or fewer points", s->grid, s->npoints, work, CLOUD_MAX_WORK);
+    return NL_OK;
+}
+
 static int check_scene(const nl_cloud_scene *s)
 {
     double size = 0;
@@ -268,21 +289,29 @@ static int check_scene(const nl_cloud_scene *s)
     if ((st = nl_size_check(3, vs, (s->noise_kind == NL_CLOUD_NOISE_POINT ? 3 : 2) * sizeof(double), 1, NULL)) ||
         (st = nl_size_check(3, vn, 2 * sizeof(double), 1, NULL)))
         return st;
-    return NL_OK;
+    return check_work(s);
 }
 
 int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double))
 {
+    return nl_render_cloud_info(s, rgb, lum, progress, NULL);
+}
+
+int nl_render_cloud_info(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double),
+                         nl_krige_info *info)
+{
     ctx c;
     camera cm;
     int st;
+    if (info)
+        memset(info, 0, sizeof *info);
     if ((st = check_scene(s)))
         return st;
     memset(&c, 0, sizeof c);
     c.s = s;
     memcpy(cm.sun, s->sun, sizeof cm.sun);
     normalize(cm.sun);
-    if ((st = nl_cloud_shape_volume(s, &c.shape, &cm.step)) ||
+    if ((st = nl_cloud_shape_volume(s, &c.shape, &cm.step, info)) ||
         (st = s->noise_kind == NL_CLOUD_NOISE_POINT
                   ? nl_synth_sparse_point_alloc(s->noise, s->noise_density, s->seed, s->lo, s->hi, &c.pn)
                   : noise_volume(s, &c.noise)) ||

@@ -35,6 +35,7 @@
 extern "C" {
 #endif
 
+#include "../analysis/krige.h"
 #include "../core/model.h"
 
 #include <stddef.h>
@@ -75,13 +76,22 @@ enum { NL_CLOUD_NOISE_GRID = 0, NL_CLOUD_NOISE_POINT = 1 };
  * Errors: NL_EINVAL for a scene without pixels, data points or models, a
  * grid or noise grid below 2 samples, an empty box, a threshold outside
  * [0, 1), a period <= 0, a fov outside (0, 180) degrees, or a zero sun
- * direction, rotation angles beyond +-360 degrees or not finite, and
+ * direction, rotation angles beyond +-360 degrees or not finite, more
+ * than NL_KRIGE_LOCAL_MAX (2000) data points or a grid G with
+ * G^3 (points + 7 G) above 1e9 (the work of the shape and light volumes
+ * in covariance evaluations: about half a minute), and
  * those of the point noise (synth/sparse_point.h) and of the kriging plan of the shape covariance
  * (analysis/krige.h); NL_ENOTPD for a noise model that is not positive
  * definite on its grid (synth/fft.h); NL_ENOMEM.
  * Thread safety: reentrant for models that are thread-safe (not expr:);
  * runs its own OpenMP loops. */
 int nl_render_cloud(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double));
+
+/* nl_render_cloud, and *info (may be NULL) the shape's kriging plan
+ * (analysis/krige.h): a singular system solved by the pseudo-inverse is
+ * flagged there (info->pseudo_inverse, info->rcond). */
+int nl_render_cloud_info(const nl_cloud_scene *s, unsigned char *rgb, double *lum, void (*progress)(double),
+                         nl_krige_info *info);
 
 /* The kriged shape K of scene s exactly as nl_render_cloud plans it (same
  * kriging, rotation and data), evaluated directly (no grid) at count points

@@ -29,7 +29,8 @@ int nl_cloud_shape_plan(const nl_cloud_scene *s, nl_cloud_shape *sh);
 int nl_cloud_shape_at(const nl_cloud_shape *sh, const double *p, double *K, double *lambda);
 void nl_cloud_shape_free(nl_cloud_shape *sh);
 
-/* The shape sampled on a G^3 grid over the box; *step the smallest grid step. */
-int nl_cloud_shape_volume(const nl_cloud_scene *s, nl_cloud_vol *v, double *step);
+/* The shape sampled on a G^3 grid over the box; *step the smallest grid
+ * step; *info (may be NULL) the kriging plan's (a pseudo-inverse flagged). */
+int nl_cloud_shape_volume(const nl_cloud_scene *s, nl_cloud_vol *v, double *step, nl_krige_info *info);
 
 #endif

@@ -91,13 +91,15 @@ void nl_cloud_shape_free(nl_cloud_shape *sh)
     sh->kp = NULL;
 }
 
-int nl_cloud_shape_volume(const nl_cloud_scene *s, nl_cloud_vol *v, double *step)
+int nl_cloud_shape_volume(const nl_cloud_scene *s, nl_cloud_vol *v, double *step, nl_krige_info *info)
 {
     nl_cloud_shape sh;
     size_t G = s->grid;
     int st;
     if ((st = nl_cloud_shape_plan(s, &sh)))
         return st;
+    if (info)
+        nl_krige_plan_info(sh.kp, info);
     *step = 1e300;
     for (int a = 0; a < 3; a++) {
         v->n[a] = G, v->lo[a] = s->lo[a], v->d[a] = (s->hi[a] - s->lo[a]) / (double)(G - 1);

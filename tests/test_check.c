@@ -4,6 +4,8 @@
 
 #include <criterion/criterion.h>
 #include <math.h>
+#include <string.h>
+#include <time.h>
 
 static nl_check run(const char *spec, int dim)
 {
@@ -364,4 +366,31 @@ Test(check_cli, says_why_and_a_valid_neighbour)
     cr_assert_eq(run_noiselab("check --acf 'expr:cos(10*r)*exp(-r)' --dim 2", out, sizeof out, err, sizeof err), 0);
     cr_expect(strstr(out, "why") && strstr(out, "2D spectrum") && strstr(out, "is negative at |k| ="), "%s", out);
     cr_expect(strstr(out, "expr:cos(10*r)*exp(-r);sep"), "%s", out);
+}
+
+/* Work bounded on a profile that never decays (cos(t)): the radial spectrum
+ * of R is not integrated over 1e7 lags (its transform does not exist:
+ * NaN, skipped), so the check of the model takes well under a second
+ * instead of a minute; and eq. (14) at a lag of ten thousand periods is
+ * refused with NL_ETOOBIG naming the lag, within the subintervals' limit,
+ * while small lags still converge. */
+Test(check, non_decaying_profile_bounded)
+{
+    nl_model *m;
+    nl_check c;
+    double r[3] = {0, 1.5, 62831.85}, c2[3];
+    struct timespec t0, t1;
+    cr_assert_eq(nl_model_parse("expr:cos(t)", &m), NL_OK, "%s", nl_errmsg());
+    cr_expect(isnan(nl_model_spectrum_iso(m, 2, 1e-6)));
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    cr_assert_eq(nl_check_model(m, 2, &c), NL_OK, "%s", nl_errmsg());
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    cr_expect(!c.positive_definite, "cos(r) in 2D is not positive definite");
+    cr_expect((double)(t1.tv_sec - t0.tv_sec) < 10, "the check took %ld s", (long)(t1.tv_sec - t0.tv_sec));
+    cr_expect_eq(nl_check_matheron_2d(m, 3, r, c2), NL_ETOOBIG);
+    cr_expect(strstr(nl_errmsg(), "at lag 62831") != NULL, "%s", nl_errmsg());
+    cr_assert_eq(nl_check_matheron_2d(m, 2, r, c2), NL_OK, "%s", nl_errmsg());
+    /* C2(r) = J0(r) for C1 = cos (the 2D sweep of a cosine) */
+    cr_expect(fabs(c2[1] - 0.5118276717) < 1e-8, "C2(1.5) = %.10g, J0(1.5) = 0.5118276717", c2[1]);
+    nl_model_free(m);
 }

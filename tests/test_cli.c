@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static char out[1 << 16], err[1 << 12];
 
@@ -349,6 +350,31 @@ Test(cli, validate_reports)
     cr_assert_eq(rc, 3, "%s", err);
     cr_expect(strstr(out, "NOT positive definite") != NULL, "%s", out);
     cr_expect(strstr(out, "fft refused") != NULL, "%s", out);
+}
+
+/* validate -o: never into the root folder, into an existing folder that
+ * holds files only with --force (which replaces the report's own files and
+ * keeps the others), and the refusal leaves the folder as it was. */
+Test(cli, validate_refuses_folders)
+{
+    char path[512];
+    FILE *fp;
+    snprintf(path, sizeof path, "%s/vf", scratch_dir());
+    cr_assert_eq(mkdir(path, 0755), 0);
+    snprintf(path, sizeof path, "%s/vf/keep.txt", scratch_dir());
+    fp = fopen(path, "w");
+    cr_assert_not_null(fp);
+    fputs("kept\n", fp);
+    fclose(fp);
+    bad("validate --acf markov --dim 1 --size 64 --realizations 4 -o vf", "exists and is not empty");
+    bad("validate --acf markov --dim 1 --size 64 --realizations 4 -o / --force", "root folder");
+    snprintf(path, sizeof path, "%s/vf/index.md", scratch_dir());
+    cr_expect(!file_exists(path), "a refused run wrote into the folder");
+    cr_assert_eq(run_noiselab("validate --acf markov:scale=4 --dim 1 --size 64 --realizations 4 --tolerance 100 -o vf --force",
+                              out, sizeof out, err, sizeof err), 0, "%s", err);
+    cr_expect(file_exists(path), "--force: no index.md");
+    snprintf(path, sizeof path, "%s/vf/keep.txt", scratch_dir());
+    cr_expect(file_exists(path), "--force removed a file that was not the report's");
 }
 
 Test(cli, card)

@@ -3,6 +3,7 @@
  * exact), every NL_E* code of the header is triggered, and a failed read
  * leaves no pointers behind. */
 #include "../core/nl_error.h"
+#include "../render/cloud.h"
 #include "../render/cloud_scene.h"
 #include "starve.h"
 #include "util.h"
@@ -101,4 +102,49 @@ Test(cloud_scene, out_of_memory)
     }
     cr_expect_eq(st, NL_ENOMEM, "status %d: %s", st, nl_errmsg());
     cr_expect_null(s.points);
+}
+
+/* The work of a render is bounded before it starts: more points than krige
+ * takes at once (2000), or a grid whose shape and light volumes cost over
+ * 1e9 covariance evaluations (G^3 (points + 7 G): 1.9e9 at G = 128), are
+ * refused at once; a singular shape system (each point given twice) is
+ * rendered by the pseudo-inverse and says so in the info, as krige does. */
+Test(cloud_scene, work_refused_and_singular_flagged)
+{
+    nl_cloud_scene s;
+    nl_krige_info info;
+    unsigned char rgb[8 * 6 * 3];
+    char *text;
+    size_t len;
+    FILE *f = open_memstream(&text, &len);
+    fprintf(f, "{\"size\": [8, 6], \"box\": [[-1,-2,-3],[1,2,3]], \"acf\": \"gauss:scale=0.6\", \"grid\": 8, "
+               "\"noise\": {\"acf\": \"markov:scale=0.1\", \"period\": 2.385, \"grid\": 8}, \"camera\": "
+               "{\"position\": [0,0,-4], \"look_at\": [0,0.125,0]}, \"sun\": [0.3,1,-0.5], \"points\": [");
+    for (int i = 0; i < 2001; i++)
+        fprintf(f, "%s[%.4f, %.4f, %.4f, 1]", i ? ", " : "", 0.001 * i - 1, 0.5, 0.25);
+    fprintf(f, "]}");
+    fclose(f);
+    cr_assert_eq(nl_cloud_scene_read(scratch_file("many.json", text), &s), NL_OK, "%s", nl_errmsg());
+    cr_expect_eq(nl_render_cloud_info(&s, rgb, NULL, NULL, &info), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "at most 2000") != NULL, "%s", nl_errmsg());
+    nl_cloud_scene_free(&s);
+    free(text);
+    cr_assert_eq(nl_cloud_scene_read(scratch_file("grid.json", "{" BASE ", \"grid\": 128}"), &s), NL_OK, "%s",
+                 nl_errmsg());
+    cr_expect_eq(nl_render_cloud(&s, rgb, NULL, NULL), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "\"grid\" 128") != NULL, "%s", nl_errmsg());
+    nl_cloud_scene_free(&s);
+    cr_assert_eq(nl_cloud_scene_read(scratch_file("dup.json",
+                                                  "{\"size\": [8, 6], \"box\": [[-1,-2,-3],[1,2,3]], \"points\": "
+                                                  "[[0.25,0,0,1.5],[0.25,0,0,1.5],[0,0.5,0,-2]], \"acf\": "
+                                                  "\"gauss:scale=0.6\", \"grid\": 8, \"noise\": {\"acf\": "
+                                                  "\"markov:scale=0.1\", \"period\": 2.385, \"grid\": 8}, \"camera\": "
+                                                  "{\"position\": [0,0,-4], \"look_at\": [0,0.125,0]}, \"sun\": "
+                                                  "[0.3,1,-0.5]}"),
+                                     &s),
+                 NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_render_cloud_info(&s, rgb, NULL, NULL, &info), NL_OK, "%s", nl_errmsg());
+    cr_expect(info.pseudo_inverse, "a duplicated point: expected the pseudo-inverse flagged");
+    cr_expect(info.rcond < NL_KRIGE_RCOND_MIN, "rcond %g", info.rcond);
+    nl_cloud_scene_free(&s);
 }

@@ -88,16 +88,40 @@ Test(hygiene, field_files_read_once_from_a_fifo)
     nl_field_free(f), nl_field_free(g);
 }
 
-/* Reading an endless input stops at the memory limit with NL_ETOOBIG. */
+/* Reading an endless input is bounded: text is parsed as it is read, so
+ * endless rows stop at the memory limit with NL_ETOOBIG (the samples, not
+ * the text, count), and endless bytes that are not text (/dev/zero) at
+ * the first line with NL_EINPUT. */
 Test(hygiene, endless_input_is_bounded)
 {
     nl_field *f = NULL;
+    char path[64];
+    int fd[2], st;
+    pid_t child;
     setenv("NOISELAB_MEMORY_LIMIT", "1000000", 1);
-    int st = nl_field_read("/dev/zero", &f, NULL);
+    st = nl_field_read("/dev/zero", &f, NULL);
+    cr_assert_eq(st, NL_EINPUT, "got %d: %s", st, nl_errmsg());
+    cr_assert_null(f);
+    cr_assert(strstr(nl_errmsg(), "/dev/zero") != NULL, "%s", nl_errmsg());
+    cr_assert_eq(pipe(fd), 0);
+    if ((child = fork()) == 0) { /* endless rows, until the reader closes */
+        static const char rows[] = "1.5\n2.25\n-3\n0.5\n";
+        close(fd[0]);
+        signal(SIGPIPE, SIG_DFL);
+        if (write(fd[1], "value\n", 6) == 6)
+            while (write(fd[1], rows, sizeof rows - 1) > 0)
+                ;
+        _exit(0);
+    }
+    close(fd[1]);
+    snprintf(path, sizeof path, "/dev/fd/%d", fd[0]);
+    st = nl_field_read(path, &f, NULL);
+    close(fd[0]);
+    waitpid(child, NULL, 0);
     unsetenv("NOISELAB_MEMORY_LIMIT");
     cr_assert_eq(st, NL_ETOOBIG, "got %d: %s", st, nl_errmsg());
     cr_assert_null(f);
-    cr_assert(strstr(nl_errmsg(), "/dev/zero") != NULL, "%s", nl_errmsg());
+    cr_assert(strstr(nl_errmsg(), "samples do not fit") != NULL, "%s", nl_errmsg());
 }
 
 Test(hygiene, folder_as_input_is_refused)

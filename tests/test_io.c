@@ -8,6 +8,7 @@
 #include <criterion/criterion.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -220,4 +221,30 @@ Test(io, tsv_round_trip_with_provenance)
     cr_assert_eq(access(path("q.tsv"), F_OK), -1);
     nl_field_free(f);
     nl_field_free(g);
+}
+
+/* A text field is parsed as it is read, never held whole: an endless
+ * input (/dev/zero, a pipe that never ends its first line) is refused at
+ * its first line, by what is wrong with it, not after reading up to the
+ * memory limit (100 MB here, so that a reader that holds the file fails
+ * with NL_ETOOBIG rather than the NL_EINPUT asked for); a series piped in
+ * still reads. */
+Test(io, text_inputs_parsed_as_read)
+{
+    nl_field *f;
+    int fd[2];
+    setenv("NOISELAB_MEMORY_LIMIT", "100000000", 1);
+    cr_expect_eq(nl_field_read("/dev/zero", &f, NULL), NL_EINPUT, "%s", nl_errmsg());
+    cr_expect(strstr(nl_errmsg(), "NUL byte") != NULL, "%s", nl_errmsg());
+    cr_expect_null(f);
+    cr_assert_eq(pipe(fd), 0);
+    cr_assert(write(fd[1], "t\tvalue\n0\t1.5\n1\t-2.25\n2\t3\n", 26) == 26);
+    close(fd[1]);
+    char path[64];
+    snprintf(path, sizeof path, "/dev/fd/%d", fd[0]);
+    cr_assert_eq(nl_field_read(path, &f, NULL), 0, "%s", nl_errmsg());
+    cr_expect_eq(f->count, 3);
+    cr_expect_eq(f->data[1], -2.25);
+    nl_field_free(f);
+    close(fd[0]);
 }

@@ -257,3 +257,28 @@ Test(krige, eval_grid_at_cell_centres)
     nl_field_free(e), nl_field_free(v);
     nl_krige_plan_free(p), nl_model_free(m);
 }
+
+/* A singular system (every point given twice) is solved by the
+ * pseudo-inverse up to NL_KRIGE_PINV_MAX points and flagged; above that its
+ * SVD (minutes at 2000 points) is refused with NL_ETOOBIG at once, naming
+ * the limit and the ways out. */
+Test(krige, pseudo_inverse_bounded)
+{
+    nl_model *m = test_model("markov:scale=0.3");
+    size_t n = NL_KRIGE_PINV_MAX + 2;
+    double *pts = malloc(2 * n * sizeof *pts), *val = malloc(n * sizeof *val);
+    nl_krige_plan *p;
+    nl_krige_info info;
+    for (size_t i = 0; i < n; i++) {
+        size_t k = i / 2; /* pairs of one point */
+        pts[2 * i] = (double)(k % 37) / 37.0, pts[2 * i + 1] = (double)(k / 37) / 37.0, val[i] = sin(2.385 * (double)k);
+    }
+    cr_expect_eq(nl_krige_plan_alloc(m, 2, n, pts, val, 0, 0, 0, &p), NL_ETOOBIG);
+    cr_expect(strstr(nl_errmsg(), "pseudo-inverse") != NULL, "%s", nl_errmsg());
+    cr_expect_null(p);
+    cr_assert_eq(nl_krige_plan_alloc(m, 2, 40, pts, val, 0, 0, 0, &p), NL_OK, "%s", nl_errmsg());
+    nl_krige_plan_info(p, &info);
+    cr_expect(info.pseudo_inverse);
+    nl_krige_plan_free(p), nl_model_free(m);
+    free(pts), free(val);
+}

@@ -188,3 +188,28 @@ Test(krige_local, refusals)
     cr_expect_null(k);
     nl_model_free(mod);
 }
+
+/* Cross-validation of values whose squared errors overflow is refused
+ * (NL_EINVAL naming the values) rather than summarised as inf and nan; the
+ * same data scaled into range give a finite summary. */
+Test(krige_local, cv_overflowing_values_refused)
+{
+    double pts[2 * NPTS], val[NPTS], pred[NPTS], var[NPTS];
+    nl_model *mod = test_model("markov:scale=0.2");
+    nl_krige_local_options o = {.nmax = 16, .drift = NL_DRIFT_CONSTANT};
+    nl_krige_local *k;
+    nl_krige_cv_summary s;
+    make_data(pts, val);
+    for (size_t i = 0; i < NPTS; i++)
+        val[i] *= 1e250;
+    cr_assert_eq(nl_krige_local_alloc(mod, 2, NPTS, pts, val, &o, &k), 0, "%s", nl_errmsg());
+    cr_expect_eq(nl_krige_local_cv(k, pred, var, &s), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "values run from") != NULL, "%s", nl_errmsg());
+    nl_krige_local_free(k);
+    for (size_t i = 0; i < NPTS; i++)
+        val[i] *= 1e-250;
+    cr_assert_eq(nl_krige_local_alloc(mod, 2, NPTS, pts, val, &o, &k), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_krige_local_cv(k, pred, var, &s), 0, "%s", nl_errmsg());
+    cr_expect(isfinite(s.rmse) && isfinite(s.var_error) && isfinite(s.var_z), "%g %g %g", s.rmse, s.var_error, s.var_z);
+    nl_krige_local_free(k), nl_model_free(mod);
+}

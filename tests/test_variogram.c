@@ -7,6 +7,7 @@
 #include "util.h"
 
 #include <criterion/criterion.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -239,4 +240,61 @@ Test(variogram, refusals)
     cr_expect_eq(nl_variogram_points(&p, &o, &v), NL_EINVAL);
     cr_expect(strstr(nl_errmsg(), "finite") != NULL, "%s", nl_errmsg());
     cr_expect_null(v);
+}
+
+/* Values whose squared differences summed over the pairs overflow are
+ * refused (NL_EINVAL naming the values) by the variogram of points and of a
+ * field alike, where an estimate would be inf; values just inside the bound
+ * sqrt(DBL_MAX / (n (n - 1))) give finite semivariances. */
+Test(variogram, overflowing_values_refused)
+{
+    double pts[8] = {0, 0, 1, 0, 0, 1, 1, 1}, val[4] = {1e200, -1e200, 3e199, -2e199};
+    nl_points p = {.dim = 2, .n = 4, .pts = pts, .val = val};
+    size_t n[2] = {2, 2};
+    double h[2] = {1, 1}, bound = sqrt(DBL_MAX / 12);
+    nl_field *f = nl_field_alloc(2, n, h, NULL);
+    nl_variogram_options o;
+    nl_variogram *v;
+    nl_variogram_options_default(&o);
+    o.cutoff = 2;
+    memcpy(f->data, val, sizeof val);
+    cr_expect_eq(nl_variogram_points(&p, &o, &v), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "values run from") != NULL, "%s", nl_errmsg());
+    cr_expect_null(v);
+    cr_expect_eq(nl_variogram_field(f, &o, &v), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "samples run from") != NULL, "%s", nl_errmsg());
+    val[0] = 0.49 * bound, val[1] = -0.49 * bound, val[2] = val[3] = 0;
+    memcpy(f->data, val, sizeof val);
+    cr_assert_eq(nl_variogram_points(&p, &o, &v), 0, "%s", nl_errmsg());
+    for (size_t k = 0; k < v->nbins; k++)
+        cr_expect(isfinite(v->gamma[k]), "bin %zu: %g", k, v->gamma[k]);
+    nl_variogram_free(v);
+    o.estimator = NL_VARIOGRAM_CRESSIE;
+    cr_assert_eq(nl_variogram_field(f, &o, &v), 0, "%s", nl_errmsg());
+    for (size_t k = 0; k < v->nbins; k++)
+        cr_expect(isfinite(v->gamma[k]), "bin %zu: %g", k, v->gamma[k]);
+    nl_variogram_free(v), nl_field_free(f);
+}
+
+/* The work is estimated before the pairs are walked: 100,000 points spread
+ * over the unit square have about half of their 5e9 pairs within the
+ * default cutoff (0.47), over the 1e9 limit: NL_ETOOBIG at once, naming the
+ * estimate; a small cutoff keeps them in. */
+Test(variogram, too_many_pairs_refused)
+{
+    size_t n = 100000;
+    nl_points p = {.dim = 2, .n = n};
+    unsigned long long s = 5;
+    nl_variogram_options o;
+    nl_variogram *v;
+    p.pts = malloc(2 * n * sizeof(double)), p.val = malloc(n * sizeof(double));
+    for (size_t i = 0; i < n; i++)
+        p.pts[2 * i] = unif(&s), p.pts[2 * i + 1] = unif(&s), p.val[i] = unif(&s);
+    nl_variogram_options_default(&o);
+    cr_expect_eq(nl_variogram_points(&p, &o, &v), NL_ETOOBIG);
+    cr_expect(strstr(nl_errmsg(), "pairs within the cutoff") != NULL, "%s", nl_errmsg());
+    o.cutoff = 0.002;
+    cr_expect_eq(nl_variogram_points(&p, &o, &v), 0, "%s", nl_errmsg());
+    nl_variogram_free(v);
+    free(p.pts), free(p.val);
 }
