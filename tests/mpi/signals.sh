@@ -1,5 +1,5 @@
 #!/bin/sh
-# A signal to mpirun during a 4096^2 synthesis (about 1 to 5 s here), $2 s
+# A signal to mpirun during an 8192^2 synthesis (about 6 s here), $2 s
 # after both of its processes started:
 # within 15 s no process of the run remains and neither the output nor its
 # temporary is left.  SIGINT and SIGTERM: mpirun sends its processes
@@ -16,7 +16,7 @@ left() { grep -lsxz "NL_SIGNAL_TEST=$1" /proc/[0-9]*/environ | cut -d/ -f3; }
 # $1 signal, $2 seconds after the start
 stop() {
     mark=$$-$1-$2
-    $MPIRUN -np 2 -x NL_SIGNAL_TEST=$mark -x OMP_NUM_THREADS=1 "$N" synth fft --acf markov:scale=20 --size 4096x4096 \
+    $MPIRUN -np 2 -x NL_SIGNAL_TEST=$mark -x OMP_NUM_THREADS=1 "$N" synth fft --acf markov:scale=20 --size 8192x8192 \
         -o "$w/big.h5" 2>"$w/err" &
     pid=$!
     # the offset counts from when both processes run (not from mpirun's own
