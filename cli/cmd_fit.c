@@ -111,6 +111,9 @@ static void parse_fix(void *obj, const char *label, const char *s)
         cli_die(2, "%s: expected at most %d, got \"%s\" beyond them", label, NL_FIT_MAX_FIX, s);
     memcpy(a->names[k], s, (size_t)(eq - s));
     a->names[k][eq - s] = 0;
+    for (size_t j = 0; j < k; j++)
+        if (!strcmp(a->names[j], a->names[k]))
+            cli_die(2, "%s: %s given twice (\"%s\"); expected each parameter fixed once", label, a->names[k], s);
     a->o.fix_name[k] = a->names[k];
     a->o.fix_value[k] = cli_parse_double(label, eq + 1);
     a->o.nfix++;

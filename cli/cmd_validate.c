@@ -125,8 +125,9 @@ static const cli_opt rows[] = {
     CLI_U64("seed", cli_validate, o.seed), CLI_FLAG("force", cli_validate, force),
     /* the methods' options, as for synth */
     CLI_INT("levels", cli_validate, o.subdiv_levels, CLI_FROM_TO(1, 30)),
-    CLI_INT("neighborhood", cli_validate, o.subdiv_N, CLI_FROM_TO(1, 2147483647), .flags = CLI_AUTO),
-    CLI_POSITIVE("tol", cli_validate, o.subdiv_tol, .what = "number"),
+    CLI_INT("neighborhood", cli_validate, o.subdiv_N, CLI_FROM_TO(1, 2147483647), .flags = CLI_AUTO,
+            CLI_GIVEN(cli_validate, N_given)),
+    CLI_POSITIVE("tol", cli_validate, o.subdiv_tol, .what = "number", CLI_GIVEN(cli_validate, tol_given)),
     CLI_INT("random-neighborhoods", cli_validate, o.subdiv_random, CLI_FROM_TO(1, 256)),
     CLI_POSITIVE("density", cli_validate, o.sparse_density, .what = "number"),
     CLI_INT("radius", cli_validate, o.sparse_radius, CLI_FROM_TO(1, 4096)),
@@ -162,6 +163,11 @@ static void parse(int argc, char **argv, cli_validate *v)
     cli_opt_need("validate", rows, v);
     if (!v->dir && !v->json)
         cli_die(2, "validate: expected -o DIR, --json or both");
+    if (v->force && !v->dir)
+        cli_die(2, "--force: expected -o DIR (it lets the report replace files in an existing folder)");
+    if (v->tol_given && v->o.subdiv_N)
+        cli_die(2, "--tol %g: expected --neighborhood auto (the tolerance stops its growth), got --neighborhood %d%s",
+                v->o.subdiv_tol, v->o.subdiv_N, v->N_given ? "" : " (the default)");
     check_size(v);
     v->spec = acf ? acf : spec;
     v->spectral = spec != NULL;

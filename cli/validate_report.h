@@ -15,6 +15,7 @@ typedef struct {
     int dim;                 /* 1..3 */
     int json;                /* --json */
     int force;               /* --force: write into an existing folder that holds files */
+    int N_given, tol_given;  /* --neighborhood and --tol given */
     size_t N, M;             /* side, realizations */
     nl_validate_options o;   /* realizations, tolerance, method options */
     nl_model *m;             /* the parsed model */
