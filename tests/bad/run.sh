@@ -46,7 +46,7 @@ for file in "$@"; do
         n=$((n + 1))
         d="$work/case"
         rm -rf "$d" && mkdir "$d"
-        for f in "$work"/fix/*; do ln -s "$f" "$d/"; done
+        ln -s "$work"/fix/* "$d/"
         start=$(date +%s)
         (cd "$d" && timeout -k 5 "$secs" sh -c "$cmd" >"$work/out" 2>"$work/err" </dev/null)
         rc=$?
