@@ -28,6 +28,19 @@ static int grow(const char *path, unsigned char **buf, size_t *cap, size_t n, si
     return NL_OK;
 }
 
+/* One read(2) of at most k bytes into p, retried when interrupted; the
+ * count in *got (0 at the end of the file). */
+static int read_some(int fd, const char *path, void *p, size_t k, size_t *got)
+{
+    ssize_t r;
+    while ((r = read(fd, p, k)) < 0 && errno == EINTR)
+        ;
+    if (r < 0)
+        return NL_ERROR(NL_EINPUT, "%s: read failed: %s", path, strerror(errno));
+    *got = (size_t)r;
+    return NL_OK;
+}
+
 /* Read fd to its end into *buf (capacity *cap) after the n0 bytes already
  * there; the count in *len. */
 static int read_all(int fd, const char *path, unsigned char **buf, size_t *cap, size_t *len, size_t avail, size_t n0)
@@ -35,17 +48,14 @@ static int read_all(int fd, const char *path, unsigned char **buf, size_t *cap, 
     size_t n = n0;
     int st;
     for (;;) {
-        ssize_t got;
+        size_t got = 0;
         if (n + 1 >= *cap && (st = grow(path, buf, cap, n, avail)))
             return st;
-        got = read(fd, *buf + n, *cap - n - 1);
-        if (got < 0 && errno == EINTR)
-            continue;
-        if (got < 0)
-            return NL_ERROR(NL_EINPUT, "%s: read failed: %s", path, strerror(errno));
+        if ((st = read_some(fd, path, *buf + n, *cap - n - 1, &got)))
+            return st;
         if (got == 0)
             break;
-        n += (size_t)got;
+        n += got;
     }
     (*buf)[n] = 0;
     *len = n;
@@ -155,16 +165,13 @@ static int tsv_fd(const char *path, int fd, const unsigned char *head, size_t n,
 /* Up to 4 bytes from fd into head (fewer at the end of the file). */
 static int read_head(int fd, const char *path, unsigned char *head, size_t *n)
 {
+    size_t got = 1;
+    int st;
     *n = 0;
-    while (*n < 4) {
-        ssize_t got = read(fd, head + *n, 4 - *n);
-        if (got < 0 && errno == EINTR)
-            continue;
-        if (got < 0)
-            return NL_ERROR(NL_EINPUT, "%s: read failed: %s", path, strerror(errno));
-        if (got == 0)
-            break;
-        *n += (size_t)got;
+    while (*n < 4 && got > 0) {
+        if ((st = read_some(fd, path, head + *n, 4 - *n, &got)))
+            return st;
+        *n += got;
     }
     return NL_OK;
 }
