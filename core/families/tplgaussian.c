@@ -1,0 +1,32 @@
+/* tplgaussian: the truncated power law of Gaussian modes  (Hesse et al. 2014;
+ * GSTools' TPLGaussian): tplstable with alpha = 2. */
+#include "families_internal.h"
+
+enum { HURST, SCALE, LOWER };
+
+static const nl_family_param params[] = {
+    {.name = "hurst", .def = NAN, .placeholder = "H", .example = "0.5", .range = NL_RANGE_POSITIVE},
+    NL_PARAM_SCALE,
+    {.name = "lower", .def = 0, .range = NL_RANGE_NONNEG},
+    NL_PARAM_VAR, NL_PARAM_NUGGET,
+};
+
+static int check(const nl_model *m) { return nl_tpl_check(m, LOWER); }
+
+static double profile(const nl_model *m, double t)
+{
+    return m->var * nl_tpl_cor(m->p[HURST], 2, m->p[LOWER], m->scale, fabs(t));
+}
+
+const nl_family nl_family_tplgaussian = {
+    .name = "tplgaussian",
+    .aliases = "",
+    .formula = "R = var hurst E_(1+hurst)((|t|/scale)^2), E_s(x) = x^(s-1) Gamma(1-s, x) (lower = 0; scale the "
+               "upper cut-off)",
+    .validity = "positive definite in every dimension for hurst > 0 (a positive mixture of Gaussian correlations; "
+                "Hesse et al. 2014)",
+    .nparams = sizeof params / sizeof *params,
+    .params = params,
+    .check = check,
+    .profile = profile,
+};
