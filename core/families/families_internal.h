@@ -72,8 +72,9 @@ double nl_spectrum_euclid_hat(double var, double s, int D, double k);
  * (tplstable.c, Hesse et al. 2014). */
 double nl_tpl_cor(double h, double alpha, double lo, double hi, double r);
 
-/* NL_OK when the model's parameter `lower` (by index) is below its scale,
- * NL_EINVAL with a message otherwise (tplstable.c). */
-int nl_tpl_check(const nl_model *m, int lower);
+/* NL_OK when the model's parameter of index `lower` is below that of
+ * index `scale`, NL_EINVAL with a message otherwise (tplstable.c; a
+ * family's check runs before m->scale is set). */
+int nl_tpl_check(const nl_model *m, int scale, int lower);
 
 #endif

@@ -11,7 +11,7 @@ static const nl_family_param params[] = {
     NL_PARAM_VAR, NL_PARAM_NUGGET,
 };
 
-static int check(const nl_model *m) { return nl_tpl_check(m, LOWER); }
+static int check(const nl_model *m) { return nl_tpl_check(m, SCALE, LOWER); }
 
 static double profile(const nl_model *m, double t)
 {
