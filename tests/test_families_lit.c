@@ -245,9 +245,23 @@ Test(families_lit, special_cases_agree)
         cr_expect(close_to(acf1(c, r), cos(x), 1e-12, 1), "jbessel -1/2 at %g: %.17g vs cos %.17g", r, acf1(c, r),
                   cos(x));
     }
+    /* at 3 pi / 2, where GSL 2.7's J_1/2 is NaN */
+    {
+        nl_model *j = test_model("jbessel:nu=0.5");
+        cr_expect(close_to(acf1(j, 1.5 * M_PI), sin(1.5 * M_PI) / (1.5 * M_PI), 1e-12, 1), "at 3 pi/2: %g",
+                  acf1(j, 1.5 * M_PI));
+        nl_model_free(j);
+    }
     nl_model_free(a);
     nl_model_free(b);
     nl_model_free(c);
+    {
+        nl_model *h = test_model("hyperspherical:dim=1,scale=2");
+        double f[1] = {0.75}, ref = 8 / (9 * M_PI * M_PI);  /* the triangle's s (sin(pi f s) / (pi f s))^2 */
+        cr_expect(close_to(nl_model_spectrum(h, 1, f), ref, 1e-12, 1), "dim=1 at pi s f = 3 pi/2: %g, expected %g",
+                  nl_model_spectrum(h, 1, f), ref);
+        nl_model_free(h);
+    }
     /* (1 + r^2/alpha)^-alpha -> exp(-r^2) within r^4 / (2 alpha) */
     a = test_model("rational:alpha=1e6");
     b = test_model("gauss");
@@ -395,6 +409,9 @@ Test(families_lit, check_dim_follows_the_literature)
         {"bohman", {1, 0, 0}},
         {"dampedcos:lambda=0", {1, 0, 0}},
         {"dampedcos:lambda=0.95", {1, 0, 0}},
+        {"dampedcos:lambda=0.9999999", {1, 0, 0}},
+        {"dampedcos:lambda=1", {1, 1, 0}},
+        {"dampedcos:lambda=1.7320508", {1, 1, 0}},
         {"dampedcos:lambda=1.05", {1, 1, 0}},
         {"dampedcos:lambda=1.6454482671904334", {1, 1, 0}},
         {"dampedcos:lambda=1.7320508075688772", {1, 1, 1}},
