@@ -80,6 +80,25 @@ enum {
     NL_FAMILY_FILE = 1 << 4       /* the argument names a file that parsing the spec reads */
 };
 
+/* A peer's name for a family with the peer's own parameterisation: gstat's
+ * `Sph:psill=0.59,range=897`, GSTools' `Gaussian:len_scale=10`,
+ * RandomFields' `RMmatern:nu=1.5,scale=2`.  The spec takes the peer's keys
+ * (params[], ranges and defaults as for a family's own parameters) and
+ * the anisotropy keys; `convert` turns the peer's values into the
+ * family's.  A peer name whose parameters are the family's own is a word
+ * of nl_family.aliases instead. */
+typedef struct {
+    const char *name;              /* as written in a spec, e.g. "Sph" */
+    const char *peer;              /* whose name it is: "gstat", "GSTools", "RandomFields" */
+    const char *formula;           /* R in the peer's parameters, as the peer documents it */
+    size_t nparams;
+    const nl_family_param *params; /* the peer's keys: name, default (NAN: required), range */
+    /* From the peer's values q[0..nparams-1] to the family's parameters
+     * p[] (by index of the family's params[]; p holds the family's
+     * defaults). */
+    void (*convert)(const double *q, double *p);
+} nl_family_alias;
+
 typedef struct nl_family {
     const char *name;          /* as written in a spec */
     const char *aliases;       /* other names a spec may use (the peers'), space separated; "" none */
@@ -117,6 +136,9 @@ typedef struct nl_family {
     int (*check_dim)(const nl_model *m, int dim);
     /* d^2 R / dt^2 of the 1D profile at t; NULL: not known (NAN). */
     double (*acf_d2)(const nl_model *m, double t);
+    /* The peers' names with their own parameterisations (none: 0, NULL). */
+    size_t npeers;
+    const nl_family_alias *peers;
 } nl_family;
 
 /* The registered families, in registration order (core/families/list.h). */
@@ -126,6 +148,10 @@ const nl_family *nl_family_get(size_t i);
 /* The family a spec's name (before ':', len bytes) names, by name or
  * alias; NULL when none. */
 const nl_family *nl_family_find(const char *name, size_t len);
+
+/* The peer alias a spec's name (len bytes) names, with its family in
+ * *fam; NULL (and *fam untouched) when none. */
+const nl_family_alias *nl_family_find_peer(const char *name, size_t len, const nl_family **fam);
 
 /* The index of a parameter of f by name, or -1. */
 int nl_family_param_index(const nl_family *f, const char *name);

@@ -95,6 +95,14 @@ typedef struct {
     int start_per_scale;
     double fit_lo, fit_hi;
 } nl_family_param;
+typedef struct {
+    const char *name;
+    const char *peer;
+    const char *formula;
+    size_t nparams;
+    const nl_family_param *params;
+    void (*convert)(const double *q, double *p);
+} nl_family_alias;
 typedef struct nl_family {
     const char *name;
     const char *aliases;
@@ -115,6 +123,8 @@ typedef struct nl_family {
     int (*isotropic)(const nl_model *m);
     int (*check_dim)(const nl_model *m, int dim);
     double (*acf_d2)(const nl_model *m, double t);
+    size_t npeers;
+    const nl_family_alias *peers;
 } nl_family;
 size_t nl_family_count(void);
 const nl_family *nl_family_get(size_t i);
