@@ -297,8 +297,12 @@ Test(family, closed_form_spectra, .timeout = 120)
         cr_assert_eq(nl_model_parse(spec, &m), NL_OK, "%s: %s", spec, nl_errmsg());
         for (int dim = 1; dim <= 3; dim++) {
             double zero[3] = {0, 0, 0}, s0 = nl_model_spectrum(m, dim, zero), smax = s0;
+            double far[3] = {1e6, 0, 0};
+            /* R still above 1e-9 R(0) at lag 1e6 (sinc's 1/r): the transform's
+             * quadrature does not converge (tests/test_families_lit.c
+             * integrates those band-limited spectra instead) */
             if (isnan(s0) || (f->max_dim && dim > f->max_dim) || nl_model_check_dim(m, dim) != NL_OK ||
-                nl_model_acf(m, dim, zero) <= 0)
+                nl_model_acf(m, dim, zero) <= 0 || fabs(nl_model_acf(m, dim, far)) > 1e-9 * nl_model_acf(m, dim, zero))
                 continue;
             for (double w = 0.01; w < 2; w *= 1.7)
                 smax = fmax(smax, nl_model_spectrum(m, dim, (double[3]){w, 0, 0}));

@@ -13,7 +13,7 @@ enum { GAMMA };
 static const nl_family_param params[] = {
     /* fits: gamma from 0.05 (no decay a data set sees) to 50 (a Gaussian
      * the scale absorbs) */
-    {.name = "gamma", .def = NAN, .placeholder = "G", .example = "1", .range = NL_RANGE_POSITIVE, .start = 1,
+    {.name = "gamma", .def = NAN, .placeholder = "G", .example = "3", .range = NL_RANGE_POSITIVE, .start = 1,
      .fit_lo = 0.05, .fit_hi = 50},
     NL_PARAM_SCALE, NL_PARAM_VAR, NL_PARAM_NUGGET,
 };

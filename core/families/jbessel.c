@@ -17,7 +17,7 @@ enum { NU };
 static const nl_family_param params[] = {
     /* fits: nu from 0.05 to GSTools' 50 (nu in [-1/2, 0) is reached by
      * fixing it) */
-    {.name = "nu", .def = NAN, .placeholder = "N", .example = "1", .range = NL_RANGE_ANY, .start = 1,
+    {.name = "nu", .def = NAN, .placeholder = "N", .example = "4.5", .range = NL_RANGE_ANY, .start = 1,
      .fit_lo = 0.05, .fit_hi = 50},
     NL_PARAM_SCALE, NL_PARAM_VAR, NL_PARAM_NUGGET,
 };

@@ -9,7 +9,7 @@ enum { ALPHA };
 
 static const nl_family_param params[] = {
     /* fits: GSTools' bounds for Rational */
-    {.name = "alpha", .def = NAN, .placeholder = "A", .example = "1", .range = NL_RANGE_POSITIVE, .start = 1,
+    {.name = "alpha", .def = NAN, .placeholder = "A", .example = "3", .range = NL_RANGE_POSITIVE, .start = 1,
      .fit_lo = 0.5, .fit_hi = 50},
     NL_PARAM_SCALE, NL_PARAM_VAR, NL_PARAM_NUGGET,
 };
