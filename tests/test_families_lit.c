@@ -12,6 +12,9 @@
 
 #include <criterion/criterion.h>
 #include <gsl/gsl_integration.h>
+#include <gsl/gsl_sf_bessel.h>
+#include <gsl/gsl_sf_gamma.h>
+#include <gsl/gsl_sf_hyperg.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -71,6 +74,16 @@ static const rf_case rf_cases[] = {
     {"hyperspherical:dim=1,scale=4", 4, 1, "RMaskey(alpha=1, scale=4)"},
     {"superspherical:kappa=1,scale=2.5", 2.5, 1, "RMspheric(scale=2.5)"},
     {"superspherical:kappa=0.5,scale=2.5", 2.5, 1, "RMcircular(scale=2.5)"},
+    /* RandomFields' names with their own keys */
+    {"RMaskey:alpha=1.7,var=2,scale=1.5", 1.5, 2, "RMaskey(alpha=1.7, var=2, scale=1.5)"},
+    {"RMgengneiting:kappa=2,mu=1.5,var=1.7,scale=3", 3, 1.7, "RMgengneiting(kappa=2, mu=1.5, var=1.7, scale=3)"},
+    {"RMgengneiting:kappa=3,mu=0.5,scale=3", 3, 1, "RMgengneiting(kappa=3, mu=0.5, scale=3)"},
+    {"RMdampedcos:lambda=2,var=1.7,scale=3", 3, 1.7, "RMdampedcos(lambda=2, var=1.7, scale=3)"},
+    {"RMbessel:nu=0.8,var=1.7,scale=3", 3, 1.7, "RMbessel(nu=0.8, var=1.7, scale=3)"},
+    {"RMwave:var=1.7,scale=3", 3, 1.7, "RMwave(var=1.7, scale=3)"},
+    {"RMdagum:beta=0.9,gamma=0.2,var=1.7,scale=3", 3, 1.7, "RMdagum(beta=0.9, gamma=0.2, var=1.7, scale=3)"},
+    {"RMcauchy:gamma=1.5,var=1.7,scale=3", 3, 1.7, "RMcauchy(gamma=1.5, var=1.7, scale=3)"},
+    {"RMlgd:alpha=0.3,beta=2.5,var=1.7,scale=3", 3, 1.7, "RMlgd(alpha=0.3, beta=2.5, var=1.7, scale=3)"},
 };
 #define NRF (sizeof rf_cases / sizeof *rf_cases)
 
@@ -108,6 +121,34 @@ Test(families_lit, r_matches_randomfields)
             double r = lags[i] * rf_cases[c].scale, ours = acf1(m, r), ref = v[c * NLAGS + i];
             cr_expect(close_to(ours, ref, 1e-10, rf_cases[c].var), "%s at %g: %.17g, RFcov %.17g", rf_cases[c].spec,
                       r, ours, ref);
+        }
+        nl_model_free(m);
+    }
+}
+
+/* gstat's Wav and Hol (sinc's peer names) against variogramLine(covariance
+ * = TRUE), which prints 17 digits of psill - gamma(h). */
+Test(families_lit, gstat_wave_and_hole)
+{
+    static const char *spec[] = {"Wav:psill=1.7,range=3", "Hol:psill=1.7,range=3", "Wav:psill=0.4,range=0.5"};
+    static double v[3 * NLAGS + 1];
+    char script[4096];
+    size_t len;
+    if (!gstat_available("Wav and Hol against variogramLine"))
+        return;
+    len = (size_t)snprintf(script, sizeof script, "suppressMessages(library(gstat))\nh <- 3 * c(");
+    for (size_t i = 0; i < NLAGS; i++)
+        len += (size_t)snprintf(script + len, sizeof script - len, "%s%.17g", i ? "," : "", lags[i]);
+    snprintf(script + len, sizeof script - len,
+             ")\nfor (m in list(vgm(1.7, 'Wav', 3), vgm(1.7, 'Hol', 3), vgm(0.4, 'Wav', 0.5)))\n"
+             "  cat(sprintf('%%.17g', variogramLine(m, dist_vector = h, covariance = TRUE)$gamma), '\\n')\n");
+    cr_assert_eq(gstat_run(script, v, 3 * NLAGS + 1), (long)(3 * NLAGS), "gstat failed");
+    for (size_t c = 0; c < 3; c++) {
+        nl_model *m = test_model(spec[c]);
+        double var = acf1(m, 0);
+        for (size_t i = 0; i < NLAGS; i++) {
+            double r = 3 * lags[i], ours = acf1(m, r), ref = v[c * NLAGS + i];
+            cr_expect(close_to(ours, ref, 1e-10, var), "%s at %g: %.17g, gstat %.17g", spec[c], r, ours, ref);
         }
         nl_model_free(m);
     }
@@ -168,6 +209,81 @@ Test(families_lit, tpl_matches_its_mode_mixture)
             double r = lags[i] * c[k].hi, ours = acf1(m, r);
             double ref = var * (r == 0 ? 1 : tpl_reference(c[k].h, c[k].alpha, c[k].lo, c[k].hi, r));
             cr_expect(close_to(ours, ref, 1e-9, var), "%s at %g: %.17g, quadrature %.17g", c[k].spec, r, ours, ref);
+        }
+        nl_model_free(m);
+    }
+}
+
+/* GSTools' cor(h), h = r / len_scale (rescale 1 for these models), as
+ * gstools/covmodel/models.py writes it: JBessel Gamma(nu+1) J_nu(h) /
+ * (h/2)^nu, Rational (1 + h^2/alpha)^-alpha, TPLSimple (1-h)_+^nu,
+ * Hyper- and SuperSpherical 1 - h 2F1(1/2, -nu; 3/2; h^2) / 2F1(1/2, -nu;
+ * 3/2; 1), nu = (dim-1)/2 for HyperSpherical, 2F1 at 1 by Gauss's sum
+ * Gamma(3/2) Gamma(1+nu) / Gamma(3/2+nu). */
+static double gstools_cor(const char *model, double h, double nu)
+{
+    if (strcmp(model, "JBessel") == 0)
+        return h == 0 ? 1 : exp(lgamma(nu + 1) - nu * log(h / 2)) * gsl_sf_bessel_Jnu(nu, h);
+    if (strcmp(model, "Rational") == 0)
+        return pow(1 + h * h / nu, -nu);
+    if (strcmp(model, "TPLSimple") == 0)
+        return pow(fmax(1 - h, 0), nu);
+    if (h >= 1)
+        return 0;
+    if (strcmp(model, "HyperSpherical") == 0)
+        nu = (nu - 1) / 2;
+    return 1 - h * gsl_sf_hyperg_2F1(0.5, -nu, 1.5, h * h) /
+                   exp(lgamma(1.5) + lgamma(1 + nu) - lgamma(1.5 + nu));
+}
+
+/* GSTools' names with len_scale (2F1 near h = 1 and J_nu by GSL: 1e-10 of
+ * the sill); the TPL models by GSTools' combination of the two cut-offs,
+ * len_up = len_low + len_scale, each term the mode mixture above. */
+Test(families_lit, gstools_names)
+{
+    static const struct {
+        const char *model;
+        double shape;
+    } c[] = {{"JBessel", 1.5}, {"JBessel", 0.3}, {"Rational", 0.7}, {"Rational", 12}, {"TPLSimple", 2.5},
+             {"HyperSpherical", 3}, {"HyperSpherical", 2}, {"HyperSpherical", 6}, {"SuperSpherical", 1.7},
+             {"SuperSpherical", 0.25}};
+    static const char *key[] = {"nu", "nu", "alpha", "alpha", "nu", "dim", "dim", "dim", "nu", "nu"};
+    double var = 1.7, len = 3;
+    for (size_t k = 0; k < sizeof c / sizeof *c; k++) {
+        char spec[128];
+        snprintf(spec, sizeof spec, "%s:var=%g,len_scale=%g,%s=%g", c[k].model, var, len, key[k], c[k].shape);
+        nl_model *m = test_model(spec);
+        for (size_t i = 0; i < NLAGS; i++) {
+            double r = lags[i] * len, ours = acf1(m, r), ref = var * gstools_cor(c[k].model, lags[i], c[k].shape);
+            cr_expect(close_to(ours, ref, 1e-10, var), "%s at %g: %.17g, GSTools' cor %.17g", spec, r, ours, ref);
+        }
+        nl_model_free(m);
+    }
+    static const struct {
+        const char *spec;
+        double h, alpha, len, low;
+    } t[] = {
+        {"TPLGaussian:var=1.7,len_scale=3", 0.5, 2, 3, 0},
+        {"TPLGaussian:var=1.7,len_scale=3,hurst=0.3,len_low=1", 0.3, 2, 3, 1},
+        {"TPLExponential:var=1.7,len_scale=3", 0.25, 1, 3, 0},
+        {"TPLExponential:var=1.7,len_scale=2,hurst=0.6,len_low=0.5", 0.6, 1, 2, 0.5},
+        {"TPLStable:var=1.7,len_scale=3", 0.5, 1.5, 3, 0},
+        {"TPLStable:var=1.7,len_scale=3,hurst=0.2,alpha=0.8,len_low=2", 0.2, 0.8, 3, 2},
+    };
+    for (size_t k = 0; k < sizeof t / sizeof *t; k++) {
+        nl_model *m = test_model(t[k].spec);
+        double up = t[k].low + t[k].len, wu = pow(up, 2 * t[k].h), wl = pow(t[k].low, 2 * t[k].h);
+        for (size_t i = 0; i < NLAGS; i++) {
+            double r = lags[i] * up, ours = acf1(m, r), ref;
+            if (r == 0)
+                ref = 1;
+            else if (t[k].low == 0)
+                ref = tpl_reference(t[k].h, t[k].alpha, 0, up, r);
+            else  /* GSTools: (up^2H cor(r; up) - low^2H cor(r; low)) / (up^2H - low^2H) */
+                ref = (wu * tpl_reference(t[k].h, t[k].alpha, 0, up, r) -
+                       wl * tpl_reference(t[k].h, t[k].alpha, 0, t[k].low, r)) / (wu - wl);
+            cr_expect(close_to(ours, 1.7 * ref, 1e-9, 1.7), "%s at %g: %.17g, GSTools' form %.17g", t[k].spec, r,
+                      ours, 1.7 * ref);
         }
         nl_model_free(m);
     }

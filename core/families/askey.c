@@ -32,6 +32,34 @@ static int check_dim(const nl_model *m, int dim)
     return NL_OK;
 }
 
+/* The peers' keys: RandomFields' RMaskey(alpha, var, scale), GSTools'
+ * TPLSimple(var, len_scale, nugget, nu) (nu's default that of a 3D model,
+ * (d+1)/2). */
+static const nl_family_param rf_params[] = {
+    NL_PARAM_VAR, NL_PARAM_SCALE, NL_PARAM_NUGGET,
+    {.name = "alpha", .def = NAN, .placeholder = "A", .example = "2", .range = NL_RANGE_POSITIVE},
+};
+static const nl_family_param gstools_params[] = {
+    NL_PARAM_VAR, NL_PEER_LEN_SCALE, NL_PARAM_NUGGET,
+    {.name = "nu", .def = 2, .range = NL_RANGE_POSITIVE},
+};
+
+/* q: variance, length, nugget, exponent */
+static void from_peer(const double *q, double *p)
+{
+    p[NU] = q[3];
+    p[1] = q[1];
+    p[2] = q[0];
+    p[3] = q[2];
+}
+
+static const nl_family_alias peers[] = {
+    {.name = "RMaskey", .peer = "RandomFields", .formula = "var (1 - h/scale)^alpha for h < scale", .nparams = 4,
+     .params = rf_params, .convert = from_peer},
+    {.name = "TPLSimple", .peer = "GSTools", .formula = "var (1 - h/len_scale)^nu for h < len_scale", .nparams = 4,
+     .params = gstools_params, .convert = from_peer},
+};
+
 const nl_family nl_family_askey = {
     .name = "askey",
     .aliases = "tplsimple",
@@ -40,6 +68,8 @@ const nl_family nl_family_askey = {
     .validity = "positive definite in d dimensions iff nu >= (d+1)/2 (Askey 1973; Zastavnyi 2006; Gneiting 2002)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
     .profile = profile,
     .check_dim = check_dim,
 };

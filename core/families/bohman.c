@@ -46,7 +46,7 @@ static int check_dim(const nl_model *m, int dim)
 
 const nl_family nl_family_bohman = {
     .name = "bohman",
-    .aliases = "",
+    .aliases = "RMbohman",
     .formula = "R = var ((1-a) cos(pi a) + sin(pi a)/pi) for a = |t|/scale < 1, else 0; 1D S = var 8 scale "
                "cos^2(pi f scale) / (pi^2 (1 - 4 f^2 scale^2)^2)",
     .flags = NL_FAMILY_FIT,

@@ -63,7 +63,7 @@ static double spectrum(const nl_model *m, int dim, const double *f)
 
 const nl_family nl_family_cauchy = {
     .name = "cauchy",
-    .aliases = "",
+    .aliases = "RMcauchy",
     .formula = "R = var (1 + a^2)^-gamma, a = |t|/scale; S = var 2 (pi^(1/2) scale)^d / Gamma(gamma) (q/2)^nu "
                "K_nu(q), q = 2 pi scale |f|, nu = gamma - d/2",
     .flags = NL_FAMILY_FIT,

@@ -23,7 +23,7 @@ static double profile(const nl_model *m, double t)
 
 const nl_family nl_family_dagum = {
     .name = "dagum",
-    .aliases = "",
+    .aliases = "RMdagum",
     .formula = "R = var (1 - (a^beta / (1 + a^beta))^(gamma/beta)), a = |t|/scale, 0 < beta <= 1, 0 < gamma <= 1",
     .flags = NL_FAMILY_FIT,
     .validity = "positive definite in every dimension for 0 < beta <= 1 and 0 < gamma <= 1 (Berg, Mateu and "

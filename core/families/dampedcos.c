@@ -57,7 +57,7 @@ static int check_dim(const nl_model *m, int dim)
 
 const nl_family nl_family_dampedcos = {
     .name = "dampedcos",
-    .aliases = "",
+    .aliases = "RMdampedcos",
     .formula = "R = var exp(-lambda a) cos(a), a = |t|/scale; 1D S = the Lorentzian of scale/lambda at +-1/(2 pi "
                "scale); 3D S in closed form",
     .flags = NL_FAMILY_FIT,

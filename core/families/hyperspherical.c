@@ -86,6 +86,27 @@ static int check_dim(const nl_model *m, int dim)
     return NL_OK;
 }
 
+/* GSTools' HyperSpherical(var, len_scale, nugget) of field dimension dim
+ * (default 3). */
+static const nl_family_param gstools_params[] = {
+    NL_PARAM_VAR, NL_PEER_LEN_SCALE, NL_PARAM_NUGGET,
+    {.name = "dim", .def = 3, .range = NL_RANGE_POSITIVE},
+};
+
+static void from_gstools(const double *q, double *p)
+{
+    p[D] = q[3];
+    p[1] = q[1];
+    p[2] = q[0];
+    p[3] = q[2];
+}
+
+static const nl_family_alias peers[] = {
+    {.name = "HyperSpherical", .peer = "GSTools",
+     .formula = "var (1 - x 2F1(1/2, -(dim-1)/2; 3/2; x^2) / 2F1(1/2, -(dim-1)/2; 3/2; 1)), x = h/len_scale < 1",
+     .nparams = 4, .params = gstools_params, .convert = from_gstools},
+};
+
 const nl_family nl_family_hyperspherical = {
     .name = "hyperspherical",
     .aliases = "",
@@ -94,6 +115,8 @@ const nl_family nl_family_hyperspherical = {
     .validity = "positive definite in d dimensions iff d <= dim (Matern 1960; Gneiting 1999)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
     .check = check,
     .profile = profile,
     .spectrum = spectrum,

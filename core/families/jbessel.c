@@ -113,9 +113,29 @@ static int check_dim(const nl_model *m, int dim)
     return NL_OK;
 }
 
+/* GSTools' JBessel(var, len_scale, nugget, nu), nu's default that of a 3D
+ * model (d/2). */
+static const nl_family_param gstools_params[] = {
+    NL_PARAM_VAR, NL_PEER_LEN_SCALE, NL_PARAM_NUGGET,
+    {.name = "nu", .def = 1.5, .range = NL_RANGE_ANY},
+};
+
+static void from_gstools(const double *q, double *p)
+{
+    p[NU] = q[3];
+    p[1] = q[1];
+    p[2] = q[0];
+    p[3] = q[2];
+}
+
+static const nl_family_alias peers[] = {
+    {.name = "JBessel", .peer = "GSTools", .formula = "var Gamma(nu+1) J_nu(x) / (x/2)^nu, x = h/len_scale",
+     .nparams = 4, .params = gstools_params, .convert = from_gstools},
+};
+
 const nl_family nl_family_jbessel = {
     .name = "jbessel",
-    .aliases = "",
+    .aliases = "RMbessel",
     .formula = "R = var Gamma(nu+1) (2/a)^nu J_nu(a), a = |t|/scale; S = var Gamma(nu+1) / (pi^(d/2) "
                "Gamma(nu+1-d/2) k0^d) (1 - |f|^2/k0^2)^(nu-d/2) for |f| < k0 = 1/(2 pi scale), else 0",
     .flags = NL_FAMILY_FIT,
@@ -123,6 +143,8 @@ const nl_family nl_family_jbessel = {
                 "nu >= 0 in 2D, nu >= 1/2 in 3D (Yaglom 1987; Chiles and Delfiner 1999)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
     .check = check,
     .profile = profile,
     .spectrum = spectrum,

@@ -35,7 +35,7 @@ static int check_dim(const nl_model *m, int dim)
 
 const nl_family nl_family_lgd = {
     .name = "lgd",
-    .aliases = "",
+    .aliases = "RMlgd",
     .formula = "R = var (1 - beta/(alpha+beta) a^alpha) for a = |t|/scale <= 1, var alpha/(alpha+beta) a^-beta "
                "beyond",
     .flags = NL_FAMILY_FIT,

@@ -26,6 +26,25 @@ static double spectrum(const nl_model *m, int dim, const double *f)
     return nl_spectrum_cauchy(m->var, m->scale * sqrt(al), al, dim, nl_family_fnorm(m, dim, f));
 }
 
+/* GSTools' Rational(var, len_scale, nugget, alpha), alpha's default 1. */
+static const nl_family_param gstools_params[] = {
+    NL_PARAM_VAR, NL_PEER_LEN_SCALE, NL_PARAM_NUGGET,
+    {.name = "alpha", .def = 1, .range = NL_RANGE_POSITIVE},
+};
+
+static void from_gstools(const double *q, double *p)
+{
+    p[ALPHA] = q[3];
+    p[1] = q[1];
+    p[2] = q[0];
+    p[3] = q[2];
+}
+
+static const nl_family_alias peers[] = {
+    {.name = "Rational", .peer = "GSTools", .formula = "var (1 + (h/len_scale)^2 / alpha)^-alpha", .nparams = 4,
+     .params = gstools_params, .convert = from_gstools},
+};
+
 const nl_family nl_family_rational = {
     .name = "rational",
     .aliases = "",
@@ -35,6 +54,8 @@ const nl_family nl_family_rational = {
     .validity = "positive definite in every dimension for alpha > 0 (a normal scale mixture)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
     .profile = profile,
     .spectrum = spectrum,
 };

@@ -39,6 +39,27 @@ static int check_dim(const nl_model *m, int dim)
     return NL_OK;
 }
 
+/* GSTools' SuperSpherical(var, len_scale, nugget, nu), nu our kappa, its
+ * default that of a 3D model ((d-1)/2). */
+static const nl_family_param gstools_params[] = {
+    NL_PARAM_VAR, NL_PEER_LEN_SCALE, NL_PARAM_NUGGET,
+    {.name = "nu", .def = 1, .range = NL_RANGE_NONNEG},
+};
+
+static void from_gstools(const double *q, double *p)
+{
+    p[KAPPA] = q[3];
+    p[1] = q[1];
+    p[2] = q[0];
+    p[3] = q[2];
+}
+
+static const nl_family_alias peers[] = {
+    {.name = "SuperSpherical", .peer = "GSTools",
+     .formula = "var (1 - x 2F1(1/2, -nu; 3/2; x^2) / 2F1(1/2, -nu; 3/2; 1)), x = h/len_scale < 1", .nparams = 4,
+     .params = gstools_params, .convert = from_gstools},
+};
+
 const nl_family nl_family_superspherical = {
     .name = "superspherical",
     .aliases = "",
@@ -48,6 +69,8 @@ const nl_family nl_family_superspherical = {
                 "below it for whole 2 kappa + 1 not (Gneiting 1999)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
     .profile = profile,
     .spectrum = spectrum,
     .check_dim = check_dim,

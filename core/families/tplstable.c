@@ -86,6 +86,32 @@ static double profile(const nl_model *m, double t)
     return m->var * nl_tpl_cor(m->p[HURST], m->p[ALPHA], m->p[LOWER], m->scale, fabs(t));
 }
 
+/* GSTools' TPLStable(var, len_scale, nugget, hurst, alpha, len_low) with
+ * its defaults; its upper cut-off len_up = len_low + len_scale is our
+ * scale. */
+static const nl_family_param gstools_params[] = {
+    NL_PARAM_VAR, NL_PEER_LEN_SCALE, NL_PARAM_NUGGET,
+    {.name = "hurst", .def = 0.5, .range = NL_RANGE_POSITIVE},
+    {.name = "alpha", .def = 1.5, .range = NL_RANGE_UPTO, .hi = 2, .why = "above 2 the modes are not positive definite"},
+    {.name = "len_low", .def = 0, .range = NL_RANGE_NONNEG},
+};
+
+static void from_gstools(const double *q, double *p)
+{
+    p[HURST] = q[3];
+    p[ALPHA] = q[4];
+    p[SCALE] = q[5] + q[1];
+    p[LOWER] = q[5];
+    p[4] = q[0];
+    p[5] = q[2];
+}
+
+static const nl_family_alias peers[] = {
+    {.name = "TPLStable", .peer = "GSTools",
+     .formula = "var b E_(1+b)((h/len_up)^alpha), b = 2 hurst/alpha, len_up = len_low + len_scale (len_low = 0)",
+     .nparams = 6, .params = gstools_params, .convert = from_gstools},
+};
+
 const nl_family nl_family_tplstable = {
     .name = "tplstable",
     .aliases = "",
@@ -95,6 +121,8 @@ const nl_family nl_family_tplstable = {
                 "correlations; Hesse et al. 2014)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
     .check = check,
     .profile = profile,
 };

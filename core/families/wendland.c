@@ -55,6 +55,29 @@ static int check_dim(const nl_model *m, int dim)
     return NL_OK;
 }
 
+/* RandomFields' RMgengneiting(kappa, mu, var, scale): its exponent
+ * beta = mu + 2 kappa + 1/2 is our mu + k. */
+static const nl_family_param rf_params[] = {
+    NL_PARAM_VAR, NL_PARAM_SCALE, NL_PARAM_NUGGET,
+    {.name = "kappa", .def = NAN, .placeholder = "K", .example = "1", .range = NL_RANGE_NONNEG},
+    {.name = "mu", .def = NAN, .placeholder = "M", .example = "1.5", .range = NL_RANGE_NONNEG},
+};
+
+static void from_gengneiting(const double *q, double *p)
+{
+    p[K] = q[3];
+    p[MU] = q[4] + q[3] + 0.5;
+    p[2] = q[1];
+    p[3] = q[0];
+    p[4] = q[2];
+}
+
+static const nl_family_alias peers[] = {
+    {.name = "RMgengneiting", .peer = "RandomFields",
+     .formula = "var (1-r)^b P_kappa(r), b = mu + 2 kappa + 1/2, r = h/scale < 1 (RandomFields' polynomials)",
+     .nparams = 5, .params = rf_params, .convert = from_gengneiting},
+};
+
 const nl_family nl_family_wendland = {
     .name = "wendland",
     .aliases = "",
@@ -65,6 +88,8 @@ const nl_family nl_family_wendland = {
                 "Zastavnyi 2006)",
     .nparams = sizeof params / sizeof *params,
     .params = params,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
     .check = check,
     .profile = profile,
     .check_dim = check_dim,
