@@ -132,7 +132,10 @@ typedef struct nl_family {
     /* Is R (or S) a function of |lag| alone when no anisotropy key is
      * given?  NULL: yes. */
     int (*isotropic)(const nl_model *m);
-    /* Dimension checks beyond max_dim (NL_OK or NL_EINVAL); NULL: none. */
+    /* Dimension checks beyond max_dim: NL_OK, NL_ENOTPD where the family
+     * is known not to be positive definite in dim with these parameters
+     * (e.g. askey with nu < (d+1)/2), NL_EINVAL for other reasons; NULL:
+     * none. */
     int (*check_dim)(const nl_model *m, int dim);
     /* d^2 R / dt^2 of the 1D profile at t; NULL: not known (NAN). */
     double (*acf_d2)(const nl_model *m, double t);

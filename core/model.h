@@ -124,8 +124,11 @@ int nl_model_is_isotropic(const nl_model *m);
 double nl_model_acf_d2(const nl_model *m, double t);
 
 /* Check that the model can be used in `dim` dimensions (e.g. an image model
- * has no 3D table, spectral models take no anisotropy keys).  NL_OK or
- * NL_EINVAL with a message. */
+ * has no 3D table, spectral models take no anisotropy keys).  NL_OK,
+ * NL_ENOTPD with a message where the family is known not to be positive
+ * definite in dim with these parameters (askey, wendland, dampedcos,
+ * jbessel, lgd, bohman, hyperspherical, superspherical: core/family.h's
+ * check_dim), or NL_EINVAL with a message. */
 int nl_model_check_dim(const nl_model *m, int dim);
 
 /* One entry of the model catalogue printed by `noiselab models`, made from

@@ -27,7 +27,7 @@ static int check_dim(const nl_model *m, int dim)
 {
     double lo = 0.5 * (dim + 1);
     if (m->p[NU] < lo)
-        return NL_ERROR(NL_EINVAL, "%s: not positive definite in %dD: expected nu >= (d+1)/2 = %g (Askey 1973, "
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: expected nu >= (d+1)/2 = %g (Askey 1973, "
                         "Zastavnyi 2006), got nu=%g", m->spec, dim, lo, m->p[NU]);
     return NL_OK;
 }

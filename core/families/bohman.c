@@ -39,7 +39,7 @@ static double spectrum(const nl_model *m, int dim, const double *f)
 static int check_dim(const nl_model *m, int dim)
 {
     if (dim > 1)
-        return NL_ERROR(NL_EINVAL, "%s: not positive definite in %dD: the Bohman model is valid in 1D only (its "
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: the Bohman model is valid in 1D only (its "
                         "%dD spectrum is negative at some frequencies)", m->spec, dim, dim);
     return NL_OK;
 }

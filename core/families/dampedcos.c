@@ -50,7 +50,7 @@ static int check_dim(const nl_model *m, int dim)
     double lo = dim == 1 ? 0 : 1 / tan(M_PI / (2 * dim));
     /* 1 / tan(pi/6) is sqrt(3) to the last bit or so: allow 4 ulps */
     if (m->p[LAMBDA] < lo * (1 - 1e-15))
-        return NL_ERROR(NL_EINVAL, "%s: not positive definite in %dD: expected lambda >= 1/tan(pi/(2d)) = %.6g "
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: expected lambda >= 1/tan(pi/(2d)) = %.6g "
                         "(Zastavnyi 1993), got lambda=%g", m->spec, dim, lo, m->p[LAMBDA]);
     return NL_OK;
 }

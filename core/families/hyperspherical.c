@@ -81,7 +81,7 @@ static double spectrum(const nl_model *m, int dim, const double *f)
 static int check_dim(const nl_model *m, int dim)
 {
     if (dim > m->p[D])
-        return NL_ERROR(NL_EINVAL, "%s: not positive definite in %dD: the spherical model of dim=%g is positive "
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: the spherical model of dim=%g is positive "
                         "definite up to %g dimensions (Gneiting 1999)", m->spec, dim, m->p[D], m->p[D]);
     return NL_OK;
 }

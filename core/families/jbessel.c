@@ -108,7 +108,7 @@ static int check_dim(const nl_model *m, int dim)
 {
     double lo = 0.5 * (dim - 2);
     if (m->p[NU] < lo)
-        return NL_ERROR(NL_EINVAL, "%s: not positive definite in %dD: expected nu >= (d-2)/2 = %g (Yaglom 1987), "
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: expected nu >= (d-2)/2 = %g (Yaglom 1987), "
                         "got nu=%g", m->spec, dim, lo, m->p[NU]);
     return NL_OK;
 }

@@ -28,7 +28,7 @@ static int check_dim(const nl_model *m, int dim)
 {
     double hi = 0.5 * (3 - dim);
     if (!(m->p[ALPHA] <= hi))
-        return NL_ERROR(NL_EINVAL, "%s: not positive definite in %dD: expected 0 < alpha <= (3-d)/2 = %g (Gneiting "
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: expected 0 < alpha <= (3-d)/2 = %g (Gneiting "
                         "and Schlather 2004), got alpha=%g", m->spec, dim, hi, m->p[ALPHA]);
     return NL_OK;
 }

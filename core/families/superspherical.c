@@ -34,7 +34,7 @@ static int check_dim(const nl_model *m, int dim)
 {
     double lo = 0.5 * (dim - 1);
     if (m->p[KAPPA] < lo)
-        return NL_ERROR(NL_EINVAL, "%s: not known to be positive definite in %dD: expected kappa >= (d-1)/2 = %g, "
+        return NL_ERROR(NL_ENOTPD, "%s: not known to be positive definite in %dD: expected kappa >= (d-1)/2 = %g, "
                         "got kappa=%g", m->spec, dim, lo, m->p[KAPPA]);
     return NL_OK;
 }

@@ -50,7 +50,7 @@ static int check_dim(const nl_model *m, int dim)
 {
     double lo = 0.5 * (dim + 1) + m->p[K];
     if (m->p[MU] < lo)
-        return NL_ERROR(NL_EINVAL, "%s: not positive definite in %dD: expected mu >= (d+1)/2 + k = %g (Wendland "
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: expected mu >= (d+1)/2 + k = %g (Wendland "
                         "1995, Zastavnyi 2006), got mu=%g", m->spec, dim, lo, m->p[MU]);
     return NL_OK;
 }
