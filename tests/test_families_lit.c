@@ -5,6 +5,7 @@
  * written here where it has not, closed-form spectra against the
  * numerical Hankel transform (nl_model_spectrum_iso), and the dimensions
  * each family is refused in. */
+#include "../analysis/fit.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
 #include "gstat.h"
@@ -579,5 +580,50 @@ Test(families_lit, out_of_range_parameters_are_refused)
         nl_model *m = NULL;
         cr_expect_eq(nl_model_parse(bad[k], &m), NL_EINVAL, "%s", bad[k]);
         cr_expect_null(m);
+    }
+}
+
+/* ---- fits ---- */
+
+/* WLS on an exact 1D semivariogram of 30 bins recovers every parameter of
+ * each fit family (var, scale and the shapes, all free) to 1e-4: the data
+ * have no noise, so only the optimiser's stopping rule (1e-5 relative in
+ * the parameters' transforms) separates the fit from the truth. */
+Test(families_lit, wls_recovers_the_parameters, .timeout = 120)
+{
+    static const struct {
+        const char *family, *spec;
+        double truth[4];  /* var, scale, then the shapes in params[] order */
+        int n;
+    } c[] = {
+        {"askey", "askey:nu=2.385,scale=9.3,var=1.4", {1.4, 9.3, 2.385}, 3},
+        {"bohman", "bohman:scale=8.7,var=1.4", {1.4, 8.7}, 2},
+        {"dampedcos", "dampedcos:lambda=0.63,scale=2.1,var=1.4", {1.4, 2.1, 0.63}, 3},
+        {"jbessel", "jbessel:nu=1.37,scale=1.9,var=1.4", {1.4, 1.9, 1.37}, 3},
+        {"sinc", "sinc:scale=1.9,var=1.4", {1.4, 1.9}, 2},
+        {"dagum", "dagum:beta=0.73,gamma=0.41,scale=3.2,var=1.4", {1.4, 3.2, 0.73, 0.41}, 4},
+        {"cauchy", "cauchy:gamma=1.63,scale=3.2,var=1.4", {1.4, 3.2, 1.63}, 3},
+        {"rational", "rational:alpha=2.3,scale=3.2,var=1.4", {1.4, 3.2, 2.3}, 3},
+        {"superspherical", "superspherical:kappa=1.71,scale=9.3,var=1.4", {1.4, 9.3, 1.71}, 3},
+        {"lgd", "lgd:alpha=0.61,beta=1.7,scale=3.2,var=1.4", {1.4, 3.2, 0.61, 1.7}, 4},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof *c; i++) {
+        double h[30], g[30], n[30], zero = 0;
+        nl_fit_options o = {.family = c[i].family};
+        nl_fit_result r;
+        nl_model *m = test_model(c[i].spec);
+        for (int k = 0; k < 30; k++) {
+            h[k] = 0.5 * k + 0.2;
+            g[k] = nl_model_acf(m, 1, &zero) - nl_model_acf(m, 1, &h[k]);
+            n[k] = 100 + 20 * k;
+        }
+        nl_model_free(m);
+        cr_assert_eq(nl_fit_variogram(h, g, n, 30, 1, &o, &r), NL_OK, "%s: %s", c[i].family, nl_errmsg());
+        cr_expect(r.converged, "%s", c[i].family);
+        cr_assert_eq(r.np, (size_t)c[i].n, "%s", c[i].family);
+        for (int k = 0; k < c[i].n; k++)
+            cr_expect(fabs(r.param[k].value - c[i].truth[k]) <= 1e-4 * c[i].truth[k], "%s: %s = %.10g, truth %g",
+                      c[i].family, r.param[k].name, r.param[k].value, c[i].truth[k]);
+        nl_fit_result_free(&r);
     }
 }
