@@ -9,6 +9,7 @@
 #include "../core/wk.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -87,7 +88,16 @@ static int plan_embedding(nl_synth_intrinsic_plan *p)
 {
     int st;
     double cell = p->h[0] * p->h[1], lo = INFINITY, hi = -INFINITY;
-    nl_field *R = nl_field_alloc(p->dim, p->info.m, p->h, &st), *S = NULL;
+    nl_field *R, *S = NULL;
+    /* alive at once: R, S, the transform's complex buffer (2), the plan's
+     * half spectrum and amplitudes (1) */
+    if ((st = nl_size_check(p->dim, p->info.m, sizeof(double), 5, NULL))) {
+        char why[256];
+        snprintf(why, sizeof why, "%s", nl_errmsg());
+        return NL_ERROR(st, "synth intrinsic: the embedding of %zux%zu samples (5 arrays of its size) does not "
+                        "fit: %s", p->info.m[0], p->info.m[1], why);
+    }
+    R = nl_field_alloc(p->dim, p->info.m, p->h, &st);
     if (R && !(S = nl_field_alloc(p->dim, p->info.m, p->h, &st)))
         nl_field_free(R), R = NULL;
     if (!R)
