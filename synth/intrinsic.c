@@ -71,13 +71,16 @@ static void sample_embedding(const nl_synth_intrinsic_plan *p, nl_field *R)
     for (size_t j = 0; j < m1; j++)
         for (size_t i = 0; i < m0; i++) {
             double v = 0, w0 = (double)nl_wrap(i, m0), w1 = (double)nl_wrap(j, m1);
-            for (int k1 = -1; k1 <= 1; k1++)
+            for (int k1 = -1; k1 <= 1; k1++) {
+                double y = (w1 + k1 * (double)m1) * p->h[1];
+                if (fabs(y) >= Rc * D)
+                    continue;
                 for (int k0 = -1; k0 <= 1; k0++) {
-                    double x = (w0 + k0 * (double)m0) * p->h[0], y = (w1 + k1 * (double)m1) * p->h[1];
-                    double s = sqrt(x * x + y * y) / D;
+                    double x = (w0 + k0 * (double)m0) * p->h[0], s = sqrt(x * x + y * y) / D;
                     if (s < Rc)
                         v += phi(p, beta, c0, s);
                 }
+            }
             R->data[j * m0 + i] = v;
         }
 }
