@@ -73,6 +73,8 @@ const nl_method_type nl_method_intrinsic = {
         "cut-off embedding plus a random plane; the field is 0 at the origin.\n"
         "Only intrinsic models; isotropic in 2D",
     .dims = 3,
-    .caps = NL_METHOD_MODEL | NL_METHOD_EXACT | NL_METHOD_NUGGET | NL_METHOD_INTRINSIC,
+    /* it represents a nugget too, but NL_METHOD_NUGGET lists the methods a
+     * stationary model with a nugget is sent to, which this one refuses */
+    .caps = NL_METHOD_MODEL | NL_METHOD_EXACT | NL_METHOD_INTRINSIC,
     .plan = plan, .execute = execute, .describe = describe, .report = report, .free = plan_free,
 };

@@ -91,9 +91,10 @@ static void loglog(const ensemble *e, int skip, double *slope, double *icept)
     *icept = (sy - *slope * sx) / k;
 }
 
-/* The largest |z| of the lags and of the slope and constant, for the model
- * 2 c |h|^alpha; prints the fit with its band. */
-static double largest_z(const ensemble *e, double alpha, double c, const char *what)
+/* The largest |z| of the lags and, without a nugget, of the slope and
+ * constant, for the model 2 (nugget + c |h|^alpha); prints the fit with
+ * its band. */
+static double largest_z(const ensemble *e, double alpha, double c, double nugget, const char *what)
 {
     double zmax = 0, b, a, jb[M], ja[M], mb = 0, ma = 0, sb = 0, sa = 0;
     for (size_t l = 0; l < e->L; l++) {
@@ -102,8 +103,10 @@ static double largest_z(const ensemble *e, double alpha, double c, const char *w
             mean += e->v[r][l] / M;
         for (int r = 0; r < M; r++)
             ss += (e->v[r][l] - mean) * (e->v[r][l] - mean);
-        zmax = fmax(zmax, fabs(mean - 2 * c * pow(h, alpha)) / sqrt(ss / (M - 1) / M));
+        zmax = fmax(zmax, fabs(mean - 2 * (nugget + c * pow(h, alpha))) / sqrt(ss / (M - 1) / M));
     }
+    if (nugget > 0)
+        return zmax;
     loglog(e, -1, &b, &a);
     for (int r = 0; r < M; r++)
         loglog(e, r, jb + r, ja + r), mb += jb[r] / M, ma += ja[r] / M;
@@ -116,22 +119,24 @@ static double largest_z(const ensemble *e, double alpha, double c, const char *w
     return fmax(zmax, fabs(a - log(2 * c)) / sa);
 }
 
-static void check(int dim, size_t n0, size_t n1, double alpha, double c)
+static void check(int dim, size_t n0, size_t n1, double alpha, double c, double nugget)
 {
     static ensemble e;
     char spec[128], what[256];
     e.dim = dim, e.n[0] = n0, e.n[1] = n1;
-    snprintf(spec, sizeof spec, "powvar:alpha=%g,c=%g", alpha, c);
+    snprintf(spec, sizeof spec, "powvar:alpha=%g,c=%g,nugget=%g", alpha, c, nugget);
     run(&e, spec);
     double zc = gsl_cdf_ugaussian_Qinv(1e-3 / (2.0 * (double)(e.L + 2)));
     snprintf(what, sizeof what, "%s on %zux%zu, %d realizations (band |z| <= %.2f)", spec, n0, n1, M, zc);
-    double z = largest_z(&e, alpha, c, what), zwrong = largest_z(&e, alpha + 0.2, c, what);
+    double z = largest_z(&e, alpha, c, nugget, what), zwrong = largest_z(&e, alpha + 0.2, c, nugget, what);
     cr_expect_leq(z, zc, "%s: largest |z| %.2f", what, z);
     cr_expect_gt(zwrong, zc, "%s: told alpha=%g, the test does not reject (|z| %.2f)", what, alpha + 0.2, zwrong);
 }
 
-Test(intrinsic_stat, power_variogram_2d_alpha_1, .timeout = 60) { check(2, 128, 128, 1.0, 1.0); }
-Test(intrinsic_stat, power_variogram_2d_alpha_1_5, .timeout = 60) { check(2, 128, 128, 1.5, 2.385); }
-Test(intrinsic_stat, power_variogram_2d_alpha_1_8, .timeout = 60) { check(2, 128, 128, 1.8, 1.0); }
-Test(intrinsic_stat, power_variogram_1d_alpha_0_5, .timeout = 60) { check(1, 1024, 1, 0.5, 1.0); }
-Test(intrinsic_stat, power_variogram_1d_alpha_1_5, .timeout = 60) { check(1, 1024, 1, 1.5, 0.7); }
+Test(intrinsic_stat, power_variogram_2d_alpha_1, .timeout = 60) { check(2, 128, 128, 1.0, 1.0, 0); }
+Test(intrinsic_stat, power_variogram_2d_alpha_1_5, .timeout = 60) { check(2, 128, 128, 1.5, 2.385, 0); }
+Test(intrinsic_stat, power_variogram_2d_alpha_1_8, .timeout = 60) { check(2, 128, 128, 1.8, 1.0, 0); }
+Test(intrinsic_stat, power_variogram_1d_alpha_0_5, .timeout = 60) { check(1, 1024, 1, 0.5, 1.0, 0); }
+Test(intrinsic_stat, power_variogram_1d_alpha_1_5, .timeout = 60) { check(1, 1024, 1, 1.5, 0.7, 0); }
+/* the nugget adds white noise: 2 gamma(h) = 2 (nugget + c |h|^alpha) off lag 0 */
+Test(intrinsic_stat, power_variogram_1d_nugget, .timeout = 60) { check(1, 1024, 1, 1.0, 0.5, 0.25); }
