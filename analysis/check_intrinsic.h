@@ -14,7 +14,7 @@
  * random plane (S all at f = 0), still valid.  alpha outside (0, 2] is
  * refused when the spec is parsed, so a parsed model is always valid: the
  * check reports the numbers.  The graph of a realization has fractal
- * (Hausdorff) dimension d + 1 - alpha/2 (Adler 1981, Theorem 8.4.1); the
+ * (Hausdorff) dimension d + 1 - alpha/2 (Adler 1981, ch. 8); the
  * field is nowhere mean-square differentiable for alpha < 2. */
 #ifndef NL_CHECK_INTRINSIC_H
 #define NL_CHECK_INTRINSIC_H

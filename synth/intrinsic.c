@@ -40,7 +40,7 @@ static size_t smooth_even(double x)
     }
 }
 
-/* Stein's cut-off covariance at the scaled lag s (Stein 2002, eq. (2)). */
+/* Stein's cut-off covariance at the scaled lag s (Stein 2002; synth/intrinsic.h). */
 static double phi(const nl_synth_intrinsic_plan *p, double beta, double c0, double s)
 {
     double R = p->info.cutoff;

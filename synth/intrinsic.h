@@ -7,7 +7,9 @@
  *     Cov(X_i, X_i+k) = c h^alpha (|k+1|^alpha - 2 |k|^alpha + |k-1|^alpha),
  * synthesised exactly by circulant embedding (the FFT synthesis of
  * synth/fft.h on a period M >= 2 (n - 2)) and summed: Z(0) = 0.  Exact for
- * every 0 < alpha <= 2.
+ * every 0 < alpha <= 2 (the embedding's eigenvalues are non-negative for
+ * fractional Gaussian noise: Craigmile 2003 for alpha <= 1, Dietrich and
+ * Newsam 1997 above; measured, and refused otherwise as in 2D).
  *
  * 2D (Stein 2002, "Fast and exact simulation of fractional Brownian
  * surfaces", JCGS 11:587-599; Gneiting, Sevcikova, Percival, Schlather and
@@ -16,13 +18,15 @@
  *     phi(s) = c0 - s^alpha + c2 s^2      0 <= s <= 1
  *            = beta (R - s)^3 / s          1 <= s <= R
  *            = 0                           s >= R
- * (Stein 2002, eq. (2)) is positive definite in R^2 for R = 1, beta = 0,
- * c2 = alpha/2, c0 = 1 - alpha/2 when alpha <= 1.5 and for R = 2 with
+ * is positive definite in R^2 for R = 1, beta = 0, c2 = alpha/2,
+ * c0 = 1 - alpha/2 when alpha <= 1.5 and for R = 2 with
  *     beta = alpha (2 - alpha) / (3 R (R^2 - 1)),
  *     c2 = (alpha - beta (R - 1)^2 (R + 2)) / 2,   c0 = beta (R - 1)^3 + 1 - c2
- * when 1.5 < alpha < 2 (Stein 2002, Theorem 1 and sec. 3; Gneiting et al.
- * 2006, eq. (3.3)); the constants make phi twice continuously differentiable
- * at s = 1.  Being compactly supported, phi is embedded exactly in a
+ * when 1.5 < alpha < 2 (Stein 2002; Gneiting et al. 2006, sec. 3, where
+ * R = 2 is shown to suffice for alpha up to 2).  The constants are those
+ * that make phi, phi' and phi'' continuous at s = 1 (rederived so here;
+ * R = 1 is the case beta = 0).  The plan measures the embedding's
+ * eigenvalues and refuses a negative one rather than trust this.  Being compactly supported, phi is embedded exactly in a
  * periodic grid of m_a >= n_a - 1 + R D / h_a samples per axis, whose
  * eigenvalues (the DFT of the periodized phi) are then non-negative
  * (Poisson summation of its non-negative spectrum).  On the grid, where s

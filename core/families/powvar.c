@@ -6,9 +6,10 @@
  * H = alpha/2, scaled).  Its "R" (core/model.h, Intrinsic models) is the
  * generalized covariance K(h) = -c |h|^alpha, which is conditionally
  * positive definite of order 0 for 0 < alpha <= 2 in every dimension
- * (Matheron 1973; Chiles and Delfiner 2012, sec. 4.5: |h|^alpha is the
- * variogram of a fractional Brownian field; above 2 it is not conditionally
- * negative definite, since gamma must grow slower than |h|^2). */
+ * (Matheron 1973, "The intrinsic random functions and their applications";
+ * Schoenberg 1938: |h|^alpha is conditionally negative definite iff
+ * exp(-s |h|^alpha) is positive definite for all s > 0, which holds in every
+ * dimension exactly for alpha <= 2; a variogram grows slower than |h|^2). */
 #include "families_internal.h"
 #include "../nl_error.h"
 
@@ -42,8 +43,10 @@ static double profile(const nl_model *m, double t)
  *     S(f) = c (alpha/2) Gamma((d + alpha)/2) / (pi^(alpha + d/2) Gamma(1 - alpha/2)) |f|^-(d + alpha),
  * f in cycles per unit (from the integral of (1 - cos k.h) |k|^-(d + alpha)
  * dk = |h|^alpha pi^(d/2) Gamma(1 - alpha/2) / (2^alpha (alpha/2) Gamma((d + alpha)/2)),
- * Yaglom 1987, sec. 23; Mandelbrot and Van Ness 1968 in 1D).  Positive for
- * 0 < alpha < 2 (check reads it); at alpha = 2 all of it sits at f = 0: NAN. */
+ * the spectral representation of an intrinsic random function, Matheron
+ * 1973; verified against gamma by quadrature in tests/test_intrinsic_model.c).
+ * Positive for 0 < alpha < 2 (check reads it); at alpha = 2 all of it sits
+ * at f = 0: NAN. */
 static double spectrum(const nl_model *m, int dim, const double *f)
 {
     double a = m->p[ALPHA], k2 = 0;
