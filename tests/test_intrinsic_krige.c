@@ -122,3 +122,36 @@ Test(intrinsic_krige, variogram_of_models)
     cr_expect(strstr(nl_errmsg(), "powvar is intrinsic (no covariance): use synth intrinsic"), "%s", nl_errmsg());
     nl_model_free(m), nl_model_free(s);
 }
+
+/* Leave-one-out cross-validation with the power variogram, global
+ * neighbourhood, against gstat's krige.cv: each left-out prediction and
+ * variance to 1e-10 relative (as above). */
+Test(intrinsic_krige, cross_validation_equals_gstat_on_meuse)
+{
+    if (!gstat_available("Meuse power-variogram krige.cv vs gstat"))
+        return;
+    double r[3 * NMEUSE + 2 * NMEUSE], pts[2 * NMEUSE], val[NMEUSE], pred[NMEUSE], var[NMEUSE], worst = 0;
+    long got = gstat_run("suppressMessages({library(sp); library(gstat)})\ndata(meuse)\n"
+                         "cat(sprintf('%.17g %.17g %.17g', meuse$x, meuse$y, log(meuse$zinc)), sep = '\\n')\n"
+                         "cv <- krige.cv(log(zinc) ~ 1, ~x + y, meuse, model = vgm(0.012, 'Pow', 0.58), "
+                         "verbose = FALSE)\ncat(sprintf('%.17g %.17g', cv$var1.pred, cv$var1.var), sep = '\\n')\n",
+                         r, 5 * NMEUSE);
+    cr_assert_eq(got, 5 * NMEUSE, "R's output");
+    for (size_t i = 0; i < NMEUSE; i++)
+        pts[2 * i] = r[3 * i], pts[2 * i + 1] = r[3 * i + 1], val[i] = r[3 * i + 2];
+    nl_model *m = test_model("powvar:alpha=0.58,c=0.012");
+    nl_krige_local_options o = {.nmax = 0, .drift = NL_DRIFT_CONSTANT};
+    nl_krige_local *k;
+    nl_krige_cv_summary s;
+    cr_assert_eq(nl_krige_local_alloc(m, 2, NMEUSE, pts, val, &o, &k), NL_OK, "%s", nl_errmsg());
+    cr_assert_eq(nl_krige_local_cv(k, pred, var, &s), NL_OK, "%s", nl_errmsg());
+    for (size_t i = 0; i < NMEUSE; i++) {
+        const double *g = r + 3 * NMEUSE + 2 * i;
+        double de = fabs(pred[i] - g[0]) / fabs(g[0]), dv = fabs(var[i] - g[1]) / g[1];
+        cr_expect_leq(de, 1e-10, "datum %zu: prediction %.17g, gstat %.17g", i, pred[i], g[0]);
+        cr_expect_leq(dv, 1e-10, "datum %zu: variance %.17g, gstat %.17g", i, var[i], g[1]);
+        worst = fmax(worst, fmax(de, dv));
+    }
+    fprintf(stderr, "cross-validation: largest relative difference from gstat %.3g\n", worst);
+    nl_krige_local_free(k), nl_model_free(m);
+}
