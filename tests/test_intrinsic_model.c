@@ -5,6 +5,7 @@
 #include "../analysis/check_intrinsic.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
+#include "gstat.h"
 #include "util.h"
 
 #include <criterion/criterion.h>
@@ -12,19 +13,52 @@
 #include <math.h>
 #include <string.h>
 
-Test(intrinsic_model, peers_names_and_range)
+/* The peers' names with their keys against the peers' own variograms:
+ * gstat's variogramLine(vgm(psill, "Pow", range, nugget)) and
+ * RandomFields' RFvariogram(RMfbm(alpha, var, scale)), printed by R with
+ * 17 digits; agreement to 1e-10 relative (one pow each side). */
+Test(intrinsic_model, peers_names_against_gstat_and_randomfields)
 {
-    const char *specs[] = {"powvar:alpha=1.385,c=2.5", "Pow:alpha=1.385,c=2.5", "RMfbm:alpha=1.385,c=2.5"};
-    double lag[2] = {2.5, -1.25};
-    for (int i = 0; i < 3; i++) {
-        nl_model *m = test_model(specs[i]);
-        cr_expect(nl_model_is_intrinsic(m), "%s", specs[i]);
-        cr_expect_float_eq(nl_model_variogram(m, 2, lag), 2.5 * pow(hypot(2.5, 1.25), 1.385), 1e-13, "%s", specs[i]);
+    const double h[5] = {0.37, 1, 2.2, 7.9, 21};
+    const char *specs[] = {"powvar:alpha=1.385,c=2.5,nugget=0.3", "Pow:psill=2.5,range=1.385,nugget=0.3",
+                           "RMfbm:alpha=0.7,var=2,scale=3"};
+    double want[3][5], v[10];
+    for (int i = 0; i < 5; i++)
+        want[0][i] = want[1][i] = 0.3 + 2.5 * pow(h[i], 1.385), want[2][i] = 2 * pow(h[i] / 3, 0.7);
+    if (gstat_available("Pow against gstat's variogramLine")) {
+        cr_assert_eq(gstat_run("suppressMessages(library(gstat))\n"
+                               "v <- variogramLine(vgm(2.5, 'Pow', 1.385, 0.3), dist_vector = c(0.37, 1, 2.2, 7.9, 21))\n"
+                               "cat(sprintf('%.17g', v$gamma), '\\n')\n"
+                               "if (requireNamespace('RandomFields', quietly = TRUE)) {\n"
+                               "  suppressMessages(library(RandomFields))\n"
+                               "  cat(sprintf('%.17g', RFvariogram(RMfbm(alpha = 0.7, var = 2, scale = 3), "
+                               "x = c(0.37, 1, 2.2, 7.9, 21))), '\\n')\n}\n",
+                               v, 10),
+                     10, "R's output (gstat and RandomFields)");
+        for (int i = 0; i < 5; i++) {
+            cr_expect_float_eq(v[i], want[1][i], 1e-10 * want[1][i], "gstat at %g: %.17g", h[i], v[i]);
+            cr_expect_float_eq(v[5 + i], want[2][i], 1e-10 * want[2][i], "RandomFields at %g: %.17g", h[i], v[5 + i]);
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        nl_model *m = test_model(specs[k]);
+        cr_expect(nl_model_is_intrinsic(m), "%s", specs[k]);
+        for (int i = 0; i < 5; i++) {
+            double lag[2] = {h[i] * 0.6, -h[i] * 0.8};
+            cr_expect_float_eq(nl_model_variogram(m, 2, lag), want[k][i], 1e-12 * want[k][i], "%s at %g", specs[k],
+                               h[i]);
+        }
         nl_model_free(m);
     }
+}
+
+Test(intrinsic_model, range_refused)
+{
     nl_model *m = NULL;
     cr_expect_eq(nl_model_parse("powvar:alpha=2.01", &m), NL_EINVAL);
     cr_expect(strstr(nl_errmsg(), "conditionally negative definite only for 0 < alpha <= 2"), "%s", nl_errmsg());
+    cr_expect_eq(nl_model_parse("Pow:psill=1,range=2.5", &m), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "range is the exponent"), "%s", nl_errmsg());
     cr_expect_eq(nl_model_parse("powvar:alpha=1,sep", &m), NL_EINVAL);
     cr_expect_eq(nl_model_parse("powvar", &m), NL_EINVAL);
 }

@@ -1,6 +1,6 @@
 /* powvar: the power variogram gamma(h) = c |h|^alpha, 0 < alpha <= 2
  * (Matheron 1973; gstat's vgm(c, "Pow", alpha), whose "range" is the
- * exponent; RandomFields' RMfbm(alpha) with var = c).  An intrinsic model:
+ * exponent; RandomFields' RMfbm(alpha, var, scale): peer aliases below).  An intrinsic model:
  * the field has stationary increments, E (Z(x+h) - Z(x))^2 = 2 gamma(h),
  * and no covariance (the fractional Brownian field of Hurst index
  * H = alpha/2, scaled).  Its "R" (core/model.h, Intrinsic models) is the
@@ -58,9 +58,35 @@ static double spectrum(const nl_model *m, int dim, const double *f)
            pow(k2, -(dim + a) / 2);
 }
 
+/* gstat's vgm(psill, "Pow", range, nugget): the "range" is the exponent
+ * (gstat refuses it above 2); RandomFields' RMfbm(alpha, var, scale):
+ * gamma = var (|h|/scale)^alpha (its RFvariogram), so c = var scale^-alpha. */
+static const nl_family_param gstat_params[] = {
+    NL_PEER_PSILL,
+    {.name = "range", .def = NAN, .placeholder = "A", .example = "1.5", .range = NL_RANGE_UPTO, .hi = 2,
+     .why = "gstat's Pow: the range is the exponent, a variogram only up to 2"},
+    NL_PARAM_NUGGET,
+};
+static const nl_family_param rf_params[] = {
+    {.name = "alpha", .def = NAN, .placeholder = "A", .example = "1.5", .range = NL_RANGE_UPTO, .hi = 2,
+     .why = "RMfbm: a variogram only for 0 < alpha <= 2"},
+    {.name = "var", .role = NL_ROLE_VARIANCE, .def = 1, .range = NL_RANGE_POSITIVE},
+    {.name = "scale", .role = NL_ROLE_SCALE, .def = 1, .range = NL_RANGE_POSITIVE},
+};
+
+static void from_gstat(const double *q, double *p) { p[C] = q[0], p[ALPHA] = q[1], p[2] = q[2]; }
+static void from_rf(const double *q, double *p) { p[ALPHA] = q[0], p[C] = q[1] * pow(q[2], -q[0]); }
+
+static const nl_family_alias peers[] = {
+    {.name = "Pow", .peer = "gstat", .formula = "psill h^range, 0 < range <= 2", .nparams = 3,
+     .params = gstat_params, .convert = from_gstat},
+    {.name = "RMfbm", .peer = "RandomFields", .formula = "var (h/scale)^alpha, 0 < alpha <= 2", .nparams = 3,
+     .params = rf_params, .convert = from_rf},
+};
+
 const nl_family nl_family_powvar = {
     .name = "powvar",
-    .aliases = "Pow RMfbm",
+    .aliases = "",
     .formula = "gamma = c |t|^alpha, 0 < alpha <= 2 (intrinsic: no covariance; R is the generalized covariance "
                "-gamma)",
     .flags = NL_FAMILY_INTRINSIC,
@@ -71,4 +97,6 @@ const nl_family nl_family_powvar = {
     .check = check,
     .profile = profile,
     .spectrum = spectrum,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
 };
