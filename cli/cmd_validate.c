@@ -216,7 +216,8 @@ int cli_cmd_validate(int argc, char **argv)
     int st;
     memset(&v, 0, sizeof v);
     parse(argc, argv, &v);
-    if ((st = nl_check_model(v.m, v.dim, &v.k)))
+    if ((st = nl_model_check_stationary(v.m, "validate (an ensemble ACF against R)")) ||
+        (st = nl_check_model(v.m, v.dim, &v.k)))
         cli_die_status(st);
     check_grid_lags(&v);
     n[0] = n[1] = n[2] = v.N;

@@ -77,7 +77,9 @@ enum {
     NL_FAMILY_EXPRESSION = 1 << 2,/* evaluated by libmatheval: not reentrant, parse not thread-safe */
     NL_FAMILY_ARGUMENT = 1 << 3,  /* the spec's text after ':' is an argument (an expression, a
                                      file), its key=value pairs after a final ';' */
-    NL_FAMILY_FILE = 1 << 4       /* the argument names a file that parsing the spec reads */
+    NL_FAMILY_FILE = 1 << 4,      /* the argument names a file that parsing the spec reads */
+    NL_FAMILY_INTRINSIC = 1 << 5  /* intrinsic: a variogram with no covariance; profile is the
+                                     generalized covariance -gamma (core/model.h, Intrinsic models) */
 };
 
 /* A peer's name for a family with the peer's own parameterisation: gstat's

@@ -1,6 +1,7 @@
 /* Evaluation of R(lag) and S(f) through the family descriptors, and Stam
  * and Fiume's ellipsoidal anisotropy. */
 #include "model_internal.h"
+#include "nl_error.h"
 
 #include <math.h>
 
@@ -62,4 +63,20 @@ int nl_model_is_isotropic(const nl_model *m)
     if (m->sep || m->angle != 0 || m->ratio != 1 || m->zratio != 1)
         return 0;
     return m->fam->isotropic ? m->fam->isotropic(m) : 1;
+}
+
+double nl_model_variogram(const nl_model *m, int dim, const double *lag)
+{
+    const double zero[3] = {0, 0, 0};
+    return nl_model_acf(m, dim, zero) - nl_model_acf(m, dim, lag);
+}
+
+int nl_model_is_intrinsic(const nl_model *m) { return (m->fam->flags & NL_FAMILY_INTRINSIC) != 0; }
+
+int nl_model_check_stationary(const nl_model *m, const char *what)
+{
+    if (!nl_model_is_intrinsic(m))
+        return NL_OK;
+    return NL_ERROR(NL_EINVAL, "%s: %s needs a covariance; %s is intrinsic (no covariance): use synth intrinsic "
+                    "or ordinary kriging (krige)", m->spec, what, m->fam->name);
 }

@@ -523,9 +523,10 @@ Test(cli, help_and_version)
     }
     cr_assert_eq(run_noiselab("", 0, 0, 0, 0), 2);
     /* the top-level help names every synthesis method */
-    const char *methods[] = {"fft", "subdiv", "midpoint", "circulant", "cholesky", "faulting", "sparse", "lattice"};
+    const char *methods[] = {"fft",    "subdiv", "midpoint", "circulant", "cholesky",
+                             "faulting", "sparse", "lattice",  "intrinsic"};
     cr_assert_eq(run_noiselab("--help", out, sizeof out, 0, 0), 0);
-    for (int i = 0; i < 8; i++)
+    for (int i = 0; i < 9; i++)
         cr_expect(strstr(out, methods[i]) != NULL, "--help names the method %s", methods[i]);
 }
 

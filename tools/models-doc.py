@@ -37,7 +37,9 @@ def page():
     for m in noiselab.models():
         out += ["## `%s`" % m["name"], "", m["formula"] + ".", ""]
         notes = []
-        notes.append("defined by its spectrum" if m["spectral"] else "defined by R")
+        notes.append("defined by its spectrum" if m["spectral"] else "intrinsic: defined by its variogram, "
+                     "without covariance (`synth intrinsic`, ordinary `krige`)" if m.get("intrinsic")
+                     else "defined by R")
         if m["fit"]:
             notes.append("`noiselab fit` fits it")
         notes.append(m["validity"])

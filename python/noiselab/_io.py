@@ -132,7 +132,8 @@ def models():
     peer (gstat, GSTools, RandomFields), formula and parameters),
     parameters (a list of dicts: name, role (variance, scale, nugget, shape
     or band), default (None when required), lower, lower_open, upper: the
-    valid range, None where unbounded), spectral (defined by S), fit (fit
+    valid range, None where unbounded), spectral (defined by S), intrinsic (a
+    variogram without covariance: powvar), fit (fit
     accepts it), max_dim (not positive definite beyond this dimension; None:
     no such limit) and validity (what is known of its validity by
     dimension)."""
@@ -150,6 +151,7 @@ def models():
                                for a in (f.peers[j] for j in range(f.npeers))],
                         parameters=[_param(f.params[k]) for k in range(f.nparams)],
                         spectral=bool(f.flags & lib.NL_FAMILY_SPECTRAL), fit=bool(f.flags & lib.NL_FAMILY_FIT),
+                        intrinsic=bool(f.flags & lib.NL_FAMILY_INTRINSIC),
                         max_dim=f.max_dim or None, validity=ffi.string(f.validity).decode()))
     return out
 
