@@ -72,6 +72,8 @@ static double f_besselj(double nu, double x)
         return NAN;
     if (isinf(x))
         return 0;
+    if (x == 0) /* J_0(0) = 1, J_nu(0) = 0 for nu > 0 and integer nu < 0; J_-nu(0) infinite */
+        return nu == 0 ? 1 : nu > 0 || is_int(nu) ? 0 : NAN;
     nl_gsl_enter();
     if (is_int(nu)) {
         int n = (int)fabs(nu);

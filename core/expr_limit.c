@@ -30,7 +30,7 @@ typedef struct {
 
 static double y_of(const seq *s, double h)
 {
-    double p[3];
+    double p[3] = {0, 0, 0}; /* coordinates past n are 0 */
     if (s->d2) {
         double a = s->p0[0] + h, b = s->p0[0] - h, num = s->f(s->ctx, &a) - 2 * s->f0 + s->f(s->ctx, &b);
         /* a difference at the rounding level of f says nothing */

@@ -23,8 +23,10 @@ for c in range(1, 128):
     ch = chr(c)
     if ch in ok:
         continue
-    tmpl, pos = T[k % len(T)]
-    k += 1
+    # ';' ends the expression of a model spec (expr:EXPR;nugget=V): it is
+    # tried where no model spec is parsed
+    tmpl, pos = T[4] if ch == ';' else T[k % len(T)]
+    k += ch != ';'
     shown = "'%s'" % ch if 0x20 < c < 0x7f else "\\x%02x" % c
     needle = "character %s at position %d" % (shown, pos)
     cmd = "c=$(printf '\\%03ox'); c=${c%%x}; " % c + tmpl % "$c"
