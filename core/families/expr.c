@@ -100,8 +100,9 @@ const nl_family nl_family_expr = {
     .aliases = "",
     .argument = "EXPR",
     .usage = "variables t, x, y, z, r",
-    .formula = "R = EXPR, e.g. expr:cos(10*t)*exp(-abs(t)) or expr:besselj(0, r); functions: "
-               "core/expr_internal.h, docs/expressions.md",
+    .formula = "R = EXPR (syntax and functions, Bessel and gamma functions among them: docs/expressions.md), "
+               "e.g. expr:cos(10*t)*exp(-abs(t)) or expr:besselj(0, r); a removable singularity (sin(r)/r at 0) "
+               "is taken as its limit",
     .flags = NL_FAMILY_EXPRESSION | NL_FAMILY_ARGUMENT,
     .validity = "as the expression: noiselab check measures it",
     .nparams = sizeof params / sizeof *params,
