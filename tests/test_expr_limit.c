@@ -75,6 +75,13 @@ Test(expr_limit, no_limit)
     for (size_t i = 0; i < sizeof none / sizeof *none; i++)
         for (int dim = 1; dim <= 3; dim++)
             cr_expect(!isfinite(r_at(none[i], dim, zero)), "%s in %dD: %g", none[i], dim, r_at(none[i], dim, zero));
+    /* r log r -> 0, but slowly (h log h defeats the extrapolation): no
+     * limit found, or 0; never f(1/2) = f(1/4) = -0.3466, where a tableau
+     * that compares each entry with two neighbours only meets itself */
+    {
+        double y = r_at("expr:r*log(r)", 1, zero);
+        cr_expect(isnan(y) || fabs(y) < 1e-6, "%.17g", y);
+    }
     /* depends on the direction of approach: none in 2D */
     cr_expect(isnan(r_at("expr:x^2/(x^2+y^2)", 2, zero)));
 }
