@@ -3,13 +3,18 @@
  * the error estimate and the choice among starting steps after Ridders 1982,
  * Adv. Eng. Software 4(2) 75, as in Numerical Recipes' dfridr).
  *
- * Accuracy, measured in tests/test_expr_funcs.c: sin(r)/r, (1 - cos r)/r^2,
- * r^2/(1 - exp(-r^2)) and x K_1(x) at 0 come out within 1e-12 relative of
- * their limits (1, 1/2, 1, 1): the extrapolation removes the powers of h,
- * and rounding in f(h) (relative 1e-16 / h^2 where f cancels, as in
- * 1 - cos h) is what is left; the best start is the one whose tableau
- * agrees with itself most closely.  A limit that converges like h log h
- * (r log r at 0) is found to about 1e-7 absolute. */
+ * Accuracy, measured (tests/test_expr_limit.c asserts 1e-10): at 0,
+ * sin(r)/r is 1 to 2e-16, (1 - cos r)/r^2 is 1/2 to 5e-12, r^2/(1 -
+ * exp(-r^2)) 1 to 6e-12, r K_1(r) 1 to 5e-12 relative: the extrapolation
+ * removes the powers of h, and what is left is the rounding of f near the
+ * point (relative 1e-16 / h^2 where f cancels, as 1 - cos h does), which
+ * is why the tableau starts at the largest step where f already behaves
+ * as a power series.  R'' of smooth profiles comes out within 1e-11
+ * (exp(-t^2), sin(t)/t, 1/(1 + t^2)); 1e-9 where f cancels.  A limit
+ * approached like h log h (r log r at 0) does not converge to 1e-8 and is
+ * reported as none (NAN); so is one that underflows to a tableau of zeros.
+ * Cost: about 40 us for sin(r)/r at 0 in 2D, 300 us for r K_1(r)
+ * (evaluated only where the expression is not finite). */
 #include "expr_internal.h"
 
 #include <float.h>
