@@ -83,7 +83,9 @@ typedef enum {
     NL_CHECK_NEG_SPECTRUM,    /* S < 0 at |k| = why_k */
     NL_CHECK_BOUND,           /* isotropic R below -R(0)/d at lag why_lag */
     NL_CHECK_NEG_EIGENVALUE,  /* the grid's covariance matrix has a negative eigenvalue */
-    NL_CHECK_LINE_RISES       /* 3D isotropic: the line spectrum rises at f = why_k */
+    NL_CHECK_LINE_RISES,      /* 3D isotropic: the line spectrum rises at f = why_k */
+    NL_CHECK_EDGE             /* compactly supported isotropic R whose edge singularity makes S
+                                 negative at high |k| (analysis/check_edge.c) */
 } nl_check_reason;
 
 typedef struct {
@@ -127,6 +129,11 @@ typedef struct {
  * (core/model.h: expression models are not thread-safe); the FFTs it runs
  * plan FFTW, so not concurrently with other planning. */
 int nl_check_model(const nl_model *m, int dim, nl_check *out);
+
+/* The bound an isotropic correlation R / R(0) keeps in dim dimensions:
+ * the infimum of Schoenberg's Omega_dim, -1 (1D), min J0 = -0.40276 (2D),
+ * min sin(x)/x = -0.21723 (3D). */
+double nl_check_isotropic_bound(int dim);
 
 /* Valid neighbours of a model m whose check c (nl_check_model of m) found
  * it not positive definite, as specs separated by '\n' into buf (size

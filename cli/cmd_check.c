@@ -39,7 +39,7 @@ static const char help[] =
     "c2, min_c2 (relative to C2(0)), min_c2_lag}.\n";
 
 static const char *why_key[] = {NULL, "negative-integral", "negative-spectrum", "isotropic-bound",
-                                "negative-eigenvalue", "line-spectrum-rises"};
+                                "negative-eigenvalue", "line-spectrum-rises", "edge-asymptotics"};
 
 /* A JSON number, or null where it is undefined or unbounded. */
 static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
@@ -139,8 +139,8 @@ static void print_why(const nl_check *k, const char *nb)
                k->min_spectrum_k, k->min_spectrum);
         break;
     case NL_CHECK_BOUND:
-        printf("  why                    R falls to %.3f R(0) at lag %.3g, below the -1/%d an isotropic covariance "
-               "allows in %dD\n", k->min_r, k->min_r_lag, d, d);
+        printf("  why                    R falls to %.3f R(0) at lag %.3g, below the %.4f R(0) an isotropic covariance "
+               "allows in %dD (Schoenberg 1938)\n", k->min_r, k->min_r_lag, nl_check_isotropic_bound(d), d);
         break;
     case NL_CHECK_NEG_EIGENVALUE:
         printf("  why                    the covariance matrix of a grid of %zu^%d points spaced %.3g has a negative "
@@ -150,6 +150,11 @@ static void print_why(const nl_check *k, const char *nb)
     case NL_CHECK_LINE_RISES:
         printf("  why                    its line spectrum (of R along a line) rises at f = %.3g; an isotropic 3D "
                "covariance needs it non-increasing\n", k->line_rise_f);
+        break;
+    case NL_CHECK_EDGE:
+        printf("  why                    R vanishes beyond a lag with an edge singularity that its behaviour at lag 0 "
+               "does not outweigh: its %dD spectrum oscillates in sign at high |k| (beyond the frequencies "
+               "sampled): no field has this covariance\n", d);
         break;
     default: break;
     }
@@ -218,8 +223,8 @@ static void print_text(const char *spec, const nl_check *k, const char *nb)
         printf("  variance R(0)          %.6g (the integral of S)\n", k->variance);
     print_eigen(k);
     if (k->isotropic && isfinite(k->min_r))
-        printf("  min R / R(0)           %.4f at lag %.3g (isotropic bound -1/%d: %s)\n", k->min_r, k->min_r_lag, d,
-               k->isotropic_bound_ok ? "ok" : "violated");
+        printf("  min R / R(0)           %.4f at lag %.3g (isotropic bound %.4f in %dD: %s)\n", k->min_r, k->min_r_lag,
+               nl_check_isotropic_bound(d), d, k->isotropic_bound_ok ? "ok" : "violated");
     if (d == 3 && k->isotropic && !k->spectral)
         printf("  3D line spectrum       %s\n", k->monotone_3d ? "non-increasing" : "rises");
     print_smooth(k);
