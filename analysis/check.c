@@ -76,7 +76,7 @@ static void take_min(nl_check *c, double smin, double smax, double k)
 /* The d-dimensional spectrum of R on a periodic grid of extent 8 L (and
  * radially, radial_spectrum), skipped when R has not decayed by the grid's
  * edge (slow: its truncation would show); and, for models isotropic in dim,
- * the spectrum of R under a Gaussian taper (check_taper.c), exact in sign
+ * the spectrum of R under a Gaussian taper (core/taper.c), exact in sign
  * whatever the decay.  The smallest value relative to the largest
  * magnitude (of the same transform) and the |k| where it is reached. */
 static int spectrum_checks(const nl_model *m, int dim, int slow, double L0, double L8, nl_check *c)
@@ -89,8 +89,8 @@ static int spectrum_checks(const nl_model *m, int dim, int slow, double L0, doub
     /* the lattice's spacing from L0, then 8 and 64 times coarser while
      * the taper is narrower than R's reach L8: each level is exact in sign */
     for (int j = 0; j < 3 && (dim == 1 || c->isotropic); j++) {
-        nl_check_taper_result t;
-        if ((st = nl_check_taper(m, dim, L0 * pow(8, j), &t)))
+        nl_taper_result t;
+        if ((st = nl_taper_spectrum(m, dim, L0 * pow(8, j), 0, &t)))
             return st;
         if (j == 0)
             c->spectrum_kmax = t.kmax;
@@ -298,17 +298,7 @@ static int scale_of(const nl_model *m, int dim, nl_check *c, double *L0)
     for (double t = 1e-3; t < 1048576; t *= 1.25)
         if (fabs(acf_x(m, dim, t)) >= 1e-8 * r0)
             c->scale = t * 1.25;
-    /* the lag where R first departs from R(0) by half of it (by 1% when
-     * it never does: R tends to a positive constant), in steps of 5%;
-     * from R(0+), without a nugget */
-    r0 = acf_x(m, dim, 1e-7);  /* R(0+): without a nugget */
-    for (double frac = 0.5; frac > 0.001; frac /= 50)
-        for (double t = 1e-6; t < 1048576; t *= 1.05)
-            if (fabs(r0 - acf_x(m, dim, t)) >= frac * fabs(r0)) {
-                *L0 = t;
-                return NL_OK;
-            }
-    *L0 = 1;
+    *L0 = nl_taper_scale(m, dim);
     return NL_OK;
 }
 

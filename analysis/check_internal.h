@@ -4,6 +4,7 @@
 
 #include "check.h"
 #include "../core/field.h"
+#include "../core/taper_internal.h"
 
 /* The checks of a spectral model (power:, spectrum:) from its closed-form
  * density (check_spectral.c); c is zeroed and c->dim set by the caller.
@@ -27,22 +28,6 @@ int nl_check_grid_spectrum(const nl_model *m, int dim, double h, nl_field **out)
 
 /* |k| (cycles per unit) of the wrapped index i of such a grid. */
 double nl_check_grid_k(const nl_field *S, size_t i);
-
-/* The spectrum of R exp(-(r/T)^2) on a periodic lattice (check_taper.c),
- * for models isotropic in dim (or dim = 1): its extremes (spectrum units,
- * variance times length^dim), |k| of the minimum (cycles per unit), the
- * Nyquist frequency, T, and the rounding bound below which a negative
- * value proves nothing. */
-typedef struct {
-    double min, max, min_k, kmax, taper, rounding;
-} nl_check_taper_result;
-
-/* The lattice of nl_check_taper for the near-origin scale L0: n points per
- * axis, spacing h, taper T. */
-void nl_check_taper_grid(int dim, double L0, size_t *n, double *h, double *T);
-
-/* Codes: NL_OK, NL_ENOMEM, those of nl_wk_acf_to_spectrum. */
-int nl_check_taper(const nl_model *m, int dim, double L0, nl_check_taper_result *out);
 
 /* 1 when R, isotropic in dim and supported within [0, L], has a spectrum
  * that turns negative at high frequencies by the asymptotics of R at the

@@ -15,24 +15,52 @@
  * 1 / (pi T), or a negative high-frequency tail (a power r^a, 2 < a < 4, at
  * the origin: S ~ -|k|^-(d+a)), survives the convolution and the aliasing.
  *
- * The lattice: 65536 points of spacing L0 / 16 in 1D, 1024^2 of L0 / 8 in
- * 2D, 128^3 of L0 / 4 in 3D (L0 the lag where R first falls appreciably),
- * T = n h / 12.  R is evaluated once per distinct |lag|^2 (a multiple of
- * h^2), so a 3D grid costs a few thousand evaluations. */
-#include "check_internal.h"
-#include "../core/mem.h"
-#include "../core/nl_error.h"
-#include "../core/wk.h"
+ * The lattice (nl_taper_grid): 65536 points of spacing L0 / 16 in 1D,
+ * 1024^2 of L0 / 8 in 2D, 128^3 of L0 / 4 in 3D (L0 the lag where R first
+ * falls appreciably), T = n h / 12; a coarse lattice has 16 times fewer
+ * points per axis in 1D and 4 times fewer in 2D and 3D, at the same
+ * spacing.  R is evaluated once per distinct |lag|^2 (a multiple of h^2),
+ * so a 3D grid costs a few thousand evaluations. */
+#include "taper_internal.h"
+#include "mem.h"
+#include "nl_error.h"
+#include "wk.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-void nl_check_taper_grid(int dim, double L0, size_t *n, double *h, double *T)
+double nl_taper_scale(const nl_model *m, int dim)
+{
+    double lag[3] = {1e-7, 0, 0}, r0 = nl_model_acf(m, dim, lag);  /* R(0+): without a nugget */
+    for (double frac = 0.5; frac > 0.001; frac /= 50)
+        for (double t = 1e-6; t < 1048576; t *= 1.05) {
+            lag[0] = t;
+            if (fabs(r0 - nl_model_acf(m, dim, lag)) >= frac * fabs(r0))
+                return t;
+        }
+    return 1;
+}
+
+void nl_taper_grid(int dim, double L0, int coarse, size_t *n, double *h, double *T)
 {
     *n = dim == 1 ? 65536 : dim == 2 ? 1024 : 128;
+    if (coarse)
+        *n /= dim == 1 ? 16 : 4;
     *h = L0 / (dim == 1 ? 16 : dim == 2 ? 8 : 4);
     *T = (double)*n * *h / 12;
+}
+
+/* |k| (cycles per unit) of the wrapped index i of S. */
+static double grid_k(const nl_field *S, size_t i)
+{
+    size_t n = S->n[0];
+    double k2 = 0, df = 1 / ((double)n * S->h[0]);
+    for (int a = 0; a < S->dim; a++, i /= n) {
+        double w = (double)nl_wrap(i % n, n) * df;
+        k2 += w * w;
+    }
+    return sqrt(k2);
 }
 
 /* The table's index of the wrapped index i of an n^dim grid: the squared
@@ -69,14 +97,14 @@ static double *taper_table(const nl_model *m, int dim, size_t n, double h, doubl
     return tab;
 }
 
-int nl_check_taper(const nl_model *m, int dim, double L0, nl_check_taper_result *out)
+int nl_taper_spectrum(const nl_model *m, int dim, double L0, int coarse, nl_taper_result *out)
 {
     size_t n, nn[3];
     double h, T, hh[3], *tab, abs_sum = 0, cell;
     nl_field *R, *S;
     int st;
     memset(out, 0, sizeof *out);
-    nl_check_taper_grid(dim, L0, &n, &h, &T);
+    nl_taper_grid(dim, L0, coarse, &n, &h, &T);
     nn[0] = nn[1] = nn[2] = n;
     hh[0] = hh[1] = hh[2] = h;
     R = nl_field_alloc(dim, nn, hh, NULL);
@@ -102,7 +130,7 @@ int nl_check_taper(const nl_model *m, int dim, double L0, nl_check_taper_result 
     for (size_t i = 0; i < S->count; i++) {
         out->max = fmax(out->max, S->data[i]);
         if (S->data[i] < out->min)
-            out->min = S->data[i], out->min_k = nl_check_grid_k(S, i);
+            out->min = S->data[i], out->min_k = grid_k(S, i);
     }
     nl_field_free(S);
     out->kmax = 0.5 / h;
