@@ -79,43 +79,50 @@ static void take_min(nl_check *c, double smin, double smax, double k)
  * the spectrum of R under a Gaussian taper (core/taper.c), exact in sign
  * whatever the decay.  The smallest value relative to the largest
  * magnitude (of the same transform) and the |k| where it is reached. */
-static int spectrum_checks(const nl_model *m, int dim, int slow, double L0, double L8, nl_check *c)
+static int spectrum_checks(const nl_model *m, int dim, int slow, double L0, double L8, nl_check *c, int *tapered)
 {
     size_t n = dim == 1 ? 4096 : dim == 2 ? 256 : 64, imin = 0;
     double h = 8 * c->scale / (double)n, smax = 0, smin = INFINITY, kr = 0, kg, sr = INFINITY;
+    nl_check t_min = {.min_spectrum = INFINITY};
     nl_field *S;
     int st;
-    c->min_spectrum = INFINITY;
     /* the lattice's spacing from L0, then 8 and 64 times coarser while
-     * the taper is narrower than R's reach L8: each level is exact in sign */
-    for (int j = 0; j < 3 && (dim == 1 || c->isotropic); j++) {
+     * the taper is narrower than R's reach L8: each level is exact in sign
+     * (exemplars are not: their R interpolates a table between lags) */
+    for (int j = 0; j < 3 && (dim == 1 || c->isotropic) && nl_model_family(m) != &nl_family_image; j++) {
         nl_taper_result t;
         if ((st = nl_taper_spectrum(m, dim, L0 * pow(8, j), 0, &t)))
             return st;
         if (j == 0)
             c->spectrum_kmax = t.kmax;
         /* below the rounding bound a negative value proves nothing */
-        take_min(c, t.min < -t.rounding ? t.min : fmax(t.min, 0), t.max, t.min < -t.rounding ? t.min_k : 0);
+        take_min(&t_min, t.min < -t.rounding ? t.min : fmax(t.min, 0), t.max, t.min < -t.rounding ? t.min_k : 0);
         if (t.taper >= L8)
             break;
     }
-    if (slow)
-        return NL_OK;
-    if ((st = nl_check_grid_spectrum(m, dim, h, &S)))
-        return st;
-    for (size_t i = 0; i < S->count; i++) {
-        smax = fmax(smax, S->data[i]);
-        if (S->data[i] < smin)
-            smin = S->data[i], imin = i;
+    c->min_spectrum = INFINITY;
+    if (!slow) {
+        if ((st = nl_check_grid_spectrum(m, dim, h, &S)))
+            return st;
+        for (size_t i = 0; i < S->count; i++) {
+            smax = fmax(smax, S->data[i]);
+            if (S->data[i] < smin)
+                smin = S->data[i], imin = i;
+        }
+        c->spectrum_kmax = fmax(c->spectrum_kmax, 0.5 / h);
+        kg = nl_check_grid_k(S, imin);
+        nl_field_free(S);
+        if (dim > 1 && c->isotropic)
+            radial_spectrum(m, dim, c->scale, &sr, &smax, &kr);
+        if (sr < smin)
+            smin = sr, kg = kr;
+        take_min(c, smin, smax, kg);
     }
-    c->spectrum_kmax = fmax(c->spectrum_kmax, 0.5 / h);
-    kg = nl_check_grid_k(S, imin);
-    nl_field_free(S);
-    if (dim > 1 && c->isotropic)
-        radial_spectrum(m, dim, c->scale, &sr, &smax, &kr);
-    if (sr < smin)
-        smin = sr, kg = kr;
-    take_min(c, smin, smax, kg);
+    /* the taper's verdict where the untapered spectrum found none (its
+     * value at k = 0 is the integral of R times the taper, not of R) */
+    *tapered = !(c->min_spectrum < -1e-6) && t_min.min_spectrum < c->min_spectrum;
+    if (*tapered)
+        c->min_spectrum = t_min.min_spectrum, c->min_spectrum_k = t_min.min_spectrum_k;
     return NL_OK;
 }
 
@@ -393,7 +400,7 @@ static int negative_power_tail(const nl_model *m, int dim, double L0)
 
 static int check_model(const nl_model *m, int dim, nl_check *c)
 {
-    int st, slow, edge;
+    int st, slow, edge, tapered = 0;
     double L0 = 1, L8;
     memset(c, 0, sizeof *c);
     c->dim = dim;
@@ -413,17 +420,19 @@ static int check_model(const nl_model *m, int dim, nl_check *c)
     slow = (dim == 1 || c->isotropic) && L8 > 64 * L0;
     if (slow)
         c->scale = 16 * L0;
-    if ((st = spectrum_checks(m, dim, slow, L0, L8, c)) ||
+    if ((st = spectrum_checks(m, dim, slow, L0, L8, c, &tapered)) ||
         (st = profile_decay(m, dim, slow ? c->scale * 8 / 12 : INFINITY, c)) || (st = eigen_check(m, dim, c)))
         return st;
     if (slow && negative_power_tail(m, dim, L0))
-        c->min_spectrum = -1, c->min_spectrum_k = 0;
+        c->min_spectrum = -1, c->min_spectrum_k = 0, tapered = 0;
     edge = !slow && (dim == 1 || c->isotropic) && nl_check_edge(m, dim, c->scale);
     bound_check(m, dim, c);
     smoothness(m, dim, c);
     c->singular_checked = 1;
     c->singular_below = nl_check_singular_spacing(m, dim, c->scale);
     nl_check_verdict(c);
+    if (tapered && (c->why == NL_CHECK_NEG_INTEGRAL || c->why == NL_CHECK_NEG_SPECTRUM))
+        c->why = NL_CHECK_NEG_TAPERED;
     if (edge && c->positive_definite)
         c->why = NL_CHECK_EDGE, c->positive_definite = 0;
     return NL_OK;

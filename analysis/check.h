@@ -84,8 +84,10 @@ typedef enum {
     NL_CHECK_BOUND,           /* isotropic R below -R(0)/d at lag why_lag */
     NL_CHECK_NEG_EIGENVALUE,  /* the grid's covariance matrix has a negative eigenvalue */
     NL_CHECK_LINE_RISES,      /* 3D isotropic: the line spectrum rises at f = why_k */
-    NL_CHECK_EDGE             /* compactly supported isotropic R whose edge singularity makes S
+    NL_CHECK_EDGE,            /* compactly supported isotropic R whose edge singularity makes S
                                  negative at high |k| (analysis/check_edge.c) */
+    NL_CHECK_NEG_TAPERED      /* the spectrum of R times a Gaussian taper, >= 0 for every valid R,
+                                 is negative at |k| = min_spectrum_k (core/taper.c) */
 } nl_check_reason;
 
 typedef struct {

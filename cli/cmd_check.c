@@ -39,7 +39,8 @@ static const char help[] =
     "c2, min_c2 (relative to C2(0)), min_c2_lag}.\n";
 
 static const char *why_key[] = {NULL, "negative-integral", "negative-spectrum", "isotropic-bound",
-                                "negative-eigenvalue", "line-spectrum-rises", "edge-asymptotics"};
+                                "negative-eigenvalue", "line-spectrum-rises", "edge-asymptotics",
+                                "negative-tapered-spectrum"};
 
 /* A JSON number, or null where it is undefined or unbounded. */
 static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
@@ -150,6 +151,11 @@ static void print_why(const nl_check *k, const char *nb)
     case NL_CHECK_LINE_RISES:
         printf("  why                    its line spectrum (of R along a line) rises at f = %.3g; an isotropic 3D "
                "covariance needs it non-increasing\n", k->line_rise_f);
+        break;
+    case NL_CHECK_NEG_TAPERED:
+        printf("  why                    the %dD spectrum of R times a Gaussian taper (positive for every valid R, "
+               "however slowly R decays) is negative at |k| = %.3g cycles per unit (%.3g times its largest "
+               "magnitude): no field has this covariance\n", d, k->min_spectrum_k, k->min_spectrum);
         break;
     case NL_CHECK_EDGE:
         printf("  why                    R vanishes beyond a lag with an edge singularity that its behaviour at lag 0 "

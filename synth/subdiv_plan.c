@@ -102,7 +102,9 @@ static int check_model_sign(const nl_model *m, int dim, int allow)
     nl_taper_result t;
     double L0;
     int st;
-    if (allow || !nl_model_has_acf(m) || nl_model_is_spectral(m) || (dim > 1 && !nl_model_is_isotropic(m)))
+    /* exemplars interpolate a table between lags: not exact in sign */
+    if (allow || !nl_model_has_acf(m) || nl_model_is_spectral(m) || nl_model_family(m) == &nl_family_image ||
+        (dim > 1 && !nl_model_is_isotropic(m)))
         return NL_OK;
     L0 = nl_taper_scale(m, dim);
     for (int j = 0; j < 3; j++) {
