@@ -366,7 +366,7 @@ static void smoothness(const nl_model *m, int dim, nl_check *c)
  * -0.21723 (3D), the values at the first minima, rounded down. */
 double nl_check_isotropic_bound(int dim)
 {
-    return dim == 2 ? -0.4027593957025532 : dim == 3 ? -0.2172336282112216 : -1;
+    return dim == 2 ? -0.4027593957025532 : dim == 3 ? -0.2172336282112217 : -1;
 }
 
 /* The smallest R / R(0) over lags 0..L along x and the bound. */
