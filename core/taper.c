@@ -20,11 +20,14 @@
  * falls appreciably), T = n h / 12; a coarse lattice has 16 times fewer
  * points per axis in 1D and 4 times fewer in 2D and 3D, at the same
  * spacing.  R is evaluated once per distinct |lag|^2 (a multiple of h^2),
- * so a 3D grid costs a few thousand evaluations. */
+ * so a 3D grid costs a few thousand evaluations, and R_T being even, the
+ * transform is a type-I cosine transform of one orthant. */
 #include "taper_internal.h"
+#include "fftw_plan.h"
 #include "mem.h"
 #include "nl_error.h"
-#include "wk.h"
+
+#include <fftw3.h>
 
 #include <math.h>
 #include <stdlib.h>
@@ -51,36 +54,21 @@ void nl_taper_grid(int dim, double L0, int coarse, size_t *n, double *h, double 
     *T = (double)*n * *h / 12;
 }
 
-/* |k| (cycles per unit) of the wrapped index i of S. */
-static double grid_k(const nl_field *S, size_t i)
+/* The squared integer distance of index i of the N^dim quarter grid
+ * (indices 0..N-1 per axis, axis 0 fastest). */
+static size_t q_of(size_t i, size_t N, int dim)
 {
-    size_t n = S->n[0];
-    double k2 = 0, df = 1 / ((double)n * S->h[0]);
-    for (int a = 0; a < S->dim; a++, i /= n) {
-        double w = (double)nl_wrap(i % n, n) * df;
-        k2 += w * w;
-    }
-    return sqrt(k2);
-}
-
-/* The table's index of the wrapped index i of an n^dim grid: the squared
- * integer distance (|i| itself in 1D, where squares would be sparse). */
-static size_t q_of(size_t i, size_t n, int dim)
-{
-    if (dim == 1)
-        return (size_t)labs(nl_wrap(i, n));
     size_t q = 0;
-    for (int a = 0; a < dim; a++, i /= n) {
-        long w = nl_wrap(i % n, n);
-        q += (size_t)(w * w);
-    }
+    for (int a = 0; a < dim; a++, i /= N)
+        q += (i % N) * (i % N);
     return q;
 }
 
-/* R_T at every distinct q = |lag|^2 / h^2 that the grid holds: tab[q]. */
-static double *taper_table(const nl_model *m, int dim, size_t n, double h, double T, size_t count)
+/* R_T at every distinct q = |lag|^2 / h^2 of the quarter grid: tab[q]
+ * (tab[j] = R_T(j h) in 1D, where squares would be sparse). */
+static double *taper_table(const nl_model *m, int dim, size_t N, double h, double T, size_t count)
 {
-    size_t qmax = dim == 1 ? n / 2 : (size_t)dim * (n / 2) * (n / 2);
+    size_t qmax = dim == 1 ? N - 1 : (size_t)dim * (N - 1) * (N - 1);
     double *tab = nl_alloc((qmax + 1) * sizeof *tab);
     unsigned char *need = calloc(qmax + 1, 1);
     if (!tab || !need) {
@@ -88,7 +76,7 @@ static double *taper_table(const nl_model *m, int dim, size_t n, double h, doubl
         return NULL;
     }
     for (size_t i = 0; i < count; i++)
-        need[q_of(i, n, dim)] = 1;
+        need[dim == 1 ? i : q_of(i, N, dim)] = 1;
     for (size_t q = 0; q <= qmax; q++) {
         double r = (dim == 1 ? (double)q : sqrt((double)q)) * h, lag[3] = {r, 0, 0}, e = (r / T) * (r / T);
         tab[q] = need[q] && e < 40 ? nl_model_acf(m, dim, lag) * exp(-e) : 0;
@@ -97,42 +85,60 @@ static double *taper_table(const nl_model *m, int dim, size_t n, double h, doubl
     return tab;
 }
 
+/* The transform: R_T is even, so its DFT over the n^dim periodic grid is
+ * the type-I DCT (FFTW_REDFT00) of the N = n/2 + 1 samples per axis from
+ * lag 0 to the Nyquist lag n h / 2, in place. */
+static int dct(double *x, int dim, size_t N)
+{
+    int dims[3] = {(int)N, (int)N, (int)N};
+    fftw_r2r_kind kinds[3] = {FFTW_REDFT00, FFTW_REDFT00, FFTW_REDFT00};
+    size_t count = dim == 1 ? N : dim == 2 ? N * N : N * N * N;
+    fftw_plan p = fftw_plan_r2r(dim, dims, x, x, kinds, nl_fftw_flags(count) | FFTW_DESTROY_INPUT);
+    if (!p)
+        return NL_ERROR(NL_EFAIL, "FFTW could not plan a %d-D type-I cosine transform of %zu points", dim, count);
+    fftw_execute(p);
+    fftw_destroy_plan(p);
+    return NL_OK;
+}
+
 int nl_taper_spectrum(const nl_model *m, int dim, double L0, int coarse, nl_taper_result *out)
 {
-    size_t n, nn[3];
-    double h, T, hh[3], *tab, abs_sum = 0, cell;
-    nl_field *R, *S;
+    size_t n, N, count;
+    double h, T, *x, *tab, abs_sum = 0, cell, df;
     int st;
     memset(out, 0, sizeof *out);
     nl_taper_grid(dim, L0, coarse, &n, &h, &T);
-    nn[0] = nn[1] = nn[2] = n;
-    hh[0] = hh[1] = hh[2] = h;
-    R = nl_field_alloc(dim, nn, hh, NULL);
-    S = nl_field_alloc(dim, nn, hh, NULL);
-    tab = R ? taper_table(m, dim, n, h, T, R->count) : NULL;
-    if (!R || !S || !tab) {
-        nl_field_free(R), nl_field_free(S), nl_free(tab);
+    N = n / 2 + 1;
+    count = dim == 1 ? N : dim == 2 ? N * N : N * N * N;
+    x = nl_alloc(count * sizeof *x);
+    tab = x ? taper_table(m, dim, N, h, T, count) : NULL;
+    if (!x || !tab) {
+        nl_free(x), nl_free(tab);
         return NL_ERROR(NL_ENOMEM, "out of memory for the tapered %dD spectrum", dim);
     }
     cell = pow(h, dim);
-    for (size_t i = 0; i < R->count; i++) {
-        R->data[i] = tab[q_of(i, n, dim)];
-        abs_sum += fabs(R->data[i]) * cell;
+    for (size_t i = 0; i < count; i++) {
+        /* each sample stands for its 2^(axes off 0 and off Nyquist) mirror images */
+        double w = 1;
+        for (size_t j = i, a = 0; a < (size_t)dim; a++, j /= N)
+            w *= j % N == 0 || j % N == N - 1 ? 1 : 2;
+        x[i] = tab[dim == 1 ? i : q_of(i, N, dim)];
+        abs_sum += w * fabs(x[i]) * cell;
     }
     nl_free(tab);
-    st = nl_wk_acf_to_spectrum(R, S);
-    nl_field_free(R);
-    if (st) {
-        nl_field_free(S);
+    if ((st = dct(x, dim, N))) {
+        nl_free(x);
         return st;
     }
+    df = 1 / ((double)n * h);
     out->min = INFINITY;
-    for (size_t i = 0; i < S->count; i++) {
-        out->max = fmax(out->max, S->data[i]);
-        if (S->data[i] < out->min)
-            out->min = S->data[i], out->min_k = grid_k(S, i);
+    for (size_t i = 0; i < count; i++) {
+        double v = x[i] * cell;
+        out->max = fmax(out->max, v);
+        if (v < out->min)
+            out->min = v, out->min_k = sqrt((double)q_of(i, N, dim)) * df;
     }
-    nl_field_free(S);
+    nl_free(x);
     out->kmax = 0.5 / h;
     out->taper = T;
     /* rounding: each sample carries a few ulps from R and the taper, the
