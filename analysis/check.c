@@ -305,7 +305,9 @@ static int scale_of(const nl_model *m, int dim, nl_check *c, double *L0)
     for (double t = 1e-3; t < 1048576; t *= 1.25)
         if (fabs(acf_x(m, dim, t)) >= 1e-8 * r0)
             c->scale = t * 1.25;
-    *L0 = nl_taper_scale(m, dim);
+    if (!((*L0 = nl_taper_scale(m, dim)) > 0))
+        return NL_ERROR(NL_EINVAL, "%s: R stays within 1%% of R(0) at every lag up to 2^20; expected a covariance "
+                        "that varies within 2^20 lags (its spectrum has nothing to measure)", nl_model_spec(m));
     return NL_OK;
 }
 

@@ -42,7 +42,7 @@ double nl_taper_scale(const nl_model *m, int dim)
             if (fabs(r0 - nl_model_acf(m, dim, lag)) >= frac * fabs(r0))
                 return t;
         }
-    return 1;
+    return 0;
 }
 
 void nl_taper_grid(int dim, double L0, int coarse, size_t *n, double *h, double *T)

@@ -20,7 +20,7 @@ typedef struct {
 
 /* L0: the first lag (steps of 5% from 1e-6 to 2^20) where R departs from
  * R(0+) (no nugget) by half of it, or by 1% when it never does (R tends
- * to a positive constant); 1 when neither. */
+ * to a positive constant); 0 when neither (R is flat over 2^20 lags). */
 double nl_taper_scale(const nl_model *m, int dim);
 
 /* The lattice for the near-origin scale L0 (coarse: the smaller one): n

@@ -106,7 +106,8 @@ static int check_model_sign(const nl_model *m, int dim, int allow)
     if (allow || !nl_model_has_acf(m) || nl_model_is_spectral(m) || nl_model_family(m) == &nl_family_image ||
         (dim > 1 && !nl_model_is_isotropic(m)))
         return NL_OK;
-    L0 = nl_taper_scale(m, dim);
+    if (!((L0 = nl_taper_scale(m, dim)) > 0))
+        return NL_OK; /* flat over 2^20 lags: a constant, valid */
     for (int j = 0; j < 3; j++) {
         if ((st = nl_taper_spectrum(m, dim, L0 * pow(8, j), 1, &t)))
             return st;
