@@ -93,6 +93,8 @@ static int spectrum_checks(const nl_model *m, int dim, int slow, double L0, doub
         nl_taper_result t;
         if ((st = nl_taper_spectrum(m, dim, L0 * pow(8, j), 0, &t)))
             return st;
+        if (isnan(t.min))
+            break;  /* R not finite on the lattice: the other tests say where */
         if (j == 0)
             c->spectrum_kmax = t.kmax;
         /* below the rounding bound a negative value proves nothing */

@@ -126,6 +126,13 @@ int nl_taper_spectrum(const nl_model *m, int dim, double L0, int coarse, nl_tape
         abs_sum += w * fabs(x[i]) * cell;
     }
     nl_free(tab);
+    if (!isfinite(abs_sum)) {
+        /* R not finite at some lag: no spectrum to judge (the caller's
+         * own checks name the lag) */
+        nl_free(x);
+        out->min = out->max = NAN;
+        return NL_OK;
+    }
     if ((st = dct(x, dim, N))) {
         nl_free(x);
         return st;

@@ -27,7 +27,8 @@ double nl_taper_scale(const nl_model *m, int dim);
  * points per axis, spacing h, taper T. */
 void nl_taper_grid(int dim, double L0, int coarse, size_t *n, double *h, double *T);
 
-/* For m isotropic in dim (1..3; any m in 1D: R is read along x).  Codes:
+/* For m isotropic in dim (1..3; any m in 1D: R is read along x); min and
+ * max NAN when R is not finite at some lag of the lattice.  Codes:
  * NL_OK, NL_ENOMEM, those of nl_wk_acf_to_spectrum.  Not thread-safe
  * (plans FFTW). */
 int nl_taper_spectrum(const nl_model *m, int dim, double L0, int coarse, nl_taper_result *out);

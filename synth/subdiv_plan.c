@@ -199,8 +199,13 @@ int nl_subdiv_plan_alloc(const nl_model *m, int dim, const size_t *n, double h, 
     /* the size first: the coefficients can cost seconds */
     if (!o->nonperiodic && !o->image && (st = check_periodic_size(dim, n, L)))
         return st;
-    if ((st = check_model_sign(m, dim, o->allow_not_pd)) || (st = coeffs_for(m, dim, L, h, o, &c)))
+    /* the coefficients first: they name a lag where R is not finite */
+    if ((st = coeffs_for(m, dim, L, h, o, &c)))
         return st;
+    if ((st = check_model_sign(m, dim, o->allow_not_pd))) {
+        nl_subdiv_coeffs_free(c);
+        return st;
+    }
     if (!(p = plan_new(c, 1, m, dim, n)))
         return NL_ERROR(NL_ENOMEM, "out of memory");
     p->allow_not_pd = o->allow_not_pd;
