@@ -170,6 +170,7 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # examples and the README's example against it with pkg-config alone.
 test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
+	LIMIT=$(if $(findstring sanitize,$(OPT)),60,5) NOISELAB_FFTW=estimate sh tests/check/run.sh $(BIN)
 	NOISELAB_FFTW=estimate NOISELAB_SANITIZED=$(if $(findstring sanitize,$(OPT)),1,) sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
 	NOISELAB_FFTW=estimate sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite
 	NOISELAB_FFTW=estimate sh tests/doc/run.sh $(BINDIR)

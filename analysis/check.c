@@ -64,33 +64,67 @@ double nl_check_grid_k(const nl_field *S, size_t i)
     return sqrt(k2);
 }
 
+/* The smaller of the running minimum and a new one, relative to its own
+ * largest magnitude, and where it is. */
+static void take_min(nl_check *c, double smin, double smax, double k)
+{
+    double rel = smin / fmax(smax, -smin);
+    if (rel < c->min_spectrum)
+        c->min_spectrum = rel, c->min_spectrum_k = k;
+}
+
 /* The d-dimensional spectrum of R on a periodic grid of extent 8 L (and
- * radially, radial_spectrum): its smallest value relative to its largest
- * magnitude and the |k| where it is reached. */
-static int spectrum_checks(const nl_model *m, int dim, nl_check *c)
+ * radially, radial_spectrum), skipped when R has not decayed by the grid's
+ * edge (slow: its truncation would show); and, for models isotropic in dim,
+ * the spectrum of R under a Gaussian taper (core/taper.c), exact in sign
+ * whatever the decay.  The smallest value relative to the largest
+ * magnitude (of the same transform) and the |k| where it is reached. */
+static int spectrum_checks(const nl_model *m, int dim, int slow, double L0, double L8, nl_check *c, int *tapered)
 {
     size_t n = dim == 1 ? 4096 : dim == 2 ? 256 : 64, imin = 0;
-    double h = 8 * c->scale / (double)n, smax = 0, smin = INFINITY, kr = 0, sr = INFINITY;
+    double h = 8 * c->scale / (double)n, smax = 0, smin = INFINITY, kr = 0, kg, sr = INFINITY;
+    nl_check t_min = {.min_spectrum = INFINITY};
     nl_field *S;
     int st;
-    if ((st = nl_check_grid_spectrum(m, dim, h, &S)))
-        return st;
-    for (size_t i = 0; i < S->count; i++) {
-        smax = fmax(smax, S->data[i]);
-        if (S->data[i] < smin)
-            smin = S->data[i], imin = i;
+    /* the lattice's spacing from L0, then 8 and 64 times coarser while
+     * the taper is narrower than R's reach L8: each level is exact in sign
+     * (exemplars are not: their R interpolates a table between lags) */
+    for (int j = 0; j < 3 && (dim == 1 || c->isotropic) && nl_model_family(m) != &nl_family_image; j++) {
+        nl_taper_result t;
+        if ((st = nl_taper_spectrum(m, dim, L0 * pow(8, j), 0, &t)))
+            return st;
+        if (isnan(t.min))
+            break;  /* R not finite on the lattice: the other tests say where */
+        if (j == 0)
+            c->spectrum_kmax = t.kmax;
+        /* below the rounding bound a negative value proves nothing */
+        take_min(&t_min, t.min < -t.rounding ? t.min : fmax(t.min, 0), t.max, t.min < -t.rounding ? t.min_k : 0);
+        if (t.taper >= L8)
+            break;
     }
-    c->spectrum_kmax = 0.5 / h;
-    c->min_spectrum_k = nl_check_grid_k(S, imin);
-    nl_field_free(S);
-    if (dim > 1 && c->isotropic)
-        radial_spectrum(m, dim, c->scale, &sr, &smax, &kr);
-    if (sr < smin)
-        smin = sr, c->min_spectrum_k = kr;
-    /* relative to the largest magnitude: finite even for a spectrum
-     * negative everywhere (the same as smax for any valid model) */
-    smax = fmax(smax, -smin);
-    c->min_spectrum = smin / smax;
+    c->min_spectrum = INFINITY;
+    if (!slow) {
+        if ((st = nl_check_grid_spectrum(m, dim, h, &S)))
+            return st;
+        for (size_t i = 0; i < S->count; i++) {
+            smax = fmax(smax, S->data[i]);
+            if (S->data[i] < smin)
+                smin = S->data[i], imin = i;
+        }
+        c->spectrum_kmax = fmax(c->spectrum_kmax, 0.5 / h);
+        kg = nl_check_grid_k(S, imin);
+        nl_field_free(S);
+        if (dim > 1 && c->isotropic)
+            radial_spectrum(m, dim, c->scale, &sr, &smax, &kr);
+        if (sr < smin)
+            smin = sr, kg = kr;
+        take_min(c, smin, smax, kg);
+    }
+    /* the taper's verdict where the untapered spectrum found none (its
+     * value at k = 0 is the integral of R times the taper, not of R) */
+    *tapered = !(c->min_spectrum < -1e-6) && t_min.min_spectrum < c->min_spectrum;
+    if (*tapered)
+        c->min_spectrum = t_min.min_spectrum, c->min_spectrum_k = t_min.min_spectrum_k;
     return NL_OK;
 }
 
@@ -113,7 +147,7 @@ static void line_monotone(const double *S1, size_t n, double df, double peak, nl
  * add well under 1%); INFINITY when the spectrum at 128/L is below 1e-13 of
  * its peak (the rounding floor) and its decay steepens across the band
  * (faster than any power). */
-static int profile_decay(const nl_model *m, int dim, nl_check *c)
+static int profile_decay(const nl_model *m, int dim, double T, nl_check *c)
 {
     size_t n = 65536, n1[1] = {n};
     double L = c->scale, h = 8 * L / (double)n, *f = malloc(n / 2 * sizeof *f), peak = 0, *b = &c->spectral_decay;
@@ -125,7 +159,10 @@ static int profile_decay(const nl_model *m, int dim, nl_check *c)
         return NL_ERROR(NL_ENOMEM, "out of memory");
     }
     for (size_t i = 0; i < n; i++)
-        R->data[i] = acf_x(m, dim, (double)nl_wrap(i, n) * h);
+    {
+        double t = (double)nl_wrap(i, n) * h;
+        R->data[i] = acf_x(m, dim, t) * (isfinite(T) ? exp(-(t / T) * (t / T)) : 1);
+    }
     if ((st = nl_wk_acf_to_spectrum(R, S)))
         goto done;
     for (size_t k = 0; k < n / 2; k++)
@@ -252,7 +289,7 @@ void nl_check_verdict(nl_check *c)
 }
 
 /* R(0) within the range the checks handle, and L. */
-static int scale_of(const nl_model *m, int dim, nl_check *c)
+static int scale_of(const nl_model *m, int dim, nl_check *c, double *L0)
 {
     double zero[3] = {0, 0, 0}, r0 = nl_model_acf(m, dim, zero);
     if (!isfinite(r0))
@@ -270,6 +307,9 @@ static int scale_of(const nl_model *m, int dim, nl_check *c)
     for (double t = 1e-3; t < 1048576; t *= 1.25)
         if (fabs(acf_x(m, dim, t)) >= 1e-8 * r0)
             c->scale = t * 1.25;
+    if (!((*L0 = nl_taper_scale(m, dim)) > 0))
+        return NL_ERROR(NL_EINVAL, "%s: R stays within 1%% of R(0) at every lag up to 2^20; expected a covariance "
+                        "that varies within 2^20 lags (its spectrum has nothing to measure)", nl_model_spec(m));
     return NL_OK;
 }
 
@@ -324,9 +364,48 @@ static void smoothness(const nl_model *m, int dim, nl_check *c)
     }
 }
 
+/* Schoenberg (1938): an isotropic covariance in d dimensions is a mixture
+ * of Omega_d(s r) = Gamma(d/2) (2 / (s r))^((d-2)/2) J_((d-2)/2)(s r),
+ * so R >= R(0) inf Omega_d: min J0 = -0.40276 (2D), min sin(x)/x =
+ * -0.21723 (3D), the values at the first minima, rounded down. */
+double nl_check_isotropic_bound(int dim)
+{
+    return dim == 2 ? -0.4027593957025532 : dim == 3 ? -0.2172336282112217 : -1;
+}
+
+/* The smallest R / R(0) over lags 0..L along x and the bound. */
+static void bound_check(const nl_model *m, int dim, nl_check *c)
+{
+    c->min_r = 1;
+    for (double t = c->scale / 4096; t <= c->scale; t += c->scale / 4096) {
+        double r = acf_x(m, dim, t) / c->variance;
+        if (r < c->min_r)
+            c->min_r = r, c->min_r_lag = t;
+    }
+    c->isotropic_bound_ok = !c->isotropic || c->min_r >= nl_check_isotropic_bound(dim) - 1e-12;
+}
+
+/* A power-law tail R ~ -c r^-b (c > 0) with b <= d: int R over R^d
+ * diverges to -infinity, so S -> -infinity at k -> 0 (Bochner).  The tail
+ * is R at 64 lags from 1e2 L0 to 1e5 L0 (at most 2^20), of one sign, with
+ * log |R| linear in log r to 0.05 in the exponent over each half. */
+static int negative_power_tail(const nl_model *m, int dim, double L0)
+{
+    double hi = fmin(1e5 * L0, 1048576), lo = hi / 1e3, b[2];
+    for (int half = 0; half < 2; half++) {
+        double t0 = lo * pow(1e3, half / 2.0), t1 = t0 * sqrt(1e3), r0 = acf_x(m, dim, t0), r1 = acf_x(m, dim, t1);
+        for (int j = 0; j <= 32; j++)
+            if (!(acf_x(m, dim, t0 * pow(t1 / t0, j / 32.0)) < 0))
+                return 0;
+        b[half] = log(r0 / r1) / log(t1 / t0);
+    }
+    return fabs(b[0] - b[1]) < 0.05 && b[1] <= dim;
+}
+
 static int check_model(const nl_model *m, int dim, nl_check *c)
 {
-    int st;
+    int st, slow, edge, tapered = 0;
+    double L0 = 1, L8;
     memset(c, 0, sizeof *c);
     c->dim = dim;
     c->monotone_3d = 1;
@@ -336,21 +415,32 @@ static int check_model(const nl_model *m, int dim, nl_check *c)
     c->isotropic = dim > 1 && nl_model_is_isotropic(m);
     if (nl_model_is_spectral(m))
         return nl_check_spectral(m, dim, c);
-    if ((st = scale_of(m, dim, c)) || (st = spectrum_checks(m, dim, c)) || (st = profile_decay(m, dim, c)) ||
-        (st = eigen_check(m, dim, c)))
+    if ((st = scale_of(m, dim, c, &L0)))
         return st;
-    /* the -1/n bound */
-    c->min_r = 1;
-    for (double t = c->scale / 4096; t <= c->scale; t += c->scale / 4096) {
-        double r = acf_x(m, dim, t) / c->variance;
-        if (r < c->min_r)
-            c->min_r = r, c->min_r_lag = t;
-    }
-    c->isotropic_bound_ok = !c->isotropic || c->min_r >= -1.0 / dim - 1e-12;
+    /* R still above 1e-8 R(0) at 64 times the lag where it halved: the
+     * scales near the origin and of the tail are judged apart, on the
+     * tapered spectrum and the asymptotics of the tail */
+    L8 = c->scale;
+    slow = (dim == 1 || c->isotropic) && L8 > 64 * L0;
+    if (slow)
+        c->scale = 16 * L0;
+    if ((st = spectrum_checks(m, dim, slow, L0, L8, c, &tapered)) ||
+        (st = profile_decay(m, dim, slow ? c->scale * 8 / 12 : INFINITY, c)) || (st = eigen_check(m, dim, c)))
+        return st;
+    if (slow && negative_power_tail(m, dim, L0))
+        c->min_spectrum = -1, c->min_spectrum_k = 0, tapered = 0;
+    /* exemplars interpolate a table: no asymptotics to read */
+    edge = !slow && (dim == 1 || c->isotropic) && nl_model_family(m) != &nl_family_image &&
+           nl_check_edge(m, dim, c->scale);
+    bound_check(m, dim, c);
     smoothness(m, dim, c);
     c->singular_checked = 1;
     c->singular_below = nl_check_singular_spacing(m, dim, c->scale);
     nl_check_verdict(c);
+    if (tapered && (c->why == NL_CHECK_NEG_INTEGRAL || c->why == NL_CHECK_NEG_SPECTRUM))
+        c->why = NL_CHECK_NEG_TAPERED;
+    if (edge && c->positive_definite)
+        c->why = NL_CHECK_EDGE, c->positive_definite = 0;
     return NL_OK;
 }
 

@@ -4,30 +4,56 @@
  *
  * Two paths, by what the model gives exactly.
  *
- * Models defined by R (named, expr:, image:).  Scale: L is the smallest lag
- * (searched by factors of 1.25, along x) beyond which |R| < 1e-8 R(0) for
- * good.  Positive definiteness (Bochner) is judged on the d-dimensional
- * spectrum of R sampled on a periodic grid of extent 8 L (spacing L / 512 in
- * 1D, L / 32 in 2D, L / 8 in 3D) and, for isotropic models in 2D and 3D, on
- * the radial spectrum by Hankel quadrature (nl_model_spectrum_iso) at k = 0
- * and 128 frequencies from 0.01 / L to 64 / L (the grid's Riemann sums are
- * off by a few percent of the peak where R has a kink; the quadrature
- * resolves the boundary of validity, e.g. omega = 1 for cos(omega r) e^-r
- * in 2D): values below -1e-6 of the largest magnitude make the model not
- * positive definite; and on the smallest
- * eigenvalue of the covariance matrix of a small grid (64 samples in 1D,
- * 16x16 in 2D, 6x6x6 in 3D) spaced L / 16.  Isotropic models must also keep
- * R >= -R(0)/D (the -1/n bound) and, in 3D, a non-increasing line spectrum
- * (the spectrum of R along a line, S1(f) = 2 pi int_f^inf S(k) k dk).
- * Smoothness: the line spectrum of the profile R(t) along x falls as f^-b
- * between 16/L and 128/L; the order m of mean-square differentiability is
- * the largest m with a finite moment of order 2m, m = ceil((b - 1)/2) - 1
- * (with 0.05 of slack for the fit), -1 meaning infinitely differentiable
- * when the spectrum falls faster than any power, and 0 whenever R has a
- * kink at the origin (R(0) - R(d) ~ d^a, a < 1.9, at d = 1e-5 L); the
- * d-dimensional density of an isotropic or ellipsoidal model falls as
- * k^-(b + d - 1); R''(0) is an extrapolated difference (core/expr_limit.c) for
- * expressions, a finite difference otherwise.
+ * Models defined by R (named, expr:, image:).  Scales: L0 is the first lag
+ * where R departs from R(0+) by half of it (core/taper.c), L8 the smallest
+ * lag (searched by factors of 1.25, along x, up to 2^20) beyond which
+ * |R| < 1e-8 R(0) for good.  R decays fast when L8 <= 64 L0; otherwise
+ * (power-law tails, cos r, exp(-r^0.3)) it is slow and L, the scale of the
+ * tests below, is 16 L0 instead of L8, so that they look near the origin.
+ *
+ * Positive definiteness (Bochner) is judged on:
+ *   - for models isotropic in dim (any in 1D; not exemplars), the spectrum
+ *     of R times a Gaussian taper exp(-(r/T)^2) on a periodic lattice
+ *     (core/taper.c: 65536 points of spacing L0 / 16 in 1D, 1024^2 of
+ *     L0 / 8 in 2D, 128^3 of L0 / 4 in 3D, T = 1/12 of the lattice's
+ *     extent, then 8 and 64 times coarser while T < L8): a product of
+ *     positive definite functions, whose sampled spectrum is a sum of
+ *     non-negative aliases for every valid R however slowly it decays, so
+ *     a value below the rounding bound (1e-11 of the sum of |samples|)
+ *     proves the model invalid (NL_CHECK_NEG_TAPERED);
+ *   - when R decays fast, the spectrum of R sampled on a periodic grid of
+ *     extent 8 L (spacing L / 512 in 1D, L / 32 in 2D, L / 8 in 3D) and,
+ *     for isotropic models in 2D and 3D, the radial spectrum by Hankel
+ *     quadrature (nl_model_spectrum_iso) at k = 0 and 128 frequencies from
+ *     0.01 / L to 64 / L (the grid's Riemann sums are off by a few percent
+ *     of the peak where R has a kink; the quadrature resolves the boundary
+ *     of validity, e.g. omega = 1 for cos(omega r) e^-r in 2D): values
+ *     below -1e-6 of the largest magnitude make the model not positive
+ *     definite (this grid's truncation is what misjudged slow R);
+ *   - the smallest eigenvalue of the covariance matrix of a small grid (64
+ *     samples in 1D, 16x16 in 2D, 6x6x6 in 3D) spaced L / 16;
+ *   - isotropic models: R >= R(0) inf Omega_d (Schoenberg 1938: -0.40276,
+ *     min J0, in 2D; -0.21723, min sin(x)/x, in 3D) over lags 0..L, and in
+ *     3D a non-increasing line spectrum (the spectrum of R along a line,
+ *     S1(f) = 2 pi int_f^inf S(k) k dk; of the tapered R when slow);
+ *   - slow R with a negative power-law tail R ~ -c r^-b, b <= d (fitted
+ *     from 1e2 L0 to 1e5 L0): the integral of R diverges to -infinity
+ *     (NL_CHECK_NEG_INTEGRAL); a positive tail r^-b, b < d, is an
+ *     integrable singularity ~ k^(b-d) of S at 0 that the taper smooths;
+ *   - compactly supported isotropic R: the asymptotics of S at high |k|
+ *     from R's exponents at the origin and at the edge of its support
+ *     (analysis/check_edge.c, NL_CHECK_EDGE: Askey's (1-r)_+^nu below
+ *     nu = (d+1)/2, whose negative lobes lie far beyond any sampling).
+ * Smoothness: the line spectrum of the profile R(t) along x (times the
+ * taper when slow) falls as f^-b between 16/L and 128/L; the order m of
+ * mean-square differentiability is the largest m with a finite moment of
+ * order 2m, m = ceil((b - 1)/2) - 1 (with 0.05 of slack for the fit), -1
+ * meaning infinitely differentiable when the spectrum falls faster than
+ * any power, and 0 whenever R has a kink at the origin (R(0) - R(d) ~ d^a,
+ * a < 1.9, at d = 1e-5 L); the d-dimensional density of an isotropic or
+ * ellipsoidal model falls as k^-(b + d - 1); R''(0) is an extrapolated
+ * difference (core/expr_limit.c) for expressions, a finite difference
+ * otherwise.
  *
  * A nugget (core/model.h) is white noise: its sampled spectra gain a
  * constant, so the model is positive definite whenever its continuous part
@@ -81,9 +107,13 @@ typedef enum {
     NL_CHECK_VALID = 0,       /* it is */
     NL_CHECK_NEG_INTEGRAL,    /* S(0) < 0: the integral of R over R^d is negative */
     NL_CHECK_NEG_SPECTRUM,    /* S < 0 at |k| = why_k */
-    NL_CHECK_BOUND,           /* isotropic R below -R(0)/d at lag why_lag */
+    NL_CHECK_BOUND,           /* isotropic R below R(0) nl_check_isotropic_bound(d) at lag min_r_lag */
     NL_CHECK_NEG_EIGENVALUE,  /* the grid's covariance matrix has a negative eigenvalue */
-    NL_CHECK_LINE_RISES       /* 3D isotropic: the line spectrum rises at f = why_k */
+    NL_CHECK_LINE_RISES,      /* 3D isotropic: the line spectrum rises at f = why_k */
+    NL_CHECK_EDGE,            /* compactly supported isotropic R whose edge singularity makes S
+                                 negative at high |k| (analysis/check_edge.c) */
+    NL_CHECK_NEG_TAPERED      /* the spectrum of R times a Gaussian taper, >= 0 for every valid R,
+                                 is negative at |k| = min_spectrum_k (core/taper.c) */
 } nl_check_reason;
 
 typedef struct {
@@ -102,7 +132,7 @@ typedef struct {
     int isotropic;           /* the model is isotropic in dim */
     double min_r;            /* min R / R(0) over lags 0..L along x (NAN: not sampled, spectral models) */
     double min_r_lag;        /* the lag where it is reached */
-    int isotropic_bound_ok;  /* min_r >= -1/dim (always 1 if not isotropic) */
+    int isotropic_bound_ok;  /* min_r >= nl_check_isotropic_bound(dim) (always 1 if not isotropic) */
     int monotone_3d;         /* 3D isotropic: line spectrum non-increasing (1 if not applicable) */
     double line_rise_f;      /* where it rises (0 if it does not) */
     double spectral_decay;   /* b in S1 ~ f^-b, the line spectrum of R along x (INFINITY: faster) */
@@ -127,6 +157,11 @@ typedef struct {
  * (core/model.h: expression models are not thread-safe); the FFTs it runs
  * plan FFTW, so not concurrently with other planning. */
 int nl_check_model(const nl_model *m, int dim, nl_check *out);
+
+/* The bound an isotropic correlation R / R(0) keeps in dim dimensions:
+ * the infimum of Schoenberg's Omega_dim, -1 (1D), min J0 = -0.40276 (2D),
+ * min sin(x)/x = -0.21723 (3D). */
+double nl_check_isotropic_bound(int dim);
 
 /* Valid neighbours of a model m whose check c (nl_check_model of m) found
  * it not positive definite, as specs separated by '\n' into buf (size

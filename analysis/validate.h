@@ -85,6 +85,7 @@ extern "C" {
 #endif
 
 #include "../core/model.h"
+#include "../core/nl_error.h"
 #include "../synth/method.h"
 
 #include <stddef.h>
@@ -183,7 +184,8 @@ typedef struct {
     const char *name;               /* nl_validate_method_name (static storage) */
     int ran;                        /* 1: the ensemble ran and the numbers below are set; 0: refused */
     int status;                     /* the NL_E* code of a refusal; NL_OK when ran or not run yet */
-    char why[256];                  /* the refusal's one-line message ("" when ran, "not run" before) */
+    char why[NL_ERRMSG_MAX];        /* the refusal's one-line message ("" when ran, "not run" before;
+                                       as long as nl_errmsg's, core/nl_error.h) */
     double seconds;                 /* wall time of planning and the ensemble */
     /* ensemble mean ACF and its standard error by direction and lag
      * (variance units of the model); lags 0..nlag[dir] - 1 of the result */

@@ -13,9 +13,12 @@
 static const char help[] =
     "usage: noiselab check --acf SPEC --dim D [--profile-1d[=RMAX]] [--json]\n"
     "       noiselab check --spectrum SPEC --dim D [--json]\n\n"
-    "Positive definiteness (the sign of the D-dimensional spectrum, the smallest\n"
-    "eigenvalue of a covariance matrix, the -1/n bound and the 3D non-increasing\n"
-    "line spectrum for isotropic models), smoothness (R''(0), the order of\n"
+    "Positive definiteness (the sign of the D-dimensional spectrum, of R times a\n"
+    "Gaussian taper too, exact in sign however slowly R decays; the smallest\n"
+    "eigenvalue of a covariance matrix; for isotropic models Schoenberg's bound\n"
+    "R >= min J0 R(0) in 2D, min sin(x)/x R(0) in 3D, the 3D non-increasing line\n"
+    "spectrum, a negative power-law tail r^-b with b <= D, and, for compact\n"
+    "support, the edge's asymptotics), smoothness (R''(0), the order of\n"
     "mean-square differentiability, the decay of the line spectrum -- the\n"
     "spectrum of R along a line -- and of the D-dimensional density) and the\n"
     "spacing below which subdivision's matrix is numerically singular.  A model\n"
@@ -40,7 +43,8 @@ static const char help[] =
     "c2, min_c2 (relative to C2(0)), min_c2_lag}.\n";
 
 static const char *why_key[] = {NULL, "negative-integral", "negative-spectrum", "isotropic-bound",
-                                "negative-eigenvalue", "line-spectrum-rises"};
+                                "negative-eigenvalue", "line-spectrum-rises", "edge-asymptotics",
+                                "negative-tapered-spectrum"};
 
 /* A JSON number, or null where it is undefined or unbounded. */
 static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
@@ -140,8 +144,8 @@ static void print_why(const nl_check *k, const char *nb)
                k->min_spectrum_k, k->min_spectrum);
         break;
     case NL_CHECK_BOUND:
-        printf("  why                    R falls to %.3f R(0) at lag %.3g, below the -1/%d an isotropic covariance "
-               "allows in %dD\n", k->min_r, k->min_r_lag, d, d);
+        printf("  why                    R falls to %.3f R(0) at lag %.3g, below the %.4f R(0) an isotropic covariance "
+               "allows in %dD (Schoenberg 1938)\n", k->min_r, k->min_r_lag, nl_check_isotropic_bound(d), d);
         break;
     case NL_CHECK_NEG_EIGENVALUE:
         printf("  why                    the covariance matrix of a grid of %zu^%d points spaced %.3g has a negative "
@@ -151,6 +155,16 @@ static void print_why(const nl_check *k, const char *nb)
     case NL_CHECK_LINE_RISES:
         printf("  why                    its line spectrum (of R along a line) rises at f = %.3g; an isotropic 3D "
                "covariance needs it non-increasing\n", k->line_rise_f);
+        break;
+    case NL_CHECK_NEG_TAPERED:
+        printf("  why                    the %dD spectrum of R times a Gaussian taper (positive for every valid R, "
+               "however slowly R decays) is negative at |k| = %.3g cycles per unit (%.3g times its largest "
+               "magnitude): no field has this covariance\n", d, k->min_spectrum_k, k->min_spectrum);
+        break;
+    case NL_CHECK_EDGE:
+        printf("  why                    R vanishes beyond a lag with an edge singularity that its behaviour at lag 0 "
+               "does not outweigh: its %dD spectrum oscillates in sign at high |k| (beyond the frequencies "
+               "sampled): no field has this covariance\n", d);
         break;
     default: break;
     }
@@ -219,8 +233,8 @@ static void print_text(const char *spec, const nl_check *k, const char *nb)
         printf("  variance R(0)          %.6g (the integral of S)\n", k->variance);
     print_eigen(k);
     if (k->isotropic && isfinite(k->min_r))
-        printf("  min R / R(0)           %.4f at lag %.3g (isotropic bound -1/%d: %s)\n", k->min_r, k->min_r_lag, d,
-               k->isotropic_bound_ok ? "ok" : "violated");
+        printf("  min R / R(0)           %.4f at lag %.3g (isotropic bound %.4f in %dD: %s)\n", k->min_r, k->min_r_lag,
+               nl_check_isotropic_bound(d), d, k->isotropic_bound_ok ? "ok" : "violated");
     if (d == 3 && k->isotropic && !k->spectral)
         printf("  3D line spectrum       %s\n", k->monotone_3d ? "non-increasing" : "rises");
     print_smooth(k);

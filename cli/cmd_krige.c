@@ -272,7 +272,7 @@ static int cli_krige_local(opts_t *a, nl_points *pt)
     for (int d = 0; d < 3; d++)
         h[d] = (a->hi[d] - a->lo[d]) / (double)a->g[d];
     if ((st = nl_size_check(a->gdim, a->g, sizeof(double), a->vout ? 2 : 1, NULL))) {
-        char why[256];
+        char why[NL_ERRMSG_MAX];
         snprintf(why, sizeof why, "%s", nl_errmsg());
         cli_die(st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1, "--grid %s: %s", a->grid, why);
     }
@@ -325,7 +325,7 @@ int cli_cmd_krige(int argc, char **argv)
     for (int d = 0; d < 3; d++)
         h[d] = (a.hi[d] - a.lo[d]) / (double)a.g[d];
     if ((st = nl_size_check(a.gdim, a.g, sizeof(double), a.vout ? 2 : 1, NULL))) {
-        char why[256];
+        char why[NL_ERRMSG_MAX];
         snprintf(why, sizeof why, "%s", nl_errmsg());
         cli_die(st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1, "--grid %s: %s", a.grid, why);
     }

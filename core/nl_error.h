@@ -42,9 +42,15 @@ enum {
     NL_EFAIL = 7     /* numerical or library failure while running */
 };
 
+/* The longest message kept, in bytes with its terminating NUL. */
+#define NL_ERRMSG_MAX 4096
+
 /* Record a message for status code `code` and return the code.
- * Use through NL_ERROR so that file and line are recorded too.  The message
- * is truncated to 511 bytes.  Thread-safe (per-thread buffer). */
+ * Use through NL_ERROR so that file and line are recorded too.  A message
+ * longer than NL_ERRMSG_MAX - 1 bytes keeps its first 1024 bytes and its
+ * end, joined by " [... N bytes left out ...] " (N its whole length), so
+ * that the reason after a long model spec survives.  Thread-safe
+ * (per-thread buffer). */
 int nl_error_set(int code, const char *file, int line, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 
