@@ -77,7 +77,9 @@ enum {
     NL_FAMILY_EXPRESSION = 1 << 2,/* evaluated by libmatheval: not reentrant, parse not thread-safe */
     NL_FAMILY_ARGUMENT = 1 << 3,  /* the spec's text after ':' is an argument (an expression, a
                                      file), its key=value pairs after a final ';' */
-    NL_FAMILY_FILE = 1 << 4       /* the argument names a file that parsing the spec reads */
+    NL_FAMILY_FILE = 1 << 4,      /* the argument names a file that parsing the spec reads */
+    NL_FAMILY_COMPOSITE = 1 << 5  /* a sum or product of structures (core/model.h); never
+                                     registered: nl_model_family of such a model */
 };
 
 typedef struct nl_family {

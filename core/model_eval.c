@@ -9,7 +9,10 @@ static double acf_continuous(const nl_model *m, int dim, const double *lag);
 /* The nugget is white noise: it adds to R at lag 0 exactly and nowhere else. */
 double nl_model_acf(const nl_model *m, int dim, const double *lag)
 {
-    double v = acf_continuous(m, dim, lag);
+    double v;
+    if (m->nterms)
+        return nl_model_composite_acf(m, dim, lag);
+    v = acf_continuous(m, dim, lag);
     if (m->nugget != 0) {
         int zero = 1;
         for (int a = 0; a < dim; a++)
