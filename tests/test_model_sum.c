@@ -1,0 +1,190 @@
+/* Sums and products of structures (core/model.h, "Sums and products"):
+ * R against the structures evaluated separately, the split rule's edge
+ * cases, parameter names, spectra, refusals. */
+#include "../core/model.h"
+#include "../core/nl_error.h"
+#include "util.h"
+
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static nl_model *parse_ok(const char *spec)
+{
+    nl_model *m = NULL;
+    cr_assert_eq(nl_model_parse(spec, &m), NL_OK, "%s: %s", spec, nl_errmsg());
+    return m;
+}
+
+static void parse_bad(const char *spec, const char *needle)
+{
+    nl_model *m = (nl_model *)1;
+    cr_assert_eq(nl_model_parse(spec, &m), NL_EINVAL, "%s should be refused", spec);
+    cr_assert_null(m);
+    cr_assert(strstr(nl_errmsg(), needle), "%s: \"%s\" should name \"%s\"", spec, nl_errmsg(), needle);
+}
+
+/* Lags in 1, 2 and 3D, the origin among them (where nuggets count). */
+static const double lags[][3] = {{0, 0, 0}, {0.37, 0, 0}, {-1.3, 0.8, 0}, {2.385, -4.1, 0.6}, {0, 0, 1e-9},
+                                 {7.5, 3.25, -2}, {0.001, 0.002, 0.003}};
+#define NLAGS (sizeof lags / sizeof *lags)
+
+/* R of the composite equals the sum (op '+') or product of the parts'
+ * R, each parsed alone, exactly: the composite adds the same doubles in
+ * the same order (starting from 0, or multiplies from 1: exact). */
+static void same_as_parts(const char *spec, const char *const *parts, const char *ops, size_t n)
+{
+    nl_model *m = parse_ok(spec), *p[8];
+    for (size_t i = 0; i < n; i++)
+        p[i] = parse_ok(parts[i]);
+    for (int dim = 1; dim <= 3; dim++)
+        for (size_t l = 0; l < NLAGS; l++) {
+            /* '*' first: a sum of products, left to right */
+            double total = 0, prod = nl_model_acf(p[0], dim, lags[l]);
+            for (size_t i = 1; i <= n; i++) {
+                if (i == n || ops[i - 1] == '+') {
+                    total += prod;
+                    if (i < n)
+                        prod = nl_model_acf(p[i], dim, lags[l]);
+                } else
+                    prod *= nl_model_acf(p[i], dim, lags[l]);
+            }
+            double r = nl_model_acf(m, dim, lags[l]);
+            cr_expect(r == total || (isnan(r) && isnan(total)), "%s, %dD, lag %zu: %.17g, parts %.17g", spec, dim, l,
+                      r, total);
+        }
+    cr_expect_eq(nl_model_structures(m), n, "%s", spec);
+    for (size_t i = 0; i < n; i++) {
+        cr_expect_str_eq(nl_model_spec(nl_model_structure(m, i)), parts[i]);
+        cr_expect_eq(nl_model_operator(m, i), i + 1 < n ? ops[i] : 0, "%s: operator %zu", spec, i);
+    }
+    cr_expect_null(nl_model_structure(m, n));
+    for (size_t i = 0; i < n; i++)
+        nl_model_free(p[i]);
+    nl_model_free(m);
+}
+
+Test(model_sum, acf_is_the_sum_or_product_of_the_parts)
+{
+    const char *a[] = {"spherical:var=0.59,scale=8.97,nugget=0.05", "markov:scale=2.385,var=0.3"};
+    same_as_parts("spherical:var=0.59,scale=8.97,nugget=0.05 + markov:scale=2.385,var=0.3", a, "+", 2);
+    same_as_parts("spherical:var=0.59,scale=8.97,nugget=0.05+markov:scale=2.385,var=0.3", a, "+", 2);
+    const char *b[] = {"markov:scale=3", "oscillatory:omega=2,scale=1.5"};
+    same_as_parts("markov:scale=3 * oscillatory:omega=2,scale=1.5", b, "*", 2);
+    /* '*' before '+', each structure its own anisotropy and nugget */
+    const char *c[] = {"gauss:scale=0.5,var=0.1,angle=30,ratio=0.4", "markov:scale=3,zratio=2.5",
+                       "oscillatory:omega=2", "spherical:scale=4,sep", "matern:nu=1.5,scale=2",
+                       "gauss:scale=0.8,nugget=0.2"};
+    same_as_parts("gauss:scale=0.5,var=0.1,angle=30,ratio=0.4 + markov:scale=3,zratio=2.5*oscillatory:omega=2 + "
+                  "spherical:scale=4,sep * matern:nu=1.5,scale=2 + gauss:scale=0.8,nugget=0.2", c, "+*+*+", 6);
+    /* argument families: the last structure, or ended by ';' */
+    const char *d[] = {"markov:scale=2", "expr:0.5*exp(-t^2)+0.25*exp(-abs(t))"};
+    same_as_parts("markov:scale=2 + expr:0.5*exp(-t^2)+0.25*exp(-abs(t))", d, "+", 2);
+    const char *e[] = {"expr:0.5*exp(-t^2)+0.1;", "markov:scale=2"};
+    same_as_parts("expr:0.5*exp(-t^2)+0.1; + markov:scale=2", e, "+", 2);
+    const char *f[] = {"expr:0.5*exp(-r^2);ratio=2", "markov:scale=2"};
+    same_as_parts("expr:0.5*exp(-r^2);ratio=2 * markov:scale=2", f, "*", 2);
+    /* a number's sign is no operator */
+    const char *g[] = {"markov:scale=1e+1,var=+2", "gauss:scale=2.5E+0"};
+    same_as_parts("markov:scale=1e+1,var=+2+gauss:scale=2.5E+0", g, "+", 2);
+}
+
+/* R(0) of a sum is every var and nugget added; nl_model_nugget the
+ * nuggets; the parameters by NAME.I. */
+Test(model_sum, variance_nugget_and_parameter_names)
+{
+    nl_model *m = parse_ok("spherical:var=0.59,scale=897,nugget=0.05 + markov:var=0.2,scale=300,nugget=0.01");
+    double zero[2] = {0, 0}, v = 0;
+    cr_expect_eq(nl_model_acf(m, 2, zero), (0.59 + 0.05) + (0.2 + 0.01));
+    cr_expect_float_eq(nl_model_nugget(m), 0.06, 1e-15);
+    cr_assert_eq(nl_model_param(m, "var.2", &v), NL_OK, "%s", nl_errmsg());
+    cr_expect_eq(v, 0.2);
+    cr_assert_eq(nl_model_param(m, "scale.1", &v), NL_OK);
+    cr_expect_eq(v, 897);
+    cr_assert_eq(nl_model_param(m, "nugget.1", &v), NL_OK);
+    cr_expect_eq(v, 0.05);
+    cr_assert_eq(nl_model_param(m, "ratio.2", &v), NL_OK);
+    cr_expect_eq(v, 1);
+    v = 42;
+    static const char *const bad[] = {"var", "var.0", "var.3", "var.", ".1", "var.1x", "nu.1", "var.-1"};
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        cr_expect_eq(nl_model_param(m, bad[i], &v), NL_EINVAL, "%s", bad[i]);
+        cr_expect_eq(v, 42, "%s left *value", bad[i]);
+    }
+    cr_expect(nl_model_is_isotropic(m));
+    cr_expect(nl_model_is_reentrant(m));
+    cr_expect(nl_model_has_acf(m));
+    cr_expect(!nl_model_is_spectral(m));
+    cr_expect_eq(nl_model_check_dim(m, 3), NL_OK);
+    nl_model_free(m);
+    m = parse_ok("markov:scale=2 + expr:exp(-r^2)*x");
+    cr_expect(!nl_model_is_isotropic(m), "an expression in x makes the sum anisotropic");
+    cr_expect(!nl_model_is_reentrant(m), "an expression makes the sum not reentrant");
+    nl_model_free(m);
+    m = parse_ok("markov:scale=2 + gauss:ratio=0.5");
+    cr_expect(!nl_model_is_isotropic(m));
+    nl_model_free(m);
+}
+
+/* S of a sum: the sum of the closed forms (the 1D markov and gauss
+ * spectra, exactly); NAN where a term has none or for a product. */
+Test(model_sum, spectra)
+{
+    nl_model *m = parse_ok("markov:scale=3,var=0.7 + gauss:scale=1.5"), *a = parse_ok("markov:scale=3,var=0.7"),
+             *b = parse_ok("gauss:scale=1.5");
+    for (double f = 0; f < 2; f += 0.137)
+        cr_expect_eq(nl_model_spectrum(m, 1, &f), nl_model_spectrum(a, 1, &f) + nl_model_spectrum(b, 1, &f));
+    nl_model_free(m);
+    double f2[2] = {0.1, 0.2}, f1 = 0.1;
+    m = parse_ok("markov:scale=3 + spherical:scale=2");
+    cr_expect(isnan(nl_model_spectrum(m, 1, &f1)), "spherical has no closed form: the sum has none");
+    nl_model_free(m);
+    m = parse_ok("markov:scale=3 * gauss:scale=2");
+    cr_expect(isnan(nl_model_spectrum(m, 1, &f1)), "a product's spectrum is a convolution: not given");
+    cr_expect(isnan(nl_model_spectrum(m, 2, f2)));
+    nl_model_free(m);
+    nl_model_free(a);
+    nl_model_free(b);
+}
+
+Test(model_sum, split_refusals)
+{
+    parse_bad("markov:scale=3 +", "structure 2 of");
+    parse_bad("+ markov:scale=3", "structure 1 of");
+    parse_bad("markov + + gauss", "structure 2 of");
+    parse_bad("markov * + gauss", "is empty");
+    parse_bad("markov +  ", "is empty");
+    parse_bad("markov:scale=3 * (gauss + markov)", "parentheses");
+    parse_bad("(markov + gauss)", "parentheses");
+    parse_bad("power:d=2 + markov", "defined by its spectrum");
+    parse_bad("markov + spectrum:exp(-f^2)", "defined by its spectrum");
+    parse_bad("markov:nugget=0.1 * gauss", "a nugget inside a product");
+    parse_bad("markov * gauss:nugget=0.1 + gauss", "a nugget inside a product");
+    /* a structure's own message */
+    parse_bad("markov + gauss:scale=-1", "gauss: scale: expected a positive number");
+    parse_bad("markov + nosuch:scale=1", "unknown model \"nosuch\"");
+    /* an expression takes the rest of the spec: here "exp(-t) * markov" */
+    parse_bad("expr:exp(-t) * markov", "markov");
+    /* scale=2e+gauss: the sign of an exponent, so one malformed number */
+    parse_bad("markov:scale=2e+gauss", "expected a finite number");
+}
+
+/* 64 structures parse (a 2300-byte spec); a 65th is refused. */
+Test(model_sum, many_structures)
+{
+    char *spec = malloc(80 * 70);
+    size_t len = 0;
+    double zero[1] = {0};
+    cr_assert(spec);
+    for (int i = 0; i < NL_MODEL_MAX_STRUCTURES; i++)
+        len += (size_t)sprintf(spec + len, "%smarkov:scale=%d.5,var=0.015625", i ? " + " : "", i + 1);
+    nl_model *m = parse_ok(spec);
+    cr_expect_eq(nl_model_structures(m), NL_MODEL_MAX_STRUCTURES);
+    cr_expect_eq(nl_model_acf(m, 1, zero), 1.0, "64 x 1/64");
+    nl_model_free(m);
+    sprintf(spec + len, "*gauss");
+    parse_bad(spec, "more than 64 structures");
+    free(spec);
+}
