@@ -122,8 +122,11 @@ static int init_spec(const nl_fit_options *o, nl_fit_params *p)
     nl_model *m;
     size_t n;
     int st = nl_model_parse(o->family, &m);
-    if (st)
-        return NL_ERROR(st, "model: %s", nl_errmsg());
+    if (st) {
+        char why[512];
+        snprintf(why, sizeof why, "%s", nl_errmsg());
+        return NL_ERROR(st, "model: %s", why);
+    }
     n = nl_model_structures(m);
     if (n > NL_FIT_MAX_STRUCTURES) {
         nl_model_free(m);
