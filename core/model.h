@@ -46,10 +46,11 @@
  * white noise: write it as a term of the sum).  S of a sum is the sum of
  * the closed-form spectra, NAN where any term has none; of a product NAN
  * (no convolution).  Structures defined by their spectrum (power:,
- * spectrum:) are refused in sums and products.  Splitting: a '+' or '*' of
+ * spectrum:) and those that read a file (image:) are refused in sums and
+ * products.  Splitting: a '+' or '*' of
  * a named family's keys separates structures unless it is a number's sign
  * (after '=' or in an exponent: var=+2, scale=1e+3); an argument family's
- * argument (expr:, image:) takes every character up to its first ';', or
+ * argument (expr:) takes every character up to its first ';', or
  * up to the end of the spec without one, so an expression is either the
  * last structure or ends with ';' (its keys may follow):
  *     markov:scale=2 + expr:0.5*exp(-t^2)        expr: last

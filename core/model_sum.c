@@ -156,7 +156,7 @@ static int make_node(const nl_family *fam, const char *spec, size_t len, nl_mode
     m->var = fam == &nl_family_sum ? 0 : 1;
     for (size_t i = 0; i < n; i++) {
         m->var = fam == &nl_family_sum ? m->var + terms[i]->var : m->var * terms[i]->var;
-        m->nugget += terms[i]->nugget;
+        m->nugget += nl_model_nugget(terms[i]);
         m->scale = fmax(m->scale, terms[i]->scale);
     }
     *out = m;
@@ -177,6 +177,14 @@ static int parse_structure(const char *spec, size_t start, size_t end, size_t i,
     if (start == end)
         return NL_ERROR(NL_EINVAL, "model: structure %zu of \"%s\" is empty (expected STRUCTURE + STRUCTURE * "
                         "STRUCTURE ..., e.g. markov:scale=8 + gauss:scale=2,var=0.5)", i, spec);
+    {
+        /* a file read by parsing: `synth --from` reads a recorded file only
+         * when the user names it, which it checks of a spec's first family */
+        const nl_family *f = nl_family_find(spec + start, strcspn(spec + start, ": \t"));
+        if (f && (f->flags & NL_FAMILY_FILE))
+            return NL_ERROR(NL_EINVAL, "model: structure %zu of \"%s\" reads a file (%s:): sums and products "
+                            "take models defined by a formula or an expression", i, spec, f->name);
+    }
     if (!(s = strndup(spec + start, end - start)))
         return NL_ERROR(NL_ENOMEM, "out of memory");
     st = nl_model_parse(s, out);
@@ -201,7 +209,7 @@ static int group(const char *spec, const size_t *at, nl_model **s, const char *o
             continue;
         /* s[first..i] is one product */
         for (size_t k = first; k <= i; k++)
-            if (i > first && s[k]->nugget != 0 && !st)
+            if (i > first && nl_model_nugget(s[k]) != 0 && !st)
                 st = NL_ERROR(NL_EINVAL, "model: a nugget inside a product (structure %zu of \"%s\"): expected "
                               "nuggets as terms of the sum (white noise times a structure is white noise)",
                               k + 1, spec);

@@ -163,6 +163,7 @@ Test(model_sum, split_refusals)
     parse_bad("(markov + gauss)", "parentheses");
     parse_bad("power:d=2 + markov", "defined by its spectrum");
     parse_bad("markov + spectrum:exp(-f^2)", "defined by its spectrum");
+    parse_bad("markov + image:no-such-file.png", "reads a file (image:)");
     parse_bad("markov:nugget=0.1 * gauss", "a nugget inside a product");
     parse_bad("markov * gauss:nugget=0.1 + gauss", "a nugget inside a product");
     /* a structure's own message */
