@@ -16,7 +16,11 @@ static const char help[] =
     "  zratio=Q     length along z / length along x\n"
     "(for %s after a final ';', e.g. \"expr:exp(-r);ratio=0.5\").\n"
     "Lags are in spacing units; frequencies in cycles per unit length; spectra\n"
-    "are two-sided densities whose integral is the variance R(0).\n";
+    "are two-sided densities whose integral is the variance R(0).\n"
+    "Structures join with + and * ('*' first, no parentheses), each with its own\n"
+    "keys: \"spherical:var=0.59,scale=897,nugget=0.05 + markov:var=0.2,scale=300\"\n"
+    "(R: the sum, or the product, of the structures'; an expr: structure last or\n"
+    "ended by ';'; parameters of a sum named NAME.I, e.g. var.2; docs/models.md).\n";
 
 int cli_cmd_models(int argc, char **argv)
 {
