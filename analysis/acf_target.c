@@ -39,7 +39,7 @@ int nl_acf_model_values(const nl_model *m, int dim, const size_t *n, const doubl
     int st;
     if (axis < 0 || axis >= dim)
         return NL_ERROR(NL_EINVAL, "axis: expected an axis of the %d-D field, got %d", dim, axis);
-    if ((st = nl_model_check_dim(m, dim)))
+    if ((st = nl_model_check_dim(m, dim)) || (st = nl_model_check_stationary(m, "an ACF target")))
         return st;
     if (nl_model_is_spectral(m))
         return spectral_values(m, dim, n, h, axis, lag, nl, out);

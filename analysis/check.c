@@ -365,6 +365,8 @@ static int check_model(const nl_model *m, int dim, nl_check *c)
 int nl_check_model(const nl_model *m, int dim, nl_check *c)
 {
     int st;
+    if ((st = nl_model_check_stationary(m, "check's positive-definiteness path (nl_check_model)")))
+        return st;
     nl_gsl_enter();
     st = check_model(m, dim, c);
     nl_gsl_leave();

@@ -122,6 +122,8 @@ int nl_condsim_plan_alloc(const nl_model *m, size_t n, const double *pts, const 
     nl_krige_plan *kp;
     int st;
     *out = NULL;
+    if ((st = nl_model_check_stationary(m, "conditional simulation")))
+        return st;
     if (!n)
         return NL_ERROR(NL_EINVAL, "conditional simulation: expected at least one datum, got none");
     if (interp != NL_INTERP_NEAREST && interp != NL_INTERP_LINEAR)

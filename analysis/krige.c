@@ -19,7 +19,8 @@ struct nl_krige_plan {
     size_t n;           /* points */
     double *pts;        /* n * dim */
     int simple;         /* known mean */
-    double r0;          /* R(0) */
+    double r0;          /* R(0) (+ shift) */
+    double shift;       /* intrinsic models: the constant added to K = -gamma (0 otherwise) */
     gsl_matrix *L;      /* Cholesky factor of C, or NULL */
     gsl_matrix *pinv;   /* pseudo-inverse of C, or NULL */
     gsl_vector *a;      /* C^-1 (d - b 1) */
@@ -43,7 +44,7 @@ static double cov(const nl_krige_plan *p, const double *x, const double *y)
     double lag[3] = {0, 0, 0};
     for (int a = 0; a < p->dim; a++)
         lag[a] = x[a] - y[a];
-    return nl_model_acf(p->m, p->dim, lag);
+    return p->shift + nl_model_acf(p->m, p->dim, lag);
 }
 
 /* y = C^-1 b */
@@ -149,7 +150,7 @@ static int check_inputs(const nl_model *m, int dim, size_t n, const double *pts,
     if (st)
         return st;
     r0 = nl_model_acf(m, dim, zero);
-    if (!(isfinite(r0) && r0 > 0))
+    if (!(isfinite(r0) && (r0 > 0 || (nl_model_is_intrinsic(m) && r0 == 0))))
         return NL_ERROR(NL_EINVAL, "%s: R(0) = %g; expected a finite positive variance", nl_model_spec(m), r0);
     if (nl_size_check(2, (size_t[]){n, n}, sizeof(double), 4, NULL))
         return NL_ERROR(NL_ETOOBIG, "kriging: the %zu x %zu covariance matrix and its factors (4 copies of %g "
@@ -187,6 +188,28 @@ static int check_solution(const nl_krige_plan *p)
     return NL_OK;
 }
 
+/* An intrinsic model's K = -gamma gives an indefinite C (one positive
+ * eigenvalue of gamma's matrix; Micchelli 1986: nonsingular for distinct
+ * points).  Ordinary kriging's weights sum to 1, so a constant A added to
+ * every covariance changes neither the weights nor the estimate nor the
+ * variance (the bordered system [C + A 1 1^T, 1; 1^T, 0] has the same
+ * solution, with the same multiplier); A above 1 / (1^T Gamma^-1 1), which
+ * is max over weights summing to 1 of w^T Gamma w, of the order of the
+ * largest gamma among the data, makes C + A 1 1^T positive definite, so
+ * Cholesky applies.  A = 2 max gamma_ij (1 when all coincide); should it
+ * not suffice, the factorisation falls back to the pseudo-inverse as for
+ * any singular C, which remains exact. */
+static void shift_intrinsic(nl_krige_plan *p, gsl_matrix *C)
+{
+    double g = 0;
+    for (size_t i = 0; i < p->n; i++)
+        for (size_t j = 0; j < p->n; j++)
+            g = fmax(g, p->r0 - gsl_matrix_get(C, i, j));
+    p->shift = g > 0 ? 2 * g : 1;
+    p->r0 += p->shift;
+    gsl_matrix_add_constant(C, p->shift);
+}
+
 static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val, int simple,
                      double mean, int strict, nl_krige_plan **out)
 {
@@ -204,6 +227,10 @@ static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *
         return st;
     if (!nl_model_has_acf(m))
         return NL_ERROR(NL_EINVAL, "%s: kriging needs R(lag)", nl_model_spec(m));
+    if (simple && nl_model_is_intrinsic(m))
+        return NL_ERROR(NL_EINVAL, "%s: simple kriging (--mean) needs a covariance; %s is intrinsic (no "
+                        "covariance, no mean): expected ordinary kriging (no --mean)", nl_model_spec(m),
+                        nl_model_family(m)->name);
     if ((st = check_inputs(m, dim, n, pts, val)))
         return st;
     p = calloc(1, sizeof *p);
@@ -229,6 +256,8 @@ static int krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *
         gsl_vector_set(one, i, 1.0);
     }
     st = check_matrix(p, C);
+    if (!st && nl_model_is_intrinsic(m))
+        shift_intrinsic(p, C);
     if (!st)
         st = factorize(p, C, strict);
     if (!st) {

@@ -83,13 +83,29 @@ int nl_krige_local_alloc(const nl_model *m, int dim, size_t n, const double *pts
         return st;
     if ((st = nl_model_check_dim(m, dim)))
         return st;
-    double r0 = nl_model_acf(m, dim, zero);
+    double r0 = nl_model_acf(m, dim, zero), shift = 0;
+    if (nl_model_is_intrinsic(m)) {
+        /* as analysis/krige.c: a constant added to K = -gamma, here twice
+         * gamma across the data's bounding box, bounding every pair's */
+        double lag[3] = {0, 0, 0};
+        if (o->drift == NL_DRIFT_NONE)
+            return NL_ERROR(NL_EINVAL, "%s: simple kriging (--mean) needs a covariance; %s is intrinsic (no "
+                            "covariance, no mean): expected ordinary or universal kriging", nl_model_spec(m),
+                            nl_model_family(m)->name);
+        for (int a = 0; a < dim; a++)
+            lag[a] = hi[a] - lo[a];
+        shift = 2 * nl_model_variogram(m, dim, lag);
+        if (!(shift > 0) || !isfinite(shift))
+            shift = 1;
+        r0 += shift;
+    }
     if (!(r0 > 0) || !isfinite(r0))
         return NL_ERROR(NL_EINVAL, "kriging: the model's R(0) is %g; expected a finite positive variance", r0);
     nl_krige_local *k = calloc(1, sizeof *k);
     if (!k)
         return NL_ERROR(NL_ENOMEM, "kriging: out of memory");
     k->m = m, k->dim = dim, k->n = n, k->o = *o, k->p = terms(o->drift, dim), k->r0 = r0;
+    k->shift = shift;
     k->cap = o->nmax && o->nmax < n ? o->nmax : n < NL_KRIGE_LOCAL_MAX ? n : NL_KRIGE_LOCAL_MAX;
     for (int a = 0; a < dim; a++)
         k->centre[a] = 0.5 * (lo[a] + hi[a]), k->scale[a] = hi[a] > lo[a] ? 0.5 * (hi[a] - lo[a]) : 1;
@@ -160,7 +176,7 @@ static double cov(const nl_krige_local *k, const double *x, const double *y)
     double lag[3] = {0, 0, 0};
     for (int a = 0; a < k->dim; a++)
         lag[a] = x[a] - y[a];
-    return nl_model_acf(k->m, k->dim, lag);
+    return k->shift + nl_model_acf(k->m, k->dim, lag);
 }
 
 const char *nl_kl_where(const nl_krige_local *k, const double *x, char *buf)

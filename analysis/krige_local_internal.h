@@ -11,7 +11,8 @@ struct nl_krige_local {
     int dim;                  /* 1..3 */
     size_t n, p, cap;         /* data, drift terms, neighbours at most */
     nl_krige_local_options o; /* as given */
-    double r0;                /* R(0) */
+    double r0;                /* R(0) (+ shift) */
+    double shift;             /* intrinsic models: constant added to K = -gamma (analysis/krige.c); 0 */
     double centre[3], scale[3]; /* drift coordinates (x - centre) / scale */
     double *pts, *val;        /* copies of the data */
     nl_spindex *index;        /* k-d tree of pts */

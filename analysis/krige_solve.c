@@ -113,7 +113,7 @@ static void covariances(const nl_krige_local *k, nl_kl_work *w)
             double lag[3] = {0, 0, 0};
             for (int b = 0; b < dim; b++)
                 lag[b] = ti[b] - k->pts[w->set[j] * dim + b];
-            w->Cp[i * K + j] = nl_model_acf(k->m, dim, lag);
+            w->Cp[i * K + j] = k->shift + nl_model_acf(k->m, dim, lag);
         }
     }
     t = w->C, w->C = w->Cp, w->Cp = t; /* C: this set's; Cp: scratch */

@@ -74,6 +74,24 @@ int nl_validate_method_count(void)
     return nslots;
 }
 
+int nl_validate_claim(const nl_validate_result *res, int method, int *verdict)
+{
+    const slot *sl = slot_at(method);
+    const nl_validate_method_result *r = sl ? &res->method[method] : NULL;
+    *verdict = -1;
+    if (sl && (sl->type->caps & NL_METHOD_EXACT)) {
+        if (r->ran)
+            *verdict = r->verdict;
+        return NL_VALIDATE_CLAIM_MODEL;
+    }
+    if (!r || !r->ran || !r->have_exact)
+        return NL_VALIDATE_CLAIM_NONE;
+    *verdict = r->vs_exact.effect.hi <= res->tolerance  ? NL_VALIDATE_WITHIN
+               : r->vs_exact.effect.lo > res->tolerance ? NL_VALIDATE_OFF
+                                                        : NL_VALIDATE_UNRESOLVED;
+    return NL_VALIDATE_CLAIM_OWN;
+}
+
 const char *nl_validate_method_name(int method)
 {
     const slot *s = slot_at(method);

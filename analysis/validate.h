@@ -111,6 +111,14 @@ enum { NL_VALIDATE_X, NL_VALIDATE_Y, NL_VALIDATE_Z, NL_VALIDATE_DIAG, NL_VALIDAT
 /* Verdicts against the tolerance. */
 enum { NL_VALIDATE_WITHIN, NL_VALIDATE_OFF, NL_VALIDATE_UNRESOLVED };
 
+/* What a method claims (nl_validate_claim): the model's covariance (an
+ * exact method, NL_METHOD_EXACT), its own exact expected ACF (subdivision
+ * where vs_exact is set: it misses R by construction, by the error it
+ * reports, exact_effect), or nothing measurable here (an approximate
+ * method without its exact ACF at this size: its verdict against R is
+ * reported, not judged). */
+enum { NL_VALIDATE_CLAIM_MODEL, NL_VALIDATE_CLAIM_OWN, NL_VALIDATE_CLAIM_NONE };
+
 /* How many methods and variants the registry gives validate (at most
  * NL_VALIDATE_METHODS). */
 int nl_validate_method_count(void);
@@ -223,6 +231,14 @@ typedef struct {
     long exact_worst[3];            /* where */
     nl_validate_method_result method[NL_VALIDATE_METHODS]; /* by NL_VALIDATE_* */
 } nl_validate_result;
+
+/* Does method `method` of res deliver what it claims?  Returns the claim
+ * (NL_VALIDATE_CLAIM_*) and, for CLAIM_MODEL and CLAIM_OWN, the verdict
+ * against it in *verdict (CLAIM_MODEL: the method's verdict; CLAIM_OWN:
+ * vs_exact's interval against the tolerance, as the verdict's rule);
+ * *verdict is -1 for CLAIM_NONE and for a method that did not run.
+ * Thread-safe. */
+int nl_validate_claim(const nl_validate_result *res, int method, int *verdict);
 
 /* Prepare *out for model m in dim (1..3) on an n[0..dim-1] grid, each
  * n[a] >= 16: the lags, the target, the thresholds, the spectrum's

@@ -2,6 +2,7 @@
 #include "cli.h"
 #include "opt.h"
 #include "../analysis/check.h"
+#include "../analysis/check_intrinsic.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
 
@@ -246,6 +247,33 @@ static const cli_opt rows[] = {
     CLI_POSITIVE("profile-1d", opts_t, rmax, CLI_GIVEN(opts_t, prof), .flags = CLI_OPTIONAL, .what = "largest lag"),
     {0}};
 
+/* An intrinsic model: its variogram's validity (analysis/check_intrinsic.h). */
+static void check_intrinsic(const char *spec, const nl_model *m, int dim, int json)
+{
+    nl_check_intrinsic k;
+    int st = nl_check_intrinsic_model(m, dim, &k);
+    if (st)
+        cli_die_status(st);
+    if (json) {
+        cli_json_print(json_pack("{s:s,s:i,s:b,s:b,s:f,s:f,s:o,s:o,s:f,s:f}", "model", spec, "dim", dim, "intrinsic", 1,
+                                 "conditionally_negative_definite", k.valid, "alpha", k.alpha, "c", k.c,
+                                 "spectrum_coefficient", num(k.spectrum_coef), "min_spectrum", num(k.min_spectrum),
+                                 "hurst", k.hurst, "fractal_dimension", k.fractal_dimension));
+        return;
+    }
+    printf("%s in %dD: intrinsic (a variogram, no covariance): gamma = %g |h|^%g%s\n", spec, dim, k.c, k.alpha,
+           k.nugget > 0 ? " + nugget" : "");
+    printf("  conditionally negative definite: %s (c |h|^alpha is a variogram in every dimension for "
+           "0 < alpha <= 2; fractional Brownian field, H = %g)\n", k.valid ? "yes" : "NO", k.hurst);
+    if (isfinite(k.spectrum_coef))
+        printf("  generalized spectrum: S(f) = %.6g |f|^-%g, positive (smallest over |f| in 1e-3..1e3: %.3g)\n",
+               k.spectrum_coef, dim + k.alpha, k.min_spectrum);
+    else
+        printf("  generalized spectrum: all at f = 0 (alpha = 2: a random plane)\n");
+    printf("  fractal dimension of a realization's graph: %g; mean-square differentiable: %s\n",
+           k.fractal_dimension, k.alpha < 2 ? "no" : "yes (linear)");
+}
+
 int cli_cmd_check(int argc, char **argv)
 {
     opts_t a = {0};
@@ -261,6 +289,13 @@ int cli_cmd_check(int argc, char **argv)
         cli_die(2, "check: --profile-1d: expected --dim 2 (eq. (14) is the 2D sweep), got --dim %d", a.dim);
     if (!(st = nl_model_parse(a.spec, &m)) && a.prof && nl_model_is_spectral(m))
         cli_die(2, "check: --profile-1d: expected a model defined by R (eq. (14) sweeps R(t)), got %s", a.spec);
+    if (!st && nl_model_is_intrinsic(m)) {
+        if (a.prof)
+            cli_die(2, "check: --profile-1d: expected a model with a covariance, got the intrinsic %s", a.spec);
+        check_intrinsic(a.spec, m, a.dim, a.json);
+        nl_model_free(m);
+        return 0;
+    }
     if (st || (st = nl_check_model(m, a.dim, &k)) ||
         (st = nl_check_neighbours(m, &k, nb, sizeof nb)))
         cli_die_status(st);

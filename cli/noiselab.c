@@ -19,7 +19,7 @@ static const struct {
     {"check", cli_cmd_check, "is a model positive definite, how smooth, where singular"},
     {"coeffs", cli_cmd_coeffs, "subdivision coefficients, variances and flags per level"},
     {"synth", cli_cmd_synth, "synthesise a field by one of the methods fft, subdiv, midpoint,\n"
-                               "           circulant, cholesky, faulting, sparse, lattice"},
+                               "           circulant, cholesky, faulting, sparse, lattice, intrinsic"},
     {"acf", cli_cmd_acf, "estimate the autocorrelation of a field"},
     {"psd", cli_cmd_psd, "estimate the power spectral density of a field (periodogram)"},
     {"hist", cli_cmd_hist, "histogram, moments and goodness of fit of a field"},

@@ -9,16 +9,27 @@
 #define NM NL_VALIDATE_METHODS
 #define ND NL_VALIDATE_DIRS
 
+/* The exit status (cmd_validate.c's help): the model's validity, then each
+ * method against its own claim (nl_validate_claim). */
 int cli_validate_status(const cli_validate *v)
 {
-    int ran = 0;
+    int judged = 0, unresolved = 0;
+    if (!v->k.positive_definite)
+        return 4;
     for (int meth = 0; meth < NM; meth++) {
-        const nl_validate_method_result *r = &v->r.method[meth];
-        if (r->ran && r->verdict != NL_VALIDATE_WITHIN)
+        int verdict;
+        nl_validate_claim(&v->r, meth, &verdict);
+        if (verdict == NL_VALIDATE_OFF)
             return 3;
-        ran += r->ran;
+        unresolved |= verdict == NL_VALIDATE_UNRESOLVED;
+        judged += verdict >= 0;
     }
-    return ran ? 0 : 3;
+    return unresolved ? 5 : judged ? 0 : 3;
+}
+
+const char *cli_validate_claim_name(int claim)
+{
+    return claim == NL_VALIDATE_CLAIM_MODEL ? "model" : claim == NL_VALIDATE_CLAIM_OWN ? "own exact ACF" : "none";
 }
 
 double cli_validate_to_resolve(const nl_validate_result *res, const nl_validate_method_result *r)
@@ -94,6 +105,12 @@ static json_t *method_json(const cli_validate *v, int meth)
         json_object_set_new(o, "map", effect_json(&r->map, v->dim));
     if (r->have_exact)
         json_object_set_new(o, "vs_exact", effect_json(&r->vs_exact, v->dim));
+    {
+        int verdict, claim = nl_validate_claim(&v->r, meth, &verdict);
+        json_object_set_new(o, "claim", json_string(cli_validate_claim_name(claim)));
+        json_object_set_new(o, "claim_verdict",
+                            verdict >= 0 ? json_string(nl_validate_verdict_name(verdict)) : json_null());
+    }
     json_object_set_new(o, "spectrum", spectrum_json(res, r));
     json_object_set_new(o, "acf", acf);
     return o;

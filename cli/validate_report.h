@@ -27,6 +27,9 @@ typedef struct {
  * otherwise. */
 int cli_validate_status(const cli_validate *v);
 
+/* "model", "own exact ACF" or "none" (NL_VALIDATE_CLAIM_*). */
+const char *cli_validate_claim_name(int claim);
+
 /* For an unresolved verdict, the realizations that would likely resolve it:
  * the interval's half-width hi - est shrinks as 1 / sqrt(M), so about
  * M (half-width / |E - est|)^2; 0 when resolved or est = E. */

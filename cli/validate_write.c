@@ -349,6 +349,24 @@ static const char *verdict_words(int verdict)
                                          : "**unresolved**: the interval straddles the tolerance";
 }
 
+/* What each method is judged against for the exit status (nl_validate_claim). */
+static void claims_md(FILE *fp, const cli_validate *v)
+{
+    fprintf(fp, "\nJudged for the exit status (%d), each method against its own claim:", cli_validate_status(v));
+    for (int meth = 0; meth < NM; meth++) {
+        const nl_validate_method_result *r = &v->r.method[meth];
+        int verdict, claim = nl_validate_claim(&v->r, meth, &verdict);
+        if (!r->ran)
+            continue;
+        if (claim == NL_VALIDATE_CLAIM_NONE)
+            fprintf(fp, " %s approximate, nothing to compare at this size (reported, not judged);", r->name);
+        else
+            fprintf(fp, " %s %s %s;", r->name, nl_validate_verdict_name(verdict),
+                    claim == NL_VALIDATE_CLAIM_MODEL ? "R (exact method)" : "its own exact expected ACF");
+    }
+    fprintf(fp, "\n");
+}
+
 /* The leading table: method, verdict, effect size, detectable error, time. */
 static void summary_md(FILE *fp, const cli_validate *v)
 {
@@ -373,6 +391,7 @@ static void summary_md(FILE *fp, const cli_validate *v)
         interval_md(fp, &r->spectrum_error);
         fprintf(fp, " | %.2f s |\n", r->seconds);
     }
+    claims_md(fp, v);
     fprintf(fp, "\nEffect size: the largest |ensemble mean ACF - R| / R(0) over all %zu lags tested, with a conservative "
                 "95%% interval (each lag's mean +- %.2f se, simultaneous over the lags). Tolerance %.3g: *within* when "
                 "the whole interval is at most the tolerance, *off* when all of it is above, *unresolved* otherwise. "

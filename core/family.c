@@ -45,6 +45,17 @@ const nl_family *nl_family_find(const char *name, size_t len)
     return NULL;
 }
 
+const nl_family_alias *nl_family_find_peer(const char *name, size_t len, const nl_family **fam)
+{
+    for (size_t i = 0; i < nl_family_count(); i++)
+        for (size_t k = 0; k < registry[i]->npeers; k++)
+            if (strlen(registry[i]->peers[k].name) == len && strncmp(name, registry[i]->peers[k].name, len) == 0) {
+                *fam = registry[i];
+                return &registry[i]->peers[k];
+            }
+    return NULL;
+}
+
 int nl_family_param_index(const nl_family *f, const char *name)
 {
     for (size_t k = 0; k < f->nparams; k++)

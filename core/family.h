@@ -78,9 +78,30 @@ enum {
     NL_FAMILY_ARGUMENT = 1 << 3,  /* the spec's text after ':' is an argument (an expression, a
                                      file), its key=value pairs after a final ';' */
     NL_FAMILY_FILE = 1 << 4,      /* the argument names a file that parsing the spec reads */
-    NL_FAMILY_COMPOSITE = 1 << 5  /* a sum or product of structures (core/model.h); never
+    NL_FAMILY_INTRINSIC = 1 << 5, /* intrinsic: a variogram with no covariance; profile is the
+                                     generalized covariance -gamma (core/model.h, Intrinsic models) */
+    NL_FAMILY_COMPOSITE = 1 << 6  /* a sum or product of structures (core/model.h); never
                                      registered: nl_model_family of such a model */
 };
+
+/* A peer's name for a family with the peer's own parameterisation: gstat's
+ * `Sph:psill=0.59,range=897`, GSTools' `Gaussian:len_scale=10`,
+ * RandomFields' `RMmatern:nu=1.5,scale=2`.  The spec takes the peer's keys
+ * (params[], ranges and defaults as for a family's own parameters) and
+ * the anisotropy keys; `convert` turns the peer's values into the
+ * family's.  A peer name whose parameters are the family's own is a word
+ * of nl_family.aliases instead. */
+typedef struct {
+    const char *name;              /* as written in a spec, e.g. "Sph" */
+    const char *peer;              /* whose name it is: "gstat", "GSTools", "RandomFields" */
+    const char *formula;           /* R in the peer's parameters, as the peer documents it */
+    size_t nparams;
+    const nl_family_param *params; /* the peer's keys: name, default (NAN: required), range */
+    /* From the peer's values q[0..nparams-1] to the family's parameters
+     * p[] (by index of the family's params[]; p holds the family's
+     * defaults). */
+    void (*convert)(const double *q, double *p);
+} nl_family_alias;
 
 typedef struct nl_family {
     const char *name;          /* as written in a spec */
@@ -115,10 +136,16 @@ typedef struct nl_family {
     /* Is R (or S) a function of |lag| alone when no anisotropy key is
      * given?  NULL: yes. */
     int (*isotropic)(const nl_model *m);
-    /* Dimension checks beyond max_dim (NL_OK or NL_EINVAL); NULL: none. */
+    /* Dimension checks beyond max_dim: NL_OK, NL_ENOTPD where the family
+     * is known not to be positive definite in dim with these parameters
+     * (e.g. askey with nu < (d+1)/2), NL_EINVAL for other reasons; NULL:
+     * none. */
     int (*check_dim)(const nl_model *m, int dim);
     /* d^2 R / dt^2 of the 1D profile at t; NULL: not known (NAN). */
     double (*acf_d2)(const nl_model *m, double t);
+    /* The peers' names with their own parameterisations (none: 0, NULL). */
+    size_t npeers;
+    const nl_family_alias *peers;
 } nl_family;
 
 /* The registered families, in registration order (core/families/list.h). */
@@ -128,6 +155,10 @@ const nl_family *nl_family_get(size_t i);
 /* The family a spec's name (before ':', len bytes) names, by name or
  * alias; NULL when none. */
 const nl_family *nl_family_find(const char *name, size_t len);
+
+/* The peer alias a spec's name (len bytes) names, with its family in
+ * *fam; NULL (and *fam untouched) when none. */
+const nl_family_alias *nl_family_find_peer(const char *name, size_t len, const nl_family **fam);
 
 /* The index of a parameter of f by name, or -1. */
 int nl_family_param_index(const nl_family *f, const char *name);

@@ -34,6 +34,23 @@
  * return the spectrum of the continuous part alone (the nugget's density
  * depends on the grid), so methods built on them refuse a nugget.
  *
+ * Intrinsic models (powvar, the power variogram; NL_FAMILY_INTRINSIC).  A
+ * field with stationary increments and no covariance: what it has is its
+ * variogram gamma(h) = E (Z(x+h) - Z(x))^2 / 2, unbounded.  nl_model_acf
+ * returns its generalized covariance K(h) = -gamma(h) (plus the nugget at
+ * lag 0, so K(0) = nugget and K(0) - K(h) = gamma(h) for h != 0), which is
+ * conditionally positive definite: sum_ij w_i w_j K(t_i - t_j) >= 0 for
+ * every w with sum w_i = 0 (Matheron 1973).  Ordinary kriging uses only
+ * such combinations (its weights sum to 1), so its predictions and
+ * variances are those of the variogram and any constant added to K drops
+ * out (analysis/krige.c adds one to make its matrix positive definite);
+ * nl_model_variogram gives gamma directly.  Every consumer that needs a
+ * covariance (R(0) as a variance, a positive definite matrix or spectrum:
+ * the synthesis methods but `intrinsic`, simple kriging, ML fits,
+ * conditional simulation) refuses it through nl_model_check_stationary.
+ * nl_model_spectrum gives the generalized spectral density, not
+ * integrable at f = 0.
+ *
  * Sums and products.  A spec may join structures with '+' and '*', '*'
  * binding first (no parentheses: write A*B + A*C), blanks around either
  * optional:  nugget:var=0.05 + spherical:var=0.59,scale=897  or
@@ -128,6 +145,22 @@ int nl_model_is_reentrant(const nl_model *m);
  * here); R is in the model's variance units, R(0) = var + nugget. */
 double nl_model_acf(const nl_model *m, int dim, const double *lag);
 
+/* The semivariogram gamma(lag) = (E (Z(x+lag) - Z(x))^2) / 2 at the lag
+ * vector lag[0..dim-1]: R(0) - R(lag) for every model with R (nugget
+ * included: gamma jumps to nugget just off lag 0), c |lag|^alpha (plus the
+ * nugget) for the intrinsic powvar (on its stretched lag when anisotropic).
+ * NAN where R is NAN (spectrum:).  Same units and threads as nl_model_acf. */
+double nl_model_variogram(const nl_model *m, int dim, const double *lag);
+
+/* Is the model intrinsic (a variogram without covariance: powvar)? */
+int nl_model_is_intrinsic(const nl_model *m);
+
+/* NL_OK for a model with a covariance; for an intrinsic one NL_EINVAL with
+ * the message "SPEC: <what> needs a covariance; powvar is intrinsic (no
+ * covariance): use synth intrinsic or ordinary kriging (krige)".  what:
+ * e.g. "synth fft", "fit --ml". */
+int nl_model_check_stationary(const nl_model *m, const char *what);
+
 /* S at the frequency vector f[0..dim-1] (cycles per unit length) for spectral
  * models, and for the 1D analytic spectra of markov, gauss, oscillatory and
  * gauss-osc; NAN where no closed form is implemented.  The continuous part
@@ -153,8 +186,11 @@ int nl_model_is_isotropic(const nl_model *m);
 double nl_model_acf_d2(const nl_model *m, double t);
 
 /* Check that the model can be used in `dim` dimensions (e.g. an image model
- * has no 3D table, spectral models take no anisotropy keys).  NL_OK or
- * NL_EINVAL with a message. */
+ * has no 3D table, spectral models take no anisotropy keys).  NL_OK,
+ * NL_ENOTPD with a message where the family is known not to be positive
+ * definite in dim with these parameters (askey, wendland, dampedcos,
+ * jbessel, lgd, bohman, hyperspherical, superspherical: core/family.h's
+ * check_dim), or NL_EINVAL with a message. */
 int nl_model_check_dim(const nl_model *m, int dim);
 
 /* One entry of the model catalogue printed by `noiselab models`, made from

@@ -1,6 +1,7 @@
 /* Evaluation of R(lag) and S(f) through the family descriptors, and Stam
  * and Fiume's ellipsoidal anisotropy. */
 #include "model_internal.h"
+#include "nl_error.h"
 
 #include <math.h>
 
@@ -65,4 +66,31 @@ int nl_model_is_isotropic(const nl_model *m)
     if (m->sep || m->angle != 0 || m->ratio != 1 || m->zratio != 1)
         return 0;
     return m->fam->isotropic ? m->fam->isotropic(m) : 1;
+}
+
+double nl_model_variogram(const nl_model *m, int dim, const double *lag)
+{
+    const double zero[3] = {0, 0, 0};
+    return nl_model_acf(m, dim, zero) - nl_model_acf(m, dim, lag);
+}
+
+/* A sum with an intrinsic term is intrinsic (products refuse them). */
+int nl_model_is_intrinsic(const nl_model *m)
+{
+    for (size_t i = 0; i < m->nterms; i++)
+        if (nl_model_is_intrinsic(m->terms[i]))
+            return 1;
+    return (m->fam->flags & NL_FAMILY_INTRINSIC) != 0;
+}
+
+int nl_model_check_stationary(const nl_model *m, const char *what)
+{
+    const nl_model *s = m;
+    if (!nl_model_is_intrinsic(m))
+        return NL_OK;
+    for (size_t i = 0; i < nl_model_structures(m); i++)
+        if (nl_model_is_intrinsic(nl_model_structure(m, i)))
+            s = nl_model_structure(m, i);
+    return NL_ERROR(NL_EINVAL, "%s: %s needs a covariance; %s is intrinsic (no covariance): use synth intrinsic "
+                    "or ordinary kriging (krige)", m->spec, what, s->fam->name);
 }

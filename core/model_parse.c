@@ -26,13 +26,13 @@ static int parse_number(const char *name, const char *key, const char *s, size_t
     return NL_OK;
 }
 
-/* The family's keys, space separated, as messages list them. */
-static void family_keys(const nl_family *f, char *buf, size_t size)
+/* The keys of a parameter table, space separated, as messages list them. */
+static void table_keys(const nl_family_param *params, size_t np, char *buf, size_t size)
 {
     size_t len = 0;
     buf[0] = 0;
-    for (size_t k = 0; k < f->nparams && len < size; k++)
-        len += (size_t)snprintf(buf + len, size - len, "%s%s", k ? " " : "", f->params[k].name);
+    for (size_t k = 0; k < np && len < size; k++)
+        len += (size_t)snprintf(buf + len, size - len, "%s%s", k ? " " : "", params[k].name);
 }
 
 /* An anisotropy key: sep, or angle, ratio, zratio with its value. */
@@ -49,9 +49,20 @@ static void set_aniso(nl_model *m, const char *key, double v)
     m->aniso_given = 1;
 }
 
-int nl_model_parse_params(nl_model *m, const char *s)
+static int table_index(const nl_family_param *params, size_t np, const char *key)
 {
-    const char *name = m->fam->name;
+    for (size_t k = 0; k < np; k++)
+        if (strcmp(params[k].name, key) == 0)
+            return (int)k;
+    return -1;
+}
+
+/* "k=v,k=v,sep": the keys of the table params[0..np-1] into vals[], the
+ * anisotropy keys into m; `name` (the family's or a peer's) begins the
+ * messages. */
+static int parse_keys(nl_model *m, const char *name, const nl_family_param *params, size_t np, double *vals,
+                      const char *s)
+{
     while (*s) {
         size_t len = strcspn(s, ",");
         const char *eq = memchr(s, '=', len);
@@ -62,11 +73,11 @@ int nl_model_parse_params(nl_model *m, const char *s)
             return NL_ERROR(NL_EINVAL, "%s: expected key=value, got \"%.*s\"", name, (int)len, s);
         memcpy(key, s, klen);
         key[klen] = 0;
-        k = nl_family_param_index(m->fam, key);
+        k = table_index(params, np, key);
         aniso = nl_model_word_in(aniso_keys, key, klen);
         if (k < 0 && !aniso) {
             char keys[256];
-            family_keys(m->fam, keys, sizeof keys);
+            table_keys(params, np, keys, sizeof keys);
             return NL_ERROR(NL_EINVAL, "%s: unknown parameter \"%s\" (expected one of: %s %s)", name, key, keys,
                             aniso_keys);
         }
@@ -83,7 +94,7 @@ int nl_model_parse_params(nl_model *m, const char *s)
             if (st)
                 return st;
             if (k >= 0)
-                m->p[k] = v;
+                vals[k] = v;
             else
                 set_aniso(m, key, v);
         }
@@ -92,6 +103,11 @@ int nl_model_parse_params(nl_model *m, const char *s)
             s++;
     }
     return NL_OK;
+}
+
+int nl_model_parse_params(nl_model *m, const char *s)
+{
+    return parse_keys(m, m->fam->name, m->fam->params, m->fam->nparams, m->p, s);
 }
 
 /* The range of one parameter (core/family.h, nl_param_range). */
@@ -169,13 +185,31 @@ static int parse_argument(nl_model *m, const char *rest)
     return st;
 }
 
-static int missing(const nl_model *m)
+/* A required parameter of the table that the spec did not give. */
+static int missing(const char *name, const nl_family_param *params, size_t np, const double *vals)
 {
-    const nl_family *f = m->fam;
-    for (size_t k = 0; k < f->nparams; k++)
-        if (isnan(m->p[k]))
-            return NL_ERROR(NL_EINVAL, "%s: missing parameter %s (e.g. %s:%s=%s)", f->name, f->params[k].name,
-                            f->name, f->params[k].name, f->params[k].example);
+    for (size_t k = 0; k < np; k++)
+        if (isnan(vals[k]))
+            return NL_ERROR(NL_EINVAL, "%s: missing parameter %s (e.g. %s:%s=%s)", name, params[k].name, name,
+                            params[k].name, params[k].example);
+    return NL_OK;
+}
+
+/* A peer's name (core/family.h, nl_family_alias): its keys with its
+ * defaults, each in its range, then converted into the family's. */
+static int parse_peer(nl_model *m, const nl_family_alias *a, const char *rest)
+{
+    double q[NL_FAMILY_MAX_PARAMS];
+    int st;
+    for (size_t k = 0; k < a->nparams; k++)
+        q[k] = a->params[k].def;
+    if ((st = parse_keys(m, a->name, a->params, a->nparams, q, rest)) ||
+        (st = missing(a->name, a->params, a->nparams, q)))
+        return st;
+    for (size_t k = 0; k < a->nparams; k++)
+        if ((st = check_range(a->name, &a->params[k], q[k])))
+            return st;
+    a->convert(q, m->p);
     return NL_OK;
 }
 
@@ -190,6 +224,7 @@ static int unknown(const char *spec, size_t nlen)
 int nl_model_parse(const char *spec, nl_model **out)
 {
     nl_model *m;
+    const nl_family_alias *peer = NULL;
     const char *colon, *rest;
     size_t nlen;
     int st, composite;
@@ -210,17 +245,19 @@ int nl_model_parse(const char *spec, nl_model **out)
     }
     m->ratio = 1;
     m->zratio = 1;
-    if (!(m->fam = nl_family_find(spec, nlen))) {
+    if (!(m->fam = nl_family_find(spec, nlen)) && !(peer = nl_family_find_peer(spec, nlen, &m->fam))) {
         nl_model_free(m);
         return unknown(spec, nlen);
     }
     set_defaults(m);
-    if (m->fam->flags & NL_FAMILY_ARGUMENT)
+    if (peer)
+        st = parse_peer(m, peer, rest);
+    else if (m->fam->flags & NL_FAMILY_ARGUMENT)
         st = parse_argument(m, rest);
     else
         st = nl_model_parse_params(m, rest);
     if (!st)
-        st = missing(m);
+        st = missing(m->fam->name, m->fam->params, m->fam->nparams, m->p);
     if (!st)
         st = validate(m);
     if (st) {

@@ -213,6 +213,10 @@ static int group(const char *spec, const size_t *at, nl_model **s, const char *o
                 st = NL_ERROR(NL_EINVAL, "model: a nugget inside a product (structure %zu of \"%s\"): expected "
                               "nuggets as terms of the sum (white noise times a structure is white noise)",
                               k + 1, spec);
+            else if (i > first && nl_model_is_intrinsic(s[k]) && !st)
+                st = NL_ERROR(NL_EINVAL, "model: an intrinsic model inside a product (structure %zu of \"%s\"): "
+                              "a variogram times a covariance need not be a variogram; expected it as a term of "
+                              "the sum", k + 1, spec);
         if (st) {
             for (size_t k = first; k <= i; k++)
                 nl_model_free(s[k]);

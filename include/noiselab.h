@@ -51,6 +51,7 @@ extern "C" {
 
 #include "noiselab/synth/fft.h"
 #include "noiselab/synth/circulant.h"
+#include "noiselab/synth/intrinsic.h"
 #include "noiselab/synth/cholesky.h"
 #include "noiselab/synth/subdiv.h"
 #include "noiselab/synth/midpoint.h"
@@ -80,6 +81,7 @@ extern "C" {
 #include "noiselab/analysis/gof_dep.h"
 #include "noiselab/analysis/ensemble.h"
 #include "noiselab/analysis/check.h"
+#include "noiselab/analysis/check_intrinsic.h"
 #include "noiselab/analysis/nonlin.h"
 #include "noiselab/analysis/krige.h"
 #include "noiselab/analysis/creases.h"

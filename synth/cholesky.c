@@ -118,6 +118,9 @@ int nl_synth_cholesky_plan_alloc(const nl_model *m, int dim, const size_t *n, co
                                  nl_synth_cholesky_plan **out)
 {
     int st;
+    *out = NULL;
+    if ((st = nl_model_check_stationary(m, "Cholesky synthesis")))
+        return st;
     nl_gsl_enter();
     st = cholesky_plan_alloc(m, dim, n, h, out);
     nl_gsl_leave();

@@ -116,6 +116,8 @@ int nl_synth_circulant_plan_alloc(const nl_model *m, int dim, const size_t *n, c
     *out = NULL;
     if (dim < 1 || dim > 3)
         return NL_ERROR(NL_EINVAL, "dimension: expected 1, 2 or 3, got %d", dim);
+    if ((st = nl_model_check_stationary(m, "circulant embedding")))
+        return st;
     p = calloc(1, sizeof *p);
     if (!p)
         return NL_ERROR(NL_ENOMEM, "out of memory");

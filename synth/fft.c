@@ -224,6 +224,8 @@ int nl_synth_fft_plan_alloc(const nl_model *m, int dim, const size_t *n, const d
     double *S;
     int st;
     *out = NULL;
+    if ((st = nl_model_check_stationary(m, "FFT synthesis")))
+        return st;
     /* the half spectrum, the field, and a half complex buffer */
     if ((st = nl_size_check(dim, n, sizeof(double), 3, NULL)))
         return st;

@@ -53,7 +53,9 @@ enum {
                                           of each CHOICE option */
     NL_METHOD_SUBDIVISION = 1u << 12,  /* the plan is an nl_subdiv_plan (nl_method_plan_impl): its exact
                                           expected ACF is known (analysis/subdiv_exact.h) */
-    NL_METHOD_NUGGET = 1u << 13        /* represents a model's nugget (white noise added at lag 0) */
+    NL_METHOD_NUGGET = 1u << 13,       /* represents a model's nugget (white noise added at lag 0) */
+    NL_METHOD_INTRINSIC = 1u << 14     /* simulates intrinsic models (core/model.h); the others are refused
+                                          by nl_method_plan_alloc */
 };
 
 /* nl_method_names: list the exact methods first, each group in the
@@ -218,7 +220,9 @@ int nl_method_options_set(nl_method_options *o, const char *name, const char *te
 const nl_method_value *nl_method_options_get(const nl_method_options *o, const char *name);
 int nl_method_options_given(const nl_method_options *o, const char *name);
 
-/* Plan t for m on g with o (o->type must be t): t->plan.  Returns as t->plan. */
+/* Plan t for m on g with o (o->type must be t): t->plan.  Returns as t->plan;
+ * an intrinsic model (core/model.h) for a method without
+ * NL_METHOD_INTRINSIC is refused (NL_EINVAL, nl_model_check_stationary). */
 int nl_method_plan_alloc(const nl_method_type *t, const nl_model *m, const nl_method_grid *g,
                          const nl_method_options *o, nl_method_plan **out);
 /* A realization into f (the plan's grid); slab: rows s0.. of the slowest

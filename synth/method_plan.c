@@ -40,6 +40,12 @@ int nl_method_plan_alloc(const nl_method_type *t, const nl_model *m, const nl_me
         return NL_ERROR(NL_EINVAL, "nl_method_plan_alloc: expected a method and its own options");
     if ((st = nl_method_check_dim(t, g)))
         return st;
+    if (m && !(t->caps & NL_METHOD_INTRINSIC)) {
+        char what[64];
+        snprintf(what, sizeof what, "synth %s", t->name);
+        if ((st = nl_model_check_stationary(m, what)))
+            return st;
+    }
     return t->plan(m, g, o, out);
 }
 

@@ -14,7 +14,8 @@
     X(cholesky)    \
     X(faulting)    \
     X(sparse)      \
-    X(lattice)
+    X(lattice)     \
+    X(intrinsic)
 
 #define DECLARE(name) extern const nl_method_type nl_method_##name;
 #define ENTRY(name) &nl_method_##name,

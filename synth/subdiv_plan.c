@@ -154,6 +154,8 @@ int nl_subdiv_plan_alloc(const nl_model *m, int dim, const size_t *n, double h, 
     *out = NULL;
     if (dim != 1 && dim != 2)
         return NL_ERROR(NL_EINVAL, "subdivision: expected a 1D or 2D grid, got %dD", dim);
+    if (m && (st = nl_model_check_stationary(m, "subdivision")))
+        return st;
     if (!L)
         L = o->nonperiodic ? 6 : nl_subdiv_default_levels(dim, n, 8);
     if (L < 1)

@@ -4,6 +4,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 int gstat_available(const char *what)
 {
@@ -16,19 +17,23 @@ int gstat_available(const char *what)
 long gstat_run(const char *script, double *v, size_t max)
 {
     char path[512], cmd[1024];
-    snprintf(path, sizeof path, "%s/gstat.R", scratch_dir());
+    /* one script per process: tests running at once may share the directory */
+    snprintf(path, sizeof path, "%s/gstat-%ld.R", scratch_dir(), (long)getpid());
     FILE *f = fopen(path, "w");
     if (!f)
         return -1;
     fputs(script, f);
     fclose(f);
-    snprintf(cmd, sizeof cmd, "cd %s && Rscript gstat.R 2>/dev/null", scratch_dir());
+    snprintf(cmd, sizeof cmd, "cd %s && Rscript %s 2>/dev/null", scratch_dir(), path);
     FILE *p = popen(cmd, "r");
     if (!p)
         return -1;
     size_t n = 0;
     while (n < max && fscanf(p, "%lf", &v[n]) == 1)
         n++;
+    /* read to the end: R stopped by a closed pipe would fail the run */
+    while (fgetc(p) != EOF)
+        ;
     return pclose(p) == 0 ? (long)n : -1;
 }
 

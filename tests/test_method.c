@@ -77,7 +77,8 @@ Test(method, the_nugget_capability_is_what_planning_does)
         const nl_method_type *t = nl_method_at(i);
         nl_method_options o;
         nl_method_plan *p = NULL;
-        if (!(t->caps & NL_METHOD_MODEL) || !(t->dims & 2u) || nl_method_option_index(t, "H") >= 0)
+        if (!(t->caps & NL_METHOD_MODEL) || !(t->dims & 2u) || nl_method_option_index(t, "H") >= 0 ||
+            (t->caps & NL_METHOD_INTRINSIC))
             continue;
         nl_method_options_default(t, &o);
         int st = nl_method_plan_alloc(t, m, &g, &o, &p);
@@ -93,13 +94,14 @@ Test(method, the_nugget_capability_is_what_planning_does)
 
 /* Every method's report is one JSON object (or none), with a positive
  * preview scale, for a field and for the plan alone.  Each method gets the
- * first model it plans (midpoint needs a power law). */
+ * first model it plans (midpoint needs a power law, intrinsic powvar). */
 Test(method, every_report_is_a_json_object)
 {
     static nl_method_report r;
-    nl_model *m[2];
+    nl_model *m[3];
     cr_assert_eq(nl_model_parse("markov:scale=4.385", &m[0]), 0);
     cr_assert_eq(nl_model_parse("power:d=2.385", &m[1]), 0);
+    cr_assert_eq(nl_model_parse("powvar:alpha=1.385", &m[2]), 0);
     for (int i = 0; i < nl_method_count(); i++) {
         const nl_method_type *t = nl_method_at(i);
         nl_method_grid g = {2, {16, 16, 1}, {1, 1, 1}, {0, 0}};
@@ -109,7 +111,7 @@ Test(method, every_report_is_a_json_object)
         nl_field *f = nl_field_alloc(2, g.n, NULL, &st);
         cr_assert_not_null(f);
         nl_method_options_default(t, &o);
-        for (k = 0; k < 2 && !p; k++)
+        for (k = 0; k < 3 && !p; k++)
             st = nl_method_plan_alloc(t, t->caps & NL_METHOD_NO_MODEL ? NULL : m[k], &g, &o, &p);
         cr_assert_eq(st, NL_OK, "%s: %s", t->name, nl_errmsg());
         cr_assert_eq(nl_method_execute(p, 7, f), NL_OK, "%s", t->name);
@@ -124,7 +126,7 @@ Test(method, every_report_is_a_json_object)
         nl_method_plan_free(p);
         nl_field_free(f);
     }
-    nl_model_free(m[0]), nl_model_free(m[1]);
+    nl_model_free(m[0]), nl_model_free(m[1]), nl_model_free(m[2]);
 }
 
 /* The same bits as the per-method plan for one seed. */

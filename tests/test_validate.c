@@ -368,3 +368,43 @@ Test(validate, error_paths)
     cr_expect_str_eq(res.method[SUBDIV].name, "subdiv");
     nl_model_free(m);
 }
+
+/* What each method is judged against (nl_validate_claim): exact methods
+ * against R, subdivision against its own exact ACF where the result holds
+ * it, by the verdict's rule on that interval (within when hi <= E, off
+ * when lo > E, unresolved between), nothing otherwise; both ways. */
+Test(validate, claims)
+{
+    static nl_validate_result res;
+    int verdict, sub = -1, exact = -1;
+    for (int i = 0; i < nl_validate_method_count(); i++) {
+        const nl_method_type *t = nl_validate_method_type(i);
+        if (t->caps & NL_METHOD_SUBDIVISION && sub < 0)
+            sub = i;
+        if (t->caps & NL_METHOD_EXACT && exact < 0)
+            exact = i;
+    }
+    cr_assert(sub >= 0 && exact >= 0);
+    memset(&res, 0, sizeof res);
+    res.tolerance = 0.05;
+    cr_expect_eq(nl_validate_claim(&res, exact, &verdict), NL_VALIDATE_CLAIM_MODEL);
+    cr_expect_eq(verdict, -1, "a method that did not run has no verdict");
+    res.method[exact].ran = 1;
+    res.method[exact].verdict = NL_VALIDATE_OFF;
+    nl_validate_claim(&res, exact, &verdict);
+    cr_expect_eq(verdict, NL_VALIDATE_OFF);
+    res.method[sub].ran = 1;
+    res.method[sub].verdict = NL_VALIDATE_OFF;
+    cr_expect_eq(nl_validate_claim(&res, sub, &verdict), NL_VALIDATE_CLAIM_NONE, "no exact ACF: not judged");
+    cr_expect_eq(verdict, -1);
+    res.method[sub].have_exact = 1;
+    res.method[sub].vs_exact.effect = (nl_validate_interval){0.02, 0, 0.04};
+    cr_expect_eq(nl_validate_claim(&res, sub, &verdict), NL_VALIDATE_CLAIM_OWN);
+    cr_expect_eq(verdict, NL_VALIDATE_WITHIN, "off R, within its own ACF");
+    res.method[sub].vs_exact.effect = (nl_validate_interval){0.08, 0.06, 0.1};
+    nl_validate_claim(&res, sub, &verdict);
+    cr_expect_eq(verdict, NL_VALIDATE_OFF);
+    res.method[sub].vs_exact.effect = (nl_validate_interval){0.05, 0.03, 0.07};
+    nl_validate_claim(&res, sub, &verdict);
+    cr_expect_eq(verdict, NL_VALIDATE_UNRESOLVED);
+}

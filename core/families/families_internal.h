@@ -14,6 +14,32 @@
 #define NL_PARAM_VAR {.name = "var", .role = NL_ROLE_VARIANCE, .def = 1, .range = NL_RANGE_POSITIVE}
 #define NL_PARAM_NUGGET {.name = "nugget", .role = NL_ROLE_NUGGET, .def = 0, .range = NL_RANGE_NONNEG}
 
+/* The peers' keys (core/family.h, nl_family_alias): gstat's vgm(psill,
+ * model, range, nugget, kappa), GSTools' CovModel(var, len_scale, nugget),
+ * with their defaults (gstat's range has none). */
+#define NL_PEER_PSILL {.name = "psill", .role = NL_ROLE_VARIANCE, .def = 1, .range = NL_RANGE_POSITIVE}
+#define NL_PEER_RANGE                                                                                               \
+    {.name = "range", .role = NL_ROLE_SCALE, .def = NAN, .placeholder = "A", .example = "900",                   \
+     .range = NL_RANGE_POSITIVE}
+#define NL_PEER_LEN_SCALE {.name = "len_scale", .role = NL_ROLE_SCALE, .def = 1, .range = NL_RANGE_POSITIVE}
+
+/* A peer alias whose keys are (variance, length, nugget) and whose length
+ * is the family's scale times `factor`: NL_PEER_VLN(id, factor) defines
+ * the converter id(q, p) for a family whose params[] begin scale, var,
+ * nugget. */
+#define NL_PEER_VLN(id, factor)                                                                                     \
+    static void id(const double *q, double *p)                                                                      \
+    {                                                                                                                \
+        p[0] = q[1] * (factor);                                                                                     \
+        p[1] = q[0];                                                                                                 \
+        p[2] = q[2];                                                                                                 \
+    }
+
+/* gstat's and GSTools' keys for a family of one length: psill range
+ * nugget, var len_scale nugget. */
+extern const nl_family_param nl_peer_gstat_params[3];
+extern const nl_family_param nl_peer_gstools_params[3];
+
 /* |t| / scale, the lag in units of the correlation length. */
 static inline double nl_family_a(const nl_model *m, double t) { return fabs(t) / m->scale; }
 
@@ -31,5 +57,50 @@ int nl_expr_compile(nl_model *m, const char *arg, const char *allowed);
 
 /* Evaluate the model's expression at the named variables. */
 double nl_expr_eval(const nl_model *m, const char *const *names, double *values, int n);
+
+/* |f| for a family's closed-form isotropic spectrum in dim dimensions, or
+ * NAN where the model is stretched, rotated or separable in 2D and 3D (its
+ * spectrum is then not a function of |f| alone). */
+static inline double nl_family_fnorm(const nl_model *m, int dim, const double *f)
+{
+    double k2 = 0;
+    if (dim > 1 && m->aniso_given)
+        return NAN;
+    for (int a = 0; a < dim; a++)
+        k2 += f[a] * f[a];
+    return sqrt(k2);
+}
+
+/* The d-dimensional spectrum (cycles per unit, two-sided) at |f| = k of
+ * var (1 + (r/s)^2)^-gamma (cauchy.c; INFINITY at k = 0 where gamma <= d/2). */
+double nl_spectrum_cauchy(double var, double s, double gamma, int dim, double k);
+
+/* J_nu(x) for nu >= 0, x > 0 into *out by GSL (call inside the GSL guard);
+ * GSL's status (jbessel.c). */
+int nl_family_jnu(double nu, double x, double *out);
+
+/* The d-dimensional spectrum at |f| = k of var Gamma(nu+1) (2s/r)^nu
+ * J_nu(r/s) (jbessel.c; NAN where nu <= (d-2)/2: no density). */
+double nl_spectrum_jbessel(double var, double s, double nu, int dim, double k);
+
+/* The normalised intersection of two balls of unit diameter whose centres
+ * are a apart, generalised to real b = (D+1)/2: I_{1-a^2}(b, 1/2)
+ * (hyperspherical.c; 0 for a >= 1, NAN where GSL fails). */
+double nl_euclid_hat(double b, double a);
+
+/* The D-dimensional spectrum at |f| = k of var nl_euclid_hat((D+1)/2,
+ * |t|/s): the squared transform of the ball of diameter s over its volume
+ * (hyperspherical.c). */
+double nl_spectrum_euclid_hat(double var, double s, int D, double k);
+
+/* The truncated power law of stable modes exp(-(r/l)^alpha) with Hurst
+ * coefficient h over lengths lo < l < hi, normalised to 1 at r = 0
+ * (tplstable.c, Hesse et al. 2014). */
+double nl_tpl_cor(double h, double alpha, double lo, double hi, double r);
+
+/* NL_OK when the model's parameter of index `lower` is below that of
+ * index `scale`, NL_EINVAL with a message otherwise (tplstable.c; a
+ * family's check runs before m->scale is set). */
+int nl_tpl_check(const nl_model *m, int scale, int lower);
 
 #endif

@@ -25,7 +25,7 @@ static double profile(const nl_model *m, double t)
 
 const nl_family nl_family_gencauchy = {
     .name = "gencauchy",
-    .aliases = "generalized-cauchy",
+    .aliases = "generalized-cauchy RMgencauchy",
     .formula = "R = var (1 + (|t|/scale)^alpha)^(-beta/alpha), 0 < alpha <= 2, beta > 0",
     .flags = NL_FAMILY_FIT,
     .validity = "positive definite in every dimension for 0 < alpha <= 2 and beta > 0 (Gneiting and Schlather "

@@ -17,9 +17,18 @@ static double spectrum(const nl_model *m, int dim, const double *f)
     return dim == 1 ? nl_spectrum_markov1d(m->var, m->scale, f[0]) : NAN;
 }
 
+NL_PEER_VLN(same_length, 1)
+
+static const nl_family_alias peers[] = {
+    {.name = "Exp", .peer = "gstat", .formula = "psill exp(-h/range)", .nparams = 3, .params = nl_peer_gstat_params,
+     .convert = same_length},
+    {.name = "Exponential", .peer = "GSTools", .formula = "var exp(-h/len_scale)", .nparams = 3,
+     .params = nl_peer_gstools_params, .convert = same_length},
+};
+
 const nl_family nl_family_markov = {
     .name = "markov",
-    .aliases = "",
+    .aliases = "exponential RMexp",
     .formula = "R = var exp(-|t|/scale) (+ nugget at t = 0, as every R model); 1D S = var 2 scale / (1 + (2 pi f "
                "scale)^2)",
     .flags = NL_FAMILY_FIT,
@@ -28,4 +37,6 @@ const nl_family nl_family_markov = {
     .params = params,
     .profile = profile,
     .spectrum = spectrum,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
 };

@@ -67,13 +67,71 @@ static double profile(const nl_model *m, double t)
     return m->var * matern(nu, sqrt(2 * nu) * nl_family_a(m, t));
 }
 
+enum { P_SCALE = 1, P_VAR, P_NUGGET };
+
+/* gstat's Mat, Ste and Bes: vgm(psill, model, range, nugget, kappa), kappa
+ * 0.5 by default (gstat/src/vario_fn.c: Mat is ours with u = h / range,
+ * Ste ours with u = 2 sqrt(kappa) h / range, Bes Mat with kappa = 1);
+ * GSTools' Matern(var, len_scale, nugget, nu), nu 1 by default, is ours
+ * with u = sqrt(nu) h / len_scale (gstools/covmodel/models.py);
+ * RandomFields' RMwhittle(nu, var, scale) ours with u = h / scale. */
+static const nl_family_param gstat_params[] = {
+    NL_PEER_PSILL, NL_PEER_RANGE, NL_PARAM_NUGGET,
+    {.name = "kappa", .def = 0.5, .range = NL_RANGE_POSITIVE},
+};
+static const nl_family_param gstools_params[] = {
+    NL_PARAM_VAR, NL_PEER_LEN_SCALE, NL_PARAM_NUGGET,
+    {.name = "nu", .def = 1, .range = NL_RANGE_POSITIVE},
+};
+static const nl_family_param whittle_params[] = {
+    NL_PARAM_VAR, NL_PARAM_SCALE, NL_PARAM_NUGGET,
+    {.name = "nu", .def = NAN, .placeholder = "V", .example = "1.5", .range = NL_RANGE_POSITIVE},
+};
+
+/* q: variance, length, nugget, smoothness; the length is our scale over
+ * `factor`. */
+static void set_matern(const double *q, double *p, double factor)
+{
+    p[NU] = q[3];
+    p[P_SCALE] = q[1] * factor;
+    p[P_VAR] = q[0];
+    p[P_NUGGET] = q[2];
+}
+
+static void from_mat(const double *q, double *p) { set_matern(q, p, sqrt(2 * q[3])); }
+static void from_ste(const double *q, double *p) { set_matern(q, p, M_SQRT1_2); }
+static void from_gstools(const double *q, double *p) { set_matern(q, p, M_SQRT2); }
+
+static void from_bes(const double *q, double *p)
+{
+    double r[4] = {q[0], q[1], q[2], 1};
+    set_matern(r, p, M_SQRT2);
+}
+
+static const nl_family_alias peers[] = {
+    {.name = "Mat", .peer = "gstat", .formula = "psill 2^(1-kappa)/Gamma(kappa) u^kappa K_kappa(u), u = h/range",
+     .nparams = 4, .params = gstat_params, .convert = from_mat},
+    {.name = "Ste", .peer = "gstat",
+     .formula = "psill 2^(1-kappa)/Gamma(kappa) u^kappa K_kappa(u), u = 2 sqrt(kappa) h/range", .nparams = 4,
+     .params = gstat_params, .convert = from_ste},
+    {.name = "Bes", .peer = "gstat", .formula = "psill (h/range) K_1(h/range)", .nparams = 3,
+     .params = gstat_params, .convert = from_bes},
+    {.name = "Matern", .peer = "GSTools",
+     .formula = "var 2^(1-nu)/Gamma(nu) u^nu K_nu(u), u = sqrt(nu) h/len_scale", .nparams = 4,
+     .params = gstools_params, .convert = from_gstools},
+    {.name = "RMwhittle", .peer = "RandomFields", .formula = "var 2^(1-nu)/Gamma(nu) u^nu K_nu(u), u = h/scale",
+     .nparams = 4, .params = whittle_params, .convert = from_mat},
+};
+
 const nl_family nl_family_matern = {
     .name = "matern",
-    .aliases = "",
+    .aliases = "RMmatern",
     .formula = "R = var 2^(1-nu)/Gamma(nu) u^nu K_nu(u), u = sqrt(2 nu) |t| / scale",
     .flags = NL_FAMILY_FIT,
     .validity = "positive definite in every dimension for nu > 0",
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .profile = profile,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
 };

@@ -15,9 +15,18 @@ static double profile(const nl_model *m, double t)
     return a < 1 ? m->var * (1 - a * (1.5 - 0.5 * a * a)) : 0.0;
 }
 
+NL_PEER_VLN(same_length, 1)
+
+static const nl_family_alias peers[] = {
+    {.name = "Sph", .peer = "gstat", .formula = "psill (1 - 1.5 h/range + 0.5 (h/range)^3) for h < range",
+     .nparams = 3, .params = nl_peer_gstat_params, .convert = same_length},
+    {.name = "Spherical", .peer = "GSTools", .formula = "var (1 - 1.5 h/len_scale + 0.5 (h/len_scale)^3)",
+     .nparams = 3, .params = nl_peer_gstools_params, .convert = same_length},
+};
+
 const nl_family nl_family_spherical = {
     .name = "spherical",
-    .aliases = "",
+    .aliases = "RMspheric",
     .formula = "R = var (1 - 1.5 a + 0.5 a^3) for a = |t|/scale < 1, else 0 (scale = range); valid in 1D to 3D",
     .flags = NL_FAMILY_FIT,
     .validity = "positive definite in 1D, 2D and 3D only",
@@ -25,4 +34,6 @@ const nl_family nl_family_spherical = {
     .nparams = sizeof params / sizeof *params,
     .params = params,
     .profile = profile,
+    .npeers = sizeof peers / sizeof *peers,
+    .peers = peers,
 };

@@ -68,6 +68,8 @@ int nl_model_parse(const char *spec, nl_model **out);
 void nl_model_free(nl_model *m);
 const char *nl_model_spec(const nl_model *m);
 int nl_model_is_spectral(const nl_model *m);
+int nl_model_is_intrinsic(const nl_model *m);
+double nl_model_variogram(const nl_model *m, int dim, const double *lag);
 double nl_model_acf(const nl_model *m, int dim, const double *lag);
 int nl_model_check_dim(const nl_model *m, int dim);
 typedef struct {
@@ -80,7 +82,8 @@ const nl_model_info *nl_model_catalogue(size_t *count);
 /* core/family.h */
 typedef enum { NL_ROLE_SHAPE = 0, NL_ROLE_VARIANCE, NL_ROLE_SCALE, NL_ROLE_NUGGET, NL_ROLE_BAND } nl_param_role;
 typedef enum { NL_RANGE_ANY = 0, NL_RANGE_POSITIVE, NL_RANGE_NONNEG, NL_RANGE_UPTO } nl_param_range;
-enum { NL_FAMILY_SPECTRAL = 1, NL_FAMILY_FIT = 2, NL_FAMILY_EXPRESSION = 4, NL_FAMILY_ARGUMENT = 8 };
+enum { NL_FAMILY_SPECTRAL = 1, NL_FAMILY_FIT = 2, NL_FAMILY_EXPRESSION = 4, NL_FAMILY_ARGUMENT = 8,
+       NL_FAMILY_INTRINSIC = 32 };
 typedef struct {
     const char *name;
     nl_param_role role;
@@ -95,6 +98,14 @@ typedef struct {
     int start_per_scale;
     double fit_lo, fit_hi;
 } nl_family_param;
+typedef struct {
+    const char *name;
+    const char *peer;
+    const char *formula;
+    size_t nparams;
+    const nl_family_param *params;
+    void (*convert)(const double *q, double *p);
+} nl_family_alias;
 typedef struct nl_family {
     const char *name;
     const char *aliases;
@@ -115,6 +126,8 @@ typedef struct nl_family {
     int (*isotropic)(const nl_model *m);
     int (*check_dim)(const nl_model *m, int dim);
     double (*acf_d2)(const nl_model *m, double t);
+    size_t npeers;
+    const nl_family_alias *peers;
 } nl_family;
 size_t nl_family_count(void);
 const nl_family *nl_family_get(size_t i);
@@ -310,7 +323,8 @@ enum {
     NL_METHOD_MODEL = 1, NL_METHOD_NO_MODEL = 2, NL_METHOD_PERIODIC = 4, NL_METHOD_WINDOW = 8,
     NL_METHOD_DISTRIBUTED = 16, NL_METHOD_CONDITIONABLE = 32, NL_METHOD_EXACT = 64, NL_METHOD_CLAMP = 128,
     NL_METHOD_SERIAL = 256, NL_METHOD_TORUS = 512, NL_METHOD_EMBEDDING = 1024,
-    NL_METHOD_VALIDATED = 2048, NL_METHOD_SUBDIVISION = 4096, NL_METHOD_NUGGET = 8192
+    NL_METHOD_VALIDATED = 2048, NL_METHOD_SUBDIVISION = 4096, NL_METHOD_NUGGET = 8192,
+    NL_METHOD_INTRINSIC = 16384
 };
 enum {
     NL_METHOD_OPEN = 1, NL_METHOD_REPLACES_MODEL = 2, NL_METHOD_FILE = 4, NL_METHOD_SUFFIX = 8,

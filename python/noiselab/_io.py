@@ -128,9 +128,12 @@ def models():
     (as written in a spec; argument families as "expr:EXPR"), params (the
     parameters with defaults, required ones first, as the catalogue prints
     them), formula (R or S), aliases (other names a spec may use),
+    peers (the peers' names with their own keys: a list of dicts with name,
+    peer (gstat, GSTools, RandomFields), formula and parameters),
     parameters (a list of dicts: name, role (variance, scale, nugget, shape
     or band), default (None when required), lower, lower_open, upper: the
-    valid range, None where unbounded), spectral (defined by S), fit (fit
+    valid range, None where unbounded), spectral (defined by S), intrinsic (a
+    variogram without covariance: powvar), fit (fit
     accepts it), max_dim (not positive definite beyond this dimension; None:
     no such limit) and validity (what is known of its validity by
     dimension)."""
@@ -142,8 +145,13 @@ def models():
         out.append(dict(name=ffi.string(cat[i].name).decode(), params=ffi.string(cat[i].params).decode(),
                         formula=ffi.string(cat[i].formula).decode(),
                         aliases=ffi.string(f.aliases).decode().split(),
+                        peers=[dict(name=ffi.string(a.name).decode(), peer=ffi.string(a.peer).decode(),
+                                    formula=ffi.string(a.formula).decode(),
+                                    parameters=[_param(a.params[k]) for k in range(a.nparams)])
+                               for a in (f.peers[j] for j in range(f.npeers))],
                         parameters=[_param(f.params[k]) for k in range(f.nparams)],
                         spectral=bool(f.flags & lib.NL_FAMILY_SPECTRAL), fit=bool(f.flags & lib.NL_FAMILY_FIT),
+                        intrinsic=bool(f.flags & lib.NL_FAMILY_INTRINSIC),
                         max_dim=f.max_dim or None, validity=ffi.string(f.validity).decode()))
     return out
 

@@ -20,7 +20,7 @@ _TYPES = {lib.NL_METHOD_INT: "int", lib.NL_METHOD_DOUBLE: "float", lib.NL_METHOD
 _CAPS = (("model", lib.NL_METHOD_MODEL), ("no_model", lib.NL_METHOD_NO_MODEL), ("periodic", lib.NL_METHOD_PERIODIC),
          ("window", lib.NL_METHOD_WINDOW), ("distributed", lib.NL_METHOD_DISTRIBUTED),
          ("conditionable", lib.NL_METHOD_CONDITIONABLE), ("exact", lib.NL_METHOD_EXACT),
-         ("clamp", lib.NL_METHOD_CLAMP))
+         ("clamp", lib.NL_METHOD_CLAMP), ("intrinsic", lib.NL_METHOD_INTRINSIC))
 
 
 def _str(p):

@@ -33,3 +33,22 @@ def test_registry_families_reach_python():
     assert [x["role"] for x in m["parameters"]] == ["shape", "shape", "scale", "variance", "nugget"]
     f = noiselab.synth("circulant", acf="gencauchy:alpha=1.5,beta=2,scale=4", size=(32, 32), seed=3)
     assert f.shape == (32, 32)
+
+
+def test_peer_names_reach_python():
+    """A peer's name with its own keys (gstat's Sph: psill, range) is in
+    models() under its family, and a spec by it is the family's model with
+    the peer's parameters converted: the same field, seed for seed."""
+    import numpy as np
+    import noiselab
+    m = {x["name"]: x for x in noiselab.models()}["spherical"]
+    sph = {a["name"]: a for a in m["peers"]}["Sph"]
+    assert sph["peer"] == "gstat"
+    assert [p["name"] for p in sph["parameters"]] == ["psill", "range", "nugget"]
+    assert sph["parameters"][1]["default"] is None
+    a = noiselab.synth("circulant", acf="Sph:psill=2,range=9", size=(32, 32), seed=3)
+    b = noiselab.synth("circulant", acf="spherical:var=2,scale=9", size=(32, 32), seed=3)
+    assert np.array_equal(a, b)
+    c = noiselab.synth("circulant", acf="Gaussian:len_scale=9", size=(32, 32), seed=3)
+    d = noiselab.synth("circulant", acf="gauss:scale=%.17g" % (9 * 2 / np.pi ** 0.5), size=(32, 32), seed=3)
+    assert np.allclose(c, d, rtol=0, atol=1e-12)
