@@ -35,6 +35,8 @@ typedef struct {
     const nl_family *fam[NL_FIT_MAX_STRUCTURES]; /* each structure's family */
     char op[NL_FIT_MAX_STRUCTURES];              /* the operator after each ('+', '*'; 0 last) */
     int composite;                               /* a sum or product: names carry .I */
+    size_t nugget_term;                          /* the structure nl_fit_options.nugget adds a
+                                                    nugget to (NL_FIT_MAX_STRUCTURES: none) */
     size_t nfree;                                /* free parameters */
     size_t free_idx[NL_FIT_MAX_PARAMS];          /* their indices */
 } nl_fit_params;

@@ -65,6 +65,12 @@ static int fix_named(const nl_fit_options *o, const nl_fit_params *p, size_t t)
     return fix_index(o, name) >= 0;
 }
 
+/* White noise alone (the nugget family): one parameter, the nugget's. */
+static int pure_nugget(const nl_family *f)
+{
+    return f && f->nparams == 1 && f->params[0].role == NL_ROLE_NUGGET && !(f->flags & NL_FAMILY_SPECTRAL);
+}
+
 /* The value of key in the structure s's spec, where its spec gives one
  * (NAME=... after ':' or ','); NaN otherwise, and for s NULL. */
 static double given(const nl_model *s, const char *key)
@@ -93,7 +99,9 @@ static void add_family(const nl_fit_options *o, nl_fit_params *p, const nl_famil
         if (k >= 0)
             add(p, &f->params[k], t, given(s, f->params[k].name));
     }
-    if (nug >= 0 && ((o->nugget && t == 0) || fix_named(o, p, t) || !isnan(given(s, "nugget"))))
+    if (pure_nugget(f))
+        add(p, &f->params[0], t, given(s, f->params[0].name));
+    else if (nug >= 0 && ((o->nugget && t == p->nugget_term) || fix_named(o, p, t) || !isnan(given(s, "nugget"))))
         add(p, &f->params[nug], t, given(s, "nugget"));
     for (size_t k = 0; k < f->nparams; k++)
         if (f->params[k].role == NL_ROLE_SHAPE)
@@ -110,8 +118,8 @@ static int refuse_family(const nl_fit_options *o, const char *what)
 
 static int fittable(const nl_family *f)
 {
-    return f && (f->flags & NL_FAMILY_FIT) && nl_family_role_index(f, NL_ROLE_VARIANCE) >= 0 &&
-           f->nparams <= NL_FAMILY_MAX_PARAMS;
+    return f && (((f->flags & NL_FAMILY_FIT) && nl_family_role_index(f, NL_ROLE_VARIANCE) >= 0 &&
+                  f->nparams <= NL_FAMILY_MAX_PARAMS) || pure_nugget(f));
 }
 
 /* A model spec (one structure with values, or a sum or product): every
@@ -135,6 +143,17 @@ static int init_spec(const nl_fit_options *o, nl_fit_params *p)
     }
     p->nstruct = n;
     p->composite = n > 1;
+    /* --nugget: on the first structure that takes nugget=, unless one is white noise already */
+    p->nugget_term = NL_FIT_MAX_STRUCTURES;
+    for (size_t t = n; t-- > 0;) {
+        const nl_family *f = nl_model_family(nl_model_structure(m, t));
+        if (pure_nugget(f)) {
+            p->nugget_term = NL_FIT_MAX_STRUCTURES;
+            break;
+        }
+        if (nl_family_role_index(f, NL_ROLE_NUGGET) >= 0)
+            p->nugget_term = t;
+    }
     for (size_t t = 0; t < n && !st; t++) {
         const nl_model *s = nl_model_structure(m, t);
         const nl_family *f = nl_model_family(s);
@@ -231,12 +250,16 @@ int nl_fit_params_has_nugget(const nl_fit_params *p)
 
 void nl_fit_params_at_bound(const nl_fit_params *p, unsigned *flags)
 {
+    double var = 0;
+    for (size_t k = 0; k < p->np; k++)
+        if (p->param[k]->role == NL_ROLE_VARIANCE)
+            var = fmax(var, p->value[k]);
     for (size_t k = 0; k < p->nfree; k++) {
         const nl_family_param *fp = p->param[p->free_idx[k]];
         double v = p->value[p->free_idx[k]];
         if (fp->fit_hi > 0 && (v <= fp->fit_lo * (1 + NL_FIT_BOUND_REL) || v >= fp->fit_hi * (1 - NL_FIT_BOUND_REL)))
             flags[k] |= NL_FIT_PARAM_AT_BOUND;
-        if (fp->role == NL_ROLE_NUGGET && v <= NL_FIT_RCOND_MIN * p->value[0])
+        if (fp->role == NL_ROLE_NUGGET && v <= NL_FIT_RCOND_MIN * var)
             flags[k] |= NL_FIT_PARAM_AT_BOUND;
     }
 }

@@ -185,6 +185,17 @@ Test(fit_gstat, nested_equals_fit_variogram_meuse)
     fprintf(stderr, "meuse Sph+Nug vs gstat: |d var| %.2g, |d scale|/scale %.2g, |d nugget| %.2g (sill %.4g)\n",
             fabs(var - r[0]), fabs(scale / r[1] - 1), fabs(nug - r[2]), sill);
     json_decref(j);
+    /* the same as a sum with the nugget family, gstat's Nug row */
+    j = run_noiselab_json("fit meuse.tsv --model 'nugget:var=0.05 + spherical:var=0.59,scale=897' --weights distance "
+                          "--json");
+    nug = fitted(j, "var.1"), var = fitted(j, "var.2"), scale = fitted(j, "scale.2");
+    cr_expect(json_is_true(json_object_get(j, "converged")));
+    cr_expect(fabs(var - r[0]) <= 1e-5 * sill, "var.2 %.10g, gstat %.10g", var, r[0]);
+    cr_expect(fabs(scale - r[1]) <= 1e-5 * r[1], "scale.2 %.10g, gstat %.10g", scale, r[1]);
+    cr_expect(fabs(nug - r[2]) <= 1e-5 * sill, "var.1 (nugget) %.10g, gstat %.10g", nug, r[2]);
+    fprintf(stderr, "meuse Nug + Sph vs gstat: |d var| %.2g, |d scale|/scale %.2g, |d nugget| %.2g (sill %.4g)\n",
+            fabs(var - r[0]), fabs(scale / r[1] - 1), fabs(nug - r[2]), sill);
+    json_decref(j);
     j = run_noiselab_json("fit meuse.tsv --model 'spherical:var=0.4,scale=900,nugget=0.05 + markov:var=0.2,scale=300' "
                           "--fix scale.1=900 --fix scale.2=300 --weights distance --json");
     double v1 = fitted(j, "var.1"), n1 = fitted(j, "nugget.1"), v2 = fitted(j, "var.2");
@@ -195,6 +206,14 @@ Test(fit_gstat, nested_equals_fit_variogram_meuse)
     cr_expect(fabs(v2 - r[5]) <= 1e-5 * sill, "var.2 %.10g, gstat Exp %.10g", v2, r[5]);
     fprintf(stderr, "meuse Sph+Exp+Nug (ranges held) vs gstat: |d Sph| %.2g, |d Nug| %.2g, |d Exp| %.2g (sill %.4g)\n",
             fabs(v1 - r[3]), fabs(n1 - r[4]), fabs(v2 - r[5]), sill);
+    json_decref(j);
+    /* in gstat's own spelling (peer names and keys, core/family.h) */
+    j = run_noiselab_json("fit meuse.tsv --model 'Nug:psill=0.05 + Sph:psill=0.4,range=900 + Exp:psill=0.2,range=300' "
+                          "--fix scale.2=900 --fix scale.3=300 --weights distance --json");
+    n1 = fitted(j, "var.1"), v1 = fitted(j, "var.2"), v2 = fitted(j, "var.3");
+    cr_expect(fabs(v1 - r[3]) <= 1e-5 * sill, "var.2 %.10g, gstat Sph %.10g", v1, r[3]);
+    cr_expect(fabs(n1 - r[4]) <= 1e-5 * sill, "var.1 %.10g, gstat Nug %.10g", n1, r[4]);
+    cr_expect(fabs(v2 - r[5]) <= 1e-5 * sill, "var.3 %.10g, gstat Exp %.10g", v2, r[5]);
     json_decref(j);
 }
 
@@ -220,6 +239,7 @@ Test(fit_gstat, nested_free_equals_fit_variogram)
         "cat(sprintf('%.17g', c(f$psill[s], f$range[s], f$psill[f$model == 'Nug'], f$psill[e], f$range[e],\n"
         "                      attr(f, 'singular'))), sep = '\\n')\n";
     static const char *const names[5] = {"var.1", "scale.1", "nugget.1", "var.2", "scale.2"};
+    static const char *const named[5] = {"var.2", "scale.2", "var.1", "var.3", "scale.3"};
     double r[6];
     cr_assert_eq(run_noiselab("synth circulant --acf 'spherical:var=0.5,scale=12,nugget=0.1 + markov:var=0.6,scale=40' "
                               "--size 256x256 --seed 7 -o nest.exr", NULL, 0, NULL, 0), 0);
@@ -236,6 +256,15 @@ Test(fit_gstat, nested_free_equals_fit_variogram)
         cr_expect(fabs(v - r[k]) <= tol, "%s %.10g, gstat %.10g", names[k], v, r[k]);
         fprintf(stderr, "free nested Sph+Exp+Nug vs gstat: %s %.10g, gstat %.10g, |d| %.2g\n", names[k], v, r[k],
                 fabs(v - r[k]));
+    }
+    json_decref(j);
+    /* the nugget as a structure of its own: the same fit */
+    j = run_noiselab_json("fit nest.tsv --model 'nugget:var=0.1 + spherical:var=0.5,scale=12 + markov:var=0.6,"
+                          "scale=40' --weights distance --width 3 --cutoff 90 --json");
+    cr_expect(json_is_true(json_object_get(j, "converged")));
+    for (int k = 0; k < 5; k++) {
+        double v = fitted(j, named[k]), tol = k == 1 || k == 4 ? 1e-5 * r[k] : 1e-5 * sill;
+        cr_expect(fabs(v - r[k]) <= tol, "%s %.10g, gstat %.10g", named[k], v, r[k]);
     }
     json_decref(j);
 }
