@@ -68,7 +68,8 @@ static int fix_named(const nl_fit_options *o, const nl_fit_params *p, size_t t)
 /* White noise alone (the nugget family): one parameter, the nugget's. */
 static int pure_nugget(const nl_family *f)
 {
-    return f && f->nparams == 1 && f->params[0].role == NL_ROLE_NUGGET && !(f->flags & NL_FAMILY_SPECTRAL);
+    return f && f->nparams == 1 && f->params[0].role == NL_ROLE_NUGGET &&
+           !(f->flags & (NL_FAMILY_SPECTRAL | NL_FAMILY_ARGUMENT | NL_FAMILY_INTRINSIC));
 }
 
 /* The value of key in the structure s's spec, where its spec gives one

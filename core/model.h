@@ -155,6 +155,14 @@ double nl_model_variogram(const nl_model *m, int dim, const double *lag);
 /* Is the model intrinsic (a variogram without covariance: powvar)? */
 int nl_model_is_intrinsic(const nl_model *m);
 
+/* The intrinsic structure of m: m itself when intrinsic (powvar), the
+ * intrinsic term of a sum of it and white noise (nugget:, e.g.
+ * "nugget:var=0.1 + powvar:alpha=1.5"), NULL otherwise (a model with a
+ * covariance, or a sum of an intrinsic model and other structures, which
+ * only ordinary kriging takes).  Its parameters are the intrinsic part's;
+ * nl_model_nugget(m) has every nugget. */
+const nl_model *nl_model_intrinsic_structure(const nl_model *m);
+
 /* NL_OK for a model with a covariance; for an intrinsic one NL_EINVAL with
  * the message "SPEC: <what> needs a covariance; powvar is intrinsic (no
  * covariance): use synth intrinsic or ordinary kriging (krige)".  what:

@@ -315,3 +315,33 @@ char nl_model_operator(const nl_model *m, size_t i)
     }
     return 0;
 }
+
+/* White noise alone: a structure of the nugget family (one parameter, the
+ * nugget's; not an expression, whose one key is its nugget too). */
+static int white_noise(const nl_model *s)
+{
+    const nl_family *f = nl_model_family(s);
+    return f->nparams == 1 && f->params[0].role == NL_ROLE_NUGGET &&
+           !(f->flags & (NL_FAMILY_SPECTRAL | NL_FAMILY_ARGUMENT | NL_FAMILY_INTRINSIC));
+}
+
+const nl_model *nl_model_intrinsic_structure(const nl_model *m)
+{
+    const nl_model *found = NULL;
+    if (!m->nterms)
+        return nl_model_is_intrinsic(m) ? m : NULL;
+    if (m->fam != &nl_family_sum)
+        return NULL;
+    for (size_t i = 0; i < m->nterms; i++) {
+        const nl_model *t = m->terms[i];
+        if (t->nterms)
+            return NULL;
+        if (nl_model_is_intrinsic(t)) {
+            if (found)
+                return NULL;
+            found = t;
+        } else if (!white_noise(t))
+            return NULL;
+    }
+    return found;
+}

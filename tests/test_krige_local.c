@@ -230,4 +230,9 @@ Test(krige_local, nested_equals_gstat)
     against_gstat("spherical:var=0.7,scale=0.5,nugget=0.05,angle=30,ratio=0.4 + markov:var=0.3,scale=0.1", "value ~ 1",
                   "vgm(0.7, 'Sph', 0.5, 0.05, anis = c(60, 0.4), add.to = vgm(0.3, 'Exp', 0.1))", &o,
                   "ordinary, nmax 32, Nug+Sph(anisotropic)+Exp");
+    /* an intrinsic sum: white noise plus the power variogram (gstat's
+     * vgm(c, "Pow", alpha, nugget)) */
+    o.nmax = 0;
+    against_gstat("nugget:var=0.01 + powvar:alpha=1.5,c=0.1", "value ~ 1", "vgm(0.1, 'Pow', 1.5, 0.01)", &o,
+                  "ordinary, global, Nug+Pow");
 }

@@ -263,3 +263,34 @@ Test(model_sum, negligible_structure_fits_as_one)
         json_decref(b);
     }
 }
+
+/* A sum with an intrinsic structure is intrinsic (a variogram: methods that
+ * need a covariance refuse it by nl_model_check_stationary, naming powvar);
+ * its intrinsic structure is the powvar term when the rest is white noise
+ * only; a product refuses one. */
+Test(model_sum, intrinsic_terms)
+{
+    nl_model *m = parse_ok("nugget:var=0.1 + powvar:alpha=1.5,c=0.01");
+    double v;
+    cr_expect(nl_model_is_intrinsic(m));
+    cr_expect_eq(nl_model_intrinsic_structure(m), nl_model_structure(m, 1));
+    cr_expect_float_eq(nl_model_nugget(m), 0.1, 1e-15);
+    cr_expect_eq(nl_model_param(nl_model_intrinsic_structure(m), "alpha", &v), NL_OK);
+    cr_expect_eq(v, 1.5);
+    cr_expect_eq(nl_model_check_stationary(m, "synth fft"), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "powvar is intrinsic"), "%s", nl_errmsg());
+    nl_model_free(m);
+    m = parse_ok("markov:scale=2 + powvar:alpha=1.5");
+    cr_expect(nl_model_is_intrinsic(m));
+    cr_expect_null(nl_model_intrinsic_structure(m), "a covariance beside it: only kriging takes it");
+    nl_model_free(m);
+    m = parse_ok("expr:0.1*exp(-abs(t)); + powvar:alpha=1.5");
+    cr_expect_null(nl_model_intrinsic_structure(m), "an expression is not white noise");
+    nl_model_free(m);
+    m = parse_ok("markov:scale=2 + gauss");
+    cr_expect(!nl_model_is_intrinsic(m));
+    cr_expect_null(nl_model_intrinsic_structure(m));
+    cr_expect_eq(nl_model_check_stationary(m, "synth fft"), NL_OK);
+    nl_model_free(m);
+    parse_bad("markov * powvar:alpha=1.5", "an intrinsic model inside a product");
+}
