@@ -17,8 +17,10 @@
  * (core/model.h): one structure with values, or a sum or product of up to
  * 8 structures of those families ("spherical:var=0.5,scale=12,nugget=0.1
  * + markov:var=0.6,scale=40", "spherical + markov"), without anisotropy
- * keys.  Each structure's var, scale, nugget (when its spec gives one, when
- * fixed, or for structure 1 with nugget = 1) and shape parameters are
+ * keys; a structure of the nugget family (white noise) is fitted by its
+ * var.  Each structure's var, scale, nugget (when its spec gives one, when
+ * fixed, or with nugget = 1 for the first structure that takes one, unless
+ * a nugget structure is there) and shape parameters are
  * fitted unless fixed; in a sum or product they are named NAME.I, I the
  * structure from 1 (var.2, scale.1, nugget.1: fix takes these names), in
  * the order structure by structure, each as above.  The values the spec

@@ -64,7 +64,10 @@
  * the closed-form spectra, NAN where any term has none; of a product NAN
  * (no convolution).  Structures defined by their spectrum (power:,
  * spectrum:) and those that read a file (image:) are refused in sums and
- * products.  Splitting: a '+' or '*' of
+ * products.  A sum with an intrinsic structure (powvar) is intrinsic
+ * (nl_model_is_intrinsic; R its generalized covariance, the terms' added);
+ * a product refuses one.  The nugget family (nugget:var=V) is white noise
+ * in a sum: its V counts in nl_model_nugget.  Splitting: a '+' or '*' of
  * a named family's keys separates structures unless it is a number's sign
  * (after '=' or in an exponent: var=+2, scale=1e+3); an argument family's
  * argument (expr:) takes every character up to its first ';', or
