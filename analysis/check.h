@@ -26,7 +26,7 @@
  * when the spectrum falls faster than any power, and 0 whenever R has a
  * kink at the origin (R(0) - R(d) ~ d^a, a < 1.9, at d = 1e-5 L); the
  * d-dimensional density of an isotropic or ellipsoidal model falls as
- * k^-(b + d - 1); R''(0) is libmatheval's symbolic second derivative for
+ * k^-(b + d - 1); R''(0) is an extrapolated difference (core/expr_limit.c) for
  * expressions, a finite difference otherwise.
  *
  * A nugget (core/model.h) is white noise: its sampled spectra gain a

@@ -1,12 +1,11 @@
 /* Named distributions through GSL's densities, CDFs and inverse CDFs. */
 #include "dist.h"
 #include "gsl_guard_internal.h"
-#include "matheval_internal.h"
+#include "expr_internal.h"
 #include "nl_error.h"
 
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_randist.h>
-#include <matheval.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -21,7 +20,7 @@ struct nl_dist {
     double p1, p2;    /* parameters (mean/sd, a/b, a, zeta/sigma, P) */
     double *u, *y;    /* table: quantile samples */
     size_t n;         /* table length */
-    void *eval;       /* expr: libmatheval evaluator of g(x) */
+    nl_expr *eval;    /* expr: the compiled g(x) */
 };
 
 /* An expression nonlinearity g(x) of the standardised Gaussian input x:
@@ -29,17 +28,16 @@ struct nl_dist {
  * quadrature evaluate it (|x| <= NL_DIST_XMAX, probed at 2001 points). */
 static int parse_expr(nl_dist *d, const char *text)
 {
-    char **names;
-    int count, st;
+    static const char *const x[] = {"x"};
+    const char *bad;
+    int st;
     if (!*text)
         return NL_ERROR(NL_EINVAL, "expr: expected a function of x after \"expr:\" (e.g. expr:x^2)");
-    if ((st = nl_matheval_create(d->spec, text, &d->eval)))
+    if ((st = nl_expr_create(d->spec, text, &d->eval)))
         return st;
-    evaluator_get_variables(d->eval, &names, &count);
-    for (int i = 0; i < count; i++)
-        if (strcmp(names[i], "x"))
-            return NL_ERROR(NL_EINVAL, "%s: unknown variable \"%s\" (expected x, the standardised Gaussian input)",
-                            d->spec, names[i]);
+    if ((bad = nl_expr_bind(d->eval, x, 1)))
+        return NL_ERROR(NL_EINVAL, "%s: unknown variable \"%s\" (expected x, the standardised Gaussian input)",
+                        d->spec, bad);
     for (int i = 0; i <= 2000; i++) {
         double x = NL_DIST_XMAX * (i - 1000) / 1000.0, g = nl_dist_transform(d, x);
         if (!isfinite(g))
@@ -235,8 +233,7 @@ void nl_dist_free(nl_dist *d)
 {
     if (!d)
         return;
-    if (d->eval)
-        evaluator_destroy(d->eval);
+    nl_expr_free(d->eval);
     free(d->u), free(d->y), free(d->spec), free(d);
 }
 
@@ -244,10 +241,8 @@ int nl_dist_is_function(const nl_dist *d) { return d->kind == D_EXPR; }
 
 double nl_dist_transform(const nl_dist *d, double x)
 {
-    if (d->kind == D_EXPR) {
-        char *name = "x";
-        return evaluator_evaluate(d->eval, 1, &name, &x);
-    }
+    if (d->kind == D_EXPR)
+        return nl_expr_eval(d->eval, &x);
     /* u inside (0, 1), so that every quantile is finite */
     double u = fmin(fmax(gsl_cdf_ugaussian_P(x), 1e-300), 1 - 1e-16);
     return nl_dist_quantile(d, u);

@@ -15,7 +15,7 @@
  *                              linear interpolation
  *   expr:G                     not a distribution but a memoryless
  *                              nonlinearity: y = g(x) of the standardised
- *                              Gaussian input x (libmatheval syntax, e.g.
+ *                              Gaussian input x (core/expr_internal.h syntax, e.g.
  *                              expr:x^2, expr:exp(x), expr:sgn(x)); g must be
  *                              finite for |x| <= NL_DIST_XMAX.  Its CDF, density,
  *                              quantile, mean and variance are NAN (unknown in
@@ -55,7 +55,7 @@ double nl_dist_quantile(const nl_dist *d, double u);
  * section 4): g(x) = F^-1(Phi(x)) for a distribution, with Phi(x) kept in
  * [1e-300, 1 - 1e-16] so that the quantile is finite; the expression's g(x)
  * for expr:.  Thread-safe for distributions; for expr: as thread-safe as
- * libmatheval's evaluator (not: one thread per nl_dist). */
+ * the compiled expression (not: one thread per nl_dist). */
 double nl_dist_transform(const nl_dist *d, double x);
 
 /* 1 for an expr: nonlinearity (no CDF: not a target for goodness of fit or

@@ -74,7 +74,7 @@ typedef struct {
 enum {
     NL_FAMILY_SPECTRAL = 1 << 0,  /* defined by its spectrum S, not by R */
     NL_FAMILY_FIT = 1 << 1,       /* R in closed form of the named parameters: `fit` accepts it */
-    NL_FAMILY_EXPRESSION = 1 << 2,/* evaluated by libmatheval: not reentrant, parse not thread-safe */
+    NL_FAMILY_EXPRESSION = 1 << 2,/* evaluated by muParser: not reentrant, parse not thread-safe */
     NL_FAMILY_ARGUMENT = 1 << 3,  /* the spec's text after ':' is an argument (an expression, a
                                      file), its key=value pairs after a final ';' */
     NL_FAMILY_FILE = 1 << 4,      /* the argument names a file that parsing the spec reads */

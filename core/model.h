@@ -3,8 +3,8 @@
  * A model is made from a spec string NAME[:key=value,...] (see `noiselab
  * models`), NAME a family of the registry (core/family.h), e.g.:
  *     markov:scale=8                  a named family with its parameters
- *     expr:EXPR                       R given by a libmatheval expression
- *     spectrum:EXPR                   S given by a libmatheval expression
+ *     expr:EXPR                       R given by an expression, e.g. expr:besselj(0, r)
+ *     spectrum:EXPR                   S given by an expression
  *     image:FILE                      R = empirical autocorrelation of an exemplar (Lewis 1987, eq. 15)
  * Every family's parameters, defaults and formula: nl_model_catalogue,
  * docs/models.md (generated from the registry).
@@ -90,13 +90,25 @@
  * sample at unit spacing); spectra are two-sided densities, so the variance
  * is the integral of S over all frequencies.
  *
- * Thread safety.  libmatheval evaluation is not thread-safe: nl_model_acf
- * and nl_model_spectrum must not be called on one expr: or spectrum: model
- * from two threads (nl_model_is_reentrant says which models may); every
- * other model may be evaluated from any number of threads.  nl_model_parse
- * is not thread-safe for expr: and spectrum: specs (libmatheval's parser has
- * global state) nor for image: (it plans FFTW, core/fftw_plan.h); other specs
- * parse concurrently.  GSL: the Matern, power and Hankel paths reach GSL
+ * Expressions.  The syntax (libmatheval's, kept when noiselab moved to
+ * muParser) and the functions, Bessel J, Y, K of real order, Gamma, the
+ * incomplete gamma functions, erf, erfc, sinc among them, are listed in
+ * core/expr_internal.h and docs/expressions.md.  Where an expression is
+ * not finite (NaN or inf) at a lag or frequency, nl_model_acf and
+ * nl_model_spectrum return its limit there when the limit exists
+ * (sin(r)/r at 0 is 1, to 1e-10 relative or better: core/expr_limit.c),
+ * else the value itself (1/r at 0 stays inf, sin(1/r) NaN); delta and
+ * nandelta, whose point values are not limits, read 0 at 0 through this.
+ *
+ * Thread safety.  Expression evaluation is not reentrant: a compiled
+ * muParser expression reads its variables from, and evaluates on a stack
+ * inside, the one object, so nl_model_acf and nl_model_spectrum must not
+ * be called on one expr: or spectrum: model from two threads
+ * (nl_model_is_reentrant says which models may); two such models may be
+ * evaluated concurrently, one per thread, and every other model from any
+ * number of threads.  nl_model_parse is not thread-safe for expr: and
+ * spectrum: specs (muParser's C interface keeps static buffers) nor for
+ * image: (it plans FFTW, core/fftw_plan.h); other specs parse concurrently.  GSL: the Matern, power and Hankel paths reach GSL
  * under the library's guard (core/nl_error.h); where GSL fails they return
  * NAN (Matern: 0 where Bessel K fails), never abort. */
 #ifndef NL_MODEL_H
@@ -136,7 +148,7 @@ int nl_model_has_acf(const nl_model *m);
 
 /* May nl_model_acf and nl_model_spectrum be called on this model from
  * several threads at once?  True for every model but expressions
- * (libmatheval keeps its variables in the expression tree). */
+ * (a muParser object holds its variables and evaluation stack). */
 int nl_model_is_reentrant(const nl_model *m);
 
 /* R at the lag vector lag[0..dim-1] (spacing units), for models defined by R,
@@ -192,8 +204,10 @@ double nl_model_spectrum_iso(const nl_model *m, int dim, double w);
  * for expressions no x, y, z)? */
 int nl_model_is_isotropic(const nl_model *m);
 
-/* d^2 R / dt^2 of the 1D profile at t by libmatheval's symbolic derivative
- * (expr: models only; NAN otherwise or where the derivative is undefined). */
+/* d^2 R / dt^2 of the 1D profile at t by extrapolated central differences
+ * (Ridders; within 1e-9 relative on smooth profiles, e.g. -2 for
+ * exp(-t^2) at 0) (expr: models only; NAN otherwise or where they do not
+ * converge, as at a kink). */
 double nl_model_acf_d2(const nl_model *m, double t);
 
 /* Check that the model can be used in `dim` dimensions (e.g. an image model

@@ -19,7 +19,7 @@ struct nl_model {
     double ratio;        /* y length over x length */
     double zratio;       /* z length over x length */
     int aniso_given;     /* sep, angle, ratio or zratio was given */
-    void *eval;          /* libmatheval evaluator (expr:, spectrum:) */
+    struct nl_expr *eval; /* the compiled expression (expr:, spectrum:; core/expr_internal.h) */
     double *table;       /* image: empirical ACF, wrapped lags, tw x th */
     size_t tw, th;       /* image: table size */
     struct nl_model **terms; /* sum or product (fam: nl_family_sum, _product): its terms */

@@ -1,10 +1,10 @@
 /* Parsing of model specs into nl_model, by the family registry
  * (core/family.h). */
+#include "expr_internal.h"
 #include "model_internal.h"
 #include "nl_error.h"
 
 #include <math.h>
-#include <matheval.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -276,8 +276,7 @@ void nl_model_free(nl_model *m)
     for (size_t i = 0; i < m->nterms; i++)
         nl_model_free(m->terms[i]);
     free(m->terms);
-    if (m->eval)
-        evaluator_destroy(m->eval);
+    nl_expr_free(m->eval);
     free(m->table);
     free(m->spec);
     free(m);

@@ -22,7 +22,7 @@
  * the per-method plans' rules (the executes only read the plan, except
  * cholesky's, whose plan holds its workspace: one thread at a time per
  * plan; sparse with a kernel expression evaluates it per call with
- * libmatheval, which is not thread-safe). */
+ * muParser, whose expressions are not reentrant). */
 #ifndef NL_SYNTH_METHOD_H
 #define NL_SYNTH_METHOD_H
 
@@ -83,7 +83,7 @@ enum {
     NL_METHOD_SUFFIX = 1u << 3,       /* recorded after '|' (its value may hold commas) */
     NL_METHOD_MAKES_WINDOW = 1u << 4, /* FLAG: given, the field is a window at the grid's origin */
     NL_METHOD_NO_WINDOW = 1u << 5,    /* FLAG: given, the field is periodic and has no origin */
-    NL_METHOD_EXPRESSION = 1u << 6    /* STRING: an expression evaluated per execute by libmatheval (not
+    NL_METHOD_EXPRESSION = 1u << 6    /* STRING: an expression evaluated per execute by muParser (not
                                          thread-safe: calls of such plans must be serialised) */
 };
 

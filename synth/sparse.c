@@ -3,7 +3,7 @@
 #include "sparse_internal.h"
 #include "../core/autocorr.h"
 #include "../core/fftw_plan.h"
-#include "../core/matheval_internal.h"
+#include "../core/expr_internal.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -14,7 +14,6 @@
 #include <complex.h>
 #include <fftw3.h>
 #include <math.h>
-#include <matheval.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,8 +22,7 @@ void nl_synth_sparse_plan_free(nl_synth_sparse_plan *p)
 {
     if (!p)
         return;
-    if (p->angle)
-        evaluator_destroy(p->angle);
+    nl_expr_free(p->angle);
     free(p->angle_expr);
     nl_sparse_bands_clear(p);
     free(p->h);
@@ -265,40 +263,34 @@ int nl_synth_sparse_plan_expr(const char *expr, int dim, const nl_synth_sparse_o
     int radius = o->radius, cell = o->cell;
     double density = o->density;
     static const char *const names[] = {"x", "y", "t", "r"};
-    void *ev;
+    nl_expr *ev;
+    const char *bad;
     int st;
     *out = NULL;
-    if ((st = nl_matheval_create("kernel", expr, &ev)))
+    if ((st = nl_expr_create("kernel", expr, &ev)))
         return st;
-    {
-        char **vars;
-        int nv;
-        evaluator_get_variables(ev, &vars, &nv);
-        for (int i = 0; i < nv; i++)
-            if (strcmp(vars[i], "x") && strcmp(vars[i], "y") && strcmp(vars[i], "t") && strcmp(vars[i], "r")) {
-                st = NL_ERROR(NL_EINVAL, "kernel: unknown variable \"%s\" in \"%s\" (expected x, y, t, r)", vars[i],
-                              expr);
-                evaluator_destroy(ev);
-                return st;
-            }
+    if ((bad = nl_expr_bind(ev, names, 4))) {
+        st = NL_ERROR(NL_EINVAL, "kernel: unknown variable \"%s\" in \"%s\" (expected x, y, t, r)", bad, expr);
+        nl_expr_free(ev);
+        return st;
     }
     if ((st = new_plan(dim, radius, cell, density, out))) {
-        evaluator_destroy(ev);
+        nl_expr_free(ev);
         return st;
     }
     for (int j = dim == 2 ? -radius : 0; j <= (dim == 2 ? radius : 0); j++)
         for (int i = -radius; i <= radius; i++) {
             double v[4] = {i, j, i, hypot(i, j)};
-            double y = evaluator_evaluate(ev, 4, (char **)names, v);
+            double y = nl_expr_eval(ev, v);
             if (!isfinite(y)) {
-                evaluator_destroy(ev);
+                nl_expr_free(ev);
                 nl_synth_sparse_plan_free(*out);
                 *out = NULL;
                 return NL_ERROR(NL_EINVAL, "kernel: \"%s\" is not finite at (%d, %d)", expr, i, j);
             }
             (*out)->h[(size_t)(dim == 2 ? (j + radius) * (2 * radius + 1) : 0) + (size_t)(i + radius)] = y;
         }
-    evaluator_destroy(ev);
+    nl_expr_free(ev);
     if ((st = finish(*out, 1.0))) {
         nl_synth_sparse_plan_free(*out);
         *out = NULL;
@@ -344,23 +336,27 @@ int nl_synth_sparse_plan_image(const nl_field *img, const nl_synth_sparse_option
 
 int nl_synth_sparse_set_angle(nl_synth_sparse_plan *p, const char *expr)
 {
-    char *copy, **vars;
-    int nv, st;
+    static const char *const xy[] = {"x", "y"};
+    const char *bad;
+    char *copy;
+    int st;
     if (p->dim != 2)
         return NL_ERROR(NL_EINVAL, "angle: a rotated kernel needs a 2D field, got %dD", p->dim);
     copy = strdup(expr);
     if (!copy)
         return NL_ERROR(NL_ENOMEM, "out of memory");
-    if (p->angle)
-        evaluator_destroy(p->angle);
+    nl_expr_free(p->angle);
+    p->angle = NULL;
     free(p->angle_expr);
     p->angle_expr = copy;
-    if ((st = nl_matheval_create("angle", copy, &p->angle)))
+    if ((st = nl_expr_create("angle", copy, &p->angle)))
         return st;
-    evaluator_get_variables(p->angle, &vars, &nv);
-    for (int i = 0; i < nv; i++)
-        if (strcmp(vars[i], "x") && strcmp(vars[i], "y"))
-            return NL_ERROR(NL_EINVAL, "angle: unknown variable \"%s\" in \"%s\" (expected x, y)", vars[i], expr);
+    if ((bad = nl_expr_bind(p->angle, xy, 2))) {
+        st = NL_ERROR(NL_EINVAL, "angle: unknown variable \"%s\" in \"%s\" (expected x, y)", bad, expr);
+        nl_expr_free(p->angle);
+        p->angle = NULL;
+        return st;
+    }
     return NL_OK;
 }
 
@@ -414,7 +410,6 @@ static long wrap_cell(long c, const long *per, int a) { return per ? ((c % per[a
 int nl_sparse_impulses_make_periodic(const nl_synth_sparse_plan *p, uint64_t seed, long cx0, long cx1, long cy0,
                                      long cy1, const long *per, nl_sparse_impulses *im)
 {
-    static const char *const names[] = {"x", "y"};
     size_t ncell, total = 0, cap;
     memset(im, 0, sizeof *im);
     im->cx0 = cx0, im->cy0 = cy0, im->ncx = cx1 - cx0 + 1, im->ncy = cy1 - cy0 + 1;
@@ -473,7 +468,7 @@ int nl_sparse_impulses_make_periodic(const nl_synth_sparse_plan *p, uint64_t see
                 im->c[total] = 1, im->s[total] = 0;
                 if (p->angle) {
                     double v[2] = {(double)im->px[total], (double)im->py[total]};
-                    double th = evaluator_evaluate(p->angle, 2, (char **)names, v);
+                    double th = nl_expr_eval(p->angle, v);
                     if (!isfinite(th)) {
                         nl_sparse_impulses_free(im);
                         return NL_ERROR(NL_EINVAL, "angle: \"%s\" is not finite (%g) at the impulse (x %g, y %g)",

@@ -93,8 +93,8 @@ typedef struct {
 void nl_synth_sparse_options_default(nl_synth_sparse_options *o);
 
 /* Plans own their kernel table (and angle expression); free with
- * nl_synth_sparse_plan_free.  Making a plan evaluates the model or a
- * libmatheval expression and plans FFTW (model kernels): NOT thread-safe.
+ * nl_synth_sparse_plan_free.  Making a plan evaluates the model or an
+ * expression (muParser) and plans FFTW (model kernels): NOT thread-safe.
  * Radius and cell (of the options) are in grid samples; h[] (NULL: unit) is
  * the spacing in the model's lag units.
  * radius <= 0: the smallest radius keeping all but NL_SPARSE_ENERGY_TOL of the kernel's
@@ -147,7 +147,7 @@ void nl_synth_sparse_plan_info(const nl_synth_sparse_plan *p, nl_synth_sparse_in
  * NL_SYNTH_SPARSE_WRAP (wrap; else 0), the field is
  * periodic with the grid's size (each a multiple of the cell size) and
  * origin must be NULL.  Bit-identical for equal arguments; a plan without
- * an angle is only read (thread-safe); with an angle the libmatheval
+ * an angle is only read (thread-safe); with an angle the muParser
  * expression is evaluated, so one such plan serves one thread at a time.
  * NL_OK, or NL_EINVAL (dims differ, wrap with an origin, a tile not a
  * multiple of the cell or smaller than the kernel, a window beyond

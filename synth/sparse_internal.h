@@ -11,7 +11,7 @@ struct nl_synth_sparse_plan {
     int cell;           /* C */
     double density;     /* impulses per cell */
     double *h;          /* (2R+1)^dim kernel table, x fastest */
-    void *angle;        /* libmatheval theta(x, y) or NULL */
+    struct nl_expr *angle; /* theta(x, y) (core/expr_internal.h) or NULL */
     char *angle_expr;   /* its text, for messages */
     nl_synth_sparse_info info;
     int nbands;                               /* band-limited tables 1..nbands (0: none) */

@@ -64,7 +64,7 @@ Test(check, differentiability)
     cr_expect_eq(run("matern:nu=2.5", 2).differentiable_order, 2);
     cr_expect_eq(run("gauss", 1).differentiable_order, -1);
     cr_expect_float_eq(run("gauss", 1).r2, -2.0, 1e-6);
-    cr_expect_float_eq(run("expr:exp(-t^2)", 1).r2, -2.0, 1e-9);  /* symbolic */
+    cr_expect_float_eq(run("expr:exp(-t^2)", 1).r2, -2.0, 1e-9);  /* extrapolated differences */
     cr_expect(isinf(run("markov", 1).r2));
     /* along x, exp(-x^2 - 4 y^2) is exp(-x^2): R''(0) = -2 (it was 0, the
      * symbolic derivative in t of an expression in x); the finite

@@ -1,7 +1,8 @@
-/* Expressions with a character libmatheval's scanner has no rule for: every
+/* Expressions with a character outside the expression syntax: every
  * door of the library (expr:, spectrum:, nonlin's expr: g, sparse's kernel
  * and angle; a bare spectrum is spectrum: to the library) refuses them, names the character, and writes nothing to stdout
- * (flex's default rule would echo the character there and drop it). */
+ * (libmatheval's flex scanner, used before muParser, echoed it there and
+ * dropped it). */
 #include "../core/dist.h"
 #include "../core/model.h"
 #include "../core/nl_error.h"
@@ -15,7 +16,7 @@
 static int allowed(int c)
 {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-           (c && strchr("_.+-*/^() \t", c));
+           (c && strchr("_.,+-*/^() \t", c));
 }
 
 /* Try one expression through each door with character c inside; return the

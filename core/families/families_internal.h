@@ -52,11 +52,16 @@ double nl_spectrum_gauss1d(double var, double s, double f);
 int nl_expr_isotropic(const nl_model *m);
 
 /* Compile an expression into m->eval, checking that it names only the
- * variables in `allowed` (space separated); NL_OK or NL_EINVAL. */
-int nl_expr_compile(nl_model *m, const char *arg, const char *allowed);
+ * variables names[0..n-1] (the order nl_expr_model_eval takes their
+ * values in); NL_OK or NL_EINVAL. */
+int nl_expr_model_compile(nl_model *m, const char *arg, const char *const *names, size_t n);
 
-/* Evaluate the model's expression at the named variables. */
-double nl_expr_eval(const nl_model *m, const char *const *names, double *values, int n);
+/* The model's expression at p[0..dim-1] (a lag or a frequency), through
+ * `vars`, which makes the variables' values from p.  Where the expression
+ * is not finite, its limit at p (core/expr_limit.c) when the limit exists,
+ * else the value itself. */
+typedef void (*nl_expr_vars_fn)(const double *p, double *values);
+double nl_expr_model_eval(const nl_model *m, nl_expr_vars_fn vars, const double *p, int dim);
 
 /* |f| for a family's closed-form isotropic spectrum in dim dimensions, or
  * NAN where the model is stretched, rotated or separable in 2D and 3D (its

@@ -1,21 +1,28 @@
-/* spectrum: a spectral density given as a libmatheval expression of the
- * frequency (a density: its white-noise part is a constant in S, not a
- * key). */
+/* spectrum: a spectral density given as an expression of the frequency
+ * (a density: its white-noise part is a constant in S, not a key); a
+ * removable singularity is evaluated as its limit. */
 #include "families_internal.h"
 
-static int parse_argument(nl_model *m, const char *arg) { return nl_expr_compile(m, arg, "f fx fy fz k"); }
+static const char *const names[] = {"f", "fx", "fy", "fz", "k"};
+
+static int parse_argument(nl_model *m, const char *arg) { return nl_expr_model_compile(m, arg, names, 5); }
+
+/* f: signed in 1D, |frequency| in 2D and 3D (p[0..2], zeros past dim) */
+static void vars_1d(const double *p, double *v)
+{
+    v[0] = v[1] = p[0], v[2] = v[3] = 0, v[4] = fabs(p[0]);
+}
+
+static void vars_nd(const double *p, double *v)
+{
+    v[0] = v[4] = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    v[1] = p[0], v[2] = p[1], v[3] = p[2];
+}
 
 static double spectrum(const nl_model *m, int dim, const double *f)
 {
-    static const char *const names[] = {"f", "fx", "fy", "fz", "k"};
-    double k2 = 0, k;
-    for (int a = 0; a < dim; a++)
-        k2 += f[a] * f[a];
-    k = sqrt(k2);
-    {
-        double v[] = {dim == 1 ? f[0] : k, f[0], dim > 1 ? f[1] : 0, dim > 2 ? f[2] : 0, k};
-        return nl_expr_eval(m, names, v, 5);
-    }
+    double p[3] = {f[0], dim > 1 ? f[1] : 0, dim > 2 ? f[2] : 0};
+    return nl_expr_model_eval(m, dim == 1 ? vars_1d : vars_nd, p, dim);
 }
 
 const nl_family nl_family_spectrum = {

@@ -86,7 +86,7 @@ def h5lib():
             raise Error("HDF5: cannot load libnoiselab_mpi: tried " + "; ".join(errors))
     return _h5[0]
 
-# FFTW's planner, libmatheval's parser and evaluator, and GSL's error
+# FFTW's planner, muParser's parser and evaluator, and GSL's error
 # handler set-up are not thread-safe (core/fftw_plan.h, core/model.h): every
 # call that may plan or evaluate a model holds this lock.  cffi releases the
 # GIL around every C call, so other Python threads run meanwhile; executing
@@ -189,7 +189,7 @@ class Model:
     def __init__(self, spec, what="acf"):
         out = ffi.new("nl_model **")
         b = as_str(what, spec)
-        with planner:  # libmatheval's parser is not thread-safe
+        with planner:  # muParser's C interface is not thread-safe
             check(lib.nl_model_parse(b, out))
         self.ptr = ffi.gc(out[0], lib.nl_model_free)
         self.spec = ffi.string(lib.nl_model_spec(self.ptr)).decode()

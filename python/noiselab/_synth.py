@@ -113,8 +113,8 @@ class Plan:
     cffi releases the GIL around each C call, so the calls run in parallel
     (the library's executes only read the plan), except cholesky's, whose
     plan keeps its workspace (its calls take a lock of the plan's), and
-    sparse's with a kernel expression (libmatheval: the package's lock).
-    Making a plan takes the package's lock (FFTW's planner and libmatheval
+    sparse's with a kernel expression (muParser: the package's lock).
+    Making a plan takes the package's lock (FFTW's planner and muParser
     are not thread-safe).
 
     Attributes: ``method`` (the method string the CLI records, e.g.
@@ -164,7 +164,7 @@ class Plan:
         if t.caps & lib.NL_METHOD_SERIAL:
             self._lock = threading.Lock()  # the plan holds its workspace
         if any(rows[k].flags & lib.NL_METHOD_EXPRESSION for k in given if k in rows):
-            self._lock = planner  # an expression evaluated per call (libmatheval)
+            self._lock = planner  # an expression evaluated per call (muParser)
         r = ffi.new("nl_method_report *")
         check(lib.nl_method_report_of(self._p, self._m.ptr if self._m else ffi.NULL, 0, ffi.NULL, r))
         self.flags = ffi.string(r.flags).decode()

@@ -1,6 +1,6 @@
-"""An expression with a character outside libmatheval's syntax raises
-noiselab.Error naming it, and nothing reaches the program's stdout (the
-scanner's default rule would echo the character there and drop it)."""
+"""An expression with a character outside the expression syntax raises
+noiselab.Error naming it, and nothing reaches the program's stdout (libmatheval's
+scanner, used before muParser, echoed the character there and dropped it)."""
 import os
 import subprocess
 import sys

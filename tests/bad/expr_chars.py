@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # Writes tests/bad/expr_chars.cases to stdout: one case per ASCII character
-# that libmatheval's scanner has no rule for (it would echo it to stdout and
-# drop it).  python3 tests/bad/expr_chars.py > tests/bad/expr_chars.cases
-ok = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.+-*/^() \t")
+# outside the expression syntax (core/expr_internal.h; libmatheval's scanner,
+# used before muParser, echoed such a character to stdout and dropped it).
+# python3 tests/bad/expr_chars.py > tests/bad/expr_chars.cases
+ok = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.,+-*/^() \t")
 T = [
     ('$NL synth fft --acf "expr:exp(-abs(t)%s/8)" --size 64 -o out.tsv', 12),
     ('$NL check --acf "expr:exp(-abs(t)%s/8)" --dim 1 --json', 12),
@@ -12,8 +13,9 @@ T = [
     ('$NL synth sparse --kernel "exp(-r%s)" --size 64 -o out.tsv', 7),
     ('$NL synth sparse --kernel "exp(-r)" --angle "x%s/64" --size 32x32 -o out.exr', 2),
 ]
-print("# Expressions with a character libmatheval's scanner has no rule for (flex would echo it")
-print("# to stdout and drop it): refused, naming the character and its position, with nothing on")
+print("# Expressions with a character outside the expression syntax (libmatheval's flex scanner,")
+print("# used before muParser, echoed it to stdout and dropped it): refused, naming the character")
+print("# and its position, with nothing on")
 print("# stdout.  One case per such ASCII character (NUL cannot be in an argument), cycling")
 print("# through every option that takes an expression.  Generated once by tests/bad/expr_chars.py;\n# RULE EXIT NEEDLE COMMAND.")
 k = 0
@@ -21,8 +23,10 @@ for c in range(1, 128):
     ch = chr(c)
     if ch in ok:
         continue
-    tmpl, pos = T[k % len(T)]
-    k += 1
+    # ';' ends the expression of a model spec (expr:EXPR;nugget=V): it is
+    # tried where no model spec is parsed
+    tmpl, pos = T[4] if ch == ';' else T[k % len(T)]
+    k += ch != ';'
     shown = "'%s'" % ch if 0x20 < c < 0x7f else "\\x%02x" % c
     needle = "character %s at position %d" % (shown, pos)
     cmd = "c=$(printf '\\%03ox'); c=${c%%x}; " % c + tmpl % "$c"
