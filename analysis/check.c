@@ -313,10 +313,17 @@ static int scale_of(const nl_model *m, int dim, nl_check *c, double *L0)
     return NL_OK;
 }
 
-/* Was the model made separable ("sep" among the keys of its spec)? */
+/* Was the model made separable ("sep" among the keys of its spec; of a
+ * sum or product, of every structure's)? */
 static int is_separable(const nl_model *m)
 {
     const char *s = nl_model_spec(m), *p = s;
+    if (nl_model_structures(m) > 1) {
+        for (size_t i = 0; i < nl_model_structures(m); i++)
+            if (!is_separable(nl_model_structure(m, i)))
+                return 0;
+        return 1;
+    }
     while ((p = strstr(p, "sep")) != NULL) {
         if (p > s && strchr(":;,", p[-1]) && (p[3] == ',' || p[3] == '\0'))
             return 1;

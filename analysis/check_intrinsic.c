@@ -9,12 +9,17 @@ int nl_check_intrinsic_model(const nl_model *m, int dim, nl_check_intrinsic *out
 {
     int st;
     memset(out, 0, sizeof *out);
+    const nl_model *im = nl_model_intrinsic_structure(m);
     if (!nl_model_is_intrinsic(m))
         return NL_ERROR(NL_EINVAL, "%s: not an intrinsic model; expected powvar", nl_model_spec(m));
+    if (!im)
+        return NL_ERROR(NL_EINVAL, "%s: a sum of an intrinsic model and other structures than nuggets; expected "
+                        "powvar, or powvar plus nugget: structures (ordinary kriging takes any such sum)",
+                        nl_model_spec(m));
     if ((st = nl_model_check_dim(m, dim)))
         return st;
     out->dim = dim;
-    nl_model_param(m, "alpha", &out->alpha), nl_model_param(m, "c", &out->c);
+    nl_model_param(im, "alpha", &out->alpha), nl_model_param(im, "c", &out->c);
     out->nugget = nl_model_nugget(m);
     out->hurst = out->alpha / 2, out->fractal_dimension = dim + 1 - out->alpha / 2;
     out->spectrum_coef = out->min_spectrum = NAN;

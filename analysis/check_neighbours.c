@@ -133,7 +133,9 @@ int nl_check_neighbours(const nl_model *m, const nl_check *c, char *buf, size_t 
     if (!size)
         return NL_OK;
     buf[0] = 0;
-    if (c->positive_definite || !c->isotropic || nl_model_is_spectral(m) || k == &nl_family_image)
+    /* a sum or product: no single parameter or key to move */
+    if (c->positive_definite || !c->isotropic || nl_model_is_spectral(m) || k == &nl_family_image ||
+        (k->flags & NL_FAMILY_COMPOSITE))
         return NL_OK;
     /* a family with an oscillation frequency */
     if (nl_model_param(m, "omega", &omega) == NL_OK)

@@ -13,6 +13,24 @@
  * Starts: the family's descriptor gives each shape parameter's start and
  * the factor on the automatic scale start (2 for the spherical range).
  *
+ * Nested models.  nl_fit_options.family may instead be a model spec
+ * (core/model.h): one structure with values, or a sum or product of up to
+ * 8 structures of those families ("spherical:var=0.5,scale=12,nugget=0.1
+ * + markov:var=0.6,scale=40", "spherical + markov"), without anisotropy
+ * keys; a structure of the nugget family (white noise) is fitted by its
+ * var.  Each structure's var, scale, nugget (when its spec gives one, when
+ * fixed, or with nugget = 1 for the first structure that takes one, unless
+ * a nugget structure is there) and shape parameters are
+ * fitted unless fixed; in a sum or product they are named NAME.I, I the
+ * structure from 1 (var.2, scale.1, nugget.1: fix takes these names), in
+ * the order structure by structure, each as above.  The values the spec
+ * gives are the starts (gstat's fit.variogram starts from its vgm); the
+ * others' automatic starts split the sill equally among the structures and
+ * spread their scales by factors of 2.  The WLS fits equal gstat's
+ * fit.variogram with the same structures and weights
+ * (tests/test_fit_gstat.c: Meuse, and a nested Sph + Exp + Nug to 2e-7);
+ * the likelihood fits take nested models the same way.
+ *
  * Bounds.  A shape parameter with a fit range in its descriptor
  * (nl_family_param.fit_lo, fit_hi) is held to it, starts included: matern's
  * nu to 0.2..30 (GSTools' bounds for Matern; at 30 R is gauss's within 1%),
@@ -175,7 +193,8 @@ typedef enum { NL_FIT_ML = 0, NL_FIT_REML = 1 } nl_fit_likelihood;
 typedef enum { NL_FIT_INTERVALS_NONE = 0, NL_FIT_INTERVALS_ALL = 1, NL_FIT_INTERVALS_SCALE = 2 } nl_fit_intervals;
 
 typedef struct {
-    const char *family;                  /* markov, gauss, matern, spherical, ... */
+    const char *family;                  /* markov, gauss, matern, spherical, ..., or a model
+                                            spec (see Nested models) */
     int nugget;                          /* fit a nugget (else 0 unless fixed) */
     size_t nfix;                         /* entries in fix_name / fix_value */
     const char *fix_name[NL_FIT_MAX_FIX];/* parameters held at fix_value */
@@ -191,7 +210,8 @@ typedef struct {
 
 /* One fitted parameter. */
 typedef struct {
-    char name[16];                        /* its spec name: var, scale, nugget, nu, ... */
+    char name[16];                        /* its spec name: var, scale, nugget, nu, ...; of a
+                                            nested model NAME.I (var.2) */
     double value;                         /* fitted (or fixed) value */
     double se;                            /* standard error (0 when fixed; NaN when flagged) */
     double lower, upper;                  /* 95% profile-likelihood interval (see above): its ends,
@@ -202,7 +222,8 @@ typedef struct {
 
 /* A fit's result.  param has np entries, as many as the family's fitted
  * parameters: var, scale, the nugget when fitted or fixed, then the
- * family's shape parameters in its descriptor's order (core/family.h).
+ * family's shape parameters in its descriptor's order (core/family.h);
+ * for a nested model, those of each structure in turn.
  * The fits allocate it; release it with nl_fit_result_free (a failed fit
  * leaves param NULL).  A result passed to a fit is overwritten: release a
  * previous one first. */

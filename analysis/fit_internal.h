@@ -6,9 +6,12 @@
 #include "fit.h"
 #include "../core/model.h"
 
-/* The most parameters of a family (core/family.h): the size of the
+/* The most parameters of a fit (a sum of up to NL_FIT_MAX_STRUCTURES
+ * structures, each with up to NL_FAMILY_MAX_PARAMS): the size of the
  * optimisers' work arrays. */
-#define NL_FIT_MAX_PARAMS NL_FAMILY_MAX_PARAMS
+#define NL_FIT_MAX_PARAMS 24
+/* The most structures of a fitted sum or product. */
+#define NL_FIT_MAX_STRUCTURES 8
 
 #include <gsl/gsl_matrix.h>
 
@@ -17,15 +20,23 @@
 typedef enum { NL_FIT_LOG, NL_FIT_LOGIT } nl_fit_transform;
 
 typedef struct {
-    const char *family;                          /* the model family */
+    const char *family;                          /* the model family, or the spec of a sum */
     int dim;                                     /* the data's dimension */
     size_t np;                                   /* parameters */
-    const char *name[NL_FIT_MAX_PARAMS];         /* spec names */
+    char name[NL_FIT_MAX_PARAMS][16];            /* spec names (of a sum: NAME.I) */
     double value[NL_FIT_MAX_PARAMS];             /* current values */
+    double given[NL_FIT_MAX_PARAMS];             /* the value the model spec gives (a start), NaN none */
     int fixed[NL_FIT_MAX_PARAMS];                /* held fixed */
     nl_fit_transform tr[NL_FIT_MAX_PARAMS];      /* how a free one is optimised */
     double hi[NL_FIT_MAX_PARAMS];                /* NL_FIT_LOGIT: the upper end */
     const nl_family_param *param[NL_FIT_MAX_PARAMS]; /* the family's descriptor of each */
+    size_t term[NL_FIT_MAX_PARAMS];              /* the structure it belongs to (from 0) */
+    size_t nstruct;                              /* structures (1: one family) */
+    const nl_family *fam[NL_FIT_MAX_STRUCTURES]; /* each structure's family */
+    char op[NL_FIT_MAX_STRUCTURES];              /* the operator after each ('+', '*'; 0 last) */
+    int composite;                               /* a sum or product: names carry .I */
+    size_t nugget_term;                          /* the structure nl_fit_options.nugget adds a
+                                                    nugget to (NL_FIT_MAX_STRUCTURES: none) */
     size_t nfree;                                /* free parameters */
     size_t free_idx[NL_FIT_MAX_PARAMS];          /* their indices */
 } nl_fit_params;
@@ -94,6 +105,9 @@ void nl_fit_params_start(nl_fit_params *p, double sill, double scale, const doub
 
 /* Index of a parameter by name, or -1. */
 int nl_fit_params_find(const nl_fit_params *p, const char *name);
+
+/* Is a nugget fitted, or fixed above 0? */
+int nl_fit_params_has_nugget(const nl_fit_params *p);
 
 /* Free parameters to and from the optimiser's unbounded coordinates u. */
 void nl_fit_params_to_u(const nl_fit_params *p, double *u);

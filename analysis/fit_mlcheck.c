@@ -68,10 +68,10 @@ static void where(const double *x, int dim, char *buf, size_t size)
  * nugget C is singular (different values: the likelihood is unbounded). */
 static int check_coincident(const nl_fit_params *p, const double *x, const double *z, size_t n)
 {
-    int nug = nl_fit_params_find(p, "nugget"), dim = p->dim;
+    int dim = p->dim;
     size_t d = (size_t)dim;
     char at[96];
-    if (nug >= 0 && (!p->fixed[nug] || p->value[nug] > 0))
+    if (nl_fit_params_has_nugget(p))
         return NL_OK;
     for (size_t i = 1; i < n; i++)
         for (size_t j = 0; j < i; j++) {

@@ -141,7 +141,7 @@ int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const do
     for (size_t j = 0; j < k; j++) {
         size_t q = p->free_idx[j];
         double se = sqrt(cov[j * k + j]), lo, hi;
-        if ((flags[j] & NL_FIT_PARAM_SINGULAR) || (which == NL_FIT_INTERVALS_SCALE && strcmp(p->name[q], "scale") != 0))
+        if ((flags[j] & NL_FIT_PARAM_SINGULAR) || (which == NL_FIT_INTERVALS_SCALE && p->param[q]->role != NL_ROLE_SCALE))
             continue;
         pr.j = j;
         lo = find_end(&pr, rs, u_hat, se, -1);

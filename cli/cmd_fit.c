@@ -4,6 +4,7 @@
 #include "../analysis/fit.h"
 #include "../analysis/variogram.h"
 #include "../core/family.h"
+#include "../core/model.h"
 #include "../core/io_points.h"
 #include "../core/nl_error.h"
 
@@ -13,7 +14,7 @@
 #include <string.h>
 
 static const char help_usage[] =
-    "usage: noiselab fit DATA.tsv|FIELD.exr --model FAMILY [--nugget] [--fix NAME=VALUE]...\n"
+    "usage: noiselab fit DATA.tsv|FIELD.exr --model FAMILY|SPEC [--nugget] [--fix NAME=VALUE]...\n"
     "                    [--method wls|ml|reml]\n"
     "                    [--weights cressie|pairs|reweighted|distance]\n"
     "                    [--width W] [--cutoff C] [--json]\n\n";
@@ -83,7 +84,11 @@ static void print_help(void)
         shapes[len - 1] = 0;  /* the last comma */
     fit_ranges(shapes + strlen(shapes), sizeof shapes - strlen(shapes));
     snprintf(text, sizeof text, "Fits a model family (%s) to data: its var, scale (the spherical model's range), "
-             "the nugget with --nugget, and its shape parameters (%s), each unless fixed by --fix.  wls (default): "
+             "the nugget with --nugget, and its shape parameters (%s), each unless fixed by --fix.  A SPEC with values "
+             "(spherical:var=0.59,scale=897,nugget=0.05) starts the fit there, as gstat's vgm; a nested SPEC "
+             "(spherical:var=0.5,scale=12,nugget=0.1 + markov:var=0.6,scale=40, or spherical + markov) fits every "
+             "structure's parameters, named NAME.I for structure I from 1 (var.2, scale.1; --fix scale.2=40), "
+             "--nugget adding one to structure 1.  wls (default): "
              "weighted least squares on the empirical variogram (as %s", families, shapes, help);
     fputs(help_usage, stdout);
     cli_fill(stdout, text, 80);
@@ -138,7 +143,7 @@ static void parse(int argc, char **argv, opts_t *a)
     }
     a->in = cli_one_operand("fit", "input (points .tsv or field .exr)", argc, argv);
     if (!a->o.family)
-        cli_die(2, "--model: expected a family such as markov or spherical, got none");
+        cli_die(2, "--model: expected a family such as markov or spherical, or a nested spec, got none");
     a->o.likelihood = a->method == 2 ? NL_FIT_REML : NL_FIT_ML;
 }
 
@@ -217,14 +222,28 @@ static const char *status_word(const nl_fit_param *q)
     return q->flags & NL_FIT_PARAM_SINGULAR ? "not identifiable (singular information)" : "ok";
 }
 
-/* The fit range of a shape parameter, from the registry (0, 0: none). */
+/* The fit range of a shape parameter, from the registry (0, 0: none);
+ * NAME.I of a nested model: structure I's family. */
 static void fit_range(const char *family, const char *name, double *lo, double *hi)
 {
     const nl_family *f = nl_family_find(family, strlen(family));
-    int k = f ? nl_family_param_index(f, name) : -1;
+    const char *dot = strchr(name, '.');
+    char key[32];
+    nl_model *m = NULL;
+    int k;
+    snprintf(key, sizeof key, "%.*s", (int)(dot ? (size_t)(dot - name) : strlen(name)), name);
+    if (!f && nl_model_parse(family, &m) == NL_OK) {
+        const nl_model *s = nl_model_structure(m, dot ? strtoul(dot + 1, NULL, 10) - 1 : 0);
+        f = s ? nl_model_family(s) : NULL;
+    }
+    k = f ? nl_family_param_index(f, key) : -1;
     *lo = k >= 0 ? f->params[k].fit_lo : 0;
     *hi = k >= 0 ? f->params[k].fit_hi : 0;
+    nl_model_free(m);
 }
+
+/* Is name the nugget (nugget, or nugget.I of a nested model)? */
+static int is_nugget(const char *name) { return strncmp(name, "nugget", 6) == 0 && (!name[6] || name[6] == '.'); }
 
 /* Notes on flagged parameters: which, and why there are no numbers. */
 static void print_status(const opts_t *a, const nl_fit_result *r)
@@ -235,8 +254,8 @@ static void print_status(const opts_t *a, const nl_fit_result *r)
         double lo, hi;
         if (q->flags & NL_FIT_PARAM_SINGULAR)
             snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", *names ? ", " : "", q->name);
-        else if ((q->flags & NL_FIT_PARAM_AT_BOUND) && strcmp(q->name, "nugget") == 0)
-            printf("at bound    nugget = %.3g: at 0 (below %.2g var: no nugget in the data)\n", q->value,
+        else if ((q->flags & NL_FIT_PARAM_AT_BOUND) && is_nugget(q->name))
+            printf("at bound    %s = %.3g: at 0 (below %.2g var: no nugget in the data)\n", q->name, q->value,
                    NL_FIT_RCOND_MIN);
         else if (q->flags & NL_FIT_PARAM_AT_BOUND) {
             fit_range(a->o.family, q->name, &lo, &hi);

@@ -19,7 +19,11 @@ static const char help[] =
     "A family's peer names (gstat's Sph, GSTools' Gaussian, RandomFields' RMexp)\n"
     "take the peer's own keys, e.g. Sph:psill=0.59,range=897.\n"
     "Lags are in spacing units; frequencies in cycles per unit length; spectra\n"
-    "are two-sided densities whose integral is the variance R(0).\n";
+    "are two-sided densities whose integral is the variance R(0).\n"
+    "Structures join with + and * ('*' first, no parentheses), each with its own\n"
+    "keys: \"spherical:var=0.59,scale=897,nugget=0.05 + markov:var=0.2,scale=300\"\n"
+    "(R: the sum, or the product, of the structures'; an expr: structure last or\n"
+    "ended by ';'; parameters of a sum named NAME.I, e.g. var.2; docs/models.md).\n";
 
 /* A peer alias's keys as the catalogue writes them: "psill=1,range=A". */
 static void peer_keys(const nl_family_alias *a, char *buf, size_t size)

@@ -78,8 +78,10 @@ enum {
     NL_FAMILY_ARGUMENT = 1 << 3,  /* the spec's text after ':' is an argument (an expression, a
                                      file), its key=value pairs after a final ';' */
     NL_FAMILY_FILE = 1 << 4,      /* the argument names a file that parsing the spec reads */
-    NL_FAMILY_INTRINSIC = 1 << 5  /* intrinsic: a variogram with no covariance; profile is the
+    NL_FAMILY_INTRINSIC = 1 << 5, /* intrinsic: a variogram with no covariance; profile is the
                                      generalized covariance -gamma (core/model.h, Intrinsic models) */
+    NL_FAMILY_COMPOSITE = 1 << 6  /* a sum or product of structures (core/model.h); never
+                                     registered: nl_model_family of such a model */
 };
 
 /* A peer's name for a family with the peer's own parameterisation: gstat's

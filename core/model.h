@@ -51,6 +51,38 @@
  * nl_model_spectrum gives the generalized spectral density, not
  * integrable at f = 0.
  *
+ * Sums and products.  A spec may join structures with '+' and '*', '*'
+ * binding first (no parentheses: write A*B + A*C), blanks around either
+ * optional:  nugget:var=0.05 + spherical:var=0.59,scale=897  or
+ * markov:scale=3 * oscillatory:omega=2 + gauss:scale=0.5,var=0.1.  Each
+ * structure is a spec of its own: its family, parameters, nugget and
+ * anisotropy keys (angle, ratio, zratio, sep apply to it alone).  R of a
+ * sum is the sum of its terms' R (R(0): every var and nugget added), of a
+ * product the product of its factors' R (var: the product of the vars); a
+ * nugget inside a product is refused (white noise times a structure is
+ * white noise: write it as a term of the sum).  S of a sum is the sum of
+ * the closed-form spectra, NAN where any term has none; of a product NAN
+ * (no convolution).  Structures defined by their spectrum (power:,
+ * spectrum:) and those that read a file (image:) are refused in sums and
+ * products.  A sum with an intrinsic structure (powvar) is intrinsic
+ * (nl_model_is_intrinsic; R its generalized covariance, the terms' added);
+ * a product refuses one.  The nugget family (nugget:var=V) is white noise
+ * in a sum: its V counts in nl_model_nugget.  Splitting: a '+' or '*' of
+ * a named family's keys separates structures unless it is a number's sign
+ * (after '=' or in an exponent: var=+2, scale=1e+3); an argument family's
+ * argument (expr:) takes every character up to its first ';', or
+ * up to the end of the spec without one, so an expression is either the
+ * last structure or ends with ';' (its keys may follow):
+ *     markov:scale=2 + expr:0.5*exp(-t^2)        expr: last
+ *     expr:0.5*exp(-t^2); + markov:scale=2       expr: ended by ';'
+ *     expr:0.5*exp(-t^2);ratio=2 * markov:scale=2
+ * At most NL_MODEL_MAX_STRUCTURES structures.  Structures are numbered from
+ * 1, left to right (nl_model_structure counts from 0), and a sum's
+ * parameters are named NAME.I, e.g. var.2 (the var of the second
+ * structure), scale.1, nugget.1 (nl_model_param; `noiselab fit` names the
+ * fitted parameters so, as gstat's vgm rows).  nl_model_family of a sum or
+ * product is a descriptor flagged NL_FAMILY_COMPOSITE.
+ *
  * Expression variables.  ACF expressions: t (the signed lag in 1D; the
  * stretched lag norm in n-D), x, y, z (lag components), r (the stretched lag
  * norm).  Spectrum expressions: f (|frequency|; signed in 1D), fx, fy, fz,
@@ -138,6 +170,14 @@ double nl_model_variogram(const nl_model *m, int dim, const double *lag);
 /* Is the model intrinsic (a variogram without covariance: powvar)? */
 int nl_model_is_intrinsic(const nl_model *m);
 
+/* The intrinsic structure of m: m itself when intrinsic (powvar), the
+ * intrinsic term of a sum of it and white noise (nugget:, e.g.
+ * "nugget:var=0.1 + powvar:alpha=1.5"), NULL otherwise (a model with a
+ * covariance, or a sum of an intrinsic model and other structures, which
+ * only ordinary kriging takes).  Its parameters are the intrinsic part's;
+ * nl_model_nugget(m) has every nugget. */
+const nl_model *nl_model_intrinsic_structure(const nl_model *m);
+
 /* NL_OK for a model with a covariance; for an intrinsic one NL_EINVAL with
  * the message "SPEC: <what> needs a covariance; powvar is intrinsic (no
  * covariance): use synth intrinsic or ordinary kriging (krige)".  what:
@@ -193,13 +233,28 @@ const nl_model_info *nl_model_catalogue(size_t *count);
 
 /* The value in effect of the parameter `name` (a parameter of the model's
  * family, core/family.h, or ratio, zratio of a model defined by R: defaults
- * included, in the spec's units; nugget is 0 unless given) into
+ * included, in the spec's units; nugget is 0 unless given; of a sum or
+ * product, NAME.I: structure I's, see "Sums and products") into
  * *value.  Returns NL_OK, or NL_EINVAL when the model's family has no such
  * parameter (*value untouched).  Thread-safe (core/model_param.c). */
 int nl_model_param(const nl_model *m, const char *name, double *value);
 
-/* The nugget (0 for spectral models and when not given).  Thread-safe. */
+/* The nugget (0 for spectral models and when not given; of a sum, its
+ * terms' nuggets added).  Thread-safe. */
 double nl_model_nugget(const nl_model *m);
+
+/* The most structures of a sum or product. */
+#define NL_MODEL_MAX_STRUCTURES 64
+
+/* How many structures the model joins (1 for a model of one family). */
+size_t nl_model_structures(const nl_model *m);
+
+/* The i-th structure (from 0, left to right; m itself for a model of one
+ * family and i = 0), owned by m; NULL when i is out of range. */
+const nl_model *nl_model_structure(const nl_model *m, size_t i);
+
+/* The operator after the i-th structure: '+', '*', or 0 after the last. */
+char nl_model_operator(const nl_model *m, size_t i);
 
 #ifdef __cplusplus
 }

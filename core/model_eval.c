@@ -10,7 +10,10 @@ static double acf_continuous(const nl_model *m, int dim, const double *lag);
 /* The nugget is white noise: it adds to R at lag 0 exactly and nowhere else. */
 double nl_model_acf(const nl_model *m, int dim, const double *lag)
 {
-    double v = acf_continuous(m, dim, lag);
+    double v;
+    if (m->nterms)
+        return nl_model_composite_acf(m, dim, lag);
+    v = acf_continuous(m, dim, lag);
     if (m->nugget != 0) {
         int zero = 1;
         for (int a = 0; a < dim; a++)
@@ -71,12 +74,23 @@ double nl_model_variogram(const nl_model *m, int dim, const double *lag)
     return nl_model_acf(m, dim, zero) - nl_model_acf(m, dim, lag);
 }
 
-int nl_model_is_intrinsic(const nl_model *m) { return (m->fam->flags & NL_FAMILY_INTRINSIC) != 0; }
+/* A sum with an intrinsic term is intrinsic (products refuse them). */
+int nl_model_is_intrinsic(const nl_model *m)
+{
+    for (size_t i = 0; i < m->nterms; i++)
+        if (nl_model_is_intrinsic(m->terms[i]))
+            return 1;
+    return (m->fam->flags & NL_FAMILY_INTRINSIC) != 0;
+}
 
 int nl_model_check_stationary(const nl_model *m, const char *what)
 {
+    const nl_model *s = m;
     if (!nl_model_is_intrinsic(m))
         return NL_OK;
+    for (size_t i = 0; i < nl_model_structures(m); i++)
+        if (nl_model_is_intrinsic(nl_model_structure(m, i)))
+            s = nl_model_structure(m, i);
     return NL_ERROR(NL_EINVAL, "%s: %s needs a covariance; %s is intrinsic (no covariance): use synth intrinsic "
-                    "or ordinary kriging (krige)", m->spec, what, m->fam->name);
+                    "or ordinary kriging (krige)", m->spec, what, s->fam->name);
 }

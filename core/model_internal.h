@@ -22,7 +22,24 @@ struct nl_model {
     struct nl_expr *eval; /* the compiled expression (expr:, spectrum:; core/expr_internal.h) */
     double *table;       /* image: empirical ACF, wrapped lags, tw x th */
     size_t tw, th;       /* image: table size */
+    struct nl_model **terms; /* sum or product (fam: nl_family_sum, _product): its terms */
+    size_t nterms;           /* terms (0: one structure) */
 };
+
+/* The family descriptors of a sum and a product of structures
+ * (core/model_sum.c); not in the registry: specs never name them. */
+extern const nl_family nl_family_sum;
+extern const nl_family nl_family_product;
+
+/* Does spec hold '+' or '*' between structures (core/model.h, "Sums and
+ * products")?  NL_OK with *yes set, or NL_EINVAL for parentheses. */
+int nl_model_spec_is_composite(const char *spec, int *yes);
+
+/* Parse a sum or product of structures into a new model. */
+int nl_model_parse_composite(const char *spec, nl_model **out);
+
+/* R of a sum or product: the terms' R added or multiplied. */
+double nl_model_composite_acf(const nl_model *m, int dim, const double *lag);
 
 /* Is w (len bytes) one of the space-separated words of list? (core/family.c) */
 int nl_model_word_in(const char *list, const char *w, size_t len);

@@ -227,10 +227,14 @@ int nl_model_parse(const char *spec, nl_model **out)
     const nl_family_alias *peer = NULL;
     const char *colon, *rest;
     size_t nlen;
-    int st;
+    int st, composite;
     *out = NULL;
     if (!spec || !*spec)
         return NL_ERROR(NL_EINVAL, "model: expected a model spec such as markov:scale=8, got \"\"");
+    if ((st = nl_model_spec_is_composite(spec, &composite)))
+        return st;
+    if (composite)
+        return nl_model_parse_composite(spec, out);
     colon = strchr(spec, ':');
     nlen = colon ? (size_t)(colon - spec) : strlen(spec);
     rest = colon ? colon + 1 : "";
@@ -269,6 +273,9 @@ void nl_model_free(nl_model *m)
 {
     if (!m)
         return;
+    for (size_t i = 0; i < m->nterms; i++)
+        nl_model_free(m->terms[i]);
+    free(m->terms);
     nl_expr_free(m->eval);
     free(m->table);
     free(m->spec);
@@ -279,9 +286,24 @@ const char *nl_model_spec(const nl_model *m) { return m->spec; }
 
 int nl_model_is_spectral(const nl_model *m) { return (m->fam->flags & NL_FAMILY_SPECTRAL) != 0; }
 
-int nl_model_has_acf(const nl_model *m) { return m->fam->acf || m->fam->profile; }
+/* A sum or product has what every term has. */
+static int every_term(const nl_model *m, int (*has)(const nl_model *))
+{
+    for (size_t i = 0; i < m->nterms; i++)
+        if (!has(m->terms[i]))
+            return 0;
+    return 1;
+}
 
-int nl_model_is_reentrant(const nl_model *m) { return !(m->fam->flags & NL_FAMILY_EXPRESSION); }
+int nl_model_has_acf(const nl_model *m)
+{
+    return m->nterms ? every_term(m, nl_model_has_acf) : m->fam->acf || m->fam->profile;
+}
+
+int nl_model_is_reentrant(const nl_model *m)
+{
+    return m->nterms ? every_term(m, nl_model_is_reentrant) : !(m->fam->flags & NL_FAMILY_EXPRESSION);
+}
 
 int nl_model_check_dim(const nl_model *m, int dim)
 {

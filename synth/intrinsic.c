@@ -128,6 +128,9 @@ static int check_args(const nl_model *m, int dim, const size_t *n, const double 
     if (!nl_model_is_intrinsic(m))
         return NL_ERROR(NL_EINVAL, "synth intrinsic: %s has a covariance; expected an intrinsic model (powvar: "
                         "use circulant or fft for this one)", nl_model_spec(m));
+    if (!nl_model_intrinsic_structure(m))
+        return NL_ERROR(NL_EINVAL, "synth intrinsic: %s: expected powvar, or powvar plus nugget: structures (its "
+                        "other structures have covariances)", nl_model_spec(m));
     if (dim != 1 && dim != 2)
         return NL_ERROR(NL_EINVAL, "synth intrinsic: expected a 1D or 2D grid, got %dD", dim);
     if (dim == 2 && !nl_model_is_isotropic(m))
@@ -155,7 +158,8 @@ int nl_synth_intrinsic_plan_alloc(const nl_model *m, int dim, const size_t *n, c
     p->dim = dim;
     for (int a = 0; a < 3; a++)
         p->n[a] = a < dim ? n[a] : 1, p->h[a] = a < dim && h ? h[a] : 1;
-    nl_model_param(m, "alpha", &p->alpha), nl_model_param(m, "c", &p->c);
+    nl_model_param(nl_model_intrinsic_structure(m), "alpha", &p->alpha);
+    nl_model_param(nl_model_intrinsic_structure(m), "c", &p->c);
     p->nugget = nl_model_nugget(m);
     p->info.m[1] = 1, p->amp = 1;
     if (dim == 1) {

@@ -46,9 +46,12 @@ int nl_rank1_model_check(const nl_model *m, int s)
         return NL_ERROR(NL_EINVAL, "rank1: %s: a nugget is not represented by a rank-1 lattice (the Hankel "
                         "transform has no white-noise part); use %s", nl_model_spec(m), list);
     }
-    if (nl_model_family(m)->max_dim && s > nl_model_family(m)->max_dim)
-        return NL_ERROR(NL_EINVAL, "rank1: %s: the %s model is positive definite up to %dD only, got %dD",
-                        nl_model_spec(m), nl_model_family(m)->name, nl_model_family(m)->max_dim, s);
+    for (size_t i = 0; i < nl_model_structures(m); i++) {
+        const nl_family *f = nl_model_family(nl_model_structure(m, i));
+        if (f->max_dim && s > f->max_dim)
+            return NL_ERROR(NL_EINVAL, "rank1: %s: the %s model is positive definite up to %dD only, got %dD",
+                            nl_model_spec(m), f->name, f->max_dim, s);
+    }
     if (nl_model_is_spectral(m)) {
         if (s > 3)
             return NL_ERROR(NL_EINVAL, "%s: spectrum models reach 3 dimensions; in 4 give an isotropic --acf",

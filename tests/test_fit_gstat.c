@@ -125,3 +125,146 @@ Test(fit_gstat, wls_equals_fit_variogram)
         }
     }
 }
+
+/* R: the Meuse data of the sp package (x, y, log(zinc)) to meuse.tsv, then
+ * fit.variogram (fit.method 7, gstat's default) on gstat's default
+ * variogram, each fit repeated to its fixed point as in fit_script:
+ * Sph with a nugget from vgm(0.59, "Sph", 897, 0.05) (all free), and the
+ * nested Nug + Sph + Exp from vgm(0.4, "Sph", 900, 0.05, add.to =
+ * vgm(0.2, "Exp", 300)) with the ranges held (fit.ranges = FALSE: the
+ * data resolve no second range; fitted free, gstat's Exp range goes
+ * negative).  Prints Sph psill, range, Nug psill; then Sph psill, Nug
+ * psill, Exp psill. */
+static const char meuse_script[] =
+    "suppressMessages(library(gstat)); suppressMessages(library(sp))\ndata(meuse)\n"
+    "d <- data.frame(x = meuse$x, y = meuse$y, value = log(meuse$zinc))\n"
+    "write.table(format(d, digits = 17), 'meuse.tsv', sep = '\\t', quote = FALSE, row.names = FALSE)\n"
+    "v <- variogram(value ~ 1, locations = ~x + y, data = d)\n"
+    "fixed <- function(f, ...) {\n"
+    "  for (i in 1:200) {\n"
+    "    g <- suppressWarnings(fit.variogram(v, f, fit.method = 7, ...))\n"
+    "    ch <- max(abs(c(g$psill, g$range) / c(f$psill, f$range) - 1), na.rm = TRUE); f <- g\n"
+    "    if (ch < 1e-13) break\n"
+    "  }\n"
+    "  f\n"
+    "}\n"
+    "f <- fixed(vgm(0.59, 'Sph', 897, 0.05))\n"
+    "cat(sprintf('%.17g', c(f$psill[2], f$range[2], f$psill[1])), sep = '\\n')\n"
+    "f <- fixed(vgm(0.4, 'Sph', 900, 0.05, add.to = vgm(0.2, 'Exp', 300)), fit.ranges = FALSE)\n"
+    "cat(sprintf('%.17g', c(f$psill[f$model == 'Sph'], f$psill[f$model == 'Nug'], f$psill[f$model == 'Exp'])),\n"
+    "    sep = '\\n')\n";
+
+/* The value of a fitted parameter in fit's JSON. */
+static double fitted(json_t *j, const char *name)
+{
+    json_t *v = json_object_get(json_object_get(j, "parameters"), name);
+    cr_assert(v, "no parameter %s", name);
+    return json_real_value(v);
+}
+
+/* Nested fits equal gstat's fit.variogram with the same structures and
+ * weights (fit.method 7 = --weights distance) on the Meuse data: a
+ * spherical model with a nugget started from gstat's vgm values (the spec
+ * form of --model), and Sph + Exp + Nug with both ranges held (--fix
+ * scale.1, scale.2; gstat's fit.ranges = FALSE).  Tolerance as in
+ * wls_equals_fit_variogram: 1e-5 of the sill, 1e-5 relative for a range
+ * (measured: under 1e-7). */
+Test(fit_gstat, nested_equals_fit_variogram_meuse)
+{
+    if (!gstat_available("nested fit vs gstat on Meuse"))
+        return;
+    double r[6];
+    cr_assert_eq(gstat_run(meuse_script, r, 6), 6, "R failed (sp's meuse data?)");
+    json_t *j = run_noiselab_json("fit meuse.tsv --model spherical:var=0.59,scale=897,nugget=0.05 --weights distance "
+                                  "--json");
+    double var = fitted(j, "var"), scale = fitted(j, "scale"), nug = fitted(j, "nugget"), sill = r[0] + r[2];
+    cr_expect(json_is_true(json_object_get(j, "converged")));
+    cr_expect(fabs(var - r[0]) <= 1e-5 * sill, "var %.10g, gstat %.10g", var, r[0]);
+    cr_expect(fabs(scale - r[1]) <= 1e-5 * r[1], "scale %.10g, gstat %.10g", scale, r[1]);
+    cr_expect(fabs(nug - r[2]) <= 1e-5 * sill, "nugget %.10g, gstat %.10g", nug, r[2]);
+    fprintf(stderr, "meuse Sph+Nug vs gstat: |d var| %.2g, |d scale|/scale %.2g, |d nugget| %.2g (sill %.4g)\n",
+            fabs(var - r[0]), fabs(scale / r[1] - 1), fabs(nug - r[2]), sill);
+    json_decref(j);
+    /* the same as a sum with the nugget family, gstat's Nug row */
+    j = run_noiselab_json("fit meuse.tsv --model 'nugget:var=0.05 + spherical:var=0.59,scale=897' --weights distance "
+                          "--json");
+    nug = fitted(j, "var.1"), var = fitted(j, "var.2"), scale = fitted(j, "scale.2");
+    cr_expect(json_is_true(json_object_get(j, "converged")));
+    cr_expect(fabs(var - r[0]) <= 1e-5 * sill, "var.2 %.10g, gstat %.10g", var, r[0]);
+    cr_expect(fabs(scale - r[1]) <= 1e-5 * r[1], "scale.2 %.10g, gstat %.10g", scale, r[1]);
+    cr_expect(fabs(nug - r[2]) <= 1e-5 * sill, "var.1 (nugget) %.10g, gstat %.10g", nug, r[2]);
+    fprintf(stderr, "meuse Nug + Sph vs gstat: |d var| %.2g, |d scale|/scale %.2g, |d nugget| %.2g (sill %.4g)\n",
+            fabs(var - r[0]), fabs(scale / r[1] - 1), fabs(nug - r[2]), sill);
+    json_decref(j);
+    j = run_noiselab_json("fit meuse.tsv --model 'spherical:var=0.4,scale=900,nugget=0.05 + markov:var=0.2,scale=300' "
+                          "--fix scale.1=900 --fix scale.2=300 --weights distance --json");
+    double v1 = fitted(j, "var.1"), n1 = fitted(j, "nugget.1"), v2 = fitted(j, "var.2");
+    sill = r[3] + r[4] + r[5];
+    cr_expect(json_is_true(json_object_get(j, "converged")));
+    cr_expect(fabs(v1 - r[3]) <= 1e-5 * sill, "var.1 %.10g, gstat Sph %.10g", v1, r[3]);
+    cr_expect(fabs(n1 - r[4]) <= 1e-5 * sill, "nugget.1 %.10g, gstat Nug %.10g", n1, r[4]);
+    cr_expect(fabs(v2 - r[5]) <= 1e-5 * sill, "var.2 %.10g, gstat Exp %.10g", v2, r[5]);
+    fprintf(stderr, "meuse Sph+Exp+Nug (ranges held) vs gstat: |d Sph| %.2g, |d Nug| %.2g, |d Exp| %.2g (sill %.4g)\n",
+            fabs(v1 - r[3]), fabs(n1 - r[4]), fabs(v2 - r[5]), sill);
+    json_decref(j);
+    /* in gstat's own spelling (peer names and keys, core/family.h) */
+    j = run_noiselab_json("fit meuse.tsv --model 'Nug:psill=0.05 + Sph:psill=0.4,range=900 + Exp:psill=0.2,range=300' "
+                          "--fix scale.2=900 --fix scale.3=300 --weights distance --json");
+    n1 = fitted(j, "var.1"), v1 = fitted(j, "var.2"), v2 = fitted(j, "var.3");
+    cr_expect(fabs(v1 - r[3]) <= 1e-5 * sill, "var.2 %.10g, gstat Sph %.10g", v1, r[3]);
+    cr_expect(fabs(n1 - r[4]) <= 1e-5 * sill, "var.1 %.10g, gstat Nug %.10g", n1, r[4]);
+    cr_expect(fabs(v2 - r[5]) <= 1e-5 * sill, "var.3 %.10g, gstat Exp %.10g", v2, r[5]);
+    json_decref(j);
+}
+
+/* A nested fit with every parameter free equals gstat's: Sph + Exp + Nug
+ * on 1500 nearest-node samples of a circulant field of that model (short
+ * range 12, long 40: the 3-unit bins to 90 resolve both structures and
+ * the nugget; gstat finds the fit regular, attr "singular" FALSE).
+ * Tolerance as above. */
+Test(fit_gstat, nested_free_equals_fit_variogram)
+{
+    if (!gstat_available("free nested fit vs gstat"))
+        return;
+    static const char script[] =
+        "suppressMessages(library(gstat))\nd <- read.delim('nest.tsv', comment.char = '#')\n"
+        "v <- variogram(value ~ 1, locations = ~x + y, data = d, cutoff = 90, width = 3)\n"
+        "f <- vgm(0.5, 'Sph', 12, 0.1, add.to = vgm(0.6, 'Exp', 40))\n"
+        "for (i in 1:200) {\n"
+        "  g <- suppressWarnings(fit.variogram(v, f, fit.method = 7))\n"
+        "  ch <- max(abs(c(g$psill, g$range) / c(f$psill, f$range) - 1), na.rm = TRUE); f <- g\n"
+        "  if (ch < 1e-13) break\n"
+        "}\n"
+        "s <- f$model == 'Sph'; e <- f$model == 'Exp'\n"
+        "cat(sprintf('%.17g', c(f$psill[s], f$range[s], f$psill[f$model == 'Nug'], f$psill[e], f$range[e],\n"
+        "                      attr(f, 'singular'))), sep = '\\n')\n";
+    static const char *const names[5] = {"var.1", "scale.1", "nugget.1", "var.2", "scale.2"};
+    static const char *const named[5] = {"var.2", "scale.2", "var.1", "var.3", "scale.3"};
+    double r[6];
+    cr_assert_eq(run_noiselab("synth circulant --acf 'spherical:var=0.5,scale=12,nugget=0.1 + markov:var=0.6,scale=40' "
+                              "--size 256x256 --seed 7 -o nest.exr", NULL, 0, NULL, 0), 0);
+    cr_assert_eq(run_noiselab("sample nest.exr --random 1500 --seed 8 --interpolation nearest -o nest.tsv", NULL, 0,
+                              NULL, 0), 0);
+    cr_assert_eq(gstat_run(script, r, 6), 6, "R failed");
+    cr_assert_eq(r[5], 0, "gstat's fit is singular");
+    json_t *j = run_noiselab_json("fit nest.tsv --model 'spherical:var=0.5,scale=12,nugget=0.1 + markov:var=0.6,"
+                                  "scale=40' --weights distance --width 3 --cutoff 90 --json");
+    double sill = r[0] + r[2] + r[3];
+    cr_expect(json_is_true(json_object_get(j, "converged")));
+    for (int k = 0; k < 5; k++) {
+        double v = fitted(j, names[k]), tol = k == 1 || k == 4 ? 1e-5 * r[k] : 1e-5 * sill;
+        cr_expect(fabs(v - r[k]) <= tol, "%s %.10g, gstat %.10g", names[k], v, r[k]);
+        fprintf(stderr, "free nested Sph+Exp+Nug vs gstat: %s %.10g, gstat %.10g, |d| %.2g\n", names[k], v, r[k],
+                fabs(v - r[k]));
+    }
+    json_decref(j);
+    /* the nugget as a structure of its own: the same fit */
+    j = run_noiselab_json("fit nest.tsv --model 'nugget:var=0.1 + spherical:var=0.5,scale=12 + markov:var=0.6,"
+                          "scale=40' --weights distance --width 3 --cutoff 90 --json");
+    cr_expect(json_is_true(json_object_get(j, "converged")));
+    for (int k = 0; k < 5; k++) {
+        double v = fitted(j, named[k]), tol = k == 1 || k == 4 ? 1e-5 * r[k] : 1e-5 * sill;
+        cr_expect(fabs(v - r[k]) <= tol, "%s %.10g, gstat %.10g", named[k], v, r[k]);
+    }
+    json_decref(j);
+}

@@ -213,3 +213,26 @@ Test(krige_local, cv_overflowing_values_refused)
     cr_expect(isfinite(s.rmse) && isfinite(s.var_error) && isfinite(s.var_z), "%g %g %g", s.rmse, s.var_error, s.var_z);
     nl_krige_local_free(k), nl_model_free(mod);
 }
+
+/* A nested model: the sum of its structures' covariances, each with its
+ * own nugget and anisotropy, as gstat's vgm(..., add.to = ) with anis =
+ * c(90 - angle, ratio) (gstat's principal direction is clockwise from
+ * north, ours counterclockwise from x; both ratios are minor over major
+ * when below 1). */
+Test(krige_local, nested_equals_gstat)
+{
+    if (!gstat_available("krige with a nested model vs gstat"))
+        return;
+    nl_krige_local_options o = {.nmax = 0, .drift = NL_DRIFT_CONSTANT};
+    against_gstat("spherical:var=0.7,scale=0.5,nugget=0.05 + markov:var=0.3,scale=0.1", "value ~ 1",
+                  "vgm(0.7, 'Sph', 0.5, 0.05, add.to = vgm(0.3, 'Exp', 0.1))", &o, "ordinary, global, Nug+Sph+Exp");
+    o.nmax = 32;
+    against_gstat("spherical:var=0.7,scale=0.5,nugget=0.05,angle=30,ratio=0.4 + markov:var=0.3,scale=0.1", "value ~ 1",
+                  "vgm(0.7, 'Sph', 0.5, 0.05, anis = c(60, 0.4), add.to = vgm(0.3, 'Exp', 0.1))", &o,
+                  "ordinary, nmax 32, Nug+Sph(anisotropic)+Exp");
+    /* an intrinsic sum: white noise plus the power variogram (gstat's
+     * vgm(c, "Pow", alpha, nugget)) */
+    o.nmax = 0;
+    against_gstat("nugget:var=0.01 + powvar:alpha=1.5,c=0.1", "value ~ 1", "vgm(0.1, 'Pow', 1.5, 0.01)", &o,
+                  "ordinary, global, Nug+Pow");
+}

@@ -59,7 +59,36 @@ def page():
                 out.append("| `%s` | %s | %s | %s |" % (p["name"], p["role"], "required" if p["default"] is None
                                                         else num(p["default"]), valid(p)))
             out.append("")
-    return "\n".join(out)
+    return "\n".join(out + SUMS)
+
+
+# The catalogue's closing section: joining structures (core/model.h, "Sums
+# and products").
+SUMS = [
+    "## Sums and products of structures", "",
+    "A SPEC may join structures with `+` and `*`, `*` binding first, blanks optional and no",
+    "parentheses (write `A*B + A*C`): `nugget:var=0.05 + spherical:var=0.59,scale=897 + markov:var=0.2,scale=300`",
+    "(gstat's `vgm(0.59, \"Sph\", 897, 0.05, add.to = vgm(0.2, \"Exp\", 300))`; the peers' spellings",
+    "work too: `Nug:psill=0.05 + Sph:psill=0.59,range=897`).  Each structure is a spec of its own,",
+    "with its own parameters, nugget and anisotropy keys.  R of a sum is the sum",
+    "of the structures' R (R(0): every var and nugget), of a product their product; a nugget inside",
+    "a product is refused.  The spectrum of a sum is the sum of the closed forms (none where any",
+    "structure has none); a product has none.  Structures defined by their spectrum (`power`,",
+    "`spectrum:`) or read from a file (`image:`) are refused.  A sum with an intrinsic structure",
+    "(`powvar`) is intrinsic: ordinary kriging takes any such sum, `check` and `synth intrinsic`",
+    "take `powvar` plus `nugget` structures; a product refuses an intrinsic structure.", "",
+    "Splitting: a `+` in a named family's keys is a number's sign after `=` or in an exponent",
+    "(`var=+2`, `scale=1e+3`), else it separates structures.  An expression (`expr:`) runs to",
+    "its first `;` or to the end of the SPEC: write an expression last,",
+    "or end it with `;` (its keys may follow): `expr:0.5*exp(-t^2); + markov:scale=2`.  At most 64",
+    "structures.", "",
+    "Parameters of a sum are named `NAME.I`, I the structure from 1 left to right (`var.2`,",
+    "`scale.1`, `nugget.1`), as `noiselab fit` reports them and `--fix` takes them.  `fit --model`",
+    "takes a sum of families that it fits (above), without anisotropy keys: every structure's",
+    "parameters are fitted unless fixed, the values the SPEC gives are the starts, as gstat's",
+    "`fit.variogram` with `vgm` (docs/geostatistics.md).  Synthesis: fft, circulant and cholesky",
+    "take any valid sum; subdivision, sparse convolution and rank-1 lattices take sums without a",
+    "nugget (as for one structure); the lattice method needs closed-form spectra.", ""]
 
 
 if __name__ == "__main__":

@@ -467,8 +467,10 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
     squares on the empirical variogram (method="wls", weights cressie, pairs,
     reweighted or distance), or the Gaussian likelihood ("ml", "reml",
     started from the wls fit, with 95% profile-likelihood intervals).
-    model: a family whose entry in models() has fit=True; fix: {"nu": 1.5,
-    ...} parameters held.  Returns a dict: spec
+    model: a family whose entry in models() has fit=True, or a spec of
+    them with starting values or nested ("spherical:var=0.5,scale=12 +
+    markov:scale=40": every structure's parameters, named var.1, scale.2,
+    ...); fix: {"nu": 1.5, ...} parameters held.  Returns a dict: spec
     (ready for acf=), parameters, standard_errors, intervals (ml/reml:
     {name: (lower, upper)}), objective, aic, mean (ml/reml), n, converged,
     iterations, status ({name: "ok", "fixed", "at bound" or "not
