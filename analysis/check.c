@@ -417,7 +417,14 @@ static int check_model(const nl_model *m, int dim, nl_check *c)
     c->dim = dim;
     c->monotone_3d = 1;
     c->isotropic_bound_ok = 1;
-    if ((st = nl_model_check_dim(m, dim)))
+    if ((st = nl_model_check_dim(m, dim)) == NL_ENOTPD) {
+        /* known from the literature (the family's descriptor): a verdict */
+        c->why = NL_CHECK_KNOWN;
+        c->scale = c->variance = c->min_spectrum = c->min_spectrum_k = c->min_eigenvalue = NAN;
+        c->min_r = c->spectral_decay = c->density_decay = c->r2 = NAN;
+        return NL_OK;
+    }
+    if (st)
         return st;
     c->isotropic = dim > 1 && nl_model_is_isotropic(m);
     if (nl_model_is_spectral(m))

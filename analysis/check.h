@@ -112,8 +112,12 @@ typedef enum {
     NL_CHECK_LINE_RISES,      /* 3D isotropic: the line spectrum rises at f = why_k */
     NL_CHECK_EDGE,            /* compactly supported isotropic R whose edge singularity makes S
                                  negative at high |k| (analysis/check_edge.c) */
-    NL_CHECK_NEG_TAPERED      /* the spectrum of R times a Gaussian taper, >= 0 for every valid R,
+    NL_CHECK_NEG_TAPERED,     /* the spectrum of R times a Gaussian taper, >= 0 for every valid R,
                                  is negative at |k| = min_spectrum_k (core/taper.c) */
+    NL_CHECK_KNOWN            /* the family (or a structure's) is known not to be positive definite
+                                 in dim (nl_model_check_dim's NL_ENOTPD): nothing was measured, the
+                                 other fields are NAN or 0, and nl_errmsg() holds the reason until
+                                 the thread's next failing call */
 } nl_check_reason;
 
 typedef struct {
@@ -153,7 +157,8 @@ typedef struct {
  * eigenvalues or an integral of the spectrum did not converge), or the
  * codes of nl_wk_sample_spectrum and nl_wk_acf_to_spectrum (core/wk.h).
  * "Not positive definite" is a result (out->positive_definite = 0, the
- * reason in out->why), not an error.  Thread safety: as the model
+ * reason in out->why), not an error; so is a family known not to be in dim
+ * (NL_CHECK_KNOWN).  Thread safety: as the model
  * (core/model.h: expression models are not thread-safe); the FFTs it runs
  * plan FFTW, so not concurrently with other planning. */
 int nl_check_model(const nl_model *m, int dim, nl_check *out);

@@ -44,7 +44,7 @@ static const char help[] =
 
 static const char *why_key[] = {NULL, "negative-integral", "negative-spectrum", "isotropic-bound",
                                 "negative-eigenvalue", "line-spectrum-rises", "edge-asymptotics",
-                                "negative-tapered-spectrum"};
+                                "negative-tapered-spectrum", "known-not-positive-definite"};
 
 /* A JSON number, or null where it is undefined or unbounded. */
 static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
@@ -222,10 +222,15 @@ static void print_smooth(const nl_check *k)
         printf("  R''(0)                 not computed (the integral of S, R(0), is not positive)\n");
 }
 
-static void print_text(const char *spec, const nl_check *k, const char *nb)
+static void print_text(const char *spec, const nl_check *k, const char *nb, const char *known)
 {
     int d = k->dim;
     printf("%s in %dD: %s\n", spec, d, k->positive_definite ? "positive definite" : "NOT positive definite");
+    if (k->why == NL_CHECK_KNOWN) {
+        printf("  why                    %s\n", known);
+        print_why(k, nb);
+        return;
+    }
     print_why(k, nb);
     printf("  min spectrum / max     %.3g (the %dD density, %s to |k| = %.3g cycles per unit along each axis)\n",
            k->min_spectrum, d, k->spectral ? "scanned" : "sampled", k->spectrum_kmax);
@@ -294,7 +299,7 @@ int cli_cmd_check(int argc, char **argv)
     int st;
     nl_model *m;
     nl_check k;
-    char nb[4096];
+    char nb[4096], known[4096] = "";
     if (cli_opt_parse("check", help, rows, &a, argc, argv))
         return 0;
     cli_no_operands("check", argc, argv);
@@ -310,13 +315,16 @@ int cli_cmd_check(int argc, char **argv)
         nl_model_free(m);
         return 0;
     }
-    if (st || (st = nl_check_model(m, a.dim, &k)) ||
-        (st = nl_check_neighbours(m, &k, nb, sizeof nb)))
+    if (st || (st = nl_check_model(m, a.dim, &k)))
+        cli_die_status(st);
+    if (k.why == NL_CHECK_KNOWN) /* the reason, before another call replaces the message */
+        snprintf(known, sizeof known, "%s", nl_errmsg());
+    if ((st = nl_check_neighbours(m, &k, nb, sizeof nb)))
         cli_die_status(st);
     if (a.json)
         print_json(a.spec, &k, nb, a.prof ? m : NULL, a.rmax);
     else
-        print_text(a.spec, &k, nb);
+        print_text(a.spec, &k, nb, known);
     if (a.prof && !a.json)
         profile_1d(m, &k, a.rmax, NULL);
     nl_model_free(m);

@@ -209,6 +209,26 @@ static void progress(void *ctx, int meth, size_t done, size_t total)
     cli_progress("validate", (meth + (double)done / (double)total) / nl_validate_method_count());
 }
 
+/* A family known not to be positive definite in the dimension: the
+ * verdict, nothing to run (exit status 4, as for any model check finds not
+ * positive definite), no report. */
+static int known_not_pd(cli_validate *v)
+{
+    char why[4096];
+    snprintf(why, sizeof why, "%s", nl_errmsg());
+    if (v->json)
+        cli_json_print(json_pack("{s:s,s:i,s:b,s:s,s:s,s:i}", "model", nl_model_spec(v->m), "dim", v->dim,
+                                 "positive_definite", 0, "why", "known-not-positive-definite", "reason", why,
+                                 "exit_status", 4));
+    else
+        printf("%s %dD: NOT positive definite (%s); no method runs%s\n", nl_model_spec(v->m), v->dim, why,
+               v->dir ? ", no report written" : "");
+    nl_model_free(v->m);
+    if (fflush(stdout) || ferror(stdout))
+        cli_die(1, "standard output: write failed");
+    return 4;
+}
+
 int cli_cmd_validate(int argc, char **argv)
 {
     static cli_validate v;
@@ -219,6 +239,8 @@ int cli_cmd_validate(int argc, char **argv)
     if ((st = nl_model_check_stationary(v.m, "validate (an ensemble ACF against R)")) ||
         (st = nl_check_model(v.m, v.dim, &v.k)))
         cli_die_status(st);
+    if (v.k.why == NL_CHECK_KNOWN)
+        return known_not_pd(&v);
     check_grid_lags(&v);
     n[0] = n[1] = n[2] = v.N;
     v.o.realizations = v.M, v.o.progress = progress;

@@ -181,7 +181,7 @@ def hist(field, bins=50):
 
 
 _WHY = ("valid", "negative-integral", "negative-spectrum", "isotropic-bound", "negative-eigenvalue",
-        "line-spectrum-rises", "edge-asymptotics", "negative-tapered-spectrum")
+        "line-spectrum-rises", "edge-asymptotics", "negative-tapered-spectrum", "known-not-positive-definite")
 
 
 def _model_arg(acf, spectrum):
