@@ -392,23 +392,6 @@ static void bound_check(const nl_model *m, int dim, nl_check *c)
     c->isotropic_bound_ok = !c->isotropic || c->min_r >= nl_check_isotropic_bound(dim) - 1e-12;
 }
 
-/* A power-law tail R ~ -c r^-b (c > 0) with b <= d: int R over R^d
- * diverges to -infinity, so S -> -infinity at k -> 0 (Bochner).  The tail
- * is R at 64 lags from 1e2 L0 to 1e5 L0 (at most 2^20), of one sign, with
- * log |R| linear in log r to 0.05 in the exponent over each half. */
-static int negative_power_tail(const nl_model *m, int dim, double L0)
-{
-    double hi = fmin(1e5 * L0, 1048576), lo = hi / 1e3, b[2];
-    for (int half = 0; half < 2; half++) {
-        double t0 = lo * pow(1e3, half / 2.0), t1 = t0 * sqrt(1e3), r0 = acf_x(m, dim, t0), r1 = acf_x(m, dim, t1);
-        for (int j = 0; j <= 32; j++)
-            if (!(acf_x(m, dim, t0 * pow(t1 / t0, j / 32.0)) < 0))
-                return 0;
-        b[half] = log(r0 / r1) / log(t1 / t0);
-    }
-    return fabs(b[0] - b[1]) < 0.05 && b[1] <= dim;
-}
-
 static int check_model(const nl_model *m, int dim, nl_check *c)
 {
     int st, slow, edge, tapered = 0;
@@ -441,11 +424,11 @@ static int check_model(const nl_model *m, int dim, nl_check *c)
     if ((st = spectrum_checks(m, dim, slow, L0, L8, c, &tapered)) ||
         (st = profile_decay(m, dim, slow ? c->scale * 8 / 12 : INFINITY, c)) || (st = eigen_check(m, dim, c)))
         return st;
-    if (slow && negative_power_tail(m, dim, L0))
+    if (slow && nl_model_negative_tail(m, dim, L0))
         c->min_spectrum = -1, c->min_spectrum_k = 0, tapered = 0;
     /* exemplars interpolate a table: no asymptotics to read */
     edge = !slow && (dim == 1 || c->isotropic) && nl_model_family(m) != &nl_family_image &&
-           nl_check_edge(m, dim, c->scale);
+           nl_model_edge_invalid(m, dim, c->scale);
     bound_check(m, dim, c);
     smoothness(m, dim, c);
     c->singular_checked = 1;

@@ -42,7 +42,7 @@
  *     integrable singularity ~ k^(b-d) of S at 0 that the taper smooths;
  *   - compactly supported isotropic R: the asymptotics of S at high |k|
  *     from R's exponents at the origin and at the edge of its support
- *     (analysis/check_edge.c, NL_CHECK_EDGE: Askey's (1-r)_+^nu below
+ *     (core/model_edge.c, NL_CHECK_EDGE: Askey's (1-r)_+^nu below
  *     nu = (d+1)/2, whose negative lobes lie far beyond any sampling).
  * Smoothness: the line spectrum of the profile R(t) along x (times the
  * taper when slow) falls as f^-b between 16/L and 128/L; the order m of
@@ -111,7 +111,7 @@ typedef enum {
     NL_CHECK_NEG_EIGENVALUE,  /* the grid's covariance matrix has a negative eigenvalue */
     NL_CHECK_LINE_RISES,      /* 3D isotropic: the line spectrum rises at f = why_k */
     NL_CHECK_EDGE,            /* compactly supported isotropic R whose edge singularity makes S
-                                 negative at high |k| (analysis/check_edge.c) */
+                                 negative at high |k| (core/model_edge.c) */
     NL_CHECK_NEG_TAPERED,     /* the spectrum of R times a Gaussian taper, >= 0 for every valid R,
                                  is negative at |k| = min_spectrum_k (core/taper.c) */
     NL_CHECK_KNOWN            /* the family (or a structure's) is known not to be positive definite

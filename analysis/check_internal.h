@@ -29,12 +29,6 @@ int nl_check_grid_spectrum(const nl_model *m, int dim, double h, nl_field **out)
 /* |k| (cycles per unit) of the wrapped index i of such a grid. */
 double nl_check_grid_k(const nl_field *S, size_t i);
 
-/* 1 when R, isotropic in dim and supported within [0, L], has a spectrum
- * that turns negative at high frequencies by the asymptotics of R at the
- * origin and at the edge of its support (check_edge.c); 0 otherwise
- * (not compactly supported, a nugget, exponents not measured, or no
- * verdict). */
-int nl_check_edge(const nl_model *m, int dim, double L);
 
 /* The first failed test, from the fields of c (positive_definite is set
  * from it). */

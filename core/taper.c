@@ -154,3 +154,45 @@ int nl_taper_spectrum(const nl_model *m, int dim, double L0, int coarse, nl_tape
     out->rounding = 1e-11 * abs_sum;
     return NL_OK;
 }
+
+/* The registry's test (taper_internal.h): subdivision's local matrices
+ * and its coarse level are positive definite for models that are not
+ * (Bohman's in 2D: its spectrum dips below 0 only near 1.6 cycles per
+ * unit of its range, beyond the coarse grid's band), a periodic FFT grid
+ * sums a negative integral's tail away, and no grid reaches the lobes of
+ * an edge singularity.  The tapered spectrum on the coarse lattice (4096
+ * points in 1D, 256^2 in 2D, 32^3 in 3D), then 8 and 64 times coarser for
+ * a taper wide enough to see R's tail, and the edge asymptotics; a few
+ * milliseconds in 1D and 2D. */
+int nl_model_sign_check(const nl_model *m, int dim)
+{
+    nl_taper_result t;
+    double L0;
+    int st;
+    /* exemplars interpolate a table between lags: not exact in sign */
+    if (!nl_model_has_acf(m) || nl_model_is_spectral(m) || nl_model_is_intrinsic(m) ||
+        nl_model_family(m) == &nl_family_image || (dim > 1 && !nl_model_is_isotropic(m)))
+        return NL_OK;
+    if (!((L0 = nl_taper_scale(m, dim)) > 0))
+        return NL_OK; /* flat over 2^20 lags: a constant, valid */
+    for (int j = 0; j < 3; j++) {
+        if ((st = nl_taper_spectrum(m, dim, L0 * pow(8, j), 1, &t)))
+            return st;
+        if (t.min < -t.rounding)
+            return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: the %dD spectrum of R times a Gaussian "
+                            "taper of width %.3g (positive for every valid R) is %.3g times its largest value at "
+                            "|k| = %.3g cycles per unit (noiselab check says why; --clamp to synthesise anyway)",
+                            nl_model_spec(m), dim, dim, t.taper, t.min / t.max, t.min_k);
+    }
+    if (nl_model_negative_tail(m, dim, L0))
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: R ~ -c r^-b with b <= %d far out, so the "
+                        "integral of R over the %dD space is -infinity (noiselab check says why; --clamp to "
+                        "synthesise anyway)", nl_model_spec(m), dim, dim, dim);
+    if (nl_model_edge_invalid(m, dim, 64 * L0))
+        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: R vanishes beyond a lag with an edge "
+                        "singularity that its behaviour at lag 0 does not outweigh, so its %dD spectrum is negative "
+                        "at high |k| (noiselab check says why; --clamp to synthesise anyway)",
+                        nl_model_spec(m), dim, dim);
+    return NL_OK;
+}
+

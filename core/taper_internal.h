@@ -33,4 +33,26 @@ void nl_taper_grid(int dim, double L0, int coarse, size_t *n, double *h, double 
  * (plans FFTW). */
 int nl_taper_spectrum(const nl_model *m, int dim, double L0, int coarse, nl_taper_result *out);
 
+/* Compactly supported isotropic R (support within [0, L], 0 on [L, 5 L])
+ * whose edge singularity outweighs its behaviour at lag 0, so that its
+ * spectrum takes negative values at high |k| beyond any sampling
+ * (core/model_edge.c: Askey's (1-r)_+^nu below nu = (d+1)/2): 1, else 0. */
+int nl_model_edge_invalid(const nl_model *m, int dim, double L);
+
+/* A power-law tail R ~ -c r^-b (c > 0) with b <= d, read from 1e2 L0 to
+ * 1e5 L0 (core/model_edge.c): the integral of R over R^d is -infinity, so
+ * S(0) is; 1, else 0. */
+int nl_model_negative_tail(const nl_model *m, int dim, double L0);
+
+/* The test every synthesis method runs before planning (the registry,
+ * synth/method_plan.c; --clamp skips it): for a model defined by R and
+ * isotropic in dim (any in 1D; not an exemplar), the tapered spectrum at
+ * R's near-origin scale and 8 and 64 times coarser, a negative power-law
+ * tail, and the edge asymptotics of a compactly supported R.  NL_OK, or NL_ENOTPD with a
+ * message beginning "what: spec: not positive definite in dD" (a model
+ * `noiselab check` finds invalid by these tests), or the codes of
+ * nl_taper_spectrum.  Exact in sign: never refuses a positive definite
+ * model.  Not thread-safe (plans FFTW). */
+int nl_model_sign_check(const nl_model *m, int dim);
+
 #endif

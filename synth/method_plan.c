@@ -1,6 +1,7 @@
 /* Planning, executing and describing through a method's descriptor
  * (synth/method.h). */
 #include "method_internal.h"
+#include "../core/taper_internal.h"
 #include "../core/field_stats.h"
 #include "../core/nl_error.h"
 
@@ -46,7 +47,17 @@ int nl_method_plan_alloc(const nl_method_type *t, const nl_model *m, const nl_me
         if ((st = nl_model_check_stationary(m, what)))
             return st;
     }
-    return t->plan(m, g, o, out);
+    if ((st = t->plan(m, g, o, out)))
+        return st;
+    /* a model that check finds invalid, refused by every method alike: after
+     * the method's own plan, whose refusals say more where they apply (a
+     * lag where R is not finite, an embedding that fails) */
+    if (m && !(o->flags & NL_METHOD_OPT_CLAMP) && !(t->caps & NL_METHOD_INTRINSIC) &&
+        (st = nl_model_sign_check(m, g->dim))) {
+        nl_method_plan_free(*out);
+        *out = NULL;
+    }
+    return st;
 }
 
 int nl_method_execute(nl_method_plan *p, uint64_t seed, nl_field *f) { return p->type->execute(p, seed, f); }

@@ -86,42 +86,6 @@ static int check_periodic_size(int dim, const size_t *n, int L)
     return NL_OK;
 }
 
-/* A model that is not positive definite in dim, refused as the FFT,
- * circulant and Cholesky methods refuse it: subdivision's local matrices
- * and its coarse level at spacing s_0 are positive definite for models
- * that are not (Bohman's in 2D: its spectrum dips below 0 only near 1.6
- * cycles per unit of its range, beyond the coarse grid's band).  The test
- * is the spectrum of R under a Gaussian taper on a lattice at R's own
- * scale (core/taper.c, the coarse lattice: 4096 points in 1D, 256^2 in
- * 2D, spacing L0 / 16 (1D) or L0 / 8 (2D), then 8 and 64 times coarser
- * for a taper wide enough to see R's tail), exact in sign: it never
- * refuses a positive definite model, whatever the field's size.  Models defined by R, isotropic in dim (any in 1D);
- * --clamp accepts. */
-static int check_model_sign(const nl_model *m, int dim, int allow)
-{
-    nl_taper_result t;
-    double L0;
-    int st;
-    /* exemplars interpolate a table between lags: not exact in sign */
-    if (allow || !nl_model_has_acf(m) || nl_model_is_spectral(m) || nl_model_family(m) == &nl_family_image ||
-        (dim > 1 && !nl_model_is_isotropic(m)))
-        return NL_OK;
-    if (!((L0 = nl_taper_scale(m, dim)) > 0))
-        return NL_OK; /* flat over 2^20 lags: a constant, valid */
-    for (int j = 0; j < 3; j++) {
-        if ((st = nl_taper_spectrum(m, dim, L0 * pow(8, j), 1, &t)))
-            return st;
-        if (t.min < -t.rounding)
-            break;
-    }
-    if (t.min < -t.rounding)
-        return NL_ERROR(NL_ENOTPD, "%s: not positive definite in %dD: the %dD spectrum of R times a Gaussian taper "
-                        "of width %.3g (positive for every valid R) is %.3g times its largest value at |k| = %.3g "
-                        "cycles per unit (noiselab check says why; --clamp to synthesise anyway)",
-                        nl_model_spec(m), dim, dim, t.taper, t.min / t.max, t.min_k);
-    return NL_OK;
-}
-
 static int plan_periodic(nl_subdiv_plan *p)
 {
     const nl_subdiv_coeffs *c = p->c;
@@ -204,10 +168,6 @@ int nl_subdiv_plan_alloc(const nl_model *m, int dim, const size_t *n, double h, 
     /* the coefficients first: they name a lag where R is not finite */
     if ((st = coeffs_for(m, dim, L, h, o, &c)))
         return st;
-    if ((st = check_model_sign(m, dim, o->allow_not_pd))) {
-        nl_subdiv_coeffs_free(c);
-        return st;
-    }
     if (!(p = plan_new(c, 1, m, dim, n)))
         return NL_ERROR(NL_ENOMEM, "out of memory");
     p->allow_not_pd = o->allow_not_pd;

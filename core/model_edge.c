@@ -20,7 +20,7 @@
  * at h = a/100 and a/200; nu: the log-log slope of R(a - s) over s = a 1e-4
  * .. a 1e-3.  Both must agree to 0.02 across the two scales used, and the
  * verdict takes 0.05 of margin. */
-#include "check_internal.h"
+#include "taper_internal.h"
 
 #include <math.h>
 
@@ -60,7 +60,7 @@ static double edge_exponent(const nl_model *m, int dim, double a, double s)
     return log(fabs(acf(m, dim, a - 10 * s) / acf(m, dim, a - s))) / M_LN10;
 }
 
-int nl_check_edge(const nl_model *m, int dim, double L)
+int nl_model_edge_invalid(const nl_model *m, int dim, double L)
 {
     double nugget = 0, a, al1, al2, nu1, nu2;
     nl_model_param(m, "nugget", &nugget);
@@ -71,4 +71,21 @@ int nl_check_edge(const nl_model *m, int dim, double L)
     if (!(fabs(al1 - al2) < 0.02 && fabs(nu1 - nu2) < 0.02))
         return 0;
     return nu2 + (dim + 1) / 2.0 < dim + fmin(al2, 6) - 0.05;
+}
+
+/* A power-law tail R ~ -c r^-b (c > 0) with b <= d: int R over R^d
+ * diverges to -infinity, so S -> -infinity at k -> 0 (Bochner).  The tail
+ * is R at 64 lags from 1e2 L0 to 1e5 L0 (at most 2^20), of one sign, with
+ * log |R| linear in log r to 0.05 in the exponent over each half. */
+int nl_model_negative_tail(const nl_model *m, int dim, double L0)
+{
+    double hi = fmin(1e5 * L0, 1048576), lo = hi / 1e3, b[2];
+    for (int half = 0; half < 2; half++) {
+        double t0 = lo * pow(1e3, half / 2.0), t1 = t0 * sqrt(1e3), r0 = acf(m, dim, t0), r1 = acf(m, dim, t1);
+        for (int j = 0; j <= 32; j++)
+            if (!(acf(m, dim, t0 * pow(t1 / t0, j / 32.0)) < 0))
+                return 0;
+        b[half] = log(r0 / r1) / log(t1 / t0);
+    }
+    return fabs(b[0] - b[1]) < 0.05 && b[1] <= dim;
 }
