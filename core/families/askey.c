@@ -44,20 +44,11 @@ static const nl_family_param gstools_params[] = {
     {.name = "nu", .def = 2, .range = NL_RANGE_POSITIVE},
 };
 
-/* q: variance, length, nugget, exponent */
-static void from_peer(const double *q, double *p)
-{
-    p[NU] = q[3];
-    p[1] = q[1];
-    p[2] = q[0];
-    p[3] = q[2];
-}
-
 static const nl_family_alias peers[] = {
     {.name = "RMaskey", .peer = "RandomFields", .formula = "var (1 - h/scale)^alpha for h < scale", .nparams = 4,
-     .params = rf_params, .convert = from_peer},
+     .params = rf_params, .convert = nl_peer_shape_first},
     {.name = "TPLSimple", .peer = "GSTools", .formula = "var (1 - h/len_scale)^nu for h < len_scale", .nparams = 4,
-     .params = gstools_params, .convert = from_peer},
+     .params = gstools_params, .convert = nl_peer_shape_first},
 };
 
 const nl_family nl_family_askey = {

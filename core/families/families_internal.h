@@ -35,6 +35,10 @@
         p[2] = q[2];                                                                                                 \
     }
 
+/* A peer alias with keys (variance, length, nugget, shape) of a family
+ * whose params[] begin shape, scale, var, nugget, the length its scale. */
+void nl_peer_shape_first(const double *q, double *p);
+
 /* gstat's and GSTools' keys for a family of one length: psill range
  * nugget, var len_scale nugget. */
 extern const nl_family_param nl_peer_gstat_params[3];
@@ -107,5 +111,10 @@ double nl_tpl_cor(double h, double alpha, double lo, double hi, double r);
  * index `scale`, NL_EINVAL with a message otherwise (tplstable.c; a
  * family's check runs before m->scale is set). */
 int nl_tpl_check(const nl_model *m, int scale, int lower);
+
+/* GSTools' TPLGaussian and TPLExponential (var, len_scale, nugget, hurst,
+ * len_low) into params[] hurst, scale, lower, var, nugget: our scale is
+ * its upper cut-off len_low + len_scale. */
+void nl_tpl_from_gstools(const double *q, double *p);
 
 #endif

@@ -93,18 +93,10 @@ static const nl_family_param gstools_params[] = {
     {.name = "dim", .def = 3, .range = NL_RANGE_POSITIVE},
 };
 
-static void from_gstools(const double *q, double *p)
-{
-    p[D] = q[3];
-    p[1] = q[1];
-    p[2] = q[0];
-    p[3] = q[2];
-}
-
 static const nl_family_alias peers[] = {
     {.name = "HyperSpherical", .peer = "GSTools",
      .formula = "var (1 - x 2F1(1/2, -(dim-1)/2; 3/2; x^2) / 2F1(1/2, -(dim-1)/2; 3/2; 1)), x = h/len_scale < 1",
-     .nparams = 4, .params = gstools_params, .convert = from_gstools},
+     .nparams = 4, .params = gstools_params, .convert = nl_peer_shape_first},
 };
 
 const nl_family nl_family_hyperspherical = {

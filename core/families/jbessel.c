@@ -120,17 +120,9 @@ static const nl_family_param gstools_params[] = {
     {.name = "nu", .def = 1.5, .range = NL_RANGE_ANY},
 };
 
-static void from_gstools(const double *q, double *p)
-{
-    p[NU] = q[3];
-    p[1] = q[1];
-    p[2] = q[0];
-    p[3] = q[2];
-}
-
 static const nl_family_alias peers[] = {
     {.name = "JBessel", .peer = "GSTools", .formula = "var Gamma(nu+1) J_nu(x) / (x/2)^nu, x = h/len_scale",
-     .nparams = 4, .params = gstools_params, .convert = from_gstools},
+     .nparams = 4, .params = gstools_params, .convert = nl_peer_shape_first},
 };
 
 const nl_family nl_family_jbessel = {

@@ -13,8 +13,6 @@ static const nl_family_param params[] = {
 
 static double profile(const nl_model *m, double t) { return m->var * exp(-pow(nl_family_a(m, t), m->p[ALPHA])); }
 
-enum { P_SCALE = 1, P_VAR, P_NUGGET };
-
 /* gstat's Exc: vgm(psill, "Exc", range, nugget, kappa), kappa 0.5 by default */
 static const nl_family_param gstat_params[] = {
     NL_PEER_PSILL, NL_PEER_RANGE, NL_PARAM_NUGGET,
@@ -27,19 +25,11 @@ static const nl_family_param gstools_params[] = {
     {.name = "alpha", .def = 1.5, .range = NL_RANGE_UPTO, .hi = 2, .why = "above 2 the ACF is not positive definite"},
 };
 
-static void shape_length(const double *q, double *p)
-{
-    p[ALPHA] = q[3];
-    p[P_SCALE] = q[1];
-    p[P_VAR] = q[0];
-    p[P_NUGGET] = q[2];
-}
-
 static const nl_family_alias peers[] = {
     {.name = "Exc", .peer = "gstat", .formula = "psill exp(-(h/range)^kappa)", .nparams = 4, .params = gstat_params,
-     .convert = shape_length},
+     .convert = nl_peer_shape_first},
     {.name = "Stable", .peer = "GSTools", .formula = "var exp(-(h/len_scale)^alpha)", .nparams = 4,
-     .params = gstools_params, .convert = shape_length},
+     .params = gstools_params, .convert = nl_peer_shape_first},
 };
 
 const nl_family nl_family_markaussian = {

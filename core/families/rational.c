@@ -32,17 +32,9 @@ static const nl_family_param gstools_params[] = {
     {.name = "alpha", .def = 1, .range = NL_RANGE_POSITIVE},
 };
 
-static void from_gstools(const double *q, double *p)
-{
-    p[ALPHA] = q[3];
-    p[1] = q[1];
-    p[2] = q[0];
-    p[3] = q[2];
-}
-
 static const nl_family_alias peers[] = {
     {.name = "Rational", .peer = "GSTools", .formula = "var (1 + (h/len_scale)^2 / alpha)^-alpha", .nparams = 4,
-     .params = gstools_params, .convert = from_gstools},
+     .params = gstools_params, .convert = nl_peer_shape_first},
 };
 
 const nl_family nl_family_rational = {

@@ -46,18 +46,10 @@ static const nl_family_param gstools_params[] = {
     {.name = "nu", .def = 1, .range = NL_RANGE_NONNEG},
 };
 
-static void from_gstools(const double *q, double *p)
-{
-    p[KAPPA] = q[3];
-    p[1] = q[1];
-    p[2] = q[0];
-    p[3] = q[2];
-}
-
 static const nl_family_alias peers[] = {
     {.name = "SuperSpherical", .peer = "GSTools",
      .formula = "var (1 - x 2F1(1/2, -nu; 3/2; x^2) / 2F1(1/2, -nu; 3/2; 1)), x = h/len_scale < 1", .nparams = 4,
-     .params = gstools_params, .convert = from_gstools},
+     .params = gstools_params, .convert = nl_peer_shape_first},
 };
 
 const nl_family nl_family_superspherical = {

@@ -26,19 +26,10 @@ static const nl_family_param gstools_params[] = {
     {.name = "len_low", .def = 0, .range = NL_RANGE_NONNEG},
 };
 
-static void from_gstools(const double *q, double *p)
-{
-    p[HURST] = q[3];
-    p[SCALE] = q[4] + q[1];
-    p[LOWER] = q[4];
-    p[3] = q[0];
-    p[4] = q[2];
-}
-
 static const nl_family_alias peers[] = {
     {.name = "TPLGaussian", .peer = "GSTools",
      .formula = "var b E_(1+b)((h/len_up)^2), b = hurst, len_up = len_low + len_scale (len_low = 0)",
-     .nparams = 5, .params = gstools_params, .convert = from_gstools},
+     .nparams = 5, .params = gstools_params, .convert = nl_tpl_from_gstools},
 };
 
 const nl_family nl_family_tplgaussian = {

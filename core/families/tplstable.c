@@ -71,6 +71,15 @@ double nl_tpl_cor(double h, double alpha, double lo, double hi, double r)
     return (wu * up - wl * tpl_mode_sum(b, pow(r / lo, alpha))) / (wu - wl);
 }
 
+void nl_tpl_from_gstools(const double *q, double *p)
+{
+    p[0] = q[3];
+    p[1] = q[4] + q[1];
+    p[2] = q[4];
+    p[3] = q[0];
+    p[4] = q[2];
+}
+
 int nl_tpl_check(const nl_model *m, int scale, int lower)
 {
     if (!(m->p[lower] < m->p[scale]))
