@@ -124,6 +124,18 @@ void cli_progress_abandon(void);
 const char *cli_out_begin(const char *path);
 void cli_out_commit(const char *path);
 
+/* Another process's temporary `tmp` (from its cli_out_begin) that this
+ * process writes too (a collective HDF5 create may make the file anew after
+ * its owner removed it): removed by this process on a failure or a fatal
+ * signal, forgotten by cli_out_finish(1); never renamed here. */
+void cli_out_share(const char *tmp);
+
+/* From now on, each temporary made by cli_out_begin is also watched by a
+ * process of its own that removes it once this process has ended without
+ * renaming it, however it ended: an MPI library that ends its process with
+ * _exit when its launcher dies runs no handler. */
+void cli_out_guard(void);
+
 /* A folder of outputs named by option `opt` (e.g. a report), whose files
  * are written through cli_out_begin like any output (temporaries renamed
  * together at the end).  A missing folder is created, and removed on

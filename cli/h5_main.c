@@ -123,6 +123,7 @@ int main(int argc, char **argv)
         nl_fftw_flags(0); /* FFTW's threads first, then its MPI part */
         fftw_mpi_init();
         hooks.launched = 1;
+        cli_out_guard();
         MPI_Comm_size(MPI_COMM_WORLD, &hooks.size);
         MPI_Comm_rank(MPI_COMM_WORLD, &hooks.rank);
         atexit(finish);

@@ -96,6 +96,8 @@ static const char *begin_output(const char *out, int rank)
     MPI_Bcast(tmp, PATH_MAX, MPI_CHAR, 0, MPI_COMM_WORLD);
     if ((st = nl_mpi_same_file(MPI_COMM_WORLD, tmp, 0)))
         cli_die(nl_error_is_input(st) ? 2 : 1, "-o: \"%s\": its temporary %s", out, nl_errmsg());
+    if (rank != 0) /* its create can remake the file rank 0's signal handler removed */
+        cli_out_share(tmp);
     return tmp;
 }
 

@@ -28,8 +28,10 @@
 /* An entry: a file's temporary (PENDING until committed, READY after), a
  * folder this run made (DIR_NEW: removed on failure once the temporaries in
  * it are gone, if nothing else is there), a scratch folder (TMP_DIR: emptied
- * and removed at the end whatever happens); DONE once renamed. */
-enum { FREE, PENDING, READY, DONE, DIR_NEW, TMP_DIR };
+ * and removed at the end whatever happens), another process's temporary
+ * that this one also writes (SHARED: removed on failure, forgotten on
+ * success); DONE once renamed. */
+enum { FREE, PENDING, READY, DONE, DIR_NEW, TMP_DIR, SHARED };
 enum { CHUNK = 16 };
 
 typedef struct {
@@ -46,6 +48,7 @@ typedef struct chunk {
 } chunk;
 
 static chunk first;
+static int guarded;                   /* cli_out_guard: a watcher for each temporary */
 static size_t used;                   /* entries handed out in this run (main thread only) */
 static _Atomic int committing, caught; /* renaming now; the signal that came meanwhile */
 static int cmd_argc;
@@ -105,7 +108,7 @@ static void remove_all(void)
                 int s = atomic_load(&e->state);
                 if ((s == DIR_NEW) != pass || atomic_exchange(&e->state, FREE) != s)
                     continue;
-                if (s == PENDING || s == READY)
+                if (s == PENDING || s == READY || s == SHARED)
                     unlink(e->tmp);
                 else if (s == TMP_DIR)
                     purge_dir(e);
@@ -242,6 +245,40 @@ static void check_twice(const char *path, const entry *e)
     }
 }
 
+void cli_out_guard(void) { guarded = 1; }
+
+/* A watcher process that removes tmp once this process has ended, however
+ * it ended: it waits for the end of a pipe only this process holds (close
+ * on exec), in a session of its own with the usual fatal signals ignored,
+ * and calls only async-signal-safe functions.  After a rename or the
+ * handlers' own removal the name is gone and the unlink does nothing. */
+static void watch(const char *tmp)
+{
+    int fd[2], nul;
+    char c;
+    pid_t pid;
+    if (pipe2(fd, O_CLOEXEC))
+        return;
+    if ((pid = fork()) != 0) {
+        close(fd[0]);
+        if (pid < 0)
+            close(fd[1]);
+        return;
+    }
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGUSR1, SIGUSR2, SIGALRM};
+    for (size_t i = 0; i < sizeof sigs / sizeof *sigs; i++)
+        signal(sigs[i], SIG_IGN);
+    setsid();
+    if ((nul = open("/dev/null", O_RDWR)) >= 0) /* the launcher's pipes are not kept open */
+        dup2(nul, 0), dup2(nul, 1), dup2(nul, 2);
+    if (dup2(fd[0], 3) == 3)
+        syscall(SYS_close_range, 4u, ~0u, 0u);
+    while (read(3, &c, 1) < 0 && errno == EINTR)
+        ;
+    unlink(tmp);
+    _exit(0);
+}
+
 const char *cli_out_begin(const char *path)
 {
     char ob[64];
@@ -269,7 +306,17 @@ const char *cli_out_begin(const char *path)
         cli_die(2, "%s: cannot write \"%s\": %s", option_of(path, ob, sizeof ob), path, strerror(err));
     }
     close(fd);
+    if (guarded)
+        watch(e->tmp);
     return e->tmp;
+}
+
+void cli_out_share(const char *tmp)
+{
+    entry *e = at(used++);
+    e->final[0] = 0;
+    snprintf(e->tmp, PATH_MAX, "%s", tmp);
+    atomic_store(&e->state, SHARED);
 }
 
 void cli_out_commit(const char *path)
