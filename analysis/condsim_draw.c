@@ -378,7 +378,7 @@ void nl_condsim_draw(const nl_condsim_plan *p, const nl_field *f, uint64_t seed,
     for (size_t s = 0; s < p->n + p->np; s++)
         if (p->sample[s] != SIZE_MAX)
             u[s] = f->data[p->sample[s]];
-#pragma omp parallel for schedule(dynamic, 4) if (p->ngroups > 64)
+#pragma omp parallel for schedule(dynamic, 4) if (p->mat_off[p->ngroups] > 1000000)
     for (size_t g = 0; g < p->ngroups; g++) {
         size_t nt = p->site_off[g + 1] - p->site_off[g], ng = p->samp_off[g + 1] - p->samp_off[g];
         const size_t *site = p->site + p->site_off[g], *samp = p->samp + p->samp_off[g];
