@@ -198,7 +198,7 @@ static int krige_anew(const nl_condsim_plan *p, const double *r, nl_field *k, do
 static void apply_weights(const nl_condsim_plan *p, const double *r, nl_field *f, const double *u, double *z_at)
 {
     size_t W = p->width, count = f->count;
-#pragma omp parallel for schedule(static) if (count * W > 1000000) /* a millisecond of work at least */
+#pragma omp parallel for schedule(static) if (count * W > ((size_t)1 << 22)) /* milliseconds of work */
     for (size_t x = 0; x < count; x++) {
         const uint32_t *ix = p->widx + x * W;
         const double *w = p->w + x * W;
