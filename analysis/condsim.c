@@ -87,11 +87,12 @@ static int weights(nl_condsim_plan *p, const nl_field *given)
     if (p->o.rekrige || p->n < 2 || (!p->o.nmax && p->n > NL_KRIGE_LOCAL_MAX) ||
         rows > NL_CONDSIM_WEIGHTS_MAX / 12 / width)
         return NL_OK;
-    if (nl_krige_local_alloc(p->m, p->dim, p->n, p->pts, p->val, &ko, &kl))
-        return p->o.nmax ? NL_ERROR(NL_EFAIL, "conditional simulation: %s", nl_errmsg()) : NL_OK;
+    int st = nl_krige_local_alloc(p->m, p->dim, p->n, p->pts, p->val, &ko, &kl);
+    if (st) /* local kriging was checked to accept the data: out of memory; global: nl_krige_plan's cases */
+        return p->o.nmax ? st : NL_OK;
     p->widx = malloc(rows * width * sizeof *p->widx), p->w = malloc(rows * width * sizeof *p->w);
     p->c = malloc(rows * sizeof *p->c);
-    int st = p->widx && p->w && p->c ? NL_OK : NL_ENOMEM;
+    st = p->widx && p->w && p->c ? NL_OK : NL_ENOMEM;
     (void)given;
     if (!st && (st = nl_krige_weights(kl, grid->count, NULL, p->lo, grid, p->widx, p->w, p->c)) == NL_OK && p->np)
         st = nl_krige_weights(kl, p->np, p->at, NULL, NULL, p->widx + grid->count * width, p->w + grid->count * width,
