@@ -8,7 +8,8 @@
 #     writing the 100 EXR files included)
 #   gstat krige(..., nsim = 100, nmax = 40) on the 3103 meuse.grid points
 #     (sequential Gaussian simulation; the call only)
-# Wall-clock seconds, the median of 3 runs each.
+# Wall-clock seconds, the median of 3 runs each; noiselab's CPU seconds
+# (user + system, the median) too, a steadier figure on a shared machine.
 # usage: tools/bench-condsim.sh NOISELAB WORKDIR  -> TSV on stdout
 set -eu
 nl=$1
@@ -23,15 +24,22 @@ Rscript -e 'library(sp); data(meuse);
                 row.names = FALSE, quote = FALSE)' > /dev/null
 now() { date +%s.%N; }
 med3() { printf '%s\n' "$@" | sort -g | sed -n 2p; }
-run() {
+run() { # wall-clock seconds (and CPU seconds into $w/cpu when /usr/bin/time is installed)
     a=$(now)
-    "$nl" synth circulant --acf spherical:var=0.59,scale=897,nugget=0.05 --size 78x104 \
+    if [ -x /usr/bin/time ]; then
+        set -- /usr/bin/time -f '%U %S' -a -o "$w/cpu"
+    else
+        set --
+    fi
+    "$@" "$nl" synth circulant --acf spherical:var=0.59,scale=897,nugget=0.05 --size 78x104 \
         --extent 178440:181560,329600:333760 --condition "$w/meuse.tsv" --nmax 40 --realizations 100 --seed 1 \
         -o "$w/z.exr" 2> /dev/null
     b=$(now)
     echo "$a $b" | awk '{ print $2 - $1 }'
 }
+rm -f "$w/cpu"
 tn=$(med3 "$(run)" "$(run)" "$(run)")
+cpu=$( [ -f "$w/cpu" ] && awk '{ print $1 + $2 }' "$w/cpu" | sort -g | sed -n 2p || echo -)
 cat > "$w/bench.R" <<R
 suppressMessages({library(gstat); library(sp)})
 data(meuse); data(meuse.grid)
@@ -45,5 +53,5 @@ t <- sapply(1:3, function(i) {
 cat(median(t), "\n")
 R
 tg=$(Rscript "$w/bench.R")
-printf 'case\tnoiselab_s\tgstat_s\tspeedup\n'
-awk -v t="$tn" -v r="$tg" 'BEGIN { printf "condsim Meuse 100 realizations nmax 40 vs gstat\t%.2f\t%.2f\t%.1f\n", t, r, r / t }'
+printf 'case\tnoiselab_s\tnoiselab_cpu_s\tgstat_s\tspeedup\n'
+awk -v t="$tn" -v c="${cpu:--}" -v r="$tg" 'BEGIN { printf "condsim Meuse 100 realizations nmax 40 vs gstat\t%.2f\t%s\t%.2f\t%.1f\n", t, c, r, r / t }'
