@@ -34,20 +34,28 @@
  * plan states the error as the standard deviation, over realizations, of
  * the change in the conditional mean of a site between hood and hood + 2
  * (the largest over the first NL_CONDSIM_SCREEN_SITES sites, in units of
- * sqrt(R(0))).
+ * sqrt(R(0))).  The default hood, 4, measured on Meuse (155 data between
+ * the samples of a 40 m grid, spherical range 897 m with a nugget;
+ * experiments/fig-condsim.sh): over 200 realizations the ensemble
+ * variance averages 1.003 of the kriging variance with hood 4 and with
+ * hood 6, 1.038 with hood 2 (screening errors 0.0097, 0.0068, 0.10).
+ * Sites whose blocks overlap but whose group would exceed
+ * NL_CONDSIM_JOINT_MAX are drawn apart (counted in the info's unlinked).
  *
  * Kriging weights.  K[r](x) = c(x) + sum_k w_k(x) r_{idx_k(x)} with
  * weights that depend on the geometry alone (analysis/krige_weights_internal.h):
  * the plan computes them once per grid cell and point, and a realization
- * costs cells x (nmax, or n) multiply-adds, in parallel over cells (bits
- * independent of the thread count).  When the weights would take more than
+ * costs cells x (nmax, or n) multiply-adds, in parallel over cells above
+ * 2^22 of them (each cell's sum in a fixed order: the bits do not depend
+ * on the thread count).  When the weights would take more than
  * NL_CONDSIM_WEIGHTS_MAX bytes, or global kriging has more than
  * NL_KRIGE_LOCAL_MAX data or a singular system, or the options ask for
- * it (rekrige), each realization krige its residual anew (analysis/krige.h
+ * it (rekrige), each realization kriges its residual anew (analysis/krige.h
  * or krige_local.h): the same field to rounding, at O(n^3) per realization.
  *
- * Points.  Points `at` (np of them, anywhere in the extent) are sites too:
- * drawn jointly with the data given the grid, then
+ * Points.  Points `at` (np of them, anywhere in the extent) between
+ * samples are sites too, drawn jointly with the data given the grid (on a
+ * sample, U is the sample's), then
  * Z(at_j) = U(at_j) + K[d - U(t)](at_j), so the realizations at the points
  * have the kriging estimate and variance there, jointly with the grid's.
  *
@@ -67,7 +75,6 @@ extern "C" {
 #include "../core/model.h"
 
 #include <stddef.h>
-
 #include <stdint.h>
 
 #define NL_CONDSIM_ON_SAMPLE 1e-9
