@@ -11,6 +11,7 @@
 
 #include <criterion/criterion.h>
 #include <gsl/gsl_cdf.h>
+#include <omp.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -177,4 +178,37 @@ Test(condsim_exact, draws_come_from_the_seed)
     cr_assert_eq(nl_condsim_execute(p, f, 12, z3), 0);
     cr_expect(f->data[0] != first && z3[0] != z1[0]);
     nl_condsim_plan_free(p), nl_field_free(f), nl_field_free(u), nl_model_free(m);
+}
+
+/* The bits do not depend on the thread count: the weights of the 750
+ * cells are computed in parallel (above 256 locations), each cell's from
+ * its own neighbourhood, and the draws per group; one thread and two give
+ * the same field and the same values at the points, bit for bit. */
+Test(condsim_exact, bits_do_not_depend_on_the_thread_count)
+{
+    enum { N = 30, P = 4 };
+    nl_model *m = test_model("spherical:var=1.3,scale=9,nugget=0.1");
+    const size_t g[2] = {30, 25};
+    const double lo[2] = {0, 0};
+    double pts[2 * N], val[N], at[2 * P] = {3.3, 4.4, 10.1, 20.7, 29.5, 0.2, 15.55, 12.45}, z[2][P];
+    for (int i = 0; i < N; i++) {
+        pts[2 * i] = nl_rng_uniform(6, 0, (uint64_t)i) * 30, pts[2 * i + 1] = nl_rng_uniform(6, 1, (uint64_t)i) * 25;
+        val[i] = nl_rng_gauss(6, 2, (uint64_t)i);
+    }
+    nl_field *f[2] = {nl_field_alloc(2, g, NULL, NULL), nl_field_alloc(2, g, NULL, NULL)};
+    int threads = omp_get_max_threads();
+    for (int t = 0; t < 2; t++) {
+        nl_condsim_plan *p;
+        omp_set_num_threads(t + 1);
+        cr_assert_eq(nl_condsim_plan_alloc(m, N, pts, val, lo, f[t], &(nl_condsim_options){.nmax = 10}, P, at, &p), 0,
+                     "%s", nl_errmsg());
+        for (size_t i = 0; i < f[t]->count; i++)
+            f[t]->data[i] = nl_rng_gauss(9, 0, i);
+        cr_assert_eq(nl_condsim_execute(p, f[t], 4, z[t]), 0, "%s", nl_errmsg());
+        nl_condsim_plan_free(p);
+    }
+    omp_set_num_threads(threads);
+    cr_expect(memcmp(f[0]->data, f[1]->data, f[0]->count * sizeof *f[0]->data) == 0, "the fields differ");
+    cr_expect(memcmp(z[0], z[1], sizeof z[0]) == 0, "the points differ");
+    nl_field_free(f[0]), nl_field_free(f[1]), nl_model_free(m);
 }
