@@ -314,6 +314,7 @@ bench: $(BIN) $(MPIBIN) $(WISDOM)
 	gnuplot -e "in='$(BUILD)/bench/bench.tsv'; out='$(BUILD)/bench/bench.png'" tools/bench-plot.gp
 	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-r.sh $(BIN) $(BUILD)/bench/r | tee $(BUILD)/bench/bench-r.tsv
 	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-gstat.sh $(BIN) $(BUILD)/bench/gstat | tee $(BUILD)/bench/bench-gstat.tsv
+	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-condsim.sh $(BIN) $(BUILD)/bench/condsim | tee $(BUILD)/bench/bench-condsim.tsv
 	sh tools/bench-firstrun.sh $(BIN) $(abspath $(WISDOM)) $(BUILD)/bench/first | tee $(BUILD)/bench/bench-firstrun.tsv
 	NOISELAB_FFTW=measure NOISELAB_WISDOM=$(abspath $(WISDOM)) CC="$(CC)" PYTHON=$(PYTHON) sh tools/bench-python.sh $(BUILD) | tee $(BUILD)/bench/bench-python.tsv
 	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-mpi.sh $(BINDIR) $(BUILD)/bench/mpi | tee $(BUILD)/bench/bench-mpi.tsv
