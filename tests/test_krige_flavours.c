@@ -1,0 +1,224 @@
+/* Block, trans-Gaussian and indicator kriging (analysis/krige_flavours.h)
+ * against gstat's krige(..., block = ), krigeTg and the ordinary kriging of
+ * indicators on the Meuse data, and the order-relation correction against
+ * GSLIB's ordrel. */
+#include "../analysis/krige_flavours.h"
+#include "../core/io_points.h"
+#include "../core/nl_error.h"
+#include "gstat.h"
+#include "util.h"
+
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* 101 cells of meuse.grid (every 31st) */
+#define NG 101
+
+/* R: the Meuse data (x, y, zinc) to meuse.tsv and the NG locations
+ * printed as "x y" lines, then the program's own lines. */
+#define MEUSE_R                                                                                                   \
+    "suppressMessages({library(gstat); library(sp)})\ndata(meuse); data(meuse.grid)\n"                            \
+    "write.table(format(data.frame(x = meuse$x, y = meuse$y, value = meuse$zinc), digits = 17), 'meuse.tsv',"   \
+    " sep = '\\t', quote = FALSE, row.names = FALSE)\n"                                                          \
+    "coordinates(meuse) <- ~x + y\ng <- meuse.grid[seq(1, 3103, by = 31), c('x', 'y')]\ncoordinates(g) <- ~x + y\n" \
+    "cat(sprintf('%.17g %.17g', coordinates(g)[, 1], coordinates(g)[, 2]), sep = '\\n')\n"                       \
+    "out <- function(a, b) cat(sprintf('%.17g %.17g', a, b), sep = '\\n')\n"
+
+/* The Meuse data read back from the scratch directory. */
+static nl_points *meuse(void)
+{
+    char path[512];
+    nl_points *p;
+    snprintf(path, sizeof path, "%s/meuse.tsv", scratch_dir());
+    cr_assert_eq(nl_points_read(path, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(p->n, 155);
+    return p;
+}
+
+/* Largest absolute difference of est/var from the pairs r[2t], r[2t+1]. */
+static double differ(const double *est, const double *var, const double *r, size_t n)
+{
+    double d = 0;
+    for (size_t t = 0; t < n; t++)
+        d = fmax(d, fmax(fabs(est[t] - r[2 * t]), var ? fabs(var[t] - r[2 * t + 1]) : 0));
+    return d;
+}
+
+/* Both sides solve the same systems of 155 or fewer points (condition
+ * numbers below 1e5 with this model) in double precision: they agree to
+ * ~1e-10; 1e-6 is the agreement asked for.  The discretisation nodes are
+ * gstat's 10-digit constants on both sides. */
+Test(krige_flavours, block_equals_gstat_meuse)
+{
+    if (!gstat_available("block kriging vs gstat"))
+        return;
+    static double r[2 * NG * 5];
+    long got = gstat_run(MEUSE_R "m <- vgm(0.59, 'Sph', 897, 0.05)\n"
+                         "k <- krige(log(zinc) ~ 1, meuse, g, m, block = c(40, 40), debug.level = 0); out(k$var1.pred, k$var1.var)\n"
+                         "k <- krige(log(zinc) ~ 1, meuse, g, m, block = c(40, 40), nmax = 20, debug.level = 0); out(k$var1.pred, k$var1.var)\n"
+                         "k <- krige(log(zinc) ~ x + y, meuse, g, m, block = c(40, 60), nmax = 20, debug.level = 0); out(k$var1.pred, k$var1.var)\n"
+                         "k <- krige(log(zinc) ~ 1, meuse, g, m, block = c(40, 40), set = list(nblockdiscr = 3), debug.level = 0); out(k$var1.pred, k$var1.var)\n",
+                         r, 2 * NG * 5);
+    cr_assert_eq(got, 2 * NG * 5, "R printed %ld numbers", got);
+    nl_points *p = meuse();
+    nl_model *m = test_model("spherical:var=0.59,scale=897,nugget=0.05");
+    cr_assert_eq(nl_krige_tg_transform(0, p->n, p->val, p->val), 0);
+    struct {
+        size_t nmax;
+        int drift;
+        nl_krige_block b;
+        const char *what;
+    } c[4] = {{0, NL_DRIFT_CONSTANT, {{40, 40}, 0}, "ordinary, global, Gauss 4x4"},
+              {20, NL_DRIFT_CONSTANT, {{40, 40}, 0}, "ordinary, nmax 20, Gauss 4x4"},
+              {20, NL_DRIFT_LINEAR, {{40, 60}, 0}, "universal x + y, nmax 20, 40 x 60"},
+              {0, NL_DRIFT_CONSTANT, {{40, 40}, 3}, "ordinary, global, regular 3x3"}};
+    double est[NG], var[NG];
+    for (int i = 0; i < 4; i++) {
+        nl_krige_local_options o = {.nmax = c[i].nmax, .drift = c[i].drift};
+        nl_krige_local *k;
+        cr_assert_eq(nl_krige_local_alloc(m, 2, p->n, p->pts, p->val, &o, &k), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_krige_block_eval(k, &c[i].b, NG, r, est, var), 0, "%s", nl_errmsg());
+        double d = differ(est, var, r + 2 * NG * (i + 1), NG);
+        fprintf(stderr, "block kriging, %s: largest difference from gstat %.3g\n", c[i].what, d);
+        cr_expect(d <= 1e-6, "%s: differs from gstat by %g", c[i].what, d);
+        nl_krige_local_free(k);
+    }
+    nl_model_free(m), nl_points_free(p);
+}
+
+/* krigeTg's var1TG.pred and var1TG.var; tolerance as above, relative to
+ * values of order 1e3 (estimates) and 1e5 (variances).  (Blocks are not
+ * compared here: krigeTg finds the Lagrange multiplier as (OK var - SK var)
+ * / (1 - sum of SK weights), a quotient of two differences that, near
+ * sum = 1, amplifies the ~1e-9 by which gstat's block covariances differ
+ * from the exact averages.) */
+Test(krige_flavours, trans_gaussian_equals_krigeTg_meuse)
+{
+    if (!gstat_available("trans-Gaussian kriging vs krigeTg"))
+        return;
+    static double r[2 * NG * 3];
+    long got = gstat_run(MEUSE_R "m0 <- vgm(0.59, 'Sph', 897, 0.05); m1 <- vgm(8, 'Sph', 897, 1)\n"
+                         "k <- krigeTg(zinc ~ 1, meuse, g, m0, lambda = 0, debug.level = 0); out(k$var1TG.pred, k$var1TG.var)\n"
+                         "k <- krigeTg(zinc ~ 1, meuse, g, m1, lambda = 0.25, nmax = 30, debug.level = 0); out(k$var1TG.pred, k$var1TG.var)\n"
+                         , r, 2 * NG * 3);
+    cr_assert_eq(got, 2 * NG * 3, "R printed %ld numbers", got);
+    nl_points *p = meuse();
+    struct {
+        const char *spec;
+        double lambda;
+        size_t nmax;
+        int block;
+        const char *what;
+    } c[2] = {{"spherical:var=0.59,scale=897,nugget=0.05", 0, 0, 0, "log, global"},
+              {"spherical:var=8,scale=897,nugget=1", 0.25, 30, 0, "lambda 0.25, nmax 30"}};
+    double est[NG], var[NG], *y = malloc(p->n * sizeof *y);
+    nl_krige_block b = {{40, 40}, 0};
+    for (int i = 0; i < 2; i++) {
+        nl_model *m = test_model(c[i].spec);
+        nl_krige_local_options o = {.nmax = c[i].nmax, .drift = NL_DRIFT_CONSTANT};
+        nl_krige_local *k;
+        cr_assert_eq(nl_krige_tg_transform(c[i].lambda, p->n, p->val, y), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_krige_local_alloc(m, 2, p->n, p->pts, y, &o, &k), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_krige_tg_eval(k, c[i].block ? &b : NULL, c[i].lambda, NG, r, est, var), 0, "%s", nl_errmsg());
+        const double *q = r + 2 * NG * (i + 1);
+        double de = 0, dv = 0;
+        for (size_t t = 0; t < NG; t++)
+            de = fmax(de, fabs(est[t] - q[2 * t]) / q[2 * t]), dv = fmax(dv, fabs(var[t] - q[2 * t + 1]) / q[2 * t + 1]);
+        fprintf(stderr, "trans-Gaussian, %s: largest relative difference from krigeTg: estimate %.3g, variance %.3g\n",
+                c[i].what, de, dv);
+        cr_expect(de <= 1e-6 && dv <= 1e-6, "%s: estimate differs by %g, variance by %g (relative)", c[i].what, de, dv);
+        nl_krige_local_free(k), nl_model_free(m);
+    }
+    free(y), nl_points_free(p);
+}
+
+/* Ordinary kriging of I(zinc < t) for four thresholds, each with its own
+ * model, with nmax = 12 (small neighbourhoods make order-relation
+ * violations); R also applies GSLIB's ordrel (clip, cummax, reversed
+ * cummin, average) as the reference of the correction.  Tolerance as in
+ * the block test, on probabilities. */
+Test(krige_flavours, indicator_equals_gstat_meuse)
+{
+    if (!gstat_available("indicator kriging vs gstat"))
+        return;
+    enum { NK = 4 };
+    static double r[2 * NG + 2 * NG * NK + 1];
+    long got = gstat_run(MEUSE_R "th <- c(200.5, 400.5, 800.5, 1200.5)\n"
+                         "ms <- list(vgm(0.05, 'Sph', 600, 0.02), vgm(0.15, 'Sph', 900, 0.05), vgm(0.12, 'Sph', 1200, 0.06), vgm(0.06, 'Sph', 500, 0.03))\n"
+                         "P <- sapply(1:4, function(j) { meuse$ind <- as.numeric(meuse$zinc < th[j])\n"
+                         "  krige(ind ~ 1, meuse, g, ms[[j]], nmax = 12, debug.level = 0)$var1.pred })\n"
+                         "C <- t(apply(pmin(pmax(P, 0), 1), 1, function(p) (cummax(p) + rev(cummin(rev(p)))) / 2))\n"
+                         "cat(sprintf('%.17g', t(P)), sep = '\\n'); cat(sprintf('%.17g', t(C)), sep = '\\n')\n"
+                         "cat(sum(apply(abs(C - P) > 1e-12, 1, any)), '\\n')\n",
+                         r, 2 * NG + 2 * NG * NK + 1);
+    cr_assert_eq(got, 2 * NG + 2 * NG * NK + 1, "R printed %ld numbers", got);
+    nl_points *p = meuse();
+    const double thr[NK] = {200.5, 400.5, 800.5, 1200.5};
+    const char *spec[NK] = {"spherical:var=0.05,scale=600,nugget=0.02", "spherical:var=0.15,scale=900,nugget=0.05",
+                            "spherical:var=0.12,scale=1200,nugget=0.06", "spherical:var=0.06,scale=500,nugget=0.03"};
+    nl_model *m[NK];
+    for (int j = 0; j < NK; j++)
+        m[j] = test_model(spec[j]);
+    nl_krige_local_options o = {.nmax = 12, .drift = NL_DRIFT_CONSTANT};
+    double raw[NG * NK], cdf[NG * NK], draw = 0, dcdf = 0;
+    size_t nc = 0;
+    cr_assert_eq(nl_krige_indicator((const nl_model *const *)m, NK, thr, 2, p->n, p->pts, p->val, &o, NULL, NG, r, raw,
+                                    cdf, &nc), 0, "%s", nl_errmsg());
+    const double *P = r + 2 * NG, *C = P + NG * NK;
+    for (size_t t = 0; t < NG * NK; t++)
+        draw = fmax(draw, fabs(raw[t] - P[t])), dcdf = fmax(dcdf, fabs(cdf[t] - C[t]));
+    fprintf(stderr, "indicator kriging: largest difference from gstat %.3g, of the corrected CDF from ordrel in R "
+            "%.3g; %zu of %d locations corrected (R: %g)\n", draw, dcdf, nc, NG, C[NG * NK]);
+    cr_expect(draw <= 1e-6, "kriged indicators differ from gstat's by %g", draw);
+    cr_expect(dcdf <= 1e-6, "corrected probabilities differ from ordrel's by %g", dcdf);
+    cr_expect(nc > 0 && (double)nc == C[NG * NK], "%zu locations corrected, R %g (the data must need a correction)",
+              nc, C[NG * NK]);
+    for (size_t t = 0; t < NG; t++)
+        for (int j = 0; j < NK; j++)
+            cr_expect(cdf[t * NK + j] >= 0 && cdf[t * NK + j] <= 1 && (j == 0 || cdf[t * NK + j] >= cdf[t * NK + j - 1]),
+                      "location %zu: the corrected CDF is not monotone in [0, 1]", t);
+    for (int j = 0; j < NK; j++)
+        nl_model_free(m[j]);
+    nl_points_free(p);
+}
+
+/* GSLIB's ordrel by hand: clip [-0.1, 0.5, 0.4, 1.2] to [0, 0.5, 0.4, 1];
+ * upward [0, 0.5, 0.5, 1], downward [0, 0.4, 0.4, 1]; average
+ * [0, 0.45, 0.45, 1].  A monotone row in [0, 1] is left alone. */
+Test(krige_flavours, order_relations_by_hand)
+{
+    double p[8] = {-0.1, 0.5, 0.4, 1.2, 0.1, 0.2, 0.2, 0.9}, want[8] = {0, 0.45, 0.45, 1, 0.1, 0.2, 0.2, 0.9};
+    cr_expect_eq(nl_krige_order_relations(2, 4, p), 1);
+    for (int i = 0; i < 8; i++)
+        cr_expect(fabs(p[i] - want[i]) < 1e-15, "p[%d] = %.17g, expected %g", i, p[i], want[i]);
+}
+
+/* The discretisations: gstat's Gauss-Legendre nodes and weights (sum 1 to
+ * their 10 digits), regular midpoints, and the refusals. */
+Test(krige_flavours, discretisation)
+{
+    static double d[3 * NL_KRIGE_BLOCK_POINTS_MAX], w[NL_KRIGE_BLOCK_POINTS_MAX];
+    size_t nd;
+    nl_krige_block b = {{40, 60}, 0};
+    cr_assert_eq(nl_krige_block_discretise(&b, 2, &nd, d, w), 0, "%s", nl_errmsg());
+    cr_expect_eq(nd, 16);
+    double s = 0;
+    for (size_t j = 0; j < nd; j++)
+        s += w[j];
+    cr_expect(fabs(s - 1) < 1e-9, "weights sum to %.17g", s);
+    cr_expect(fabs(d[0] + 40 * 0.4305681558) < 1e-12 && fabs(d[1] + 60 * 0.4305681558) < 1e-12, "%g %g", d[0], d[1]);
+    b.points = 3;
+    cr_assert_eq(nl_krige_block_discretise(&b, 2, &nd, d, w), 0, "%s", nl_errmsg());
+    cr_expect_eq(nd, 9);
+    cr_expect(fabs(d[0] + 40.0 / 3) < 1e-12 && fabs(d[2 * 4]) < 1e-12 && fabs(w[0] - 1.0 / 9) < 1e-15);
+    b.points = 1;
+    cr_expect_eq(nl_krige_block_discretise(&b, 2, &nd, d, w), NL_EINVAL);
+    b.points = 17, b.size[2] = 20;
+    cr_expect_eq(nl_krige_block_discretise(&b, 3, &nd, d, w), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "4913") != NULL, "%s", nl_errmsg());
+    b.points = 0, b.size[1] = 0, b.size[2] = 1;
+    cr_expect_eq(nl_krige_block_discretise(&b, 2, &nd, d, w), NL_EINVAL);
+}
