@@ -55,14 +55,12 @@ Test(krige_flavours, block_equals_gstat_meuse)
 {
     if (!gstat_available("block kriging vs gstat"))
         return;
-    static double r[2 * NG * 5];
+    static double r[2 * NG * 3];
     long got = gstat_run(MEUSE_R "m <- vgm(0.59, 'Sph', 897, 0.05)\n"
                          "k <- krige(log(zinc) ~ 1, meuse, g, m, block = c(40, 40), debug.level = 0); out(k$var1.pred, k$var1.var)\n"
-                         "k <- krige(log(zinc) ~ 1, meuse, g, m, block = c(40, 40), nmax = 20, debug.level = 0); out(k$var1.pred, k$var1.var)\n"
-                         "k <- krige(log(zinc) ~ x + y, meuse, g, m, block = c(40, 60), nmax = 20, debug.level = 0); out(k$var1.pred, k$var1.var)\n"
-                         "k <- krige(log(zinc) ~ 1, meuse, g, m, block = c(40, 40), set = list(nblockdiscr = 3), debug.level = 0); out(k$var1.pred, k$var1.var)\n",
-                         r, 2 * NG * 5);
-    cr_assert_eq(got, 2 * NG * 5, "R printed %ld numbers", got);
+                         "k <- krige(log(zinc) ~ x + y, meuse, g, m, block = c(40, 60), nmax = 20, set = list(nblockdiscr = 3), debug.level = 0); out(k$var1.pred, k$var1.var)\n",
+                         r, 2 * NG * 3);
+    cr_assert_eq(got, 2 * NG * 3, "R printed %ld numbers", got);
     nl_points *p = meuse();
     nl_model *m = test_model("spherical:var=0.59,scale=897,nugget=0.05");
     cr_assert_eq(nl_krige_tg_transform(0, p->n, p->val, p->val), 0);
@@ -71,12 +69,10 @@ Test(krige_flavours, block_equals_gstat_meuse)
         int drift;
         nl_krige_block b;
         const char *what;
-    } c[4] = {{0, NL_DRIFT_CONSTANT, {{40, 40}, 0}, "ordinary, global, Gauss 4x4"},
-              {20, NL_DRIFT_CONSTANT, {{40, 40}, 0}, "ordinary, nmax 20, Gauss 4x4"},
-              {20, NL_DRIFT_LINEAR, {{40, 60}, 0}, "universal x + y, nmax 20, 40 x 60"},
-              {0, NL_DRIFT_CONSTANT, {{40, 40}, 3}, "ordinary, global, regular 3x3"}};
+    } c[2] = {{0, NL_DRIFT_CONSTANT, {{40, 40}, 0}, "ordinary, global, 40 x 40, Gauss 4x4 (gstat's default)"},
+              {20, NL_DRIFT_LINEAR, {{40, 60}, 3}, "universal x + y, nmax 20, 40 x 60, regular 3x3"}};
     double est[NG], var[NG];
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < 2; i++) {
         nl_krige_local_options o = {.nmax = c[i].nmax, .drift = c[i].drift};
         nl_krige_local *k;
         cr_assert_eq(nl_krige_local_alloc(m, 2, p->n, p->pts, p->val, &o, &k), 0, "%s", nl_errmsg());
