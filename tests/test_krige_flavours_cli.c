@@ -96,6 +96,15 @@ Test(krige_flavours_cli, block_and_transform_equal_the_library)
     run(args, err);
     read_column("t.tsv", 1, got);
     same(got, est, "--transform boxcox:0.3");
+    o.drift = NL_DRIFT_NONE, o.mean = 1.5; /* simple block kriging */
+    cr_assert_eq(nl_krige_local_alloc(m, 1, NP, pts, val, &o, &k), 0, "%s", nl_errmsg());
+    b.points = 0;
+    cr_assert_eq(nl_krige_block_eval(k, &b, NC, x, est, NULL), 0, "%s", nl_errmsg());
+    nl_krige_local_free(k);
+    snprintf(args, sizeof args, "--acf markov:scale=2,nugget=0.1 --mean 1.5 --block 0.8 -o %s/s.tsv", scratch_dir());
+    run(args, err);
+    read_column("s.tsv", 1, got);
+    same(got, est, "--block 0.8 --mean 1.5");
     nl_model_free(m);
 }
 
@@ -126,6 +135,22 @@ Test(krige_flavours_cli, indicator_equals_the_library)
         same(got, want, "--indicator");
     }
     fprintf(stderr, "indicator CLI: %zu of %d cells corrected\n", nc, NC);
+    /* the EXR outputs, one per threshold (float32: 1e-7 relative) */
+    snprintf(args, sizeof args, "--indicator 0.8,1.3,2.1 --indicator-acf markov:scale=1,nugget=0.05 --indicator-acf "
+             "markov:scale=2,nugget=0.05 --indicator-acf spherical:scale=3,nugget=0.1 --nmax 4 -o %s/i.exr",
+             scratch_dir());
+    run(args, err);
+    for (int j = 0; j < 3; j++) {
+        char path[512];
+        nl_field *f;
+        snprintf(path, sizeof path, "%s/i.%d.exr", scratch_dir(), j + 1);
+        cr_assert_eq(nl_exr_read(path, &f, NULL), 0, "%s", nl_errmsg());
+        cr_assert_eq(f->count, NC);
+        for (int t = 0; t < NC; t++)
+            cr_expect(fabs(f->data[t] - cdf[t * 3 + j]) <= 1e-7, "%s, cell %d: %g, library %g", path, t, f->data[t],
+                      cdf[t * 3 + j]);
+        nl_field_free(f);
+    }
     char note[64];
     snprintf(note, sizeof note, "corrected at %zu of %d cells", nc, NC);
     cr_expect(nc == 0 ? strstr(err, "corrected") == NULL : strstr(err, note) != NULL, "stderr: %s (want %s)", err, note);
