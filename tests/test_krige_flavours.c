@@ -218,3 +218,57 @@ Test(krige_flavours, discretisation)
     b.points = 0, b.size[1] = 0, b.size[2] = 1;
     cr_expect_eq(nl_krige_block_discretise(&b, 2, &nd, d, w), NL_EINVAL);
 }
+
+/* 60 positive values at scattered points of the unit square, fixed seed. */
+static void scattered(double *pts, double *val, size_t n)
+{
+    unsigned long long s = 2385;
+    for (size_t i = 0; i < n; i++) {
+        double u[3];
+        for (int j = 0; j < 3; j++) {
+            s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+            u[j] = (double)(s >> 11) / 9007199254740992.0;
+        }
+        pts[2 * i] = u[0], pts[2 * i + 1] = u[1], val[i] = exp(sin(4 * u[0]) + u[1] + 0.4 * u[2]);
+    }
+}
+
+/* Leave-one-out is kriging from the others: trans-Gaussian and indicator
+ * cross-validation at datum i equal the estimate at t_i of a plan without
+ * datum i (the same arithmetic on the same neighbourhood: to rounding,
+ * 1e-10 relative). */
+Test(krige_flavours, cross_validation_is_kriging_without_the_datum)
+{
+    enum { N = 60 };
+    double pts[2 * N], val[N], y[N], pred[N], var[N], p2[2 * N], v2[N], y2[N], e, v;
+    const double thr[2] = {1.5, 3.1};
+    double cdf[N * 2], c1[2];
+    nl_krige_cv_summary s;
+    scattered(pts, val, N);
+    nl_model *m = test_model("markov:scale=0.3,nugget=0.02");
+    const nl_model *mm[2] = {m, m};
+    nl_krige_local_options o = {.nmax = 12, .drift = NL_DRIFT_CONSTANT};
+    nl_krige_local *k;
+    cr_assert_eq(nl_krige_tg_transform(0.5, N, val, y), 0);
+    cr_assert_eq(nl_krige_local_alloc(m, 2, N, pts, y, &o, &k), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_krige_tg_cv(k, 0.5, val, pred, var, &s), 0, "%s", nl_errmsg());
+    nl_krige_local_free(k);
+    cr_assert_eq(nl_krige_indicator(mm, 2, thr, 2, N, pts, val, &o, NULL, N, NULL, NULL, cdf, NULL), 0, "%s",
+                 nl_errmsg());
+    for (size_t i = 0; i < N; i += 17) {
+        size_t q = 0;
+        for (size_t j = 0; j < N; j++)
+            if (j != i)
+                p2[2 * q] = pts[2 * j], p2[2 * q + 1] = pts[2 * j + 1], v2[q] = val[j], y2[q++] = y[j];
+        cr_assert_eq(nl_krige_local_alloc(m, 2, N - 1, p2, y2, &o, &k), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_krige_tg_eval(k, NULL, 0.5, 1, pts + 2 * i, &e, &v), 0, "%s", nl_errmsg());
+        nl_krige_local_free(k);
+        cr_expect(fabs(e - pred[i]) <= 1e-10 * fabs(e) && fabs(v - var[i]) <= 1e-10 * v, "datum %zu: %g %g, cv %g %g",
+                  i, e, v, pred[i], var[i]);
+        cr_assert_eq(nl_krige_indicator(mm, 2, thr, 2, N - 1, p2, v2, &o, NULL, 1, pts + 2 * i, NULL, c1, NULL), 0, "%s",
+                     nl_errmsg());
+        cr_expect(fabs(c1[0] - cdf[2 * i]) <= 1e-10 && fabs(c1[1] - cdf[2 * i + 1]) <= 1e-10, "datum %zu: %g %g, cv %g %g",
+                  i, c1[0], c1[1], cdf[2 * i], cdf[2 * i + 1]);
+    }
+    nl_model_free(m);
+}
