@@ -138,7 +138,7 @@ static int neighbourhood(const nl_krige_local *k, const double *x, size_t skip, 
 static int locate(const nl_krige_local *k, const nl_kf_support *s, const double *x, size_t skip, nl_kl_work *w,
                   nl_kf_out *o)
 {
-    int st, dim = k->dim, block = s->nd > 1 || s->cbb != k->r0;
+    int st, dim = k->dim, block = s->nd > 1; /* a point: nd 1 */
     if ((st = neighbourhood(k, x, skip, w)))
         return st;
     size_t K = w->K, p = k->p;

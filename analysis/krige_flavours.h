@@ -126,7 +126,8 @@ int nl_krige_indicator(const nl_model *const *m, size_t nk, const double *thr, i
 
 /* GSLIB's order-relation correction of count rows of nk probabilities
  * (in place): clip to [0, 1], average of the upward and downward
- * corrections.  Returns the number of rows changed by more than 1e-12. */
+ * corrections.  Returns the number of rows changed by more than 1e-12
+ * (nk = 0 or above 256: nothing is done, 0). */
 size_t nl_krige_order_relations(size_t count, size_t nk, double *p);
 
 #ifdef __cplusplus

@@ -54,7 +54,7 @@ static void parse_block(const cli_krige_fl *f, int dim, nl_krige_block *b)
             break;
         p++;
     }
-    if (*p != 0 || k == 0 || (k < 3 && b->size[k] != 0 && !(b->size[k] > 0)))
+    if (*p != 0 || k == 0)
         cli_die(2, "--block: expected positive edges WxH[xD] (one per axis), got \"%s\"", f->block);
     if (k != dim)
         cli_die(2, "--block: expected %d edge%s (the data have %d coordinates), got \"%s\"", dim, dim > 1 ? "s" : "",
