@@ -20,11 +20,11 @@
 /* R: the Meuse data (x, y, zinc) to meuse.tsv and the NG locations
  * printed as "x y" lines, then the program's own lines. */
 #define MEUSE_R                                                                                                   \
-    "suppressMessages({library(gstat); library(sp)})\ndata(meuse); data(meuse.grid)\n"                            \
+    "suppressMessages(library(gstat))\ndata(meuse, package = 'sp'); data(meuse.grid, package = 'sp')\n"          \
     "write.table(format(data.frame(x = meuse$x, y = meuse$y, value = meuse$zinc), digits = 17), 'meuse.tsv',"   \
     " sep = '\\t', quote = FALSE, row.names = FALSE)\n"                                                          \
-    "coordinates(meuse) <- ~x + y\ng <- meuse.grid[seq(1, 3103, by = 31), c('x', 'y')]\ncoordinates(g) <- ~x + y\n" \
-    "cat(sprintf('%.17g %.17g', coordinates(g)[, 1], coordinates(g)[, 2]), sep = '\\n')\n"                       \
+    "g <- meuse.grid[seq(1, 3103, by = 31), c('x', 'y')]\n"                                                      \
+    "cat(sprintf('%.17g %.17g', g$x, g$y), sep = '\\n')\n"                                                       \
     "out <- function(a, b) cat(sprintf('%.17g %.17g', a, b), sep = '\\n')\n"
 
 /* The Meuse data read back from the scratch directory. */
@@ -57,8 +57,8 @@ Test(krige_flavours, block_equals_gstat_meuse)
         return;
     static double r[2 * NG * 3];
     long got = gstat_run(MEUSE_R "m <- vgm(0.59, 'Sph', 897, 0.05)\n"
-                         "k <- krige(log(zinc) ~ 1, meuse, g, m, block = c(40, 40), debug.level = 0); out(k$var1.pred, k$var1.var)\n"
-                         "k <- krige(log(zinc) ~ x + y, meuse, g, m, block = c(40, 60), nmax = 20, set = list(nblockdiscr = 3), debug.level = 0); out(k$var1.pred, k$var1.var)\n",
+                         "k <- krige(log(zinc) ~ 1, ~x + y, meuse, g, m, block = c(40, 40), debug.level = 0); out(k$var1.pred, k$var1.var)\n"
+                         "k <- krige(log(zinc) ~ x + y, ~x + y, meuse, g, m, block = c(40, 60), nmax = 20, set = list(nblockdiscr = 3), debug.level = 0); out(k$var1.pred, k$var1.var)\n",
                          r, 2 * NG * 3);
     cr_assert_eq(got, 2 * NG * 3, "R printed %ld numbers", got);
     nl_points *p = meuse();
@@ -96,7 +96,8 @@ Test(krige_flavours, trans_gaussian_equals_krigeTg_meuse)
     if (!gstat_available("trans-Gaussian kriging vs krigeTg"))
         return;
     static double r[2 * NG * 3];
-    long got = gstat_run(MEUSE_R "m0 <- vgm(0.59, 'Sph', 897, 0.05); m1 <- vgm(8, 'Sph', 897, 1)\n"
+    long got = gstat_run(MEUSE_R "suppressMessages(library(sp)); coordinates(meuse) <- ~x + y; coordinates(g) <- ~x + y\n"
+                         "m0 <- vgm(0.59, 'Sph', 897, 0.05); m1 <- vgm(8, 'Sph', 897, 1)\n"
                          "k <- krigeTg(zinc ~ 1, meuse, g, m0, lambda = 0, debug.level = 0); out(k$var1TG.pred, k$var1TG.var)\n"
                          "k <- krigeTg(zinc ~ 1, meuse, g, m1, lambda = 0.25, nmax = 30, debug.level = 0); out(k$var1TG.pred, k$var1TG.var)\n"
                          , r, 2 * NG * 3);
@@ -145,7 +146,7 @@ Test(krige_flavours, indicator_equals_gstat_meuse)
     long got = gstat_run(MEUSE_R "th <- c(200.5, 400.5, 800.5, 1200.5)\n"
                          "ms <- list(vgm(0.05, 'Sph', 600, 0.02), vgm(0.15, 'Sph', 900, 0.05), vgm(0.12, 'Sph', 1200, 0.06), vgm(0.06, 'Sph', 500, 0.03))\n"
                          "P <- sapply(1:4, function(j) { meuse$ind <- as.numeric(meuse$zinc < th[j])\n"
-                         "  krige(ind ~ 1, meuse, g, ms[[j]], nmax = 12, debug.level = 0)$var1.pred })\n"
+                         "  krige(ind ~ 1, ~x + y, meuse, g, ms[[j]], nmax = 12, debug.level = 0)$var1.pred })\n"
                          "C <- t(apply(pmin(pmax(P, 0), 1), 1, function(p) (cummax(p) + rev(cummin(rev(p)))) / 2))\n"
                          "cat(sprintf('%.17g', t(P)), sep = '\\n'); cat(sprintf('%.17g', t(C)), sep = '\\n')\n"
                          "cat(sum(apply(abs(C - P) > 1e-12, 1, any)), '\\n')\n",
