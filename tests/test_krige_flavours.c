@@ -55,34 +55,40 @@ Test(krige_flavours, block_equals_gstat_meuse)
 {
     if (!gstat_available("block kriging vs gstat"))
         return;
-    static double r[2 * NG * 3];
+    static double r[2 * NG * 5];
     long got = gstat_run(MEUSE_R "m <- vgm(0.59, 'Sph', 897, 0.05)\n"
                          "k <- krige(log(zinc) ~ 1, ~x + y, meuse, g, m, block = c(40, 40), debug.level = 0); out(k$var1.pred, k$var1.var)\n"
-                         "k <- krige(log(zinc) ~ x + y, ~x + y, meuse, g, m, block = c(40, 60), nmax = 20, set = list(nblockdiscr = 3), debug.level = 0); out(k$var1.pred, k$var1.var)\n",
-                         r, 2 * NG * 3);
-    cr_assert_eq(got, 2 * NG * 3, "R printed %ld numbers", got);
+                         "k <- krige(log(zinc) ~ x + y, ~x + y, meuse, g, m, block = c(40, 60), nmax = 20, set = list(nblockdiscr = 3), debug.level = 0); out(k$var1.pred, k$var1.var)\n"
+                         "k <- krige(log(zinc) ~ 1, ~x + y, meuse, g, m, beta = 5.9, block = c(40, 40), nmax = 20, debug.level = 0); out(k$var1.pred, k$var1.var)\n"
+                         "k <- krige(log(zinc) ~ 1, ~x + y, meuse, g, vgm(1e-5, 'Pow', 1.5, 0.05), block = c(50, 30), nmax = 20, debug.level = 0); out(k$var1.pred, k$var1.var)\n",
+                         r, 2 * NG * 5);
+    cr_assert_eq(got, 2 * NG * 5, "R printed %ld numbers", got);
     nl_points *p = meuse();
     nl_model *m = test_model("spherical:var=0.59,scale=897,nugget=0.05");
+    nl_model *pw = test_model("nugget:var=0.05 + powvar:alpha=1.5,c=1e-5"); /* gstat's vgm(c, 'Pow', alpha, nugget) */
     cr_assert_eq(nl_krige_tg_transform(0, p->n, p->val, p->val), 0);
     struct {
         size_t nmax;
         int drift;
         nl_krige_block b;
+        const nl_model *m;
         const char *what;
-    } c[2] = {{0, NL_DRIFT_CONSTANT, {{40, 40}, 0}, "ordinary, global, 40 x 40, Gauss 4x4 (gstat's default)"},
-              {20, NL_DRIFT_LINEAR, {{40, 60}, 3}, "universal x + y, nmax 20, 40 x 60, regular 3x3"}};
+    } c[4] = {{0, NL_DRIFT_CONSTANT, {{40, 40}, 0}, m, "ordinary, global, 40 x 40, Gauss 4x4 (gstat's default)"},
+              {20, NL_DRIFT_LINEAR, {{40, 60}, 3}, m, "universal x + y, nmax 20, 40 x 60, regular 3x3"},
+              {20, NL_DRIFT_NONE, {{40, 40}, 0}, m, "simple (mean 5.9), nmax 20, 40 x 40"},
+              {20, NL_DRIFT_CONSTANT, {{50, 30}, 0}, pw, "ordinary, nmax 20, 50 x 30, intrinsic Nug + Pow"}};
     double est[NG], var[NG];
-    for (int i = 0; i < 2; i++) {
-        nl_krige_local_options o = {.nmax = c[i].nmax, .drift = c[i].drift};
+    for (int i = 0; i < 4; i++) {
+        nl_krige_local_options o = {.nmax = c[i].nmax, .drift = c[i].drift, .mean = 5.9};
         nl_krige_local *k;
-        cr_assert_eq(nl_krige_local_alloc(m, 2, p->n, p->pts, p->val, &o, &k), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_krige_local_alloc(c[i].m, 2, p->n, p->pts, p->val, &o, &k), 0, "%s", nl_errmsg());
         cr_assert_eq(nl_krige_block_eval(k, &c[i].b, NG, r, est, var), 0, "%s", nl_errmsg());
         double d = differ(est, var, r + 2 * NG * (i + 1), NG);
         fprintf(stderr, "block kriging, %s: largest difference from gstat %.3g\n", c[i].what, d);
         cr_expect(d <= 1e-6, "%s: differs from gstat by %g", c[i].what, d);
         nl_krige_local_free(k);
     }
-    nl_model_free(m), nl_points_free(p);
+    nl_model_free(m), nl_model_free(pw), nl_points_free(p);
 }
 
 /* krigeTg's var1TG.pred and var1TG.var; tolerance as above, relative to
