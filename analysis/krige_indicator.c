@@ -37,8 +37,12 @@ size_t nl_krige_order_relations(size_t count, size_t nk, double *p)
     return changed;
 }
 
-static int check(size_t nk, const double *thr, size_t n, const double *x, size_t count)
+static int check(size_t nk, const double *thr, size_t n, const double *x, size_t count,
+                 const nl_krige_local_options *o)
 {
+    if (o->drift == NL_DRIFT_NONE)
+        return NL_ERROR(NL_EINVAL, "indicator kriging: expected an unknown mean (ordinary or universal), got simple "
+                        "kriging: each indicator has its own mean");
     if (nk == 0 || nk > NK_MAX)
         return NL_ERROR(NL_EINVAL, "indicator kriging: %zu thresholds; expected 1 to %d", nk, NK_MAX);
     for (size_t j = 0; j < nk; j++)
@@ -80,7 +84,7 @@ int nl_krige_indicator(const nl_model *const *m, size_t nk, const double *thr, i
                        const double *val, const nl_krige_local_options *o, const nl_krige_block *b, size_t count,
                        const double *x, double *raw, double *cdf, size_t *ncorrected)
 {
-    int st = check(nk, thr, n, x, count);
+    int st = check(nk, thr, n, x, count, o);
     if (st)
         return st;
     double one = 1, zero[3] = {0, 0, 0};

@@ -116,6 +116,9 @@ void cli_krige_fl_check(const cli_krige_fl *f, const char **spec, int cv, int si
                     "once per threshold, got both");
         if (f->niacf && f->niacf != nk)
             cli_die(2, "--indicator-acf: expected one model per threshold (%zu), got %zu", nk, f->niacf);
+        if (simple)
+            cli_die(2, "--mean: expected no --mean with --indicator (each indicator has its own mean, the CDF at "
+                    "its threshold: ordinary indicator kriging estimates it)");
         if (vout)
             cli_die(2, "--variance: expected no --variance with --indicator (it writes probabilities), got \"%s\"",
                     vout);
