@@ -118,7 +118,8 @@ int nl_krige_tg_cv(const nl_krige_local *k, double lambda, const double *orig, d
  * nk) the corrected probabilities P(Z <= t_k); *ncorrected (may be NULL)
  * the number of locations where the correction changed a value by more
  * than 1e-12.  Errors: NL_EINVAL for nk = 0 or above 256, thresholds not
- * increasing, and those of nl_krige_local_alloc and nl_krige_block_eval;
+ * increasing, simple kriging (o->drift NL_DRIFT_NONE: each indicator has
+ * its own mean), and those of nl_krige_local_alloc and nl_krige_block_eval;
  * NL_ENOMEM. */
 int nl_krige_indicator(const nl_model *const *m, size_t nk, const double *thr, int dim, size_t n, const double *pts,
                        const double *val, const nl_krige_local_options *o, const nl_krige_block *b, size_t count,
