@@ -279,3 +279,31 @@ Test(krige_flavours, cross_validation_is_kriging_without_the_datum)
     }
     nl_model_free(m);
 }
+
+/* What the flavours refuse, each naming the value. */
+Test(krige_flavours, refusals)
+{
+    enum { N = 20 };
+    double pts[2 * N], val[N], y[N], x[2] = {0.5, 0.5}, e, cdf[2];
+    const double up[2] = {1.5, 3.1}, down[2] = {3.1, 1.5};
+    scattered(pts, val, N);
+    nl_model *m = test_model("markov:scale=0.3");
+    const nl_model *mm[2] = {m, m};
+    nl_krige_local *k;
+    nl_krige_local_options lin = {.drift = NL_DRIFT_LINEAR}, sk = {.drift = NL_DRIFT_NONE, .mean = 2};
+    cr_assert_eq(nl_krige_local_alloc(m, 2, N, pts, val, &lin, &k), 0, "%s", nl_errmsg());
+    cr_expect_eq(nl_krige_tg_eval(k, NULL, 0, 1, x, &e, NULL), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "polynomial drift") != NULL, "%s", nl_errmsg());
+    cr_expect_eq(nl_krige_tg_eval(k, NULL, 7, 1, x, &e, NULL), NL_EINVAL);
+    nl_krige_local_free(k);
+    val[3] = -1;
+    cr_expect_eq(nl_krige_tg_transform(0.5, N, val, y), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "point 4 is -1") != NULL, "%s", nl_errmsg());
+    val[3] = 1;
+    cr_expect_eq(nl_krige_indicator(mm, 2, down, 2, N, pts, val, &lin, NULL, 1, x, NULL, cdf, NULL), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "threshold 2 is 1.5") != NULL, "%s", nl_errmsg());
+    cr_expect_eq(nl_krige_indicator(mm, 2, up, 2, N, pts, val, &sk, NULL, 1, x, NULL, cdf, NULL), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "own mean") != NULL, "%s", nl_errmsg());
+    cr_expect_eq(nl_krige_indicator(mm, 2, up, 2, N, pts, val, &lin, NULL, 5, NULL, NULL, cdf, NULL), NL_EINVAL);
+    nl_model_free(m);
+}
