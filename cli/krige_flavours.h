@@ -26,20 +26,21 @@ typedef struct {
 extern const cli_opt cli_krige_fl_rows[];
 
 /* The help of the rows above, appended to krige's. */
-#define CLI_KRIGE_FL_HELP                                                                                          \
-    "--block WxH[xD]: block kriging (as gstat's block = c(W, H)): the mean over the block of those edges\n"          \
-    "centred at each cell, and its kriging variance; point-to-block covariances are averages over a\n"             \
-    "discretisation of the block, the block variance the double average (Journel and Huijbregts 1978).\n"          \
-    "--block-points N: N regular points per axis (gstat's nblockdiscr); by default gstat's 4-point\n"              \
-    "Gauss-Legendre rule per axis (16 points in 2D).\n"                                                            \
-    "--transform log|boxcox:LAMBDA: trans-Gaussian kriging (gstat's krigeTg): ordinary kriging of\n"               \
-    "(z^LAMBDA - 1)/LAMBDA (log z), back-transformed with Cressie's bias correction; data > 0.\n"                \
-    "--indicator T1,T2,...: indicator kriging of P(value <= Tk), increasing thresholds, with --acf\n"              \
-    "(one model for all) or --indicator-acf SPEC once per threshold; GSLIB's order-relation correction\n"        \
-    "(clip to [0, 1], average of the upward and downward passes); -o OUT.exr writes OUT.1.exr ..\n"               \
-    "OUT.K.exr, a 1D .tsv one table of columns x, p1 .. pK; the cells corrected are reported.\n"                  \
-    "With --cross-validate: --transform in the data's units, --indicator the corrected probabilities\n"           \
-    "and each threshold's Brier score; --block is refused (the data are points).\n"
+#define CLI_KRIGE_FL_HELP                                                                                           \
+    "--block WxH[xD]: block kriging (as gstat's block = c(W, H)): the mean over the block of\n"                     \
+    "those edges centred at each cell, and its kriging variance; point-to-block covariances are\n"                  \
+    "averages over a discretisation of the block, the block variance the double average\n"                          \
+    "(Journel and Huijbregts 1978).  --block-points N: N regular points per axis (gstat's\n"                        \
+    "nblockdiscr); by default gstat's 4-point Gauss-Legendre rule per axis (16 points in 2D).\n"                    \
+    "--transform log|boxcox:LAMBDA: trans-Gaussian kriging (gstat's krigeTg): ordinary kriging\n"                   \
+    "of (z^LAMBDA - 1)/LAMBDA (log z), back-transformed with Cressie's bias correction; data > 0.\n"                \
+    "--indicator T1,T2,...: indicator kriging of P(value <= Tk), increasing thresholds, with\n"                     \
+    "--acf (one model for all) or --indicator-acf SPEC once per threshold; GSLIB's order-\n"                        \
+    "relation correction (clip to [0, 1], average of the upward and downward passes); -o\n"                         \
+    "OUT.exr writes OUT.1.exr .. OUT.K.exr, a 1D .tsv one table of columns x, p1 .. pK; the\n"                      \
+    "cells corrected are reported.  With --cross-validate: --transform in the data's units,\n"                      \
+    "--indicator the corrected probabilities and each threshold's Brier score; --block is\n"                        \
+    "refused (the data are points).\n"
 
 /* What krige parsed, for a flavour's run. */
 typedef struct {
