@@ -47,9 +47,8 @@ static double differ(const double *est, const double *var, const double *r, size
     return d;
 }
 
-/* Both sides solve the same systems of 155 or fewer points (condition
- * numbers below 1e5 with this model) in double precision, with gstat's
- * 10-digit Gauss-Legendre constants on both sides.  Point kriging agrees to
+/* Both sides solve the same systems of 155 or fewer points in double
+ * precision, with gstat's 10-digit Gauss-Legendre constants on both sides.  Point kriging agrees to
  * ~1e-12; block kriging to ~1e-8, because gstat's block results differ by
  * about that from the exact averages (the kriging system written out in R
  * with the same discretisation gives ours to 1e-15 and differs from
