@@ -310,3 +310,62 @@ Test(krige_flavours, refusals)
     cr_expect_eq(nl_krige_indicator(mm, 2, up, 2, N, pts, val, &lin, NULL, 5, NULL, NULL, cdf, NULL), NL_EINVAL);
     nl_model_free(m);
 }
+
+/* gstat's block discretisation in 3D (4 x 4 x 4 Gauss-Legendre points) and
+ * 1D (gstat: points on the line y = 0, a block c(W, 0) discretised along x
+ * alone), on scattered data of the unit cube and interval, with an
+ * exponential model and a nugget (which the block's own variance must
+ * leave out); tolerance as block_equals_gstat_meuse. */
+Test(krige_flavours, block_3d_and_1d_equal_gstat)
+{
+    if (!gstat_available("3D and 1D block kriging vs gstat"))
+        return;
+    enum { N3 = 80, N1 = 30, M = 20 };
+    double p3[3 * N3], v3[N3], p1[N1], v1[N1], x3[3 * M], x1[M], est[M], var[M], r[4 * M];
+    unsigned long long s = 2385;
+    for (int i = 0; i < 3 * N3 + N3 + 2 * N1 + 4 * M; i++) { /* one stream of uniforms */
+        s = s * 6364136223846793005ULL + 1442695040888963407ULL;
+        double u = (double)(s >> 11) / 9007199254740992.0;
+        int j = i;
+        if (j < 3 * N3)
+            p3[j] = u;
+        else if ((j -= 3 * N3) < N3)
+            v3[j] = sin(5 * p3[3 * j]) + p3[3 * j + 2] + 0.3 * u;
+        else if ((j -= N3) < 2 * N1)
+            j % 2 ? (v1[j / 2] = cos(4 * p1[j / 2]) + 0.2 * u) : (p1[j / 2] = u);
+        else if ((j -= 2 * N1) < 3 * M)
+            x3[j] = u;
+        else
+            x1[j - 3 * M] = u;
+    }
+    char path[512];
+    snprintf(path, sizeof path, "%s/p3.tsv", scratch_dir());
+    gstat_write_points(path, 3, N3, p3, v3);
+    snprintf(path, sizeof path, "%s/p1.tsv", scratch_dir());
+    gstat_write_points(path, 1, N1, p1, v1);
+    snprintf(path, sizeof path, "%s/x3.tsv", scratch_dir());
+    gstat_write_points(path, 3, M, x3, x1);
+    long got = gstat_run("suppressMessages(library(gstat))\nd3 <- read.delim('p3.tsv'); d1 <- read.delim('p1.tsv'); "
+                         "x <- read.delim('x3.tsv')\nm <- vgm(1, 'Exp', 0.3, 0.1)\n"
+                         "k <- krige(value ~ 1, ~x + y + z, d3, x, m, block = c(0.1, 0.2, 0.15), nmax = 30, debug.level = 0)\n"
+                         "cat(sprintf('%.17g %.17g', k$var1.pred, k$var1.var), sep = '\\n')\n"
+                         "d1$y <- 0; k <- krige(value ~ 1, ~x + y, d1, data.frame(x = x$value, y = 0), m, block = c(0.12, 0), debug.level = 0)\n"
+                         "cat(sprintf('%.17g %.17g', k$var1.pred, k$var1.var), sep = '\\n')\n",
+                         r, 4 * M);
+    cr_assert_eq(got, 4 * M, "R printed %ld numbers", got);
+    nl_model *m = test_model("markov:scale=0.3,nugget=0.1");
+    nl_krige_local_options o = {.nmax = 30, .drift = NL_DRIFT_CONSTANT}, g = {.drift = NL_DRIFT_CONSTANT};
+    nl_krige_block b3 = {{0.1, 0.2, 0.15}, 0}, b1 = {{0.12}, 0};
+    nl_krige_local *k;
+    cr_assert_eq(nl_krige_local_alloc(m, 3, N3, p3, v3, &o, &k), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_krige_block_eval(k, &b3, M, x3, est, var), 0, "%s", nl_errmsg());
+    nl_krige_local_free(k);
+    double d = differ(est, var, r, M);
+    cr_assert_eq(nl_krige_local_alloc(m, 1, N1, p1, v1, &g, &k), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_krige_block_eval(k, &b1, M, x1, est, var), 0, "%s", nl_errmsg());
+    nl_krige_local_free(k);
+    double d1 = differ(est, var, r + 2 * M, M);
+    fprintf(stderr, "block kriging: largest difference from gstat, 3D %.3g, 1D %.3g\n", d, d1);
+    cr_expect(d <= 1e-6 && d1 <= 1e-6, "differs from gstat by %g (3D), %g (1D)", d, d1);
+    nl_model_free(m);
+}
