@@ -1,5 +1,5 @@
 /* Indicator kriging (Journel 1983) of P(Z <= t_k) with GSLIB's order-
- * relation correction (Deutsch and Journel 1998, section V.1.6, ik3d's
+ * relation correction (Deutsch and Journel 1998, section IV.1.9, ik3d's
  * ordrel). */
 #include "krige_flavours.h"
 #include "krige_flavours_internal.h"
