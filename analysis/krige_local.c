@@ -298,3 +298,8 @@ void nl_kl_batch(const nl_krige_local *k, const double *x, size_t nb, nl_kl_work
         var[b] = fmax(k->r0 - s, 0);
     }
 }
+
+size_t nl_kl_neighbours(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w)
+{
+    return neighbours(k, x, skip, w);
+}

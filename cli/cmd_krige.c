@@ -1,6 +1,7 @@
 /* noiselab krige: ordinary or simple kriging of scattered data onto a grid. */
 #include "cli.h"
 #include "opt.h"
+#include "krige_flavours.h"
 #include "../analysis/krige.h"
 #include "../analysis/krige_local.h"
 #include "../core/io_points.h"
@@ -19,7 +20,9 @@ static const char help[] =
     "                      [--mean M] [--strict] [--json] -o OUT.exr|OUT.tsv [--variance VAR.exr]\n"
     "                      [--nmax K] [--radius D] [--drift constant|linear|quadratic]\n"
     "       noiselab krige --data PTS.tsv --acf SPEC --cross-validate [--nmax K] [--radius D]\n"
-    "                      [--drift ...] [--mean M] [--json] [-o CV.tsv]\n\n"
+    "                      [--drift ...] [--mean M] [--json] [-o CV.tsv]\n"
+    "       flavours: [--block WxH[xD] [--block-points N]] [--transform log|boxcox:LAMBDA]\n"
+    "                 [--indicator T1,T2,... [--indicator-acf SPEC]...]\n\n"
     "Kriging (Stam and Fiume 1991, eqs. 19-22): ordinary (unknown mean, unbiased by a\n"
     "Lagrange multiplier) or, with --mean, simple.  PTS.tsv: a header line naming the\n"
     "columns x [y [z]] and value (in any order), then rows.  Grid cell centres are\n"
@@ -32,7 +35,7 @@ static const char help[] =
     "drift in the coordinates (linear: as gstat's value ~ x + y).  --cross-validate:\n"
     "leave-one-out (as gstat's krige.cv): per point observed, predicted, variance,\n"
     "error = observed - predicted and zscore = error / sqrt(variance) to -o, and the\n"
-    "mean and variance of error and zscore on stdout.\n";
+    "mean and variance of error and zscore on stdout.\n" CLI_KRIGE_FL_HELP;
 
 /* The command's options. */
 typedef struct {
@@ -43,6 +46,7 @@ typedef struct {
     size_t nmax;                                        /* --nmax (0: all) */
     double radius;                                      /* --radius (0: no limit) */
     size_t g[3];                                        /* --grid */
+    cli_krige_fl fl;                                    /* --block, --transform, --indicator */
 } opts_t;
 
 static void parse_extent(opts_t *a)
@@ -89,7 +93,9 @@ static const cli_opt rows[] = {
     CLI_COUNT("nmax", opts_t, nmax, CLI_GIVEN(opts_t, local), .lo = 1),
     CLI_POSITIVE("radius", opts_t, radius, CLI_GIVEN(opts_t, local), .what = "distance"),
     CLI_CHOICE("drift", opts_t, drift, CLI_GIVEN(opts_t, local), .choices = drifts),
-    CLI_FLAG("cross-validate", opts_t, cv, CLI_GIVEN(opts_t, local)), {0}};
+    CLI_FLAG("cross-validate", opts_t, cv, CLI_GIVEN(opts_t, local)),
+    /* the flavours (cli/krige_flavours.c) */
+    CLI_GROUP(cli_krige_fl_rows, opts_t, fl), {0}};
 
 /* --cross-validate: no grid; -o (optional) is a TSV of the points. */
 static void parse_cv(opts_t *a)
@@ -112,6 +118,7 @@ static void parse(int argc, char **argv, opts_t *a)
     if (cli_opt_parse("krige", help, rows, a, argc, argv))
         exit(0);
     cli_no_operands("krige", argc, argv);
+    cli_krige_fl_check(&a->fl, &a->spec, a->cv, !isnan(a->mean), a->drift, a->vout);
     if (a->cv) {
         parse_cv(a);
         return;
@@ -304,6 +311,11 @@ int cli_cmd_krige(int argc, char **argv)
     nl_points *pt;
     if ((st = nl_points_read(a.data, &pt)))
         cli_die(nl_error_is_input(st) ? 2 : 1, "--data: %s", nl_errmsg());
+    if (a.fl.any) {
+        cli_krige_fl_ctx c = {a.data, a.spec, a.out, a.vout, a.json, a.cv, a.drift, a.gdim, a.mean, a.radius, a.nmax,
+                              {a.g[0], a.g[1], a.g[2]}, {a.lo[0], a.lo[1], a.lo[2]}, {a.hi[0], a.hi[1], a.hi[2]}};
+        return cli_krige_fl_run(&a.fl, &c, pt);
+    }
     if (a.local)
         return cli_krige_local(&a, pt);
     if (pt->dim != a.gdim)
