@@ -100,6 +100,17 @@ int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_va
  * cutoff).  Thread-safe. */
 int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_variogram **out);
 
+/* A variogram table (a TSV: a header of the three column names in any
+ * order, distance, gamma, pairs as `noiselab variogram -o` writes them or
+ * gstat's np, dist, gamma; then a row per bin of three finite numbers;
+ * '#' lines and empty lines skipped) into *out (NULL on failure), released
+ * by nl_variogram_free; the rows are kept in the file's order.  Errors:
+ * NL_EINPUT naming file and line for a file that cannot be read, another or
+ * a repeated column name, no header or no row, a row that is not three
+ * finite numbers, a distance not > 0, a gamma below 0, pairs that are not
+ * a whole number >= 1, more than 10^6 rows; NL_ENOMEM.  Thread-safe. */
+int nl_variogram_read(const char *path, nl_variogram **out);
+
 /* Release v and its arrays (NULL is a no-op). */
 void nl_variogram_free(nl_variogram *v);
 
