@@ -74,7 +74,7 @@ static void fit_ranges(char *buf, size_t size)
  * from the registry, then the rest. */
 static void print_help(void)
 {
-    char families[512], shapes[512] = "", text[4096];
+    char families[512], shapes[512] = "", text[6144];
     size_t len = 0;
     nl_family_names(NL_FAMILY_FIT, 0, ", ", families, sizeof families);
     for (size_t i = 0; i < nl_family_count(); i++) {

@@ -469,12 +469,14 @@ def _fit_status(q):
 
 
 def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugget=False, fix=None, method="wls",
-        weights="distance", width=None, cutoff=None, bins="gstat"):
+        weights=None, width=None, cutoff=None, bins="gstat"):
     """Fit a model family to data, as ``noiselab fit``: weighted least
     squares on the empirical variogram (method="wls", weights distance, the
     default, gstat's fit.method 7; pairs, 1; reweighted, 2; ols, 6; or cressie;
-    gstat's numbers 7, 1, 2, 6 are accepted too; bins as variogram()), or the Gaussian likelihood ("ml", "reml",
-    started from the wls fit, with 95% profile-likelihood intervals).
+    gstat's numbers 7, 1, 2, 6 are accepted too; bins as variogram()), or
+    the Gaussian likelihood ("ml", "reml", started from the wls fit,
+    Cressie-weighted unless weights is given, with 95% profile-likelihood
+    intervals).
     model: a family whose entry in models() has fit=True, or a spec of
     them with starting values or nested ("spherical:var=0.5,scale=12 +
     markov:scale=40": every structure's parameters, named var.1, scale.2,
@@ -493,6 +495,8 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
         p, v = _points(points, values, "fit")
     _check_spread("fit: values", v)
     method = as_choice("method", method, ("wls", "ml", "reml"))
+    if weights is None:  # as the CLI: gstat's default; ml, reml start from Cressie's fit
+        weights = "distance" if method == "wls" else "cressie"
     if isinstance(weights, int) and not isinstance(weights, bool) and weights in _GSTAT_WEIGHTS:
         weights = _GSTAT_WEIGHTS[weights]
     weights = as_choice("weights", weights, _WEIGHTS)
