@@ -47,7 +47,11 @@ def _extent(extent, dim):
             refuse("extent", want, extent)
     else:
         try:
-            pairs = [tuple(r) for r in (extent if np.ndim(extent) > 1 or dim > 1 else [extent])]
+            items = list(extent)
+            if dim == 1 and len(items) == 2 and not any(isinstance(r, (str, bytes)) or hasattr(r, "__len__")
+                                                        for r in items):
+                items = [items]  # (lo, hi) of a 1D grid
+            pairs = [tuple(r) for r in items]
         except TypeError:
             refuse("extent", want, extent)
     if len(pairs) != dim or any(len(r) != 2 for r in pairs):
@@ -286,8 +290,13 @@ class Krige:
                 raise Error("extent: the grid and the data span %g to %g on axis %d, whose distances overflow; "
                             "expected a span below %g" % (l, h, a + 1, _DBL_MAX / 4))
         hx = _grid_spacing(lo, hi, shape)
-        fields = [alloc_field(shape, hx[::-1], zero=False) for _ in range(2 if variance else 1)]
-        arrays = [owned_field(f, free_data) for f in fields]
+        fields, arrays = [], []
+        for _ in range(2 if variance else 1):
+            try:
+                fields.append(alloc_field(shape, hx[::-1], zero=False))
+            except Error as e:
+                raise Error("shape: %s: %s" % (shape, e), e.code) from None
+            arrays.append(owned_field(fields[-1], free_data))
         for a in arrays:
             a[...] = np.nan
         E, V = fields[0], fields[1] if variance else ffi.NULL
