@@ -32,7 +32,7 @@ check = check_model  # noiselab.check, as the CLI's verb
 
 __version__ = version()
 __all__ = ["Error", "Plan", "synth", "read", "write", "models", "version", "acf", "psd", "hist", "moments",
-           "check", "check_model", "coeffs", "nonlin", "shape", "krige", "Krige", "CondSim", "condsim", "sample", "variogram", "fit",
-           "METHODS", "methods",
+           "check", "check_model", "coeffs", "nonlin", "shape", "krige", "Krige", "CondSim", "condsim", "sample",
+           "variogram", "fit", "METHODS", "methods",
            "ensemble_acf", "ensemble_psd", "ensemble_hist",
            "LIBRARY_PATH"]

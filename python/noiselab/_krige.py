@@ -306,10 +306,10 @@ class Krige:
         else:
             st = self._call(lib.nl_krige_local_grid, self._local, lo_c, E, V)
             if st:
-                n = shape[::-1]
+                n = list(shape[::-1]) + [1] * (3 - self.dim)
 
                 def cell(t):  # as the library's cell centres
-                    idx = (t % n[0], t // n[0] % (n[1] if self.dim > 1 else 1), t // (n[0] * (n[1] if self.dim > 1 else 1)))
+                    idx = (t % n[0], t // n[0] % n[1], t // (n[0] * n[1]))
                     return [lo[a] + (idx[a] + 0.5) * hx[a] for a in range(self.dim)]
                 self._holes(st, arrays[0].reshape(-1), arrays[1].reshape(-1) if variance else None,
                             lambda t: "cell %d" % t, lambda t: self._at(cell(t)))
