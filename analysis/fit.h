@@ -168,6 +168,8 @@
 extern "C" {
 #endif
 
+#include "krige_local.h" /* NL_DRIFT_* */
+
 #include <stddef.h>
 
 #define NL_FIT_MAX_FIX 8
@@ -206,6 +208,10 @@ typedef struct {
     nl_fit_intervals intervals;          /* ML/REML: profile intervals of none, every free
                                             parameter, or the scale alone */
     double max_work;                     /* ML/REML: the work budget (0: NL_FIT_ML_WORK_MAX) */
+    int drift;                           /* ML/REML: the mean's terms in the coordinates,
+                                            NL_DRIFT_CONSTANT (0, the default), _LINEAR,
+                                            _QUADRATIC or _NONE (a known mean 0) of
+                                            analysis/krige_local.h (see Drift) */
 } nl_fit_options;
 
 /* One fitted parameter. */
@@ -241,6 +247,13 @@ typedef struct {
     double rcond;                         /* the information matrix's reciprocal condition
                                              number (0 when not computable) */
     unsigned flags;                       /* the OR of the parameters' flags */
+    size_t ndrift;                        /* ML/REML: drift coefficients (0 for WLS) */
+    double *drift;                        /* their GLS estimates at the optimum (ndrift; NULL: none) */
+    double *drift_se;                     /* their standard errors, sqrt diag (X' C^-1 X)^-1 */
+    int starts;                           /* ML/REML: local optimisations run (see Search) */
+    int restarts;                         /* ML/REML: restarts from a lower profile point */
+    double gradient;                      /* ML/REML: the largest component of the projected
+                                             gradient of -2 l at the optimum (transformed units) */
 } nl_fit_result;
 
 /* Release a result's parameters (param = NULL, np = 0; NULL or a released
@@ -269,6 +282,16 @@ double nl_fit_ml_work(size_t n, int dim, const nl_fit_options *o);
  * memory limit) and frees it before returning. */
 int nl_fit_ml(const double *coords, const double *values, size_t n, int dim, const nl_fit_options *o,
               nl_fit_result *res);
+
+/* The same with p covariates in the drift: design[i * p + c] the c-th
+ * covariate at point i (row-major n x p; the caller's units), columns of X
+ * after the terms of o->drift (so o->drift = NL_DRIFT_CONSTANT gives an
+ * intercept and the covariates, as gstat's z ~ c1 + c2; NL_DRIFT_NONE the
+ * covariates alone).  res->drift lists the coefficients in X's order.
+ * p = 0 (design may be NULL) is nl_fit_ml.  Errors as nl_fit_ml, and
+ * NL_EINVAL for a non-finite covariate or linearly dependent columns. */
+int nl_fit_ml_design(const double *coords, const double *values, size_t n, int dim, const double *design, size_t p,
+                     const nl_fit_options *o, nl_fit_result *res);
 
 #ifdef __cplusplus
 }
