@@ -177,6 +177,11 @@ extern "C" {
 /* The work budget of a likelihood fit (nl_fit_options.max_work 0), in
  * floating-point operations: see "Cost" above. */
 #define NL_FIT_ML_WORK_MAX 2e12
+/* The search box of a likelihood fit (see Search): scales up to
+ * NL_FIT_SCALE_REACH times the largest distance between data, variances
+ * and nuggets up to NL_FIT_VAR_REACH times the sample variance. */
+#define NL_FIT_SCALE_REACH 10.0
+#define NL_FIT_VAR_REACH 1e6
 /* The least reciprocal condition number of an information matrix whose
  * inverse is reported: sqrt(DBL_EPSILON), see "Identifiability" above. */
 #define NL_FIT_RCOND_MIN 1.4901161193847656e-08
@@ -191,6 +196,8 @@ enum {
 
 typedef enum { NL_FIT_CRESSIE = 0, NL_FIT_PAIRS = 1, NL_FIT_REWEIGHTED = 2, NL_FIT_DISTANCE = 3 } nl_fit_weights;
 typedef enum { NL_FIT_ML = 0, NL_FIT_REML = 1 } nl_fit_likelihood;
+/* How a likelihood fit looks for its optimum (see Search). */
+typedef enum { NL_FIT_SEARCH_GLOBAL = 0, NL_FIT_SEARCH_LOCAL = 1 } nl_fit_search;
 /* Which profile-likelihood intervals an ML or REML fit computes. */
 typedef enum { NL_FIT_INTERVALS_NONE = 0, NL_FIT_INTERVALS_ALL = 1, NL_FIT_INTERVALS_SCALE = 2 } nl_fit_intervals;
 
@@ -212,6 +219,8 @@ typedef struct {
                                             NL_DRIFT_CONSTANT (0, the default), _LINEAR,
                                             _QUADRATIC or _NONE (a known mean 0) of
                                             analysis/krige_local.h (see Drift) */
+    nl_fit_search search;                /* ML/REML: the global search (default) or one local
+                                            optimisation from the start (see Search) */
 } nl_fit_options;
 
 /* One fitted parameter. */

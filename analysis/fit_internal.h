@@ -84,12 +84,13 @@ size_t nl_fit_drift_terms(int drift, int dim);
 
 /* The global search of a likelihood fit (analysis/fit_search.c): from the
  * parameters' current values, a local optimisation, a profile grid over
- * the first free scale and refinement of its best points, then the
+ * the first free scale and refinement of its best points (global 0: the
+ * local optimisation alone), then the
  * projected-gradient test.  Fills u (the optimum), res->objective,
  * iterations, converged, starts; flags (nfree) gets NL_FIT_PARAM_AT_BOUND
  * for parameters at their search box.  NL_OK, NL_ENOMEM, NL_EFAIL (no
  * positive definite covariance found). */
-int nl_fit_ml_search(nl_fit_mldata *d, nl_fit_result *res, double *u, unsigned *flags);
+int nl_fit_ml_search(nl_fit_mldata *d, int global, nl_fit_result *res, double *u, unsigned *flags);
 
 /* A local optimisation of every free parameter from u (in/out): Nelder-
  * Mead rounds until the projected gradient test passes or maxround rounds
@@ -144,8 +145,6 @@ void nl_fit_params_at_bound(const nl_fit_params *p, unsigned *flags);
  * NL_FIT_SCALE_REACH hmax (hmin, hmax: the smallest and largest distance
  * between data), each variance and nugget below NL_FIT_VAR_REACH times
  * var (the sample variance). */
-#define NL_FIT_SCALE_REACH 10.0
-#define NL_FIT_VAR_REACH 1e6
 void nl_fit_params_box(nl_fit_params *p, double hmin, double hmax, double var);
 
 /* Is free parameter k at the upper end of its search box (a scale or a

@@ -257,6 +257,8 @@ static int fit_ml(const double *x, const double *z, size_t n, int dim, const dou
         return st;
     if (p.nfree == 0)
         return NL_ERROR(NL_EINVAL, "fix: every parameter of %s is fixed; expected at least one free", p.family);
+    if ((unsigned)o->search > NL_FIT_SEARCH_LOCAL)
+        return NL_ERROR(NL_EINVAL, "fit: search: expected global (0) or local (1), got %d", (int)o->search);
     if ((st = nl_fit_ml_check(&p, x, z, n, o)) || (st = nl_size_check(2, nn, sizeof(double), 1, NULL)))
         return st;
     if ((st = nl_fit_drift_design(o->drift, x, n, dim, design, np, p.nfree, &d.X)))
@@ -269,7 +271,7 @@ static int fit_ml(const double *x, const double *z, size_t n, int dim, const dou
         st = NL_ERROR(NL_ENOMEM, "out of memory for the %zu x %zu covariance matrix", n, n);
     if (!st)
         ml_start(&d, o->start);
-    if (!st && !(st = nl_fit_ml_search(&d, res, u, flags)) &&
+    if (!st && !(st = nl_fit_ml_search(&d, o->search != NL_FIT_SEARCH_LOCAL, res, u, flags)) &&
         !(st = ml_finish(&d, o, res, u, cov, lower, upper, flags, &rcond))) {
         res->nobs = n;
         /* the free covariance parameters and the drift coefficients */

@@ -166,10 +166,10 @@ static void grid_profile(nl_fit_mldata *d, size_t j, const double *u, double pf[
     }
 }
 
-int nl_fit_ml_search(nl_fit_mldata *d, nl_fit_result *res, double *u, unsigned *flags)
+int nl_fit_ml_search(nl_fit_mldata *d, int global, nl_fit_result *res, double *u, unsigned *flags)
 {
     nl_fit_params *p = d->p;
-    size_t k = p->nfree, j = grid_axis(p);
+    size_t k = p->nfree, j = global ? grid_axis(p) : SIZE_MAX;
     double f, pf[SR_GRID], ug[SR_GRID][NL_FIT_MAX_PARAMS];
     int conv = 0;
     nl_fit_params_to_u(p, u);

@@ -15,7 +15,7 @@
 
 static const char help_usage[] =
     "usage: noiselab fit DATA.tsv|FIELD.exr --model FAMILY|SPEC [--nugget] [--fix NAME=VALUE]...\n"
-    "                    [--method wls|ml|reml]\n"
+    "                    [--method wls|ml|reml] [--drift constant|linear|quadratic]\n"
     "                    [--weights cressie|pairs|reweighted|distance]\n"
     "                    [--width W] [--cutoff C] [--json]\n\n";
 
@@ -100,6 +100,7 @@ typedef struct {
     const char *in;             /* input */
     int json;                   /* --json */
     int method;                 /* 0 wls, 1 ml, 2 reml */
+    int dim;                    /* the data's dimension */
     nl_fit_options o;           /* the library's options */
     nl_variogram_options vo;    /* binning */
     char names[NL_FIT_MAX_FIX][32]; /* --fix names */
@@ -126,11 +127,13 @@ static void parse_fix(void *obj, const char *label, const char *s)
 
 static const char *const methods[] = {"wls", "ml", "reml", NULL};
 static const char *const weights[] = {"cressie", "pairs", "reweighted", "distance", NULL};
+static const char *const drifts[] = {"constant", "linear", "quadratic", NULL}; /* NL_DRIFT_* by index */
 
 static const cli_opt rows[] = {
     CLI_STRING("model", opts_t, o.family), CLI_FLAG("nugget", opts_t, o.nugget),
     CLI_CALL("fix", parse_fix, .flags = CLI_REPEAT),
     CLI_CHOICE("method", opts_t, method, .choices = methods),
+    CLI_CHOICE("drift", opts_t, o.drift, .choices = drifts),
     CLI_CHOICE("weights", opts_t, o.weights, .choices = weights), CLI_OPT_BINS(opts_t, vo),
     CLI_OPT_JSON(opts_t, json), {0}};
 
@@ -145,6 +148,9 @@ static void parse(int argc, char **argv, opts_t *a)
     if (!a->o.family)
         cli_die(2, "--model: expected a family such as markov or spherical, or a nested spec, got none");
     a->o.likelihood = a->method == 2 ? NL_FIT_REML : NL_FIT_ML;
+    if (a->o.drift != NL_DRIFT_CONSTANT && !a->method)
+        cli_die(2, "--drift: expected --method ml or reml with a %s drift (wls fits the variogram of a constant "
+                "mean)", drifts[a->o.drift]);
 }
 
 /* The data as points: a TSV as read, a field as its samples at i * h. */
@@ -200,6 +206,30 @@ static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
         free(start);
     }
     return st;
+}
+
+/* The name of drift term k of the polynomial drift in dim dimensions, in
+ * the order of analysis/fit.h's Drift (coordinates u, v, w centred on and
+ * scaled by the bounding box). */
+static const char *drift_term(size_t k, int dim, char *buf, size_t size)
+{
+    static const char ax[] = "uvw";
+    size_t t = 1;
+    if (k == 0)
+        return snprintf(buf, size, "1"), buf;
+    for (int i = 0; i < dim; i++, t++)
+        if (k == t)
+            return snprintf(buf, size, "%c", ax[i]), buf;
+    for (int i = 0; i < dim; i++)
+        for (int j = i; j < dim; j++, t++)
+            if (k == t) {
+                if (i == j)
+                    snprintf(buf, size, "%c^2", ax[i]);
+                else
+                    snprintf(buf, size, "%c%c", ax[i], ax[j]);
+                return buf;
+            }
+    return snprintf(buf, size, "c%zu", k + 1), buf;
 }
 
 /* An interval's end for the text output ("unbounded" for +infinity). */
@@ -259,6 +289,13 @@ static void print_status(const opts_t *a, const nl_fit_result *r)
                    NL_FIT_RCOND_MIN);
         else if (q->flags & NL_FIT_PARAM_AT_BOUND) {
             fit_range(a->o.family, q->name, &lo, &hi);
+            if (!(hi > 0)) {
+                printf("at bound    %s = %g: at the edge of the search box (scales from a tenth of the smallest "
+                       "to %g times the largest distance between data, variances up to %g times the sample "
+                       "variance): the likelihood still rises beyond it, no optimum inside\n", q->name, q->value,
+                       NL_FIT_SCALE_REACH, NL_FIT_VAR_REACH);
+                continue;
+            }
             printf("at bound    %s = %g: at an end of its fit range %g to %g (the data ask for a value beyond)\n",
                    q->name, q->value, lo, hi);
         }
@@ -299,8 +336,17 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
                    end_text(q->upper, hi, sizeof hi));
     }
     print_status(a, r);
-    if (a->method)
+    if (a->method && a->o.drift == NL_DRIFT_CONSTANT)
         printf("mean        %.6g\n", r->mean);
+    else if (a->method)
+        for (size_t k = 0; k < r->ndrift; k++) {
+            char name[16];
+            printf("drift %-5s %-13.6g %.4g\n", drift_term(k, a->dim, name, sizeof name), r->drift[k], r->drift_se[k]);
+        }
+    if (a->method)
+        printf("search      %d local optimisations%s, projected gradient %.2g%s\n", r->starts,
+               r->restarts ? " (restarted from a lower profile point)" : "", r->gradient,
+               r->restarts > 1 ? " (more than once)" : "");
     printf("objective   %.8g (%s)\n", r->objective, a->method ? "-2 log likelihood" : "weighted sum of squares");
     printf("AIC         %.8g\n", r->aic);
 }
@@ -335,8 +381,18 @@ static void print_json(const opts_t *a, const nl_fit_result *r)
                 json_object_set_new(iv, q->name, json_pack("[f,o]", q->lower,
                                                            isfinite(q->upper) ? json_real(q->upper) : json_null()));
         }
+        json_t *dr = json_array();
+        for (size_t k = 0; k < r->ndrift; k++) {
+            char name[16];
+            json_array_append_new(dr, json_pack("{s:s,s:f,s:f}", "term", drift_term(k, a->dim, name, sizeof name),
+                                                "value", r->drift[k], "se", r->drift_se[k]));
+        }
         json_object_set_new(j, "mean", json_real(r->mean));
         json_object_set_new(j, "intervals", iv);
+        json_object_set_new(j, "drift", dr);
+        json_object_set_new(j, "starts", json_integer(r->starts));
+        json_object_set_new(j, "restarts", json_integer(r->restarts));
+        json_object_set_new(j, "gradient", json_real(r->gradient));
     }
     cli_json_print(j);
 }
@@ -349,6 +405,7 @@ int cli_cmd_fit(int argc, char **argv)
     int st;
     parse(argc, argv, &a);
     p = read_points(a.in);
+    a.dim = p->dim;
     st = fit(&a, p, &r);
     nl_points_free(p);
     if (st) {
