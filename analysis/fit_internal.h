@@ -56,6 +56,7 @@ typedef struct {
     gsl_matrix *M;          /* q x q: X' C^-1 X, then its Cholesky factor */
     gsl_vector *beta;       /* q GLS drift coefficients of the last evaluation */
     double hmin, hmax;      /* the smallest and largest distance between two data */
+    double quad;            /* r' C^-1 r of the last evaluation */
 } nl_fit_mldata;
 
 /* -2 l (ML or REML) at the free parameters u (p->value updated, u taken
@@ -68,6 +69,8 @@ double nl_fit_ml_minus2l_u(nl_fit_mldata *d, const double *u);
  * box (SIZE_MAX: none skipped): the optimisers' objective, which leads a
  * simplex back into the box instead of across a plateau. */
 double nl_fit_ml_minus2l_box(nl_fit_mldata *d, const double *u, size_t skip);
+/* That penalty alone. */
+double nl_fit_ml_penalty(const nl_fit_params *p, const double *u, size_t skip);
 
 /* The design of the drift (analysis/fit_drift.c): X's n x q columns, the
  * polynomial terms of drift (NL_DRIFT_*: 1; 1, u_a; 1, u_a, u_a u_b for
@@ -144,7 +147,8 @@ void nl_fit_params_at_bound(const nl_fit_params *p, unsigned *flags);
 /* The likelihood fits' search box: each free scale between hmin / 10 and
  * NL_FIT_SCALE_REACH hmax (hmin, hmax: the smallest and largest distance
  * between data), each variance and nugget below NL_FIT_VAR_REACH times
- * var (the sample variance). */
+ * var (the sample variance), each nugget above NL_FIT_NUGGET_FLOOR var. */
+#define NL_FIT_NUGGET_FLOOR 1e-10
 void nl_fit_params_box(nl_fit_params *p, double hmin, double hmax, double var);
 
 /* Is free parameter k at the upper end of its search box (a scale or a

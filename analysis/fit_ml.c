@@ -76,7 +76,7 @@ static double minus2l(ml_data *d)
         gsl_blas_ddot(d->beta, d->beta, &ww);
         gsl_blas_dtrsv(CblasLower, CblasTrans, CblasNonUnit, d->M, d->beta);
     }
-    q = yy - ww;
+    q = d->quad = yy - ww;
     q = d->lik == NL_FIT_REML ? (n - (double)d->q) * log(2 * M_PI) + logdet + logm + q
                               : n * log(2 * M_PI) + logdet + q;
     return isfinite(q) ? q : ML_BAD;
@@ -88,16 +88,22 @@ double nl_fit_ml_minus2l_u(nl_fit_mldata *d, const double *u)
     return minus2l(d);
 }
 
-double nl_fit_ml_minus2l_box(nl_fit_mldata *d, const double *u, size_t skip)
+double nl_fit_ml_penalty(const nl_fit_params *p, const double *u, size_t skip)
 {
-    double f = nl_fit_ml_minus2l_u(d, u), pen = 0;
-    for (size_t k = 0; k < d->p->nfree; k++) {
-        size_t i = d->p->free_idx[k];
-        double out = u[k] > d->p->uhi[i] ? u[k] - d->p->uhi[i] : u[k] < d->p->ulo[i] ? d->p->ulo[i] - u[k] : 0;
+    double pen = 0;
+    for (size_t k = 0; k < p->nfree; k++) {
+        size_t i = p->free_idx[k];
+        double out = u[k] > p->uhi[i] ? u[k] - p->uhi[i] : u[k] < p->ulo[i] ? p->ulo[i] - u[k] : 0;
         if (k != skip)
             pen += out * out;
     }
-    return f < ML_BAD ? f + pen : f;
+    return pen;
+}
+
+double nl_fit_ml_minus2l_box(nl_fit_mldata *d, const double *u, size_t skip)
+{
+    double f = nl_fit_ml_minus2l_u(d, u);
+    return f < ML_BAD ? f + nl_fit_ml_penalty(d->p, u, skip) : f;
 }
 
 static double objective(const gsl_vector *u, void *params)

@@ -216,6 +216,9 @@ void nl_fit_params_box(nl_fit_params *p, double hmin, double hmax, double var)
             p->ulo[k] = log(hmin / 10), p->uhi[k] = log(NL_FIT_SCALE_REACH * hmax);
         if ((r == NL_ROLE_VARIANCE || r == NL_ROLE_NUGGET) && var > 0)
             p->uhi[k] = log(NL_FIT_VAR_REACH * var);
+        /* a nugget this small is 0 (nl_fit_params_at_bound): no further */
+        if (r == NL_ROLE_NUGGET && var > 0)
+            p->ulo[k] = log(NL_FIT_NUGGET_FLOOR * var);
     }
 }
 
