@@ -312,9 +312,12 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
     static const char *const wname[] = {" (cressie weights)", " (pairs weights)", " (reweighted weights)",
                                         " (distance weights)"};
     printf("model       %s\n", r->spec);
-    printf("method      %s%s on %zu %s, %s after %d steps\n", mname[a->method],
-           a->method ? "" : wname[a->o.weights], r->nobs,
-           a->method ? "data" : "variogram bins", r->converged ? "converged" : "NOT converged", r->iterations);
+    printf("method      %s%s on %zu %s, %s after %d steps", mname[a->method], a->method ? "" : wname[a->o.weights],
+           r->nobs, a->method ? "data" : "variogram bins", r->converged ? "converged" : "NOT converged", r->iterations);
+    if (a->method)
+        printf(" (%d local optimisation%s%s, projected gradient %.2g)", r->starts, r->starts == 1 ? "" : "s",
+               r->restarts ? ", restarted from a profile point below the optimum" : "", r->gradient);
+    printf("\n");
     printf("parameter   value         standard error%s\n", a->method ? "   95% profile-likelihood interval" : "");
     for (size_t k = 0; k < r->np; k++) {
         char se[32], lo[32], hi[32];
@@ -343,10 +346,6 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
             char name[16];
             printf("drift %-5s %-13.6g %.4g\n", drift_term(k, a->dim, name, sizeof name), r->drift[k], r->drift_se[k]);
         }
-    if (a->method)
-        printf("search      %d local optimisations%s, projected gradient %.2g%s\n", r->starts,
-               r->restarts ? " (restarted from a lower profile point)" : "", r->gradient,
-               r->restarts > 1 ? " (more than once)" : "");
     printf("objective   %.8g (%s)\n", r->objective, a->method ? "-2 log likelihood" : "weighted sum of squares");
     printf("AIC         %.8g\n", r->aic);
 }
