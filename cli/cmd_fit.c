@@ -25,16 +25,22 @@ static const char help[] =
     "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2 of the fitted model "
     "(cressie: Cressie's criterion; reweighted: the weights held at the last fit and refitted to a "
     "fixed point, gstat's fit.method 2), N (pairs, fit.method 1) or N/h^2 (distance, fit.method 7).  "
-    "ml, reml: the Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step (refused "
-    "above a work budget: below), started from the wls fit.  Prints the fitted model as a spec for --acf, "
+    "ml, reml: the Gaussian likelihood of the data with an unknown mean (--drift: constant, or linear or "
+    "quadratic in the coordinates, as krige's; reml: Harville's restricted likelihood), O(n^3) per step "
+    "(refused above a work budget: below), started from the wls fit, searched over a box (scales up to 10 "
+    "times the largest distance) by a profile grid over the scale and local optimisations until the "
+    "projected gradient is small; a scale or variance that runs to the box's edge is \"at bound\" and the "
+    "fit NOT converged.  Prints the fitted model as a spec for --acf, "
     "standard errors, the objective and AIC (compare models fitted by one method to one data set: "
     "lower is better).  ml and reml also print each free parameter's 95% profile-likelihood interval "
     "(the values within 3.841 of the minimum -2 log likelihood, the others re-optimised; \"unbounded\" "
     "when the data set no upper limit).  --json keys: model, parameters, standard_errors, objective, "
     "aic, method, n, converged, iterations, status (per parameter: ok, fixed, at bound, or not "
     "identifiable (singular information)), flags (singular-information, at-bound, not-converged), rcond "
-    "(the information matrix's reciprocal condition number), and for ml and reml mean and intervals "
-    "([lower, upper] per free parameter, upper null when unbounded).";
+    "(the information matrix's reciprocal condition number), and for ml and reml mean, intervals "
+    "([lower, upper] per free parameter, upper null when unbounded), drift ([{term, value, se}]: 1, u, v, "
+    "u^2, uv, v^2 in the coordinates centred on and scaled by the bounding box), starts, restarts and "
+    "gradient.";
 
 static const char help_errors[] =
     "Standard errors: ml and reml's describe the spread of the estimates for\n"
@@ -67,7 +73,7 @@ static void fit_ranges(char *buf, size_t size)
  * from the registry, then the rest. */
 static void print_help(void)
 {
-    char families[512], shapes[512] = "", text[4096];
+    char families[512], shapes[512] = "", text[6144];
     size_t len = 0;
     nl_family_names(NL_FAMILY_FIT, 0, ", ", families, sizeof families);
     for (size_t i = 0; i < nl_family_count(); i++) {

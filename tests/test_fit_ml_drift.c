@@ -180,3 +180,42 @@ Test(fit_ml_drift, refuses_dependent_and_bad_covariates)
     cr_expect_eq(nl_fit_ml(x, z, N, 2, &o, &r), NL_EINVAL);
     cr_expect(strstr(nl_errmsg(), "drift"), "%s", nl_errmsg());
 }
+
+/* The command: --drift linear gives JSON's drift (1, u, v with standard
+ * errors) equal to the library's; --drift with wls is refused, exit 2,
+ * naming the option. */
+Test(fit_ml_drift, cli_reports_drift)
+{
+    double x[2 * N], z[N];
+    char path[512], err[512];
+    nl_fit_result r;
+    make_data(x, z);
+    snprintf(path, sizeof path, "%s/drift.tsv", scratch_dir());
+    FILE *f = fopen(path, "w");
+    cr_assert(f);
+    fprintf(f, "x\ty\tvalue\n");
+    for (int i = 0; i < N; i++)
+        fprintf(f, "%.17g\t%.17g\t%.17g\n", x[2 * i], x[2 * i + 1], z[i]);
+    fclose(f);
+    json_t *j = run_noiselab_json("fit drift.tsv --model markov --nugget --method ml --drift linear --json");
+    json_t *d = json_object_get(j, "drift");
+    cr_assert(json_array_size(d) == 3, "drift: %zu terms", json_array_size(d));
+    static const char *terms[] = {"1", "u", "v"};
+    nl_fit_options o = {.family = "markov", .nugget = 1, .drift = NL_DRIFT_LINEAR};
+    cr_assert_eq(nl_fit_ml(x, z, N, 2, &o, &r), NL_OK, "%s", nl_errmsg());
+    for (int k = 0; k < 3; k++) {
+        json_t *t = json_array_get(d, (size_t)k);
+        double v = json_real_value(json_object_get(t, "value"));
+        cr_expect_str_eq(json_string_value(json_object_get(t, "term")), terms[k]);
+        /* the command starts from the wls fit, the library from its own
+         * start: the same optimum to the simplex's 1e-5 in log units */
+        cr_expect(fabs(v - r.drift[k]) < 1e-4 * (fabs(r.drift[k]) + 0.1), "term %s: %g, library %g", terms[k], v,
+                  r.drift[k]);
+        cr_expect(json_real_value(json_object_get(t, "se")) > 0, "term %s: no standard error", terms[k]);
+    }
+    cr_expect(json_object_get(j, "starts") && json_object_get(j, "gradient"), "no starts or gradient");
+    nl_fit_result_free(&r);
+    json_decref(j);
+    cr_expect_eq(run_noiselab("fit drift.tsv --model markov --drift linear", NULL, 0, err, sizeof err), 2);
+    cr_expect(strstr(err, "--drift") && strstr(err, "ml or reml"), "%s", err);
+}
