@@ -321,6 +321,11 @@ int nl_fit_ml_search(nl_fit_mldata *d, int global, nl_fit_result *res, double *u
             }
         }
         free(g);
+        /* no candidate with a positive definite covariance: from the start */
+        if (!(f < NL_FIT_ML_BAD)) {
+            f = nl_fit_ml_refine(d, u, 4, &conv, &res->iterations);
+            res->starts++;
+        }
     }
     res->objective = nl_fit_ml_minus2l_u(d, u);
     if (!(res->objective < NL_FIT_ML_BAD))
