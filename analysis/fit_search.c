@@ -1,11 +1,15 @@
-/* The global search of a likelihood fit over its parameter box: a local
+/* The global search of a likelihood fit over its parameter box: a rough
  * optimisation from the start, a profile grid over the scale (each point
- * optimised in the other parameters), refinement of the grid's best local
- * minima, and a convergence test on the projected gradient.  A likelihood
- * can have several local minima in the scale (the spherical range: each
- * pair distance the range passes changes the correlation's support), and
- * a simplex from one start finds the nearest; the grid sees them all at a
- * resolution of a factor (3 hmax / hmin')^(1/8). */
+ * optimised in the other parameters, the common variance factor in closed
+ * form), zoomed around its lowest minima, local optimisations from the
+ * lowest points of distinct valleys, and a convergence test on the
+ * projected gradient.  A likelihood can have several local minima in the
+ * scale (the spherical range: each pair distance the range passes changes
+ * the correlation's support), and a simplex from one start finds the
+ * nearest (analysis/fit.h, "Search").  The gradient test: every component
+ * of the projected gradient of -2 l in the transformed (unit-free)
+ * parameters below 1e-4 n; -2 l grows about as n, so this is a relative
+ * test, and a step of du changes -2 l by under 1e-4 n du there. */
 #include "fit_internal.h"
 #include "../core/nl_error.h"
 
@@ -36,7 +40,7 @@ typedef struct {
     nl_fit_mldata *d;               /* the likelihood */
     size_t j;                       /* the parameter held (SIZE_MAX: none) */
     double t;                       /* its value */
-    int conc;                       /* the variances concentrated out (see concentrate) */
+    int conc;                       /* the variances concentrated out (can_concentrate) */
     size_t anchor;                  /* then the free variance held (their common factor) */
     double u[NL_FIT_MAX_PARAMS];    /* the held parameters' values */
 } sr_fn;
