@@ -143,7 +143,7 @@
  * closed form when every variance and nugget is free and the model a sum,
  * Mardia and Marshall 1984), then 6 more points around each of its three
  * lowest local minima (a quarter of the spacing apart: the spherical
- * model's valleys can be a tenth of the range wide); then up to three of
+ * model's valleys can be a tenth of the range wide); then up to two of
  * the lowest points in distinct valleys, within 2 of the lowest and 0.5 of
  * the best refined, are each optimised locally.  A local optimisation
  * (alone with NL_FIT_SEARCH_LOCAL) is GSL's Nelder-Mead simplex

@@ -9,7 +9,7 @@
 
 /* Likelihood evaluations of a fit with k free parameters and m profile
  * intervals (the estimate of fit.h's "Cost"): the search (its grid of 35
- * profile points and up to three local optimisations: measured 1000 to
+ * profile points and up to two local optimisations: measured 700 to
  * 1500 for k = 3 on Meuse, analysis/fit_search.c), the Hessian's stencil,
  * and per interval two ends of about 10 profile points, each an inner
  * Nelder-Mead over the other k - 1 parameters. */

@@ -22,7 +22,7 @@
 #define SR_GRID 17          /* profile grid points */
 #define SR_GRID_HI 3.0     /* the grid's largest scale, times hmax */
 #define SR_GRID_SPAN 1e3   /* and its smallest at least hmax / this */
-#define SR_REFINE 3        /* grid points refined at most */
+#define SR_REFINE 2        /* grid points refined at most */
 #define SR_ZOOM 3          /* coarse minima zoomed into */
 #define SR_ZOOM_STEPS 3    /* points either side of each */
 #define SR_POINTS (SR_GRID + 2 * SR_ZOOM * SR_ZOOM_STEPS + 1)
