@@ -37,8 +37,6 @@ def _block(block, points, dim):
     b = ffi.new("nl_krige_block *")
     for a, w in enumerate(items):
         b.size[a] = as_float("block", w, 0.0, lo_open=True)
-        if not math.isfinite(b.size[a]):
-            refuse("block", want, block)
     b.points = 0 if points is None else as_int("block_points", points, 2, _AXIS_MAX)
     return b
 

@@ -193,6 +193,7 @@ def test_fit_of_a_table_is_the_cli(cli, tmp_path, meuse, weights):
 @pytest.mark.parametrize("kw,name,shown", [
     (dict(block=(40,)), "block", "(40,)"),
     (dict(block=(40, -1)), "block", "-1"),
+    (dict(block=(40, float("inf"))), "block", "inf"),
     (dict(block="40x40"), "block", "'40x40'"),
     (dict(block=(40, 40), block_points=1), "block_points", "1"),
     (dict(block=(40, 40), block_points=65), "block_points", "65"),
