@@ -242,3 +242,24 @@ def test_bad_calls(cli, tmp_path, meuse):
                      (dict(variogram=str(tmp_path / "none.tsv")), ".*none.tsv")):
         with pytest.raises(ValueError, match="^" + name):
             noiselab.fit(model="spherical", **kw)
+
+
+def test_one_dimension_is_the_cli(cli, tmp_path):
+    """1D: block=W (one edge), the CLI's TSV of cell centres and values
+    (10 digits); the indicator's table of columns x, p1 .. pK."""
+    rng = np.random.default_rng(2)
+    x = np.sort(rng.uniform(0, 100, 40))
+    v = np.exp(np.sin(x / 15) + rng.normal(0, 0.3, 40))
+    tsv = tmp_path / "d1.tsv"
+    tsv.write_text("x\tvalue\n" + "".join("%.17g\t%.17g\n" % (a, c) for a, c in zip(x, v)))
+    b, i = str(tmp_path / "b.tsv"), str(tmp_path / "i.tsv")
+    cli("krige", "--data", tsv, "--acf", "spherical:scale=30", "--block", "5", "--block-points", "3", "--grid", "6",
+        "--extent", "0:100", "-o", b)
+    r = cli("krige", "--data", tsv, "--acf", "spherical:scale=30", "--indicator", "0.7,1.5", "--grid", "6",
+            "--extent", "0:100", "-o", i)
+    est = noiselab.Krige(x, v, "spherical:scale=30", block=5, block_points=3).grid((0, 100), 6, variance=False)
+    np.testing.assert_allclose(est, table(b)["value"], rtol=1e-9)
+    P, nc = noiselab.Krige(x, v, "spherical:scale=30", indicator=(0.7, 1.5)).grid("0:100", 6)
+    t = table(i)
+    np.testing.assert_allclose(P, [t["p1"], t["p2"]], rtol=1e-9, atol=1e-15)
+    assert "corrected at %d of 6 cells" % nc in r.stderr
