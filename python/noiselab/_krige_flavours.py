@@ -338,24 +338,26 @@ def _table(variogram):
     return _dptr(d), _dptr(g), _dptr(p), d.size, (d, g, p)
 
 
-def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugget=False, fix=None, method="wls",
-        weights=None, width=None, cutoff=None, bins="gstat", variogram=None):
-    """With variogram=, the WLS fit of a given variogram, as ``noiselab fit --variogram VARIO.tsv``: a table path
-    (columns distance, gamma, pairs of noiselab variogram -o, or gstat's
-    np, dist, gamma) or (distance, gamma, pairs) (variogram()'s result;
-    bins with 0 pairs are skipped).  The bins are fitted as they are (no
-    width, cutoff, bins, nor data); the model is checked in 2D, as the
-    CLI's.  Returns the dict of a wls fit."""
+def fit(*args, variogram=None, **kw):
+    """With variogram=, the WLS fit of a given variogram, as ``noiselab fit
+    --variogram VARIO.tsv``: a table path (columns distance, gamma, pairs of
+    noiselab variogram -o, or gstat's np, dist, gamma) or (distance, gamma,
+    pairs) (variogram()'s result; bins with 0 pairs are skipped), with
+    model=, nugget=, fix= and weights= alone (the bins are fitted as they
+    are: no data, width, cutoff or bins; method wls).  The model is checked
+    in 2D, as the CLI's.  Returns the dict of a wls fit."""
     if variogram is None:
-        return _analysis.fit(points, values, field, spacing, model, nugget, fix, method, weights, width, cutoff, bins)
-    if points is not None or values is not None or field is not None:
-        raise Error("variogram: expected no points, values or field with a variogram to fit")
+        return _analysis.fit(*args, **kw)
+    extra = sorted(set(kw) - {"model", "nugget", "fix", "weights", "method"})
+    if args or extra:
+        raise Error("variogram: expected only model, nugget, fix and weights with a variogram to fit (its bins as "
+                    "they are), got %s" % ", ".join(["%d positional" % len(args)] * bool(args) + extra))
+    method = kw.get("method", "wls")
     if method != "wls":
         refuse("method", '"wls" with variogram (a likelihood needs the data)', method)
-    if width is not None or cutoff is not None or bins != "gstat":
-        raise Error("variogram: expected no width, cutoff or bins (the given bins are fitted as they are), got "
-                    "width=%r, cutoff=%r, bins=%r" % (width, cutoff, bins))
-    o, keep = _analysis._fit_options(model, nugget, fix, "distance" if weights is None else weights)
+    weights = kw.get("weights")
+    o, keep = _analysis._fit_options(kw.get("model", "markov"), kw.get("nugget", False), kw.get("fix"),
+                                     "distance" if weights is None else weights)
     d, g, p, nb, keep_vg = _table(variogram)
     r = ffi.new("nl_fit_result *")
     check(lib.nl_fit_check_options(o, 2))

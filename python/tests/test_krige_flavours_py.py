@@ -222,6 +222,9 @@ def test_bad_arguments(meuse, kw, name, shown):
     assert str(e.value).startswith(name + ":") and shown in str(e.value), str(e.value)
 
 
+PTS1 = [[0.0, 0.0], [1.0, 1.0]]
+
+
 def test_bad_calls(cli, tmp_path, meuse):
     p, z, tsv, _ = meuse
     with pytest.raises(ValueError, match="^block: .*cross_validate"):
@@ -239,7 +242,8 @@ def test_bad_calls(cli, tmp_path, meuse):
                      (dict(variogram=([1, -2], [0.1, 0.2], [3, 4])), "variogram: distance of bin 2 is -2"),
                      (dict(variogram=([1, 2], [0.1, 0.2], [3, 4.5])), "variogram: pairs of bin 2 is 4.5"),
                      (dict(variogram=([1, 2], [0.1, 0.2])), "variogram: expected"),
-                     (dict(variogram=([1, 2], [0.1, 0.2], [3, 4]), cutoff=5), "variogram: .*cutoff=5"),
+                     (dict(variogram=([1, 2], [0.1, 0.2], [3, 4]), cutoff=5), "variogram: .*got cutoff"),
+                     (dict(variogram=([1, 2], [0.1, 0.2], [3, 4]), points=PTS1), "variogram: .*got points"),
                      (dict(variogram=str(tmp_path / "none.tsv")), ".*none.tsv")):
         with pytest.raises(ValueError, match="^" + name):
             noiselab.fit(model="spherical", **kw)
