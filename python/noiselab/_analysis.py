@@ -447,6 +447,7 @@ def variogram(points=None, values=None, field=None, spacing=1.0, width=None, cut
 
 
 _WEIGHTS = ("cressie", "pairs", "reweighted", "distance", "ols")  # nl_fit_weights by index
+_DRIFTS = ("constant", "linear", "quadratic")  # NL_DRIFT_* by index
 # gstat's fit.method numbers
 _GSTAT_WEIGHTS = {1: "pairs", 2: "reweighted", 6: "ols", 7: "distance"}
 
@@ -461,7 +462,7 @@ def _fit_status(q):
 
 
 def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugget=False, fix=None, method="wls",
-        weights=None, width=None, cutoff=None, bins="gstat"):
+        weights=None, width=None, cutoff=None, bins="gstat", drift="constant", covariates=None):
     """Fit a model family to data, as ``noiselab fit``: weighted least
     squares on the empirical variogram (method="wls", weights distance, the
     default, gstat's fit.method 7; pairs, 1; reweighted, 2; ols, 6; or cressie;
@@ -472,7 +473,14 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
     model: a family whose entry in models() has fit=True, or a spec of
     them with starting values or nested ("spherical:var=0.5,scale=12 +
     markov:scale=40": every structure's parameters, named var.1, scale.2,
-    ...); fix: {"nu": 1.5, ...} parameters held.  Returns a dict: spec
+    ...); fix: {"nu": 1.5, ...} parameters held.  drift (ml, reml; as
+    ``noiselab fit --drift``): "constant", "linear" or "quadratic" in the
+    coordinates (centred on and scaled by the data's bounding box), and
+    covariates: an (n, p) array of external covariates in the drift after
+    those terms (gstat's z ~ x + y + c); the result's "drift" lists the GLS
+    coefficients in that order and "drift_se" their standard errors.  The
+    likelihood is searched over a box; "starts", "restarts" and "gradient"
+    report the search (analysis/fit.h).  Returns a dict: spec
     (ready for acf=), parameters, standard_errors, intervals (ml/reml:
     {name: (lower, upper)}), objective, aic, mean (ml/reml), n, converged,
     iterations, status ({name: "ok", "fixed", "at bound" or "not
@@ -491,6 +499,18 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
         weights = "distance" if method == "wls" else "cressie"
     o, keep = _fit_options(model, nugget, fix, weights)
     o.likelihood = 1 if method == "reml" else 0
+    o.drift = _DRIFTS.index(as_choice("drift", drift, _DRIFTS))
+    cov = None
+    if covariates is not None:
+        cov = np.ascontiguousarray(np.asarray(covariates, dtype=float))
+        if cov.ndim == 1:
+            cov = cov.reshape(-1, 1)
+        if cov.ndim != 2 or cov.shape[0] != p.shape[0] or cov.shape[1] == 0:
+            raise Error("covariates: expected an array of %d rows (one per datum) and at least one column, got "
+                        "shape %s" % (p.shape[0], cov.shape))
+    if method == "wls" and (o.drift or cov is not None):
+        raise Error("drift: expected method ml or reml with a drift or covariates (wls fits the variogram of a "
+                    "constant mean), got method wls")
     vo = _vopts(width, cutoff, "matheron", None, None, bins)
     r = ffi.new("nl_fit_result *")
     dim = p.shape[1]
@@ -508,7 +528,10 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
                 lib.nl_fit_result_free(r)
                 o.start = start
                 o.intervals = 1
-                check(lib.nl_fit_ml(_dptr(p), _dptr(v), p.shape[0], dim, o, r))
+                if cov is None:
+                    check(lib.nl_fit_ml(_dptr(p), _dptr(v), p.shape[0], dim, o, r))
+                else:
+                    check(lib.nl_fit_ml_design(_dptr(p), _dptr(v), p.shape[0], dim, _dptr(cov), cov.shape[1], o, r))
         return _fit_result(r, method)
     finally:
         lib.nl_fit_result_free(r)
@@ -550,6 +573,9 @@ def _fit_result(r, method):
                status={nm: _fit_status(x) for nm, x in zip(names, q)}, rcond=r.rcond)
     if method != "wls":
         res["mean"] = r.mean
+        res["drift"] = [r.drift[k] for k in range(r.ndrift)]
+        res["drift_se"] = [r.drift_se[k] for k in range(r.ndrift)]
+        res.update(starts=r.starts, restarts=r.restarts, gradient=r.gradient)
         res["intervals"] = {nm: (x.lower, x.upper) for nm, x in zip(names, q)
                             if not (math.isnan(x.lower) or math.isnan(x.upper))}
     return res
