@@ -135,7 +135,7 @@ int nl_condsim_plan_alloc(const nl_model *m, size_t n, const double *pts, const 
     /* what kriging refuses in the model and the data, refused now, once */
     if (nmax) {
         nl_krige_local *kl;
-        nl_krige_local_options o = {nmax, 0, simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, mean};
+        nl_krige_local_options o = {.nmax = nmax, .drift = simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, .mean = mean};
         if ((st = nl_krige_local_alloc(m, grid->dim, n, pts, val, &o, &kl)))
             return st;
         nl_krige_local_free(kl);
@@ -163,7 +163,7 @@ static int krige_residual(const nl_condsim_plan *p, const double *r, nl_field *k
     int st;
     if (p->nmax) {
         nl_krige_local *kl;
-        nl_krige_local_options o = {p->nmax, 0, p->simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, p->mean};
+        nl_krige_local_options o = {.nmax = p->nmax, .drift = p->simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, .mean = p->mean};
         if ((st = nl_krige_local_alloc(p->m, p->dim, p->n, p->pts, r, &o, &kl)))
             return st;
         st = nl_krige_local_grid(kl, p->lo, k, NULL);
