@@ -47,7 +47,8 @@ typedef struct {
     size_t ncov;        /* external drift: covariates per datum (0: none; not with _NONE) */
     const double *cov;  /* n * ncov covariates of the data, row-major (copied by the plan) */
     int missing;   /* 1: a location with no datum in its neighbourhood, or fewer than the
-                    * drift terms, gets NaN estimate and variance (gstat's NA), not an error */
+                    * drift terms, gets NaN estimate and variance (gstat's NA), not an error;
+                    * when every location is missing, the first one's error is returned */
 } nl_krige_local_options;
 
 typedef struct nl_krige_local nl_krige_local;

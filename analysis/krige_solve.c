@@ -267,7 +267,25 @@ static int run_global(const nl_krige_local *k, const locs_t *L, size_t count, do
     return outcome(k, L, nomem, bad);
 }
 
+static int run_all(const nl_krige_local *k, const locs_t *L, size_t count, double *est, double *var);
+
+/* As run_all; when every location is missing (o.missing), the error of the
+ * first as if missing locations were refused: a map or table of nothing
+ * but missing values is a mistake (a radius too small for the data). */
 static int run(const nl_krige_local *k, const locs_t *L, size_t count, double *est, double *var)
+{
+    int st = run_all(k, L, count, est, var);
+    size_t i = 0;
+    while (!st && k->o.missing && i < count && isnan(est[i]))
+        i++;
+    if (st || !k->o.missing || i < count || count == 0)
+        return st;
+    nl_krige_local strict = *k;
+    strict.o.missing = 0;
+    return outcome(&strict, L, 0, 0);
+}
+
+static int run_all(const nl_krige_local *k, const locs_t *L, size_t count, double *est, double *var)
 {
     size_t bad = SIZE_MAX;
     int nomem = 0;
