@@ -79,6 +79,12 @@ static void read_pairs(const char *name, size_t n, int c0, double *a, double *b)
 /* Locations whose nmax-th and (nmax + 1)-th nearest data are at the same
  * distance: the neighbourhood is a tie, broken by gstat in the order of its
  * quadtree's priority queue (src/nsearch.c) and here by data index. */
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
 static int nmax_tie(const double *x, const double *pts, size_t nmax)
 {
     double d2[NDATA];
@@ -86,17 +92,8 @@ static int nmax_tie(const double *x, const double *pts, size_t nmax)
         double dx = x[0] - pts[2 * i], dy = x[1] - pts[2 * i + 1];
         d2[i] = dx * dx + dy * dy;
     }
-    double kth = INFINITY, next = INFINITY; /* the nmax-th and (nmax+1)-th smallest, by counting */
-    for (size_t i = 0; i < NDATA; i++) {
-        size_t below = 0, same = 0;
-        for (size_t j = 0; j < NDATA; j++)
-            below += d2[j] < d2[i], same += d2[j] == d2[i];
-        if (below < nmax && below + same >= nmax)
-            kth = d2[i];
-        if (below <= nmax && below + same > nmax)
-            next = d2[i];
-    }
-    return kth == next;
+    qsort(d2, NDATA, sizeof *d2, cmp_double);
+    return d2[nmax - 1] == d2[nmax];
 }
 
 /* The grid's coordinates from grid.tsv (x, y first). */
