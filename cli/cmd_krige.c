@@ -18,7 +18,7 @@
 static const char help[] =
     "usage: noiselab krige --data PTS.tsv --acf SPEC --grid W[xH[xD]] --extent a:b[,c:d[,e:f]]\n"
     "                      [--mean M] [--strict] [--json] -o OUT.exr|OUT.tsv [--variance VAR.exr]\n"
-    "                      [--nmax K] [--radius D] [--drift TERMS]\n"
+    "                      [--nmax K] [--radius D] [--drift TERMS [--covariate NAME=FIELD.exr]...]\n"
     "       noiselab krige --data PTS.tsv --acf SPEC --at TABLE.tsv -o OUT.tsv [--nmax K] [--radius D]\n"
     "                      [--drift TERMS] [--mean M] [--json]\n"
     "       noiselab krige --data PTS.tsv --acf SPEC --cross-validate [K] [--folds COLUMN | --seed S]\n"
@@ -40,7 +40,9 @@ static const char help[] =
     "--drift TERMS: universal kriging; comma-separated terms added to the constant:\n"
     "linear (x, y[, z]; or name them: x,y), quadratic, and names of numeric columns of\n"
     "--data and of --at (an external drift).  gstat's value ~ x + y is --drift linear,\n"
-    "value ~ sqrt(dist) is --drift sdist with a column sdist = sqrt(dist) in both.\n"
+    "value ~ sqrt(dist) is --drift sdist with a column sdist = sqrt(dist) in both.  On a\n"
+    "grid, --covariate NAME=FIELD.exr gives each covariate's values at the cells (a\n"
+    "field of the grid's size, sample i at cell i).\n"
     "--at TABLE.tsv: predict at the table's points (columns x [y [z]], any others):\n"
     "-o gets the table's rows as read (the original text of every cell) and two\n"
     "columns, estimate and variance (17 significant digits; NA when missing).\n"
@@ -159,9 +161,6 @@ static void parse(int argc, char **argv, opts_t *a)
         return;
     }
     cli_opt_need("krige", rows, a);
-    if (a->pr.ncov)
-        cli_die(2, "--drift: covariates (\"%s\") are known at the points of a table only; expected --at PTS.tsv "
-                "with the same columns, not --grid", a->pr.drift);
     if ((a->drift != NL_DRIFT_CONSTANT || a->pr.ncov) && !isnan(a->mean))
         cli_die(2, "--mean: expected no --drift with a known mean, got --mean %g", a->mean);
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);
@@ -352,8 +351,7 @@ static int cli_krige_local(opts_t *a)
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     nl_field *f = cli_field_alloc(a->gdim, a->g, h), *vf = a->vout ? cli_field_alloc(a->gdim, a->g, h) : NULL;
-    if ((st = nl_krige_local_grid(k, a->lo, f, vf)))
-        cli_die(st == NL_EINVAL ? 2 : 1, "--grid: %s", nl_errmsg());
+    kp_grid(&a->pr, k, a->lo, f, vf);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     nl_krige_info info = {.n = pt->n, .mean = NAN};

@@ -13,7 +13,26 @@
 #include <string.h>
 #include <time.h>
 
+static void parse_covariate(void *obj, const char *label, const char *s)
+{
+    kp_opts *p = obj;
+    const char *eq = strchr(s, '=');
+    size_t k = p->nfield;
+    if (!eq || eq == s || !eq[1] || (size_t)(eq - s) >= sizeof p->fname[0])
+        cli_die(2, "%s: expected NAME=FIELD.exr, got \"%s\"", label, s);
+    if (k == KP_MAX_COV)
+        cli_die(2, "%s: expected at most %d, got \"%s\" beyond them", label, KP_MAX_COV, s);
+    memcpy(p->fname[k], s, (size_t)(eq - s));
+    p->fname[k][eq - s] = 0;
+    for (size_t j = 0; j < k; j++)
+        if (!strcmp(p->fname[j], p->fname[k]))
+            cli_die(2, "%s: %s given twice (\"%s\"); expected one field per covariate", label, p->fname[k], s);
+    p->fpath[k] = eq + 1;
+    p->nfield++;
+}
+
 const cli_opt kp_rows[] = {
+    CLI_CALL("covariate", parse_covariate, .flags = CLI_REPEAT),
     CLI_STRING("at", kp_opts, at),
     CLI_STRING("drift", kp_opts, drift, CLI_GIVEN(kp_opts, given_drift)),
     CLI_COUNT("cross-validate", kp_opts, kfold, CLI_GIVEN(kp_opts, given_cv), .flags = CLI_OPTIONAL, .lo = 2),
@@ -63,6 +82,16 @@ void kp_parse(kp_opts *p, int argc, char **argv)
         cli_die(2, "--folds: applies to --cross-validate");
     if (p->at && p->given_cv)
         cli_die(2, "--at: expected no --cross-validate (it predicts the data points)");
+    if (p->nfield && (p->at || p->given_cv))
+        cli_die(2, "--covariate: applies to grid outputs (--at and --cross-validate read covariates from tables)");
+    for (size_t j = 0; j < p->nfield; j++) {
+        size_t i = 0;
+        while (i < p->ncov && strcmp(p->cov[i], p->fname[j]))
+            i++;
+        if (i == p->ncov)
+            cli_die(2, "--covariate: \"%s\" is not a covariate of --drift%s%s; expected one named there", p->fname[j],
+                    p->drift ? " " : "", p->drift ? p->drift : "");
+    }
 }
 
 /* Column name of t, or exit 2 naming what wanted it. */
@@ -160,6 +189,52 @@ size_t kp_missing(const double *est, size_t count, const char *what)
         fprintf(stderr, "noiselab: krige: %zu of %zu %s have no data in their neighbourhood (or fewer than the drift "
                 "terms): written as missing\n", miss, count, what);
     return miss;
+}
+
+/* The covariates of the grid's cells (count * ncov) from --covariate. */
+static double *grid_cov(const kp_opts *p, const nl_field *f)
+{
+    double *cov = cli_malloc(f->count * p->ncov * sizeof *cov);
+    for (size_t j = 0; j < p->ncov; j++) {
+        size_t i = 0;
+        while (i < p->nfield && strcmp(p->fname[i], p->cov[j]))
+            i++;
+        if (i == p->nfield)
+            cli_die(2, "--drift: covariate \"%s\" on a grid needs its values at the cells: expected --covariate "
+                    "%s=FIELD.exr (or --at TABLE.tsv)", p->cov[j], p->cov[j]);
+        nl_meta meta;
+        nl_field *c = cli_read_field(p->fpath[i], &meta);
+        int same = c->dim == f->dim;
+        for (int a = 0; same && a < f->dim; a++)
+            same = c->n[a] == f->n[a];
+        if (!same)
+            cli_die(2, "--covariate: %s has %zu x %zu x %zu samples; expected the grid's %zu x %zu x %zu", p->fpath[i],
+                    c->n[0], c->dim > 1 ? c->n[1] : 1, c->dim > 2 ? c->n[2] : 1, f->n[0], f->dim > 1 ? f->n[1] : 1,
+                    f->dim > 2 ? f->n[2] : 1);
+        for (size_t t = 0; t < f->count; t++)
+            cov[t * p->ncov + j] = c->data[t];
+        nl_field_free(c);
+    }
+    return cov;
+}
+
+void kp_grid(const kp_opts *p, const nl_krige_local *k, const double *lo, nl_field *f, nl_field *vf)
+{
+    int st, dim = f->dim;
+    if (!p->ncov) {
+        if ((st = nl_krige_local_grid(k, lo, f, vf)))
+            cli_die(st == NL_EINVAL ? 2 : 1, "--grid: %s", nl_errmsg());
+        return;
+    }
+    double *cov = grid_cov(p, f), *x = cli_malloc(f->count * (size_t)dim * sizeof *x);
+    for (size_t t = 0; t < f->count; t++) { /* cell t = i + n0 (j + n1 l), as nl_krige_local_grid */
+        size_t ix[3] = {t % f->n[0], dim > 1 ? t / f->n[0] % f->n[1] : 0, dim > 2 ? t / (f->n[0] * f->n[1]) : 0};
+        for (int a = 0; a < dim; a++)
+            x[t * (size_t)dim + (size_t)a] = lo[a] + ((double)ix[a] + 0.5) * f->h[a];
+    }
+    if ((st = nl_krige_local_eval_at(k, f->count, x, cov, f->data, vf ? vf->data : NULL)))
+        cli_die(st == NL_EINVAL ? 2 : 1, "--grid: %s", nl_errmsg());
+    free(cov), free(x);
 }
 
 /* The --at table and its coordinates and covariates. */

@@ -26,6 +26,9 @@ typedef struct {
     unsigned axes;             /* coordinates named in --drift (bit a: axis a) */
     size_t ncov;               /* covariate columns named in --drift */
     char cov[KP_MAX_COV][64];  /* their names */
+    size_t nfield;                  /* --covariate NAME=FIELD given */
+    char fname[KP_MAX_COV][64];     /* their names */
+    const char *fpath[KP_MAX_COV];  /* their fields */
 } kp_opts;
 
 extern const cli_opt kp_rows[];
@@ -68,6 +71,12 @@ int kp_predict_at(const kp_opts *p, const kp_common *c);
  * leave-one-out), to free.  Exit 2 on failure. */
 void kp_cross_validate(const kp_opts *p, const nl_krige_local *k, const kp_data *d, double *pred, double *var,
                        nl_krige_cv_summary *s, long **fold_out);
+
+/* Kriging onto the grid of f (cell centres lo + (i + 0.5) h, as
+ * nl_krige_local_grid): with covariates, their values at the cells from the
+ * fields of --covariate (each of the grid's size, sample i at cell i).
+ * Exit 2 on a missing or mismatched field or a failed location. */
+void kp_grid(const kp_opts *p, const nl_krige_local *k, const double *lo, nl_field *f, nl_field *vf);
 
 /* Report the locations without data (NaN estimates) on stderr; their count. */
 size_t kp_missing(const double *est, size_t count, const char *what);

@@ -7,6 +7,9 @@
  * with gstat is not installed. */
 #include "gstat.h"
 #include "util.h"
+#include "../core/field.h"
+#include "../core/io.h"
+#include "../core/nl_error.h"
 
 #include <criterion/criterion.h>
 #include <math.h>
@@ -309,4 +312,49 @@ Test(krige_at, missing_cells_in_grids)
     cr_assert_eq(run_noiselab("krige --data d2.tsv --acf markov:scale=0.3 --grid 10x1 --extent 0:1,0:1 --radius 0.2 "
                               "-o m.exr", out, sizeof out, err, sizeof err), 0, "%s", err);
     cr_expect(strstr(err, "6 of 10 cells"), "stderr: %s", err);
+}
+
+/* A covariate on a grid (--covariate NAME=FIELD.exr, sample i at cell i)
+ * gives the estimates of --at at the cell centres with the same covariate
+ * values (the field's float32 values, printed exactly): the same
+ * estimator, so equal to the map's float32 rounding (6e-8 relative; 1e-6
+ * allowed). */
+Test(krige_at, covariate_field_aligned_with_grid)
+{
+    enum { N = 8, ND = 30 };
+    char path[600], out[4096], err[1024], *tab = malloc(64 * 1024);
+    size_t g[2] = {N, N};
+    double h[2] = {1.0 / N, 1.0 / N}, e[N * N], v[N * N];
+    nl_field *m = NULL;
+    int st;
+    nl_field *f = nl_field_alloc(2, g, h, &st);
+    cr_assert(f, "%s", nl_errmsg());
+    for (size_t j = 0; j < N; j++)
+        for (size_t i = 0; i < N; i++)
+            f->data[j * N + i] = (float)(sin(3.0 * (double)i / N) + 0.7 * (double)j / N);
+    snprintf(path, sizeof path, "%s/cov.exr", scratch_dir());
+    cr_assert_eq(nl_exr_write(path, f, NULL), NL_OK);
+    size_t at = (size_t)snprintf(tab, 64 * 1024, "x\ty\tvalue\tc\n");
+    for (int k = 0; k < ND; k++) { /* data: the covariate known at the data points */
+        double x = fmod(0.37 * k + 0.05, 1.0), y = fmod(0.61 * k + 0.11, 1.0), c = sin(3.0 * x) + 0.7 * y;
+        at += (size_t)snprintf(tab + at, 64 * 1024 - at, "%.17g\t%.17g\t%.17g\t%.17g\n", x, y, 2 * c + sin(7 * y), c);
+    }
+    scratch_file("dc.tsv", tab);
+    at = (size_t)snprintf(tab, 64 * 1024, "x\ty\tc\n");
+    for (size_t t = 0; t < N * N; t++)
+        at += (size_t)snprintf(tab + at, 64 * 1024 - at, "%.17g\t%.17g\t%.17g\n", ((double)(t % N) + 0.5) / N,
+                               ((double)(t / N) + 0.5) / N, f->data[t]);
+    scratch_file("cells.tsv", tab);
+    cr_assert_eq(run_noiselab("krige --data dc.tsv --acf markov:scale=0.4 --grid 8x8 --extent 0:1,0:1 --drift c "
+                              "--covariate c=cov.exr --nmax 10 -o map.exr", out, sizeof out, err, sizeof err), 0, "%s",
+                 err);
+    cr_assert_eq(run_noiselab("krige --data dc.tsv --acf markov:scale=0.4 --at cells.tsv --drift c --nmax 10 "
+                              "-o cells_out.tsv", out, sizeof out, err, sizeof err), 0, "%s", err);
+    read_pairs("cells_out.tsv", N * N, -2, e, v);
+    snprintf(path, sizeof path, "%s/map.exr", scratch_dir());
+    cr_assert_eq(nl_field_read(path, &m, NULL), NL_OK, "%s", nl_errmsg());
+    for (size_t t = 0; t < N * N; t++)
+        cr_expect(fabs(m->data[t] - e[t]) <= 1e-6 * fmax(1, fabs(e[t])), "cell %zu: map %.9g, --at %.9g", t,
+                  m->data[t], e[t]);
+    nl_field_free(f), nl_field_free(m), free(tab);
 }
