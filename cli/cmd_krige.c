@@ -282,7 +282,7 @@ static int krige_cv(const opts_t *a, const kp_data *d)
     double *col[9], *pred = cli_malloc(n * sizeof *pred), *var = cli_malloc(n * sizeof *var);
     long *fold;
     nl_krige_cv_summary s;
-    kp_cross_validate(&a->pr, k, d, pred, var, &s, &fold);
+    size_t nfold = kp_cross_validate(&a->pr, k, d, pred, var, &s, &fold);
     if (a->out) {
         static const char *xyz[] = {"x", "y", "z"};
         const char *names[9];
@@ -307,7 +307,7 @@ static int krige_cv(const opts_t *a, const kp_data *d)
     size_t miss = kp_missing(pred, n, "data");
     if (a->json)
         cli_json_print(json_pack("{s:I,s:s,s:I,s:I,s:f,s:f,s:f,s:f,s:f}", "points", (json_int_t)n, "kind",
-                                 kind_name(a), "folds", (json_int_t)(fold ? a->pr.kfold : n), "missing",
+                                 kind_name(a), "folds", (json_int_t)nfold, "missing",
                                  (json_int_t)miss, "mean_error", s.mean_error, "var_error", s.var_error,
                                  "mean_zscore", s.mean_z, "var_zscore", s.var_z, "rmse", s.rmse));
     else

@@ -311,8 +311,8 @@ static size_t count_folds(const long *fold, size_t n)
     return k;
 }
 
-void kp_cross_validate(const kp_opts *p, const nl_krige_local *k, const kp_data *d, double *pred, double *var,
-                       nl_krige_cv_summary *s, long **fold_out)
+size_t kp_cross_validate(const kp_opts *p, const nl_krige_local *k, const kp_data *d, double *pred, double *var,
+                         nl_krige_cv_summary *s, long **fold_out)
 {
     size_t n = d->pt->n;
     long *fold = NULL;
@@ -332,8 +332,10 @@ void kp_cross_validate(const kp_opts *p, const nl_krige_local *k, const kp_data 
     st = fold ? nl_krige_local_cv_folds(k, fold, pred, var, s) : nl_krige_local_cv(k, pred, var, s);
     if (st)
         cli_die(st == NL_EINVAL || nl_error_is_input(st) ? 2 : 1, "--cross-validate: %s", nl_errmsg());
+    size_t nf = fold ? count_folds(fold, n) : n;
     if (fold_out)
         *fold_out = fold;
     else
         free(fold);
+    return nf;
 }

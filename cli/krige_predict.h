@@ -68,9 +68,10 @@ int kp_predict_at(const kp_opts *p, const kp_common *c);
 
 /* Cross-validation predictions: leave-one-out or by folds (drawn from --seed
  * or read); *fold_out (may be NULL) receives the fold ids used (NULL for
- * leave-one-out), to free.  Exit 2 on failure. */
-void kp_cross_validate(const kp_opts *p, const nl_krige_local *k, const kp_data *d, double *pred, double *var,
-                       nl_krige_cv_summary *s, long **fold_out);
+ * leave-one-out), to free.  Returns the number of folds (n for
+ * leave-one-out).  Exit 2 on failure. */
+size_t kp_cross_validate(const kp_opts *p, const nl_krige_local *k, const kp_data *d, double *pred, double *var,
+                         nl_krige_cv_summary *s, long **fold_out);
 
 /* Kriging onto the grid of f (cell centres lo + (i + 0.5) h, as
  * nl_krige_local_grid): with covariates, their values at the cells from the

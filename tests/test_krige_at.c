@@ -252,6 +252,10 @@ Test(krige_at, kfold_equals_gstat_krige_cv)
     }
     cr_expect(dp <= 1e-9 && dv <= 1e-9, "5-fold: max |d pred| %.3g, |d var| %.3g", dp, dv);
     fprintf(stderr, "5-fold CV vs krige.cv: max |d pred| %.2g, |d var| %.2g\n", dp, dv);
+    json_t *j = run_noiselab_json("krige --data meuse.tsv --acf " MODEL " --cross-validate --folds fold --json");
+    cr_expect_eq(json_integer_value(json_object_get(j, "folds")), 5);
+    cr_expect_eq(json_integer_value(json_object_get(j, "points")), NDATA);
+    json_decref(j);
     cr_assert_eq(run_noiselab("krige --data meuse.tsv --acf " MODEL " --cross-validate 5 --folds fold --drift sdist "
                               "--nmax 30 -o cv2.tsv", out, sizeof out, err, sizeof err), 0, "%s", err);
     read_pairs("cv2.tsv", NDATA, 3, p, v);
