@@ -8,6 +8,7 @@
 #include <gsl/gsl_cblas.h>
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +18,7 @@ void nl_krige_local_free(nl_krige_local *k)
     if (!k)
         return;
     nl_spindex_free(k->index);
+    nl_gq_free(k->gq);
     free(k->pts), free(k->val), free(k->cov), free(k->cc), free(k->cs), free(k);
 }
 
@@ -153,6 +155,10 @@ int nl_krige_local_alloc(const nl_model *m, int dim, size_t n, const double *pts
         nl_krige_local_free(k);
         return st;
     }
+    if (o->nmax && o->nmax < n && !(k->gq = nl_gq_build(k, SIZE_MAX))) {
+        nl_krige_local_free(k);
+        return NL_ERROR(NL_ENOMEM, "kriging: out of memory for the search tree of %zu points", n);
+    }
     *out = k;
     return NL_OK;
 }
@@ -182,11 +188,27 @@ static int cmp_size(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* The nearest k->cap neighbours are a tie (the cap-th and the next are
+ * equidistant): take gstat's choice (analysis/krige_gstat_order.c) into
+ * w->next, keeping the k-d tree's when memory runs out. */
+static size_t gstat_tie(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w, size_t m)
+{
+    nl_gq_node *t = skip == (size_t)-1 ? k->gq : nl_gq_build(k, skip);
+    size_t got = t ? nl_gq_select(k, t, x, k->cap, w->set + k->cap + 1) : 0;
+    if (t && t != k->gq)
+        nl_gq_free(t);
+    if (got != k->cap)
+        return m < k->cap ? m : k->cap;
+    memcpy(w->next, w->set + k->cap + 1, got * sizeof *w->next);
+    return got;
+}
+
 /* The neighbours of x (without datum `skip`, SIZE_MAX for none) into
- * w->next (ascending indices); returns their number. */
+ * w->next (ascending indices); returns their number.  When nmax binds, one
+ * more is looked at, for ties. */
 static size_t neighbours(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w)
 {
-    size_t want = k->cap + (skip != (size_t)-1), got;
+    size_t want = k->cap + (skip != (size_t)-1) + (k->gq != NULL), got;
     if (want > k->n)
         want = k->n;
     if (k->o.radius > 0) {
@@ -200,6 +222,9 @@ static size_t neighbours(const nl_krige_local *k, const double *x, size_t skip, 
     for (size_t i = 0; i < got; i++)
         if (w->next[i] != skip)
             w->next[m++] = w->next[i];
+    if (k->gq && m > k->cap &&
+        nl_gq_d2(k->dim, x, k->pts + w->next[k->cap - 1] * k->dim) == nl_gq_d2(k->dim, x, k->pts + w->next[k->cap] * k->dim))
+        m = gstat_tie(k, x, skip, w, m);
     if (m > k->cap)
         m = k->cap;
     qsort(w->next, m, sizeof *w->next, cmp_size);

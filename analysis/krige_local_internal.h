@@ -18,7 +18,18 @@ struct nl_krige_local {
     double *cov;              /* n * o.ncov covariates (copy), or NULL */
     double *cc, *cs;          /* covariate drift columns (c - cc) / cs (o.ncov each) */
     nl_spindex *index;        /* k-d tree of pts */
+    struct nl_gq_node *gq;    /* gstat's search tree (nmax < n), for ties; NULL */
 };
+
+/* gstat's neighbour order at ties (analysis/krige_gstat_order.c).  The tree
+ * of the data less datum skip (SIZE_MAX: none), NULL when out of memory;
+ * the first `want` data in gstat's search order from x (within the radius),
+ * their number; the squared distance as gstat computes it. */
+typedef struct nl_gq_node nl_gq_node;
+nl_gq_node *nl_gq_build(const nl_krige_local *k, size_t skip);
+void nl_gq_free(nl_gq_node *root);
+size_t nl_gq_select(const nl_krige_local *k, const nl_gq_node *root, const double *x, size_t want, size_t *out);
+double nl_gq_d2(int dim, const double *x, const double *p);
 
 /* Per-thread workspace: the cached neighbourhood and its factors. */
 typedef struct {

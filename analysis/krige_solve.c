@@ -23,7 +23,9 @@ int nl_kl_work_init(nl_kl_work *w, size_t cap, size_t p)
     size_t c = cap + 1, q = p ? p : 1;
     memset(w, 0, sizeof *w);
     w->cap = cap, w->p = p;
-    w->next = malloc(c * sizeof(size_t)), w->set = malloc(c * sizeof(size_t)), w->d2 = malloc(c * sizeof(double));
+    /* next, d2: one more for the tie check; set: cap more, scratch for gstat's order */
+    w->next = malloc((c + 1) * sizeof(size_t)), w->set = malloc((c + cap + 1) * sizeof(size_t));
+    w->d2 = malloc((c + 1) * sizeof(double));
     w->L = malloc(c * c * sizeof(double)), w->Q = malloc(q * c * sizeof(double)), w->M = malloc(q * q * sizeof(double));
     w->beta = malloc(q * sizeof(double)), w->r = malloc(c * sizeof(double)), w->c0 = malloc(c * sizeof(double));
     w->v = malloc(c * sizeof(double)), w->f = malloc(q * sizeof(double)), w->u = malloc(q * sizeof(double));

@@ -82,8 +82,8 @@ int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi
 
 /* Write a TSV table: `comment` (may be NULL) as a '#' line, a header line of
  * the ncols names, then nrows rows of the columns cols[0..ncols-1] (each of
- * nrows doubles, printed with %.10g).  NL_EIO when the file cannot be
- * created or a write fails. */
+ * nrows doubles, printed with %.10g; a NaN, a missing value, as "NA", as R
+ * writes it).  NL_EIO when the file cannot be created or a write fails. */
 int nl_tsv_write(const char *path, const char *comment, int ncols, const char *const *names,
                  size_t nrows, const double *const *cols);
 

@@ -21,7 +21,10 @@ int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *n
         fprintf(fp, "%s%c", names[c], c + 1 < ncols ? '\t' : '\n');
     for (size_t r = 0; r < nrows; r++)
         for (int c = 0; c < ncols; c++)
-            fprintf(fp, "%.10g%c", cols[c][r], c + 1 < ncols ? '\t' : '\n');
+            if (isnan(cols[c][r])) /* a missing value, as R writes it */
+                fprintf(fp, "NA%c", c + 1 < ncols ? '\t' : '\n');
+            else
+                fprintf(fp, "%.10g%c", cols[c][r], c + 1 < ncols ? '\t' : '\n');
     if (fflush(fp) || ferror(fp))
         return NL_ERROR(NL_EIO, "writing the table failed: %s", strerror(errno));
     return NL_OK;
