@@ -2,8 +2,10 @@
  * cross-validation, as gstat's krige(formula, ..., nmax, maxdist) and
  * krige.cv (Pebesma 2004).
  *
- * At each location x0 the data used are the nmax nearest (Euclidean; ties
- * by index) within the radius (through the k-d tree of core/spindex.h).
+ * At each location x0 the data used are the nmax nearest (Euclidean) within
+ * the radius (through the k-d tree of core/spindex.h); when the nmax-th and
+ * the next are equidistant, the one gstat's quadtree search reaches first
+ * (analysis/krige_gstat_order.c), so that neighbourhoods are gstat's.
  * With the covariance matrix C of those K data (C_ij = R(t_i - t_j)), c0 =
  * R(x0 - t_i), the drift matrix X (K x p: 1 for ordinary kriging; 1, x, y,
  * z for linear; 1, the coordinates, their squares and cross products for

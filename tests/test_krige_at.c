@@ -318,6 +318,14 @@ Test(krige_at, missing_cells_in_grids)
     cr_assert_eq(run_noiselab("krige --data d2.tsv --acf markov:scale=0.3 --grid 10x1 --extent 0:1,0:1 --radius 0.2 "
                               "-o m.exr", out, sizeof out, err, sizeof err), 0, "%s", err);
     cr_expect(strstr(err, "6 of 10 cells"), "stderr: %s", err);
+    /* cross-validation: the datum at 0.9 has no other within 0.2 */
+    scratch_file("d3.tsv", "x\tvalue\n0.1\t1\n0.2\t2\n0.25\t1.5\n0.9\t3\n");
+    j = run_noiselab_json("krige --data d3.tsv --acf markov:scale=0.3 --cross-validate --radius 0.2 -o cv.tsv --json");
+    cr_expect_eq(json_integer_value(json_object_get(j, "missing")), 1);
+    json_decref(j);
+    double p[4], v[4];
+    read_pairs("cv.tsv", 4, 2, p, v);
+    cr_expect(isnan(p[3]) && isnan(v[3]) && !isnan(p[0]), "predictions %g %g %g %g", p[0], p[1], p[2], p[3]);
 }
 
 /* A covariate on a grid (--covariate NAME=FIELD.exr, sample i at cell i)
