@@ -326,6 +326,14 @@ Test(krige_at, missing_cells_in_grids)
     double p[4], v[4];
     read_pairs("cv.tsv", 4, 2, p, v);
     cr_expect(isnan(p[3]) && isnan(v[3]) && !isnan(p[0]), "predictions %g %g %g %g", p[0], p[1], p[2], p[3]);
+    snprintf(path, sizeof path, "%s/cv.tsv", scratch_dir());
+    fp = fopen(path, "r");
+    cr_assert(fp);
+    na = 0;
+    while (fgets(out, sizeof out, fp))
+        na += strstr(out, "\tNA\tNA\t") != NULL; /* as R writes a missing value, not nan */
+    fclose(fp);
+    cr_expect_eq(na, 1, "%zu rows with NA", na);
 }
 
 /* A covariate on a grid (--covariate NAME=FIELD.exr, sample i at cell i)
