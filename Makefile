@@ -172,8 +172,9 @@ test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
 	LIMIT=$(if $(findstring sanitize,$(OPT)),60,5) NOISELAB_FFTW=estimate sh tests/check/run.sh $(BIN)
 	NOISELAB_FFTW=estimate NOISELAB_SANITIZED=$(if $(findstring sanitize,$(OPT)),1,) sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
-	NOISELAB_FFTW=estimate sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite
-	NOISELAB_FFTW=estimate sh tests/doc/run.sh $(BINDIR)
+	NOISELAB_FFTW=estimate sh tests/par.sh "SHARD=0/2 sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite" \
+	    "SHARD=1/2 sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite"
+	NOISELAB_FFTW=estimate sh tests/par.sh "SHARD=0/2 sh tests/doc/run.sh $(BINDIR)" "SHARD=1/2 sh tests/doc/run.sh $(BINDIR)"
 	$(if $(findstring sanitize,$(OPT)),@echo "python: skipped (a sanitized library does not load into $(PYTHON))",NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) $(PYTHON) -m pytest -q -p no:cacheprovider python/tests)
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
@@ -313,6 +314,7 @@ bench: $(BIN) $(MPIBIN) $(WISDOM)
 	gnuplot -e "in='$(BUILD)/bench/bench.tsv'; out='$(BUILD)/bench/bench.png'" tools/bench-plot.gp
 	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-r.sh $(BIN) $(BUILD)/bench/r | tee $(BUILD)/bench/bench-r.tsv
 	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-gstat.sh $(BIN) $(BUILD)/bench/gstat | tee $(BUILD)/bench/bench-gstat.tsv
+	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-condsim.sh $(BIN) $(BUILD)/bench/condsim | tee $(BUILD)/bench/bench-condsim.tsv
 	sh tools/bench-firstrun.sh $(BIN) $(abspath $(WISDOM)) $(BUILD)/bench/first | tee $(BUILD)/bench/bench-firstrun.tsv
 	NOISELAB_FFTW=measure NOISELAB_WISDOM=$(abspath $(WISDOM)) CC="$(CC)" PYTHON=$(PYTHON) sh tools/bench-python.sh $(BUILD) | tee $(BUILD)/bench/bench-python.tsv
 	NOISELAB_WISDOM=$(abspath $(WISDOM)) sh tools/bench-mpi.sh $(BINDIR) $(BUILD)/bench/mpi | tee $(BUILD)/bench/bench-mpi.tsv

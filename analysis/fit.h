@@ -87,7 +87,12 @@
  *                   fixed point within 2e-8 (one call of gstat stops up to
  *                   0.5% short of it);
  *   NL_FIT_PAIRS    w_j = N_j (gstat's fit.method = 1);
- *   NL_FIT_DISTANCE w_j = N_j / h_j^2 (gstat's fit.method = 7, its default).
+ *   NL_FIT_DISTANCE w_j = N_j / h_j^2 (gstat's fit.method = 7, its default;
+ *                   the default of noiselab fit and of the Python package);
+ *   NL_FIT_OLS      w_j = 1, ordinary least squares (gstat's fit.method = 6).
+ * Each equals gstat's fit.variogram with that fit.method on Meuse to 1e-5
+ * (tests/test_fit_gstat.c).  The zero value of nl_fit_options.weights is
+ * NL_FIT_CRESSIE.
  * Standard errors: the covariance s^2 (J^T J)^-1 of the last step's Jacobian,
  * s^2 = objective / (bins - free parameters): the usual nonlinear
  * least-squares errors, which treat the bins as independent.  They are not
@@ -187,7 +192,11 @@ enum {
                                    (se NaN; the interval reaches that end) */
 };
 
-typedef enum { NL_FIT_CRESSIE = 0, NL_FIT_PAIRS = 1, NL_FIT_REWEIGHTED = 2, NL_FIT_DISTANCE = 3 } nl_fit_weights;
+/* WLS weightings (see WLS above); gstat's fit.method numbers: PAIRS 1,
+ * REWEIGHTED 2, OLS 6, DISTANCE 7 (gstat's default). */
+typedef enum {
+    NL_FIT_CRESSIE = 0, NL_FIT_PAIRS = 1, NL_FIT_REWEIGHTED = 2, NL_FIT_DISTANCE = 3, NL_FIT_OLS = 4
+} nl_fit_weights;
 typedef enum { NL_FIT_ML = 0, NL_FIT_REML = 1 } nl_fit_likelihood;
 /* Which profile-likelihood intervals an ML or REML fit computes. */
 typedef enum { NL_FIT_INTERVALS_NONE = 0, NL_FIT_INTERVALS_ALL = 1, NL_FIT_INTERVALS_SCALE = 2 } nl_fit_intervals;

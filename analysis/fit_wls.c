@@ -1,5 +1,5 @@
 /* Weighted least squares of a model semivariogram to an empirical one
- * (Cressie 1985; gstat's fit.variogram, fit.method 1 and 2), by GSL's
+ * (Cressie 1985; gstat's fit.variogram, fit.method 1, 2, 6 and 7), by GSL's
  * nonlinear least squares. */
 #include "fit_internal.h"
 #include "../core/gsl_guard_internal.h"
@@ -57,6 +57,7 @@ static int residuals(const gsl_vector *x, void *params, gsl_vector *f)
     for (size_t j = 0; j < d->m; j++) {
         double r = d->weights == NL_FIT_CRESSIE ? sqrt(d->n[j]) * (d->g[j] / gm[j] - 1)
                  : d->weights == NL_FIT_PAIRS   ? sqrt(d->n[j]) * (gm[j] - d->g[j])
+                 : d->weights == NL_FIT_OLS     ? gm[j] - d->g[j]
                                                 : sqrt(d->w[j]) * (gm[j] - d->g[j]);
         gsl_vector_set(f, j, isfinite(r) ? r : 1e150);
     }
@@ -180,7 +181,7 @@ static int solve_weighted(wls_data *d, nl_fit_result *res, double *cov)
 {
     int st = NL_OK, steps = 0, moved = 1;
     double u0[NL_FIT_MAX_PARAMS], u1[NL_FIT_MAX_PARAMS];
-    if (d->weights == NL_FIT_CRESSIE || d->weights == NL_FIT_PAIRS)
+    if (d->weights == NL_FIT_CRESSIE || d->weights == NL_FIT_PAIRS || d->weights == NL_FIT_OLS)
         return solve(d, res, cov);
     while (!st && moved && steps++ < WLS_REWEIGHT_STEPS) {
         int before = res->iterations;
@@ -213,8 +214,9 @@ static int fit_variogram(const double *distance, const double *gamma, const doub
         return st;
     if (p.nfree == 0)
         return NL_ERROR(NL_EINVAL, "fix: every parameter of %s is fixed; expected at least one free", p.family);
-    if ((unsigned)o->weights > NL_FIT_DISTANCE)
-        return NL_ERROR(NL_EINVAL, "weights: expected cressie, pairs, reweighted or distance, got %d", (int)o->weights);
+    if ((unsigned)o->weights > NL_FIT_OLS)
+        return NL_ERROR(NL_EINVAL, "weights: expected cressie, pairs, reweighted, distance or ols, got %d",
+                        (int)o->weights);
     if (!(buf = malloc((4 * nbins + 1) * sizeof *buf)))
         return NL_ERROR(NL_ENOMEM, "out of memory");
     d = (wls_data){.p = &p, .h = buf, .g = buf + nbins, .n = buf + 2 * nbins,

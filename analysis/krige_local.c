@@ -365,3 +365,8 @@ void nl_kl_batch(const nl_krige_local *k, const double *x, const double *c, size
         var[b] = fmax(k->r0 - s, 0);
     }
 }
+
+size_t nl_kl_neighbours(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w)
+{
+    return neighbours(k, x, skip, w);
+}

@@ -55,6 +55,9 @@ int nl_kl_factor(const nl_krige_local *k, nl_kl_work *w, const double *x);
 void nl_kl_lsolve(const double *L, size_t n, const double *b, double *x);
 /* "(x, y)" of a location in buf (64 bytes). */
 const char *nl_kl_where(const nl_krige_local *k, const double *x, char *buf);
+/* The neighbours of x (less datum skip; SIZE_MAX: none) into w->next,
+ * ascending; returns their number (w->overflow: too many within the radius). */
+size_t nl_kl_neighbours(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w);
 /* Estimate and variance at x (covariates c) from its neighbourhood without
  * datum skip (SIZE_MAX: none); NaN for both when it has too few data and
  * o.missing is set. */

@@ -36,6 +36,10 @@ int nl_vg_check_options(const nl_variogram_options *o)
                         o->cutoff);
     if (o->estimator != NL_VARIOGRAM_MATHERON && o->estimator != NL_VARIOGRAM_CRESSIE)
         return NL_ERROR(NL_EINVAL, "variogram: estimator: expected matheron or cressie, got %d", o->estimator);
+    if (o->bins != NL_VARIOGRAM_BINS_GSTAT && o->bins != NL_VARIOGRAM_BINS_FLOOR)
+        return NL_ERROR(NL_EINVAL, "variogram: bins: expected gstat or floor, got %d", o->bins);
+    if (o->drift < NL_VARIOGRAM_DRIFT_CONSTANT || o->drift > NL_VARIOGRAM_DRIFT_QUADRATIC)
+        return NL_ERROR(NL_EINVAL, "variogram: drift: expected constant, linear or quadratic, got %d", o->drift);
     if (o->directional && (!isfinite(o->direction) || !(o->tolerance >= 0 && o->tolerance <= 90)))
         return NL_ERROR(NL_EINVAL, "variogram: expected a finite direction and a tolerance in [0, 90] degrees, got %g and %g",
                         o->direction, o->tolerance);
@@ -68,7 +72,11 @@ int nl_vg_bins(const nl_variogram_options *o, double diag, nl_vg_acc *acc)
     if (!(acc->cutoff > 0) || !(acc->width > 0))
         return NL_ERROR(NL_EINVAL, "variogram: expected points at more than one place (the bounding-box diagonal is %g)",
                         diag);
-    double nb = ceil(acc->cutoff / acc->width);
+    acc->gstat = o->bins == NL_VARIOGRAM_BINS_GSTAT;
+    /* gstat's count (src/sem.c alloc_exp_variogram): the bin of h = cutoff
+     * exists even where rounding puts cutoff / width just above an integer */
+    double nb = acc->gstat ? floor(acc->cutoff / acc->width) + 1 : ceil(acc->cutoff / acc->width);
+    acc->reach = acc->gstat ? acc->cutoff * (1 + 1e-12) : acc->cutoff;
     if (!(nb <= NL_VG_MAXBINS))
         return NL_ERROR(NL_EINVAL, "variogram: cutoff / width = %g / %g gives %g bins; expected at most %d", acc->cutoff,
                         acc->width, nb, NL_VG_MAXBINS);
@@ -100,8 +108,15 @@ long nl_vg_bin(const nl_vg_acc *a, double d, const double *dx)
 {
     if (a->directional && !in_direction(a, dx[0], dx[1]))
         return -1;
-    double k = floor(d / a->width);
-    return d < a->cutoff && k < (double)a->nb ? (long)k : -1;
+    double q = d / a->width, k = floor(q);
+    if (a->gstat) { /* gstat's src/sem.c get_index and valid_distance */
+        if (!(d <= a->cutoff))
+            return -1;
+        if (d > 0 && q == k)
+            k -= 1;
+    } else if (!(d < a->cutoff))
+        return -1;
+    return k < (double)a->nb ? (long)k : -1;
 }
 
 void nl_vg_add(const nl_vg_acc *a, double *sums, double d, const double *dx, double dz)
@@ -229,7 +244,7 @@ static int check_work(const nl_spindex *s, const nl_points *p, const nl_vg_acc *
     if (n * (n - 1) / 2 <= VG_MAX_PAIRS)
         return NL_OK;
     for (size_t t = 0; t < VG_SAMPLE; t++)
-        nl_spindex_pairs_at(s, (size_t)((double)t * n / VG_SAMPLE), a->cutoff, count_pair, &found);
+        nl_spindex_pairs_at(s, (size_t)((double)t * n / VG_SAMPLE), a->reach, count_pair, &found);
     est = found * n / VG_SAMPLE;
     if (est > VG_MAX_PAIRS)
         return NL_ERROR(NL_ETOOBIG, "variogram: %zu points have about %.3g pairs within the cutoff %g; expected at "
@@ -258,7 +273,7 @@ static int accumulate(const nl_spindex *s, const nl_points *p, const nl_vg_acc *
             if (loc) {
                 memset(loc, 0, 3 * a->nb * sizeof *loc);
                 for (size_t k = b * VG_BLOCK; k < n && k < (b + 1) * VG_BLOCK; k++)
-                    nl_spindex_pairs_at(s, k, a->cutoff, on_pair, &c);
+                    nl_spindex_pairs_at(s, k, a->reach, on_pair, &c);
             }
 #pragma omp ordered
             if (loc)
@@ -270,20 +285,38 @@ static int accumulate(const nl_spindex *s, const nl_points *p, const nl_vg_acc *
     return fail ? NL_ERROR(NL_ENOMEM, "variogram: out of memory for %zu bins per thread", a->nb) : NL_OK;
 }
 
+/* The points with their values less the drift's least-squares fit (a
+ * copy sharing the coordinates; its values in *res, to be freed). */
+static int detrend(const nl_points *p, int drift, nl_points *q, double **res)
+{
+    *q = *p;
+    *res = NULL;
+    if (drift == NL_VARIOGRAM_DRIFT_CONSTANT)
+        return NL_OK;
+    if (!(*res = malloc(p->n * sizeof **res)))
+        return NL_ERROR(NL_ENOMEM, "variogram: out of memory for %zu residuals", p->n);
+    q->val = *res;
+    return nl_vg_residuals(p->dim, p->n, p->pts, p->val, drift, *res);
+}
+
 int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out)
 {
-    double diag = 0, gdiag = 0, *sums = NULL;
+    double diag = 0, gdiag = 0, *sums = NULL, *res = NULL;
     nl_vg_acc a;
     nl_spindex *s = NULL;
+    nl_points q;
     int st;
     *out = NULL;
     if ((st = check_points(p, &diag, &gdiag)) || (st = nl_vg_check_options(o)) || (st = nl_vg_bins(o, gdiag, &a)))
         return st;
-    if ((st = nl_spindex_alloc(p->dim, p->n, p->pts, &s)))
+    if ((st = detrend(p, o->drift, &q, &res)) || (st = nl_spindex_alloc(p->dim, p->n, p->pts, &s))) {
+        free(res);
         return st;
-    if (!(st = check_work(s, p, &a)) && !(st = nl_vg_sums_alloc(a.nb, &sums)) && !(st = accumulate(s, p, &a, sums)))
+    }
+    if (!(st = check_work(s, &q, &a)) && !(st = nl_vg_sums_alloc(a.nb, &sums)) && !(st = accumulate(s, &q, &a, sums)))
         st = nl_vg_finish(&a, sums, out);
     free(sums);
+    free(res);
     nl_spindex_free(s);
     return st;
 }

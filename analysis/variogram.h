@@ -1,10 +1,24 @@
 /* Empirical (semi)variogram of scattered points and of fields, binned as
  * gstat's variogram() (Pebesma 2004).
  *
- * Pairs (i, j), i < j, at distance h_ij = |x_i - x_j| with 0 <= h_ij < cutoff
- * fall into bin k = floor(h_ij / width) (bins [k W, (k + 1) W)); a pair at
- * exactly the cutoff is dropped.  Per bin, with N_k pairs and
- * d_ij = z_i - z_j:
+ * Bins (nl_variogram_options.bins).  NL_VARIOGRAM_BINS_GSTAT (the default):
+ * pairs (i, j), i < j, at distance h_ij = |x_i - x_j| with 0 <= h_ij <= cutoff
+ * fall into bin k = ceil(h_ij / width) - 1, bins (k W, (k + 1) W] closed
+ * above, a pair at distance 0 in the first bin and a pair at exactly the
+ * cutoff kept: gstat's src/sem.c (get_index: q = h / W, k = floor(q), less 1
+ * where h > 0 and q is an integer; valid_distance drops h > cutoff; a
+ * variogram's zero distances are ZERO_INCLUDE, in the first bin).  It
+ * matters where distances fall on multiples of W: on Meuse with W = 50 the
+ * pair at exactly 200 m is in bin (150, 200].  NL_VARIOGRAM_BINS_FLOOR:
+ * bins [k W, (k + 1) W), k = floor(h_ij / W), h_ij < cutoff.
+ *
+ * Drift (nl_variogram_options.drift).  NL_VARIOGRAM_DRIFT_LINEAR or
+ * _QUADRATIC: the variogram of the residuals of the ordinary least-squares
+ * fit of a polynomial in the coordinates to the values (1, x, y, z; the
+ * quadratic adds the squares and cross products), gstat's variogram(z ~ x +
+ * y) (src/sem.c alloc_exp_variogram, make_residuals_lm); points only.
+ *
+ * Per bin, with N_k pairs and d_ij = z_i - z_j:
  *     Matheron:  gamma_k = sum d_ij^2 / (2 N_k)
  *     Cressie and Hawkins (1980):  gamma_k = (sum |d_ij|^(1/2) / N_k)^4
  *                / (2 (0.457 + 0.494 / N_k))
@@ -35,6 +49,10 @@ extern "C" {
 #include <stddef.h>
 
 enum { NL_VARIOGRAM_MATHERON, NL_VARIOGRAM_CRESSIE };
+/* nl_variogram_options.bins */
+enum { NL_VARIOGRAM_BINS_GSTAT = 0, NL_VARIOGRAM_BINS_FLOOR = 1 };
+/* nl_variogram_options.drift (the values of krige_local.h's NL_DRIFT_*) */
+enum { NL_VARIOGRAM_DRIFT_CONSTANT = 0, NL_VARIOGRAM_DRIFT_LINEAR = 1, NL_VARIOGRAM_DRIFT_QUADRATIC = 2 };
 
 typedef struct {
     double width;     /* bin width; 0 = cutoff / 15 */
@@ -43,9 +61,11 @@ typedef struct {
     int directional;  /* 0 = omnidirectional */
     double direction; /* degrees, gstat's alpha convention */
     double tolerance; /* degrees, gstat's tol.hor */
+    int bins;         /* NL_VARIOGRAM_BINS_GSTAT (default, (lo, hi]) or _FLOOR ([lo, hi)) */
+    int drift;        /* NL_VARIOGRAM_DRIFT_*: the variogram of the OLS residuals (points) */
 } nl_variogram_options;
 
-/* Omnidirectional Matheron with gstat's default width and cutoff. */
+/* Omnidirectional Matheron with gstat's default width, cutoff and bins, no drift. */
 void nl_variogram_options_default(nl_variogram_options *o);
 
 typedef struct {
@@ -61,7 +81,9 @@ typedef struct {
  * not finite, all points at one place (no positive distance), a width or
  * cutoff that is negative or not finite, more than 10^6 bins, an unknown
  * estimator, a direction or tolerance that is not finite (tolerance must lie
- * in [0, 90]), values whose max - min exceeds sqrt(DBL_MAX / (n (n - 1)))
+ * in [0, 90]), an unknown bins or drift, a drift with no more points than
+ * its terms or whose terms are collinear at the points (rank-deficient
+ * least squares), values whose max - min exceeds sqrt(DBL_MAX / (n (n - 1)))
  * (their squared differences summed over the pairs would overflow), or no
  * pair within the cutoff; NL_ETOOBIG when the pairs within the cutoff,
  * estimated from a sample of the points before any is walked, exceed 1e9
@@ -73,9 +95,21 @@ int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_va
 /* The variogram of a field: sample (i, j, k) at (i h[0], j h[1], k h[2]),
  * all pairs of samples (same binning and errors as nl_variogram_points;
  * non-finite samples and samples whose max - min exceeds
- * sqrt(DBL_MAX / (count (count - 1))) are refused).  Time O(count x offsets within the
+ * sqrt(DBL_MAX / (count (count - 1))) are refused; a drift is refused:
+ * NL_EINVAL).  Time O(count x offsets within the
  * cutoff).  Thread-safe. */
 int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_variogram **out);
+
+/* A variogram table (a TSV: a header of the three column names in any
+ * order, distance, gamma, pairs as `noiselab variogram -o` writes them or
+ * gstat's np, dist, gamma; then a row per bin of three finite numbers;
+ * '#' lines and empty lines skipped) into *out (NULL on failure), released
+ * by nl_variogram_free; the rows are kept in the file's order.  Errors:
+ * NL_EINPUT naming file and line for a file that cannot be read, another or
+ * a repeated column name, no header or no row, a row that is not three
+ * finite numbers, a distance not > 0, a gamma below 0, pairs that are not
+ * a whole number >= 1, more than 10^6 rows; NL_ENOMEM.  Thread-safe. */
+int nl_variogram_read(const char *path, nl_variogram **out);
 
 /* Release v and its arrays (NULL is a no-op). */
 void nl_variogram_free(nl_variogram *v);

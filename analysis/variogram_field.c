@@ -56,6 +56,9 @@ int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_vari
         diag += ((double)f->n[k] - 1) * f->h[k] * ((double)f->n[k] - 1) * f->h[k];
     if ((st = nl_vg_check_options(o)) || (st = nl_vg_bins(o, sqrt(diag), &a)))
         return st;
+    if (o->drift != NL_VARIOGRAM_DRIFT_CONSTANT)
+        return NL_ERROR(NL_EINVAL, "variogram: drift: a field's residual variogram is not supported; expected points "
+                        "(sample the field first), or no drift");
     for (int k = 0; k < 3; k++)
         m[k] = k < f->dim ? (long)fmin((double)f->n[k] - 1, ceil(a.cutoff / f->h[k])) : 0;
     nt = (size_t)(2 * m[0] + 1) * (size_t)(2 * m[1] + 1) * (size_t)(m[2] + 1);

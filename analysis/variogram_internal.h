@@ -9,7 +9,10 @@
 
 typedef struct {
     double cutoff, width; /* as resolved from the options */
-    size_t nb;            /* bins: ceil(cutoff / width) */
+    double reach;         /* the pair search's radius: the cutoff, a hair beyond for gstat's bins
+                             (the search keeps distances below it) */
+    size_t nb;            /* bins: ceil(cutoff / width), gstat's floor(cutoff / width) + 1 */
+    int gstat;            /* gstat's (lo, hi] bins, h <= cutoff */
     int cressie;          /* estimator */
     int directional;      /* direction test on */
     double ux, uy;        /* unit vector of the direction */
@@ -30,5 +33,10 @@ long nl_vg_bin(const nl_vg_acc *a, double d, const double *dx);
 /* Add a pair at distance d, horizontal offset dx[0..1], value difference dz. */
 void nl_vg_add(const nl_vg_acc *a, double *sums, double d, const double *dx, double dz);
 int nl_vg_finish(const nl_vg_acc *a, const double *sums, nl_variogram **out);
+/* The n values z at the points pts (n x dim) less their ordinary
+ * least-squares drift (drift NL_VARIOGRAM_DRIFT_*) into r (n values):
+ * analysis/variogram_drift.c.  NL_EINVAL (too few points, rank-deficient
+ * terms), NL_ENOMEM. */
+int nl_vg_residuals(int dim, size_t n, const double *pts, const double *z, int drift, double *r);
 
 #endif

@@ -12,21 +12,28 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static const char help_usage[] =
     "usage: noiselab fit DATA.tsv|FIELD.exr --model FAMILY|SPEC [--nugget] [--fix NAME=VALUE]...\n"
     "                    [--method wls|ml|reml]\n"
-    "                    [--weights cressie|pairs|reweighted|distance]\n"
-    "                    [--width W] [--cutoff C] [--json]\n\n";
+    "                    [--weights distance|pairs|reweighted|ols|cressie|7|1|2|6]\n"
+    "                    [--width W] [--cutoff C] [--bins gstat|floor] [--json]\n"
+    "       noiselab fit --variogram VARIO.tsv --model FAMILY|SPEC [...] [--weights ...]\n\n";
 
 /* The first paragraph continues the sentence print_help makes; filled
  * with it to 80 columns. */
 static const char help[] =
-    "noiselab variogram, gstat's binning; --width, --cutoff), weights N/gamma^2 of the fitted model "
-    "(cressie: Cressie's criterion; reweighted: the weights held at the last fit and refitted to a "
-    "fixed point, gstat's fit.method 2), N (pairs, fit.method 1) or N/h^2 (distance, fit.method 7).  "
+    "noiselab variogram, gstat's binning; --width, --cutoff, --bins), weights N/h^2 (distance, the "
+    "default, gstat's default fit.method 7), N (pairs, fit.method 1), N/gamma^2 of the fitted model "
+    "(reweighted: the weights held at the last fit and refitted to a fixed point, gstat's fit.method 2; "
+    "cressie: Cressie's criterion) or none (ols, fit.method 6); --weights takes gstat's fit.method "
+    "numbers 7, 1, 2, 6 too.  --variogram VARIO.tsv fits a variogram table instead of data (wls alone): "
+    "the columns distance, gamma, pairs of noiselab variogram -o, or gstat's np, dist, gamma (any order; "
+    "bins with 0 pairs, a negative gamma or a distance not above 0 are refused); its model is checked "
+    "as in 2D.  "
     "ml, reml: the Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step (refused "
-    "above a work budget: below), started from the wls fit.  Prints the fitted model as a spec for --acf, "
+    "above a work budget: below), started from the wls fit (cressie weights unless --weights is given).  Prints the fitted model as a spec for --acf, "
     "standard errors, the objective and AIC (compare models fitted by one method to one data set: "
     "lower is better).  ml and reml also print each free parameter's 95% profile-likelihood interval "
     "(the values within 3.841 of the minimum -2 log likelihood, the others re-optimised; \"unbounded\" "
@@ -67,7 +74,7 @@ static void fit_ranges(char *buf, size_t size)
  * from the registry, then the rest. */
 static void print_help(void)
 {
-    char families[512], shapes[512] = "", text[4096];
+    char families[512], shapes[512] = "", text[6144];
     size_t len = 0;
     nl_family_names(NL_FAMILY_FIT, 0, ", ", families, sizeof families);
     for (size_t i = 0; i < nl_family_count(); i++) {
@@ -98,6 +105,8 @@ static void print_help(void)
 /* The command's options. */
 typedef struct {
     const char *in;             /* input */
+    const char *vario;          /* --variogram: a variogram table to fit (no data) */
+    int weights_given;          /* --weights given */
     int json;                   /* --json */
     int method;                 /* 0 wls, 1 ml, 2 reml */
     nl_fit_options o;           /* the library's options */
@@ -125,26 +134,53 @@ static void parse_fix(void *obj, const char *label, const char *s)
 }
 
 static const char *const methods[] = {"wls", "ml", "reml", NULL};
-static const char *const weights[] = {"cressie", "pairs", "reweighted", "distance", NULL};
+/* --weights: the names, then gstat's fit.method numbers */
+static const char *const weights[] = {"cressie", "pairs", "reweighted", "distance", "ols", "1", "2", "6", "7", NULL};
+static const int weight_vals[] = {NL_FIT_CRESSIE, NL_FIT_PAIRS, NL_FIT_REWEIGHTED, NL_FIT_DISTANCE, NL_FIT_OLS,
+                                  NL_FIT_PAIRS,   NL_FIT_REWEIGHTED, NL_FIT_OLS, NL_FIT_DISTANCE};
 
 static const cli_opt rows[] = {
     CLI_STRING("model", opts_t, o.family), CLI_FLAG("nugget", opts_t, o.nugget),
     CLI_CALL("fix", parse_fix, .flags = CLI_REPEAT),
     CLI_CHOICE("method", opts_t, method, .choices = methods),
-    CLI_CHOICE("weights", opts_t, o.weights, .choices = weights), CLI_OPT_BINS(opts_t, vo),
+    CLI_CHOICE("weights", opts_t, o.weights, CLI_GIVEN(opts_t, weights_given), .choices = weights,
+               .vals = weight_vals), CLI_OPT_BINS(opts_t, vo),
+    CLI_STRING("variogram", opts_t, vario),
     CLI_OPT_JSON(opts_t, json), {0}};
+
+/* --variogram: the table is the input; the data's options do not apply. */
+static void parse_vario(opts_t *a, int argc)
+{
+    if (optind != argc)
+        cli_die(2, "--variogram: expected no data operand with a variogram table, got %d", argc - optind);
+    if (a->method)
+        cli_die(2, "--method: expected wls with --variogram (a likelihood needs the data), got %s",
+                a->method == 2 ? "reml" : "ml");
+    if (a->vo.width > 0 || a->vo.cutoff > 0 || a->vo.bins)
+        cli_die(2, "--variogram: expected no --width, --cutoff or --bins (the table's bins are fitted as they are)");
+    a->in = a->vario;
+}
 
 static void parse(int argc, char **argv, opts_t *a)
 {
     nl_variogram_options_default(&a->vo);
+    a->o.weights = NL_FIT_DISTANCE; /* gstat's default */
     if (cli_opt_parse("fit", NULL, rows, a, argc, argv)) {
         print_help();
         exit(0);
     }
-    a->in = cli_one_operand("fit", "input (points .tsv or field .exr)", argc, argv);
+    if (a->vario)
+        parse_vario(a, argc);
+    else
+        a->in = cli_one_operand("fit", "input (points .tsv or field .exr)", argc, argv);
     if (!a->o.family)
         cli_die(2, "--model: expected a family such as markov or spherical, or a nested spec, got none");
     a->o.likelihood = a->method == 2 ? NL_FIT_REML : NL_FIT_ML;
+    /* ml, reml start from Cressie's wls fit unless --weights says: its
+     * relative residuals keep the start near the data's sill where N/h^2
+     * can run off on degenerate data (tests/bad/fit_hostile.cases) */
+    if (a->method && !a->weights_given)
+        a->o.weights = NL_FIT_CRESSIE;
 }
 
 /* The data as points: a TSV as read, a field as its samples at i * h. */
@@ -199,6 +235,21 @@ static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
         cli_progress_done();
         free(start);
     }
+    return st;
+}
+
+/* --variogram: WLS on the table's bins, the model checked in 2D (gstat's
+ * variograms are of 2D data, and the table does not say). */
+static int fit_table(const opts_t *a, nl_fit_result *r)
+{
+    nl_variogram *v;
+    int st = nl_fit_check_options(&a->o, 2);
+    if (!st)
+        st = nl_variogram_read(a->vario, &v);
+    if (st)
+        return st;
+    st = nl_fit_variogram(v->distance, v->gamma, v->pairs, v->nbins, 2, &a->o, r);
+    nl_variogram_free(v);
     return st;
 }
 
@@ -273,7 +324,7 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
 {
     static const char *const mname[] = {"wls", "ml", "reml"};
     static const char *const wname[] = {" (cressie weights)", " (pairs weights)", " (reweighted weights)",
-                                        " (distance weights)"};
+                                        " (distance weights)", " (ols weights)"};
     printf("model       %s\n", r->spec);
     printf("method      %s%s on %zu %s, %s after %d steps\n", mname[a->method],
            a->method ? "" : wname[a->o.weights], r->nobs,
@@ -348,15 +399,21 @@ int cli_cmd_fit(int argc, char **argv)
     nl_points *p;
     int st;
     parse(argc, argv, &a);
-    p = read_points(a.in);
-    st = fit(&a, p, &r);
-    nl_points_free(p);
+    if (a.vario)
+        st = fit_table(&a, &r);
+    else {
+        p = read_points(a.in);
+        st = fit(&a, p, &r);
+        nl_points_free(p);
+    }
     if (st) {
         const char *msg = nl_errmsg();
         int code = st == NL_EINVAL || st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1;
         /* the options' own errors name the option, the data's name the file */
         if (strncmp(msg, "model:", 6) == 0 || strncmp(msg, "fix:", 4) == 0)
             cli_die(code, "--%s", msg);
+        if (strncmp(msg, a.in, strlen(a.in)) == 0 && msg[strlen(a.in)] == ':') /* names the file already */
+            cli_die(code, "%s", msg);
         cli_die(code, "%s: %s", a.in, msg);
     }
     if (!isfinite(r.objective) || !isfinite(r.aic))

@@ -2,6 +2,7 @@
 #include "cli.h"
 #include "opt.h"
 #include "krige_predict.h"
+#include "krige_flavours.h"
 #include "../analysis/krige.h"
 #include "../analysis/krige_local.h"
 #include "../core/io_points.h"
@@ -22,7 +23,9 @@ static const char help[] =
     "       noiselab krige --data PTS.tsv --acf SPEC --at TABLE.tsv -o OUT.tsv [--nmax K] [--radius D]\n"
     "                      [--drift TERMS] [--mean M] [--json]\n"
     "       noiselab krige --data PTS.tsv --acf SPEC --cross-validate [K] [--folds COLUMN | --seed S]\n"
-    "                      [--nmax K] [--radius D] [--drift TERMS] [--mean M] [--json] [-o CV.tsv]\n\n"
+    "                      [--nmax K] [--radius D] [--drift TERMS] [--mean M] [--json] [-o CV.tsv]\n"
+    "       flavours: [--block WxH[xD] [--block-points N]] [--transform log|boxcox:LAMBDA]\n"
+    "                 [--indicator T1,T2,... [--indicator-acf SPEC]...]\n\n"
     "Kriging (Stam and Fiume 1991, eqs. 19-22): ordinary (unknown mean, unbiased by a\n"
     "Lagrange multiplier) or, with --mean, simple.  PTS.tsv: a header line naming the\n"
     "columns x [y [z]] and value (in any order), then rows; with --at, --folds or a\n"
@@ -52,7 +55,7 @@ static const char help[] =
     "sample(K, n, replace = TRUE)) or drawn from --seed (default 0).  Per point\n"
     "observed, predicted, variance, error = observed - predicted, zscore = error /\n"
     "sqrt(variance) (and fold) to -o, and the mean and variance of error and zscore\n"
-    "on stdout (missing predictions left out).\n";
+    "on stdout (missing predictions left out).\n" CLI_KRIGE_FL_HELP;
 
 /* The command's options. */
 typedef struct {
@@ -64,6 +67,7 @@ typedef struct {
     double radius;                                      /* --radius (0: no limit) */
     size_t g[3];                                        /* --grid */
     kp_opts pr;                                         /* --at, --drift, --cross-validate, --folds, --seed */
+    cli_krige_fl fl;                                    /* --block, --transform, --indicator */
 } opts_t;
 
 static void parse_extent(opts_t *a)
@@ -107,7 +111,9 @@ static const cli_opt rows[] = {
     /* the local or universal path */
     CLI_COUNT("nmax", opts_t, nmax, CLI_GIVEN(opts_t, local), .lo = 1),
     CLI_POSITIVE("radius", opts_t, radius, CLI_GIVEN(opts_t, local), .what = "distance"),
-    CLI_GROUP(kp_rows, opts_t, pr), {0}};
+    CLI_GROUP(kp_rows, opts_t, pr),
+    /* the flavours (cli/krige_flavours.c) */
+    CLI_GROUP(cli_krige_fl_rows, opts_t, fl), {0}};
 
 /* --cross-validate: no grid; -o (optional) is a TSV of the points. */
 static void parse_cv(opts_t *a)
@@ -152,6 +158,11 @@ static void parse(int argc, char **argv, opts_t *a)
     if (a->pr.axes && a->drift == NL_DRIFT_CONSTANT)
         a->drift = NL_DRIFT_LINEAR;
     a->local |= a->pr.given_drift || a->cv || a->pr.at;
+    if (a->fl.any && (a->pr.at || a->pr.ncov || a->pr.kfold || a->pr.folds))
+        cli_die(2, "krige: --block, --transform and --indicator: expected no %s (not combined with them)",
+                a->pr.at ? "--at" : a->pr.ncov ? "covariate in --drift" : a->pr.kfold ? "--cross-validate K"
+                                                                                      : "--folds");
+    cli_krige_fl_check(&a->fl, &a->spec, a->cv, !isnan(a->mean), a->drift, a->vout);
     if (a->cv) {
         parse_cv(a);
         return;
@@ -375,11 +386,16 @@ int cli_cmd_krige(int argc, char **argv)
     int st;
     size_t n;
     parse(argc, argv, &a);
-    if (a.local)
+    if (a.local && !a.fl.any)
         return cli_krige_local(&a);
     nl_points *pt;
     if ((st = nl_points_read(a.data, &pt)))
         cli_die(nl_error_is_input(st) ? 2 : 1, "--data: %s", nl_errmsg());
+    if (a.fl.any) {
+        cli_krige_fl_ctx c = {a.data, a.spec, a.out, a.vout, a.json, a.cv, a.drift, a.gdim, a.mean, a.radius, a.nmax,
+                              {a.g[0], a.g[1], a.g[2]}, {a.lo[0], a.lo[1], a.lo[2]}, {a.hi[0], a.hi[1], a.hi[2]}};
+        return cli_krige_fl_run(&a.fl, &c, pt);
+    }
     if (pt->dim != a.gdim)
         cli_die(2, "--data: %s has %d coordinates per point, the grid %d", a.data, pt->dim, a.gdim);
     n = pt->n;

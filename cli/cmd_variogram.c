@@ -11,17 +11,26 @@
 
 static const char help[] =
     "usage: noiselab variogram DATA.tsv|FIELD.exr [--width W] [--cutoff C]\n"
+    "                          [--bins gstat|floor] [--drift constant|linear|quadratic]\n"
     "                          [--direction ANGLE --angle-tolerance T]\n"
     "                          [--estimator matheron|cressie] [--json] [-o OUT.tsv]\n\n"
     "Empirical semivariogram, binned as gstat's variogram(): pairs at distance h in\n"
-    "[k W, (k + 1) W) for h < C; each bin reports the mean pair distance, gamma\n"
-    "(Matheron: sum of squared differences / 2N; Cressie and Hawkins' robust\n"
-    "estimator) and the pair count; empty bins are left out.  Defaults as gstat:\n"
+    "(k W, (k + 1) W] for h <= C, a pair at distance 0 in the first bin (--bins\n"
+    "gstat, the default; --bins floor: [k W, (k + 1) W) for h < C); each bin\n"
+    "reports the mean pair distance, gamma (Matheron: sum of squared differences\n"
+    "/ 2N; Cressie and Hawkins' robust estimator) and the pair count; empty bins\n"
+    "are left out.  Defaults as gstat:\n"
     "C = a third of the bounding-box diagonal (for 3D points gstat's box, whose z\n"
     "extent runs from the smallest z to the first point's), W = C / 15.  DATA.tsv:\n"
     "a header x [y [z]] value (any order), a row per point; a field (.exr, .png) is\n"
-    "read as its samples at i * spacing.  --direction: gstat's alpha, degrees\n"
-    "clockwise from +y towards +x, keeping pairs within T degrees (tol.hor) of it.\n"
+    "read as its samples at i * spacing.  --drift linear|quadratic (points): the\n"
+    "variogram of the residuals of the least-squares polynomial drift in the\n"
+    "coordinates (linear: gstat's variogram(value ~ x + y); quadratic adds the\n"
+    "squares and cross products), the drift names of krige.  --direction: gstat's\n"
+    "alpha, degrees clockwise from +y towards +x, keeping pairs within T degrees\n"
+    "(tol.hor) of it: a model's angle= runs the other way, from +x towards +y\n"
+    "(angle = 90 - alpha; gstat's peer names take gstat's anis angle, see\n"
+    "noiselab models).\n"
     "Writes a TSV (distance, gamma, pairs) to -o or stdout; --json prints the three\n"
     "arrays.\n";
 
@@ -33,12 +42,14 @@ typedef struct {
 } opts_t;
 
 static const char *const estimators[] = {"matheron", "cressie", NULL}; /* NL_VARIOGRAM_* by index */
+static const char *const drifts[] = {"constant", "linear", "quadratic", NULL}; /* NL_VARIOGRAM_DRIFT_* */
 
 static const cli_opt rows[] = {
     CLI_OPT_BINS(opts_t, o), CLI_DOUBLE("direction", opts_t, o.direction, CLI_GIVEN(opts_t, has_dir)),
     CLI_DOUBLE("angle-tolerance", opts_t, o.tolerance, CLI_GIVEN(opts_t, has_tol),
                .flags = CLI_RANGE_LO | CLI_RANGE_HI, .lo = 0, .hi = 90, .what = "degrees in [0, 90]"),
-    CLI_CHOICE("estimator", opts_t, o.estimator, .choices = estimators), CLI_OPT_JSON(opts_t, json),
+    CLI_CHOICE("estimator", opts_t, o.estimator, .choices = estimators),
+    CLI_CHOICE("drift", opts_t, o.drift, .choices = drifts), CLI_OPT_JSON(opts_t, json),
     CLI_OPT_OUTPUT(opts_t, out), {0}};
 
 static void parse(int argc, char **argv, opts_t *a)
@@ -53,6 +64,8 @@ static void parse(int argc, char **argv, opts_t *a)
     if (a->has_dir && !isfinite(a->o.direction))
         cli_die(2, "--direction: expected a finite angle in degrees, got %g", a->o.direction);
     a->o.directional = a->has_dir;
+    if (a->o.drift && !cli_has_ext(a->in, ".tsv"))
+        cli_die(2, "--drift: expected points (a .tsv), got the field \"%s\" (sample it first)", a->in);
     if (a->out && !cli_has_ext(a->out, ".tsv"))
         cli_die(2, "-o: expected a .tsv file, got \"%s\"", a->out);
 }

@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
+const char *const cli_bins_choices[] = {"gstat", "floor", NULL};
+
 /* The most rows a command's table holds, groups opened. */
 #define MAX_ROWS 64
 

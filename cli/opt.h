@@ -97,9 +97,11 @@ void cli_opt_need(const char *cmd, const cli_opt *rows, const void *obj);
 #define CLI_OPT_DIMS(T, F, MAX, ...) {.name = "dim", .type = CLI_OPT_DIM, CLI_AT(T, F), .hi = (MAX), __VA_ARGS__}
 /* --acf SPEC and --spectrum SPEC, one model spec (the rest of the row goes with --acf) */
 #define CLI_OPT_MODEL(T, F, ...) CLI_STRING("acf", T, F, __VA_ARGS__), CLI_STRING("spectrum", T, F)
-/* The variogram's bins (--width, --cutoff) in an nl_variogram_options field */
+/* The variogram's bins (--width, --cutoff, --bins gstat|floor) in an nl_variogram_options field */
+extern const char *const cli_bins_choices[]; /* NL_VARIOGRAM_BINS_* by index (cli/opt.c) */
 #define CLI_OPT_BINS(T, F)                                                                                        \
     CLI_POSITIVE("width", T, F.width, .what = "bin width"),                                                       \
-        CLI_POSITIVE("cutoff", T, F.cutoff, .what = "cutoff distance")
+        CLI_POSITIVE("cutoff", T, F.cutoff, .what = "cutoff distance"),                                           \
+        CLI_CHOICE("bins", T, F.bins, .choices = cli_bins_choices)
 
 #endif

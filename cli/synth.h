@@ -58,7 +58,7 @@ int cli_synth_parse_neighborhood(const char *s);
 double cli_synth_parse_tol(const char *opt, const char *s, int *rule);
 
 /* --condition DATA.tsv --extent ... [--realizations K] [--mean M]
- * [--interpolation nearest|bilinear] (cli/synth_condition.c). */
+ * [--interpolation nearest|bilinear: deprecated, ignored] (cli/synth_condition.c). */
 typedef struct {
     const char *data, *extent;   /* --condition, --extent, or NULL */
     size_t K;                    /* --realizations (default 1) */
@@ -66,7 +66,7 @@ typedef struct {
     int simple;                  /* --mean given: simple kriging */
     double mean;                 /* --mean */
     size_t nmax;                 /* --nmax: local kriging from the nmax nearest data; 0: all */
-    int interp;                  /* NL_INTERP_* for reading U at the data (default bilinear) */
+    int interp;                  /* unused: --interpolation is deprecated (U is drawn given the grid) */
     double lo[3], hi[3];         /* --extent */
     const char *emean, *evar;    /* --ensemble-mean, --ensemble-variance, or NULL */
     const char *etmp[2];         /* their temporaries */

@@ -21,12 +21,8 @@ void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg)
     case 'q': c->nmax = cli_parse_count("--nmax", arg, 1); break;
     case 'J': c->evar = arg; break;
     case 'M': c->mean = cli_parse_double("--mean", arg), c->simple = 1; break;
-    case 'Q':
-        if (!strcmp(arg, "nearest"))
-            c->interp = NL_INTERP_NEAREST;
-        else if (!strcmp(arg, "bilinear"))
-            c->interp = NL_INTERP_LINEAR;
-        else
+    case 'Q': /* deprecated: U between samples is drawn given the grid */
+        if (strcmp(arg, "nearest") && strcmp(arg, "bilinear"))
             cli_die(2, "--interpolation: expected nearest or bilinear, got \"%s\"", arg);
         c->given_interp = 1;
         break;
@@ -101,8 +97,8 @@ void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int
     }
     nl_field grid = {.dim = job->dim, .n = {job->n[0], job->n[1], job->n[2]},
                      .h = {job->h[0], job->h[1], job->h[2]}};
-    st = nl_condsim_plan_alloc(job->m, pt->n, pt->pts, pt->val, c->lo, &grid, c->interp, c->simple, c->mean,
-                               c->nmax, &c->plan);
+    nl_condsim_options o = {.simple = c->simple, .mean = c->mean, .nmax = c->nmax};
+    st = nl_condsim_plan_alloc(job->m, pt->n, pt->pts, pt->val, c->lo, &grid, &o, 0, NULL, &c->plan);
     nl_points_free(pt);
     if (st)
         cli_die(nl_error_is_input(st) ? 2 : 1, "--condition: %s: %s", c->data, nl_errmsg());
@@ -127,13 +123,12 @@ void cli_synth_cond_apply(const cli_synth_cond *c, const cli_synth_job *job, nl_
 {
     if (!c->data)
         return;
-    cli_check(nl_condsim_execute(c->plan, f));
+    cli_check(nl_condsim_execute(c->plan, f, job->seed, NULL));
     size_t l = strlen(r->method);
     /* the space marks a field that --from cannot regenerate */
     snprintf(r->method + l, sizeof r->method - l, " conditioned:data=%s,points=%zu,kriging=%s,extent=%s,"
              "nmax=%zu,realization=%zu/%zu", c->data, c->info.n, c->simple ? "simple" : "ordinary", c->extent, c->nmax,
              k + 1, c->K);
-    (void)job;
 }
 
 void cli_synth_cond_write(const cli_synth_cond *c, const char *path, const char *tmp, const nl_field *f,
@@ -156,21 +151,24 @@ void cli_synth_cond_report(const cli_synth_cond *c, json_t *o)
     if (!c->data)
         return;
     json_object_set_new(o, "condition",
-                        json_pack("{s:s,s:I,s:I,s:s,s:s,s:f,s:f,s:I}", "data", c->data, "points", (json_int_t)c->info.n,
-                                  "on_samples", (json_int_t)c->info.on_samples, "kriging",
-                                  c->simple ? "simple" : "ordinary", "interpolation",
-                                  c->interp == NL_INTERP_NEAREST ? "nearest" : "bilinear", "max_error",
-                                  c->info.max_error, "max_move", c->info.max_move, "realizations", (json_int_t)c->K));
+                        json_pack("{s:s,s:I,s:I,s:s,s:I,s:I,s:I,s:f,s:f,s:b,s:I}", "data", c->data, "points",
+                                  (json_int_t)c->info.n, "on_samples", (json_int_t)c->info.on_samples, "kriging",
+                                  c->simple ? "simple" : "ordinary", "hood", (json_int_t)c->info.hood, "groups",
+                                  (json_int_t)c->info.groups, "largest_group", (json_int_t)c->info.largest,
+                                  "screening", c->info.screening, "max_move", c->info.max_move, "weights_kept",
+                                  c->info.reuse, "realizations", (json_int_t)c->K));
 }
 
 void cli_synth_cond_note(const cli_synth_cond *c)
 {
+    if (c->data && c->given_interp)
+        fprintf(stderr, "noiselab: synth: --interpolation is deprecated and ignored: the field at data between "
+                "samples is drawn from its conditional law given the grid\n");
     if (!c->data || c->info.on_samples == c->info.n)
         return;
-    fprintf(stderr, "noiselab: synth: %zu of %zu data lie between samples; the unconditional field is read there by "
-            "%s interpolation, whose error is at most %.3g standard deviations (datum %zu)\n",
-            c->info.n - c->info.on_samples, c->info.n, c->interp == NL_INTERP_NEAREST ? "nearest" : "bilinear",
-            c->info.max_error, c->info.worst + 1);
+    fprintf(stderr, "noiselab: synth: %zu of %zu data lie between samples; the unconditional field there is drawn "
+            "given the %zu samples per axis around them, to a screening error of %.2g standard deviations\n",
+            c->info.n - c->info.on_samples, c->info.n, c->info.hood, c->info.screening);
 }
 
 void cli_synth_cond_begin(cli_synth_cond *c)

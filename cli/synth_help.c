@@ -31,8 +31,9 @@ static const char help_preview[] =
 static const char help_condition[] =
     "                   data (conditional simulation, Journel: the field plus the ordinary\n"
     "                   kriging of data minus field; --mean M: simple); sample i at\n"
-    "                   a + (i + 0.5)(b - a)/N; --interpolation bilinear|nearest reads the field\n"
-    "                   between samples; --realizations K: OUT-1.exr ... OUT-K.exr, seeds S..;\n"
+    "                   a + (i + 0.5)(b - a)/N; between samples the field is drawn given\n"
+    "                   the 4^d samples around (--interpolation: deprecated, ignored);\n"
+    "                   --realizations K: OUT-1.exr ... OUT-K.exr, seeds S..;\n"
     "                   --ensemble-mean M.exr, --ensemble-variance V.exr (divisor K - 1);\n"
     "                   --nmax K: local kriging from the K nearest data (as krige)\n"
     "  --from FILE      regenerate FILE from what it records (method, options, model,\n"

@@ -12,7 +12,10 @@
  * R(x)R(y)R(z)/var^(dim-1)), `angle=` (degrees, rotation about z) and `ratio=`
  * (correlation length along the rotated y axis over that along x), `zratio=`
  * (same for z) for the ellipsoidal stretch of Stam and Fiume; default is
- * isotropic, R(|lag|).  For expr:, spectrum: and image: these keys may follow
+ * isotropic, R(|lag|).  The angle turns the major axis (scale's) from +x
+ * towards +y; gstat's anis = c(p, s) measures p clockwise from +y, so it
+ * is angle = 90 - p, ratio = s, and gstat's peer names (Sph:...) take p
+ * itself as their angle= (core/families/peers.c).  For expr:, spectrum: and image: these keys may follow
  * a final ';', e.g. "expr:exp(-abs(t));ratio=0.5".
  *
  * Spherical.  Its `scale` is the range a, the lag at which R reaches 0

@@ -1,6 +1,7 @@
 /* Parsing of model specs into nl_model, by the family registry
  * (core/family.h). */
 #include "expr_internal.h"
+#include "families/families_internal.h"
 #include "model_internal.h"
 #include "nl_error.h"
 
@@ -210,6 +211,8 @@ static int parse_peer(nl_model *m, const nl_family_alias *a, const char *rest)
         if ((st = check_range(a->name, &a->params[k], q[k])))
             return st;
     a->convert(q, m->p);
+    if (strcmp(a->peer, "gstat") == 0)
+        nl_peer_gstat_anis(m);
     return NL_OK;
 }
 

@@ -58,11 +58,11 @@ Test(condsim, honours_data_on_samples_exactly)
     nl_condsim_plan *p;
     nl_synth_fft_plan *fp;
     nl_synth_circulant_plan *cp;
-    cr_assert_eq(nl_condsim_plan_alloc(m, 25, pts, val, lo, f, NL_INTERP_LINEAR, 0, 0, 0, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_condsim_plan_alloc(m, 25, pts, val, lo, f, NULL, 0, NULL, &p), 0, "%s", nl_errmsg());
     nl_condsim_info info;
     nl_condsim_plan_info(p, &info);
-    cr_expect(info.on_samples == 25 && info.max_error == 0 && info.max_move < 1e-12, "%zu %g %g", info.on_samples,
-              info.max_error, info.max_move);
+    cr_expect(info.on_samples == 25 && info.sites == 0 && info.screening == 0 && info.max_move < 1e-12,
+              "%zu %zu %g %g", info.on_samples, info.sites, info.screening, info.max_move);
     cr_assert_eq(nl_synth_fft_plan_alloc(m, 2, g, h, NL_SYNTH_FFT_CLAMP, &fp), 0, "%s", nl_errmsg());
     cr_assert_eq(nl_synth_circulant_plan_alloc(m, 2, g, h, 0, 16, &cp), 0, "%s", nl_errmsg());
     for (uint64_t s = 1; s <= 6; s++) {
@@ -70,7 +70,7 @@ Test(condsim, honours_data_on_samples_exactly)
             cr_assert_eq(nl_synth_fft_execute(fp, s, f), 0);
         else
             cr_assert_eq(nl_synth_circulant_execute(cp, s, f), 0);
-        cr_assert_eq(nl_condsim_execute(p, f), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_condsim_execute(p, f, s, NULL), 0, "%s", nl_errmsg());
         double z[25];
         cr_assert_eq(nl_field_sample(f, (double[]){lo[0] + h[0] / 2, lo[1] + h[1] / 2}, NL_INTERP_NEAREST, 25, pts,
                                      z), 0);
@@ -122,12 +122,12 @@ static void ensemble_matches_kriging(int simple, size_t nmax)
         cr_assert_eq(nl_krige_plan_alloc(m, 2, N, pts, val, simple, mu, 1, &kp), 0, "%s", nl_errmsg());
         cr_assert_eq(nl_krige_eval_grid(kp, lo, est, var), 0);
     }
-    cr_assert_eq(nl_condsim_plan_alloc(m, N, pts, val, lo, f, NL_INTERP_LINEAR, simple, mu, nmax, &p), 0, "%s",
-                 nl_errmsg());
+    nl_condsim_options o = {.simple = simple, .mean = mu, .nmax = nmax};
+    cr_assert_eq(nl_condsim_plan_alloc(m, N, pts, val, lo, f, &o, 0, NULL, &p), 0, "%s", nl_errmsg());
     cr_assert_eq(nl_synth_circulant_plan_alloc(m, 2, g, h, 0, 16, &cp), 0, "%s", nl_errmsg());
     for (uint64_t s = 1; s <= M; s++) {
         cr_assert_eq(nl_synth_circulant_execute(cp, s, f), 0);
-        cr_assert_eq(nl_condsim_execute(p, f), 0, "%s", nl_errmsg());
+        cr_assert_eq(nl_condsim_execute(p, f, s, NULL), 0, "%s", nl_errmsg());
         for (size_t i = 0; i < G; i++) {
             double e = f->data[i] - est->data[i];
             s1[i] += e, s2[i] += e * e;
@@ -186,7 +186,7 @@ static int far_window(void *ctx, uint64_t seed, nl_field *out)
     far_ctx *c = ctx;
     int st = nl_synth_circulant_execute(c->cp, seed, c->full);
     if (!st)
-        st = nl_condsim_execute(c->p, c->full);
+        st = nl_condsim_execute(c->p, c->full, seed, NULL);
     for (size_t j = 0; !st && j < out->n[1]; j++)
         for (size_t i = 0; i < out->n[0]; i++)
             out->data[j * out->n[0] + i] = c->full->data[j * c->full->n[0] + 48 + i];
@@ -210,35 +210,46 @@ Test(condsim, far_from_the_data_the_covariance_is_the_models)
     data_on_samples(30, g, lo, (double[]){1, 1}, 0, 16, 3, pts, val);
     c.full = nl_field_alloc(2, g, NULL, NULL);
     cr_assert_eq(nl_synth_circulant_plan_alloc(m, 2, g, NULL, 0, 16, &c.cp), 0, "%s", nl_errmsg());
-    cr_assert_eq(nl_condsim_plan_alloc(m, 30, pts, val, lo, c.full, NL_INTERP_LINEAR, 1, 0, 0, &c.p), 0, "%s",
-                 nl_errmsg());
+    cr_assert_eq(nl_condsim_plan_alloc(m, 30, pts, val, lo, c.full, &(nl_condsim_options){.simple = 1}, 0, NULL,
+                                       &c.p), 0, "%s", nl_errmsg());
     stat_check_acf("conditional, far window", far_window, &c, w, r_markov2, 0, 200, (const long(*)[2])lags, L);
     nl_synth_circulant_plan_free(c.cp), nl_condsim_plan_free(c.p), nl_field_free(c.full), nl_model_free(m);
 }
 
-/* Between samples: the stated error s_i is the standard deviation of
- * U(t_i) - (bilinear U)(t_i); here a datum at the centre of four samples
- * of markov:scale=s, where s^2 / R(0) = 1 - 2 e^{-d/s} + (1/4)(1 + 2 e^{-1/s} + e^{-sqrt2/s})
- * with d = sqrt(0.5) (unit spacing); checked to 1e-12. */
-Test(condsim, states_the_interpolation_error)
+/* Between samples: the stated screening error is the standard deviation
+ * of the change in a site's conditional mean between 4 and 6 samples per
+ * axis.  The 1D exponential is Markov: given the two samples around a
+ * point, the others tell nothing more, so the error is 0 (to rounding:
+ * 1e-7, the square root of a difference of O(1) variances near 1e-16);
+ * in 2D it is not (markov:scale=4 here: the error is positive but small,
+ * below 0.05).  A datum outside the extent is refused, named. */
+Test(condsim, states_the_screening_error)
 {
     nl_model *m = test_model("markov:scale=4");
-    const size_t g[2] = {8, 8};
+    const size_t g2[2] = {8, 8}, g1[1] = {16};
     const double lo[2] = {0, 0};
-    double pt[2] = {3, 4}, v = 1; /* between samples (2, 3), (3, 3), (2, 4), (3, 4) at centres 2.5 .. 3.5 */
-    nl_field *f = nl_field_alloc(2, g, NULL, NULL);
+    double pt[2] = {3, 4.3}, v = 1;
+    nl_field *f = nl_field_alloc(2, g2, NULL, NULL), *f1 = nl_field_alloc(1, g1, NULL, NULL);
     nl_condsim_plan *p;
     nl_condsim_info info;
-    cr_assert_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NL_INTERP_LINEAR, 0, 0, 0, &p), 0, "%s", nl_errmsg());
+    cr_assert_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NULL, 0, NULL, &p), 0, "%s", nl_errmsg());
     nl_condsim_plan_info(p, &info);
-    double s = 4, want = 1 - 2 * exp(-sqrt(0.5) / s) + 0.25 * (1 + 2 * exp(-1 / s) + exp(-sqrt(2.0) / s));
-    cr_expect(fabs(info.max_error - sqrt(want)) < 1e-12, "%.17g vs %.17g", info.max_error, sqrt(want));
-    cr_expect(info.on_samples == 0 && fabs(info.max_move - sqrt(0.5)) < 1e-12);
+    cr_expect(info.sites == 1 && info.hood == NL_CONDSIM_HOOD && info.groups == 1 && info.largest == 16);
+    cr_expect(info.screening > 1e-4 && info.screening < 0.05, "2D: %g", info.screening);
+    cr_expect(info.on_samples == 0 && fabs(info.max_move - sqrt(0.5 * 0.5 + 0.2 * 0.2)) < 1e-12, "%g",
+              info.max_move);
+    nl_condsim_plan_free(p);
+    cr_assert_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f1, NULL, 0, NULL, &p), 0, "%s", nl_errmsg());
+    nl_condsim_plan_info(p, &info);
+    cr_expect(info.screening < 1e-7, "1D: %g", info.screening);
     nl_condsim_plan_free(p);
     pt[0] = 9; /* outside the extent 0:8 */
-    cr_expect_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NL_INTERP_LINEAR, 0, 0, 0, &p), NL_EINVAL);
+    cr_expect_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NULL, 0, NULL, &p), NL_EINVAL);
     cr_expect(strstr(nl_errmsg(), "datum 1") != NULL, "%s", nl_errmsg());
-    nl_field_free(f), nl_model_free(m);
+    pt[0] = 3;
+    cr_expect_eq(nl_condsim_plan_alloc(m, 1, pt, &v, lo, f, NULL, 1, (double[]){1, -1}, &p), NL_EINVAL);
+    cr_expect(strstr(nl_errmsg(), "point 1") != NULL, "%s", nl_errmsg());
+    nl_field_free(f), nl_field_free(f1), nl_model_free(m);
 }
 
 /* The command: K realizations in K files, each honouring data on samples

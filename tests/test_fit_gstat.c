@@ -268,3 +268,54 @@ Test(fit_gstat, nested_free_equals_fit_variogram)
     }
     json_decref(j);
 }
+
+/* R: Meuse's default variogram written as gstat's table (np, dist, gamma:
+ * vario.tsv), then fit.variogram of Sph + Nug from vgm(0.59, "Sph", 897,
+ * 0.05) with fit.method 1, 2, 6 and 7, each repeated to its fixed point
+ * (as fit_script).  Prints psill, range, nugget per method. */
+static const char methods_script[] =
+    "suppressMessages(library(gstat))\ndata(meuse, package = 'sp')\n"
+    "d <- data.frame(x = meuse$x, y = meuse$y, value = log(meuse$zinc))\n"
+    "write.table(format(d, digits = 17), 'meuse.tsv', sep = '\\t', quote = FALSE, row.names = FALSE)\n"
+    "v <- variogram(value ~ 1, ~x + y, d)\n"
+    "write.table(format(v[, c('np', 'dist', 'gamma')], digits = 17), 'vario.tsv', sep = '\\t', quote = FALSE,\n"
+    "            row.names = FALSE)\n"
+    "for (fm in c(1, 2, 6, 7)) {\n"
+    "  f <- vgm(0.59, 'Sph', 897, 0.05)\n"
+    "  for (i in 1:200) {\n"
+    "    g <- suppressWarnings(fit.variogram(v, f, fit.method = fm))\n"
+    "    ch <- max(abs(c(g$psill, g$range[2]) / c(f$psill, f$range[2]) - 1)); f <- g\n"
+    "    if (ch < 1e-13) break\n"
+    "  }\n"
+    "  cat(sprintf('%.17g', c(f$psill[2], f$range[2], f$psill[1])), sep = '\\n')\n"
+    "}\n";
+
+/* --weights by gstat's fit.method numbers (1 pairs, 2 reweighted, 6 ols,
+ * 7 distance) equal fit.variogram with that fit.method on Meuse, fitted
+ * from the data and from gstat's own variogram table (fit --variogram
+ * vario.tsv, its np, dist, gamma header); the default weights are 7's.
+ * Tolerance as wls_equals_fit_variogram: 1e-5 of the sill, 1e-5 relative
+ * for the range (measured: under 1e-8). */
+Test(fit_gstat, meuse_fit_methods_and_table)
+{
+    if (!gstat_available("fit.method 1, 2, 6, 7 and a variogram table vs gstat on Meuse"))
+        return;
+    static const char *const how[] = {"--weights 1", "--weights 2", "--weights 6", "--weights 7", ""};
+    double r[12];
+    cr_assert_eq(gstat_run(methods_script, r, 12), 12, "R failed (sp's meuse data?)");
+    for (int w = 0; w < 5; w++)
+        for (int table = 0; table < 2; table++) {
+            char cmd[256];
+            const double *g = r + 3 * (w < 4 ? w : 3); /* no --weights: gstat's default 7 */
+            double sill = g[0] + g[2];
+            snprintf(cmd, sizeof cmd, "fit %s --model spherical:var=0.59,scale=897,nugget=0.05 %s --json",
+                     table ? "--variogram vario.tsv" : "meuse.tsv", how[w]);
+            json_t *j = run_noiselab_json(cmd);
+            double var = fitted(j, "var"), scale = fitted(j, "scale"), nug = fitted(j, "nugget");
+            cr_expect(json_is_true(json_object_get(j, "converged")), "%s: not converged", cmd);
+            cr_expect(fabs(var - g[0]) <= 1e-5 * sill, "%s: var %.10g, gstat %.10g", cmd, var, g[0]);
+            cr_expect(fabs(scale - g[1]) <= 1e-5 * g[1], "%s: scale %.10g, gstat %.10g", cmd, scale, g[1]);
+            cr_expect(fabs(nug - g[2]) <= 1e-5 * sill, "%s: nugget %.10g, gstat %.10g", cmd, nug, g[2]);
+            json_decref(j);
+        }
+}

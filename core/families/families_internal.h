@@ -39,6 +39,10 @@
  * whose params[] begin shape, scale, var, nugget, the length its scale. */
 void nl_peer_shape_first(const double *q, double *p);
 
+/* A gstat name's angle= and ratio= are gstat's anis = c(angle, ratio):
+ * turn its angle into noiselab's (core/families/peers.c). */
+void nl_peer_gstat_anis(nl_model *m);
+
 /* gstat's and GSTools' keys for a family of one length: psill range
  * nugget, var len_scale nugget. */
 extern const nl_family_param nl_peer_gstat_params[3];

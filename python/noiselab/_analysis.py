@@ -397,9 +397,11 @@ def _check_spread(what, v):
                     "expected a range below %.3g (sqrt(DBL_MAX / 4 / %.0f pairs))" % (what, lo, hi, bound, pairs))
 
 
-def _vopts(width, cutoff, estimator, direction, tolerance):
+def _vopts(width, cutoff, estimator, direction, tolerance, bins="gstat", drift="constant"):
     o = ffi.new("nl_variogram_options *")
     lib.nl_variogram_options_default(o)
+    o.bins = ("gstat", "floor").index(as_choice("bins", bins, ("gstat", "floor")))
+    o.drift = ("constant", "linear", "quadratic").index(as_choice("drift", drift, ("constant", "linear", "quadratic")))
     for name, val in (("width", width), ("cutoff", cutoff)):
         if val is not None:
             setattr(o, name, as_positive(name, val))
@@ -422,14 +424,17 @@ def _field_points(field, spacing):
 
 
 def variogram(points=None, values=None, field=None, spacing=1.0, width=None, cutoff=None, estimator="matheron",
-              direction=None, tolerance=None):
+              direction=None, tolerance=None, bins="gstat", drift="constant"):
     """Empirical semivariogram binned as gstat's variogram(), as ``noiselab
     variogram``: of scattered data (points (n, d), values) or of a field's
     samples at index * spacing.  width: bin width (default cutoff / 15);
     cutoff: largest distance (default a third of the bounding-box
     diagonal); direction (degrees clockwise from +y) with tolerance
-    (degrees).  Returns (distance, gamma, pairs) over the non-empty bins."""
-    o = _vopts(width, cutoff, estimator, direction, tolerance)
+    (degrees); bins "gstat" ((lo, hi], h <= cutoff, the default) or "floor"
+    ([lo, hi), h < cutoff); drift "linear" or "quadratic" (points): the
+    variogram of the least-squares drift's residuals, gstat's variogram(z ~ x
+    + y).  Returns (distance, gamma, pairs) over the non-empty bins."""
+    o = _vopts(width, cutoff, estimator, direction, tolerance, bins, drift)
     out = ffi.new("nl_variogram **")
     if field is not None:
         if points is not None:
@@ -449,7 +454,9 @@ def variogram(points=None, values=None, field=None, spacing=1.0, width=None, cut
     return get(vg.distance), get(vg.gamma), get(vg.pairs)
 
 
-_WEIGHTS = ("cressie", "pairs", "reweighted", "distance")
+_WEIGHTS = ("cressie", "pairs", "reweighted", "distance", "ols")  # nl_fit_weights by index
+# gstat's fit.method numbers
+_GSTAT_WEIGHTS = {1: "pairs", 2: "reweighted", 6: "ols", 7: "distance"}
 
 
 def _fit_status(q):
@@ -462,11 +469,14 @@ def _fit_status(q):
 
 
 def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugget=False, fix=None, method="wls",
-        weights="cressie", width=None, cutoff=None):
+        weights=None, width=None, cutoff=None, bins="gstat"):
     """Fit a model family to data, as ``noiselab fit``: weighted least
-    squares on the empirical variogram (method="wls", weights cressie, pairs,
-    reweighted or distance), or the Gaussian likelihood ("ml", "reml",
-    started from the wls fit, with 95% profile-likelihood intervals).
+    squares on the empirical variogram (method="wls", weights distance, the
+    default, gstat's fit.method 7; pairs, 1; reweighted, 2; ols, 6; or cressie;
+    gstat's numbers 7, 1, 2, 6 are accepted too; bins as variogram()), or
+    the Gaussian likelihood ("ml", "reml", started from the wls fit,
+    Cressie-weighted unless weights is given, with 95% profile-likelihood
+    intervals).
     model: a family whose entry in models() has fit=True, or a spec of
     them with starting values or nested ("spherical:var=0.5,scale=12 +
     markov:scale=40": every structure's parameters, named var.1, scale.2,
@@ -485,6 +495,10 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
         p, v = _points(points, values, "fit")
     _check_spread("fit: values", v)
     method = as_choice("method", method, ("wls", "ml", "reml"))
+    if weights is None:  # as the CLI: gstat's default; ml, reml start from Cressie's fit
+        weights = "distance" if method == "wls" else "cressie"
+    if isinstance(weights, int) and not isinstance(weights, bool) and weights in _GSTAT_WEIGHTS:
+        weights = _GSTAT_WEIGHTS[weights]
     weights = as_choice("weights", weights, _WEIGHTS)
     if fix is None:
         fix = {}
@@ -503,7 +517,7 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
     o.nfix = len(fix)
     o.weights = _WEIGHTS.index(weights)
     o.likelihood = 1 if method == "reml" else 0
-    vo = _vopts(width, cutoff, "matheron", None, None)
+    vo = _vopts(width, cutoff, "matheron", None, None, bins)
     r = ffi.new("nl_fit_result *")
     dim = p.shape[1]
     check(lib.nl_fit_check_options(o, dim))

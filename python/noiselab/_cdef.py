@@ -551,6 +551,8 @@ typedef struct {
     int directional;
     double direction;
     double tolerance;
+    int bins;
+    int drift;
 } nl_variogram_options;
 void nl_variogram_options_default(nl_variogram_options *o);
 typedef struct {

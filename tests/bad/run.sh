@@ -21,8 +21,12 @@
 # no file left in the folder but the fixtures and, for EXIT 0, the outputs;
 # for EXIT 2: exactly one line on stderr, "noiselab: ..." containing NEEDLE;
 # for EXIT 0: no nan or inf on stdout or in any text output, and every EXR
-# output finite.
+# output finite.  SHARD=I/N runs only the cases whose number (from 0, over
+# all the files) is I modulo N, with fixtures of its own (tests/par.sh runs
+# the shards at once).
 set -u
+shard=${SHARD:-0/1}
+si=${shard%/*} sn=${shard#*/}
 NL=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 FINITE=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
 shift 2
@@ -44,6 +48,7 @@ for file in "$@"; do
     while IFS="$tab" read -r rule exit needle cmd; do
         case "$rule" in ''|'#'*) continue ;; esac
         n=$((n + 1))
+        [ $(( (n - 1) % sn )) = "$si" ] || continue
         d="$work/case"
         rm -rf "$d" && mkdir "$d"
         ln -s "$work"/fix/* "$d/"
@@ -82,8 +87,10 @@ for file in "$@"; do
         fi
     done <"$file"
 done
-printf 'bad-inputs: per rule:'
+tag=bad-inputs
+[ "$sn" = 1 ] || tag="bad-inputs (shard $shard)"
+printf '%s: per rule:' "$tag"
 for r in 1 2 3 4 5 6 7; do eval "printf ' %s:%s' $r \${r$r:-0}"; done
 echo
-echo "bad-inputs: $pass passed, $fail failed"
+echo "$tag: $pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -32,7 +32,11 @@
 # then stderr), to paste from.
 # The page's links to files of the tree, `](path)` and `](path#anchor)`,
 # must name files that exist (pictures of paper-figures/ included).
+# SHARD=I/N tests only the pages whose number (from 0) is I modulo N
+# (tests/par.sh runs the shards at once).
 set -u
+shard=${SHARD:-0/1}
+si=${shard%/*} sn=${shard#*/}
 top=$(cd "$(dirname "$0")/../.." && pwd)
 bin=$(cd "$1" && pwd)
 shift
@@ -63,8 +67,10 @@ compare_output() {
     fi
     : >"$work/want"
 }
-n=0 links=0 fail=0 outs=0
+n=0 links=0 fail=0 outs=0 k=0
 for page in "$@"; do
+    k=$((k + 1))
+    [ $(( (k - 1) % sn )) = "$si" ] || continue
     name=$(basename "$page")
     pdir=$(cd "$(dirname "$page")" && pwd)
     for link in $(grep -o '](\([^)#: ]*\)[)#]' "$page" | sed 's/^](//; s/[)#]$//'); do
@@ -105,5 +111,6 @@ for page in "$@"; do
     done <"$work/cmds"
     compare_output
 done
+[ "$sn" = 1 ] || printf '(shard %s) ' "$shard"
 echo "documentation: $n commands, $outs outputs and $links links, $fail failed"
 [ "$fail" -eq 0 ]
