@@ -169,7 +169,7 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # Then tools/test-install.sh installs into a scratch DESTDIR and builds the
 # examples and the README's example against it with pkg-config alone.
 test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
-	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2
+	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2 --filter '!(*_slow)/*'
 	LIMIT=$(if $(findstring sanitize,$(OPT)),60,5) NOISELAB_FFTW=estimate sh tests/check/run.sh $(BIN)
 	NOISELAB_FFTW=estimate NOISELAB_SANITIZED=$(if $(findstring sanitize,$(OPT)),1,) sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
 	NOISELAB_FFTW=estimate sh tests/par.sh "SHARD=0/2 sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite" \
@@ -179,6 +179,13 @@ test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
 	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) WISDOM_SIZES=64 sh tools/test-install.sh
+
+# The slowest Criterion tests (suites named *_slow: sweeps over every model
+# kind and plan, tens of seconds each), kept out of `make test`'s 10 minutes;
+# CI (.ci/run) runs them after it.
+test-slow: all $(BUILD)/tests/run
+	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2 --filter '*_slow/*'
+.PHONY: test-slow
 
 # The installed API: every installed header compiles alone as C and as C++
 # with C linkage; each shared library exports exactly what its installed

@@ -223,8 +223,8 @@ static void every_kind(int dim)
 }
 
 Test(check_cli, every_kind_1d) { every_kind(1); }
-Test(check_cli, every_kind_2d) { every_kind(2); }
-Test(check_cli, every_kind_3d) { every_kind(3); }
+Test(check_cli_slow, every_kind_2d) { every_kind(2); }
+Test(check_cli_slow, every_kind_3d) { every_kind(3); }
 
 static json_t *must(const char *spec, int dim)
 {
@@ -347,7 +347,7 @@ static double neighbour_omega(json_t *o)
  * exact at k = 0), 3 digits, rounded down: within 3% below the exact
  * boundary (5% allowed for gauss-osc, whose negative lobe the scan finds
  * with its frequency resolution). */
-Test(check_cli, says_why_and_a_valid_neighbour)
+Test(check_cli_slow, says_why_and_a_valid_neighbour)
 {
     json_t *o = must("gauss-osc:omega=10", 3);
     double w;

@@ -45,7 +45,7 @@ Test(fft, bit_reproducible_across_runs_and_threads)
  * largest value (the transforms differ only in the order of their sums).
  * The wisdom cache points at an empty folder, so MEASURE really measures
  * (and would overwrite any array planned on after it was filled). */
-Test(fft, any_plan_gives_the_same_field_to_rounding)
+Test(fft_slow, any_plan_gives_the_same_field_to_rounding)
 {
     size_t n[2] = {512, 512};
     int st;

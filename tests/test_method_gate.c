@@ -20,7 +20,7 @@ static int synth(const char *method, const char *spec, const char *size, const c
     return run_noiselab(args, out, sizeof out, err, sizeof err);
 }
 
-Test(method_gate, refuses_what_check_refuses)
+Test(method_gate_slow, refuses_what_check_refuses)
 {
     static const struct {
         const char *spec, *size;

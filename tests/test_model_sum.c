@@ -240,7 +240,7 @@ static double param_of(json_t *j, const char *name)
     return json_real_value(v);
 }
 
-Test(model_sum, negligible_structure_fits_as_one)
+Test(model_sum_slow, negligible_structure_fits_as_one)
 {
     static const char *const methods[] = {"wls", "ml"};
     static const char *const one[] = {"var", "scale", "nugget"}, *const two[] = {"var.1", "scale.1", "nugget.1"};

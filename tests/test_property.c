@@ -383,5 +383,5 @@ static void sweep(int dim)
                 stats[2]);
 }
 
-Test(property, models_1d, .timeout = 60) { sweep(1); }
-Test(property, models_2d, .timeout = 60) { sweep(2); }
+Test(property_slow, models_1d, .timeout = 60) { sweep(1); }
+Test(property_slow, models_2d, .timeout = 60) { sweep(2); }

@@ -65,7 +65,7 @@ static void at_lattice_points(nl_rank1_lattice *L, const char *spec)
     free(c), free(f), free(g), free(x), free(v), free(gv);
 }
 
-Test(rank1_eval, series_at_lattice_points)
+Test(rank1_eval_slow, series_at_lattice_points)
 {
     nl_rank1_lattice L;
     cr_assert_eq(nl_rank1_fibonacci(15, &L), NL_OK);  /* N = 610, even: the N/2 term */

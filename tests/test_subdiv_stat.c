@@ -139,4 +139,4 @@ Test(nl_subdiv_corr, lewis_table1_model_1d)
 }
 Test(nl_subdiv_corr, gauss_osc_1d) { improves("gauss-osc:omega=10", 1, 0.01171875, 4, 4, 5); }
 Test(nl_subdiv_corr, isotropic_markaussian_2d) { improves("markaussian:alpha=1.4,scale=6", 2, 1.0, 2, 2, 5); }
-Test(nl_subdiv_corr, separable_markov_2d) { improves("markov:scale=6,sep", 2, 1.0, 2, 4, 5); }
+Test(nl_subdiv_corr_slow, separable_markov_2d) { improves("markov:scale=6,sep", 2, 1.0, 2, 4, 5); }

@@ -25,12 +25,14 @@ from ._ffi import LIBRARY_PATH, Error
 from ._synth import METHODS, Plan, methods, synth
 from ._io import models, read, version, write
 from ._analysis import acf, check_model, coeffs, fit, hist, krige, moments, nonlin, psd, shape, variogram
+from ._krige import CondSim, Krige, condsim, sample
 from ._ensemble import ensemble_acf, ensemble_hist, ensemble_psd
 
 check = check_model  # noiselab.check, as the CLI's verb
 
 __version__ = version()
 __all__ = ["Error", "Plan", "synth", "read", "write", "models", "version", "acf", "psd", "hist", "moments",
-           "check", "check_model", "coeffs", "nonlin", "shape", "krige", "variogram", "fit", "METHODS", "methods",
+           "check", "check_model", "coeffs", "nonlin", "shape", "krige", "Krige", "CondSim", "condsim", "sample",
+           "variogram", "fit", "METHODS", "methods",
            "ensemble_acf", "ensemble_psd", "ensemble_hist",
            "LIBRARY_PATH"]

@@ -7,6 +7,7 @@ import numpy as np
 from ._args import (as_array, as_bool, as_choice, as_coords, as_float, as_int, as_positive, as_spacing, as_str,
                     as_values, refuse)
 from ._ffi import Dist, Error, FieldView, Model, alloc_field, check, ffi, lib, owned_field, planner
+from ._krige import Krige
 
 _AXES = {"x": 0, "y": 1, "z": 2}
 
@@ -363,22 +364,13 @@ def krige(points, values, acf, at, mean=None, strict=False, variance=False):
     at      (m, d) coordinates where to estimate.
     strict  refuse a singular system instead of solving by the pseudo-inverse.
     Returns the m estimates, or (estimates, kriging variances) with
-    variance=True."""
+    variance=True.  One-shot :class:`noiselab.Krige` (make one to predict
+    many times, or for nmax, radius, drift, cross-validation)."""
     p, v = _points(points, values, "krige")
     x = as_coords("krige: at", at, p.shape[1], least=0)
-    mu, strict, variance = _mean(mean), as_bool("strict", strict), as_bool("variance", variance)
-    m = Model(acf, "acf")
-    out = ffi.new("nl_krige_plan **")
-    with planner:
-        check(lib.nl_krige_plan_alloc(m.ptr, p.shape[1], p.shape[0], _dptr(p), _dptr(v), 0 if mean is None else 1,
-                                      0.0 if mean is None else mu, 1 if strict else 0, out))
-        plan = ffi.gc(out[0], lib.nl_krige_plan_free)
-        est = np.empty(x.shape[0])
-        var = np.empty(x.shape[0]) if variance else None
-        if x.shape[0]:
-            check(lib.nl_krige_eval_block(plan, x.shape[0], _dptr(x), _dptr(est),
-                                          _dptr(var) if variance else ffi.NULL))
-    return (est, var) if variance else est
+    _mean(mean), as_bool("strict", strict), as_bool("variance", variance)
+    k = Krige(p, v, acf, mean=mean, strict=strict)
+    return k.predict(x, variance=variance)
 
 
 def _check_spread(what, v):

@@ -72,6 +72,7 @@ int nl_model_is_intrinsic(const nl_model *m);
 double nl_model_variogram(const nl_model *m, int dim, const double *lag);
 double nl_model_acf(const nl_model *m, int dim, const double *lag);
 int nl_model_check_dim(const nl_model *m, int dim);
+int nl_model_is_reentrant(const nl_model *m);
 typedef struct {
     const char *name;
     const char *params;
@@ -536,6 +537,64 @@ int nl_krige_plan_alloc(const nl_model *m, int dim, size_t n, const double *pts,
 int nl_krige_eval_block(const nl_krige_plan *p, size_t count, const double *x, double *est, double *var);
 void nl_krige_plan_info(const nl_krige_plan *p, nl_krige_info *info);
 void nl_krige_plan_free(nl_krige_plan *p);
+int nl_krige_eval_grid(const nl_krige_plan *p, const double *lo, const nl_field *est, nl_field *var);
+
+/* analysis/krige_local.h */
+enum { NL_DRIFT_NONE = -1, NL_DRIFT_CONSTANT = 0, NL_DRIFT_LINEAR = 1, NL_DRIFT_QUADRATIC = 2 };
+typedef struct {
+    size_t nmax;
+    double radius;
+    int drift;
+    double mean;
+} nl_krige_local_options;
+typedef struct nl_krige_local nl_krige_local;
+int nl_krige_local_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val,
+                         const nl_krige_local_options *o, nl_krige_local **out);
+void nl_krige_local_free(nl_krige_local *k);
+size_t nl_krige_local_terms(const nl_krige_local *k);
+int nl_krige_local_eval(const nl_krige_local *k, size_t count, const double *x, double *est, double *var);
+int nl_krige_local_grid(const nl_krige_local *k, const double *lo, nl_field *est, nl_field *var);
+typedef struct {
+    double mean_error, var_error;
+    double mean_z, var_z;
+    double rmse;
+} nl_krige_cv_summary;
+int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_krige_cv_summary *s);
+
+/* analysis/condsim.h */
+typedef struct nl_condsim_plan nl_condsim_plan;
+typedef struct {
+    int simple;
+    double mean;
+    size_t nmax;
+    size_t hood;
+    int rekrige;
+} nl_condsim_options;
+typedef struct {
+    size_t n;
+    size_t on_samples;
+    size_t sites;
+    size_t hood;
+    size_t groups;
+    size_t largest;
+    size_t unlinked;
+    double screening;
+    size_t worst;
+    double max_move;
+    int reuse;
+    size_t weight_bytes;
+} nl_condsim_info;
+int nl_condsim_plan_alloc(const nl_model *m, size_t n, const double *pts, const double *val, const double *lo,
+                          const nl_field *grid, const nl_condsim_options *o, size_t np, const double *at,
+                          nl_condsim_plan **out);
+int nl_condsim_execute(const nl_condsim_plan *p, nl_field *f, uint64_t seed, double *z_at);
+void nl_condsim_plan_info(const nl_condsim_plan *p, nl_condsim_info *info);
+void nl_condsim_plan_free(nl_condsim_plan *p);
+
+/* core/field_sample.h */
+enum { NL_INTERP_NEAREST = 0, NL_INTERP_LINEAR = 1 };
+int nl_field_sample(const nl_field *f, const double *x0, int interp, size_t n, const double *pts, double *vals);
+void nl_field_random_points(const nl_field *f, const double *x0, uint64_t seed, size_t n, double *pts);
 
 /* core/io_points.h, analysis/variogram.h */
 typedef struct {

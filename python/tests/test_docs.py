@@ -4,6 +4,8 @@ matplotlib, which the tests do not: it is skipped without it."""
 import os
 import re
 
+import numpy as np
+
 import pytest
 
 from conftest import TOP
@@ -24,11 +26,12 @@ def test_readme_python_example(tmp_path, monkeypatch):
 
 def test_python_page(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    errors, ensemble, plot = blocks("docs/python.md")
+    errors, kriging, ensemble, plot = blocks("docs/python.md")
     ns = {}
     exec(compile(errors, "docs/python.md", "exec"), ns)
+    exec(compile(kriging, "docs/python.md", "exec"), ns)
+    assert np.abs(ns["at_data"] - ns["vals"]).max() < 1e-6
     exec(compile(ensemble, "docs/python.md", "exec"), ns)
-    import numpy as np
     assert np.max(np.abs(ns["mean"] - ns["target"]) / ns["se"]) < 5
     pytest.importorskip("matplotlib")
     exec(compile(plot, "docs/python.md", "exec"), ns)
