@@ -101,31 +101,82 @@
  * m bins, p free parameters (the least-squares form; not a likelihood, so
  * only comparable between fits of one variogram with one weighting).
  *
- * ML and REML (nl_fit_ml).  The data z_i at points x_i, an unknown constant
- * mean beta (generalised least squares, profiled out), covariance C_ij =
- * R(x_i - x_j) (the nugget on the diagonal):
- *   -2 l_ML   = n ln 2 pi + ln|C| + r' C^-1 r,  r = z - beta 1,
- *   -2 l_REML = (n-1) ln 2 pi + ln|C| + ln(1' C^-1 1) + r' C^-1 r
- * (Patterson and Thompson 1971; gstat has no likelihood fit, GSTools none;
- * RandomFields' RFfit and geoR's likfit use these).  Minimised over the
- * transformed parameters by GSL's Nelder-Mead simplex (gsl_multimin,
- * nmsimplex2, simplex size below 1e-5 in log units or 2000 steps), the
- * Cholesky factor of C by GSL.  Standard errors from the observed
- * information: the inverse of the Hessian of -l, by central differences
- * (step 2e-3 in the transformed parameters).  AIC = -2 l + 2 p, p the free
- * covariance parameters plus the mean.  Two data at one place share the
- * continuous part of the covariance but not the nugget's white noise; they
- * are refused without a nugget (C would be singular).  Data without
- * variation are refused by both fits (WLS: a variogram 0 in every bin).
+ * ML and REML (nl_fit_ml, nl_fit_ml_design).  The data z_i at points x_i,
+ * a mean X beta with unknown coefficients beta (generalised least squares,
+ * profiled out), covariance C_ij = R(x_i - x_j) (the nugget on the
+ * diagonal):
+ *   -2 l_ML   = n ln 2 pi + ln|C| + r' C^-1 r,  r = z - X beta,
+ *   -2 l_REML = (n-q) ln 2 pi + ln|C| + ln|X' C^-1 X| + r' C^-1 r,
+ * beta = (X' C^-1 X)^-1 X' C^-1 z, q the columns of X (Harville 1974,
+ * eq. (2), without its constant -ln|X' X|: REML values of two designs of
+ * one column space differ by a constant; Patterson and Thompson 1971 for
+ * X = 1; gstat has no likelihood fit, GSTools none; RandomFields' RFfit
+ * and geoR's likfit use these).  The Cholesky factor of C by GSL.  Standard
+ * errors from the observed information: the inverse of the Hessian of -l,
+ * by central differences (step 2e-3 in the transformed parameters).
+ * AIC = -2 l + 2 (p + q), p the free covariance parameters.  Two data at
+ * one place share the continuous part of the covariance but not the
+ * nugget's white noise; they are refused without a nugget (C would be
+ * singular).  Data without variation are refused by both fits (WLS: a
+ * variogram 0 in every bin).
+ *
+ * Drift (nl_fit_options.drift, nl_fit_ml_design).  X's columns: 1 for
+ * NL_DRIFT_CONSTANT (the default: the GLS mean, nl_fit_result.mean);
+ * 1, u_a for _LINEAR; 1, u_a, u_a u_b (a <= b) for _QUADRATIC; none for
+ * _NONE (a known mean 0), u_a = (x_a - c_a) / s_a the coordinates centred
+ * on the bounding box's centre c and divided by its half-widths s (as
+ * analysis/krige_local.h: the same columns as `noiselab krige --drift`),
+ * then nl_fit_ml_design's covariate columns.  nl_fit_result.drift gives
+ * beta in that order, drift_se the square roots of the diagonal of
+ * (X' C^-1 X)^-1 at the optimum (the GLS errors, the covariance parameters
+ * taken as known).  The design is refused when its columns are linearly
+ * dependent (X' X, columns scaled to norm 1, with a condition number above
+ * about 1e12) or with more than n - p - 1 columns.
+ *
+ * Search.  The free parameters are held to a box: each scale from a tenth
+ * of the smallest to NL_FIT_SCALE_REACH = 10 times the largest distance
+ * between two data, each variance and nugget up to NL_FIT_VAR_REACH = 1e6
+ * times the sample variance, each nugget above 1e-10 of it (0, below).  A
+ * likelihood can have several minima in the scale (the spherical range:
+ * Meuse's log(zinc), REML, has them at ranges 1203 and 3031, -2 l 196.60
+ * and 194.92), so nl_fit_ml does not stop at the first: with
+ * search = NL_FIT_SEARCH_GLOBAL (the default), a rough simplex from the
+ * start (simplex size 1e-2), then the profile of -2 l over the first free
+ * scale on a grid of 17 scales from max(hmin, hmax / 1000) to 3 hmax,
+ * evenly in log (hmin, hmax: the smallest and largest distance), each
+ * point optimised in the other parameters (their common variance factor in
+ * closed form when every variance and nugget is free and the model a sum,
+ * Mardia and Marshall 1984), then 6 more points around each of its three
+ * lowest local minima (a quarter of the spacing apart: the spherical
+ * model's valleys can be a tenth of the range wide); then up to two of
+ * the lowest points in distinct valleys, within 2 of the lowest and 0.5 of
+ * the best refined, are each optimised locally.  A local optimisation
+ * (alone with NL_FIT_SEARCH_LOCAL) is GSL's Nelder-Mead simplex
+ * (gsl_multimin nmsimplex2; simplex size below 1e-5 in the transformed
+ * units or 2000 steps; the box as a quadratic penalty outside it),
+ * restarted from its end (at least twice, at most four times) until the
+ * projected gradient of -2 l in the transformed parameters (central
+ * differences, step 1e-4; a component pointing out of the box at its edge
+ * dropped) is below 1e-4 n in every component: converged.  A scale or
+ * variance at the upper end of its box (or a scale at the lower) means the
+ * likelihood still improves beyond it, with no optimum inside: that
+ * parameter is flagged NL_FIT_PARAM_AT_BOUND and the fit not converged
+ * (Meuse, markov with a nugget, REML: -2 l falls towards the linear
+ * variogram's 195.53 as the scale grows).  nl_fit_result.starts counts the
+ * local optimisations, gradient the projected gradient's largest
+ * component at the optimum.  When a profile interval (below) meets a point
+ * more than 1e-2 below the optimum, the fit restarts there (a local
+ * optimisation, then the covariance and the intervals again; at most three
+ * times): nl_fit_result.restarts counts them.
  *
  * Cost (nl_fit_ml_work).  O(n^3) per likelihood evaluation: the estimate
  * is E (n^3 / 3 + 50 n^2) operations (the Cholesky factor and the model at
- * n^2 / 2 pairs) with E = 150 k + 2 k^2 + 1 + 20 m (1 + 40 (k - 1))
- * evaluations for k free parameters and m profile intervals (the simplex,
+ * n^2 / 2 pairs) with E = 450 k + 2 k^2 + 1 + 20 m (1 + 40 (k - 1))
+ * evaluations for k free parameters and m profile intervals (the search,
  * the Hessian, about 10 profile points per end).  A fit above the budget
  * (max_work, or NL_FIT_ML_WORK_MAX = 2e12: about 3 minutes at the 1e10
  * operations per second of a 2020s core; markov with a nugget and every
- * interval: up to about 1000 data; without intervals about 2000) is
+ * interval: up to about 1000 data; without intervals about 1600) is
  * refused with NL_ETOOBIG, as is n above NL_FIT_ML_MAX.
  *
  * Intervals (ML and REML, nl_fit_options.intervals): the 95% profile-
@@ -140,7 +191,11 @@
  * solver (gsl_root_fsolver_brent) to 1e-3 in the transformed coordinate
  * (0.1% of a positive parameter); the other parameters are re-optimised by
  * Nelder-Mead (simplex size 1e-3, or a gain of -2 l under 1e-4 in 10 steps)
- * from the previous profile point.  An end
+ * from the last profile point inside the interval.  An end where another
+ * parameter sits at the upper edge of its search box is tried again with
+ * that edge 10 times further: when the profile falls there by more than
+ * 0.5, the box and not the data bounded it, and the end is unbounded
+ * (Meuse, markov, REML: var's upper end while the scale runs away).  An end
  * not reached within 12 units is the edge of the parameter's domain (0, or
  * +infinity for var, scale, nugget, nu, omega; 0 or 2 for alpha): the
  * data do not bound the parameter on that side.  Costs about 7 profile
@@ -152,7 +207,8 @@
  * and var 0.93 of the time, the Wald interval 0.85 and 0.88; markov with a
  * nugget: scale 0.93, var 0.98, nugget 0.96).  WLS fits report no intervals (lower, upper NaN).
  *
- * Statuses: NL_OK; NL_EINVAL (an unknown weighting, a family that cannot be fitted, a fixed
+ * Statuses: NL_OK; NL_EINVAL (an unknown weighting, drift or search, a drift's
+ * design that is not finite or has dependent columns, a family that cannot be fitted, a fixed
  * parameter the family does not have or out of its range, fewer bins with
  * pairs than free parameters + 1, fewer data than free parameters + 2, a
  * non-finite coordinate or value, coordinates spanning no finite extent,
@@ -162,7 +218,8 @@
  * NL_ETOOBIG (n above NL_FIT_ML_MAX, work above the budget, or its n x n
  * matrix beyond the memory limit); NL_ENOMEM; NL_EFAIL (the optimiser found no finite objective, or
  * the reweighted fit met a model semivariogram of 0).
- * A fit that stops at the iteration limit is NL_OK with converged = 0.
+ * A fit that stops at the iteration limit, with a projected gradient above
+ * its test, or at the edge of its search box is NL_OK with converged = 0.
  * Thread safety: fits parse and evaluate models of named families only,
  * which is reentrant; each call owns its workspaces, so concurrent calls
  * are safe. */
@@ -173,6 +230,8 @@
 extern "C" {
 #endif
 
+#include "krige_local.h" /* NL_DRIFT_* */
+
 #include <stddef.h>
 
 #define NL_FIT_MAX_FIX 8
@@ -180,6 +239,11 @@ extern "C" {
 /* The work budget of a likelihood fit (nl_fit_options.max_work 0), in
  * floating-point operations: see "Cost" above. */
 #define NL_FIT_ML_WORK_MAX 2e12
+/* The search box of a likelihood fit (see Search): scales up to
+ * NL_FIT_SCALE_REACH times the largest distance between data, variances
+ * and nuggets up to NL_FIT_VAR_REACH times the sample variance. */
+#define NL_FIT_SCALE_REACH 10.0
+#define NL_FIT_VAR_REACH 1e6
 /* The least reciprocal condition number of an information matrix whose
  * inverse is reported: sqrt(DBL_EPSILON), see "Identifiability" above. */
 #define NL_FIT_RCOND_MIN 1.4901161193847656e-08
@@ -198,6 +262,8 @@ typedef enum {
     NL_FIT_CRESSIE = 0, NL_FIT_PAIRS = 1, NL_FIT_REWEIGHTED = 2, NL_FIT_DISTANCE = 3, NL_FIT_OLS = 4
 } nl_fit_weights;
 typedef enum { NL_FIT_ML = 0, NL_FIT_REML = 1 } nl_fit_likelihood;
+/* How a likelihood fit looks for its optimum (see Search). */
+typedef enum { NL_FIT_SEARCH_GLOBAL = 0, NL_FIT_SEARCH_LOCAL = 1 } nl_fit_search;
 /* Which profile-likelihood intervals an ML or REML fit computes. */
 typedef enum { NL_FIT_INTERVALS_NONE = 0, NL_FIT_INTERVALS_ALL = 1, NL_FIT_INTERVALS_SCALE = 2 } nl_fit_intervals;
 
@@ -215,6 +281,12 @@ typedef struct {
     nl_fit_intervals intervals;          /* ML/REML: profile intervals of none, every free
                                             parameter, or the scale alone */
     double max_work;                     /* ML/REML: the work budget (0: NL_FIT_ML_WORK_MAX) */
+    int drift;                           /* ML/REML: the mean's terms in the coordinates,
+                                            NL_DRIFT_CONSTANT (0, the default), _LINEAR,
+                                            _QUADRATIC or _NONE (a known mean 0) of
+                                            analysis/krige_local.h (see Drift) */
+    nl_fit_search search;                /* ML/REML: the global search (default) or one local
+                                            optimisation from the start (see Search) */
 } nl_fit_options;
 
 /* One fitted parameter. */
@@ -243,13 +315,21 @@ typedef struct {
     size_t nfree;                         /* free parameters */
     double objective;                     /* WLS: weighted sum of squares; ML: -2 l at the optimum */
     double aic;                           /* see above */
-    double mean;                          /* ML: the GLS mean; WLS: NaN */
+    double mean;                          /* ML: the first drift coefficient (the GLS mean with
+                                             a constant drift; 0 without a drift); WLS: NaN */
     size_t nobs;                          /* bins used (WLS) or data (ML) */
     int iterations;                       /* optimiser steps */
     int converged;                        /* the optimiser's test was met */
     double rcond;                         /* the information matrix's reciprocal condition
                                              number (0 when not computable) */
     unsigned flags;                       /* the OR of the parameters' flags */
+    size_t ndrift;                        /* ML/REML: drift coefficients (0 for WLS) */
+    double *drift;                        /* their GLS estimates at the optimum (ndrift; NULL: none) */
+    double *drift_se;                     /* their standard errors, sqrt diag (X' C^-1 X)^-1 */
+    int starts;                           /* ML/REML: local optimisations run (see Search) */
+    int restarts;                         /* ML/REML: restarts from a lower profile point */
+    double gradient;                      /* ML/REML: the largest component of the projected
+                                             gradient of -2 l at the optimum (transformed units) */
 } nl_fit_result;
 
 /* Release a result's parameters (param = NULL, np = 0; NULL or a released
@@ -278,6 +358,16 @@ double nl_fit_ml_work(size_t n, int dim, const nl_fit_options *o);
  * memory limit) and frees it before returning. */
 int nl_fit_ml(const double *coords, const double *values, size_t n, int dim, const nl_fit_options *o,
               nl_fit_result *res);
+
+/* The same with p covariates in the drift: design[i * p + c] the c-th
+ * covariate at point i (row-major n x p; the caller's units), columns of X
+ * after the terms of o->drift (so o->drift = NL_DRIFT_CONSTANT gives an
+ * intercept and the covariates, as gstat's z ~ c1 + c2; NL_DRIFT_NONE the
+ * covariates alone).  res->drift lists the coefficients in X's order.
+ * p = 0 (design may be NULL) is nl_fit_ml.  Errors as nl_fit_ml, and
+ * NL_EINVAL for a non-finite covariate or linearly dependent columns. */
+int nl_fit_ml_design(const double *coords, const double *values, size_t n, int dim, const double *design, size_t p,
+                     const nl_fit_options *o, nl_fit_result *res);
 
 #ifdef __cplusplus
 }

@@ -39,6 +39,8 @@ typedef struct {
                                                     nugget to (NL_FIT_MAX_STRUCTURES: none) */
     size_t nfree;                                /* free parameters */
     size_t free_idx[NL_FIT_MAX_PARAMS];          /* their indices */
+    double ulo[NL_FIT_MAX_PARAMS], uhi[NL_FIT_MAX_PARAMS]; /* the search box of each parameter's
+                                                    transformed value (-700, 700: none) */
 } nl_fit_params;
 
 /* The likelihood of the data at the current parameters (analysis/fit_ml.c). */
@@ -47,15 +49,62 @@ typedef struct {
     const double *x, *z;    /* coordinates (n x dim), values */
     size_t n;               /* data */
     nl_fit_likelihood lik;  /* ML or REML */
-    gsl_matrix *C;          /* n x n covariance, then its Cholesky factor */
-    gsl_vector *y, *a;      /* L^-1 z, L^-1 1 */
-    double beta;            /* GLS mean of the last evaluation */
+    gsl_matrix *C;          /* n x n covariance, then its Cholesky factor L */
+    gsl_vector *y;          /* L^-1 z */
+    size_t q;               /* drift terms (columns of X; 0: a known mean 0) */
+    gsl_matrix *X, *A;      /* n x q design, L^-1 X (NULL when q = 0) */
+    gsl_matrix *M;          /* q x q: X' C^-1 X, then its Cholesky factor */
+    gsl_vector *beta;       /* q GLS drift coefficients of the last evaluation */
+    double hmin, hmax;      /* the smallest and largest distance between two data */
+    double quad;            /* r' C^-1 r of the last evaluation */
 } nl_fit_mldata;
 
-/* -2 l (ML or REML) at the free parameters u (p->value updated);
- * NL_FIT_ML_BAD where the covariance is not positive definite. */
+/* -2 l (ML or REML) at the free parameters u (p->value updated, u taken
+ * into the search box); NL_FIT_ML_BAD where the covariance or X' C^-1 X is
+ * not positive definite. */
 #define NL_FIT_ML_BAD 1e300
 double nl_fit_ml_minus2l_u(nl_fit_mldata *d, const double *u);
+
+/* The same plus (u_k - box_k)^2 for each free k != skip outside the search
+ * box (SIZE_MAX: none skipped): the optimisers' objective, which leads a
+ * simplex back into the box instead of across a plateau. */
+double nl_fit_ml_minus2l_box(nl_fit_mldata *d, const double *u, size_t skip);
+/* That penalty alone. */
+double nl_fit_ml_penalty(const nl_fit_params *p, const double *u, size_t skip);
+
+/* The design of the drift (analysis/fit_drift.c): X's n x q columns, the
+ * polynomial terms of drift (NL_DRIFT_*: 1; 1, u_a; 1, u_a, u_a u_b for
+ * a <= b, u the coordinates centred on and divided by the half-widths of
+ * the bounding box, as analysis/krige_local.c) then the p columns of design
+ * (n x p row-major; NULL when p = 0).  *X NULL when q = 0.  NL_EINVAL for
+ * an unknown drift, non-finite design entries, q + nfree + 1 > n, or
+ * columns that are linearly dependent (X' X singular); NL_ENOMEM. */
+int nl_fit_drift_design(int drift, const double *x, size_t n, int dim, const double *design, size_t p,
+                        size_t nfree, gsl_matrix **X);
+
+/* Drift terms of the polynomial drift in dim dimensions (0 for NL_DRIFT_NONE). */
+size_t nl_fit_drift_terms(int drift, int dim);
+
+/* The global search of a likelihood fit (analysis/fit_search.c): from the
+ * parameters' current values, a local optimisation, a profile grid over
+ * the first free scale and refinement of its best points (global 0: the
+ * local optimisation alone), then the
+ * projected-gradient test.  Fills u (the optimum), res->objective,
+ * iterations, converged, starts; flags (nfree) gets NL_FIT_PARAM_AT_BOUND
+ * for parameters at their search box.  NL_OK, NL_ENOMEM, NL_EFAIL (no
+ * positive definite covariance found). */
+int nl_fit_ml_search(nl_fit_mldata *d, int global, nl_fit_result *res, double *u, unsigned *flags);
+
+/* A local optimisation of every free parameter from u (in/out): Nelder-
+ * Mead rounds until the projected gradient test passes or maxround rounds
+ * are spent.  Returns -2 l at u; *conv the gradient test's verdict; adds
+ * the simplex steps to *steps. */
+double nl_fit_ml_refine(nl_fit_mldata *d, double *u, int maxround, int *conv, int *steps);
+
+/* The largest component of the projected gradient of -2 l at u in the
+ * transformed coordinates (central differences; a component pointing out
+ * of the search box at its edge is dropped). */
+double nl_fit_ml_gradient(nl_fit_mldata *d, const double *u);
 
 /* Profile-likelihood intervals (analysis/fit_profile.c) of the free
  * parameters chosen by `which` (NL_FIT_INTERVALS_*) around the optimum
@@ -67,9 +116,15 @@ double nl_fit_ml_minus2l_u(nl_fit_mldata *d, const double *u);
  * range is that end); an interval narrower than the solver's tolerance (a profile
  * that rises past the cutoff within one tolerance of the optimum, as where
  * the covariance stops being positive definite) is left NaN and flagged
- * NL_FIT_PARAM_SINGULAR.  NL_OK or NL_ENOMEM. */
+ * NL_FIT_PARAM_SINGULAR.  NL_OK, NL_FIT_PROFILE_LOWER (below) or NL_ENOMEM. */
+/* When a profile point lies more than NL_FIT_PROFILE_DROP below f_hat (the
+ * optimum was not the minimum), the profiles stop: better (nfree) receives
+ * that point and the return is NL_FIT_PROFILE_LOWER (the caller restarts
+ * from it). */
+#define NL_FIT_PROFILE_LOWER 100
+#define NL_FIT_PROFILE_DROP 1e-2
 int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const double *cov, int which,
-                   double *lower, double *upper, unsigned *flags);
+                   double *lower, double *upper, unsigned *flags, double *better);
 
 /* The identifiability test of an information matrix (analysis/fit_info.c):
  * info (k x k, row-major, of the free transformed parameters; entries of
@@ -85,8 +140,20 @@ int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const do
 double nl_fit_info_check(const double *info, size_t k, unsigned *flags, double *cov);
 
 /* Flag the free parameters whose values sit at an end of their family's
- * fit range (NL_FIT_PARAM_AT_BOUND in flags, nfree entries). */
+ * fit range or of their search box (NL_FIT_PARAM_AT_BOUND in flags, nfree
+ * entries). */
 void nl_fit_params_at_bound(const nl_fit_params *p, unsigned *flags);
+
+/* The likelihood fits' search box: each free scale between hmin / 10 and
+ * NL_FIT_SCALE_REACH hmax (hmin, hmax: the smallest and largest distance
+ * between data), each variance and nugget below NL_FIT_VAR_REACH times
+ * var (the sample variance), each nugget above NL_FIT_NUGGET_FLOOR var. */
+#define NL_FIT_NUGGET_FLOOR 1e-10
+void nl_fit_params_box(nl_fit_params *p, double hmin, double hmax, double var);
+
+/* Is free parameter k at the upper end of its search box (a scale or a
+ * variance running away) or a scale at its lower end? */
+int nl_fit_params_runaway(const nl_fit_params *p, size_t k);
 
 /* A likelihood fit's refusals before it starts (analysis/fit_mlcheck.c):
  * too few or too many data, work over the budget, non-finite data, no

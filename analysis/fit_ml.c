@@ -45,25 +45,40 @@ static int fill_cov(ml_data *d)
     return NL_OK;
 }
 
-/* -2 l at the current parameters (ML_BAD where C is not positive definite). */
+/* -2 l at the current parameters (ML_BAD where C or X' C^-1 X is not
+ * positive definite).  With L L' = C, y = L^-1 z, A = L^-1 X, M = A' A:
+ * beta = M^-1 A' y (GLS), r' C^-1 r = y' y - w' w with w = L_M^-1 A' y, and
+ *   -2 l_ML   = n ln 2 pi + ln|C| + r' C^-1 r,
+ *   -2 l_REML = (n - q) ln 2 pi + ln|C| + ln|X' C^-1 X| + r' C^-1 r
+ * (Harville 1974, eq. (2) without its constant -ln|X' X|; Patterson and
+ * Thompson 1971 for X = 1). */
 static double minus2l(ml_data *d)
 {
-    double logdet = 0, aa, ay, yy, q, n = (double)d->n;
+    double logdet = 0, logm = 0, yy, ww = 0, q, n = (double)d->n;
     if (fill_cov(d) || gsl_linalg_cholesky_decomp1(d->C))
         return ML_BAD;
     for (size_t i = 0; i < d->n; i++) {
         logdet += 2 * log(gsl_matrix_get(d->C, i, i));
         gsl_vector_set(d->y, i, d->z[i]);
-        gsl_vector_set(d->a, i, 1);
     }
     gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, d->C, d->y);
-    gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, d->C, d->a);
-    gsl_blas_ddot(d->a, d->a, &aa);
-    gsl_blas_ddot(d->a, d->y, &ay);
     gsl_blas_ddot(d->y, d->y, &yy);
-    d->beta = ay / aa;
-    q = yy - ay * ay / aa;
-    q = d->lik == NL_FIT_REML ? (n - 1) * log(2 * M_PI) + logdet + log(aa) + q : n * log(2 * M_PI) + logdet + q;
+    if (d->q) {
+        gsl_matrix_memcpy(d->A, d->X);
+        gsl_blas_dtrsm(CblasLeft, CblasLower, CblasNoTrans, CblasNonUnit, 1.0, d->C, d->A);
+        gsl_blas_dgemm(CblasTrans, CblasNoTrans, 1.0, d->A, d->A, 0.0, d->M);
+        gsl_blas_dgemv(CblasTrans, 1.0, d->A, d->y, 0.0, d->beta);
+        if (gsl_linalg_cholesky_decomp1(d->M))
+            return ML_BAD;
+        for (size_t a = 0; a < d->q; a++)
+            logm += 2 * log(gsl_matrix_get(d->M, a, a));
+        gsl_blas_dtrsv(CblasLower, CblasNoTrans, CblasNonUnit, d->M, d->beta);
+        gsl_blas_ddot(d->beta, d->beta, &ww);
+        gsl_blas_dtrsv(CblasLower, CblasTrans, CblasNonUnit, d->M, d->beta);
+    }
+    q = d->quad = yy - ww;
+    q = d->lik == NL_FIT_REML ? (n - (double)d->q) * log(2 * M_PI) + logdet + logm + q
+                              : n * log(2 * M_PI) + logdet + q;
     return isfinite(q) ? q : ML_BAD;
 }
 
@@ -71,6 +86,24 @@ double nl_fit_ml_minus2l_u(nl_fit_mldata *d, const double *u)
 {
     nl_fit_params_from_u(d->p, u);
     return minus2l(d);
+}
+
+double nl_fit_ml_penalty(const nl_fit_params *p, const double *u, size_t skip)
+{
+    double pen = 0;
+    for (size_t k = 0; k < p->nfree; k++) {
+        size_t i = p->free_idx[k];
+        double out = u[k] > p->uhi[i] ? u[k] - p->uhi[i] : u[k] < p->ulo[i] ? p->ulo[i] - u[k] : 0;
+        if (k != skip)
+            pen += out * out;
+    }
+    return pen;
+}
+
+double nl_fit_ml_minus2l_box(nl_fit_mldata *d, const double *u, size_t skip)
+{
+    double f = nl_fit_ml_minus2l_u(d, u);
+    return f < ML_BAD ? f + nl_fit_ml_penalty(d->p, u, skip) : f;
 }
 
 static double objective(const gsl_vector *u, void *params)
@@ -125,71 +158,99 @@ static double ml_covariance(ml_data *d, const double *u0, double f0, double *cov
     return rcond;
 }
 
-/* Nelder-Mead from the current parameters, restarted once from its optimum
- * (a simplex can collapse before it reaches the minimum). */
-static int ml_minimise(ml_data *d, nl_fit_result *res, double *u_out)
+/* The smallest and largest distance between two data (O(n^2)). */
+static void pair_range(const double *x, size_t n, int dim, double *hmin, double *hmax)
 {
-    size_t k = d->p->nfree;
-    gsl_multimin_function F = {objective, k, d};
-    gsl_multimin_fminimizer *s = gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, k);
-    gsl_vector *u = gsl_vector_alloc(k), *step = gsl_vector_alloc(k);
-    int st = NL_OK;
-    if (!s || !u || !step) {
-        st = NL_ERROR(NL_ENOMEM, "out of memory");
-        goto done;
-    }
-    nl_fit_params_to_u(d->p, u->data);
-    for (int round = 0; round < 2; round++) {
-        int it = 0, test = GSL_CONTINUE;
-        gsl_vector_set_all(step, round ? 0.1 : 0.5);
-        gsl_multimin_fminimizer_set(s, &F, u, step);
-        while (test == GSL_CONTINUE && it++ < 2000) {
-            if (gsl_multimin_fminimizer_iterate(s))
-                break;
-            test = gsl_multimin_test_size(gsl_multimin_fminimizer_size(s), 1e-5);
+    size_t dd = (size_t)dim;
+    *hmin = INFINITY, *hmax = 0;
+    for (size_t i = 1; i < n; i++)
+        for (size_t j = 0; j < i; j++) {
+            double h = 0;
+            for (size_t a = 0; a < dd; a++)
+                h = hypot(h, x[i * dd + a] - x[j * dd + a]);
+            if (h > 0)
+                *hmin = fmin(*hmin, h), *hmax = fmax(*hmax, h);
         }
-        res->iterations += it;
-        res->converged = test == GSL_SUCCESS;
-        gsl_vector_memcpy(u, gsl_multimin_fminimizer_x(s));
-    }
-    memcpy(u_out, u->data, k * sizeof *u_out);
-    res->objective = gsl_multimin_fminimizer_minimum(s);
-    if (!(res->objective < ML_BAD))
-        st = NL_ERROR(NL_EFAIL, "fit: no parameters of %s give a positive definite covariance of the data",
-                      d->p->family);
-done:
-    gsl_vector_free(step);
-    gsl_vector_free(u);
-    gsl_multimin_fminimizer_free(s);
-    return st;
 }
 
-/* Automatic start: the sample variance as the sill, the scale a tenth of the bounding box's diagonal (a fifth for the
- * spherical model's range), shape parameters 1. */
-static void ml_start(nl_fit_params *p, const double *x, const double *z, size_t n, const double *start)
+/* Automatic start: the sample variance as the sill, the scale a tenth of
+ * the largest distance (a fifth for the spherical model's range), shape
+ * parameters 1; then the search box. */
+static void ml_start(ml_data *d, const double *start)
 {
-    double mean = 0, var = 0, diag = 0, safe = 0;
+    double mean = 0, var = 0;
+    size_t n = d->n;
     for (size_t i = 0; i < n; i++)
-        mean += z[i] / (double)n;
+        mean += d->z[i] / (double)n;
     for (size_t i = 0; i < n; i++)
-        var += (z[i] - mean) * (z[i] - mean) / (double)(n - 1);
-    for (int a = 0; a < p->dim; a++) {
-        double lo = INFINITY, hi = -INFINITY;
-        for (size_t i = 0; i < n; i++)
-            lo = fmin(lo, x[i * (size_t)p->dim + (size_t)a]), hi = fmax(hi, x[i * (size_t)p->dim + (size_t)a]);
-        diag += (hi - lo) * (hi - lo);
-        safe = hypot(safe, hi - lo);
-    }
+        var += (d->z[i] - mean) * (d->z[i] - mean) / (double)(n - 1);
     var = var > 0 ? var : 1;
-    /* the sum of squares where it neither overflows nor underflows */
-    diag = isfinite(diag) && diag >= DBL_MIN ? sqrt(diag) : safe;
-    nl_fit_params_start(p, var, diag / 10, start);
+    pair_range(d->x, n, d->p->dim, &d->hmin, &d->hmax);
+    nl_fit_params_start(d->p, var, d->hmax / 10, start);
+    nl_fit_params_box(d->p, d->hmin, d->hmax, var);
 }
 
-static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_fit_options *o, nl_fit_result *res)
+/* The drift coefficients and their standard errors into res (M holds the
+ * Cholesky factor of X' C^-1 X at the optimum). */
+static int drift_result(ml_data *d, nl_fit_result *res)
+{
+    size_t q = d->q;
+    gsl_matrix *Mi;
+    res->mean = q ? gsl_vector_get(d->beta, 0) : 0;
+    if (!q)
+        return NL_OK;
+    res->drift = malloc(q * sizeof *res->drift);
+    res->drift_se = malloc(q * sizeof *res->drift_se);
+    if (!res->drift || !res->drift_se || !(Mi = gsl_matrix_alloc(q, q)))
+        return NL_ERROR(NL_ENOMEM, "out of memory");
+    res->ndrift = q;
+    gsl_matrix_memcpy(Mi, d->M);
+    gsl_linalg_cholesky_invert(Mi);
+    for (size_t a = 0; a < q; a++) {
+        res->drift[a] = gsl_vector_get(d->beta, a);
+        res->drift_se[a] = sqrt(gsl_matrix_get(Mi, a, a));
+    }
+    gsl_matrix_free(Mi);
+    return NL_OK;
+}
+
+/* Restarts from a lower profile point at most. */
+#define ML_RESTARTS 3
+
+/* The covariance of the estimates and the intervals at u; from a lower
+ * profile point, a local optimisation and again. */
+static int ml_finish(ml_data *d, const nl_fit_options *o, nl_fit_result *res, double *u, double *cov, double *lower,
+                     double *upper, unsigned *flags, double *rcond)
+{
+    for (;;) {
+        double better[NL_FIT_MAX_PARAMS];
+        int st, conv;
+        memset(flags, 0, d->p->nfree * sizeof *flags);
+        nl_fit_ml_minus2l_u(d, u);
+        nl_fit_params_at_bound(d->p, flags);
+        *rcond = ml_covariance(d, u, res->objective, cov, flags);
+        if (!o->intervals)
+            return NL_OK;
+        st = nl_fit_profile(d, u, res->objective, cov, o->intervals, lower, upper, flags, better);
+        if (st != NL_FIT_PROFILE_LOWER || res->restarts >= ML_RESTARTS)
+            return st == NL_FIT_PROFILE_LOWER ? NL_OK : st;
+        res->restarts++;
+        memcpy(u, better, d->p->nfree * sizeof *u);
+        res->objective = nl_fit_ml_refine(d, u, 4, &conv, &res->iterations);
+        res->starts++;
+        res->gradient = nl_fit_ml_gradient(d, u);
+        res->converged = conv;
+        for (size_t k = 0; k < d->p->nfree; k++)
+            if (nl_fit_params_runaway(d->p, k))
+                res->converged = 0;
+    }
+}
+
+static int fit_ml(const double *x, const double *z, size_t n, int dim, const double *design, size_t np,
+                  const nl_fit_options *o, nl_fit_result *res)
 {
     nl_fit_params p;
-    ml_data d;
+    ml_data d = {0};
     double u[NL_FIT_MAX_PARAMS], cov[NL_FIT_MAX_PARAMS * NL_FIT_MAX_PARAMS];
     double lower[NL_FIT_MAX_PARAMS], upper[NL_FIT_MAX_PARAMS], rcond = 0;
     unsigned flags[NL_FIT_MAX_PARAMS] = {0};
@@ -202,39 +263,55 @@ static int fit_ml(const double *x, const double *z, size_t n, int dim, const nl_
         return st;
     if (p.nfree == 0)
         return NL_ERROR(NL_EINVAL, "fix: every parameter of %s is fixed; expected at least one free", p.family);
+    if ((unsigned)o->search > NL_FIT_SEARCH_LOCAL)
+        return NL_ERROR(NL_EINVAL, "fit: search: expected global (0) or local (1), got %d", (int)o->search);
     if ((st = nl_fit_ml_check(&p, x, z, n, o)) || (st = nl_size_check(2, nn, sizeof(double), 1, NULL)))
         return st;
-    ml_start(&p, x, z, n, o->start);
-    d = (ml_data){&p, x, z, n, o->likelihood, gsl_matrix_alloc(n, n), gsl_vector_alloc(n), gsl_vector_alloc(n), 0};
-    if (!d.C || !d.y || !d.a)
+    if ((st = nl_fit_drift_design(o->drift, x, n, dim, design, np, p.nfree, &d.X)))
+        return st;
+    d.p = &p, d.x = x, d.z = z, d.n = n, d.lik = o->likelihood, d.q = d.X ? d.X->size2 : 0;
+    d.C = gsl_matrix_alloc(n, n), d.y = gsl_vector_alloc(n);
+    if (d.q)
+        d.A = gsl_matrix_alloc(n, d.q), d.M = gsl_matrix_alloc(d.q, d.q), d.beta = gsl_vector_alloc(d.q);
+    if (!d.C || !d.y || (d.q && (!d.A || !d.M || !d.beta)))
         st = NL_ERROR(NL_ENOMEM, "out of memory for the %zu x %zu covariance matrix", n, n);
-    if (!st && !(st = ml_minimise(&d, res, u))) {
-        nl_fit_params_at_bound(&p, flags);
-        rcond = ml_covariance(&d, u, res->objective, cov, flags);
-        if (o->intervals && (st = nl_fit_profile(&d, u, res->objective, cov, o->intervals, lower, upper, flags)))
-            goto done;
-        res->mean = d.beta;
+    if (!st)
+        ml_start(&d, o->start);
+    if (!st && !(st = nl_fit_ml_search(&d, o->search != NL_FIT_SEARCH_LOCAL, res, u, flags)) &&
+        !(st = ml_finish(&d, o, res, u, cov, lower, upper, flags, &rcond))) {
         res->nobs = n;
-        /* ML: the free covariance parameters and the mean */
-        res->aic = res->objective + 2.0 * (double)(p.nfree + 1);
+        /* the free covariance parameters and the drift coefficients */
+        res->aic = res->objective + 2.0 * (double)(p.nfree + d.q);
         if (!(st = nl_fit_params_result(&p, cov, lower, upper, res))) {
             nl_fit_result_flags(&p, flags, res);
             res->rcond = rcond;
+            nl_fit_ml_minus2l_u(&d, u);
+            st = drift_result(&d, res);
         }
     }
-done:
-    gsl_vector_free(d.a);
+    if (st)
+        nl_fit_result_free(res);
+    gsl_vector_free(d.beta);
+    gsl_matrix_free(d.M);
+    gsl_matrix_free(d.A);
+    gsl_matrix_free(d.X);
     gsl_vector_free(d.y);
     gsl_matrix_free(d.C);
+    return st;
+}
+
+int nl_fit_ml_design(const double *coords, const double *values, size_t n, int dim, const double *design, size_t p,
+                     const nl_fit_options *o, nl_fit_result *res)
+{
+    int st;
+    nl_gsl_enter();
+    st = fit_ml(coords, values, n, dim, design, p, o, res);
+    nl_gsl_leave();
     return st;
 }
 
 int nl_fit_ml(const double *coords, const double *values, size_t n, int dim, const nl_fit_options *o,
               nl_fit_result *res)
 {
-    int st;
-    nl_gsl_enter();
-    st = fit_ml(coords, values, n, dim, o, res);
-    nl_gsl_leave();
-    return st;
+    return nl_fit_ml_design(coords, values, n, dim, NULL, 0, o, res);
 }

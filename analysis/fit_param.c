@@ -198,10 +198,43 @@ int nl_fit_params_init(const nl_fit_options *o, int dim, nl_fit_params *p)
     }
     if ((st = apply_fixes(o, p)))
         return st;
-    for (size_t k = 0; k < p->np; k++)
+    for (size_t k = 0; k < p->np; k++) {
+        p->ulo[k] = -700, p->uhi[k] = 700;
         if (!p->fixed[k])
             p->free_idx[p->nfree++] = k;
+    }
     return NL_OK;
+}
+
+void nl_fit_params_box(nl_fit_params *p, double hmin, double hmax, double var)
+{
+    for (size_t k = 0; k < p->np; k++) {
+        nl_param_role r = p->param[k]->role;
+        if (p->tr[k] != NL_FIT_LOG)
+            continue;
+        if (r == NL_ROLE_SCALE && hmin > 0 && hmax > 0)
+            p->ulo[k] = log(hmin / 10), p->uhi[k] = log(NL_FIT_SCALE_REACH * hmax);
+        if ((r == NL_ROLE_VARIANCE || r == NL_ROLE_NUGGET) && var > 0)
+            p->uhi[k] = log(NL_FIT_VAR_REACH * var);
+        /* a nugget this small is 0 (nl_fit_params_at_bound): no further */
+        if (r == NL_ROLE_NUGGET && var > 0)
+            p->ulo[k] = log(NL_FIT_NUGGET_FLOOR * var);
+    }
+}
+
+/* Within this of an end of the search box (transformed units): at it. */
+#define NL_FIT_BOX_TOL 1e-3
+
+int nl_fit_params_runaway(const nl_fit_params *p, size_t k)
+{
+    size_t i = p->free_idx[k];
+    nl_param_role r = p->param[i]->role;
+    double u = p->tr[i] == NL_FIT_LOG ? log(p->value[i]) : 0;
+    if (p->tr[i] != NL_FIT_LOG || p->uhi[i] >= 700)
+        return 0;
+    if ((r == NL_ROLE_SCALE || r == NL_ROLE_VARIANCE || r == NL_ROLE_NUGGET) && u >= p->uhi[i] - NL_FIT_BOX_TOL)
+        return 1;
+    return r == NL_ROLE_SCALE && u <= p->ulo[i] + NL_FIT_BOX_TOL;
 }
 
 /* A value held to its family's fit range (none: as is). */
@@ -262,6 +295,8 @@ void nl_fit_params_at_bound(const nl_fit_params *p, unsigned *flags)
             flags[k] |= NL_FIT_PARAM_AT_BOUND;
         if (fp->role == NL_ROLE_NUGGET && v <= NL_FIT_RCOND_MIN * var)
             flags[k] |= NL_FIT_PARAM_AT_BOUND;
+        if (nl_fit_params_runaway(p, k))
+            flags[k] |= NL_FIT_PARAM_AT_BOUND;
     }
 }
 
@@ -282,14 +317,15 @@ void nl_fit_params_to_u(const nl_fit_params *p, double *u)
     }
 }
 
-/* Transformed coordinates are clamped so that values stay normal doubles
- * (a nugget heading to 0 stops at e^-700 var-units instead of underflowing),
- * and shape parameters to their family's fit range. */
+/* Transformed coordinates are clamped to the search box (by default
+ * -700..700, so that values stay normal doubles: a nugget heading to 0
+ * stops at e^-700 var-units instead of underflowing), and shape parameters
+ * to their family's fit range. */
 void nl_fit_params_from_u(nl_fit_params *p, const double *u)
 {
     for (size_t k = 0; k < p->nfree; k++) {
         size_t i = p->free_idx[k];
-        double x = fmax(-700, fmin(700, u[k]));
+        double x = fmax(p->ulo[i], fmin(p->uhi[i], u[k]));
         p->value[i] = clamp_fit(p->param[i], p->tr[i] == NL_FIT_LOG ? exp(x) : p->hi[i] / (1 + exp(-x)));
     }
 }
@@ -383,8 +419,11 @@ void nl_fit_result_free(nl_fit_result *res)
     if (!res)
         return;
     free(res->param);
+    free(res->drift);
+    free(res->drift_se);
     res->param = NULL;
-    res->np = 0;
+    res->drift = res->drift_se = NULL;
+    res->np = res->ndrift = 0;
 }
 
 int nl_fit_check_options(const nl_fit_options *o, int dim)

@@ -29,6 +29,11 @@ typedef struct {
     double u[NL_FIT_MAX_PARAMS];   /* the last profile point (the others' warm start) */
     double cutoff;                 /* minimum -2 l + chi^2_1(0.95) */
     gsl_multimin_fminimizer *nm;   /* over the other free parameters; NULL when none */
+    double f_hat;                  /* the optimum's -2 l */
+    double *better;                /* a point below f_hat - NL_FIT_PROFILE_DROP, when found */
+    int found;                     /* better holds one */
+    double f_best;                 /* its -2 l */
+    double last[NL_FIT_MAX_PARAMS];/* the last profile point evaluated */
 } profile;
 
 /* -2 l with the profiled parameter at t and the others at v. */
@@ -38,7 +43,24 @@ static double inner(const gsl_vector *v, void *params)
     double u[NL_FIT_MAX_PARAMS];
     for (size_t i = 0, m = 0; i < pr->d->p->nfree; i++)
         u[i] = i == pr->j ? pr->t : v->data[m++];
-    return nl_fit_ml_minus2l_u(pr->d, u);
+    return nl_fit_ml_minus2l_box(pr->d, u, pr->j);
+}
+
+/* f minus the cutoff; a point below the optimum (by more than the inner
+ * optimisations' noise) is kept for a restart. */
+static double below(profile *pr, double f, const double *u)
+{
+    size_t k = pr->d->p->nfree;
+    if (f < pr->f_hat - NL_FIT_PROFILE_DROP && pr->better && (!pr->found || f < pr->f_best)) {
+        memcpy(pr->better, u, k * sizeof *u);
+        pr->found = 1, pr->f_best = f;
+    }
+    memcpy(pr->last, u, k * sizeof *u);
+    /* the next point starts from the last one inside the interval: one
+     * outside may have sent the others to another valley (a nugget to 0) */
+    if (f < pr->cutoff)
+        memcpy(pr->u, u, k * sizeof *u);
+    return f - pr->cutoff;
 }
 
 /* The profile -2 l at t minus the cutoff (negative inside the interval). */
@@ -46,11 +68,12 @@ static double excess(double t, void *params)
 {
     profile *pr = params;
     size_t k = pr->d->p->nfree;
-    double v[NL_FIT_MAX_PARAMS], step[NL_FIT_MAX_PARAMS], f;
+    double v[NL_FIT_MAX_PARAMS], step[NL_FIT_MAX_PARAMS], un[NL_FIT_MAX_PARAMS], f;
     pr->t = t;
     if (!pr->nm) {
-        pr->u[pr->j] = t;
-        return nl_fit_ml_minus2l_u(pr->d, pr->u) - pr->cutoff;
+        memcpy(v, pr->u, k * sizeof *v);
+        v[pr->j] = t;
+        return below(pr, nl_fit_ml_minus2l_u(pr->d, v), v);
     }
     for (size_t i = 0, m = 0; i < k; i++)
         if (i != pr->j)
@@ -74,12 +97,41 @@ static double excess(double t, void *params)
         }
     }
     f = gsl_multimin_fminimizer_minimum(pr->nm);
-    if (f < NL_FIT_ML_BAD) {
+    {
         const gsl_vector *x = gsl_multimin_fminimizer_x(pr->nm);
         for (size_t i = 0, m = 0; i < k; i++)
-            pr->u[i] = i == pr->j ? t : gsl_vector_get(x, m++);
+            un[i] = i == pr->j ? t : gsl_vector_get(x, m++);
     }
-    return f - pr->cutoff;
+    return below(pr, f, un);
+}
+
+/* Did the search box, not the data, end the interval at t?  When another
+ * parameter sits at the edge of its box at the end's profile point, the
+ * profile there is optimised again with that edge moved PR_WIDEN further
+ * out: a drop by more than PR_RELEASE means the box held the profile up
+ * (var's upper end while the scale runs away), a smaller one that the data
+ * end it (the nugget's, there). */
+#define PR_WIDEN 2.302585092994046 /* ln 10 */
+#define PR_RELEASE 0.5
+
+static int ran_away(profile *pr, double t)
+{
+    nl_fit_params *p = pr->d->p;
+    double uhi[NL_FIT_MAX_PARAMS], *better = pr->better, e;
+    int out = 0;
+    nl_fit_params_from_u(p, pr->last);
+    memcpy(uhi, p->uhi, sizeof uhi);
+    for (size_t k = 0; k < p->nfree; k++)
+        if (k != pr->j && nl_fit_params_runaway(p, k))
+            p->uhi[p->free_idx[k]] += PR_WIDEN, out = 1;
+    if (!out)
+        return 0;
+    memcpy(pr->u, pr->last, p->nfree * sizeof *pr->u);
+    pr->better = NULL;
+    e = excess(t, pr);
+    pr->better = better;
+    memcpy(p->uhi, uhi, sizeof uhi);
+    return e < -PR_RELEASE;
 }
 
 /* The end of the interval on side dir (+1 upper, -1 lower) in transformed
@@ -93,7 +145,7 @@ static double find_end(profile *pr, gsl_root_fsolver *rs, const double *u_hat, d
     memcpy(pr->u, u_hat, pr->d->p->nfree * sizeof *pr->u);
     for (;;) {
         b = u_hat[j] + dir * step;
-        if (excess(b, pr) >= 0)
+        if (excess(b, pr) >= 0 || pr->found)
             break;
         if (step >= PR_REACH)
             return dir * INFINITY;
@@ -101,16 +153,17 @@ static double find_end(profile *pr, gsl_root_fsolver *rs, const double *u_hat, d
         step = fmin(2 * step, PR_REACH);
     }
     lo = fmin(a, b), hi = fmax(a, b);
-    if (gsl_root_fsolver_set(rs, &F, lo, hi))
+    if (pr->found || gsl_root_fsolver_set(rs, &F, lo, hi))
         return b; /* no sign change on a second look: the conservative end */
     for (int it = 0; it < PR_ROOT_STEPS; it++) {
-        if (gsl_root_fsolver_iterate(rs))
+        if (gsl_root_fsolver_iterate(rs) || pr->found)
             break;
         lo = gsl_root_fsolver_x_lower(rs), hi = gsl_root_fsolver_x_upper(rs);
         if (gsl_root_test_interval(lo, hi, PR_TOL, 0) != GSL_CONTINUE)
             break;
     }
-    return gsl_root_fsolver_root(rs);
+    b = gsl_root_fsolver_root(rs);
+    return ran_away(pr, b) ? dir * INFINITY : b;
 }
 
 /* A transformed value back to the parameter's (infinities to the domain's
@@ -123,11 +176,11 @@ static double value_of(const nl_fit_params *p, size_t k, double u)
 }
 
 int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const double *cov, int which,
-                   double *lower, double *upper, unsigned *flags)
+                   double *lower, double *upper, unsigned *flags, double *better)
 {
     nl_fit_params *p = d->p;
     size_t k = p->nfree;
-    profile pr = {d, 0, 0, {0}, f_hat + PR_CHI2, NULL};
+    profile pr = {d, 0, 0, {0}, f_hat + PR_CHI2, NULL, f_hat, better, 0, 0, {0}};
     gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
     int st = NL_OK;
     for (size_t i = 0; i < p->np; i++)
@@ -145,7 +198,11 @@ int nl_fit_profile(nl_fit_mldata *d, const double *u_hat, double f_hat, const do
             continue;
         pr.j = j;
         lo = find_end(&pr, rs, u_hat, se, -1);
-        hi = find_end(&pr, rs, u_hat, se, +1);
+        hi = pr.found ? lo : find_end(&pr, rs, u_hat, se, +1);
+        if (pr.found) {
+            st = NL_FIT_PROFILE_LOWER;
+            break;
+        }
         /* narrower than the solver resolves: no curvature the data give */
         if (hi - lo < 2 * PR_TOL) {
             flags[j] |= NL_FIT_PARAM_SINGULAR;

@@ -16,7 +16,7 @@
 
 static const char help_usage[] =
     "usage: noiselab fit DATA.tsv|FIELD.exr --model FAMILY|SPEC [--nugget] [--fix NAME=VALUE]...\n"
-    "                    [--method wls|ml|reml]\n"
+    "                    [--method wls|ml|reml] [--drift constant|linear|quadratic]\n"
     "                    [--weights distance|pairs|reweighted|ols|cressie|7|1|2|6]\n"
     "                    [--width W] [--cutoff C] [--bins gstat|floor] [--json]\n"
     "       noiselab fit --variogram VARIO.tsv --model FAMILY|SPEC [...] [--weights ...]\n\n";
@@ -32,16 +32,23 @@ static const char help[] =
     "the columns distance, gamma, pairs of noiselab variogram -o, or gstat's np, dist, gamma (any order; "
     "bins with 0 pairs, a negative gamma or a distance not above 0 are refused); its model is checked "
     "as in 2D.  "
-    "ml, reml: the Gaussian likelihood of the data with an unknown constant mean, O(n^3) per step (refused "
-    "above a work budget: below), started from the wls fit (cressie weights unless --weights is given).  Prints the fitted model as a spec for --acf, "
+    "ml, reml: the Gaussian likelihood of the data with an unknown mean (--drift: constant, or linear or "
+    "quadratic in the coordinates, as krige's; reml: Harville's restricted likelihood), O(n^3) per step "
+    "(refused above a work budget: below), started from the wls fit (cressie weights unless --weights is "
+    "given), searched over a box (scales up to 10 "
+    "times the largest distance) by a profile grid over the scale and local optimisations until the "
+    "projected gradient is small; a scale or variance that runs to the box's edge is \"at bound\" and the "
+    "fit NOT converged.  Prints the fitted model as a spec for --acf, "
     "standard errors, the objective and AIC (compare models fitted by one method to one data set: "
     "lower is better).  ml and reml also print each free parameter's 95% profile-likelihood interval "
     "(the values within 3.841 of the minimum -2 log likelihood, the others re-optimised; \"unbounded\" "
     "when the data set no upper limit).  --json keys: model, parameters, standard_errors, objective, "
     "aic, method, n, converged, iterations, status (per parameter: ok, fixed, at bound, or not "
     "identifiable (singular information)), flags (singular-information, at-bound, not-converged), rcond "
-    "(the information matrix's reciprocal condition number), and for ml and reml mean and intervals "
-    "([lower, upper] per free parameter, upper null when unbounded).";
+    "(the information matrix's reciprocal condition number), and for ml and reml mean, intervals "
+    "([lower, upper] per free parameter, upper null when unbounded), drift ([{term, value, se}]: 1, u, v, "
+    "u^2, uv, v^2 in the coordinates centred on and scaled by the bounding box), starts, restarts and "
+    "gradient.";
 
 static const char help_errors[] =
     "Standard errors: ml and reml's describe the spread of the estimates for\n"
@@ -109,6 +116,7 @@ typedef struct {
     int weights_given;          /* --weights given */
     int json;                   /* --json */
     int method;                 /* 0 wls, 1 ml, 2 reml */
+    int dim;                    /* the data's dimension */
     nl_fit_options o;           /* the library's options */
     nl_variogram_options vo;    /* binning */
     char names[NL_FIT_MAX_FIX][32]; /* --fix names */
@@ -138,11 +146,13 @@ static const char *const methods[] = {"wls", "ml", "reml", NULL};
 static const char *const weights[] = {"cressie", "pairs", "reweighted", "distance", "ols", "1", "2", "6", "7", NULL};
 static const int weight_vals[] = {NL_FIT_CRESSIE, NL_FIT_PAIRS, NL_FIT_REWEIGHTED, NL_FIT_DISTANCE, NL_FIT_OLS,
                                   NL_FIT_PAIRS,   NL_FIT_REWEIGHTED, NL_FIT_OLS, NL_FIT_DISTANCE};
+static const char *const drifts[] = {"constant", "linear", "quadratic", NULL}; /* NL_DRIFT_* by index */
 
 static const cli_opt rows[] = {
     CLI_STRING("model", opts_t, o.family), CLI_FLAG("nugget", opts_t, o.nugget),
     CLI_CALL("fix", parse_fix, .flags = CLI_REPEAT),
     CLI_CHOICE("method", opts_t, method, .choices = methods),
+    CLI_CHOICE("drift", opts_t, o.drift, .choices = drifts),
     CLI_CHOICE("weights", opts_t, o.weights, CLI_GIVEN(opts_t, weights_given), .choices = weights,
                .vals = weight_vals), CLI_OPT_BINS(opts_t, vo),
     CLI_STRING("variogram", opts_t, vario),
@@ -181,6 +191,9 @@ static void parse(int argc, char **argv, opts_t *a)
      * can run off on degenerate data (tests/bad/fit_hostile.cases) */
     if (a->method && !a->weights_given)
         a->o.weights = NL_FIT_CRESSIE;
+    if (a->o.drift != NL_DRIFT_CONSTANT && !a->method)
+        cli_die(2, "--drift: expected --method ml or reml with a %s drift (wls fits the variogram of a constant "
+                "mean)", drifts[a->o.drift]);
 }
 
 /* The data as points: a TSV as read, a field as its samples at i * h. */
@@ -253,6 +266,30 @@ static int fit_table(const opts_t *a, nl_fit_result *r)
     return st;
 }
 
+/* The name of drift term k of the polynomial drift in dim dimensions, in
+ * the order of analysis/fit.h's Drift (coordinates u, v, w centred on and
+ * scaled by the bounding box). */
+static const char *drift_term(size_t k, int dim, char *buf, size_t size)
+{
+    static const char ax[] = "uvw";
+    size_t t = 1;
+    if (k == 0)
+        return snprintf(buf, size, "1"), buf;
+    for (int i = 0; i < dim; i++, t++)
+        if (k == t)
+            return snprintf(buf, size, "%c", ax[i]), buf;
+    for (int i = 0; i < dim; i++)
+        for (int j = i; j < dim; j++, t++)
+            if (k == t) {
+                if (i == j)
+                    snprintf(buf, size, "%c^2", ax[i]);
+                else
+                    snprintf(buf, size, "%c%c", ax[i], ax[j]);
+                return buf;
+            }
+    return snprintf(buf, size, "c%zu", k + 1), buf;
+}
+
 /* An interval's end for the text output ("unbounded" for +infinity). */
 static const char *end_text(double v, char *buf, size_t size)
 {
@@ -310,6 +347,13 @@ static void print_status(const opts_t *a, const nl_fit_result *r)
                    NL_FIT_RCOND_MIN);
         else if (q->flags & NL_FIT_PARAM_AT_BOUND) {
             fit_range(a->o.family, q->name, &lo, &hi);
+            if (!(hi > 0)) {
+                printf("at bound    %s = %g: at the edge of the search box (scales from a tenth of the smallest "
+                       "to %g times the largest distance between data, variances up to %g times the sample "
+                       "variance): the likelihood still rises beyond it, no optimum inside\n", q->name, q->value,
+                       NL_FIT_SCALE_REACH, NL_FIT_VAR_REACH);
+                continue;
+            }
             printf("at bound    %s = %g: at an end of its fit range %g to %g (the data ask for a value beyond)\n",
                    q->name, q->value, lo, hi);
         }
@@ -326,9 +370,12 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
     static const char *const wname[] = {" (cressie weights)", " (pairs weights)", " (reweighted weights)",
                                         " (distance weights)", " (ols weights)"};
     printf("model       %s\n", r->spec);
-    printf("method      %s%s on %zu %s, %s after %d steps\n", mname[a->method],
-           a->method ? "" : wname[a->o.weights], r->nobs,
-           a->method ? "data" : "variogram bins", r->converged ? "converged" : "NOT converged", r->iterations);
+    printf("method      %s%s on %zu %s, %s after %d steps", mname[a->method], a->method ? "" : wname[a->o.weights],
+           r->nobs, a->method ? "data" : "variogram bins", r->converged ? "converged" : "NOT converged", r->iterations);
+    if (a->method)
+        printf(" (%d local optimisation%s%s, projected gradient %.2g)", r->starts, r->starts == 1 ? "" : "s",
+               r->restarts ? ", restarted from a profile point below the optimum" : "", r->gradient);
+    printf("\n");
     printf("parameter   value         standard error%s\n", a->method ? "   95% profile-likelihood interval" : "");
     for (size_t k = 0; k < r->np; k++) {
         char se[32], lo[32], hi[32];
@@ -350,8 +397,13 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
                    end_text(q->upper, hi, sizeof hi));
     }
     print_status(a, r);
-    if (a->method)
+    if (a->method && a->o.drift == NL_DRIFT_CONSTANT)
         printf("mean        %.6g\n", r->mean);
+    else if (a->method)
+        for (size_t k = 0; k < r->ndrift; k++) {
+            char name[16];
+            printf("drift %-5s %-13.6g %.4g\n", drift_term(k, a->dim, name, sizeof name), r->drift[k], r->drift_se[k]);
+        }
     printf("objective   %.8g (%s)\n", r->objective, a->method ? "-2 log likelihood" : "weighted sum of squares");
     printf("AIC         %.8g\n", r->aic);
 }
@@ -386,8 +438,18 @@ static void print_json(const opts_t *a, const nl_fit_result *r)
                 json_object_set_new(iv, q->name, json_pack("[f,o]", q->lower,
                                                            isfinite(q->upper) ? json_real(q->upper) : json_null()));
         }
+        json_t *dr = json_array();
+        for (size_t k = 0; k < r->ndrift; k++) {
+            char name[16];
+            json_array_append_new(dr, json_pack("{s:s,s:f,s:f}", "term", drift_term(k, a->dim, name, sizeof name),
+                                                "value", r->drift[k], "se", r->drift_se[k]));
+        }
         json_object_set_new(j, "mean", json_real(r->mean));
         json_object_set_new(j, "intervals", iv);
+        json_object_set_new(j, "drift", dr);
+        json_object_set_new(j, "starts", json_integer(r->starts));
+        json_object_set_new(j, "restarts", json_integer(r->restarts));
+        json_object_set_new(j, "gradient", json_real(r->gradient));
     }
     cli_json_print(j);
 }
@@ -403,6 +465,7 @@ int cli_cmd_fit(int argc, char **argv)
         st = fit_table(&a, &r);
     else {
         p = read_points(a.in);
+        a.dim = p->dim;
         st = fit(&a, p, &r);
         nl_points_free(p);
     }

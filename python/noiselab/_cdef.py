@@ -644,6 +644,8 @@ typedef struct {
     const double *start;
     int intervals;
     double max_work;
+    int drift;
+    int search;
 } nl_fit_options;
 typedef struct {
     char name[16];
@@ -666,6 +668,12 @@ typedef struct {
     int converged;
     double rcond;
     unsigned flags;
+    size_t ndrift;
+    double *drift;
+    double *drift_se;
+    int starts;
+    int restarts;
+    double gradient;
 } nl_fit_result;
 void nl_fit_result_free(nl_fit_result *res);
 int nl_fit_check_options(const nl_fit_options *o, int dim);
@@ -674,4 +682,6 @@ int nl_fit_variogram(const double *distance, const double *gamma, const double *
 double nl_fit_ml_work(size_t n, int dim, const nl_fit_options *o);
 int nl_fit_ml(const double *coords, const double *values, size_t n, int dim, const nl_fit_options *o,
               nl_fit_result *res);
+int nl_fit_ml_design(const double *coords, const double *values, size_t n, int dim, const double *design, size_t p,
+                     const nl_fit_options *o, nl_fit_result *res);
 """
