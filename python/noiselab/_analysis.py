@@ -489,25 +489,7 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
     method = as_choice("method", method, ("wls", "ml", "reml"))
     if weights is None:  # as the CLI: gstat's default; ml, reml start from Cressie's fit
         weights = "distance" if method == "wls" else "cressie"
-    if isinstance(weights, int) and not isinstance(weights, bool) and weights in _GSTAT_WEIGHTS:
-        weights = _GSTAT_WEIGHTS[weights]
-    weights = as_choice("weights", weights, _WEIGHTS)
-    if fix is None:
-        fix = {}
-    if not isinstance(fix, dict):
-        refuse("fix", "a dict of parameter names and values", fix)
-    if len(fix) > 8:
-        raise Error("fix: expected at most 8 parameters, got %d" % len(fix))
-    o = ffi.new("nl_fit_options *")
-    keep = [ffi.new("char[]", as_str("model", model))]
-    o.family = keep[0]
-    o.nugget = 1 if as_bool("nugget", nugget) else 0
-    for i, (k, val) in enumerate(fix.items()):
-        keep.append(ffi.new("char[]", as_str("fix", k)))
-        o.fix_name[i] = keep[-1]
-        o.fix_value[i] = as_float("fix: " + k, val)
-    o.nfix = len(fix)
-    o.weights = _WEIGHTS.index(weights)
+    o, keep = _fit_options(model, nugget, fix, weights)
     o.likelihood = 1 if method == "reml" else 0
     vo = _vopts(width, cutoff, "matheron", None, None, bins)
     r = ffi.new("nl_fit_result *")
@@ -527,18 +509,47 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
                 o.start = start
                 o.intervals = 1
                 check(lib.nl_fit_ml(_dptr(p), _dptr(v), p.shape[0], dim, o, r))
-        q = [r.param[k] for k in range(r.np)]
-        names = [ffi.string(x.name).decode() for x in q]
-        res = dict(spec=ffi.string(r.spec).decode(), method=method, n=int(r.nobs), converged=bool(r.converged),
-                   iterations=r.iterations, objective=r.objective, aic=r.aic,
-                   parameters={nm: x.value for nm, x in zip(names, q)},
-                   standard_errors={nm: x.se for nm, x in zip(names, q)},
-                   fixed={nm: bool(x.fixed) for nm, x in zip(names, q)},
-                   status={nm: _fit_status(x) for nm, x in zip(names, q)}, rcond=r.rcond)
-        if method != "wls":
-            res["mean"] = r.mean
-            res["intervals"] = {nm: (x.lower, x.upper) for nm, x in zip(names, q)
-                                if not (math.isnan(x.lower) or math.isnan(x.upper))}
+        return _fit_result(r, method)
     finally:
         lib.nl_fit_result_free(r)
+
+
+def _fit_options(model, nugget, fix, weights):
+    """nl_fit_options of fit's arguments, and the strings it points to."""
+    if isinstance(weights, int) and not isinstance(weights, bool) and weights in _GSTAT_WEIGHTS:
+        weights = _GSTAT_WEIGHTS[weights]
+    weights = as_choice("weights", weights, _WEIGHTS)
+    if fix is None:
+        fix = {}
+    if not isinstance(fix, dict):
+        refuse("fix", "a dict of parameter names and values", fix)
+    if len(fix) > 8:
+        raise Error("fix: expected at most 8 parameters, got %d" % len(fix))
+    o = ffi.new("nl_fit_options *")
+    keep = [ffi.new("char[]", as_str("model", model))]
+    o.family = keep[0]
+    o.nugget = 1 if as_bool("nugget", nugget) else 0
+    for i, (k, val) in enumerate(fix.items()):
+        keep.append(ffi.new("char[]", as_str("fix", k)))
+        o.fix_name[i] = keep[-1]
+        o.fix_value[i] = as_float("fix: " + k, val)
+    o.nfix = len(fix)
+    o.weights = _WEIGHTS.index(weights)
+    return o, keep
+
+
+def _fit_result(r, method):
+    """fit's dict of an nl_fit_result."""
+    q = [r.param[k] for k in range(r.np)]
+    names = [ffi.string(x.name).decode() for x in q]
+    res = dict(spec=ffi.string(r.spec).decode(), method=method, n=int(r.nobs), converged=bool(r.converged),
+               iterations=r.iterations, objective=r.objective, aic=r.aic,
+               parameters={nm: x.value for nm, x in zip(names, q)},
+               standard_errors={nm: x.se for nm, x in zip(names, q)},
+               fixed={nm: bool(x.fixed) for nm, x in zip(names, q)},
+               status={nm: _fit_status(x) for nm, x in zip(names, q)}, rcond=r.rcond)
+    if method != "wls":
+        res["mean"] = r.mean
+        res["intervals"] = {nm: (x.lower, x.upper) for nm, x in zip(names, q)
+                            if not (math.isnan(x.lower) or math.isnan(x.upper))}
     return res

@@ -569,6 +569,22 @@ int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_kri
 int nl_krige_local_cv_folds(const nl_krige_local *k, const long *fold, double *pred, double *var,
                             nl_krige_cv_summary *s);
 
+/* analysis/krige_flavours.h */
+typedef struct {
+    double size[3];
+    int points;
+} nl_krige_block;
+int nl_krige_block_eval(const nl_krige_local *k, const nl_krige_block *b, size_t count, const double *x, double *est,
+                        double *var);
+int nl_krige_tg_transform(double lambda, size_t n, const double *val, double *out);
+int nl_krige_tg_eval(const nl_krige_local *k, const nl_krige_block *b, double lambda, size_t count, const double *x,
+                     double *est, double *var);
+int nl_krige_tg_cv(const nl_krige_local *k, double lambda, const double *orig, double *pred, double *var,
+                   nl_krige_cv_summary *s);
+int nl_krige_indicator(const nl_model *const *m, size_t nk, const double *thr, int dim, size_t n, const double *pts,
+                       const double *val, const nl_krige_local_options *o, const nl_krige_block *b, size_t count,
+                       const double *x, double *raw, double *cdf, size_t *ncorrected);
+
 /* analysis/condsim.h */
 typedef struct nl_condsim_plan nl_condsim_plan;
 typedef struct {
@@ -631,6 +647,7 @@ typedef struct {
 int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out);
 int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_variogram **out);
 void nl_variogram_free(nl_variogram *v);
+int nl_variogram_read(const char *path, nl_variogram **out);
 
 /* analysis/fit.h */
 typedef struct {
