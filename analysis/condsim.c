@@ -64,7 +64,7 @@ static int check_kriging(const nl_model *m, int dim, size_t n, const double *pts
     int st;
     if (o->nmax) {
         nl_krige_local *kl;
-        nl_krige_local_options ko = {o->nmax, 0, o->simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, o->mean};
+        nl_krige_local_options ko = {.nmax = o->nmax, .drift = o->simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, .mean = o->mean};
         if (!(st = nl_krige_local_alloc(m, dim, n, pts, val, &ko, &kl)))
             nl_krige_local_free(kl);
         return st;
@@ -83,7 +83,8 @@ static int weights(nl_condsim_plan *p, const nl_field *given)
                   .count = p->gn[0] * p->gn[1] * p->gn[2]}, *grid = &g; /* given->count may be unset */
     size_t rows = grid->count + p->np, width = p->o.nmax && p->o.nmax < p->n ? p->o.nmax : p->n;
     nl_krige_local *kl;
-    nl_krige_local_options ko = {p->o.nmax, 0, p->o.simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, p->o.mean};
+    nl_krige_local_options ko = {.nmax = p->o.nmax, .drift = p->o.simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT,
+                                 .mean = p->o.mean};
     if (p->o.rekrige || p->n < 2 || (!p->o.nmax && p->n > NL_KRIGE_LOCAL_MAX) ||
         rows > NL_CONDSIM_WEIGHTS_MAX / 12 / width)
         return NL_OK;
@@ -175,7 +176,8 @@ static int krige_anew(const nl_condsim_plan *p, const double *r, nl_field *k, do
     int st;
     if (p->o.nmax) {
         nl_krige_local *kl;
-        nl_krige_local_options o = {p->o.nmax, 0, p->o.simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, p->o.mean};
+        nl_krige_local_options o = {.nmax = p->o.nmax, .drift = p->o.simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT,
+                                    .mean = p->o.mean};
         if ((st = nl_krige_local_alloc(p->m, p->dim, p->n, p->pts, r, &o, &kl)))
             return st;
         st = nl_krige_local_grid(kl, p->lo, k, NULL);

@@ -70,6 +70,9 @@ int nl_kf_support_init(const nl_krige_local *k, const nl_krige_block *b, nl_kf_s
 {
     int dim = k->dim, st;
     memset(s, 0, sizeof *s);
+    if (k->o.ncov)
+        return NL_ERROR(NL_EINVAL, "block kriging: the plan has %zu covariates (an external drift); expected none",
+                        k->o.ncov);
     size_t cap = b ? NL_KRIGE_BLOCK_POINTS_MAX : 1;
     s->d = calloc(cap * (size_t)dim, sizeof *s->d), s->w = malloc(cap * sizeof *s->w);
     if (!s->d || !s->w) {
@@ -158,7 +161,7 @@ static int locate(const nl_krige_local *k, const nl_kf_support *s, const double 
         double y[3] = {0, 0, 0};
         for (int a = 0; a < dim; a++)
             y[a] = x[a] + s->d[j * dim + a];
-        nl_kl_drift(k, y, g);
+        nl_kl_drift(k, y, NULL, g);
         for (size_t q = 0; q < p; q++)
             f[q] += s->w[j] * g[q];
     }

@@ -8,6 +8,7 @@
 #include <gsl/gsl_cblas.h>
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +18,8 @@ void nl_krige_local_free(nl_krige_local *k)
     if (!k)
         return;
     nl_spindex_free(k->index);
-    free(k->pts), free(k->val), free(k);
+    nl_gq_free(k->gq);
+    free(k->pts), free(k->val), free(k->cov), free(k->cc), free(k->cs), free(k);
 }
 
 size_t nl_krige_local_terms(const nl_krige_local *k) { return k->p; }
@@ -63,13 +65,43 @@ static int check_options(const nl_krige_local_options *o, size_t n, size_t p, in
         return NL_ERROR(NL_EINVAL, "kriging: drift: expected none, constant, linear or quadratic, got %d", o->drift);
     if (o->drift == NL_DRIFT_NONE && !isfinite(o->mean))
         return NL_ERROR(NL_EINVAL, "kriging: mean: expected a finite number, got %g", o->mean);
+    if (o->ncov && (o->drift == NL_DRIFT_NONE || !o->cov))
+        return NL_ERROR(NL_EINVAL, "kriging: %zu covariates: expected %s", o->ncov,
+                        o->cov ? "ordinary or universal kriging (an external drift has no known mean)"
+                               : "their values for the data");
     size_t k = o->nmax && o->nmax < n ? o->nmax : n;
     if (k < p || k < 1)
-        return NL_ERROR(NL_EINVAL, "kriging: a %s drift in %dD has %zu terms; expected at least as many points in a "
-                        "neighbourhood, got %zu", o->drift == NL_DRIFT_QUADRATIC ? "quadratic" : "linear", dim, p, k);
+        return NL_ERROR(NL_EINVAL, "kriging: a %s drift in %dD with %zu covariates has %zu terms; expected at least "
+                        "as many points in a neighbourhood, got %zu",
+                        o->drift == NL_DRIFT_QUADRATIC ? "quadratic" : o->drift == NL_DRIFT_LINEAR ? "linear"
+                                                                                                     : "constant",
+                        dim, o->ncov, p, k);
     if (o->nmax > NL_KRIGE_LOCAL_MAX || (!o->nmax && !o->radius && n > NL_KRIGE_LOCAL_MAX))
         return NL_ERROR(NL_EINVAL, "kriging: neighbourhoods of %zu points; expected at most %d (set nmax)",
                         o->nmax ? o->nmax : n, NL_KRIGE_LOCAL_MAX);
+    return NL_OK;
+}
+
+/* Copy the data's covariates; their centres and scales for the drift. */
+static int covariates(nl_krige_local *k, const nl_krige_local_options *o)
+{
+    size_t q = o->ncov;
+    k->cov = malloc(k->n * q * sizeof(double)), k->cc = malloc(q * sizeof(double)), k->cs = malloc(q * sizeof(double));
+    if (!k->cov || !k->cc || !k->cs)
+        return NL_ERROR(NL_ENOMEM, "kriging: out of memory for %zu covariates", q);
+    memcpy(k->cov, o->cov, k->n * q * sizeof(double));
+    for (size_t j = 0; j < q; j++) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (size_t i = 0; i < k->n; i++) {
+            double v = k->cov[i * q + j];
+            if (!isfinite(v))
+                return NL_ERROR(NL_EINVAL, "kriging: covariate %zu of point %zu is %g; expected a finite number", j + 1,
+                                i + 1, v);
+            lo = fmin(lo, v), hi = fmax(hi, v);
+        }
+        k->cc[j] = 0.5 * (lo + hi), k->cs[j] = hi > lo ? 0.5 * (hi - lo) : 1;
+    }
+    k->o.cov = NULL; /* the caller's array is not kept */
     return NL_OK;
 }
 
@@ -79,7 +111,7 @@ int nl_krige_local_alloc(const nl_model *m, int dim, size_t n, const double *pts
     double lo[3], hi[3], zero[3] = {0, 0, 0};
     int st;
     *out = NULL;
-    if ((st = check_data(dim, n, pts, val, lo, hi)) || (st = check_options(o, n, terms(o->drift, dim), dim)))
+    if ((st = check_data(dim, n, pts, val, lo, hi)) || (st = check_options(o, n, terms(o->drift, dim) + o->ncov, dim)))
         return st;
     if ((st = nl_model_check_dim(m, dim)))
         return st;
@@ -104,7 +136,7 @@ int nl_krige_local_alloc(const nl_model *m, int dim, size_t n, const double *pts
     nl_krige_local *k = calloc(1, sizeof *k);
     if (!k)
         return NL_ERROR(NL_ENOMEM, "kriging: out of memory");
-    k->m = m, k->dim = dim, k->n = n, k->o = *o, k->p = terms(o->drift, dim), k->r0 = r0;
+    k->m = m, k->dim = dim, k->n = n, k->o = *o, k->p = terms(o->drift, dim) + o->ncov, k->r0 = r0;
     k->shift = shift;
     k->cap = o->nmax && o->nmax < n ? o->nmax : n < NL_KRIGE_LOCAL_MAX ? n : NL_KRIGE_LOCAL_MAX;
     for (int a = 0; a < dim; a++)
@@ -115,30 +147,39 @@ int nl_krige_local_alloc(const nl_model *m, int dim, size_t n, const double *pts
         return NL_ERROR(NL_ENOMEM, "kriging: out of memory for %zu points", n);
     }
     memcpy(k->pts, pts, n * dim * sizeof(double)), memcpy(k->val, val, n * sizeof(double));
+    if (o->ncov && (st = covariates(k, o))) {
+        nl_krige_local_free(k);
+        return st;
+    }
     if ((st = nl_spindex_alloc(dim, n, pts, &k->index))) {
         nl_krige_local_free(k);
         return st;
+    }
+    if (o->nmax && o->nmax < n && !(k->gq = nl_gq_build(k, SIZE_MAX))) {
+        nl_krige_local_free(k);
+        return NL_ERROR(NL_ENOMEM, "kriging: out of memory for the search tree of %zu points", n);
     }
     *out = k;
     return NL_OK;
 }
 
 /* The drift terms at x (p values). */
-void nl_kl_drift(const nl_krige_local *k, const double *x, double *f)
+void nl_kl_drift(const nl_krige_local *k, const double *x, const double *c, double *f)
 {
     double u[3];
     size_t t = 0;
     if (k->p == 0)
         return;
     f[t++] = 1;
-    if (k->o.drift == NL_DRIFT_CONSTANT)
-        return;
-    for (int a = 0; a < k->dim; a++)
-        u[a] = (x[a] - k->centre[a]) / k->scale[a], f[t++] = u[a];
+    if (k->o.drift != NL_DRIFT_CONSTANT)
+        for (int a = 0; a < k->dim; a++)
+            u[a] = (x[a] - k->centre[a]) / k->scale[a], f[t++] = u[a];
     if (k->o.drift == NL_DRIFT_QUADRATIC)
         for (int a = 0; a < k->dim; a++)
             for (int b = a; b < k->dim; b++)
                 f[t++] = u[a] * u[b];
+    for (size_t j = 0; j < k->o.ncov; j++)
+        f[t++] = (c[j] - k->cc[j]) / k->cs[j];
 }
 
 static int cmp_size(const void *a, const void *b)
@@ -147,11 +188,27 @@ static int cmp_size(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* The nearest k->cap neighbours are a tie (the cap-th and the next are
+ * equidistant): take gstat's choice (analysis/krige_gstat_order.c) into
+ * w->next, keeping the k-d tree's when memory runs out. */
+static size_t gstat_tie(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w, size_t m)
+{
+    nl_gq_node *t = skip == (size_t)-1 ? k->gq : nl_gq_build(k, skip);
+    size_t got = t ? nl_gq_select(k, t, x, k->cap, w->set + k->cap + 1) : 0;
+    if (t && t != k->gq)
+        nl_gq_free(t);
+    if (got != k->cap)
+        return m < k->cap ? m : k->cap;
+    memcpy(w->next, w->set + k->cap + 1, got * sizeof *w->next);
+    return got;
+}
+
 /* The neighbours of x (without datum `skip`, SIZE_MAX for none) into
- * w->next (ascending indices); returns their number. */
+ * w->next (ascending indices); returns their number.  When nmax binds, one
+ * more is looked at, for ties. */
 static size_t neighbours(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w)
 {
-    size_t want = k->cap + (skip != (size_t)-1), got;
+    size_t want = k->cap + (skip != (size_t)-1) + (k->gq != NULL), got;
     if (want > k->n)
         want = k->n;
     if (k->o.radius > 0) {
@@ -165,6 +222,9 @@ static size_t neighbours(const nl_krige_local *k, const double *x, size_t skip, 
     for (size_t i = 0; i < got; i++)
         if (w->next[i] != skip)
             w->next[m++] = w->next[i];
+    if (k->gq && m > k->cap &&
+        nl_gq_d2(k->dim, x, k->pts + w->next[k->cap - 1] * k->dim) == nl_gq_d2(k->dim, x, k->pts + w->next[k->cap] * k->dim))
+        m = gstat_tie(k, x, skip, w, m);
     if (m > k->cap)
         m = k->cap;
     qsort(w->next, m, sizeof *w->next, cmp_size);
@@ -208,7 +268,8 @@ static const char *hood(const nl_krige_local *k, size_t skip, char *buf)
 
 /* Location x: estimate and variance from the neighbourhood of x (without
  * datum skip). */
-int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_work *w, double *est, double *var)
+int nl_kl_point(const nl_krige_local *k, const double *x, const double *c, size_t skip, nl_kl_work *w, double *est,
+                double *var)
 {
     size_t K = neighbours(k, x, skip, w), p = k->p;
     int st;
@@ -216,6 +277,12 @@ int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_wor
     if (w->overflow)
         return NL_ERROR(NL_EINVAL, "kriging: more than %zu data within the radius %g of %s; expected fewer (set nmax)",
                         k->cap, k->o.radius, nl_kl_where(k, x, at));
+    if ((K < p || K == 0) && k->o.missing) {
+        *est = NAN;
+        if (var)
+            *var = NAN;
+        return NL_OK;
+    }
     if (K < p || K == 0)
         return NL_ERROR(NL_EINVAL, "kriging: %zu data in the neighbourhood of %s (%s); expected at least %zu", K,
                         nl_kl_where(k, x, at), hood(k, skip, desc), p ? p : 1);
@@ -232,7 +299,7 @@ int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_wor
     nl_kl_lsolve(w->L, K, c0, v); /* v = L^-1 c0 */
     for (size_t i = 0; i < K; i++)
         e += c0[i] * w->r[i], s += v[i] * v[i];
-    nl_kl_drift(k, x, f);
+    nl_kl_drift(k, x, c, f);
     if (p == 0)
         e += k->o.mean;
     for (size_t j = 0; j < p; j++) { /* u = x0 - Q' v, then M^-1 u */
@@ -256,8 +323,8 @@ int nl_kl_point(const nl_krige_local *k, const double *x, size_t skip, nl_kl_wor
  * and the drift residuals U = F - Q V by dgemm.  C0 is K x NL_KRIGE_BLOCK
  * scratch (row-major), U p x NL_KRIGE_BLOCK; unused columns are zero, so a
  * block's arithmetic does not depend on nb's neighbours or on the thread. */
-void nl_kl_batch(const nl_krige_local *k, const double *x, size_t nb, nl_kl_work *w, double *C0, double *U,
-                 double *est, double *var)
+void nl_kl_batch(const nl_krige_local *k, const double *x, const double *c, size_t nb, nl_kl_work *w, double *C0,
+                 double *U, double *est, double *var)
 {
     enum { B = NL_KRIGE_BLOCK };
     size_t K = w->K, p = k->p;
@@ -270,7 +337,7 @@ void nl_kl_batch(const nl_krige_local *k, const double *x, size_t nb, nl_kl_work
             C0[i * B + b] = c;
             e += c * w->r[i];
         }
-        nl_kl_drift(k, x + b * dim, w->f);
+        nl_kl_drift(k, x + b * dim, c ? c + b * k->o.ncov : NULL, w->f);
         for (size_t j = 0; j < p; j++)
             e += w->f[j] * w->beta[j];
         est[b] = e;

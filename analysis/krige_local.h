@@ -2,8 +2,10 @@
  * cross-validation, as gstat's krige(formula, ..., nmax, maxdist) and
  * krige.cv (Pebesma 2004).
  *
- * At each location x0 the data used are the nmax nearest (Euclidean; ties
- * by index) within the radius (through the k-d tree of core/spindex.h).
+ * At each location x0 the data used are the nmax nearest (Euclidean) within
+ * the radius (through the k-d tree of core/spindex.h); when the nmax-th and
+ * the next are equidistant, the one gstat's quadtree search reaches first
+ * (analysis/krige_gstat_order.c), so that neighbourhoods are gstat's.
  * With the covariance matrix C of those K data (C_ij = R(t_i - t_j)), c0 =
  * R(x0 - t_i), the drift matrix X (K x p: 1 for ordinary kriging; 1, x, y,
  * z for linear; 1, the coordinates, their squares and cross products for
@@ -13,8 +15,12 @@
  *     beta = (X' C^-1 X)^-1 X' C^-1 z,
  *     est  = x0' beta + c0' C^-1 (z - X beta),
  *     var  = R(0) - c0' C^-1 c0 + u' (X' C^-1 X)^-1 u,  u = x0 - X' C^-1 c0.
- * Drift columns use coordinates centred on and scaled by the data's bounding
- * box; the estimate does not depend on that choice (same column space).
+ * External drift (gstat's krige(z ~ c1 + c2, ...)): covariates given with
+ * the data and with each location add columns c1, c2, ... to X and x0,
+ * after the polynomial terms (which hold the constant).
+ * Drift columns use coordinates (and covariates) centred on and scaled by
+ * the data's range; the estimate does not depend on that choice (same
+ * column space).
  * The factorisation of a neighbourhood is reused while consecutive
  * locations have the same neighbour set (always with a global
  * neighbourhood).  Memory: the index, O(n), plus O(K^2) per thread. */
@@ -40,6 +46,11 @@ typedef struct {
     double radius; /* only data within this distance; 0 = no limit */
     int drift;     /* NL_DRIFT_CONSTANT (ordinary), _LINEAR, _QUADRATIC; _NONE: simple kriging */
     double mean;   /* the known mean of simple kriging */
+    size_t ncov;        /* external drift: covariates per datum (0: none; not with _NONE) */
+    const double *cov;  /* n * ncov covariates of the data, row-major (copied by the plan) */
+    int missing;   /* 1: a location with no datum in its neighbourhood, or fewer than the
+                    * drift terms, gets NaN estimate and variance (gstat's NA), not an error;
+                    * when every location is missing, the first one's error is returned */
 } nl_krige_local_options;
 
 typedef struct nl_krige_local nl_krige_local;
@@ -56,7 +67,7 @@ int nl_krige_local_alloc(const nl_model *m, int dim, size_t n, const double *pts
                          const nl_krige_local_options *o, nl_krige_local **out);
 void nl_krige_local_free(nl_krige_local *k);
 
-/* Number of drift terms p (0 for simple kriging). */
+/* Number of drift terms p (0 for simple kriging), covariates included. */
 size_t nl_krige_local_terms(const nl_krige_local *k);
 
 /* Estimates (and variances, var may be NULL) at count locations x (count *
@@ -66,6 +77,14 @@ size_t nl_krige_local_terms(const nl_krige_local *k);
  * drift terms, or no neighbour, or its system is singular (duplicate
  * points: the message names the location); NL_ENOMEM. */
 int nl_krige_local_eval(const nl_krige_local *k, size_t count, const double *x, double *est, double *var);
+
+/* nl_krige_local_eval with the covariates of the locations: cov holds
+ * count * ncov numbers (row-major, the plan's covariates in its order; NULL
+ * when the plan has none).  nl_krige_local_eval and nl_krige_local_grid
+ * refuse (NL_EINVAL) a plan with covariates; errors as nl_krige_local_eval,
+ * and NL_EINVAL for a covariate that is not finite. */
+int nl_krige_local_eval_at(const nl_krige_local *k, size_t count, const double *x, const double *cov, double *est,
+                           double *var);
 
 /* On the cell centres of a grid, sample i of axis a at lo[a] + (i + 0.5)
  * est->h[a] (est->dim must be the plan's); var may be NULL or a field of
@@ -80,13 +99,28 @@ int nl_krige_local_grid(const nl_krige_local *k, const double *lo, nl_field *est
  * square error.  Errors as nl_krige_local_eval (a zero variance gives
  * NL_EINVAL); NL_EINVAL, before any work, for values whose max - min
  * exceeds sqrt(DBL_MAX / n) / 16 (the squared errors would overflow), and
- * when a sum of the summary is not finite all the same. */
+ * when a sum of the summary is not finite all the same.  With the option
+ * missing, a datum without neighbours gets NaN and is left out of the
+ * summary (s->n counts those in it). */
 typedef struct {
     double mean_error, var_error; /* of z - pred */
     double mean_z, var_z;         /* of (z - pred) / sqrt(var) */
     double rmse;                  /* sqrt(mean (z - pred)^2) */
+    size_t n;                     /* data predicted (not missing) */
 } nl_krige_cv_summary;
 int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_krige_cv_summary *s);
+
+/* k-fold cross-validation, as gstat's krige.cv(..., nfold = K): for each
+ * distinct fold id, the data of that fold predicted from the other data
+ * alone (a plan of the same options on them: its own neighbourhoods, drift
+ * and mean), as gstat.cv's predict(data[-sel, ], newdata = data[sel, ]).
+ * fold: n ids (any integers; gstat draws them as sample(K, n, replace =
+ * TRUE)).  pred, var and s as nl_krige_local_cv.  Errors: those of
+ * nl_krige_local_alloc for the data outside a fold (the message names the
+ * fold; e.g. fewer than 2 of them) and of nl_krige_local_cv; NL_EINVAL when
+ * there is a single fold (nothing left to predict from). */
+int nl_krige_local_cv_folds(const nl_krige_local *k, const long *fold, double *pred, double *var,
+                            nl_krige_cv_summary *s);
 
 #ifdef __cplusplus
 }

@@ -23,7 +23,9 @@ int nl_kl_work_init(nl_kl_work *w, size_t cap, size_t p)
     size_t c = cap + 1, q = p ? p : 1;
     memset(w, 0, sizeof *w);
     w->cap = cap, w->p = p;
-    w->next = malloc(c * sizeof(size_t)), w->set = malloc(c * sizeof(size_t)), w->d2 = malloc(c * sizeof(double));
+    /* next, d2: one more for the tie check; set: cap more, scratch for gstat's order */
+    w->next = malloc((c + 1) * sizeof(size_t)), w->set = malloc((c + cap + 1) * sizeof(size_t));
+    w->d2 = malloc((c + 1) * sizeof(double));
     w->L = malloc(c * c * sizeof(double)), w->Q = malloc(q * c * sizeof(double)), w->M = malloc(q * q * sizeof(double));
     w->beta = malloc(q * sizeof(double)), w->r = malloc(c * sizeof(double)), w->c0 = malloc(c * sizeof(double));
     w->v = malloc(c * sizeof(double)), w->f = malloc(q * sizeof(double)), w->u = malloc(q * sizeof(double));
@@ -133,7 +135,7 @@ int nl_kl_factor(const nl_krige_local *k, nl_kl_work *w, const double *x)
         return singular(k, x, "covariance matrix");
     for (size_t i = 0; i < K; i++) /* X row by row into Q (column-major: Q[j * K + i]), then L^-1 X */
     {
-        nl_kl_drift(k, k->pts + w->set[i] * dim, w->f);
+        nl_kl_drift(k, k->pts + w->set[i] * dim, k->cov ? k->cov + w->set[i] * k->o.ncov : NULL, w->f);
         for (size_t j = 0; j < p; j++)
             w->Q[j * K + i] = w->f[j];
     }
@@ -176,6 +178,7 @@ int nl_kl_factor(const nl_krige_local *k, nl_kl_work *w, const double *x)
  * location t; skip(t) the datum left out (SIZE_MAX: none). */
 typedef struct {
     const double *x;    /* count * dim coordinates, or NULL for a grid */
+    const double *c;    /* count * ncov covariates of the locations x, or NULL */
     const double *lo;   /* grid origin */
     const nl_field *g;  /* grid, or NULL */
     int cv;             /* cross-validation: location t is datum t, left out */
@@ -194,6 +197,14 @@ static void location(const nl_krige_local *k, const locs_t *L, size_t t, double 
         x[a] = L->lo[a] + ((double)ix[a] + 0.5) * L->g->h[a];
 }
 
+/* The covariates of location t (NULL when the plan has none). */
+static const double *location_cov(const nl_krige_local *k, const locs_t *L, size_t t)
+{
+    if (!k->o.ncov)
+        return NULL;
+    return (L->cv ? k->cov : L->c) + t * k->o.ncov;
+}
+
 /* The status of a run: out of memory, or the error of the first location
  * that failed (again on this thread, for the message). */
 static int outcome(const nl_krige_local *k, const locs_t *L, int nomem, size_t bad)
@@ -206,7 +217,7 @@ static int outcome(const nl_krige_local *k, const locs_t *L, int nomem, size_t b
         int st = nl_kl_work_init(&w, k->cap, k->p);
         if (!st) {
             location(k, L, bad, x);
-            st = nl_kl_point(k, x, L->cv ? bad : SIZE_MAX, &w, &e, &v);
+            st = nl_kl_point(k, x, location_cov(k, L, bad), L->cv ? bad : SIZE_MAX, &w, &e, &v);
             nl_kl_work_free(&w);
         }
         return st ? st : NL_ERROR(NL_EFAIL, "kriging: location %zu failed", bad);
@@ -249,7 +260,7 @@ static int run_global(const nl_krige_local *k, const locs_t *L, size_t count, do
             }
             for (size_t q = 0; q < nb; q++)
                 location(k, L, t0 + q, x + q * (size_t)k->dim);
-            nl_kl_batch(k, x, nb, &w, C0, U, est + t0, var ? var + t0 : NULL);
+            nl_kl_batch(k, x, location_cov(k, L, t0), nb, &w, C0, U, est + t0, var ? var + t0 : NULL);
         }
         if (init)
             nl_kl_work_free(&w);
@@ -258,7 +269,25 @@ static int run_global(const nl_krige_local *k, const locs_t *L, size_t count, do
     return outcome(k, L, nomem, bad);
 }
 
+static int run_all(const nl_krige_local *k, const locs_t *L, size_t count, double *est, double *var);
+
+/* As run_all; when every location is missing (o.missing), the error of the
+ * first as if missing locations were refused: a map or table of nothing
+ * but missing values is a mistake (a radius too small for the data). */
 static int run(const nl_krige_local *k, const locs_t *L, size_t count, double *est, double *var)
+{
+    int st = run_all(k, L, count, est, var);
+    size_t i = 0;
+    while (!st && k->o.missing && i < count && isnan(est[i]))
+        i++;
+    if (st || !k->o.missing || i < count || count == 0)
+        return st;
+    nl_krige_local strict = *k;
+    strict.o.missing = 0;
+    return outcome(&strict, L, 0, 0);
+}
+
+static int run_all(const nl_krige_local *k, const locs_t *L, size_t count, double *est, double *var)
 {
     size_t bad = SIZE_MAX;
     int nomem = 0;
@@ -278,7 +307,7 @@ static int run(const nl_krige_local *k, const locs_t *L, size_t count, double *e
             if (!ok)
                 continue;
             location(k, L, t, x);
-            if (nl_kl_point(k, x, L->cv ? t : SIZE_MAX, &w, &est[t], var ? &var[t] : NULL))
+            if (nl_kl_point(k, x, location_cov(k, L, t), L->cv ? t : SIZE_MAX, &w, &est[t], var ? &var[t] : NULL))
                 bad = t < bad ? t : bad;
         }
         nl_kl_work_free(&w);
@@ -286,14 +315,34 @@ static int run(const nl_krige_local *k, const locs_t *L, size_t count, double *e
     return outcome(k, L, nomem, bad);
 }
 
+static int no_covariates(const nl_krige_local *k)
+{
+    return NL_ERROR(NL_EINVAL, "kriging: the plan has %zu covariates (an external drift); expected their values at "
+                    "the locations (nl_krige_local_eval_at)", k->o.ncov);
+}
+
 int nl_krige_local_eval(const nl_krige_local *k, size_t count, const double *x, double *est, double *var)
 {
-    locs_t L = {.x = x};
+    return nl_krige_local_eval_at(k, count, x, NULL, est, var);
+}
+
+int nl_krige_local_eval_at(const nl_krige_local *k, size_t count, const double *x, const double *cov, double *est,
+                           double *var)
+{
+    locs_t L = {.x = x, .c = cov};
+    if (k->o.ncov && !cov)
+        return no_covariates(k);
+    for (size_t i = 0; cov && i < count * k->o.ncov; i++)
+        if (!isfinite(cov[i]))
+            return NL_ERROR(NL_EINVAL, "kriging: covariate %zu of location %zu is %g; expected a finite number",
+                            i % k->o.ncov + 1, i / k->o.ncov + 1, cov[i]);
     return run(k, &L, count, est, var);
 }
 
 int nl_krige_local_grid(const nl_krige_local *k, const double *lo, nl_field *est, nl_field *var)
 {
+    if (k->o.ncov)
+        return no_covariates(k);
     if (est->dim != k->dim || (var && var->count != est->count))
         return NL_ERROR(NL_EINVAL, "kriging: expected a %dD grid (and a variance grid of its size), got %dD", k->dim,
                         est->dim);
@@ -323,14 +372,29 @@ int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_kri
     int st = check_cv_values(k);
     if (st || (st = run(k, &L, k->n, pred, var)))
         return st;
-    double se = 0, sz = 0, se2 = 0, sz2 = 0, n = (double)k->n;
+    return nl_kl_cv_summary(k, pred, var, s);
+}
+
+int nl_kl_cv_summary(const nl_krige_local *k, const double *pred, const double *var, nl_krige_cv_summary *s)
+{
+    double se = 0, sz = 0, se2 = 0, sz2 = 0, n = 0;
+    int st = check_cv_values(k);
+    if (st)
+        return st;
     for (size_t i = 0; i < k->n; i++) {
+        if (k->o.missing && isnan(pred[i]))
+            continue;
+        n++;
         if (!(var[i] > 0))
             return NL_ERROR(NL_EINVAL, "kriging: cross-validation: the kriging variance at datum %zu is %g; expected a "
                             "positive variance (duplicate points?)", i + 1, var[i]);
         double e = k->val[i] - pred[i], z = e / sqrt(var[i]);
         se += e, sz += z, se2 += e * e, sz2 += z * z;
     }
+    if (n < 2)
+        return NL_ERROR(NL_EINVAL, "kriging: cross-validation: %g of the %zu data predicted; expected 2 at least "
+                        "(the others have no data in their neighbourhood)", n, k->n);
+    s->n = (size_t)n;
     s->mean_error = se / n, s->mean_z = sz / n, s->rmse = sqrt(se2 / n);
     s->var_error = (se2 - se * se / n) / (n - 1), s->var_z = (sz2 - sz * sz / n) / (n - 1);
     if (!(isfinite(s->rmse) && isfinite(s->var_error) && isfinite(sz2) && isfinite(s->var_z)))

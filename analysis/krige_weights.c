@@ -13,19 +13,11 @@ size_t nl_krige_weights_width(const nl_krige_local *k)
     return k->cap;
 }
 
-static int cmp_size(const void *a, const void *b)
-{
-    size_t x = *(const size_t *)a, y = *(const size_t *)b;
-    return x < y ? -1 : x > y;
-}
-
-/* The cap nearest data of x (ties by index, as nl_kl_point's search) into
- * w->next, ascending indices. */
+/* The cap nearest data of x (nl_kl_point's search, gstat's choice at a
+ * tie) into w->next, ascending indices. */
 static size_t nearest(const nl_krige_local *k, const double *x, nl_kl_work *w)
 {
-    size_t got = nl_spindex_knn(k->index, x, k->cap < k->n ? k->cap : k->n, w->next, w->d2);
-    qsort(w->next, got, sizeof *w->next, cmp_size);
-    return got;
+    return nl_kl_neighbours(k, x, SIZE_MAX, w);
 }
 
 /* x = L^-T b (L lower, n x n, row-major). */
@@ -62,7 +54,7 @@ static int point(const nl_krige_local *k, const double *x, nl_kl_work *w, uint32
     }
     nl_kl_lsolve(w->L, K, c0, v); /* v = L^-1 c0 */
     if (p) {
-        nl_kl_drift(k, x, f);
+        nl_kl_drift(k, x, NULL, f);
         for (size_t j = 0; j < p; j++) { /* u = x0 - Q' v */
             double t = f[j];
             for (size_t i = 0; i < K; i++)
@@ -105,6 +97,8 @@ int nl_krige_weights(const nl_krige_local *k, size_t count, const double *x, con
     int nomem = 0, err = NL_OK;
     if (k->o.radius > 0)
         return NL_ERROR(NL_EINVAL, "kriging weights: expected a plan without a radius, got radius %g", k->o.radius);
+    if (k->o.ncov)
+        return NL_ERROR(NL_EINVAL, "kriging weights: the plan has %zu covariates; expected none", k->o.ncov);
     if (k->n > UINT32_MAX)
         return NL_ERROR(NL_ETOOBIG, "kriging weights: %zu data; expected at most %u", k->n, UINT32_MAX);
 #pragma omp parallel if (count > 256 && nl_model_is_reentrant(k->m))

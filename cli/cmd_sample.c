@@ -17,7 +17,7 @@ static const char help[] =
     "without -o), ready for noiselab krige --data and synth --condition.\n"
     "Coordinates are the field's: sample i of an axis sits at (origin + i) h, with h\n"
     "its spacing and origin its recorded window origin (noiselab.origin; 0 when\n"
-    "absent); a field made on an --extent a:b (synth --condition) has its samples at\n"
+    "absent); a field made on an --extent a:b (synth --condition, krige) has its samples at\n"
     "the cell centres a + (i + 0.5) h.\n"
     "  --points PTS.tsv  a header x [y [z]] (any order; a value column is ignored), one\n"
     "                    row per point; every point must lie within the samples' span\n"
@@ -61,7 +61,9 @@ static void first_sample(const opts_t *a, const nl_field *f, const nl_meta *meta
     const char *p = meta->origin, *e = strstr(meta->method, " conditioned:");
     for (int d = 0; d < 3; d++)
         x0[d] = 0;
-    if (e && (e = strstr(e, "extent="))) { /* made on an extent a:b (synth --condition): cell centres */
+    if (!e && strncmp(meta->method, "krige:", 6) == 0) /* a kriged map records its grid's extent too */
+        e = meta->method;
+    if (e && (e = strstr(e, "extent="))) { /* made on an extent a:b (synth --condition, krige): cell centres */
         e += 7;
         for (int d = 0; d < f->dim; d++) {
             char *end;

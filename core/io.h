@@ -82,8 +82,8 @@ int nl_png_write_field(const char *path, const nl_field *f, double lo, double hi
 
 /* Write a TSV table: `comment` (may be NULL) as a '#' line, a header line of
  * the ncols names, then nrows rows of the columns cols[0..ncols-1] (each of
- * nrows doubles, printed with %.10g).  NL_EIO when the file cannot be
- * created or a write fails. */
+ * nrows doubles, printed with %.10g; a NaN, a missing value, as "NA", as R
+ * writes it).  NL_EIO when the file cannot be created or a write fails. */
 int nl_tsv_write(const char *path, const char *comment, int ncols, const char *const *names,
                  size_t nrows, const double *const *cols);
 
@@ -96,7 +96,8 @@ int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *n
  * NULL) as comment lines "# key: value" (model, method, seed, spacing,
  * size, version, flags, origin: the EXR attributes without "noiselab."),
  * then the header "COORD<TAB>value" (coord NULL: "t") and one row per
- * sample, both columns printed with %.10g.  The coordinates are t[0..n-1]
+ * sample, both columns printed with %.10g (a NaN sample, a missing value,
+ * as "NA", as R writes it).  The coordinates are t[0..n-1]
  * when t is not NULL, else t_i = (X + i) h with X the first number of
  * meta->origin (0 when empty) and h = f->h[0].  NL_EINVAL for a field that
  * is not 1D or an origin that is not an integer (nothing written); NL_EIO

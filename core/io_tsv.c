@@ -21,7 +21,10 @@ int nl_tsv_fwrite(FILE *fp, const char *comment, int ncols, const char *const *n
         fprintf(fp, "%s%c", names[c], c + 1 < ncols ? '\t' : '\n');
     for (size_t r = 0; r < nrows; r++)
         for (int c = 0; c < ncols; c++)
-            fprintf(fp, "%.10g%c", cols[c][r], c + 1 < ncols ? '\t' : '\n');
+            if (isnan(cols[c][r])) /* a missing value, as R writes it */
+                fprintf(fp, "NA%c", c + 1 < ncols ? '\t' : '\n');
+            else
+                fprintf(fp, "%.10g%c", cols[c][r], c + 1 < ncols ? '\t' : '\n');
     if (fflush(fp) || ferror(fp))
         return NL_ERROR(NL_EIO, "writing the table failed: %s", strerror(errno));
     return NL_OK;
@@ -85,8 +88,13 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
         return NL_ERROR(NL_EIO, "%s: cannot write: %s", path, strerror(errno));
     write_meta(fp, meta);
     fprintf(fp, "%s\tvalue\n", coord ? coord : "t");
-    for (size_t i = 0; i < f->count; i++) /* t = (X + i) h: the window's own coordinates */
-        fprintf(fp, "%.10g\t%.10g\n", t ? t[i] : (double)(x0 + (long long)i) * f->h[0], f->data[i]);
+    for (size_t i = 0; i < f->count; i++) { /* t = (X + i) h: the window's own coordinates; NaN: missing, NA */
+        double ti = t ? t[i] : (double)(x0 + (long long)i) * f->h[0];
+        if (isnan(f->data[i]))
+            fprintf(fp, "%.10g\tNA\n", ti);
+        else
+            fprintf(fp, "%.10g\t%.10g\n", ti, f->data[i]);
+    }
     if ((fflush(fp) || ferror(fp)) && !st)
         st = NL_ERROR(NL_EIO, "%s: writing the table failed: %s", path, strerror(errno));
     if (fclose(fp) && !st)

@@ -57,7 +57,7 @@ static void kriging(setup_t *s, size_t nmax)
 {
     if (nmax) {
         nl_krige_local *kl;
-        nl_krige_local_options o = {nmax, 0, NL_DRIFT_CONSTANT, 0};
+        nl_krige_local_options o = {.nmax = nmax, .drift = NL_DRIFT_CONSTANT};
         if (nl_krige_local_alloc(s->m, 2, s->d->n, s->d->pts, s->d->val, &o, &kl) ||
             nl_krige_local_eval(kl, s->cells->n, s->cells->pts, s->est, s->var))
             die("local kriging");

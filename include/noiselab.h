@@ -47,6 +47,7 @@ extern "C" {
 #include "noiselab/core/provenance.h"
 #include "noiselab/core/io_obj.h"
 #include "noiselab/core/io_points.h"
+#include "noiselab/core/io_table.h"
 #include "noiselab/core/spindex.h"
 
 #include "noiselab/synth/fft.h"

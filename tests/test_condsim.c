@@ -113,7 +113,7 @@ static void ensemble_matches_kriging(int simple, size_t nmax)
     nl_synth_circulant_plan *cp;
     if (nmax) {
         nl_krige_local *kl;
-        nl_krige_local_options o = {nmax, 0, simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, mu};
+        nl_krige_local_options o = {.nmax = nmax, .drift = simple ? NL_DRIFT_NONE : NL_DRIFT_CONSTANT, .mean = mu};
         cr_assert_eq(nl_krige_local_alloc(m, 2, N, pts, val, &o, &kl), 0, "%s", nl_errmsg());
         cr_assert_eq(nl_krige_local_grid(kl, lo, est, var), 0, "%s", nl_errmsg());
         nl_krige_local_free(kl);

@@ -546,6 +546,9 @@ typedef struct {
     double radius;
     int drift;
     double mean;
+    size_t ncov;
+    const double *cov;
+    int missing;
 } nl_krige_local_options;
 typedef struct nl_krige_local nl_krige_local;
 int nl_krige_local_alloc(const nl_model *m, int dim, size_t n, const double *pts, const double *val,
@@ -554,12 +557,17 @@ void nl_krige_local_free(nl_krige_local *k);
 size_t nl_krige_local_terms(const nl_krige_local *k);
 int nl_krige_local_eval(const nl_krige_local *k, size_t count, const double *x, double *est, double *var);
 int nl_krige_local_grid(const nl_krige_local *k, const double *lo, nl_field *est, nl_field *var);
+int nl_krige_local_eval_at(const nl_krige_local *k, size_t count, const double *x, const double *cov, double *est,
+                           double *var);
 typedef struct {
     double mean_error, var_error;
     double mean_z, var_z;
     double rmse;
+    size_t n;
 } nl_krige_cv_summary;
 int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_krige_cv_summary *s);
+int nl_krige_local_cv_folds(const nl_krige_local *k, const long *fold, double *pred, double *var,
+                            nl_krige_cv_summary *s);
 
 /* analysis/krige_flavours.h */
 typedef struct {
