@@ -2,6 +2,7 @@
  * (gstat's R/gstat.cv.R): for each fold id in increasing order, the data of
  * the fold predicted by a plan made on the other data. */
 #include "krige_local.h"
+#include "../core/rng.h"
 #include "krige_local_internal.h"
 #include "../core/nl_error.h"
 
@@ -113,4 +114,12 @@ int nl_krige_local_cv_folds(const nl_krige_local *k, const long *fold, double *p
     }
     split_free(&sp), free(ids);
     return st ? st : nl_kl_cv_summary(k, pred, var, s);
+}
+
+void nl_krige_draw_folds(uint64_t seed, size_t n, size_t K, long *fold)
+{
+    for (size_t i = 0; i < n; i++) {
+        long f = 1 + (long)(nl_rng_uniform(seed, 0, i) * (double)K);
+        fold[i] = f > (long)K ? (long)K : f; /* a uniform of 1 - 2^-53 times K may round up to K */
+    }
 }

@@ -35,6 +35,7 @@ extern "C" {
 #include "../core/model.h"
 
 #include <stddef.h>
+#include <stdint.h>
 
 enum { NL_DRIFT_NONE = -1, NL_DRIFT_CONSTANT = 0, NL_DRIFT_LINEAR = 1, NL_DRIFT_QUADRATIC = 2 };
 
@@ -121,6 +122,11 @@ int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_kri
  * there is a single fold (nothing left to predict from). */
 int nl_krige_local_cv_folds(const nl_krige_local *k, const long *fold, double *pred, double *var,
                             nl_krige_cv_summary *s);
+
+/* Fold ids 1..K drawn uniformly and independently for n data from seed
+ * (core/rng.h, stream 0, datum i at index i): `noiselab krige
+ * --cross-validate K --seed S`'s folds.  K >= 1.  Thread-safe. */
+void nl_krige_draw_folds(uint64_t seed, size_t n, size_t K, long *fold);
 
 #ifdef __cplusplus
 }

@@ -287,14 +287,11 @@ int kp_predict_at(const kp_opts *p, const kp_common *c)
     return 0;
 }
 
-/* Fold ids 1..K drawn uniformly for each datum from --seed (stream 0). */
+/* Fold ids 1..K drawn for each datum from --seed (nl_krige_draw_folds). */
 static long *draw_folds(const kp_opts *p, size_t n)
 {
     long *fold = cli_malloc(n * sizeof *fold);
-    for (size_t i = 0; i < n; i++) {
-        long f = 1 + (long)(nl_rng_uniform(p->seed, 0, i) * (double)p->kfold);
-        fold[i] = f > (long)p->kfold ? (long)p->kfold : f;
-    }
+    nl_krige_draw_folds(p->seed, n, p->kfold, fold);
     return fold;
 }
 

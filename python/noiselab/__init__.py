@@ -25,7 +25,8 @@ from ._ffi import LIBRARY_PATH, Error
 from ._synth import METHODS, Plan, methods, synth
 from ._io import models, read, version, write
 from ._analysis import acf, check_model, coeffs, hist, krige, moments, nonlin, psd, shape, variogram
-from ._krige import CondSim, condsim, sample
+from ._krige import CondSim, condsim
+from ._sample import sample
 from ._krige_flavours import Krige, fit  # Krige with block=, transform=, indicator=; fit with variogram=
 from ._ensemble import ensemble_acf, ensemble_hist, ensemble_psd
 

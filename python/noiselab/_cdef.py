@@ -568,6 +568,7 @@ typedef struct {
 int nl_krige_local_cv(const nl_krige_local *k, double *pred, double *var, nl_krige_cv_summary *s);
 int nl_krige_local_cv_folds(const nl_krige_local *k, const long *fold, double *pred, double *var,
                             nl_krige_cv_summary *s);
+void nl_krige_draw_folds(uint64_t seed, size_t n, size_t K, long *fold);
 
 /* analysis/krige_flavours.h */
 typedef struct {

@@ -78,6 +78,22 @@ def _shape(shape, dim):
     return tuple(as_int("shape", s, 1, (1 << 63) - 1, want) for s in items)
 
 
+def _covariates(name, cov, n, p=None):
+    """An (n, p) float64 array of finite covariates (a vector: p = 1)."""
+    try:
+        c = np.asarray(cov, dtype=np.float64)
+    except (TypeError, ValueError):
+        refuse(name, "an array of numbers", cov)
+    if c.ndim == 1:
+        c = c.reshape(-1, 1)
+    want = "an array of %d rows and %s columns" % (n, p if p else "at least 1")
+    if c.ndim != 2 or c.shape[0] != n or c.shape[1] == 0 or (p and c.shape[1] != p):
+        raise Error("%s: expected %s, got shape %s" % (name, want, c.shape))
+    if not np.all(np.isfinite(c)):
+        raise Error("%s: expected finite numbers, got %r" % (name, c[~np.isfinite(c)][0]))
+    return np.ascontiguousarray(c)
+
+
 def _grid_spacing(lo, hi, shape):
     """Spacing per axis, x first: (hi - lo) / n, as the CLI's."""
     n = shape[::-1]
@@ -99,6 +115,9 @@ class Krige:
     radius  only the data within this distance (gstat's maxdist; --radius).
     drift   "constant", "linear" or "quadratic": universal kriging with a
             polynomial drift in the coordinates (--drift; not with mean).
+    covariates  (n, p) external drift: p covariates of each datum after the
+            drift's terms (--drift NAME,...: gstat's z ~ c1 + ...); then
+            predict and grid take the locations' covariates too.
     strict  refuse a singular system instead of solving it by the
             pseudo-inverse (global kriging only: no nmax, radius or drift).
 
@@ -119,11 +138,17 @@ class Krige:
     the known mean or NaN with a local plan).
     """
 
-    def __init__(self, points, values, acf, *, mean=None, nmax=None, radius=None, drift=None, strict=False):
+    def __init__(self, points, values, acf, *, mean=None, nmax=None, radius=None, drift=None, strict=False,
+                 covariates=None):
         p = as_coords("points", points)
         v = as_values("values", values, p.shape[0])
         self._p, self._v = p, v
         self.n, self.dim = p.shape
+        self._cov = None if covariates is None else _covariates("covariates", covariates, self.n)
+        self.ncov = 0 if self._cov is None else self._cov.shape[1]
+        if self.ncov and mean is not None:
+            raise Error("covariates: expected no known mean with an external drift (universal kriging), got mean=%r"
+                        % (mean,))
         self._mean = None if mean is None else as_float("mean", mean)
         self.nmax = None if nmax is None else as_int("nmax", nmax, 1, (1 << 63) - 1)
         self.radius = None if radius is None else as_positive("radius", radius)
@@ -131,14 +156,14 @@ class Krige:
         self.strict = as_bool("strict", strict)
         if self.drift not in (None, "constant") and self._mean is not None:
             raise Error("mean: expected no drift with a known mean, got mean=%r and drift=%r" % (mean, drift))
-        self.local = nmax is not None or radius is not None or drift is not None
+        self.local = nmax is not None or radius is not None or drift is not None or self.ncov > 0
         if self.local and self.strict:
             raise Error("strict: applies to global kriging (no nmax, radius or drift), got strict=True")
         self._acf = acf
         self._m = Model(acf, "acf")
         self.model = self._m.spec
         self._reentrant = bool(lib.nl_model_is_reentrant(self._m.ptr))
-        self._plan = self._local = self._cv = None
+        self._plan = self._local = self._cv = self._missing = None
         if self.local:
             self._local = self._local_plan(self.nmax or 0, self.radius or 0.0)
         else:
@@ -158,12 +183,15 @@ class Krige:
         lib.nl_krige_plan_info(self._plan, info)
         self._info = (info.rcond, bool(info.pseudo_inverse), info.mean)
 
-    def _local_plan(self, nmax, radius, pts=None, val=None):
+    def _local_plan(self, nmax, radius, pts=None, val=None, cov=None, missing=0):
         o = ffi.new("nl_krige_local_options *")
-        o.nmax, o.radius = nmax, radius
+        o.nmax, o.radius, o.missing = nmax, radius, missing
         o.drift = _DRIFTS.index(self.drift or "constant")
         if self._mean is not None:
             o.drift, o.mean = lib.NL_DRIFT_NONE, self._mean
+        cov = self._cov if cov is None and pts is None else cov
+        if self.ncov:
+            o.ncov, o.cov = self.ncov, _dptr(cov)
         pts = self._p if pts is None else pts
         val = self._v if val is None else val
         out = ffi.new("nl_krige_local **")
@@ -254,13 +282,32 @@ class Krige:
         s = self._call(lib.nl_krige_local_eval, self._local, 1, _dptr(xs), e, v)
         return s, e[0], v[0]
 
-    def predict(self, points, variance=True):
+    def _with_cov(self, x, cov, variance):
+        """The external drift's estimates at x with the locations' covariates
+        (nl_krige_local_eval_at; NaN where the neighbourhood is too small)."""
+        est = np.full(x.shape[0], np.nan)
+        var = np.full(x.shape[0], np.nan) if variance else None
+        if x.shape[0]:
+            k = self._missing if self._missing is not None else self._local_plan(self.nmax or 0, self.radius or 0.0,
+                                                                                  missing=1)
+            self._missing = k
+            st = self._call(lib.nl_krige_local_eval_at, k, x.shape[0], _dptr(x), _dptr(cov), _dptr(est),
+                            _dptr(var) if variance else ffi.NULL)
+            if st and not (st == 1 and _EMPTY in ffi.string(lib.nl_errmsg()).decode("utf-8", "replace")):
+                check(st)
+        return (est, var) if variance else est
+
+    def predict(self, points, variance=True, covariates=None):
         """Estimates at points ((m, d) coordinates, x first): (estimate,
         variance) as float64 arrays of m values, or the estimates alone with
-        variance=False; NaN where the neighbourhood holds too few data."""
+        variance=False; NaN where the neighbourhood holds too few data.
+        covariates: (m, p), the points' covariates (a Krige with an external
+        drift needs them; as krige --at with --drift NAME)."""
         x = as_coords("points", points, self.dim, least=0)
         variance = as_bool("variance", variance)
         m = x.shape[0]
+        if self.ncov or covariates is not None:
+            return self._with_cov(x, self._loc_cov(covariates, m), variance)
         est = np.full(m, np.nan)
         var = np.full(m, np.nan) if variance else None
         if m and self._plan is not None:
@@ -272,17 +319,35 @@ class Krige:
                 self._holes(st, est, var, lambda t: "point %d" % (t + 1), lambda t: self._at(x[t]))
         return (est, var) if variance else est
 
-    def grid(self, extent, shape, variance=True):
+    def grid(self, extent, shape, variance=True, covariates=None):
         """Estimates on the cell centres of a grid, as ``noiselab krige
         --grid --extent``: sample i of axis a at lo + (i + 0.5)(hi - lo)/n.
         extent: (lo, hi) per axis, x first ((xlo, xhi), (ylo, yhi)), or the
         CLI's "a:b,c:d"; shape: numpy order, (ny, nx) (x last; --grid
         nx x ny).  Returns (estimate, variance) arrays of that shape, or the
         estimates alone with variance=False; NaN where the neighbourhood
-        holds too few data."""
+        holds too few data.  covariates: (p,) + shape, the cells'
+        covariates (a Krige with an external drift needs them; as krige
+        --covariate NAME=FIELD)."""
         lo, hi = _extent(extent, self.dim)
         shape = _shape(shape, self.dim)
         variance = as_bool("variance", variance)
+        if self.ncov or covariates is not None:
+            n = shape[::-1]
+            if covariates is not None:  # (p,) + shape, or shape for one covariate: cells x fastest
+                c = np.asarray(covariates, dtype=np.float64)
+                if c.shape == shape:
+                    c = c[None]
+                if c.shape != (self.ncov,) + shape:
+                    raise Error("covariates: expected an array of shape %s, the Krige's %d covariates on the grid, "
+                                "got %s" % ((self.ncov,) + shape, self.ncov, c.shape))
+                covariates = c.reshape(self.ncov, -1).T
+            c = self._loc_cov(covariates, int(np.prod(shape)))
+            axes = [lo[a] + (np.arange(n[a]) + 0.5) * ((hi[a] - lo[a]) / n[a]) for a in range(self.dim)]
+            g = np.meshgrid(*axes[::-1], indexing="ij")
+            x = np.ascontiguousarray(np.column_stack([g[self.dim - 1 - a].ravel() for a in range(self.dim)]))
+            r = self._with_cov(x, c, variance)
+            return (r[0].reshape(shape), r[1].reshape(shape)) if variance else r.reshape(shape)
         for a in range(self.dim):  # the grid and the data span finite distances (the CLI's check)
             c = self._p[:, a]
             l, h = min(lo[a], float(c.min())), max(hi[a], float(c.max()))
@@ -315,7 +380,7 @@ class Krige:
                             lambda t: "cell %d" % t, lambda t: self._at(cell(t)))
         return (arrays[0], arrays[1]) if variance else arrays[0]
 
-    def cross_validate(self):
+    def cross_validate(self, folds=None, seed=0):
         """Leave-one-out cross-validation, as ``noiselab krige
         --cross-validate`` (gstat's krige.cv): each datum predicted from its
         neighbourhood without it.  Returns a dict of arrays (n each):
@@ -324,7 +389,13 @@ class Krige:
         mean_zscore, var_zscore (divisor n - 1), rmse, points, kind (the
         CLI's --json).  A global plan cross-validates with every datum (at
         most 2000).  Data whose neighbourhood without them holds too few data
-        get NaN, and the summary is over the others."""
+        get NaN, and the summary is over the others.
+        folds: K (an integer, 2 <= K < n: K-fold, the folds drawn from seed
+        as ``--cross-validate K --seed S``) or n fold ids (any integers, as
+        ``--folds COLUMN``: gstat's krige.cv(nfold = K) with its folds):
+        each fold predicted from the other data alone."""
+        if folds is not None or self.ncov:
+            return self._folds(folds, seed)
         k = self._local
         if k is None:
             if self._cv is None:
@@ -354,6 +425,42 @@ class Krige:
                    var_error=((e * e).sum() - e.sum() ** 2 / m) / (m - 1) if m > 1 else float("nan"),
                    var_zscore=((z * z).sum() - z.sum() ** 2 / m) / (m - 1) if m > 1 else float("nan"))
         return out
+
+    def _folds(self, folds, seed):
+        """k-fold (or, with covariates and no folds, leave-one-out)
+        cross-validation through nl_krige_local_cv_folds."""
+        n = self.n
+        if folds is None:
+            f = np.arange(1, n + 1, dtype=np.int64)
+        elif np.ndim(folds) == 0:
+            K = as_int("folds", folds, 2, n, "an integer K, 2 <= K <= %d (the data), or %d fold ids" % (n, n))
+            seed = as_int("seed", seed, 0, (1 << 64) - 1)
+            f = np.empty(n, dtype=np.int64) if K < n else np.arange(1, n + 1, dtype=np.int64)
+            if K < n:
+                lib.nl_krige_draw_folds(seed, n, K, ffi.cast("long *", ffi.from_buffer(f)))
+        else:
+            f = np.asarray(folds)
+            if f.shape != (n,) or not np.all(np.isfinite(f.astype(float))) or np.any(f != np.round(f)):
+                refuse("folds", "an integer K or %d integer fold ids" % n, folds)
+            f = np.ascontiguousarray(f, dtype=np.int64)
+        k = self._local_plan(self.nmax or 0, self.radius or 0.0, missing=1)
+        pred, var = np.full(n, np.nan), np.full(n, np.nan)
+        s = ffi.new("nl_krige_cv_summary *")
+        check(self._call(lib.nl_krige_local_cv_folds, k, ffi.cast("long *", ffi.from_buffer(f)), _dptr(pred),
+                         _dptr(var), s))
+        err = self._v - pred
+        return dict(observed=self._v.copy(), predicted=pred, variance=var, error=err, zscore=err / np.sqrt(var),
+                    fold=f, points=n, kind=self.kind, mean_error=s.mean_error, var_error=s.var_error,
+                    mean_zscore=s.mean_z, var_zscore=s.var_z, rmse=s.rmse)
+
+    def _loc_cov(self, cov, m):
+        """The locations' covariates: (m, p) as the data's."""
+        if not self.ncov:
+            raise Error("covariates: expected none (this Krige has no external drift), got an array")
+        if cov is None:
+            raise Error("covariates: expected the locations' %d covariates (the Krige's external drift), got none"
+                        % self.ncov)
+        return _covariates("covariates", cov, m, self.ncov)
 
     def _left_out(self, t):
         """Datum t predicted by a plan of the other data (its
@@ -491,57 +598,3 @@ def condsim(points, values, acf, method, shape, extent, *, mean=None, nmax=None,
     k = Krige(points, values, acf, mean=mean, nmax=nmax)
     return k.simulate(method, shape, extent, seed=seed, realizations=realizations, at=at, hood=hood,
                       rekrige=rekrige, **options)
-
-
-_INTERP = ("nearest", "bilinear")  # NL_INTERP_* by index, as --interpolation
-
-
-def sample(field, points=None, *, spacing=1.0, origin=None, extent=None, interpolation="bilinear", random=None,
-           seed=1):
-    """A field's values at points, as ``noiselab sample``: the nearest
-    sample's value, or multilinear between the 2^dim samples around a point
-    (interpolation="bilinear", the default).
-
-    field    1D, 2D (ny, nx) or 3D array.
-    points   (n, d) coordinates, x first, within the samples' span (the
-             first outside is refused), or
-    random   N points drawn uniformly within the span from `seed` (default 1,
-             as the CLI's; the CLI prints them to 10 digits, these are not
-             rounded).
-    Coordinates: sample i of an axis at (origin + i) h (spacing h, one value
-    or one per axis in numpy order; origin in samples, x first, as
-    noiselab.origin), or, with extent ((lo, hi) per axis, x first, or
-    "a:b,c:d"; a field of :meth:`Krige.grid` or :class:`CondSim`), at the
-    cell centres lo + (i + 0.5)(hi - lo)/n.
-    Returns the n values or, with random, (points, values)."""
-    interp = _INTERP.index(as_choice("interpolation", interpolation, _INTERP))
-    a = np.asarray(field) if isinstance(field, np.ndarray) else field
-    fv0 = FieldView(a, 1.0, "field")
-    dim = fv0.array.ndim
-    if extent is not None and origin is not None:
-        raise Error("extent: expected extent or origin, not both")
-    if extent is not None:
-        lo, hi = _extent(extent, dim)
-        hx = _grid_spacing(lo, hi, fv0.array.shape)
-        x0 = [lo[d] + 0.5 * hx[d] for d in range(dim)]
-        spacing = hx[::-1]
-    fv = FieldView(fv0.array, spacing, "field")
-    if extent is None:
-        o = [0] * dim if origin is None else origin
-        o = [o] if np.ndim(o) == 0 else list(o)
-        if len(o) != dim:
-            refuse("origin", "%d numbers (x first)" % dim, origin)
-        x0 = [as_float("origin", o[d]) * fv.f.h[d] for d in range(dim)]
-    x0c = ffi.new("double[3]", x0 + [0.0] * (3 - dim))
-    if (points is None) == (random is None):
-        raise Error("sample: expected exactly one of points or random")
-    if random is not None:
-        n = as_int("random", random, 1, (1 << 40))
-        pts = np.empty((n, dim))
-        lib.nl_field_random_points(fv.f, x0c, as_int("seed", seed, 0, (1 << 64) - 1), n, _dptr(pts))
-    else:
-        pts = as_coords("points", points, dim, least=0)
-    vals = np.empty(pts.shape[0])
-    if pts.shape[0]:
-        check(lib.nl_field_sample(fv.f, x0c, interp, pts.shape[0], _dptr(pts), _dptr(vals)))
-    return (pts, vals) if random is not None else vals

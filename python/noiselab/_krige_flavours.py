@@ -108,7 +108,7 @@ class Krige(_krige.Krige):
     None), thresholds, models (the specs, one per threshold)."""
 
     def __init__(self, points, values, acf, *, mean=None, nmax=None, radius=None, drift=None, strict=False,
-                 block=None, block_points=None, transform=None, indicator=None):
+                 covariates=None, block=None, block_points=None, transform=None, indicator=None):
         p = as_coords("points", points)
         v = as_values("values", values, p.shape[0])
         self._b = self._lam = self._thr = self._y = None
@@ -143,7 +143,11 @@ class Krige(_krige.Krige):
         self._flavour = self._b is not None or self._lam is not None or self._thr is not None
         if self._flavour and strict:
             raise Error("strict: applies to global kriging (no block, transform or indicator), got strict=True")
-        super().__init__(p, v, acfs[0], mean=mean, nmax=nmax, radius=radius, drift=drift, strict=strict)
+        if self._flavour and covariates is not None:
+            raise Error("covariates: expected no external drift with block, transform or indicator kriging (as the "
+                        "CLI), got covariates")
+        super().__init__(p, v, acfs[0], mean=mean, nmax=nmax, radius=radius, drift=drift, strict=strict,
+                         covariates=covariates)
         if self._thr is not None:
             self._ms = [self._m] + [Model(s, "acf") for s in acfs[1:]]
             self.models = [m.spec for m in self._ms]
@@ -161,10 +165,10 @@ class Krige(_krige.Krige):
         self.local = True
         self._local = self._local_plan(0, 0.0)  # every datum in every neighbourhood
 
-    def _local_plan(self, nmax, radius, pts=None, val=None):
+    def _local_plan(self, nmax, radius, pts=None, val=None, **kw):
         if val is None and self._y is not None:
             val = self._y  # trans-Gaussian: the plan of the transforms
-        return super()._local_plan(nmax, radius, pts, val)
+        return super()._local_plan(nmax, radius, pts, val, **kw)
 
     def _options(self):
         o = ffi.new("nl_krige_local_options *")
@@ -234,12 +238,14 @@ class Krige(_krige.Krige):
                 raise Error(_msg() + " (%s)" % where(t), int(s))
         return cdf, total
 
-    def predict(self, points, variance=None):
+    def predict(self, points, variance=None, covariates=None):
         """Estimates at points ((m, d), x first): see Krige.predict; with
         indicator (probabilities (m, K), corrected locations), and variance
         refused."""
         if not self._flavour:
-            return super().predict(points, True if variance is None else variance)
+            return super().predict(points, True if variance is None else variance, covariates)
+        if covariates is not None:
+            raise Error("covariates: expected none with block, transform or indicator kriging, got an array")
         x = as_coords("points", points, self.dim, least=0)
         if self._thr is not None:
             if variance is not None:
@@ -249,11 +255,13 @@ class Krige(_krige.Krige):
         est, var = self._eval(x, variance, lambda t: "point %d" % (t + 1))
         return (est, var) if variance else est
 
-    def grid(self, extent, shape, variance=None):
+    def grid(self, extent, shape, variance=None, covariates=None):
         """Estimates at the cell centres of a grid: see Krige.grid; with
         indicator (probabilities (K,) + shape, corrected cells)."""
         if not self._flavour:
-            return super().grid(extent, shape, True if variance is None else variance)
+            return super().grid(extent, shape, True if variance is None else variance, covariates)
+        if covariates is not None:
+            raise Error("covariates: expected none with block, transform or indicator kriging, got an array")
         lo, hi = _extent(extent, self.dim)
         shape = _shape(shape, self.dim)
         for a in range(self.dim):  # the grid and the data span finite distances (the CLI's check)
@@ -279,13 +287,16 @@ class Krige(_krige.Krige):
         est, var = self._eval(x, variance, where)
         return (est.reshape(shape), var.reshape(shape)) if variance else est.reshape(shape)
 
-    def cross_validate(self):
+    def cross_validate(self, folds=None, seed=0):
         """Leave-one-out cross-validation: see Krige.cross_validate; the
         trans-Gaussian in the data's units (nl_krige_tg_cv), the indicator's
         probabilities with each threshold's Brier score (as the CLI's
         --json); block refused."""
         if not self._flavour:
-            return super().cross_validate()
+            return super().cross_validate(folds, seed)
+        if folds is not None:
+            raise Error("folds: expected leave-one-out with block, transform or indicator kriging (as the CLI), got "
+                        "folds=%r" % (folds,))
         if self._b is not None:
             raise Error("block: expected no block with cross_validate (leave-one-out predicts the data points, not "
                         "blocks), got block=%r" % (self.block,))
