@@ -162,8 +162,8 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # Unit, error-path, CLI and statistical tests (Criterion). Each test is a
 # fresh process, so measured FFTW plans would be paid for again and again:
 # tests plan with FFTW_ESTIMATE, except the one comparing the two planners.
-# tests/doc/run.sh runs every command of README.md, docs/tour.md, docs/geostatistics.md, docs/scale-out.md
-# docs/validating.md and docs/expressions.md;
+# tests/doc/run.sh runs every command of README.md, docs/tour.md, docs/geostatistics.md,
+# docs/meuse.md (which needs R with sp and gstat), docs/scale-out.md, docs/validating.md and docs/expressions.md;
 # tests/mpi/run.sh the distributed tests under mpirun -np 1..4; python/tests the Python package (pytest).
 # test-api checks the installed headers and the libraries' exports.
 # Then tools/test-install.sh installs into a scratch DESTDIR and builds the
