@@ -55,23 +55,28 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "-o: expected a file name ending in .tsv, got \"%s\"", a->out);
 }
 
-/* Coordinate of sample 0 per axis: the recorded origin (in samples) times the spacing. */
-static void first_sample(const opts_t *a, const nl_field *f, const nl_meta *meta, double *x0)
+/* Coordinate of sample 0 per axis: the recorded origin (in samples) times
+ * the spacing; for a map made on an extent, its first cell centre, the
+ * spacing then being the extent's width over the samples (whatever spacing
+ * the file records). */
+static void first_sample(const opts_t *a, nl_field *f, const nl_meta *meta, double *x0)
 {
-    const char *p = meta->origin, *e = strstr(meta->method, " conditioned:");
+    const char *p = meta->origin, *e = strstr(meta->method, "extent=");
     for (int d = 0; d < 3; d++)
         x0[d] = 0;
-    if (!e && strncmp(meta->method, "krige:", 6) == 0) /* a kriged map records its grid's extent too */
-        e = meta->method;
-    if (e && (e = strstr(e, "extent="))) { /* made on an extent a:b (synth --condition, krige): cell centres */
+    if (e) { /* made on an extent a:b (synth --condition and its ensemble maps, krige): cell centres */
         e += 7;
         for (int d = 0; d < f->dim; d++) {
             char *end;
-            double lo = strtod(e, &end);
+            const char *b;
+            double lo = strtod(e, &end), hi;
             if (end == e || *end != ':' || !isfinite(lo))
                 cli_die(2, "sample: %s records an extent \"%s\"; expected a:b per axis", a->field, e);
+            hi = strtod(b = end + 1, &end);
+            if (end == b || !(hi > lo) || !isfinite(hi - lo))
+                cli_die(2, "sample: %s records an extent \"%s\"; expected a:b per axis with a < b", a->field, e);
+            f->h[d] = (hi - lo) / (double)f->n[d];
             x0[d] = lo + 0.5 * f->h[d];
-            strtod(end + 1, &end);
             e = end + (*end == ',');
         }
         return;

@@ -208,9 +208,16 @@ static void flavour_meta(const cli_krige_fl *f, const cli_krige_fl_ctx *c, size_
     if (f->block)
         snprintf(blk, sizeof blk, ",block=%s,block-points=%s%d", f->block, f->block_points ? "" : "gauss",
                  f->block_points ? f->block_points : 4);
-    snprintf(meta->method, sizeof meta->method, "krige:%s%s%s,nmax=%zu,radius=%g,points=%zu",
-             f->indicator ? "indicator=" : f->transform ? "transform=" : "block",
-             f->indicator ? f->indicator : f->transform ? f->transform : "", blk, c->nmax, c->radius, n);
+    char ext[200];
+    size_t at = 0;
+    ext[0] = 0;
+    for (int d = 0; d < c->gdim && at < sizeof ext; d++) /* the grid's extent: sample reads the map at it */
+        at += (size_t)snprintf(ext + at, sizeof ext - at, "%s%.17g:%.17g", d ? "," : "", c->lo[d], c->hi[d]);
+    if (snprintf(meta->method, sizeof meta->method, "krige:%s%s%s,nmax=%zu,radius=%g,points=%zu,extent=%s",
+                 f->indicator ? "indicator=" : f->transform ? "transform=" : "block",
+                 f->indicator ? f->indicator : f->transform ? f->transform : "", blk, c->nmax, c->radius, n,
+                 ext) >= (int)sizeof meta->method)
+        cli_die(2, "--extent: too long to record with the map; expected shorter numbers");
 }
 
 /* Cross-validation's table: coordinates, observed, then ncol named columns. */

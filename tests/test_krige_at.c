@@ -269,18 +269,19 @@ Test(krige_at, kfold_equals_gstat_krige_cv)
 }
 
 /* A kriged map records its extent: noiselab sample reads it at the cell
- * centres a + (i + 0.5) h, so sampling the map at some centres gives the
- * estimates of --at there (float32 in EXR: 1e-6 relative). */
+ * centres a + (i + 0.5) h, h the extent's width over the cells (here 2,
+ * whatever spacing the file records), so sampling the map at some centres
+ * gives the estimates of --at there (float32 in EXR: 1e-6 relative). */
 Test(krige_at, sample_reads_map_at_its_extent)
 {
-    static const char data[] = "x\ty\tvalue\n10.2\t20.1\t1\n13.7\t24.2\t2\n11.1\t27.9\t0.5\n18.3\t21.4\t1.5\n";
-    /* centres of cells (1, 2), (6, 0), (3, 7) of an 8 x 8 grid on 10:18, 20:28 */
-    static const char at[] = "x\ty\n11.5\t22.5\n16.5\t20.5\n13.5\t27.5\n";
+    static const char data[] = "x\ty\tvalue\n10.4\t20.2\t1\n17.4\t28.4\t2\n12.2\t35.8\t0.5\n26\t22.8\t1.5\n";
+    /* centres of cells (1, 2), (6, 0), (3, 7) of an 8 x 8 grid on 10:26, 20:36 */
+    static const char at[] = "x\ty\n13\t25\n23\t21\n17\t35\n";
     char out[4096], err[1024];
     double e[3], v[3], s[3], t[3];
     scratch_file("d.tsv", data);
     scratch_file("c.tsv", at);
-    cr_assert_eq(run_noiselab("krige --data d.tsv --acf markov:scale=3 --grid 8x8 --extent 10:18,20:28 -o map.exr "
+    cr_assert_eq(run_noiselab("krige --data d.tsv --acf markov:scale=3 --grid 8x8 --extent 10:26,20:36 -o map.exr "
                               "--nmax 4", out, sizeof out, err, sizeof err), 0, "%s", err);
     cr_assert_eq(run_noiselab("sample map.exr --points c.tsv --interpolation nearest -o s.tsv", out, sizeof out, err,
                               sizeof err), 0, "%s", err);
