@@ -187,6 +187,9 @@ void cli_synth_cond_apply(const cli_synth_cond *c, const cli_synth_job *job, nl_
     snprintf(r->method + l, sizeof r->method - l, " conditioned:data=%s,points=%zu,kriging=%s,extent=%s,"
              "nmax=%zu,realization=%zu/%zu", c->data, c->info.n, c->simple ? "simple" : "ordinary", c->extent, c->nmax,
              k + 1, c->K);
+    l = strlen(r->method);
+    if (c->at) /* the points are drawn with the data: the grid depends on them */
+        snprintf(r->method + l, sizeof r->method - l, ",at=%s", c->at);
 }
 
 void cli_synth_cond_write(const cli_synth_cond *c, const char *path, const char *tmp, const nl_field *f,
