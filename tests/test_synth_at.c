@@ -2,8 +2,10 @@
  * realizations at the points of a table, the table's rows followed by the
  * columns sim1..simK (cli/synth_condition.c, analysis/condsim.h). */
 #include "util.h"
+#include "../analysis/condsim.h"
 #include "../core/io_table.h"
 #include "../core/nl_error.h"
+#include "../synth/circulant.h"
 
 #include <criterion/criterion.h>
 #include <gsl/gsl_cdf.h>
@@ -67,6 +69,39 @@ Test(synth_at, points_on_cell_centres_are_the_grids_values)
         nl_table_free(g);
     }
     nl_table_free(t);
+}
+
+/* The same, bit for bit, in the library call behind it: a point on a cell
+ * centre reads U at that sample (within NL_CONDSIM_ON_SAMPLE spacings) and
+ * its kriging weights are computed as the cell's, so Z there is the grid's
+ * double exactly; global and local (nmax 3) kriging, data between samples. */
+Test(synth_at, points_on_cell_centres_are_the_grids_values_bit_for_bit)
+{
+    nl_model *m = test_model("markov:scale=0.8");
+    const size_t g[2] = {20, 16};
+    const double h[2] = {0.5, 0.5}, lo[2] = {0, 0};
+    const double pts[] = {1.3, 2.2, 4.75, 6.1, 7.9, 1.05, 3.3, 7.6, 6.2, 4.4}, val[] = {0.4, -1.1, 0.9, 1.6, -0.2};
+    const double at[] = {0.25, 0.25, 5.25, 4.75, 9.75, 7.75, 1.25, 2.25, 1.3, 2.2};
+    const size_t cell[] = {0, 9 * 20 + 10, 15 * 20 + 19, 4 * 20 + 2};
+    nl_field *f = nl_field_alloc(2, g, h, NULL);
+    nl_synth_circulant_plan *cp;
+    cr_assert_eq(nl_synth_circulant_plan_alloc(m, 2, g, h, 0, 16, &cp), 0, "%s", nl_errmsg());
+    for (size_t nmax = 0; nmax <= 3; nmax += 3) {
+        nl_condsim_plan *p;
+        nl_condsim_options o = {.nmax = nmax};
+        cr_assert_eq(nl_condsim_plan_alloc(m, 5, pts, val, lo, f, &o, 5, at, &p), 0, "%s", nl_errmsg());
+        for (uint64_t s = 1; s <= 3; s++) {
+            double z[5];
+            cr_assert_eq(nl_synth_circulant_execute(cp, s, f), 0);
+            cr_assert_eq(nl_condsim_execute(p, f, s, z), 0, "%s", nl_errmsg());
+            for (int j = 0; j < 4; j++)
+                cr_expect(z[j] == f->data[cell[j]], "nmax %zu, seed %d, point %d: %.17g, the cell %.17g", nmax,
+                          (int)s, j + 1, z[j], f->data[cell[j]]);
+            cr_expect(fabs(z[4] - val[0]) < 1e-12, "a point on datum 1: %.17g, the datum %.17g", z[4], val[0]);
+        }
+        nl_condsim_plan_free(p);
+    }
+    nl_synth_circulant_plan_free(cp), nl_field_free(f), nl_model_free(m);
 }
 
 /* Property: over K realizations the values at a point x are Gaussian with
