@@ -29,14 +29,16 @@ K=1000
 "$nl" synth circulant --acf matern:nu=1.5,scale=6 --size 64x64 --seed 3 -o "$d/at-truth.exr" 2>/dev/null
 "$nl" sample "$d/at-truth.exr" --random 150 --seed 5 | awk 'BEGIN { print "x\ty\tvalue" }
     $1 ~ /^[-0-9.]/ { print $1 + 0.5 "\t" $2 + 0.5 "\t" $3 }' > "$d/at-data.tsv"
-awk 'BEGIN { srand(17); print "id\tx\ty"; for (j = 0; j < 100; j++) print j + 1 "\t" 1 + int(63 * rand()) "\t" 1 + int(63 * rand()) }' \
+awk 'BEGIN { srand(17); print "id\tx\ty"
+            for (j = 0; j < 100; j++) print j + 1 "\t" 1 + int(63 * rand()) "\t" 1 + int(63 * rand()) }' \
     > "$d/at-points.tsv"
 # the bands: Bonferroni over the 100 points, 1e-3 split in 4 (two tests, two tails)
 bands=$(python3 -c "
 from scipy.stats import norm, chi2
 a = 1e-3 / 400
 print(norm.isf(a), chi2.ppf(a, $K) / $K, chi2.isf(a, $K) / $K)" 2>/dev/null) ||
-    bands=$(Rscript -e "a <- 1e-3 / 400; cat(qnorm(a, lower.tail = FALSE), qchisq(a, $K) / $K, qchisq(a, $K, lower.tail = FALSE) / $K)")
+    bands=$(Rscript -e "a <- 1e-3 / 400; cat(qnorm(a, lower.tail = FALSE), qchisq(a, $K) / $K,
+                        qchisq(a, $K, lower.tail = FALSE) / $K)")
 fail=0
 for model in markov:scale=6 matern:nu=1.5,scale=6; do
     for nmax in 0 40; do
