@@ -267,7 +267,8 @@ static const struct option *options_table(void)
         {"realizations", required_argument, 0, 'k'}, {"mean", required_argument, 0, 'M'},
         {"interpolation", required_argument, 0, 'Q'}, {"ensemble-mean", required_argument, 0, 'g'},
         {"ensemble-variance", required_argument, 0, 'J'}, {"nmax", required_argument, 0, 'q'},
-        {"precision", required_argument, 0, 'G'}};
+        {"precision", required_argument, 0, 'G'}, {"at", required_argument, 0, 'T'},
+        {"grid-out", required_argument, 0, 'W'}};
     static struct option opts[sizeof common / sizeof *common + CLI_MAX_MOPTS + 1];
     size_t n = sizeof common / sizeof *common;
     collect_mopts();
@@ -331,7 +332,7 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'O': g->origin = optarg; break;
         case 'F': g->from = optarg; break;
         case 'G': g->precision = optarg; break;
-        case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q':
+        case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q': case 'T': case 'W':
             cli_synth_cond_option(&g->cond, c, optarg); break;
         case 'h': cli_synth_print_help(); return 1;
         default:
@@ -485,7 +486,8 @@ static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
     job->dim = cli_parse_size("--size", g->size, job->n, 2);
     if (g->spacing)
         cli_parse_spacing("--spacing", g->spacing, job->dim, job->h);
-    if (!cli_has_ext(g->out, ".exr") && !cli_has_ext(g->out, ".tsv") && !cli_is_h5(g->out))
+    int at = cli_synth_cond_check_out(&g->cond, g->out, job->dim); /* -o the table of --at */
+    if (!at && !cli_has_ext(g->out, ".exr") && !cli_has_ext(g->out, ".tsv") && !cli_is_h5(g->out))
         cli_die(2, "-o: expected a file name ending in .exr, .tsv or .h5, got \"%s\"", g->out);
     if (g->precision && strcmp(g->precision, "single") && strcmp(g->precision, "double"))
         cli_die(2, "--precision: expected single or double, got \"%s\"", g->precision);
@@ -493,7 +495,7 @@ static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
     if (cli_h5_double && !cli_is_h5(g->out))
         cli_die(2, "--precision double: EXR stores float32 and TSV ten digits; expected an .h5 output, got \"%s\"",
                 g->out);
-    if (cli_has_ext(g->out, ".tsv") && job->dim != 1)
+    if (!at && cli_has_ext(g->out, ".tsv") && job->dim != 1)
         cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", job->dim, g->out);
     if (g->preview && job->dim == 1)
         cli_die(2, "--preview: expected a 2D or 3D field, got --size \"%s\"", g->size);
@@ -519,7 +521,8 @@ static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_
 /* Nothing non-finite is written, and an EXR (float32) holds every sample. */
 static void check_output(const cli_synth_job *job, const cli_synth_args *g, const nl_field *f)
 {
-    int exr = cli_has_ext(g->out, ".exr") || (cli_is_h5(g->out) && !cli_h5_double);
+    const char *out = cli_synth_cond_grid(&g->cond, g->out);
+    int exr = out && (cli_has_ext(out, ".exr") || (cli_is_h5(out) && !cli_h5_double));
     size_t k;
     if (nl_field_check_finite(f, exr ? FLT_MAX : INFINITY, &k))
         cli_die(2, "synth %s%s%s: %s%s; %s not written", job->method, job->m ? " " : "",
@@ -532,7 +535,7 @@ static void realization(cli_synth_job *job, cli_synth_args *g, nl_field *f,
                         cli_synth_result *res, size_t k, const char *const *tmps)
 {
     char obuf[4096], pbuf[4096];
-    const char *out = cli_synth_cond_name(&g->cond, g->out, k, obuf, sizeof obuf);
+    const char *out = cli_synth_cond_name(&g->cond, cli_synth_cond_grid(&g->cond, g->out), k, obuf, sizeof obuf);
     const char *prev = cli_synth_cond_name(&g->cond, g->preview, k, pbuf, sizeof pbuf);
     const char *tmp = tmps[0], *ptmp = tmps[1];
     nl_meta meta;
@@ -590,10 +593,11 @@ int cli_cmd_synth(int argc, char **argv)
     const char **tmps = cli_malloc(2 * g.cond.K * sizeof *tmps);
     for (size_t k = 0; k < g.cond.K; k++) { /* every output can be written, before the work */
         char ob[4096], pb[4096];
-        tmps[2 * k] = cli_out_begin(cli_synth_cond_name(&g.cond, g.out, k, ob, sizeof ob));
+        const char *grid = cli_synth_cond_grid(&g.cond, g.out); /* -o, or --grid-out with --at */
+        tmps[2 * k] = cli_out_begin(cli_synth_cond_name(&g.cond, grid, k, ob, sizeof ob));
         tmps[2 * k + 1] = cli_out_begin(cli_synth_cond_name(&g.cond, g.preview, k, pb, sizeof pb));
     }
-    cli_synth_cond_begin(&g.cond);
+    cli_synth_cond_begin(&g.cond, g.out);
     f = cli_field_alloc(job.dim, job.n, job.h);
     uint64_t seed0 = job.seed;
     for (size_t k = 0; k < g.cond.K; k++) {

@@ -6,6 +6,7 @@
 #include "cli.h"
 #include "../analysis/condsim.h"
 #include "../analysis/ensemble.h"
+#include "../core/io_table.h"
 #include "../core/model.h"
 #include "../synth/circulant.h"
 #include "../synth/method.h"
@@ -58,7 +59,11 @@ int cli_synth_parse_neighborhood(const char *s);
 double cli_synth_parse_tol(const char *opt, const char *s, int *rule);
 
 /* --condition DATA.tsv --extent ... [--realizations K] [--mean M]
- * [--interpolation nearest|bilinear: deprecated, ignored] (cli/synth_condition.c). */
+ * [--interpolation nearest|bilinear: deprecated, ignored] [--at PTS.tsv
+ * [--grid-out GRID]] (cli/synth_condition.c).  With --at, -o is the table
+ * PTS.tsv with the realizations at its points as columns sim1..simK (as
+ * gstat's krige(..., newdata = points, nsim = K)); the grids are written
+ * only to --grid-out, named as -o is without --at. */
 typedef struct {
     const char *data, *extent;   /* --condition, --extent, or NULL */
     size_t K;                    /* --realizations (default 1) */
@@ -73,6 +78,12 @@ typedef struct {
     nl_welford *acc;             /* running mean and variance of the realizations */
     nl_condsim_plan *plan;       /* made by cli_synth_cond_prepare */
     nl_condsim_info info;        /* its figures */
+    const char *at, *grid_out;   /* --at, --grid-out, or NULL */
+    nl_table *table;             /* --at's table, as read */
+    size_t np;                   /* its rows */
+    double *at_pts;              /* their coordinates (np * dim, row-major) */
+    double *zat;                 /* realization k at point j: zat[k * np + j] */
+    const char *out, *ttmp;      /* with --at: -o and its temporary */
 } cli_synth_cond;
 
 /* Take option `opt` (the getopt code of one of the options above). */
@@ -80,11 +91,19 @@ void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg);
 /* After the size and model are known: check the options, set job->h from
  * the extent, read the data and make the plan (exit 2 on bad input). */
 void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int spacing);
-/* Begin the ensemble outputs (after the realizations' own). */
-void cli_synth_cond_begin(cli_synth_cond *c);
+/* Where the grids go: -o (out), or with --at --grid-out (NULL: nowhere). */
+const char *cli_synth_cond_grid(const cli_synth_cond *c, const char *out);
+/* With --at: -o (out) must be a .tsv, --grid-out an .exr (or a .tsv in
+ * 1D); exit 2 otherwise.  Returns 1 when it checked (--at given), else 0:
+ * the caller checks -o as the grid. */
+int cli_synth_cond_check_out(const cli_synth_cond *c, const char *out, int dim);
+/* Begin the ensemble outputs and, with --at, the table -o (out), after the
+ * realizations' own. */
+void cli_synth_cond_begin(cli_synth_cond *c, const char *out);
 /* Add realization k (from 0) to the ensemble statistics. */
 void cli_synth_cond_accumulate(cli_synth_cond *c, const nl_field *f, size_t k);
-/* Write the ensemble mean and variance (meta: the last realization's record). */
+/* Write the table of --at and the ensemble mean and variance (meta: the
+ * last realization's record). */
 void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta);
 /* The output name of realization k (path itself unless K > 1; buf holds it). */
 const char *cli_synth_cond_name(const cli_synth_cond *c, const char *path, size_t k, char *buf, size_t len);

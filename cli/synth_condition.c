@@ -1,5 +1,6 @@
 /* noiselab synth --condition: conditional simulation (analysis/condsim.h)
- * of the methods' unconditional fields, K realizations to K files. */
+ * of the methods' unconditional fields, K realizations to K files, or to K
+ * columns of a table with --at. */
 #include "synth.h"
 #include "../core/field_sample.h"
 #include "../core/io_points.h"
@@ -20,6 +21,8 @@ void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg)
     case 'g': c->emean = arg; break;
     case 'q': c->nmax = cli_parse_count("--nmax", arg, 1); break;
     case 'J': c->evar = arg; break;
+    case 'T': c->at = arg; break;
+    case 'W': c->grid_out = arg; break;
     case 'M': c->mean = cli_parse_double("--mean", arg), c->simple = 1; break;
     case 'Q': /* deprecated: U between samples is drawn given the grid */
         if (strcmp(arg, "nearest") && strcmp(arg, "bilinear"))
@@ -33,11 +36,14 @@ void cli_synth_cond_option(cli_synth_cond *c, int opt, const char *arg)
 static void check_given(const cli_synth_cond *c, const cli_synth_job *job, int from, int spacing)
 {
     if (!c->data) {
-        if (c->extent || c->given_K || c->simple || c->given_interp || c->emean || c->evar || c->nmax)
+        if (c->extent || c->given_K || c->simple || c->given_interp || c->emean || c->evar || c->nmax || c->at ||
+            c->grid_out)
             cli_die(2, "synth: --extent, --realizations, --mean, --interpolation, --ensemble-mean, "
-                    "--ensemble-variance and --nmax apply to --condition only");
+                    "--ensemble-variance, --nmax, --at and --grid-out apply to --condition only");
         return;
     }
+    if (c->grid_out && !c->at)
+        cli_die(2, "--grid-out: applies to --at (without --at, -o is the grid), got \"%s\"", c->grid_out);
     if (from)
         cli_die(2, "synth: --from FILE and --condition exclude each other (a conditional field regenerates with "
                 "its data: give the options again)");
@@ -78,6 +84,56 @@ static void parse_extent(cli_synth_cond *c, const cli_synth_job *job)
     }
 }
 
+const char *cli_synth_cond_grid(const cli_synth_cond *c, const char *out)
+{
+    return c->at ? c->grid_out : out;
+}
+
+int cli_synth_cond_check_out(const cli_synth_cond *c, const char *out, int dim)
+{
+    if (!c->at)
+        return 0;
+    if (!cli_has_ext(out, ".tsv"))
+        cli_die(2, "-o: with --at, expected the table's output, a file name ending in .tsv, got \"%s\" (the grids "
+                "go to --grid-out)", out);
+    const char *g = c->grid_out;
+    if (g && !cli_has_ext(g, ".exr") && !(dim == 1 && cli_has_ext(g, ".tsv")))
+        cli_die(2, "--grid-out: expected a file name ending in .exr%s, got \"%s\"", dim == 1 ? " or .tsv" : "", g);
+    return 1;
+}
+
+/* The --at table: its points, each inside the extent (exit 2 naming the
+ * first outside by its row), no column the output adds, and room for the K
+ * columns. */
+static void read_at(cli_synth_cond *c, const cli_synth_job *job)
+{
+    int st, dim;
+    if ((st = nl_table_read(c->at, &c->table)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--at: %s", nl_errmsg());
+    if ((st = nl_table_points(c->table, NULL, &dim, &c->at_pts, NULL)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "--at: %s", nl_errmsg());
+    if (dim != job->dim)
+        cli_die(2, "--at: %s has %d coordinates per point, the grid %d", c->at, dim, job->dim);
+    c->np = c->table->n;
+    for (size_t j = 0; j < c->np; j++)
+        for (int a = 0; a < dim; a++) {
+            double x = c->at_pts[j * (size_t)dim + (size_t)a], top = c->lo[a] + (double)job->n[a] * job->h[a];
+            if (!(x >= c->lo[a] && x <= top))
+                cli_die(2, "--at: %s: row %zu has %c = %.10g, outside --extent %s; expected points within the grid",
+                        c->at, j + 1, "xyz"[a], x, c->extent);
+        }
+    for (size_t k = 0; k < c->K; k++) {
+        char name[32];
+        snprintf(name, sizeof name, "sim%zu", k + 1);
+        if (nl_table_column(c->table, name) >= 0)
+            cli_die(2, "--at: %s has a column \"%s\", which the output adds; expected other names", c->at, name);
+    }
+    size_t shape[2] = {c->np, c->K};
+    if ((st = nl_size_check(2, shape, sizeof *c->zat, 1, NULL)))
+        cli_die(2, "--realizations: %zu realizations at the %zu points of --at: %s", c->K, c->np, nl_errmsg());
+    c->zat = cli_malloc(c->np * c->K * sizeof *c->zat);
+}
+
 void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int spacing)
 {
     nl_points *pt;
@@ -88,6 +144,8 @@ void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int
     parse_extent(c, job);
     for (int a = 0; a < job->dim; a++)
         job->h[a] = (c->hi[a] - c->lo[a]) / (double)job->n[a];
+    if (c->at)
+        read_at(c, job);
     if ((st = nl_points_read(c->data, &pt)))
         cli_die(nl_error_is_input(st) ? 2 : 1, "--condition: %s", nl_errmsg());
     if (pt->dim != job->dim) {
@@ -98,7 +156,7 @@ void cli_synth_cond_prepare(cli_synth_cond *c, cli_synth_job *job, int from, int
     nl_field grid = {.dim = job->dim, .n = {job->n[0], job->n[1], job->n[2]},
                      .h = {job->h[0], job->h[1], job->h[2]}};
     nl_condsim_options o = {.simple = c->simple, .mean = c->mean, .nmax = c->nmax};
-    st = nl_condsim_plan_alloc(job->m, pt->n, pt->pts, pt->val, c->lo, &grid, &o, 0, NULL, &c->plan);
+    st = nl_condsim_plan_alloc(job->m, pt->n, pt->pts, pt->val, c->lo, &grid, &o, c->np, c->at_pts, &c->plan);
     nl_points_free(pt);
     if (st)
         cli_die(nl_error_is_input(st) ? 2 : 1, "--condition: %s: %s", c->data, nl_errmsg());
@@ -123,17 +181,22 @@ void cli_synth_cond_apply(const cli_synth_cond *c, const cli_synth_job *job, nl_
 {
     if (!c->data)
         return;
-    cli_check(nl_condsim_execute(c->plan, f, job->seed, NULL));
+    cli_check(nl_condsim_execute(c->plan, f, job->seed, c->zat ? c->zat + k * c->np : NULL));
     size_t l = strlen(r->method);
     /* the space marks a field that --from cannot regenerate */
     snprintf(r->method + l, sizeof r->method - l, " conditioned:data=%s,points=%zu,kriging=%s,extent=%s,"
              "nmax=%zu,realization=%zu/%zu", c->data, c->info.n, c->simple ? "simple" : "ordinary", c->extent, c->nmax,
              k + 1, c->K);
+    l = strlen(r->method);
+    if (c->at) /* the points are drawn with the data: the grid depends on them */
+        snprintf(r->method + l, sizeof r->method - l, ",at=%s", c->at);
 }
 
 void cli_synth_cond_write(const cli_synth_cond *c, const char *path, const char *tmp, const nl_field *f,
                           const nl_meta *meta)
 {
+    if (!path)
+        return; /* --at without --grid-out */
     if (!c->data || !cli_has_ext(path, ".tsv")) {
         cli_write_field(path, tmp, f, meta);
         return;
@@ -157,6 +220,9 @@ void cli_synth_cond_report(const cli_synth_cond *c, json_t *o)
                                   (json_int_t)c->info.groups, "largest_group", (json_int_t)c->info.largest,
                                   "screening", c->info.screening, "max_move", c->info.max_move, "weights_kept",
                                   c->info.reuse, "realizations", (json_int_t)c->K));
+    if (c->at)
+        json_object_set_new(json_object_get(o, "condition"), "at",
+                            json_pack("{s:s,s:I,s:s}", "table", c->at, "points", (json_int_t)c->np, "output", c->out));
 }
 
 void cli_synth_cond_note(const cli_synth_cond *c)
@@ -171,8 +237,10 @@ void cli_synth_cond_note(const cli_synth_cond *c)
             c->info.n - c->info.on_samples, c->info.n, c->info.hood, c->info.screening);
 }
 
-void cli_synth_cond_begin(cli_synth_cond *c)
+void cli_synth_cond_begin(cli_synth_cond *c, const char *out)
 {
+    c->out = c->at ? out : NULL;
+    c->ttmp = cli_out_begin(c->out);
     c->etmp[0] = cli_out_begin(c->emean);
     c->etmp[1] = cli_out_begin(c->evar);
 }
@@ -188,10 +256,28 @@ void cli_synth_cond_accumulate(cli_synth_cond *c, const nl_field *f, size_t k)
     cli_check(nl_welford_add(c->acc, f));
 }
 
+/* The table of --at: its rows as read (as krige --at writes them), then
+ * the K realizations at its points, sim1..simK. */
+static void write_at(const cli_synth_cond *c)
+{
+    char (*buf)[32] = cli_malloc(c->K * sizeof *buf);
+    const char **names = cli_malloc(c->K * sizeof *names);
+    const double **cols = cli_malloc(c->K * sizeof *cols);
+    for (size_t k = 0; k < c->K; k++) {
+        snprintf(buf[k], sizeof buf[k], "sim%zu", k + 1);
+        names[k] = buf[k], cols[k] = c->zat + k * c->np;
+    }
+    cli_check(nl_table_write(c->ttmp, c->table, c->K, names, cols));
+    cli_out_commit(c->out);
+    free(buf), free(names), free(cols);
+}
+
 void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta)
 {
     nl_meta m = *meta;
     nl_field *var;
+    if (c->at)
+        write_at(c);
     if (!c->emean && !c->evar)
         return;
     cli_check(nl_welford_variance(c->acc, &var)); /* unbiased, divisor K - 1 */
@@ -213,4 +299,6 @@ void cli_synth_cond_free(cli_synth_cond *c)
 {
     nl_condsim_plan_free(c->plan);
     nl_welford_free(c->acc);
+    nl_table_free(c->table);
+    free(c->at_pts), free(c->zat);
 }
