@@ -171,7 +171,7 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2 --filter '!(*_slow)/*'
 	LIMIT=$(if $(findstring sanitize,$(OPT)),60,5) NOISELAB_FFTW=estimate sh tests/check/run.sh $(BIN)
-	NOISELAB_FFTW=estimate NOISELAB_SANITIZED=$(if $(findstring sanitize,$(OPT)),1,) sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
+	MPI_NPS="2 3" NOISELAB_FFTW=estimate NOISELAB_SANITIZED=$(if $(findstring sanitize,$(OPT)),1,) sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
 	NOISELAB_FFTW=estimate sh tests/par.sh "SHARD=0/2 sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite" \
 	    "SHARD=1/2 sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite"
 	NOISELAB_FFTW=estimate sh tests/par.sh "SHARD=0/2 sh tests/doc/run.sh $(BINDIR)" "SHARD=1/2 sh tests/doc/run.sh $(BINDIR)"
@@ -181,10 +181,12 @@ test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST
 	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) WISDOM_SIZES=64 sh tools/test-install.sh
 
 # The slowest Criterion tests (suites named *_slow: sweeps over every model
-# kind and plan, tens of seconds each), kept out of `make test`'s 10 minutes;
-# CI (.ci/run) runs them after it.
-test-slow: all $(BUILD)/tests/run
+# kind and plan, tens of seconds each) and the distributed tests on 1 and 4
+# processes (make test runs them on 2 and 3), kept out of `make test`'s 10
+# minutes; CI (.ci/run) runs them after it.
+test-slow: all $(BUILD)/tests/run $(MPITEST_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2 --filter '*_slow/*'
+	MPI_NPS="1 4" NOISELAB_FFTW=estimate sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
 .PHONY: test-slow
 
 # The installed API: every installed header compiles alone as C and as C++

@@ -85,6 +85,7 @@ extern "C" {
 #include "noiselab/analysis/check_intrinsic.h"
 #include "noiselab/analysis/nonlin.h"
 #include "noiselab/analysis/krige.h"
+#include "noiselab/analysis/krige_flavours.h"
 #include "noiselab/analysis/creases.h"
 #include "noiselab/analysis/aliasing.h"
 #include "noiselab/analysis/subdiv_exact.h"

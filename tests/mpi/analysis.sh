@@ -60,7 +60,7 @@ cmp_text() { # reference, candidate, label
 # Run one command on 1 process (no launcher) and under mpirun -np 1..4.
 check() { # args...
     if ! "$bin" "$@" >"$work/ref" 2>"$work/ref.err"; then say "one process: noiselab $*: $(cat "$work/ref.err")"; return; fi
-    for p in 1 2 3 4; do
+    for p in ${MPI_NPS:-1 2 3 4}; do
         if ! timeout 120 $MPIRUN -np $p "$bin" "$@" >"$work/out" 2>"$work/err"; then
             say "-np $p noiselab $*: $(cat "$work/err")"; continue
         fi

@@ -2,7 +2,9 @@
 # The distributed tests: every program build/tests/mpi/NAME (from
 # tests/mpi/NAME.c) under mpirun -np 1, 2, 3 and 4, then every
 # tests/mpi/*.sh, which compare the command line's distributed runs with
-# one-process ones.  Usage: run.sh BINDIR TESTBINDIR
+# one-process ones.  MPI_NPS: the process counts (default "1 2 3 4"; make
+# test runs "2 3", an even and an uneven split, and make test-slow "1 4").
+# Usage: run.sh BINDIR TESTBINDIR
 set -eu
 bindir=$(cd "$1" && pwd)
 mkdir -p "$2"
@@ -14,12 +16,13 @@ here=$(cd "$(dirname "$0")" && pwd)
 # the Criterion suite).
 MPIRUN="mpirun --oversubscribe --bind-to none -q"
 [ "$(id -u)" = 0 ] && MPIRUN="$MPIRUN --allow-run-as-root"
-export MPIRUN ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0"
+MPI_NPS=${MPI_NPS:-1 2 3 4}
+export MPIRUN MPI_NPS ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0"
 export OMP_NUM_THREADS=1
 fail=0
 for t in "$testbin"/*; do
     [ -x "$t" ] || continue
-    for p in 1 2 3 4; do
+    for p in $MPI_NPS; do
         # a hang (a collective call some process never makes) fails here
         if ! timeout -k 5 600 $MPIRUN -np $p "$t" >"$testbin/$(basename "$t").np$p.log" 2>&1; then
             echo "FAIL: $(basename "$t") on $p processes:"; sed 's/^/  /' "$testbin/$(basename "$t").np$p.log" | tail -20

@@ -13,7 +13,8 @@ trap 'rm -rf "$w"' EXIT
 fail=0
 cmp() { /usr/bin/python3 "$here/h5cmp.py" "$@" || fail=1; }
 
-# Every case: one process without mpirun (the reference), then P = 1..4.
+# Every case: one process without mpirun (the reference), then P in MPI_NPS
+# (default 1..4).
 # $1 tolerance, then the synth arguments.
 case_() {
     tol=$1; shift
@@ -21,10 +22,12 @@ case_() {
     if ! "$N" synth "$@" --precision double -o "$w/ref.h5"; then
         echo "synth.sh: one process failed: synth $*"; fail=1; return
     fi
-    for p in 1 2 3 4; do
+    for p in ${MPI_NPS:-1 2 3 4}; do
         $MPIRUN -np $p "$N" synth "$@" --precision double -o "$w/p$p.h5" || { echo "synth.sh: -np $p failed: synth $*"; fail=1; }
     done
-    cmp "$tol" "$w/ref.h5" "$w/p1.h5" "$w/p2.h5" "$w/p3.h5" "$w/p4.h5"
+    outs=
+    for p in ${MPI_NPS:-1 2 3 4}; do outs="$outs $w/p$p.h5"; done
+    cmp "$tol" "$w/ref.h5" $outs
 }
 case_ 1e-12 fft --acf markov:scale=6 --size 96x64 --seed 5
 case_ 1e-12 fft --acf gauss:scale=1.5 --size 15x20x9 --clamp --seed 2
