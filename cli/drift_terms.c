@@ -54,8 +54,8 @@ double *cli_drift_columns(const nl_table *t, size_t ncov, const char (*names)[64
     for (size_t j = 0; j < ncov; j++) {
         long c = nl_table_column(t, names[j]);
         if (c < 0)
-            cli_die(2, "--drift: %s has no column \"%s\"; expected it (a covariate named in --drift)", t->path,
-                    names[j]);
+            cli_die(2, "--drift: %s has no column \"%s\"; expected it (a covariate named in --drift: the terms are "
+                    "constant, linear, quadratic, x, y, z or columns of the data)", t->path, names[j]);
         for (size_t i = 0; i < t->n; i++)
             cov[i * ncov + j] = t->cols[c][i];
     }

@@ -1,7 +1,9 @@
 /* External covariates in the drift from the command line: noiselab
  * variogram --drift sdist against gstat's variogram(log(zinc) ~
  * sqrt(dist), meuse), and noiselab fit --method reml --drift sdist against
- * the restricted likelihood written out in R at the fitted parameters. */
+ * the restricted likelihood written out in R at the fitted parameters; wls
+ * with a covariate fits the residual variogram. */
+#include "../core/rng.h"
 #include "gstat.h"
 #include "util.h"
 
@@ -118,4 +120,44 @@ Test(fit_cov, reml_sdist_equals_r_restricted_likelihood)
     }
     cr_expect(json_is_true(json_object_get(j, "converged")), "not converged");
     json_decref(j);
+}
+
+/* wls with --drift c fits the variogram of the drift's residuals: the same
+ * parameters as fitting the table that noiselab variogram --drift c writes
+ * (17 digits: the same bins to rounding; the fits stop within ~1e-8 of one
+ * minimum: 1e-6 relative; the nugget, at 0, to 1e-6 of var), and not those of the plain variogram (the
+ * covariate carries most of the values' variance here: var moves by a
+ * factor ~10). */
+Test(fit_cov, wls_fits_the_residual_variogram)
+{
+    char text[80 * 80 + 64], plain_text[60 * 80 + 64];
+    size_t len = (size_t)snprintf(text, sizeof text, "x\ty\tvalue\tc\n");
+    size_t plen = (size_t)snprintf(plain_text, sizeof plain_text, "x\ty\tvalue\n");
+    for (int i = 0; i < 80; i++) {
+        double x = 10 * nl_rng_uniform(9, 1, (uint64_t)i), y = 10 * nl_rng_uniform(9, 2, (uint64_t)i);
+        double c = 4 * nl_rng_uniform(9, 3, (uint64_t)i), e = nl_rng_uniform(9, 4, (uint64_t)i) - 0.5;
+        double z = 1.5 * c + sin(2.3 * x + 1) * cos(1.9 * y) + 0.3 * e;
+        len += (size_t)snprintf(text + len, sizeof text - len, "%.17g\t%.17g\t%.17g\t%.17g\n", x, y, z, c);
+        plen += (size_t)snprintf(plain_text + plen, sizeof plain_text - plen, "%.17g\t%.17g\t%.17g\n", x, y, z);
+    }
+    scratch_file("c.tsv", text);
+    scratch_file("p.tsv", plain_text);
+    char out[256], err[512];
+    cr_assert_eq(run_noiselab("variogram c.tsv --drift c -o v.tsv", out, sizeof out, err, sizeof err), 0, "%s", err);
+    json_t *a = run_noiselab_json("fit c.tsv --model markov --nugget --drift c --json");
+    json_t *b = run_noiselab_json("fit --variogram v.tsv --model markov --nugget --json");
+    json_t *plain = run_noiselab_json("fit p.tsv --model markov --nugget --json");
+    static const char *names[] = {"var", "scale", "nugget"};
+    double sill = json_real_value(json_object_get(json_object_get(b, "parameters"), "var"));
+    for (int k = 0; k < 3; k++) {
+        double va = json_real_value(json_object_get(json_object_get(a, "parameters"), names[k]));
+        double vb = json_real_value(json_object_get(json_object_get(b, "parameters"), names[k]));
+        /* the nugget ends at 0 (its search's floor) here: compared on the sill's scale */
+        cr_expect(fabs(va - vb) <= 1e-6 * (k == 2 ? sill : fabs(vb)), "%s: %.10g, from the table %.10g", names[k], va,
+                  vb);
+    }
+    double va = json_real_value(json_object_get(json_object_get(a, "parameters"), "var"));
+    double vp = json_real_value(json_object_get(json_object_get(plain, "parameters"), "var"));
+    cr_expect(vp > 3 * va, "var %g with the covariate, %g without: expected the covariate to take most", va, vp);
+    json_decref(a), json_decref(b), json_decref(plain);
 }
