@@ -34,8 +34,13 @@ static const char help[] =
     "the columns distance, gamma, pairs of noiselab variogram -o, or gstat's np, dist, gamma (any order; "
     "bins with 0 pairs, a negative gamma or a distance not above 0 are refused); its model is checked "
     "as in 2D.  "
-    "ml, reml: the Gaussian likelihood of the data with an unknown mean (--drift: constant, or linear or "
-    "quadratic in the coordinates, as krige's; reml: Harville's restricted likelihood), O(n^3) per step "
+    "--drift TERMS, krige's terms (comma-separated constant, linear, quadratic, x,y or names of covariate "
+    "columns of DATA.tsv, read with x, y, value and any other columns: --drift sdist is gstat's "
+    "log(zinc) ~ sqrt(dist) with a column sdist): wls fits the variogram of the drift's least-squares "
+    "residuals (gstat's variogram(value ~ sdist), noiselab variogram --drift), ml and reml estimate the "
+    "drift's coefficients by generalised least squares with the model.  "
+    "ml, reml: the Gaussian likelihood of the data with an unknown mean (the drift; "
+    "reml: Harville's restricted likelihood), O(n^3) per step "
     "(refused above a work budget: below), started from the wls fit (cressie weights unless --weights is "
     "given), searched over a box (scales up to 10 "
     "times the largest distance) by a profile grid over the scale and local optimisations until the "
@@ -49,7 +54,8 @@ static const char help[] =
     "identifiable (singular information)), flags (singular-information, at-bound, not-converged), rcond "
     "(the information matrix's reciprocal condition number), and for ml and reml mean, intervals "
     "([lower, upper] per free parameter, upper null when unbounded), drift ([{term, value, se}]: 1, u, v, "
-    "u^2, uv, v^2 in the coordinates centred on and scaled by the bounding box), starts, restarts and "
+    "u^2, uv, v^2 in the coordinates centred on and scaled by the bounding box, then the covariates by "
+    "column name; the text prints them as drift TERM lines), starts, restarts and "
     "gradient.";
 
 static const char help_errors[] =
@@ -405,7 +411,8 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
                                         " (distance weights)", " (ols weights)"};
     printf("model       %s\n", r->spec);
     printf("method      %s%s on %zu %s, %s after %d steps", mname[a->method], a->method ? "" : wname[a->o.weights],
-           r->nobs, a->method ? "data" : "variogram bins", r->converged ? "converged" : "NOT converged", r->iterations);
+           r->nobs, a->method ? "data" : a->drift ? "variogram bins of the drift's residuals" : "variogram bins",
+           r->converged ? "converged" : "NOT converged", r->iterations);
     if (a->method)
         printf(" (%d local optimisation%s%s, projected gradient %.2g)", r->starts, r->starts == 1 ? "" : "s",
                r->restarts ? ", restarted from a profile point below the optimum" : "", r->gradient);
