@@ -257,16 +257,18 @@ static nl_points *read_points(opts_t *a)
     return p;
 }
 
-/* A wls fit to the variogram of the data (of the drift's OLS residuals
- * with --drift), then with ml or reml the likelihood's fit from there. */
+/* wls: the fit to the variogram of the data, of the drift's OLS residuals
+ * with --drift.  ml, reml: the likelihood's fit started from the wls fit
+ * to the data's variogram (a constant mean, as the Python package's fit
+ * starts, so that the two give one optimum to the last digit). */
 static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
 {
     nl_variogram *v;
     nl_variogram_options vo = a->vo;
     int st = nl_fit_check_options(&a->o, p->dim);
-    vo.drift = a->o.drift;
+    vo.drift = a->method ? NL_VARIOGRAM_DRIFT_CONSTANT : a->o.drift;
     if (!st)
-        st = nl_variogram_points_design(p, a->cov, a->terms.ncov, &vo, &v);
+        st = nl_variogram_points_design(p, a->cov, a->method ? 0 : a->terms.ncov, &vo, &v);
     if (st)
         return st;
     st = nl_fit_variogram(v->distance, v->gamma, v->pairs, v->nbins, p->dim, &a->o, r);
