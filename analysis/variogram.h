@@ -20,7 +20,7 @@
  * nl_variogram_points_design adds external covariates to the drift's
  * columns (after 1, or after the polynomial's terms): gstat's
  * variogram(z ~ c1 + c2) (Meuse's variogram(log(zinc) ~ sqrt(dist)) to
- * 1e-12, tests/test_fit_cov.c).  The residuals do not depend on the
+ * 1e-9, tests/test_fit_cov.c).  The residuals do not depend on the
  * columns' units or centring (the same column space).
  *
  * Per bin, with N_k pairs and d_ij = z_i - z_j:

@@ -210,8 +210,8 @@ static void parse(int argc, char **argv, opts_t *a)
                 a->terms.cov[0], a->in);
 }
 
-/* The data with the covariates of --drift: a table (core/io_table.h) of
- * x [y [z]], value and the covariates' columns. */
+/* The data with --drift: a table (core/io_table.h) of x [y [z]], value,
+ * the covariates' columns and any others. */
 static nl_points *read_table(opts_t *a)
 {
     nl_table *t;
@@ -231,7 +231,7 @@ static nl_points *read_points(opts_t *a)
     const char *path = a->in;
     nl_points *p;
     int st;
-    if (a->terms.ncov)
+    if (a->drift && cli_has_ext(path, ".tsv"))
         return read_table(a);
     if (cli_has_ext(path, ".tsv")) {
         if ((st = nl_points_read(path, &p)))
@@ -413,7 +413,9 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
                                         " (distance weights)", " (ols weights)"};
     printf("model       %s\n", r->spec);
     printf("method      %s%s on %zu %s, %s after %d steps", mname[a->method], a->method ? "" : wname[a->o.weights],
-           r->nobs, a->method ? "data" : a->drift ? "variogram bins of the drift's residuals" : "variogram bins",
+           r->nobs, a->method ? "data"
+           : a->o.drift != NL_DRIFT_CONSTANT || a->terms.ncov ? "variogram bins of the drift's residuals"
+                                                               : "variogram bins",
            r->converged ? "converged" : "NOT converged", r->iterations);
     if (a->method)
         printf(" (%d local optimisation%s%s, projected gradient %.2g)", r->starts, r->starts == 1 ? "" : "s",

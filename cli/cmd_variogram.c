@@ -77,8 +77,8 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "-o: expected a .tsv file, got \"%s\"", a->out);
 }
 
-/* --drift with covariates: the table's points and columns, the variogram
- * of the residuals. */
+/* --drift: the table's points and covariate columns (others allowed),
+ * the variogram of the drift's residuals. */
 static int table_variogram(const opts_t *a, nl_variogram **v)
 {
     nl_table *t;
@@ -100,16 +100,13 @@ static nl_variogram *compute(const opts_t *a)
 {
     nl_variogram *v;
     int st;
-    if (a->terms.ncov)
+    if (a->drift && cli_has_ext(a->in, ".tsv"))
         st = table_variogram(a, &v);
     else if (cli_has_ext(a->in, ".tsv")) {
         nl_points *p;
-        nl_variogram_options o = a->o;
         if ((st = nl_points_read(a->in, &p)))
             cli_die(nl_error_is_input(st) ? 2 : 1, "%s", nl_errmsg());
-        if (a->drift)
-            o.drift = cli_drift_poly(&a->terms, a->drift, p->dim);
-        st = nl_variogram_points(p, &o, &v);
+        st = nl_variogram_points(p, &a->o, &v);
         nl_points_free(p);
     } else {
         nl_field *f = cli_read_field(a->in, NULL);
