@@ -23,18 +23,17 @@ static size_t terms(int dim, int drift)
     return 1 + d + (drift == NL_VARIOGRAM_DRIFT_QUADRATIC ? d * (d + 1) / 2 : 0);
 }
 
-/* Row i of the design: the polynomial terms, then the q covariates, each
- * divided by its column's largest magnitude cs[j] (the column space, and so
- * the residuals, unchanged; the truncation's relative threshold then
- * compares columns of like size). */
+/* Row i of the design: the polynomial terms, then the q covariates as
+ * given (GSL's SVD balances the columns first: a covariate of 1e100 is
+ * compared with the others on one scale). */
 static void fill_row(const double *x, int dim, int drift, const double *c, const double *s, const double *cov,
-                     size_t q, const double *cs, double *row)
+                     size_t q, double *row)
 {
     double u[3];
     size_t t = 0;
     row[t++] = 1;
     for (size_t j = 0; j < q; j++)
-        row[terms(dim, drift) + j] = cov[j] / cs[j];
+        row[terms(dim, drift) + j] = cov[j];
     if (drift == NL_VARIOGRAM_DRIFT_CONSTANT)
         return;
     for (int a = 0; a < dim; a++)
@@ -75,21 +74,13 @@ static const char *drift_name(int drift, size_t q)
     return drift == NL_VARIOGRAM_DRIFT_QUADRATIC ? "quadratic" : "linear";
 }
 
-/* The largest magnitude of each covariate column (1 for a column of 0s);
- * NL_EINVAL naming a non-finite covariate. */
-static int cov_scales(size_t n, const double *cov, size_t q, double *cs)
+/* NL_EINVAL naming a non-finite covariate. */
+static int check_cov(size_t n, const double *cov, size_t q)
 {
-    for (size_t j = 0; j < q; j++) {
-        cs[j] = 0;
-        for (size_t i = 0; i < n; i++) {
-            double v = cov[i * q + j];
-            if (!isfinite(v))
-                return NL_ERROR(NL_EINVAL, "variogram: drift: covariate %zu of point %zu is %g; expected finite "
-                                "numbers", j + 1, i + 1, v);
-            cs[j] = fmax(cs[j], fabs(v));
-        }
-        cs[j] = cs[j] > 0 ? cs[j] : 1;
-    }
+    for (size_t i = 0; i < n * q; i++)
+        if (!isfinite(cov[i]))
+            return NL_ERROR(NL_EINVAL, "variogram: drift: covariate %zu of point %zu is %g; expected finite numbers",
+                            i % q + 1, i / q + 1, cov[i]);
     return NL_OK;
 }
 
@@ -97,17 +88,13 @@ int nl_vg_residuals(int dim, size_t n, const double *pts, const double *z, int d
                     double *r)
 {
     size_t p = terms(dim, drift) + q, rank = 0;
-    double c[3], s[3], *cs;
+    double c[3], s[3];
     int st;
     if (n <= p)
         return NL_ERROR(NL_EINVAL, "variogram: drift: %zu points for a %s drift of %zu terms; expected more points "
                         "than terms", n, drift_name(drift, q), p);
-    if (!(cs = malloc((q + 1) * sizeof *cs)))
-        return NL_ERROR(NL_ENOMEM, "variogram: out of memory for the drift's %zu covariates", q);
-    if ((st = cov_scales(n, cov, q, cs))) {
-        free(cs);
+    if ((st = check_cov(n, cov, q)))
         return st;
-    }
     for (int a = 0; a < dim; a++) {
         double lo = INFINITY, hi = -INFINITY;
         for (size_t i = 0; i < n; i++)
@@ -115,13 +102,10 @@ int nl_vg_residuals(int dim, size_t n, const double *pts, const double *z, int d
         c[a] = 0.5 * (lo + hi), s[a] = hi > lo ? 0.5 * (hi - lo) : 1;
     }
     gsl_matrix *X = gsl_matrix_alloc(n, p);
-    if (!X) {
-        free(cs);
+    if (!X)
         return NL_ERROR(NL_ENOMEM, "variogram: out of memory for the drift's %zu x %zu terms", n, p);
-    }
     for (size_t i = 0; i < n; i++)
-        fill_row(pts + i * (size_t)dim, dim, drift, c, s, q ? cov + i * q : NULL, q, cs, gsl_matrix_ptr(X, i, 0));
-    free(cs);
+        fill_row(pts + i * (size_t)dim, dim, drift, c, s, q ? cov + i * q : NULL, q, gsl_matrix_ptr(X, i, 0));
     gsl_vector_const_view y = gsl_vector_const_view_array(z, n);
     gsl_vector_view res = gsl_vector_view_array(r, n);
     nl_gsl_enter();
