@@ -287,33 +287,41 @@ static int accumulate(const nl_spindex *s, const nl_points *p, const nl_vg_acc *
 
 /* The points with their values less the drift's least-squares fit (a
  * copy sharing the coordinates; its values in *res, to be freed). */
-static int detrend(const nl_points *p, int drift, nl_points *q, double **res)
+static int detrend(const nl_points *p, int drift, const double *cov, size_t nc, nl_points *q, double **res)
 {
     *q = *p;
     *res = NULL;
-    if (drift == NL_VARIOGRAM_DRIFT_CONSTANT)
+    if (drift == NL_VARIOGRAM_DRIFT_CONSTANT && !nc)
         return NL_OK;
     if (!(*res = malloc(p->n * sizeof **res)))
         return NL_ERROR(NL_ENOMEM, "variogram: out of memory for %zu residuals", p->n);
     q->val = *res;
-    return nl_vg_residuals(p->dim, p->n, p->pts, p->val, drift, *res);
+    return nl_vg_residuals(p->dim, p->n, p->pts, p->val, drift, cov, nc, *res);
 }
 
 int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out)
 {
+    return nl_variogram_points_design(p, NULL, 0, o, out);
+}
+
+int nl_variogram_points_design(const nl_points *p, const double *design, size_t q, const nl_variogram_options *o,
+                               nl_variogram **out)
+{
     double diag = 0, gdiag = 0, *sums = NULL, *res = NULL;
     nl_vg_acc a;
     nl_spindex *s = NULL;
-    nl_points q;
+    nl_points pq;
     int st;
     *out = NULL;
     if ((st = check_points(p, &diag, &gdiag)) || (st = nl_vg_check_options(o)) || (st = nl_vg_bins(o, gdiag, &a)))
         return st;
-    if ((st = detrend(p, o->drift, &q, &res)) || (st = nl_spindex_alloc(p->dim, p->n, p->pts, &s))) {
+    if (q && !design)
+        return NL_ERROR(NL_EINVAL, "variogram: drift: %zu covariates and no design; expected n x %zu numbers", q, q);
+    if ((st = detrend(p, o->drift, design, q, &pq, &res)) || (st = nl_spindex_alloc(p->dim, p->n, p->pts, &s))) {
         free(res);
         return st;
     }
-    if (!(st = check_work(s, &q, &a)) && !(st = nl_vg_sums_alloc(a.nb, &sums)) && !(st = accumulate(s, &q, &a, sums)))
+    if (!(st = check_work(s, &pq, &a)) && !(st = nl_vg_sums_alloc(a.nb, &sums)) && !(st = accumulate(s, &pq, &a, sums)))
         st = nl_vg_finish(&a, sums, out);
     free(sums);
     free(res);

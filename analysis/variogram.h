@@ -17,6 +17,11 @@
  * fit of a polynomial in the coordinates to the values (1, x, y, z; the
  * quadratic adds the squares and cross products), gstat's variogram(z ~ x +
  * y) (src/sem.c alloc_exp_variogram, make_residuals_lm); points only.
+ * nl_variogram_points_design adds external covariates to the drift's
+ * columns (after 1, or after the polynomial's terms): gstat's
+ * variogram(z ~ c1 + c2) (Meuse's variogram(log(zinc) ~ sqrt(dist)) to
+ * 1e-9, tests/test_fit_cov.c).  The residuals do not depend on the
+ * columns' units or centring (the same column space).
  *
  * Per bin, with N_k pairs and d_ij = z_i - z_j:
  *     Matheron:  gamma_k = sum d_ij^2 / (2 N_k)
@@ -91,6 +96,17 @@ typedef struct {
  * or the variogram of a gridded field), or when the index outgrows
  * memory; NL_ENOMEM.  Thread-safe. */
 int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out);
+
+/* The same with q covariates in the drift: design[i * q + c] the c-th
+ * covariate at point i (row-major n x q; any units), columns after the
+ * terms of o->drift (NL_VARIOGRAM_DRIFT_CONSTANT: 1 and the covariates, as
+ * gstat's z ~ c1 + c2).  q = 0 (design may be NULL) is
+ * nl_variogram_points.  Errors as nl_variogram_points, and NL_EINVAL for
+ * design NULL with q > 0, a non-finite covariate, no more points than the
+ * drift's terms, or terms of rank below their count (a constant covariate,
+ * a combination of the others).  Thread-safe. */
+int nl_variogram_points_design(const nl_points *p, const double *design, size_t q, const nl_variogram_options *o,
+                               nl_variogram **out);
 
 /* The variogram of a field: sample (i, j, k) at (i h[0], j h[1], k h[2]),
  * all pairs of samples (same binning and errors as nl_variogram_points;

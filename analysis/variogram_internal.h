@@ -34,9 +34,11 @@ long nl_vg_bin(const nl_vg_acc *a, double d, const double *dx);
 void nl_vg_add(const nl_vg_acc *a, double *sums, double d, const double *dx, double dz);
 int nl_vg_finish(const nl_vg_acc *a, const double *sums, nl_variogram **out);
 /* The n values z at the points pts (n x dim) less their ordinary
- * least-squares drift (drift NL_VARIOGRAM_DRIFT_*) into r (n values):
- * analysis/variogram_drift.c.  NL_EINVAL (too few points, rank-deficient
+ * least-squares drift (drift NL_VARIOGRAM_DRIFT_*, then the q covariates
+ * cov, n x q row-major) into r (n values): analysis/variogram_drift.c.
+ * NL_EINVAL (too few points, a non-finite covariate, rank-deficient
  * terms), NL_ENOMEM. */
-int nl_vg_residuals(int dim, size_t n, const double *pts, const double *z, int drift, double *r);
+int nl_vg_residuals(int dim, size_t n, const double *pts, const double *z, int drift, const double *cov, size_t q,
+                    double *r);
 
 #endif

@@ -1,11 +1,13 @@
 /* noiselab fit: fit a covariance model to scattered data or a field. */
 #include "cli.h"
 #include "opt.h"
+#include "drift_terms.h"
 #include "../analysis/fit.h"
 #include "../analysis/variogram.h"
 #include "../core/family.h"
 #include "../core/model.h"
 #include "../core/io_points.h"
+#include "../core/io_table.h"
 #include "../core/nl_error.h"
 
 #include <math.h>
@@ -16,7 +18,7 @@
 
 static const char help_usage[] =
     "usage: noiselab fit DATA.tsv|FIELD.exr --model FAMILY|SPEC [--nugget] [--fix NAME=VALUE]...\n"
-    "                    [--method wls|ml|reml] [--drift constant|linear|quadratic]\n"
+    "                    [--method wls|ml|reml] [--drift TERMS]\n"
     "                    [--weights distance|pairs|reweighted|ols|cressie|7|1|2|6]\n"
     "                    [--width W] [--cutoff C] [--bins gstat|floor] [--json]\n"
     "       noiselab fit --variogram VARIO.tsv --model FAMILY|SPEC [...] [--weights ...]\n\n";
@@ -32,8 +34,13 @@ static const char help[] =
     "the columns distance, gamma, pairs of noiselab variogram -o, or gstat's np, dist, gamma (any order; "
     "bins with 0 pairs, a negative gamma or a distance not above 0 are refused); its model is checked "
     "as in 2D.  "
-    "ml, reml: the Gaussian likelihood of the data with an unknown mean (--drift: constant, or linear or "
-    "quadratic in the coordinates, as krige's; reml: Harville's restricted likelihood), O(n^3) per step "
+    "--drift TERMS, krige's terms (comma-separated constant, linear, quadratic, x,y or names of covariate "
+    "columns of DATA.tsv, read with x, y, value and any other columns: --drift sdist is gstat's "
+    "log(zinc) ~ sqrt(dist) with a column sdist): wls fits the variogram of the drift's least-squares "
+    "residuals (gstat's variogram(value ~ sdist), noiselab variogram --drift), ml and reml estimate the "
+    "drift's coefficients by generalised least squares with the model.  "
+    "ml, reml: the Gaussian likelihood of the data with an unknown mean (the drift; "
+    "reml: Harville's restricted likelihood), O(n^3) per step "
     "(refused above a work budget: below), started from the wls fit (cressie weights unless --weights is "
     "given), searched over a box (scales up to 10 "
     "times the largest distance) by a profile grid over the scale and local optimisations until the "
@@ -47,7 +54,8 @@ static const char help[] =
     "identifiable (singular information)), flags (singular-information, at-bound, not-converged), rcond "
     "(the information matrix's reciprocal condition number), and for ml and reml mean, intervals "
     "([lower, upper] per free parameter, upper null when unbounded), drift ([{term, value, se}]: 1, u, v, "
-    "u^2, uv, v^2 in the coordinates centred on and scaled by the bounding box), starts, restarts and "
+    "u^2, uv, v^2 in the coordinates centred on and scaled by the bounding box, then the covariates by "
+    "column name; the text prints them as drift TERM lines), starts, restarts and "
     "gradient.";
 
 static const char help_errors[] =
@@ -116,6 +124,9 @@ typedef struct {
     int weights_given;          /* --weights given */
     int json;                   /* --json */
     int method;                 /* 0 wls, 1 ml, 2 reml */
+    const char *drift;          /* --drift TERMS as given, or NULL */
+    cli_drift terms;            /* its terms */
+    double *cov;                /* the covariates of --drift at the data (n x terms.ncov), or NULL */
     int dim;                    /* the data's dimension */
     nl_fit_options o;           /* the library's options */
     nl_variogram_options vo;    /* binning */
@@ -146,13 +157,12 @@ static const char *const methods[] = {"wls", "ml", "reml", NULL};
 static const char *const weights[] = {"cressie", "pairs", "reweighted", "distance", "ols", "1", "2", "6", "7", NULL};
 static const int weight_vals[] = {NL_FIT_CRESSIE, NL_FIT_PAIRS, NL_FIT_REWEIGHTED, NL_FIT_DISTANCE, NL_FIT_OLS,
                                   NL_FIT_PAIRS,   NL_FIT_REWEIGHTED, NL_FIT_OLS, NL_FIT_DISTANCE};
-static const char *const drifts[] = {"constant", "linear", "quadratic", NULL}; /* NL_DRIFT_* by index */
 
 static const cli_opt rows[] = {
     CLI_STRING("model", opts_t, o.family), CLI_FLAG("nugget", opts_t, o.nugget),
     CLI_CALL("fix", parse_fix, .flags = CLI_REPEAT),
     CLI_CHOICE("method", opts_t, method, .choices = methods),
-    CLI_CHOICE("drift", opts_t, o.drift, .choices = drifts),
+    CLI_STRING("drift", opts_t, drift),
     CLI_CHOICE("weights", opts_t, o.weights, CLI_GIVEN(opts_t, weights_given), .choices = weights,
                .vals = weight_vals), CLI_OPT_BINS(opts_t, vo),
     CLI_STRING("variogram", opts_t, vario),
@@ -166,6 +176,8 @@ static void parse_vario(opts_t *a, int argc)
     if (a->method)
         cli_die(2, "--method: expected wls with --variogram (a likelihood needs the data), got %s",
                 a->method == 2 ? "reml" : "ml");
+    if (a->drift)
+        cli_die(2, "--drift: expected no drift with --variogram (the table's bins are fitted as they are)");
     if (a->vo.width > 0 || a->vo.cutoff > 0 || a->vo.bins)
         cli_die(2, "--variogram: expected no --width, --cutoff or --bins (the table's bins are fitted as they are)");
     a->in = a->vario;
@@ -191,16 +203,36 @@ static void parse(int argc, char **argv, opts_t *a)
      * can run off on degenerate data (tests/bad/fit_hostile.cases) */
     if (a->method && !a->weights_given)
         a->o.weights = NL_FIT_CRESSIE;
-    if (a->o.drift != NL_DRIFT_CONSTANT && !a->method)
-        cli_die(2, "--drift: expected --method ml or reml with a %s drift (wls fits the variogram of a constant "
-                "mean)", drifts[a->o.drift]);
+    if (a->drift)
+        cli_drift_parse(a->drift, "the data", &a->terms);
+    if (a->terms.ncov && !cli_has_ext(a->in, ".tsv"))
+        cli_die(2, "--drift: covariates (\"%s\") are columns of a points table; expected DATA.tsv, got \"%s\"",
+                a->terms.cov[0], a->in);
+}
+
+/* The data with --drift: a table (core/io_table.h) of x [y [z]], value,
+ * the covariates' columns and any others. */
+static nl_points *read_table(opts_t *a)
+{
+    nl_table *t;
+    nl_points *p = cli_malloc(sizeof *p);
+    int st;
+    if ((st = nl_table_read(a->in, &t)) || (st = nl_table_points(t, "value", &p->dim, &p->pts, &p->val)))
+        cli_die(nl_error_is_input(st) ? 2 : 1, "%s", nl_errmsg());
+    p->n = t->n;
+    a->cov = cli_drift_columns(t, a->terms.ncov, a->terms.cov);
+    nl_table_free(t);
+    return p;
 }
 
 /* The data as points: a TSV as read, a field as its samples at i * h. */
-static nl_points *read_points(const char *path)
+static nl_points *read_points(opts_t *a)
 {
+    const char *path = a->in;
     nl_points *p;
     int st;
+    if (a->drift && cli_has_ext(path, ".tsv"))
+        return read_table(a);
     if (cli_has_ext(path, ".tsv")) {
         if ((st = nl_points_read(path, &p)))
             cli_die(nl_error_is_input(st) ? 2 : 1, "%s", nl_errmsg());
@@ -225,12 +257,18 @@ static nl_points *read_points(const char *path)
     return p;
 }
 
+/* wls: the fit to the variogram of the data, of the drift's OLS residuals
+ * with --drift.  ml, reml: the likelihood's fit started from the wls fit
+ * to the data's variogram (a constant mean, as the Python package's fit
+ * starts, so that the two give one optimum to the last digit). */
 static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
 {
     nl_variogram *v;
+    nl_variogram_options vo = a->vo;
     int st = nl_fit_check_options(&a->o, p->dim);
+    vo.drift = a->method ? NL_VARIOGRAM_DRIFT_CONSTANT : a->o.drift;
     if (!st)
-        st = nl_variogram_points(p, &a->vo, &v);
+        st = nl_variogram_points_design(p, a->cov, a->method ? 0 : a->terms.ncov, &vo, &v);
     if (st)
         return st;
     st = nl_fit_variogram(v->distance, v->gamma, v->pairs, v->nbins, p->dim, &a->o, r);
@@ -244,7 +282,7 @@ static int fit(const opts_t *a, const nl_points *p, nl_fit_result *r)
         ml.start = start;
         ml.intervals = NL_FIT_INTERVALS_ALL;
         cli_phase("fit", a->method == 2 ? "restricted maximum likelihood" : "maximum likelihood");
-        st = nl_fit_ml(p->pts, p->val, p->n, p->dim, &ml, r);
+        st = nl_fit_ml_design(p->pts, p->val, p->n, p->dim, a->cov, a->terms.ncov, &ml, r);
         cli_progress_done();
         free(start);
     }
@@ -266,13 +304,17 @@ static int fit_table(const opts_t *a, nl_fit_result *r)
     return st;
 }
 
-/* The name of drift term k of the polynomial drift in dim dimensions, in
- * the order of analysis/fit.h's Drift (coordinates u, v, w centred on and
- * scaled by the bounding box). */
-static const char *drift_term(size_t k, int dim, char *buf, size_t size)
+/* The name of drift term k, in the order of analysis/fit.h's Drift: the
+ * polynomial's (coordinates u, v, w centred on and scaled by the bounding
+ * box), then the covariates' column names. */
+static const char *drift_term(const opts_t *a, size_t k, char *buf, size_t size)
 {
     static const char ax[] = "uvw";
-    size_t t = 1;
+    int dim = a->dim;
+    size_t t = 1, npoly = a->o.drift == NL_DRIFT_NONE ? 0 : a->o.drift == NL_DRIFT_CONSTANT ? 1
+                       : a->o.drift == NL_DRIFT_LINEAR ? 1 + (size_t)dim : 1 + (size_t)dim * (size_t)(dim + 3) / 2;
+    if (k >= npoly && k - npoly < a->terms.ncov)
+        return snprintf(buf, size, "%s", a->terms.cov[k - npoly]), buf;
     if (k == 0)
         return snprintf(buf, size, "1"), buf;
     for (int i = 0; i < dim; i++, t++)
@@ -371,7 +413,10 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
                                         " (distance weights)", " (ols weights)"};
     printf("model       %s\n", r->spec);
     printf("method      %s%s on %zu %s, %s after %d steps", mname[a->method], a->method ? "" : wname[a->o.weights],
-           r->nobs, a->method ? "data" : "variogram bins", r->converged ? "converged" : "NOT converged", r->iterations);
+           r->nobs, a->method ? "data"
+           : a->o.drift != NL_DRIFT_CONSTANT || a->terms.ncov ? "variogram bins of the drift's residuals"
+                                                               : "variogram bins",
+           r->converged ? "converged" : "NOT converged", r->iterations);
     if (a->method)
         printf(" (%d local optimisation%s%s, projected gradient %.2g)", r->starts, r->starts == 1 ? "" : "s",
                r->restarts ? ", restarted from a profile point below the optimum" : "", r->gradient);
@@ -397,12 +442,12 @@ static void print_text(const opts_t *a, const nl_fit_result *r)
                    end_text(q->upper, hi, sizeof hi));
     }
     print_status(a, r);
-    if (a->method && a->o.drift == NL_DRIFT_CONSTANT)
+    if (a->method && a->o.drift == NL_DRIFT_CONSTANT && !a->terms.ncov)
         printf("mean        %.6g\n", r->mean);
     else if (a->method)
         for (size_t k = 0; k < r->ndrift; k++) {
             char name[16];
-            printf("drift %-5s %-13.6g %.4g\n", drift_term(k, a->dim, name, sizeof name), r->drift[k], r->drift_se[k]);
+            printf("drift %-5s %-13.6g %.4g\n", drift_term(a, k, name, sizeof name), r->drift[k], r->drift_se[k]);
         }
     printf("objective   %.8g (%s)\n", r->objective, a->method ? "-2 log likelihood" : "weighted sum of squares");
     printf("AIC         %.8g\n", r->aic);
@@ -441,7 +486,7 @@ static void print_json(const opts_t *a, const nl_fit_result *r)
         json_t *dr = json_array();
         for (size_t k = 0; k < r->ndrift; k++) {
             char name[16];
-            json_array_append_new(dr, json_pack("{s:s,s:f,s:f}", "term", drift_term(k, a->dim, name, sizeof name),
+            json_array_append_new(dr, json_pack("{s:s,s:f,s:f}", "term", drift_term(a, k, name, sizeof name),
                                                 "value", r->drift[k], "se", r->drift_se[k]));
         }
         json_object_set_new(j, "mean", json_real(r->mean));
@@ -464,10 +509,13 @@ int cli_cmd_fit(int argc, char **argv)
     if (a.vario)
         st = fit_table(&a, &r);
     else {
-        p = read_points(a.in);
+        p = read_points(&a);
         a.dim = p->dim;
+        if (a.drift)
+            a.o.drift = cli_drift_poly(&a.terms, a.drift, a.dim);
         st = fit(&a, p, &r);
         nl_points_free(p);
+        free(a.cov);
     }
     if (st) {
         const char *msg = nl_errmsg();

@@ -2,6 +2,7 @@
  * (cli/krige_predict.h). */
 #include "krige_predict.h"
 #include "cli.h"
+#include "drift_terms.h"
 #include "../core/io_table.h"
 #include "../core/nl_error.h"
 #include "../core/rng.h"
@@ -38,36 +39,14 @@ const cli_opt kp_rows[] = {
     CLI_COUNT("cross-validate", kp_opts, kfold, CLI_GIVEN(kp_opts, given_cv), .flags = CLI_OPTIONAL, .lo = 2),
     CLI_STRING("folds", kp_opts, folds), CLI_OPT_SEED(kp_opts, seed, given_seed), {0}};
 
-/* --drift TERMS: comma-separated constant, linear, quadratic, x, y, z or
- * a covariate column's name. */
+/* --drift TERMS (cli/drift_terms.h). */
 static void parse_drift(kp_opts *p)
 {
-    const char *s = p->drift;
-    p->poly = NL_DRIFT_CONSTANT;
-    for (;;) {
-        size_t len = strcspn(s, ",");
-        char t[64];
-        if (len == 0 || len >= sizeof t)
-            cli_die(2, "--drift: expected comma-separated terms (linear, quadratic, x, y, z or column names of "
-                    "--data), got \"%s\"", p->drift);
-        memcpy(t, s, len), t[len] = 0;
-        if (strcmp(t, "linear") == 0 || strcmp(t, "quadratic") == 0) {
-            int q = t[0] == 'l' ? NL_DRIFT_LINEAR : NL_DRIFT_QUADRATIC;
-            p->poly = q > p->poly ? q : p->poly;
-        } else if ((t[0] == 'x' || t[0] == 'y' || t[0] == 'z') && !t[1])
-            p->axes |= 1u << (t[0] == 'x' ? 0 : t[0] == 'y' ? 1 : 2);
-        else if (strcmp(t, "constant") != 0) {
-            for (size_t j = 0; j < p->ncov; j++)
-                if (strcmp(p->cov[j], t) == 0)
-                    cli_die(2, "--drift: \"%s\" is named twice in \"%s\"; expected each term once", t, p->drift);
-            if (p->ncov == KP_MAX_COV)
-                cli_die(2, "--drift: more than %d covariates in \"%s\"", KP_MAX_COV, p->drift);
-            snprintf(p->cov[p->ncov++], sizeof p->cov[0], "%s", t);
-        }
-        if (!s[len])
-            break;
-        s += len + 1;
-    }
+    cli_drift d;
+    _Static_assert(sizeof p->cov == sizeof d.cov, "kp_opts.cov holds cli_drift.cov");
+    cli_drift_parse(p->drift, "--data", &d);
+    p->poly = d.poly, p->axes = d.axes, p->ncov = d.ncov;
+    memcpy(p->cov, d.cov, sizeof p->cov);
 }
 
 void kp_parse(kp_opts *p, int argc, char **argv)
@@ -94,31 +73,24 @@ void kp_parse(kp_opts *p, int argc, char **argv)
     }
 }
 
-/* Column name of t, or exit 2 naming what wanted it. */
-static long need_column(const nl_table *t, const char *name, const char *why)
+/* The column of the fold ids, or exit 2. */
+static long need_column(const nl_table *t, const char *name)
 {
     long c = nl_table_column(t, name);
     if (c < 0)
-        cli_die(2, "%s: %s has no column \"%s\"; expected it (%s)", why, t->path, name,
-                strcmp(why, "--drift") == 0 ? "a covariate named in --drift" : "the fold id of each datum");
+        cli_die(2, "--folds: %s has no column \"%s\"; expected it (the fold id of each datum)", t->path, name);
     return c;
 }
 
 /* The covariates of --drift from the columns of t (n * ncov, row-major). */
 static double *table_cov(const kp_opts *p, const nl_table *t)
 {
-    double *cov = cli_malloc((t->n * p->ncov + 1) * sizeof *cov);
-    for (size_t j = 0; j < p->ncov; j++) {
-        long c = need_column(t, p->cov[j], "--drift");
-        for (size_t i = 0; i < t->n; i++)
-            cov[i * p->ncov + j] = t->cols[c][i];
-    }
-    return cov;
+    return cli_drift_columns(t, p->ncov, p->cov);
 }
 
 static long *table_folds(const kp_opts *p, const nl_table *t)
 {
-    long c = need_column(t, p->folds, "--folds"), *fold = cli_malloc(t->n * sizeof *fold);
+    long c = need_column(t, p->folds), *fold = cli_malloc(t->n * sizeof *fold);
     for (size_t i = 0; i < t->n; i++) {
         double v = t->cols[c][i];
         if (v != floor(v) || fabs(v) > 1e15)
@@ -161,13 +133,10 @@ nl_krige_local *kp_plan(const kp_opts *p, const kp_common *c, const kp_data *d, 
                                 .ncov = p->ncov, .cov = d->cov};
     nl_krige_local *k;
     int dim = d->pt->dim;
-    if (p->axes && p->axes != (1u << dim) - 1)
-        cli_die(2, "--drift: \"%s\" names some of the %d coordinates; expected all of them (x,y%s) or none, as "
-                "linear does", p->drift, dim, dim == 3 ? ",z" : "");
-    if (p->axes && o.drift == NL_DRIFT_CONSTANT)
-        o.drift = NL_DRIFT_LINEAR;
-    if (p->axes && dim == 1 && !(p->axes & 1))
-        cli_die(2, "--drift: \"%s\": the data have one coordinate, x", p->drift);
+    if (p->drift) {
+        cli_drift t = {.poly = p->poly, .axes = p->axes};
+        o.drift = cli_drift_poly(&t, p->drift, dim);
+    }
     if (!isnan(c->mean)) {
         if (p->given_drift)
             cli_die(2, "--mean: expected no --drift with a known mean, got --mean %g", c->mean);

@@ -12,7 +12,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define KP_MAX_COV 16
+#define KP_MAX_COV 16 /* CLI_DRIFT_MAX_COV of cli/drift_terms.h */
 
 /* The options of this file (a group of krige's option table). */
 typedef struct {
