@@ -508,17 +508,20 @@ def fit(points=None, values=None, field=None, spacing=1.0, model="markov", nugge
         if cov.ndim != 2 or cov.shape[0] != p.shape[0] or cov.shape[1] == 0:
             raise Error("covariates: expected an array of %d rows (one per datum) and at least one column, got "
                         "shape %s" % (p.shape[0], cov.shape))
-    if method == "wls" and (o.drift or cov is not None):
-        raise Error("drift: expected method ml or reml with a drift or covariates (wls fits the variogram of a "
-                    "constant mean), got method wls")
-    vo = _vopts(width, cutoff, "matheron", None, None, bins)
+    # wls with a drift fits the variogram of the drift's least-squares residuals
+    # (gstat's variogram(z ~ x + y + c)); ml and reml start from the plain one's fit
+    wls_drift = method == "wls" and (o.drift != 0 or cov is not None)
+    vo = _vopts(width, cutoff, "matheron", None, None, bins, _DRIFTS[o.drift] if wls_drift else "constant")
     r = ffi.new("nl_fit_result *")
     dim = p.shape[1]
     check(lib.nl_fit_check_options(o, dim))
     P = ffi.new("nl_points *")
     P.dim, P.n, P.pts, P.val = dim, p.shape[0], _dptr(p), _dptr(v)
     out = ffi.new("nl_variogram **")
-    check(lib.nl_variogram_points(P, vo, out))
+    if wls_drift and cov is not None:
+        check(lib.nl_variogram_points_design(P, _dptr(cov), cov.shape[1], vo, out))
+    else:
+        check(lib.nl_variogram_points(P, vo, out))
     vg = ffi.gc(out[0], lib.nl_variogram_free)
     try:
         with planner:

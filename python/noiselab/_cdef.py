@@ -646,6 +646,8 @@ typedef struct {
     double *pairs;
 } nl_variogram;
 int nl_variogram_points(const nl_points *p, const nl_variogram_options *o, nl_variogram **out);
+int nl_variogram_points_design(const nl_points *p, const double *design, size_t q, const nl_variogram_options *o,
+                               nl_variogram **out);
 int nl_variogram_field(const nl_field *f, const nl_variogram_options *o, nl_variogram **out);
 void nl_variogram_free(nl_variogram *v);
 int nl_variogram_read(const char *path, nl_variogram **out);

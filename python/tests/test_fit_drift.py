@@ -46,10 +46,25 @@ def test_covariates_spanning_the_linear_drift(data):
     assert c["objective"] > a["objective"] + 1  # the drift is there: 0.02 per unit over 100 units
 
 
+def test_wls_fits_the_residual_variogram(cli, tmp_path, data):
+    # as fit --drift with wls: the variogram of the drift's residuals
+    pts, val = data
+    path = tmp_path / "p.tsv"
+    c = np.sin(pts[:, 1] / 30)
+    np.savetxt(path, np.column_stack([pts, val, c]), delimiter="\t", header="x\ty\tvalue\tc", comments="",
+               fmt="%.17g")
+    for drift, kw in (("linear", dict(drift="linear")), ("c", dict(covariates=c)),
+                      ("linear,c", dict(drift="linear", covariates=c))):
+        j = json.loads(cli("fit", str(path), "--model", "markov", "--nugget", "--drift", drift, "--json").stdout)
+        r = noiselab.fit(pts, val, model="markov", nugget=True, **kw)
+        assert r["spec"] == j["model"]
+        np.testing.assert_allclose(r["objective"], j["objective"], rtol=1e-9)
+    assert noiselab.fit(pts, val, model="markov", nugget=True, drift="linear")["spec"] != \
+        noiselab.fit(pts, val, model="markov", nugget=True)["spec"]
+
+
 def test_refusals(data):
     pts, val = data
-    with pytest.raises(noiselab.Error, match="^drift"):
-        noiselab.fit(pts, val, model="markov", drift="linear")
     with pytest.raises(noiselab.Error, match="^drift"):
         noiselab.fit(pts, val, model="markov", method="ml", drift="cubic")
     with pytest.raises(noiselab.Error, match="^covariates"):
