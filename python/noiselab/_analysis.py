@@ -416,7 +416,7 @@ def _field_points(field, spacing):
 
 
 def variogram(points=None, values=None, field=None, spacing=1.0, width=None, cutoff=None, estimator="matheron",
-              direction=None, tolerance=None, bins="gstat", drift="constant"):
+              direction=None, tolerance=None, bins="gstat", drift="constant", covariates=None):
     """Empirical semivariogram binned as gstat's variogram(), as ``noiselab
     variogram``: of scattered data (points (n, d), values) or of a field's
     samples at index * spacing.  width: bin width (default cutoff / 15);
@@ -425,12 +425,16 @@ def variogram(points=None, values=None, field=None, spacing=1.0, width=None, cut
     (degrees); bins "gstat" ((lo, hi], h <= cutoff, the default) or "floor"
     ([lo, hi), h < cutoff); drift "linear" or "quadratic" (points): the
     variogram of the least-squares drift's residuals, gstat's variogram(z ~ x
-    + y).  Returns (distance, gamma, pairs) over the non-empty bins."""
+    + y); covariates (n, q) (points) add external covariates to that drift
+    (gstat's z ~ sqrt(dist); ``variogram --drift COLUMN``).  Returns
+    (distance, gamma, pairs) over the non-empty bins."""
     o = _vopts(width, cutoff, estimator, direction, tolerance, bins, drift)
     out = ffi.new("nl_variogram **")
     if field is not None:
         if points is not None:
             raise Error("variogram: expected points and values, or field, not both")
+        if covariates is not None:
+            raise Error("covariates: expected points and values with covariates, got a field")
         fv = FieldView(field, spacing, "variogram: field")
         _check_spread("variogram: field", fv.array)
         check(lib.nl_variogram_field(fv.f, o, out))
@@ -439,7 +443,15 @@ def variogram(points=None, values=None, field=None, spacing=1.0, width=None, cut
         _check_spread("variogram: values", v)
         P = ffi.new("nl_points *")
         P.dim, P.n, P.pts, P.val = p.shape[1], p.shape[0], _dptr(p), _dptr(v)
-        check(lib.nl_variogram_points(P, o, out))
+        if covariates is None:
+            check(lib.nl_variogram_points(P, o, out))
+        else:
+            c = np.ascontiguousarray(np.asarray(covariates, dtype=np.float64))
+            c = c.reshape(-1, 1) if c.ndim == 1 else c
+            if c.ndim != 2 or c.shape[0] != p.shape[0] or c.shape[1] == 0:
+                raise Error("covariates: expected an array of %d rows (one per point) and at least one column, got "
+                            "shape %s" % (p.shape[0], c.shape))
+            check(lib.nl_variogram_points_design(P, _dptr(c), c.shape[1], o, out))
     vg = ffi.gc(out[0], lib.nl_variogram_free)
     k = vg.nbins
     get = lambda q: np.frombuffer(ffi.buffer(q, k * 8), dtype=np.float64).copy()

@@ -63,6 +63,20 @@ def test_wls_fits_the_residual_variogram(cli, tmp_path, data):
         noiselab.fit(pts, val, model="markov", nugget=True)["spec"]
 
 
+def test_variogram_with_covariates_equals_cli(cli, tmp_path, data):
+    pts, val = data
+    c = np.sin(pts[:, 1] / 30)
+    path = tmp_path / "p.tsv"
+    np.savetxt(path, np.column_stack([pts, val, c]), delimiter="\t", header="x\ty\tvalue\tc", comments="",
+               fmt="%.17g")
+    j = json.loads(cli("variogram", str(path), "--drift", "linear,c", "--json").stdout)
+    d, g, n = noiselab.variogram(pts, val, drift="linear", covariates=c)
+    np.testing.assert_allclose(g, j["gamma"], rtol=1e-9)
+    np.testing.assert_array_equal(n, j["pairs"])
+    _, g0, _ = noiselab.variogram(pts, val, drift="linear")
+    assert not np.allclose(g, g0, rtol=1e-6)  # the covariate is in the drift
+
+
 def test_refusals(data):
     pts, val = data
     with pytest.raises(noiselab.Error, match="^drift"):
