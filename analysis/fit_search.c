@@ -207,7 +207,7 @@ typedef struct {
     double t[SR_POINTS];                     /* the scale (transformed) */
     double f[SR_POINTS];                     /* the profile -2 l there */
     double u[SR_POINTS][NL_FIT_MAX_PARAMS];  /* the parameters there */
-    int used;                                /* bit field: refined */
+    unsigned char used[SR_POINTS];           /* refined */
 } sr_grid;
 
 /* One profile point at scale t, from u's other parameters: each from the
@@ -273,7 +273,7 @@ static int next_candidate(const sr_grid *g, double f, double dt)
     for (size_t c = 0; c < g->n; c++) {
         int near = 0;
         for (size_t e = 0; e < g->n; e++)
-            near |= ((g->used >> e) & 1) && fabs(g->t[e] - g->t[c]) < dt / 8;
+            near |= g->used[e] && fabs(g->t[e] - g->t[c]) < dt / 8;
         if (!near && g->f[c] < lowest + SR_MARGIN && g->f[c] < f + SR_GAIN && (best < 0 || g->f[c] < g->f[best]))
             best = (int)c;
     }
@@ -315,7 +315,7 @@ int nl_fit_ml_search(nl_fit_mldata *d, int global, nl_fit_result *res, double *u
         for (int r = 0, c; r < SR_REFINE && (c = next_candidate(g, f, dt)) >= 0; r++) {
             double uc[NL_FIT_MAX_PARAMS], fc;
             int cc = 0;
-            g->used |= 1 << c;
+            g->used[c] = 1;
             memcpy(uc, g->u[c], k * sizeof *uc);
             fc = nl_fit_ml_refine(d, uc, 4, &cc, &res->iterations);
             res->starts++;
