@@ -203,6 +203,25 @@ double nl_model_spectrum(const nl_model *m, int dim, const double *f);
  * (the nugget, a value at one lag, has no weight in the integral). */
 double nl_model_spectrum_iso(const nl_model *m, int dim, double w);
 
+/* The continuous spectral density S at the frequency vector f[0..dim-1]
+ * (cycles per unit length; dim 1..3): two-sided, in variance per (cycles
+ * per unit)^dim, so that R(lag) = int S(f) exp(2 pi i f.lag) df and the
+ * integral of S over all frequencies is R(0) less the nugget.  The
+ * family's closed form (nl_model_spectrum) where it has one; otherwise,
+ * for a model defined by a radial profile, its d-dimensional transform by
+ * nl_model_spectrum_iso (slow: quadrature per frequency), carried through
+ * the anisotropy: with angle, ratio, zratio, S(f) = ratio zratio
+ * S_iso(|(u, ratio v, zratio w)|) where (u, v, w) is f turned by the
+ * angle (Stam and Fiume's ellipsoid, the linear map of the lag); with
+ * sep, the product of the axes' 1D spectra over R(0)^(dim-1).  A sum
+ * adds its terms' densities (nugget: 0).  NAN for a product (a
+ * convolution), an image: model, an expression of x, y, z, dim outside
+ * 1..3, a non-finite f, and where the quadrature fails (see
+ * nl_model_spectrum_iso).  Intrinsic models: their generalized density
+ * (nl_model_spectrum).  Thread safety as nl_model_spectrum (core/model.h,
+ * "Thread safety"); GSL runs under the library's guard. */
+double nl_model_spectral_density(const nl_model *m, int dim, const double *f);
+
 /* Is R a function of |lag| alone in dim > 1 (no sep, angle or ratio, and
  * for expressions no x, y, z)? */
 int nl_model_is_isotropic(const nl_model *m);

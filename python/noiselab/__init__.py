@@ -11,6 +11,8 @@ Fields the library makes are returned as arrays over its memory (no copy).
     >>> plan = noiselab.Plan("fft", acf="markov:scale=8", size=(512, 512))
     >>> fields = [plan(seed) for seed in range(100)]
     >>> lag, r = noiselab.acf(f, max_lag=16)
+    >>> m = noiselab.Model("markov:scale=8")
+    >>> m.acf([0, 8]), m.spectrum(0.01), m.periodogram_target(256)
 
 Errors raise noiselab.Error (a ValueError) with the library's one-line
 message; a bad argument (a wrong type, None, 2.7 for an integer, a number
@@ -29,6 +31,7 @@ from ._krige import CondSim, condsim
 from ._sample import sample
 from ._krige_flavours import Krige, fit  # Krige with block=, transform=, indicator=; fit with variogram=
 from ._ensemble import ensemble_acf, ensemble_hist, ensemble_psd
+from ._model import Model
 
 check = check_model  # noiselab.check, as the CLI's verb
 
@@ -36,5 +39,5 @@ __version__ = version()
 __all__ = ["Error", "Plan", "synth", "read", "write", "models", "version", "acf", "psd", "hist", "moments",
            "check", "check_model", "coeffs", "nonlin", "shape", "krige", "Krige", "CondSim", "condsim", "sample",
            "variogram", "fit", "METHODS", "methods",
-           "ensemble_acf", "ensemble_psd", "ensemble_hist",
+           "ensemble_acf", "ensemble_psd", "ensemble_hist", "Model",
            "LIBRARY_PATH"]

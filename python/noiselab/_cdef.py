@@ -73,6 +73,11 @@ double nl_model_variogram(const nl_model *m, int dim, const double *lag);
 double nl_model_acf(const nl_model *m, int dim, const double *lag);
 int nl_model_check_dim(const nl_model *m, int dim);
 int nl_model_is_reentrant(const nl_model *m);
+int nl_model_has_acf(const nl_model *m);
+int nl_model_is_isotropic(const nl_model *m);
+double nl_model_nugget(const nl_model *m);
+double nl_model_spectrum(const nl_model *m, int dim, const double *f);
+double nl_model_spectral_density(const nl_model *m, int dim, const double *f);
 typedef struct {
     const char *name;
     const char *params;
@@ -437,9 +442,12 @@ size_t nl_psd_profile_size(const nl_field *P);
 int nl_psd_profile(const nl_field *P, double *freq, double *val, size_t *cnt, size_t *nf);
 int nl_fftshift_alloc(const nl_field *P, nl_field **out);
 int nl_acf_centred_alloc(const nl_field *full, nl_field **out);
+int nl_acf_bartlett_band(const nl_field *full, size_t N, size_t maxlag, const double *val, double *lo, double *hi);
+int nl_psd_model_profile(const nl_model *m, int dim, const size_t *n, const double *h, double *val, size_t *nf);
 
 /* core/wk.h */
 int nl_wk_sample_acf(const nl_model *m, nl_field *R);
+int nl_wk_sample_spectrum(const nl_model *m, nl_field *S);
 int nl_wk_acf_to_spectrum(const nl_field *R, nl_field *S);
 
 /* analysis/hist.h */
