@@ -8,6 +8,7 @@ from ._args import (as_array, as_bool, as_choice, as_coords, as_float, as_int, a
                     as_values, refuse)
 from ._ffi import Dist, Error, FieldView, Model, alloc_field, check, ffi, lib, owned_field, planner
 from ._krige import Krige
+from ._model import Model as PublicModel, model_of
 
 _AXES = {"x": 0, "y": 1, "z": 2}
 
@@ -55,7 +56,7 @@ def _grid(grid):
 
 
 def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False, mean=None, target=None,
-        grid=None):
+        grid=None, bands=False, realizations=1):
     """Autocorrelation (autocovariance) estimate of a field, as ``noiselab acf``.
 
     field     1D, 2D (ny, nx) or 3D array of finite samples.
@@ -66,21 +67,37 @@ def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False
     radial    2D/3D: average over directions in bins one sample spacing wide.
     unbiased  divide by the number of overlapping pairs instead of N.
     mean      the known mean to remove (default: the sample mean).
-    target    a model spec: also return the model's R at each lag.
+    target    a model spec or noiselab.Model: also return the model's R at
+              each lag.
     grid      None, "wrapped" or "centred": instead of a profile, the whole
               estimate (2 n per axis; wrapped: lag i at index i, negative lags
               from the end; centred: lag 0 at the centre, as -o OUT.exr),
               as an array over the library's memory.
+    bands     True: also the 95% band of the (biased, along an axis)
+              estimate, returned in a dict (below).  With target, the
+              MODEL band: where the estimate of a field of this size falls
+              when the model is true (Model.acf_band: its expectation and
+              Bartlett's variance from the model's R).  Without, the
+              PLUG-IN band of 1D fields (nl_acf_bartlett_band): Bartlett's
+              variance with the estimate in place of R, around the estimate.
+    realizations  with bands and target: the band of the mean of this many
+              independent estimates (its half-width over sqrt(realizations)),
+              e.g. for noiselab.ensemble_acf's mean.
 
     Returns (lag, acf) or, with target, (lag, acf, target) as float64 arrays
     of max_lag/h + 1 entries (radial: NaN for an empty bin), the estimate in
-    the field's squared units (biased: sum of products / N).
+    the field's squared units (biased: sum of products / N).  With
+    bands=True a dict: lag, acf, band ("model" or "plug-in") and, for the
+    model band, target (R), expected (the estimate's expectation),
+    model_lo, model_hi; for the plug-in band plugin_lo, plugin_hi.
     """
     v = FieldView(field, spacing, "acf: field")
     x = v.f
     ax, nl = _lags(x, axis, radial, max_lag, grid)
     radial, unbiased, mu = as_bool("radial", radial), as_bool("unbiased", unbiased), _mean(mean)
-    m = None if target is None else Model(target, "target")
+    m = None if target is None else model_of(target, "target")
+    if as_bool("bands", bands):
+        _bands_check(x, radial, unbiased, grid, m, realizations)
     full = ffi.new("nl_field **")
     with planner:
         check(lib.nl_acf_full(x, mu, 1 if unbiased else 0, full))
@@ -98,9 +115,19 @@ def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False
             check(lib.nl_acf_radial(F, nl, _dptr(lag), _dptr(val), cnt))
         else:
             check(lib.nl_acf_axis(F, ax, nl - 1, _dptr(lag), _dptr(val)))
+        if bands and m is None:
+            lo, hi = np.empty(nl), np.empty(nl)
+            check(lib.nl_acf_bartlett_band(F, x.count, nl - 1, _dptr(val), _dptr(lo), _dptr(hi)))
+            return dict(lag=lag, acf=val, band="plug-in", plugin_lo=lo, plugin_hi=hi)
     finally:
         if grid != "wrapped":
             lib.nl_field_free(F)
+    if bands:
+        shape = tuple(int(x.n[a]) for a in reversed(range(x.dim)))
+        spacing = tuple(float(x.h[a]) for a in reversed(range(x.dim)))
+        b = PublicModel(target).acf_band(shape, spacing, lag[-1], axis, realizations, known_mean=mean is not None)
+        return dict(lag=lag, acf=val, band="model", target=b["target"], expected=b["expected"],
+                    model_lo=b["lo"], model_hi=b["hi"])
     if m is None:
         return lag, val
     tgt = np.empty(nl)
@@ -109,12 +136,25 @@ def acf(field, spacing=1.0, max_lag=None, axis="x", radial=False, unbiased=False
     return lag, val, tgt
 
 
+def _bands_check(x, radial, unbiased, grid, m, realizations):
+    """What acf(bands=True) takes: a profile of the biased estimate along an
+    axis; without a model, a 1D field."""
+    if radial or unbiased or grid is not None:
+        raise Error("bands: Bartlett's band is for the biased estimate along an axis; expected radial=False, "
+                    "unbiased=False and grid=None")
+    if m is None and x.dim != 1:
+        raise Error("bands: the plug-in band (no target) is for 1D fields, got %dD; give target= for the "
+                    "model's band" % x.dim)
+    if m is None and realizations != 1:
+        raise Error("realizations: the plug-in band is for one field; give target= for the band of a mean")
+
+
 def _welch(welch):
     """Welch's segment length in samples (0: none)."""
     return 0 if welch is None else as_int("welch", welch, 4, (1 << 63) - 1)
 
 
-def psd(field, spacing=1.0, welch=None, mean=None, grid=None):
+def psd(field, spacing=1.0, welch=None, mean=None, grid=None, target=None):
     """Power spectral density estimate, as ``noiselab psd``.
 
     The periodogram P(f) = (h1...hd / N) |DFT(x - mean)|^2, or with
@@ -128,10 +168,19 @@ def psd(field, spacing=1.0, welch=None, mean=None, grid=None):
     cycles per unit length.  grid="wrapped" returns the whole spectrum
     (wrapped order, numpy.fft.fftfreq's) and grid="centred" with zero
     frequency at the centre, as arrays over the library's memory.
+
+    target (a model spec or noiselab.Model) adds the model's spectrum on the
+    estimate's grid (the field's; with welch=S, S samples per axis), in the
+    same layout: returns (freq, psd, target), the column of ``noiselab psd
+    --target`` (Model.periodogram_target, Model.welch_target): the sampled
+    process's spectrum, aliasing included.
     """
     v = FieldView(field, spacing, "psd: field")
     _grid(grid)
     welch, mu = _welch(welch), _mean(mean)
+    m = None if target is None else model_of(target, "target")
+    if m is not None and grid is not None:
+        raise Error("target: a column beside the profile; expected grid=None with target, got grid=%r" % grid)
     P = ffi.new("nl_field **")
     with planner:
         if welch:
@@ -148,9 +197,15 @@ def psd(field, spacing=1.0, welch=None, mean=None, grid=None):
         k = lib.nl_psd_profile_size(P[0])
         freq, val, cnt, nf = np.empty(k), np.empty(k), ffi.new("size_t[]", max(k, 1)), ffi.new("size_t *")
         check(lib.nl_psd_profile(P[0], _dptr(freq), _dptr(val), cnt, nf))
+        if m is not None:
+            tgt, nt = np.empty(k), ffi.new("size_t *")
+            with planner:
+                check(lib.nl_psd_model_profile(m.ptr, P[0].dim, P[0].n, P[0].h, _dptr(tgt), nt))
     finally:
         if grid != "wrapped":
             lib.nl_field_free(P[0])
+    if m is not None:
+        return freq[:nf[0]], val[:nf[0]], tgt[:nf[0]]
     return freq[:nf[0]], val[:nf[0]]
 
 

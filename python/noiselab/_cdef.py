@@ -443,6 +443,8 @@ int nl_psd_profile(const nl_field *P, double *freq, double *val, size_t *cnt, si
 int nl_fftshift_alloc(const nl_field *P, nl_field **out);
 int nl_acf_centred_alloc(const nl_field *full, nl_field **out);
 int nl_acf_bartlett_band(const nl_field *full, size_t N, size_t maxlag, const double *val, double *lo, double *hi);
+int nl_acf_model_band(const nl_model *m, int dim, const size_t *n, const double *h, int axis, size_t maxlag,
+                      double *mean, double *lo, double *hi);
 int nl_psd_model_profile(const nl_model *m, int dim, const size_t *n, const double *h, double *val, size_t *nf);
 
 /* core/wk.h */

@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from . import _ffi
-from ._args import Error, _real, as_choice, as_int, as_size, as_spacing, refuse
+from ._args import Error, _real, as_bool, as_choice, as_float, as_int, as_size, as_spacing, refuse
 from ._ffi import alloc_field, check, ffi, grid_args, lib, owned_field, planner
 
 _AXES = {"x": 0, "y": 1, "z": 2}
@@ -244,3 +244,47 @@ class Model:
         dim, n, hh = grid_args((s,) * len(shape), h)
         self._check_dim("size", dim)
         return self._profile(dim, n, hh)
+
+    def acf_band(self, size, spacing=1.0, max_lag=None, axis="x", realizations=1, known_mean=False):
+        """Where noiselab.acf's (biased) estimate of a field of `size` (N,
+        (ny, nx) or (nz, ny, nx)) at `spacing` falls along `axis` when the
+        model is true (nl_acf_model_band): its expectation and 95% band,
+        with Bartlett's variance (1946) from the model's R,
+            Var c(k) ~ (1/N) sum_v [R(v)^2 + R(v + k) R(v - k)]
+        over the lag vectors of the grid.  realizations=K: the band of the
+        mean of K independent estimates (noiselab.ensemble_acf's), its
+        half-width over sqrt(K).  The expectation is (1 - k/n)(R(k) -
+        Var(sample mean)) (acf's default, the sample mean removed), or with
+        known_mean=True (acf's mean=) (1 - k/n) R(k).  max_lag in length
+        units (default a quarter of the axis, as acf).  Bartlett's formula
+        is a large-N approximation: good while max_lag and the correlation
+        length are small against the axis.
+
+        Returns a dict of arrays over lags 0..max_lag/h: lag (length units),
+        target (R), expected, lo, hi."""
+        shape, h, (dim, n, hh) = _grid(size, spacing)
+        ax = _AXES[as_choice("axis", axis, tuple(_AXES))]
+        if ax >= dim:
+            raise Error('axis: the field is %dD, got axis "%s"' % (dim, axis))
+        n_ax, h_ax = int(n[ax]), float(hh[ax])
+        if max_lag is None:
+            k = n_ax // 4
+        else:
+            ml = as_float("max_lag", max_lag, 0.0)
+            k = int(math.floor(ml / h_ax + 1e-9))
+            if k >= n_ax:
+                raise Error("max_lag: expected at most %g for %d samples, got %g" % ((n_ax - 1) * h_ax, n_ax, ml))
+        K = as_int("realizations", realizations, 1, (1 << 63) - 1)
+        known = as_bool("known_mean", known_mean)
+        self._check_dim("size", dim)
+        mean, lo, hi = np.empty(k + 1), np.empty(k + 1), np.empty(k + 1)
+        with planner:
+            check(lib.nl_acf_model_band(self._m.ptr, dim, n, hh, ax, k, _dptr(mean), _dptr(lo), _dptr(hi)))
+        lag = np.arange(k + 1) * h_ax
+        tgt = np.empty(k + 1)
+        with planner:
+            check(lib.nl_acf_model_values(self._m.ptr, dim, n, hh, ax, _dptr(lag), k + 1, _dptr(tgt)))
+        half = (hi - mean) / math.sqrt(K)
+        if known:
+            mean = (n_ax - np.arange(k + 1)) / n_ax * tgt
+        return dict(lag=lag, target=tgt, expected=mean, lo=mean - half, hi=mean + half)
