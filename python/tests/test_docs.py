@@ -26,7 +26,7 @@ def test_readme_python_example(tmp_path, monkeypatch):
 
 def test_python_page(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    errors, kriging, ensemble, plot = blocks("docs/python.md")
+    errors, kriging, ensemble, plot = blocks("docs/python.md")[:4]
     ns = {}
     exec(compile(errors, "docs/python.md", "exec"), ns)
     exec(compile(kriging, "docs/python.md", "exec"), ns)
@@ -36,3 +36,15 @@ def test_python_page(tmp_path, monkeypatch):
     pytest.importorskip("matplotlib")
     exec(compile(plot, "docs/python.md", "exec"), ns)
     assert os.path.getsize("acf-ensemble.png") > 0
+
+
+@pytest.mark.parametrize("which", ["acf-band", "periodogram-welch", "nonlinearity"])
+def test_model_demos(tmp_path, monkeypatch, which):
+    """The three demonstrations of "The model itself": each short (at most
+    15 lines, imports included) and each asserting what it shows."""
+    monkeypatch.chdir(tmp_path)
+    demos = blocks("docs/python.md")[4:7]
+    code = demos[["acf-band", "periodogram-welch", "nonlinearity"].index(which)]
+    assert len(code.strip().splitlines()) <= 15
+    assert "assert" in code
+    exec(compile(code, "docs/python.md", "exec"), {})
