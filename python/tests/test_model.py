@@ -62,6 +62,8 @@ def test_acf_anisotropic():
     np.testing.assert_allclose(s3.acf(v), np.exp(-(v[:, 0] / 3) ** 2 - (v[:, 1] / 1.5) ** 2 - (v[:, 2] / 0.75) ** 2),
                                rtol=1e-13)
     assert not m2.isotropic and noiselab.Model("markov").isotropic
+    # a 1D array of lags in dim dimensions: vectors along x
+    np.testing.assert_array_equal(m3.acf([1.5, -2.0], dim=3), m3.acf(np.array([[1.5, 0, 0], [-2.0, 0, 0]])))
 
 
 @pytest.mark.parametrize("d", [1, 2, 3])
