@@ -152,7 +152,9 @@ class Model:
         nugget (white noise has no density off a grid; spectrum_grid
         includes it).  The family's closed form where it has one, else the
         d-dimensional (Hankel) transform of the radial profile through the
-        anisotropy (quadrature: about a millisecond a frequency).  Refused
+        anisotropy (quadrature: under a millisecond a frequency near the
+        band of R's decay, up to a second a thousand times beyond it, where
+        it eventually fails and is refused).  Refused
         where there is no such density (products, image:, expressions of
         x, y, z): spectrum_grid gives the spectrum the synthesis samples."""
         out, v, d = self._eval(lib.nl_model_spectral_density, "freqs", freqs, dim)
