@@ -57,7 +57,7 @@ def _grid(size, spacing):
 
 class Model:
     """A model spec (``noiselab models``; e.g. "markov:scale=8",
-    "gauss:scale=3;ratio=0.5,angle=30", "nugget:var=0.1 + spherical:scale=9",
+    "gauss:scale=3,ratio=0.5,angle=30", "nugget:var=0.1 + spherical:scale=9",
     "power:d=2.5", "spectrum:exp(-f^2)") and what follows from it.
 
     Units and conventions (core/model.h, core/wk.h): lags in the spec's
@@ -92,7 +92,8 @@ class Model:
 
     def dim_valid(self, dim):
         """Can the model be used in dim (1..3) dimensions (nl_model_check_dim:
-        e.g. spherical is not positive definite in 4D, image: has no 3D)?"""
+        e.g. hyperspherical:dim=2 is not positive definite in 3D, image: has
+        no 3D table)?"""
         dim = as_int("dim", dim, 1, 3)
         return lib.nl_model_check_dim(self._m.ptr, dim) == 0
 
@@ -250,17 +251,21 @@ class Model:
     def acf_band(self, size, spacing=1.0, max_lag=None, axis="x", realizations=1, known_mean=False):
         """Where noiselab.acf's (biased) estimate of a field of `size` (N,
         (ny, nx) or (nz, ny, nx)) at `spacing` falls along `axis` when the
-        model is true (nl_acf_model_band): its expectation and 95% band,
-        with Bartlett's variance (1946) from the model's R,
-            Var c(k) ~ (1/N) sum_v [R(v)^2 + R(v + k) R(v - k)]
-        over the lag vectors of the grid.  realizations=K: the band of the
-        mean of K independent estimates (noiselab.ensemble_acf's), its
-        half-width over sqrt(K).  The expectation is (1 - k/n)(R(k) -
-        Var(sample mean)) (acf's default, the sample mean removed), or with
-        known_mean=True (acf's mean=) (1 - k/n) R(k).  max_lag in length
-        units (default a quarter of the axis, as acf).  Bartlett's formula
-        is a large-N approximation: good while max_lag and the correlation
-        length are small against the axis.
+        model is true and the field Gaussian (analysis/acf.h
+        nl_acf_model_band): its expectation, exact with the sample mean
+        removed (acf's default; about (1 - k/n)(R(k) - Var(sample mean))),
+        and its 95% band, expectation -+ 1.96 sd, with Bartlett's variance
+        (1946) from the model's R summed over the grid's lag vectors with
+        the field's pair counts,
+            Var c(k) = (1/N^2) sum_v w_k(v) [R(v)^2 + R(v + k) R(v - k)],
+        (1/N) sum_v [...] for a field much longer than k and R's decay.
+        realizations=K: the band of the mean of K independent estimates
+        (noiselab.ensemble_acf's), its half-width over sqrt(K).
+        known_mean=True (acf's mean=): the expectation (1 - k/n) R(k); the
+        half-width stays the sample mean's, smaller than the known mean's
+        by a relative O((Var(sample mean) / R(0))^2).  max_lag in length
+        units (default a quarter of the axis, as acf).  Costs O(2^d N
+        max_lag) evaluations of a table: 1.5 s for 256 x 256 to lag 64.
 
         Returns a dict of arrays over lags 0..max_lag/h: lag (length units),
         target (R), expected, lo, hi."""
