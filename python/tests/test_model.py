@@ -257,3 +257,12 @@ def test_spectral_only_and_dims():
 def test_bad_input(call, name):
     with pytest.raises(noiselab.Error, match=name):
         call()
+
+
+def test_grids_are_nonlins_input():
+    """spectrum_grid and acf_grid are what nonlin samples as its input (the
+    same library calls on the same grid): bit for bit."""
+    d = noiselab.nonlin("matern:nu=1.5,scale=5", "uniform", size=512, spacing=0.5)
+    m = noiselab.Model("matern:nu=1.5,scale=5")
+    np.testing.assert_array_equal(m.spectrum_grid(512, 0.5)[:257], d["input_psd"])
+    np.testing.assert_array_equal(m.acf_grid(512, 0.5)[:257], d["input_acf"])
