@@ -90,7 +90,8 @@ int main(int argc, char **argv)
                 "deviation %.2f units of the last printed digit, 1e-6); of the variances, %d of 10 differ in the "
                 "last printed digit, by up to %.0f units (%.2g absolute, at level 0 99.999948 "
                 "against 99.999947). The paper's arithmetic is not stated; single precision, 2^-24 ≈ 6e-8 "
-                "relative (6e-6 at 100), cannot carry the 8 significant digits printed. s_0 = 15.001 and "
+                "relative (6e-6 at 100), cannot carry all the digits printed (8 significant ones near 100). "
+                "s_0 = 15.001 and "
                 "14.999 give max |Δa| = %.2g and %.2g, max relative Δvariance = %.2g and %.2g.\n\n",
             da, dv, da <= 1e-6 && dv <= 1e-5 ? "pass" : "FAIL", ma, za * 1e6, mv, zva * 1e6, zva, xa, ya, xvr, yvr);
     fprintf(fp, "## Lewis 1987, Table 2\n\n> Midface vertex coefficients over a 4×4 neighborhood for one "
