@@ -112,8 +112,8 @@ The Gaussian texture is drawn with correlated displacements (\`--displacements c
 with Lewis's independent displacements it shows 45-degree grid artefacts (left below).
 Measured over seeds 2-9, the ACF at lag 10 along the axes over R(0) against that along the
 diagonals: independent displacements $xind against $gind, correlated $xcor against $gcor,
-exact FFT synthesis $xfft against $gfft (the model's exp(-1) = 0.368; the biased estimator and
-the mean's removal lower all three alike). The anisotropy A (axes minus diagonals) is $aind
+exact FFT synthesis $xfft against $gfft (the model's exp(-1) = 0.368: the biased estimator and
+the removal of the sample mean put the measurement below it, by as much as the FFT row shows). The anisotropy A (axes minus diagonals) is $aind
 independent, $acor correlated, $afft FFT, where one FFT field's A wanders with standard
 deviation $sfft: Lewis's construction is off by $indsd of those (its ACF is higher along the
 diagonals), a defect one picture shows
