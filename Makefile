@@ -175,6 +175,7 @@ test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST
 	NOISELAB_FFTW=estimate sh tests/par.sh "SHARD=0/2 sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite" \
 	    "SHARD=1/2 sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite"
 	NOISELAB_FFTW=estimate sh tests/par.sh "SHARD=0/2 sh tests/doc/run.sh $(BINDIR)" "SHARD=1/2 sh tests/doc/run.sh $(BINDIR)"
+	sh tests/plots/run.sh
 	$(if $(findstring sanitize,$(OPT)),@echo "python: skipped (a sanitized library does not load into $(PYTHON))",NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) $(PYTHON) -m pytest -q -p no:cacheprovider python/tests)
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures

@@ -50,14 +50,7 @@ awk 'NR > 1 { pi = atan2(0, -1); p = ($3 + 90) * pi / 180
     w = (60 * ($1 / 512 - 0.5) + 30 * sin(pi * $2 / 512) + atan2(1, 3) * 180 / pi + 90) * pi / 180
     printf "%g %g %g %g %g %g\n", $1, $2, 24 * cos(p), 24 * sin(p), 24 * cos(w), 24 * sin(w) }' \
     "$d/waves-rot-orient.tsv" > "$d/waves-rot-vec.txt"
-gnuplot -e "set terminal pngcairo size 1000,530 font 'DejaVu Sans,11'; set output '$dir/gi86-rotating-kernel.png';
-    set multiplot layout 1,2; unset key; unset tics; unset border; set size ratio -1;
-    set title 'kernel rotated by theta(x, y), shaded';
-    plot '$d/waves-rot.png' binary filetype=png with rgbimage;
-    set xrange [0:512]; set yrange [512:0]; set border; set title 'crest direction: prescribed (black), measured (red)';
-    plot '$d/waves-rot-vec.txt' using (\$1-\$5/2):(\$2-\$6/2):5:6 with vectors nohead lw 3 lc rgb 'black',
-         '' using (\$1-\$3/2):(\$2-\$4/2):3:4 with vectors nohead lw 1.5 lc rgb 'red';
-    unset multiplot"
+gnuplot -e "img='$d/waves-rot.png'; vec='$d/waves-rot-vec.txt'; out='$dir/gi86-rotating-kernel.png'" "$top/plots/rotating_kernel.gp"
 # verdict 2: the measured directions follow the prescribed field: median
 # error at most twice the stationary texture's (the estimator's own scatter
 # on the same kernel, same windows) and at most 6 degrees, while the
@@ -69,15 +62,7 @@ v2=$(awk -v r="$erot" -v s="$estat" -v n="$enone" 'BEGIN { print ((r <= 2 * s &&
 # samples, 4 impulses each (the density of the textures above)
 set -- $("$xb/sparse_depth" 'cos(x/10+3*y/10)*exp(-r/10)' 64 32 4 400x225 3 "$d/depth")
 nfar=$1 rref=$2 eplain=$3 eband=$4
-gnuplot -e "set terminal pngcairo size 700,1100 font 'DejaVu Sans,11'; set output '$dir/gi86-depth-bandlimit.png';
-    set multiplot layout 3,1; unset key; unset tics; unset border; set size ratio -1;
-    set title 'point-sampled kernel: aliasing towards the horizon';
-    plot '$d/depth-plain.png' binary filetype=png with rgbimage;
-    set title 'band-limited kernels chosen by depth (5 levels, sigma = footprint / 2)';
-    plot '$d/depth-band.png' binary filetype=png with rgbimage;
-    set title 'reference: each pixel the mean of up to 16 x 16 point samples';
-    plot '$d/depth-ref.png' binary filetype=png with rgbimage;
-    unset multiplot"
+gnuplot -e "plain='$d/depth-plain.png'; band='$d/depth-band.png'; ref='$d/depth-ref.png'; out='$dir/gi86-depth-bandlimit.png'" "$top/plots/depth_bandlimit.gp"
 # verdict 3: where a pixel spans 8 to 64 samples of the plane, band-limiting
 # at least halves the rms difference from the reference
 v3=$(awk -v p="$eplain" -v b="$eband" 'BEGIN { print ((b <= 0.5 * p) ? "pass" : "FAIL") }')

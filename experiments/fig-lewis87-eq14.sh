@@ -13,10 +13,10 @@ gnuplot <<GP
 set terminal pngcairo size 800,460 font "DejaVu Sans,11"
 set output '$dir/lewis87-eq14.png'
 set title "Eq. (14): R = cos(6r) exp(-r) as a radial profile, and the 2D correlation its 1D profile sweeps to"
-set xlabel "lag r"; set ylabel "correlation"
+set xlabel "lag r (units of the scale, 1)"; set ylabel "correlation (R(0) = 1)"
 set grid
 set yrange [-0.8:1.05]
-plot '$d/eq14.tsv' using 1:2 with linespoints pt 7 ps 0.6 lw 2 title "R(r) swept radially (not positive definite in 2D)", \
+plot '$d/eq14.tsv' using 1:2 with linespoints pt 7 ps 0.6 lw 2 title "R(r) swept radially (ωs = 6 > 1: not positive definite in 2D)", \
      '' using 1:3 with linespoints pt 5 ps 0.6 lw 2 title "C_2(r), eq. (14): valid in 2D", \
      -0.5 with lines dt 2 lc rgb "red" title "-1/2: the bound for isotropic 2D"
 GP

@@ -11,13 +11,16 @@ set output '$dir/lewis87-trimesh.png'
 set multiplot layout 1,2 title "Anisotropy of the exact ACF, exp(-r/3): ACF minus its own profile along the first mesh axis at the same distance"
 set size ratio -1
 set xrange [-10.5:10.5]; set yrange [-10.5:10.5]
-set xlabel "lag x"; set ylabel "lag y"
+set xlabel "lag x (fine-mesh spacings)"; set ylabel "lag y (fine-mesh spacings)"
 set palette defined (-1 "#1f4e99", 0 "white", 1 "#b22222")
 set cbrange [-0.012:0.012]
+set cblabel "ACF difference (R(0) = 1)"
 set key off
+unset colorbox
 set title "quadrilateral mesh, 4x4 block (16 points)"
 plot '$d/trimesh-quad.tsv' index 1 using 1:2:3 with points pt 5 ps 1.6 palette
-set title "triangular mesh, 18 nearest points"
+set colorbox
+set title "triangular mesh, 18 nearest points (one colour scale for both)"
 plot '$d/trimesh-tri.tsv' index 2 using 1:2:3 with points pt 7 ps 1.5 palette
 unset multiplot
 GP

@@ -6,8 +6,11 @@
  * the lattice's trigonometric series on a W x W grid (nl_rank1_grid, one
  * 2D FFT through the wave vectors, the other coordinates fixed).
  *
- * usage: keller_spacetime OUT.png -> a montage (rows: 3D and 4D lattice;
- * columns: t = 0, 0.04, ..., 0.16 of the period), and on stdout, per
+ * usage: keller_spacetime PREFIX -> the slices PREFIX-S-C.png (S = 3, 4:
+ * the lattice's dimension; C = 0..4: t = 0, 0.04, ..., 0.16 of the
+ * period), W x W grey pictures of the field over its standard deviation
+ * from -2.5 (black) to 2.5 (white), x and y over one period (plots/
+ * spacetime.gp puts them together with axes), and on stdout, per
  * lattice, N, the number of slices, the largest difference between a slice
  * and the direct series at 97 pixels each, and between the slices at t = 0
  * and t = 1 (the field is periodic in time), both relative to sum |c_m|
@@ -23,7 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { W = 128, GAP = 4, COLS = 5 };
+enum { W = 128, COLS = 5 };
 
 static double spectrum(const long *k, int s, void *ctx)
 {
@@ -33,8 +36,8 @@ static double spectrum(const long *k, int s, void *ctx)
     return pow(sqrt(M_PI) * L, s) * exp(-M_PI * M_PI * L * L * k2);
 }
 
-/* One row of the montage; returns 0, 1 (a bound failed) or 2. */
-static int row(int s, size_t N, double L, int r, nl_field *mont)
+/* The slices of one lattice; returns 0, 1 (a bound failed) or 2. */
+static int row(int s, size_t N, double L, const char *prefix, nl_field *slice)
 {
     nl_rank1_lattice lat;
     double *c = malloc(2 * N * sizeof *c), *img = malloc(W * W * sizeof *img), *first = malloc(W * W * sizeof *first),
@@ -66,8 +69,14 @@ static int row(int s, size_t N, double L, int r, nl_field *mont)
             nl_rank1_eval(&lat, c, 1.0, 1, x, &v, NULL, NULL);
             err = fmax(err, fabs(v - img[q]));
         }
+        char path[4096];
         for (size_t q = 0; q < W * W; q++)
-            mont->data[((size_t)r * (W + GAP) + q / W) * mont->n[0] + (size_t)col * (W + GAP) + q % W] = img[q] / sqrt(var);
+            slice->data[q] = img[q] / sqrt(var);
+        snprintf(path, sizeof path, "%s-%d-%d.png", prefix, s, col);
+        if (nl_png_write_field(path, slice, -2.5, 2.5)) {
+            fprintf(stderr, "keller_spacetime: %s\n", nl_errmsg());
+            return 2;
+        }
     }
     printf("%dD lattice N %zu scale %g: %d slices, slice vs series %.1e, t = 1 vs t = 0 %.1e (of sum |c| = %.3g)\n", s, N,
            L, COLS, err / sum, per / sum, sum);
@@ -78,22 +87,16 @@ static int row(int s, size_t N, double L, int r, nl_field *mont)
 int main(int argc, char **argv)
 {
     if (argc != 2) {
-        fprintf(stderr, "usage: keller_spacetime OUT.png\n");
+        fprintf(stderr, "usage: keller_spacetime PREFIX\n");
         return 2;
     }
-    size_t n[2] = {COLS * (W + GAP) - GAP, 2 * (W + GAP) - GAP};
+    size_t n[2] = {W, W};
     int st = 0, r;
-    nl_field *mont = nl_field_alloc(2, n, NULL, &st);
-    if (!mont)
+    nl_field *slice = nl_field_alloc(2, n, NULL, &st);
+    if (!slice)
         return 2;
-    for (size_t q = 0; q < mont->count; q++)
-        mont->data[q] = 3;  /* white gaps */
-    if ((r = row(3, 8192, 0.12, 0, mont)) > 1 || (st = row(4, 16384, 0.16, 1, mont) | r) > 1)
+    if ((r = row(3, 8192, 0.12, argv[1], slice)) > 1 || (st = row(4, 16384, 0.16, argv[1], slice) | r) > 1)
         return 2;
-    if (nl_png_write_field(argv[1], mont, -2.5, 2.5)) {
-        fprintf(stderr, "keller_spacetime: %s\n", nl_errmsg());
-        return 2;
-    }
-    nl_field_free(mont);
+    nl_field_free(slice);
     return st;
 }

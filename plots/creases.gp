@@ -8,6 +8,8 @@ unset key
 set xrange [0:4096]
 set format y ""
 set ytics ()
+set xlabel "position (samples)"
+set ylabel "height (arbitrary units)"
 set title "midpoint displacement, H = 0.8 (f^{-2.6}): creases at the vertices of early levels"
 plot mp every ::0::4096 using 0:2 with lines lc rgb "#b22222"
 set title "generalized subdivision (N = 2) to power:d=2.6"
@@ -18,7 +20,8 @@ set format y "%g"
 set ytics auto
 set yrange [0:*]
 set xlabel "level"
-set key top right
+set ylabel "curvature ratio (1 = no crease)"
+set key top left
 set style data linespoints
 plot rmp using 1:2 lw 2 pt 7 lc rgb "#b22222" title "midpoint displacement", \
      rgs using 1:2 lw 2 pt 5 lc rgb "#1f4e99" title "generalized subdivision", \

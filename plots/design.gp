@@ -2,7 +2,7 @@
 set terminal pngcairo size 1100,450 font "DejaVu Sans,11"
 set output out
 set multiplot layout 1,2
-set grid; set key top right; set xlabel "lag"
+set grid; set key top right; set xlabel "lag (samples)"; set ylabel "autocovariance (variance at lag 0)"
 set title "target exp(-|t|/8) after a Laplace shaping"
 plot a using 1:2 with lines lw 3 lc rgb "black" title "target", \
      a using 1:($3*2) with lines dt 2 lc rgb "#1f4e99" title "designed input (x var)", \

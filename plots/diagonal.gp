@@ -5,8 +5,8 @@ set terminal pngcairo size 1100,520 font "DejaVu Sans,10"
 set output out
 set multiplot layout 1,2
 set size ratio -1
-set xlabel "lag x"
-set ylabel "lag y"
+set xlabel "lag x (samples)"
+set ylabel "lag y (samples)"
 set xrange [-20:20]
 set yrange [-20:20]
 set title "exact ACF (solid) and target exp(-r/12) (dashed), N = 2"

@@ -1,6 +1,7 @@
 # The planar quadrilateral mesh with a 4x4 neighbourhood (GI '86, Fig. 2):
 # observation points '.' labelled with their coefficients, the mid-face 'x'
 # (left) and the mid-edge 'o' (right).
+# picture: a diagram of the mesh, its grid lines one spacing apart; no axes
 # gnuplot -e "face='F.txt'; edge='E.txt'; out='O.png'" plots/mesh.gp
 set terminal pngcairo size 1100,560 font "DejaVu Sans,11"
 set output out

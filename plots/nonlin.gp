@@ -5,6 +5,8 @@ set output out
 set multiplot layout 2,2
 unset key
 set xrange [0:400]
+set xlabel "t (samples)"
+set ylabel "value (standard deviation 1)"
 set title "band-pass Gaussian noise (input)"
 plot d.'/nl-in.tsv' every ::0::400 using 1:2 with lines lc rgb "#1f4e99"
 set title "after the pair of nonlinearities (hyperbolic density)"
@@ -14,6 +16,7 @@ set logscale y
 set format y "10^{%L}"
 set yrange [1e-6:*]
 set xlabel "frequency (cycles per sample)"
+set ylabel "power spectral density (two-sided)"
 set key top right
 set title "input spectrum"
 plot d.'/nl-psd-in.tsv' using 1:2 with lines lc rgb "#1f4e99" title "measured (8 realizations)", \

@@ -1,4 +1,5 @@
 # Two pictures side by side. gnuplot -e "f1='A.png'; f2='B.png'; t1='..'; t2='..'; out='O.png'" plots/pair.gp
+# picture: two images side by side, their size in the caption; no axes
 set terminal pngcairo size 1000,530 font "DejaVu Sans,11"
 set output out
 set multiplot layout 1,2

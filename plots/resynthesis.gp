@@ -13,9 +13,9 @@ do for [i = 1:nrow] {
     plot sprintf("%s/rs-%s.png", dir, n) binary filetype=png with rgbimage
     set size noratio; set border; set tics; set key bottom left
     set logscale xy; set format y "10^{%L}"
-    set xlabel "frequency (cycles per pixel)"; set title "radial power spectra"
+    set xlabel "frequency (cycles per pixel)"; set ylabel "power (radial mean, two-sided)"; set title "radial power spectra"
     plot sprintf("%s/rs-%s-ex.tsv", dir, n) using 1:2 with lines lw 2 lc rgb "black" title "exemplar", \
          sprintf("%s/rs-%s.tsv", dir, n) using 1:2 with lines lw 1.5 lc rgb "#b22222" title "resynthesis"
-    unset logscale; unset xlabel; set format y "%g"
+    unset logscale; unset xlabel; unset ylabel; set format y "%g"
 }
 unset multiplot

@@ -1,4 +1,5 @@
 # A field as a sky: low values blue, high values white (clouds).
+# picture: a field shown as a sky, its extent in the caption; no axes
 # gnuplot -e "data='M.txt'; title_text='T'; out='O.png'" plots/sky.gp
 set terminal pngcairo size 900,420 font "DejaVu Sans,11"
 set output out

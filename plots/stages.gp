@@ -5,6 +5,7 @@ set output out
 set title title_text
 unset key
 set xlabel "t"
+set ylabel "value (R(0) = 1), each level 5 below the one above"
 unset ytics
 set border 1
 set xtics nomirror

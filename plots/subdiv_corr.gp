@@ -5,7 +5,7 @@ set terminal pngcairo size 1100,420 font "DejaVu Sans,10"
 set output out
 set multiplot layout 1,2
 set key top right
-set xlabel "lag"
+set xlabel "lag (units of t)"
 set ylabel "R / R(0)"
 set grid
 do for [i = 0:1] {

@@ -4,7 +4,7 @@ set terminal pngcairo size 1100,700 font "DejaVu Sans,10"
 set output out
 set multiplot layout 2,2
 set key top right
-set xlabel "lag"
+set xlabel "lag (units of t)"
 set ylabel "R / R(0)"
 set grid
 titles = "markov:scale=8 markaussian:alpha=1.4,scale=8 100cos(10t)exp(-|t|) gauss-osc:omega=10"

@@ -1,4 +1,5 @@
 # A height field in perspective with lighting (pm3d).
+# picture: a perspective view, scale given in the caption; no axes
 # gnuplot -e "data='M.txt'; title_text='T'; out='O.png'; zs=1" plots/terrain.gp
 set terminal pngcairo size 1000,640 font "DejaVu Sans,11"
 set output out
