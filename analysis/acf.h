@@ -110,6 +110,35 @@ int nl_acf_bartlett(const double *c, size_t nc, size_t N, size_t maxlag, double 
  * 1D, or n < 2 maxlag + 1 samples) or NL_ENOMEM. */
 int nl_acf_bartlett_band(const nl_field *full, size_t N, size_t maxlag, const double *val, double *lo, double *hi);
 
+/* The model's band: what the biased estimate (sample mean removed, as
+ * nl_acf_full with mean NAN) of a dim-D field of n[0..dim-1] samples of
+ * spacing h (NULL: unit) gives at lags k = 0..maxlag samples along axis
+ * when the field is a Gaussian realisation of the model.  With N = prod n_a,
+ * R(k) the model's R at k h_axis along axis, V = Var(sample mean) =
+ * (1/N^2) sum_v prod_a (n_a - |v_a|) R(v) and g(j) = Cov(x_j, sample mean):
+ *     mean[k] = E c(k) = (1 - k/n_axis)(R(k) + V) - (2/N) sum_{j in O_k} g(j)
+ * exactly (O_k: the N (1 - k/n_axis) samples with a partner at +k), i.e.
+ * (1 - k/n_axis) R(k) less O(V) (white noise: -(1 - k/n) var / N, k > 0);
+ * lo, hi = mean -+ 1.959964 sd with Bartlett's variance (1946) summed over
+ * lag vectors r with the model's R and the finite field's pair counts,
+ *     Var c(k) = (1/N^2) sum_r (n_axis - k - |r_axis|)+ prod_{a != axis}
+ *                (n_a - |r_a|) [R(r)^2 + R(r + k e) R(r - k e)],
+ * exact for a known mean (Isserlis; white noise: (1 - k/n) var^2 / N for
+ * k > 0, 2 var^2 / N at 0), less 2 (1 - k/n_axis)^2 V^2 for the sample
+ * mean (to first order; exact at k = 0 for white noise, 2 var^2 (N-1)/N^2).
+ * Against 4000 AR(1) series (markov:scale=2.5, n = 256) the mean agrees
+ * within the Monte-Carlo error and the sd within 1.7% (its error 1.1%).
+ * The band is the estimate's expected
+ * spread around the model, not around the estimate (nl_acf_bartlett_band).
+ * Units: those of R (variance).  Costs O(2^dim N maxlag) evaluations and
+ * a grid of 2^dim N doubles.  Spectral models are sampled as R on the
+ * periodic grid of 2 n_a per axis (core/wk.h).  mean, lo and hi hold
+ * maxlag + 1 entries.  Returns NL_OK, NL_EINVAL (dim not 1..3, axis out
+ * of range, maxlag >= n_axis, the model not defined in dim or not
+ * stationary), NL_ETOOBIG / NL_ENOMEM, or the codes of nl_wk_sample_acf. */
+int nl_acf_model_band(const nl_model *m, int dim, const size_t *n, const double *h, int axis, size_t maxlag,
+                      double *mean, double *lo, double *hi);
+
 /* The model's R at lag[i] (length units) along axis of a dim-D field of
  * n[0..dim-1] samples with spacing h[0..dim-1], for the nl values of lag.
  * R models are evaluated at the lag (NAN for a non-finite lag); spectral
