@@ -102,21 +102,37 @@ static double expectation(const lag_grid *g, const double *M, double V, double N
  * (x_j - m)(x_{j+k} - m) over the overlap is about the known-mean sum less
  * P m^2, and with Cov(x_s x_t, m^2) ~ 2 V^2 and Var(m^2) = 2 V^2 (Gaussian)
  * that takes 2 (1 - k/n)^2 V^2 off the variance (exact at k = 0 for white
- * noise: N c(0) / var is chi-square with N - 1 degrees of freedom). */
-static double variance(const lag_grid *g, const double *Q, double V, double N, long k)
+ * noise: N c(0) / var is chi-square with N - 1 degrees of freedom).  Row
+ * by row along the axis, var[k] for k = 0..maxlag. */
+static int variances(const lag_grid *g, const double *Q, double V, double N, long maxlag, double *var)
 {
     long n = g->n[g->axis], nb = g->n[g->b], nc = g->n[g->c];
-    double s = 0;
-    for (long r = -(n - k - 1); r <= n - k - 1; r++) {
-        double wr = (double)(n - k - labs(r)), cross = 0;
-        for (long wc = -(nc - 1); wc <= nc - 1; wc++)
-            for (long wb = -(nb - 1); wb <= nb - 1; wb++)
-                cross += (double)((nb - labs(wb)) * (nc - labs(wc))) * at_axis(g, r + k, wb, wc) *
-                         at_axis(g, r - k, wb, wc);
-        s += wr * (Q[r + n - 1] + cross);
+    double *row = malloc((size_t)(2 * n - 1) * sizeof *row), *mid = row + n - 1;
+    if (!row)
+        return NL_ERROR(NL_ENOMEM, "out of memory for the model band");
+    for (long k = 0; k <= maxlag; k++)
+        var[k] = 0;
+    for (long wc = -(nc - 1); wc <= nc - 1; wc++)
+        for (long wb = -(nb - 1); wb <= nb - 1; wb++) {
+            double w = (double)((nb - labs(wb)) * (nc - labs(wc)));
+            for (long r = -(n - 1); r <= n - 1; r++)
+                mid[r] = at_axis(g, r, wb, wc);
+            for (long k = 0; k <= maxlag; k++) {
+                double s = 0;
+                for (long r = -(n - k - 1); r <= n - k - 1; r++)
+                    s += (double)(n - k - labs(r)) * mid[r + k] * mid[r - k];
+                var[k] += w * s;
+            }
+        }
+    for (long k = 0; k <= maxlag; k++) {
+        double f = 1 - (double)k / (double)n, s = var[k];
+        for (long r = -(n - k - 1); r <= n - k - 1; r++)
+            s += (double)(n - k - labs(r)) * Q[r + n - 1];
+        s = s / (N * N) - 2 * f * f * V * V;
+        var[k] = s > 0 ? s : 0;
     }
-    s = s / (N * N) - 2 * (1 - (double)k / (double)n) * (1 - (double)k / (double)n) * V * V;
-    return s > 0 ? s : 0;
+    free(row);
+    return NL_OK;
 }
 
 int nl_acf_model_band(const nl_model *m, int dim, const size_t *n, const double *h, int axis, size_t maxlag,
@@ -148,11 +164,12 @@ int nl_acf_model_band(const nl_model *m, int dim, const size_t *n, const double 
     for (long r = -(na - 1); r <= na - 1; r++)
         V += (double)(na - labs(r)) * M[r + na - 1];
     V /= N * N;
-    for (size_t k = 0; k <= maxlag; k++) {
-        double e = expectation(&g, M, V, N, (long)k), sd = sqrt(variance(&g, Q, V, N, (long)k));
-        mean[k] = e, lo[k] = e - 1.959964 * sd, hi[k] = e + 1.959964 * sd;
-    }
+    if ((st = variances(&g, Q, V, N, (long)maxlag, hi)) == NL_OK)
+        for (size_t k = 0; k <= maxlag; k++) {
+            double e = expectation(&g, M, V, N, (long)k), sd = sqrt(hi[k]);
+            mean[k] = e, lo[k] = e - 1.959964 * sd, hi[k] = e + 1.959964 * sd;
+        }
     free(M);
     nl_field_free(g.R);
-    return NL_OK;
+    return st;
 }
