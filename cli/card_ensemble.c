@@ -169,9 +169,10 @@ static void write_hist(const cli_card *c, const rows_t *r, const nl_field *x, co
     FILE *fp = cli_card_open(c, "hist.tsv");
     fprintf(fp, "x\tdensity\tgauss\tmodel\tlo\thi\tse\n");
     for (int b = 0; b < B; b++) {
-        double mid = 0.5 * (r->edges[b] + r->edges[b + 1]), z = (mid - mu) / s, h = 1.959964 * sd[b] / sqrt((double)r->K);
-        fprintf(fp, "%.8g\t%.8g\t%.8g\t%.8g\t%.8g\t%.8g\t%.8g\n", mid, mean[b], exp(-0.5 * z * z) / (s * sqrt(2 * M_PI)),
-                md[b], fmax(0, md[b] - h), md[b] + h, se[b]);
+        double mid = 0.5 * (r->edges[b] + r->edges[b + 1]), z = (mid - mu) / s;
+        double h = 1.959964 * sd[b] / sqrt((double)r->K), g = exp(-0.5 * z * z) / (s * sqrt(2 * M_PI));
+        fprintf(fp, "%.8g\t%.8g\t%.8g\t%.8g\t%.8g\t%.8g\t%.8g\n", mid, mean[b], g, md[b], fmax(0, md[b] - h),
+                md[b] + h, se[b]);
     }
     cli_card_close(fp);
 }

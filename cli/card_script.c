@@ -37,14 +37,15 @@ static void acf_series(FILE *fp, const cli_card *c, int m, int base, int se_col,
     char sfx[32] = "";
     if (c->dim == 2)
         snprintf(sfx, sizeof sfx, ", %s", axis);
-    if (m || c->dim == 1)
+    if (m || (c->dim == 1 && c->K == 1))
         fprintf(fp, "%s'%s/acf.tsv' using %d:%d:%d with filledcurves %s lc rgb '%s' title '%s%s'", first ? "" : ", ",
                 c->dir, base + 1, base + 3, base + 4, BAND, fill,
                 m ? (c->K > 1 ? "model band / √K" : "model 95% band") : "95% band (plug-in, around the estimate)",
                 sfx), first = 0;
     if (c->K > 1)
-        fprintf(fp, "%s'%s/acf.tsv' using %d:%d with lines lw 2 lc rgb '%s' title 'mean%s', '' using %d:%d:(1.959964*$%d) "
-                    "every %zu with yerrorbars pt 7 ps 0.4 lc rgb '%s' title '+- 1.96 se%s'",
+        fprintf(fp, "%s'%s/acf.tsv' using %d:%d with lines lw 2 lc rgb '%s' title 'mean%s', "
+                    "'' using %d:%d:(1.959964*$%d) every %zu with yerrorbars pt 7 ps 0.4 lc rgb '%s' "
+                    "title '+- 1.96 se%s'",
                 first ? "" : ", ", c->dir, base + 1, base + 2, col, sfx, base + 1, base + 2, se_col,
                 (c->maxlag + 25) / 25, col, sfx);
     else
@@ -75,7 +76,9 @@ static void hist_panel(FILE *fp, const cli_card *c, int m)
 {
     fprintf(fp, "set title 'histogram%s'\nset xlabel 'value'\nset ylabel 'density (per unit value)'\n" KEY
                 "set style fill solid 0.4 border lc rgb '#7f9fbf'\nset autoscale\nset yrange [0:*]\nplot ",
-            m ? " against the model N(0, R(0))" : " against the Gaussian of its mean and variance");
+            m ? " against the model N(0, R(0))"
+              : c->K > 1 ? " against the Gaussian of field 1''s mean and variance"
+                         : " against the Gaussian of its mean and variance");
     if (m)
         fprintf(fp, "'%s/hist.tsv' using 1:5:6 with filledcurves %s lc rgb '#fdae6b' title '%s', ", c->dir, BAND,
                 c->K > 1 ? "model band / √K" : "model 95% band");
@@ -93,7 +96,8 @@ static void hist_panel(FILE *fp, const cli_card *c, int m)
 /* 1D spectrum: periodogram(s) and Welch with the model's bands. */
 static void spectrum_panel_1d(FILE *fp, const cli_card *c, int m)
 {
-    fprintf(fp, "set logscale xy\nset format y '10^{%%L}'\nset autoscale xfix\n" KEY "set xlabel 'frequency (cycles per unit length)'\n"
+    fprintf(fp, "set logscale xy\nset format y '10^{%%L}'\nset autoscale xfix\n" KEY
+                "set xlabel 'frequency (cycles per unit length)'\n"
                 "set ylabel 'S, two-sided (value^2·length)'\n");
     if (c->K > 1) {
         fprintf(fp, "set title 'spectrum: mean of %zu periodograms%s'\nplot ", c->K, m ? " against the model" : "");
@@ -135,7 +139,8 @@ static void map_panel(FILE *fp, const cli_card *c, const char *title, const char
 
 static void radial_panel(FILE *fp, const cli_card *c, int m)
 {
-    fprintf(fp, "set logscale xy\nset format y '10^{%%L}'\nset autoscale xfix\n" KEY "set xlabel '|f| (cycles per unit length)'\n"
+    fprintf(fp, "set logscale xy\nset format y '10^{%%L}'\nset autoscale xfix\n" KEY
+                "set xlabel '|f| (cycles per unit length)'\n"
                 "set ylabel 'S (value^2·length^2)'\nset title 'radial spectrum: %s%s'\nplot ",
             c->K > 1 ? "mean radial periodogram" : "radial average of the periodogram",
             m ? " against the model" : "");
@@ -171,11 +176,11 @@ void cli_card_script(FILE *fp, const cli_card *c, int m)
         hist_panel(fp, c, m);
     } else {
         hist_panel(fp, c, m);
-        map_panel(fp, c, c->K > 1 ? "mean periodogram (log_{10})" : (c->block > 1 ? "periodogram (block means)" : "periodogram"),
-                  "per.bin", c->pn[0], c->pn[1], c->pdx, c->pdy, c->px0, c->py0);
+        const char *per = c->K > 1 ? "mean periodogram" : c->block > 1 ? "periodogram (block means)" : "periodogram";
+        map_panel(fp, c, per, "per.bin", c->pn[0], c->pn[1], c->pdx, c->pdy, c->px0, c->py0);
         if (c->K > 1)
-            map_panel(fp, c, m ? "the model''s spectrum" : "periodogram of field 1", m ? "model.bin" : "first.bin", c->pn[0], c->pn[1],
-                      c->pdx, c->pdy, c->px0, c->py0);
+            map_panel(fp, c, m ? "the model''s spectrum" : "periodogram of field 1", m ? "model.bin" : "first.bin",
+                      c->pn[0], c->pn[1], c->pdx, c->pdy, c->px0, c->py0);
         else {
             char t[96];
             snprintf(t, sizeof t, "Welch, %zu segments of %zu", c->nseg, c->seg);

@@ -122,7 +122,8 @@ Test(card, ensemble_2d_files)
 Test(card, single_field_model_band)
 {
     static char s[65536];
-    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 256 -o one.tsv", out, sizeof out, err, sizeof err), 0);
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 256 -o one.tsv", out, sizeof out, err, sizeof err),
+                 0);
     card_script("k3", "card one.tsv --acf markov:scale=4 -o one.png", s, sizeof s);
     cr_expect_eq(labelled_plots(s), 4);
     cr_expect(strstr(s, "model 95% band") != NULL && strstr(s, "plug-in") == NULL, "%s", s);
@@ -131,11 +132,31 @@ Test(card, single_field_model_band)
 
 Test(card, refuses_bad_ensembles)
 {
-    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 64x64 -o a.exr", out, sizeof out, err, sizeof err), 0);
-    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 64x48 -o b.exr", out, sizeof out, err, sizeof err), 0);
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 64x64 -o a.exr", out, sizeof out, err, sizeof err),
+                 0);
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 64x48 -o b.exr", out, sizeof out, err, sizeof err),
+                 0);
     refused("card --realizations 0 --acf markov --size 64 -o z.png", "--realizations");
     refused("card a.exr b.exr -o m.png", "expected a field of the size and spacing of a.exr");
     refused("card --realizations 3 --size 64x64 -o n.png", "--acf");
     refused("card --realizations 3 --acf markov --size 64x64 a.exr -o n.png", "got both");
     refused("card --size 64x64 a.exr -o n.png", "--realizations");
+}
+
+/* The README's ACF map: acf --max-lag 8 keeps lags -8..8 (17 x 17 around
+ * lag 0, whose value is the field's biased variance, the largest), and
+ * render --axes lags draws it by gnuplot. */
+Test(card, cropped_acf_map_with_axes)
+{
+    char path[600];
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=4 --size 64x64 -o f.exr", out, sizeof out, err, sizeof err),
+                 0);
+    cr_assert_eq(run_noiselab("acf f.exr --max-lag 8 -o acf.exr", out, sizeof out, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(run_noiselab("hist acf.exr", out, sizeof out, err, sizeof err), 0, "%s", err);
+    cr_expect(strstr(out, "# n 289\n") != NULL, "expected 17 x 17 lags: %s", out);
+    cr_assert_eq(run_noiselab("render acf.exr --range -0.1:1 --axes lags -o acf.png", out, sizeof out, err, sizeof err),
+                 0, "%s", err);
+    snprintf(path, sizeof path, "%s/acf.png", scratch_dir());
+    cr_expect(file_exists(path));
+    refused("render acf.exr --axes lags --shade 30,40 -o s.png", "--axes");
 }
