@@ -128,8 +128,9 @@ static int variances(const lag_grid *g, const double *M, const double *Q, double
         }
     for (long k = 0; k <= maxlag; k++) {
         double s = var[k];
+        double W = (double)(nb * nb * nc * nc);  /* the sum of the other axes' weights */
         for (long r = -(n - k - 1); r <= n - k - 1; r++)
-            s += (double)(n - k - labs(r)) * (Q[r + n - 1] - 2 * V * M[r + n - 1] + V * V * (double)(nb * nb * nc * nc));
+            s += (double)(n - k - labs(r)) * (Q[r + n - 1] - 2 * V * M[r + n - 1] + V * V * W);
         s = s / (N * N);
         var[k] = s > 0 ? s : 0;
     }

@@ -43,7 +43,8 @@ static void acf(const nl_model *m, int dim, size_t n, int K)
     int in[4] = {0};
     nl_synth_circulant_plan *p;
     nl_field *x = nl_field_alloc(dim, nn, NULL, NULL), *full;
-    if (nl_acf_model_band(m, dim, nn, NULL, 0, L, mean, lo, hi) || nl_synth_circulant_plan_alloc(m, dim, nn, NULL, 0, 8, &p))
+    if (nl_acf_model_band(m, dim, nn, NULL, 0, L, mean, lo, hi) ||
+        nl_synth_circulant_plan_alloc(m, dim, nn, NULL, 0, 8, &p))
         die("the ACF band");
     for (int r = 0; r < K; r++) {
         if (nl_synth_circulant_execute(p, (uint64_t)r + 1, x) || nl_acf_full(x, NAN, 0, &full) ||
