@@ -91,20 +91,22 @@ static double expectation(const lag_grid *g, const double *M, double V, double N
     return (1 - (double)k / (double)n) * (at_axis(g, k, 0, 0) + V) - 2 * s / (N * N);
 }
 
-/* Var c(k) for a Gaussian field of known mean (Isserlis): with
- * Cov(x_s x_{s+l}, x_t x_{t+l}) = R(t-s)^2 + R(t-s+l) R(t-s-l) summed over
- * the pairs s, t of the overlap, whose differences r occur
- * (n - k - |r_axis|) prod_{a != axis} (n_a - |r_a|) times:
- *     Var c(k) = (1/N^2) sum_r (n - k - |r_axis|)+ prod (n_a - |r_a|)
- *                         [R(r)^2 + R(r + k e) R(r - k e)]
- * (Bartlett 1946, eq. (7), with its finite-N weights and summed over lag
- * vectors; Priestley 1981, eq. (5.3.21)).  The sample mean m: the sum of
- * (x_j - m)(x_{j+k} - m) over the overlap is about the known-mean sum less
- * P m^2, and with Cov(x_s x_t, m^2) ~ 2 V^2 and Var(m^2) = 2 V^2 (Gaussian)
- * that takes 2 (1 - k/n)^2 V^2 off the variance (exact at k = 0 for white
- * noise: N c(0) / var is chi-square with N - 1 degrees of freedom).  Row
- * by row along the axis, var[k] for k = 0..maxlag. */
-static int variances(const lag_grid *g, const double *Q, double V, double N, long maxlag, double *var)
+/* Var c(k) for a Gaussian field (Isserlis): with the deviations y = x - m
+ * from the sample mean, Gaussian with covariance
+ *     C(s, t) = R(t - s) - g(s) - g(t) + V,
+ *     Var c(k) = (1/N^2) sum_{s, t in O} [C(s, t)^2 + C(s, t + k e) C(s + k e, t)]
+ * (Bartlett 1946, eq. (7), with the finite field's pair counts: Priestley
+ * 1981, eq. (5.3.21)).  g(s) is close to V away from the edges (on a torus
+ * it is V), and with g = V, C depends on t - s only: the sum over pairs
+ * becomes one over lag vectors r, each counted w(r) = (n - k - |r_axis|)+
+ * prod_{a != axis} (n_a - |r_a|) times,
+ *     Var c(k) ~ (1/N^2) sum_r w(r) [(R(r) - V)^2 + (R(r + k e) - V)(R(r - k e) - V)].
+ * Exact for white noise at k = 0 (2 var^2 (N - 1) / N^2: N c(0) / var is
+ * chi-square_{N-1}) and for a known mean (V = 0 then); against the sum over
+ * pairs with the true g, 0.5% at most on 64 samples of markov:scale=4,
+ * 1e-4 on 256 of scale 2.5, 12% on 32 of scale 8 (four correlation lengths).
+ * Row by row along the axis, var[k] for k = 0..maxlag. */
+static int variances(const lag_grid *g, const double *M, const double *Q, double V, double N, long maxlag, double *var)
 {
     long n = g->n[g->axis], nb = g->n[g->b], nc = g->n[g->c];
     double *row = malloc((size_t)(2 * n - 1) * sizeof *row), *mid = row + n - 1;
@@ -116,7 +118,7 @@ static int variances(const lag_grid *g, const double *Q, double V, double N, lon
         for (long wb = -(nb - 1); wb <= nb - 1; wb++) {
             double w = (double)((nb - labs(wb)) * (nc - labs(wc)));
             for (long r = -(n - 1); r <= n - 1; r++)
-                mid[r] = at_axis(g, r, wb, wc);
+                mid[r] = at_axis(g, r, wb, wc) - V;
             for (long k = 0; k <= maxlag; k++) {
                 double s = 0;
                 for (long r = -(n - k - 1); r <= n - k - 1; r++)
@@ -125,10 +127,11 @@ static int variances(const lag_grid *g, const double *Q, double V, double N, lon
             }
         }
     for (long k = 0; k <= maxlag; k++) {
-        double f = 1 - (double)k / (double)n, s = var[k];
+        double s = var[k];
+        double W = (double)(nb * nb * nc * nc);  /* the sum of the other axes' weights */
         for (long r = -(n - k - 1); r <= n - k - 1; r++)
-            s += (double)(n - k - labs(r)) * Q[r + n - 1];
-        s = s / (N * N) - 2 * f * f * V * V;
+            s += (double)(n - k - labs(r)) * (Q[r + n - 1] - 2 * V * M[r + n - 1] + V * V * W);
+        s = s / (N * N);
         var[k] = s > 0 ? s : 0;
     }
     free(row);
@@ -164,7 +167,7 @@ int nl_acf_model_band(const nl_model *m, int dim, const size_t *n, const double 
     for (long r = -(na - 1); r <= na - 1; r++)
         V += (double)(na - labs(r)) * M[r + na - 1];
     V /= N * N;
-    if ((st = variances(&g, Q, V, N, (long)maxlag, hi)) == NL_OK)
+    if ((st = variances(&g, M, Q, V, N, (long)maxlag, hi)) == NL_OK)
         for (size_t k = 0; k <= maxlag; k++) {
             double e = expectation(&g, M, V, N, (long)k), sd = sqrt(hi[k]);
             mean[k] = e, lo[k] = e - 1.959964 * sd, hi[k] = e + 1.959964 * sd;

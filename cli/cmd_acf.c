@@ -30,7 +30,9 @@ static const char help[] =
     "                (biased) estimate, with the estimate in place of R up to 4 max-lag\n"
     "  --json        {\"lag\": [...], \"acf\": [...], ...} on stdout: every number of the table\n"
     "  -o            TSV with columns lag, acf[, se][, target][, lo, hi] (default: TSV on\n"
-    "                stdout), or .exr: the whole 2D/3D estimate with lag 0 at the centre\n\n"
+    "                stdout), or .exr: the 2D/3D estimate with lag 0 at the centre, every\n"
+    "                lag or with --max-lag L the lags -L..L of each axis (a picture of\n"
+    "                the ACF: noiselab render OUT.exr --axes lags)\n\n"
     "Several inputs (fields of one size and spacing, e.g. realizations with\n"
     "different seeds) make an ensemble: acf is the mean of their estimates and\n"
     "se its standard error (their scatter over the square root of their\n"
@@ -89,12 +91,37 @@ static void check_field(acf_opts *o, const nl_field *x)
     o->nl += 1;
 }
 
-/* The whole estimate, lag 0 at the centre, to EXR. */
+/* The centred estimate C cut to lags -L_a..L_a per axis, L_a = max-lag
+ * over h_a (at most n_a - 1): lag 0 stays at the centre. */
+static nl_field *crop(const nl_field *C, double maxlag)
+{
+    size_t n[3] = {1, 1, 1}, off[3] = {0, 0, 0};
+    for (int a = 0; a < C->dim; a++) {
+        size_t half = (C->n[a] - 1) / 2, L = (size_t)floor(maxlag / C->h[a] + 1e-9);
+        L = L < half ? L : half;
+        n[a] = 2 * L + 1, off[a] = half - L;
+    }
+    nl_field *out = cli_field_alloc(C->dim, n, C->h);
+    for (size_t k = 0; k < n[2]; k++)
+        for (size_t j = 0; j < n[1]; j++)
+            for (size_t i = 0; i < n[0]; i++)
+                out->data[(k * n[1] + j) * n[0] + i] =
+                    C->data[((k + off[2]) * C->n[1] + j + off[1]) * C->n[0] + i + off[0]];
+    return out;
+}
+
+/* The whole estimate, or with --max-lag its lags -L..L, lag 0 at the
+ * centre, to EXR. */
 static void write_centred(const acf_opts *o, const nl_field *full)
 {
     nl_field *C;
     nl_meta meta = {0};
     cli_check(nl_acf_centred_alloc(full, &C));
+    if (!isnan(o->maxlag)) {
+        nl_field *cut = crop(C, o->maxlag);
+        nl_field_free(C);
+        C = cut;
+    }
     for (size_t i = 0; i < C->count; i++)
         if (!(fabs(C->data[i]) <= FLT_MAX))
             cli_die(2, "-o: the estimate %g does not fit the float32 samples of \"%s\"; expected |acf| <= %g "

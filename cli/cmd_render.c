@@ -1,6 +1,8 @@
 /* noiselab render: a 2D field as an 8-bit picture, grey levels or shaded relief. */
 #include "cli.h"
 #include "opt.h"
+#include "render_axes.h"
+#include "../core/nl_error.h"
 #include "../render/colorbar.h"
 #include "../render/shade.h"
 #include "../render/terrain.h"
@@ -12,10 +14,14 @@
 
 static const char help[] =
     "usage: noiselab render IN (-o OUT.png | --matrix OUT.txt) [--range LO:HI] [--shade AZ,EL]\n"
-    "                       [--zscale Z] [--step K] [--colorbar]\n\n"
+    "                       [--zscale Z] [--step K] [--colorbar] [--axes grid|lags]\n\n"
     "Grey levels: values from LO to HI map onto 0..255 (default: mean +- 3 sd);\n"
     "--colorbar adds the scale to the right: a ramp from LO to HI with their values\n"
     "and the middle one (112 more columns).\n"
+    "--axes grid|lags: drawn by gnuplot with axes in length units (the field's\n"
+    "spacing), its name as the title and a colour bar: grid puts sample (0, 0) at\n"
+    "the origin, row 0 at the top; lags puts the centre sample at lag (0, 0), lag y\n"
+    "up, for the map of noiselab acf --max-lag L -o ACF.exr or a centred spectrum.\n"
     "--shade AZ,EL: the field as an obliquely illuminated height field (Lambert),\n"
     "light from azimuth AZ (degrees from +x toward +y) and elevation EL (degrees);\n"
     "heights are multiplied by Z (default 1) in units of the grid spacing.\n"
@@ -66,6 +72,7 @@ typedef struct {
     double lo, hi, az, el, zs, fov, sun[2], haze, water;       /* NAN: not given */
     int persp, tile, sea, given_zs, view_opts, colorbar;       /* flags; view options given */
     int given_step;                                            /* --step given */
+    int axes, given_axes;                                      /* --axes: CLI_AXES_* */
 } opts_t;
 
 static void range_option(void *obj, const char *label, const char *arg)
@@ -98,6 +105,8 @@ static void plane_option(void *obj, const char *label, const char *arg)
 /* A view option: it needs --perspective. */
 #define VIEW CLI_GIVEN(opts_t, view_opts)
 
+static const char *const axes_choices[] = {"grid", "lags", NULL};
+
 static const cli_opt rows[] = {
     CLI_CALL("range", range_option), CLI_CALL("shade", shade_option),
     CLI_POSITIVE("zscale", opts_t, zs, CLI_GIVEN(opts_t, given_zs), .what = "factor"), CLI_OPT_OUTPUT(opts_t, out),
@@ -107,7 +116,8 @@ static const cli_opt rows[] = {
     CLI_DOUBLE("fov", opts_t, fov, VIEW), CLI_PAIR("sun", opts_t, sun, VIEW), CLI_DOUBLE("haze", opts_t, haze, VIEW),
     CLI_DOUBLE("water", opts_t, water, VIEW), CLI_FLAG("tile", opts_t, tile, VIEW),
     CLI_FLAG("sea", opts_t, sea, VIEW), CLI_STRING("clouds", opts_t, clouds, VIEW),
-    CLI_CALL("cloud-plane", plane_option, VIEW), CLI_FLAG("colorbar", opts_t, colorbar), {0}};
+    CLI_CALL("cloud-plane", plane_option, VIEW), CLI_FLAG("colorbar", opts_t, colorbar),
+    CLI_CHOICE("axes", opts_t, axes, .choices = axes_choices, CLI_GIVEN(opts_t, given_axes)), {0}};
 
 static void check(int argc, char **argv, const opts_t *a)
 {
@@ -129,6 +139,8 @@ static void check(int argc, char **argv, const opts_t *a)
         cli_die(2, "render: --step %zu: expected --matrix (every K-th sample of it)", a->step);
     if (a->colorbar && (a->persp || !isnan(a->az) || !a->out))
         cli_die(2, "render: --colorbar: goes with grey levels into -o OUT.png (not --shade or --perspective)");
+    if (a->given_axes && (a->persp || !isnan(a->az) || !a->out))
+        cli_die(2, "render: --axes: goes with grey levels into -o OUT.png (not --shade or --perspective)");
 }
 
 /* The view of the options over the defaults for x. */
@@ -177,7 +189,7 @@ static void write_matrix(const char *matrix, const nl_field *x, size_t step)
 }
 
 /* Grey levels or, with --shade, the relief. */
-static void write_picture(const opts_t *a, const nl_field *x)
+static void write_picture(const opts_t *a, const nl_field *x, const char *name)
 {
     const char *tmp = cli_out_begin(a->out);
     double lo = a->lo, hi = a->hi;
@@ -190,7 +202,10 @@ static void write_picture(const opts_t *a, const nl_field *x)
     } else {
         if (isnan(lo) && (st = nl_render_grey_range(x, &lo, &hi)))
             cli_die_status(st);
-        if (a->colorbar) {
+        if (a->given_axes) {
+            cli_render_axes(x, lo, hi, a->axes, name, tmp);
+            st = NL_OK;
+        } else if (a->colorbar) {
             uint8_t *pix;
             size_t w, h;
             if (!(st = nl_render_grey_colorbar(x, lo, hi, &pix, &w, &h)))
@@ -231,7 +246,7 @@ int cli_cmd_render(int argc, char **argv)
         if (a.matrix)
             write_matrix(a.matrix, x, a.step);
         if (a.out)
-            write_picture(&a, x);
+            write_picture(&a, x, argv[optind]);
     }
     nl_field_free(x);
     return 0;

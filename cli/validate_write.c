@@ -179,7 +179,8 @@ static void map_plot(FILE *fp, const cli_validate *v, double top)
         return;
     fprintf(fp, "set terminal pngcairo size %d,470 font 'DejaVu Sans,10'\nset output D.'/map.png'.S\nunset logscale\n"
                 "unset key\nunset grid\nset autoscale fix\nset size ratio -1\nset palette defined (-1 '#2166ac', 0 'white', 1 '#b2182b')\n"
-                "set cbrange [%g:%g]\nset xlabel 'lag x'\nset ylabel 'lag y'\nset multiplot layout 1,%d title "
+                "set cbrange [%g:%g]\nset cblabel '(mean - R) / R(0)'\nset xlabel 'lag x (samples)'\n"
+                "set ylabel 'lag y (samples)'\nset multiplot layout 1,%d title "
                 "'%s, %dD: (ensemble mean - R) / R(0) over the lag map%s'\n",
             60 + 420 * np, -top, top, np, v->spec, v->dim, v->dim > 2 ? " (plane lz = 0)" : "");
     for (int meth = 0; meth < NM; meth++)
@@ -204,8 +205,11 @@ static void panels(FILE *fp, const cli_validate *v, int kind)
     for (int d = 0; d < ND; d++) {
         if (!r->nlag[d])
             continue;
-        fprintf(fp, "set title '%s'\nset xlabel 'lag (samples)'\nset grid\nset key %s\n", nl_validate_dir_name(d),
-                block ? "off" : "top right");
+        fprintf(fp, "set title 'along %s%s'\nset xlabel '%s'\nset ylabel '%s'\nset grid\n"
+                    "set key below horizontal width 1 samplen 2 height 1.5\n",
+                d == NL_VALIDATE_DIAG ? "the " : "", nl_validate_dir_name(d),
+                d == NL_VALIDATE_DIAG ? "lag length (sample spacings)" : "lag (samples)",
+                kind ? "(ensemble mean - R) / R(0)" : "ensemble mean ACF (value^2)");
         if (kind)
             fprintf(fp, "plot %g with lines dt 2 lc rgb 'black' title 'tolerance', %g with lines dt 2 lc rgb 'black' notitle, "
                         "0 with lines lc rgb 'gray' notitle", r->tolerance, -r->tolerance);
@@ -232,8 +236,10 @@ static void panels(FILE *fp, const cli_validate *v, int kind)
 static void spectrum_plot(FILE *fp, const cli_validate *v)
 {
     fprintf(fp, "set output D.'/spectrum.png'.S\nset title '%s, %dD: periodogram / its expectation - 1, by octave band "
-                "(95%% simultaneous)'\nset xlabel 'radial frequency (cycles per sample)'\nset logscale x\nset grid\n"
-                "set key top left\nset offsets 0, 0, graph 0.06, graph 0.06\nplot 0 with lines lc rgb 'gray' notitle",
+                "(95%% simultaneous)'\nset xlabel 'radial frequency (cycles per sample)'\n"
+                "set ylabel 'periodogram / its expectation - 1'\nset logscale x\nset grid\n"
+                "set key below horizontal width 1 samplen 2 height 1.5\nset offsets 0, 0, graph 0.06, graph 0.06\n"
+                "plot 0 with lines lc rgb 'gray' notitle",
             v->spec, v->dim);
     for (int meth = 0; meth < NM; meth++)
         if (v->r.method[meth].ran)
@@ -287,12 +293,12 @@ static int write_plots(const cli_validate *v)
                 "# (D: the report's folder; S: a suffix of the file names)\nif (!exists(\"D\")) D = '%s'\n"
                 "if (!exists(\"S\")) S = ''\n",
             gp_dir(v));
-    fprintf(fp, "set terminal pngcairo size %d,520 font 'DejaVu Sans,10'\nset datafile missing '-'\n"
+    fprintf(fp, "set terminal pngcairo size %d,600 font 'DejaVu Sans,10'\nset datafile missing '-'\n"
                 "set output D.'/acf.png'.S\n", 420 + 380 * ndir);
     panels(fp, v, 0);
     fprintf(fp, "set output D.'/error.png'.S\n");
     panels(fp, v, 1);
-    fprintf(fp, "set terminal pngcairo size 900,560 font 'DejaVu Sans,11'\n");
+    fprintf(fp, "set terminal pngcairo size 900,620 font 'DejaVu Sans,11'\n");
     spectrum_plot(fp, v);
     if (v->r.nmap)
         map_plot(fp, v, write_map_tsv(v));

@@ -69,6 +69,7 @@ extern "C" {
 #include "noiselab/analysis/variogram.h"
 #include "noiselab/analysis/krige_local.h"
 #include "noiselab/analysis/acf.h"
+#include "noiselab/analysis/bands.h"
 #include "noiselab/analysis/psd.h"
 #include "noiselab/analysis/welch.h"
 #include "noiselab/analysis/radial.h"
