@@ -2,6 +2,7 @@
 #include "cli.h"
 #include "dist_inputs.h"
 #include "inputs.h"
+#include "slope_band.h"
 #include "../analysis/ensemble.h"
 #include "../analysis/fftshift.h"
 #include "../analysis/psd.h"
@@ -256,6 +257,11 @@ static int distributed(psd_opts *o)
     if (o->welch || o->preview || o->target || (o->out && cli_has_ext(o->out, ".exr")))
         cli_dist_refuse("psd", o->welch ? "--welch" : o->preview ? "--preview" : o->target ? "--target" : "-o OUT.exr");
     cli_dist_read(&o->src, &s, &hdr);
+    if (o->slope) { /* every process alike */
+        nl_meta meta;
+        cli_check(cli_h5_read_meta(o->src.files[0], &meta));
+        cli_slope_band_check("psd", "--slope", o->f1, o->f2, cli_meta_model(&meta), hdr.dim);
+    }
     if (o->angular && hdr.dim != 2)
         cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o->src.files[0], hdr.dim);
     maxn = hdr.n[0] + hdr.n[1] + hdr.n[2];
@@ -294,6 +300,8 @@ int cli_cmd_psd(int argc, char **argv)
     if (cli_dist_wanted(&o.src, "psd"))
         return distributed(&o);
     x = cli_inputs_read(&o.src, 0, NULL);
+    if (o.slope)
+        cli_slope_band_check("psd", "--slope", o.f1, o.f2, cli_inputs_model(&o.src), x->dim);
     if ((o.angular || o.preview || (o.out && cli_has_ext(o.out, ".exr"))) && x->dim != 2)
         cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", cli_inputs_name(&o.src, 0), x->dim);
     if (o.preview && !cli_has_ext(o.preview, ".png"))
