@@ -175,18 +175,16 @@ static void output(const psd_opts *o, int dim, const psd_table *t)
         const char *names[4] = {"freq", "psd"};
         const double *cols[4] = {t->freq, t->val};
         int nc = 2;
-        char comment[200];
+        char comment[300], welch[120];
         if (t->se)
             names[nc] = "se", cols[nc++] = t->se;
         if (t->tgt)
             names[nc] = "target", cols[nc++] = t->tgt;
-        snprintf(comment, sizeof comment, "noiselab psd: two-sided %s density%s, freq in cycles per unit%s",
-                 o->welch ? "Welch" : "periodogram", dim == 1 ? "" : ", radial average",
+        snprintf(welch, sizeof welch, "Welch density (Welch's average of the periodograms of %zu Hann-windowed, "
+                 "half-overlapping segments of %zu samples per axis)", o->nseg, o->welch);
+        snprintf(comment, sizeof comment, "noiselab psd: two-sided %s%s, freq in cycles per unit%s",
+                 o->welch ? welch : "periodogram density", dim == 1 ? "" : ", radial average",
                  t->se ? ", mean over the fields with its standard error" : "");
-        if (!t->se) /* one field: the comment as it always was */
-            snprintf(comment, sizeof comment, "%s", dim == 1 ? "noiselab psd: two-sided periodogram density, freq in "
-                     "cycles per unit" : "noiselab psd: two-sided periodogram density, radial average, freq in "
-                     "cycles per unit");
         st = cli_write_table(o->out ? o->tmp : NULL, comment, nc, names, t->nf, cols);
         cli_check(st);
     }

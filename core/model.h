@@ -154,7 +154,7 @@ int nl_model_has_acf(const nl_model *m);
  * (a muParser object holds its variables and evaluation stack). */
 int nl_model_is_reentrant(const nl_model *m);
 
-/* R at the lag vector lag[0..dim-1] (spacing units), for models defined by R,
+/* R at the lag vector lag[0..dim-1] (lengths, in the units of scale), for models defined by R,
  * and for power:, whose R is computed by quadrature (the Fourier or Hankel
  * transform of its band-limited spectrum, Lewis 1987 eq. (13)).  For
  * spectrum: models returns NAN (use the sampled conversion in wk.h).  NAN
