@@ -1,8 +1,9 @@
 /* A slope fit's band against the band where the field's model has power:
  * a field made from power:d=1 (fmin = 1/1024 by default) holds nothing
- * below fmin but the estimator's leakage, and a log-log fit through those
- * ordinates measures the leakage, not the model (a slope of -0.36 for
- * d = 1 over 0.0001:0.4 on 65536 samples). */
+ * below fmin but the estimator's leakage and the file's rounding (1e-20
+ * and less, where the band holds 1 to 100), and a log-log fit through those ordinates
+ * measures them, not the model (a slope of -0.36 for d = 1 over
+ * 0.0001:0.4 on 65536 samples). */
 #ifndef NL_CLI_SLOPE_BAND_H
 #define NL_CLI_SLOPE_BAND_H
 
