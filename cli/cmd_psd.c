@@ -152,10 +152,15 @@ static void print_json(const psd_opts *o, int dim, const psd_table *t)
     }
     if (o->welch)
         json_object_set_new(j, "welch_segments", json_integer((json_int_t)o->nseg));
-    if (o->slope)
-        json_object_set_new(j, "slope", json_pack("{s:o,s:o,s:I,s:o,s:[f,f]}", "slope", num(o->sl.slope), "ci95",
+    if (o->slope) {
+        int r = nl_slope_fractal_range(&o->sl, dim);
+        json_object_set_new(j, "slope", json_pack("{s:o,s:o,s:I,s:o,s:[f,f],s:o}", "slope", num(o->sl.slope), "ci95",
                                                   num(o->sl.ci95), "points", (json_int_t)o->sl.points,
-                                                  "fractal_dimension", num(o->sl.fractal_dim), "band", o->f1, o->f2));
+                                                  "fractal_dimension", num(o->sl.fractal_dim), "band", o->f1, o->f2,
+                                                  "flags", r ? json_pack("[s]", r < 0 ? "flatter-than-eq16"
+                                                                                       : "steeper-than-eq16")
+                                                             : json_array()));
+    }
     cli_json_print(j);
 }
 
@@ -173,9 +178,16 @@ static void output(const psd_opts *o, int dim, const psd_table *t)
         else
             printf("\n# anisotropy (max/min sector power) undefined (a sector holds no power)\n");
     }
-    if (o->slope && !o->json)
+    if (o->slope && !o->json) {
+        int r = nl_slope_fractal_range(&o->sl, dim);
         printf("# slope %.4f +- %.4f (95%%, %zu frequencies in [%g, %g]); fractal dimension "
-                "%.4f\n", o->sl.slope, o->sl.ci95, o->sl.points, o->f1, o->f2, o->sl.fractal_dim);
+                "%.4f", o->sl.slope, o->sl.ci95, o->sl.points, o->f1, o->f2, o->sl.fractal_dim);
+        if (r)
+            printf(" (outside eq. 16, which holds for 1 < d < 3: d = %.4f, %s)", -o->sl.slope - (dim - 1),
+                   r < 0 ? "a flatter spectrum, whose graph fills its space" : "a steeper spectrum, whose graph is "
+                   "smooth, D = E");
+        printf("\n");
+    }
     if (o->out || (!o->json && !o->angular && !o->preview)) {
         const char *names[4] = {"freq", "psd"};
         const double *cols[4] = {t->freq, t->val};

@@ -1,6 +1,7 @@
 /* Slope fits that keep to the band where the field's model has power
  * (nl_model_band, psd --slope), and the comment lines of the estimators'
  * tables. */
+#include "../analysis/slope.h"
 #include "../core/model.h"
 #include "../core/model_internal.h"
 #include "../core/nl_error.h"
@@ -101,7 +102,36 @@ Test(slope_band, power_field_slope_is_minus_one)
     double se = ci / 1.96;
     cr_expect(0.05 >= 5 * se, "0.05 is %.1f standard errors of the fit (se %g); expected 5 or more", 0.05 / se, se);
     cr_expect(fabs(slope + 1) <= 0.05, "slope %g +- %g over [fmin, 0.4], expected -1 within 0.05", slope, ci);
+    cr_expect_eq(json_array_size(json_object_get(s, "flags")), 0, "d = 1 is inside eq. 16's range");
     json_decref(j);
+    /* a markov field below its corner frequency is white: flagged */
+    cr_assert_eq(run_noiselab("synth fft --acf markov:scale=3 --size 4096 --seed 2 -o m.tsv", NULL, 0, err, sizeof err),
+                 0, "%s", err);
+    j = run_noiselab_json("psd m.tsv --slope 0.001:0.02 --json");
+    s = json_object_get(json_object_get(j, "slope"), "flags");
+    cr_expect(json_array_size(s) == 1 && !strcmp(json_string_value(json_array_get(s, 0)), "flatter-than-eq16"),
+              "a white band: expected the flag flatter-than-eq16");
+    json_decref(j);
+}
+
+/* Eq. (16) of Lewis 1987 holds for a profile exponent 1 < d < 3; outside,
+ * by more than the fit's interval, the fit is flagged (d = -slope - (E - 1)). */
+Test(slope_band, fractal_range)
+{
+    static const struct {
+        double slope, ci;
+        int E, want;
+    } c[] = {
+        {-0.36, 0.03, 1, -1}, {-1.0, 0.016, 1, 0}, {-0.98, 0.03, 1, 0}, {-0.9, 0.05, 1, -1}, {-2.9, 0.2, 1, 0},
+        {-3.3, 0.2, 1, 1}, {-3.6, 0.1, 2, 0}, {-1.5, 0.1, 2, -1}, {-4.5, 0.2, 2, 1}, {-4.0, 0.05, 3, 0},
+        {-2.5, 0.2, 3, -1}, {-5.5, 0.2, 3, 1},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof *c; i++) {
+        nl_slope sl = {.slope = c[i].slope, .ci95 = c[i].ci, .points = 100};
+        cr_expect_eq(nl_slope_fractal_range(&sl, c[i].E), c[i].want, "slope %g +- %g in %dD", c[i].slope, c[i].ci,
+                     c[i].E);
+    }
+    cr_expect_eq(nl_slope_fractal_range(NULL, 1), 0);
 }
 
 static void refused(const char *args, const char *const *needles)
