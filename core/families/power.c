@@ -2,7 +2,11 @@
  * (Lewis 1987's fractal model); its R is computed by quadrature
  * (core/model_hankel.c, eq. (13)).  var is R(0) in every dimension: c is
  * var over the integral of |f|^-d over the band's shell in dim dimensions
- * (power_norm), so that the integral of S over all frequencies is var. */
+ * (power_norm), so that the integral of S over all frequencies is var.
+ * A grid holds only the frequencies |f| >= 1/(n h): at the default fmin,
+ * 64^3 samples of d=3.5 hold 26% of var (the sum of S over the grid's
+ * frequencies; six fields measured 0.25), 256^2 of d=2.5 hold 59%, and
+ * 65536 samples of d=1 all of it. */
 #include "families_internal.h"
 #include "../nl_error.h"
 
