@@ -13,7 +13,10 @@ void cli_slope_band_check(const char *cmd, const char *opt, double f1, double f2
     const nl_family *fam;
     nl_model *m;
     double lo, hi;
-    if (!spec || !*spec)
+    if (!spec)
+        return;
+    spec += strspn(spec, " \t");
+    if (!*spec)
         return;
     fam = nl_family_find(spec, strcspn(spec, ": \t"));
     /* a recorded image:FILE is data: its file is not opened */
