@@ -41,12 +41,11 @@ static const char help[] =
     "                is flagged, JSON flags flatter-than-eq16 or steeper-than-eq16); in\n"
     "                2D/3D the fit is to every periodogram ordinate in the band (each\n"
     "                Hermitian pair once), not to the radial average, whose interval\n"
-    "                would be too narrow.  A field that records\n"
-    "                its model (a file's \"model\" provenance, --realizations' --acf) is\n"
-    "                refused a band reaching outside the model's (power: fmin..fmax),\n"
-    "                where its periodogram holds leakage and rounding alone, which\n"
-    "                would flatten the slope; a field made by noiselab shape is not\n"
-    "                checked\n"
+    "                would be too narrow.  A field that records its model (a file's\n"
+    "                \"model\" provenance, --realizations' --acf) is refused a band\n"
+    "                reaching outside the model's (power: fmin..fmax), where its\n"
+    "                periodogram holds leakage and rounding alone, which would flatten\n"
+    "                the slope; a field made by noiselab shape is not checked\n"
     "  --json        {\"freq\": [...], \"psd\": [...], \"sided\": \"two-sided\", ...} on stdout:\n"
     "                every number of the table and of the comment lines\n"
     "  -o            TSV with columns freq, psd[, se][, target] (default: TSV on stdout)\n\n"
@@ -194,7 +193,7 @@ static void output(const psd_opts *o, int dim, const psd_table *t)
         const char *names[4] = {"freq", "psd"};
         const double *cols[4] = {t->freq, t->val};
         int nc = 2;
-        char comment[300], welch[120];
+        char comment[400], welch[200];
         if (t->se)
             names[nc] = "se", cols[nc++] = t->se;
         if (t->tgt)
