@@ -3,7 +3,7 @@
  * For a field x of n_a samples per axis and a mean m (the sample mean, or a
  * known mean when the process mean is known), with
  *     c(l) = sum over the overlap of (x_j - m)(x_{j+l} - m)   (core/autocorr.h)
- * the estimates at lag l (spacing units: lag l_a h_a) are
+ * the estimates at lag l (in length units: lag l_a h_a) are
  *     biased    c(l) / N,                         E = (1 - |l|/n) R(l) for a known mean
  *     unbiased  c(l) / prod_a (n_a - |l_a|),      E = R(l) for a known mean
  * (with the sample mean both carry an extra O(1/N) bias).  The biased

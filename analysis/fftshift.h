@@ -20,7 +20,7 @@ int nl_fftshift_alloc(const nl_field *P, nl_field **out);
 
 /* The full ACF estimate of nl_acf_full (2 n_a per axis, wrapped) as lags
  * -(n_a - 1) .. n_a - 1 per axis with lag 0 at the centre, index n_a - 1:
- * 2 n_a - 1 samples per axis, spacing h (lags in spacing units).  The unused
+ * 2 n_a - 1 samples per axis, spacing h (lags in length units: index times h).  The unused
  * wrapped index n_a (lag -n_a, always 0) is dropped.  *out is released by
  * nl_field_free.  Returns NL_OK, NL_EINVAL (an axis of full is odd, so not
  * the output of nl_acf_full) or NL_ENOMEM / NL_ETOOBIG; *out is NULL on

@@ -5,7 +5,11 @@
  * at the wrapped frequencies f_k = w(k) / (n h) (core/wk.h), in cycles per
  * unit length.  P is a TWO-SIDED density: Parseval holds as
  *     sum_k P_k / (n_1 h_1 ... n_d h_d) = (1/N) sum_j (x_j - m)^2,
- * and E[P_k] is the spectrum S(f_k) smoothed by the Fejer kernel.
+ * and, for a known mean, E[P_k] is the transform of the triangle-weighted
+ * ACF (1 - |l|/n) R(l): the sampled spectrum smoothed by the Fejer kernel
+ * (biased: leakage from strong frequencies into weak ones), exactly the
+ * spectrum at f_k only for a periodic field (FFT synthesis), whose
+ * circular ACF it transforms.  With the sample mean P_0 = 0.
  * Layout: the full grid (both halves, P(-k) = P(k)), x's n and h, row-major
  * with x fastest, wrapped order (analysis/fftshift.h centres it).
  *

@@ -72,3 +72,16 @@ int nl_psd_slope(const double *f, const double *psd, size_t n, double fmin, doub
     free(x), free(y);
     return st;
 }
+
+int nl_slope_fractal_range(const nl_slope *s, int E)
+{
+    double d;
+    if (!s || E < 1 || E > 3)
+        return 0;
+    d = -s->slope - (E - 1);
+    if (d + s->ci95 < 1)
+        return -1;
+    if (d - s->ci95 > 3)
+        return 1;
+    return 0;
+}

@@ -42,6 +42,16 @@ int nl_psd_slope(const double *f, const double *psd, size_t n, double fmin, doub
  * the codes of nl_psd_slope. */
 int nl_psd_slope_grid(const nl_field *P, double fmin, double fmax, nl_slope *out);
 
+/* Where the profile exponent d = -slope - (E - 1) of a fit s in E
+ * dimensions lies against the range 1 < d < 3 in which eq. (16) gives a
+ * fractal dimension (E <= D <= E + 1): 0 when its 95% interval
+ * d +- ci95 meets [1, 3]; -1 when it lies wholly below 1 (a spectrum
+ * flatter than 1/f in 1D: stationary noise, whose graph fills its space,
+ * where eq. (16) would give D > E + 1); +1 when wholly above 3 (a graph
+ * smooth enough to have D = E, where eq. (16) would give D < E); 0 for a
+ * NULL s or E outside 1..3.  Reentrant. */
+int nl_slope_fractal_range(const nl_slope *s, int E);
+
 #ifdef __cplusplus
 }
 #endif

@@ -18,10 +18,10 @@ static const char help[] =
     "                    [--max-lag L] [--axis x|y|z] [--radial] [--unbiased]\n"
     "                    [--mean M] [--target SPEC] [--json] [-o OUT.tsv|OUT.exr]\n\n"
     "Estimates the autocorrelation of IN (EXR, PNG or 1D TSV) by FFT with zero\n"
-    "padding.  Lags are in spacing units.  Biased estimate (divisor N) by default;\n"
-    "--unbiased divides by the number of overlapping pairs.  The sample mean is\n"
-    "removed unless --mean gives the known mean.\n\n"
-    "  --max-lag L   largest lag, in spacing units (default a quarter of the axis)\n"
+    "padding.  Lags are in length units (index times spacing).  Biased estimate\n"
+    "(divisor N) by default; --unbiased divides by the number of overlapping\n"
+    "pairs.  The sample mean is removed unless --mean gives the known mean.\n\n"
+    "  --max-lag L   largest lag, a length (default a quarter of the axis's length)\n"
     "  --axis        lag direction for 2D/3D fields (default x)\n"
     "  --radial      average over directions, bins of one sample spacing\n"
     "  --target SPEC add the model's R at each lag (radial: at lag (r, 0, 0))\n"
@@ -206,7 +206,7 @@ static void output(const acf_opts *o, const double *lag, const double *val, cons
             names[ncol] = "target", cols[ncol++] = tgt;
         if (o->bands)
             names[ncol] = "lo", cols[ncol++] = blo, names[ncol] = "hi", cols[ncol++] = bhi;
-        snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in spacing units%s",
+        snprintf(comment, sizeof comment, "noiselab acf: %s estimate, %s, lags in length units (index times spacing)%s",
                  o->unbiased ? "unbiased" : "biased", o->radial ? "radial average" : "along one axis",
                  se ? ", mean over the fields with its standard error" : "");
         cli_check(cli_write_table(o->out ? o->tmp : NULL, comment, ncol, names, nl, cols));

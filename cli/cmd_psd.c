@@ -2,6 +2,7 @@
 #include "cli.h"
 #include "dist_inputs.h"
 #include "inputs.h"
+#include "slope_band.h"
 #include "../analysis/ensemble.h"
 #include "../analysis/fftshift.h"
 #include "../analysis/psd.h"
@@ -36,9 +37,15 @@ static const char help[] =
     "  --slope F1:F2 fit log psd = c + slope log f over F1 <= f <= F2: slope, its 95%\n"
     "                confidence interval, and the fractal dimension D = E + (3 - d)/2,\n"
     "                d = -slope in 1D, -slope - (E - 1) in E-D (Lewis 1987, eq. 16, which\n"
-    "                is stated for profiles); in 2D/3D the fit is to every periodogram\n"
-    "                ordinate in the band (each Hermitian pair once), not to the radial\n"
-    "                average, whose interval would be too narrow\n"
+    "                is stated for profiles, for 1 < d < 3: a d whose interval lies outside\n"
+    "                is flagged, JSON flags flatter-than-eq16 or steeper-than-eq16); in\n"
+    "                2D/3D the fit is to every periodogram ordinate in the band (each\n"
+    "                Hermitian pair once), not to the radial average, whose interval\n"
+    "                would be too narrow.  A field that records its model (a file's\n"
+    "                \"model\" provenance, --realizations' --acf) is refused a band\n"
+    "                reaching outside the model's (power: fmin..fmax), where its\n"
+    "                periodogram holds leakage and rounding alone, which would flatten\n"
+    "                the slope; a field made by noiselab shape is not checked\n"
     "  --json        {\"freq\": [...], \"psd\": [...], \"sided\": \"two-sided\", ...} on stdout:\n"
     "                every number of the table and of the comment lines\n"
     "  -o            TSV with columns freq, psd[, se][, target] (default: TSV on stdout)\n\n"
@@ -146,10 +153,15 @@ static void print_json(const psd_opts *o, int dim, const psd_table *t)
     }
     if (o->welch)
         json_object_set_new(j, "welch_segments", json_integer((json_int_t)o->nseg));
-    if (o->slope)
-        json_object_set_new(j, "slope", json_pack("{s:o,s:o,s:I,s:o,s:[f,f]}", "slope", num(o->sl.slope), "ci95",
+    if (o->slope) {
+        int r = nl_slope_fractal_range(&o->sl, dim);
+        json_object_set_new(j, "slope", json_pack("{s:o,s:o,s:I,s:o,s:[f,f],s:o}", "slope", num(o->sl.slope), "ci95",
                                                   num(o->sl.ci95), "points", (json_int_t)o->sl.points,
-                                                  "fractal_dimension", num(o->sl.fractal_dim), "band", o->f1, o->f2));
+                                                  "fractal_dimension", num(o->sl.fractal_dim), "band", o->f1, o->f2,
+                                                  "flags", r ? json_pack("[s]", r < 0 ? "flatter-than-eq16"
+                                                                                       : "steeper-than-eq16")
+                                                             : json_array()));
+    }
     cli_json_print(j);
 }
 
@@ -167,25 +179,30 @@ static void output(const psd_opts *o, int dim, const psd_table *t)
         else
             printf("\n# anisotropy (max/min sector power) undefined (a sector holds no power)\n");
     }
-    if (o->slope && !o->json)
+    if (o->slope && !o->json) {
+        int r = nl_slope_fractal_range(&o->sl, dim);
         printf("# slope %.4f +- %.4f (95%%, %zu frequencies in [%g, %g]); fractal dimension "
-                "%.4f\n", o->sl.slope, o->sl.ci95, o->sl.points, o->f1, o->f2, o->sl.fractal_dim);
+                "%.4f", o->sl.slope, o->sl.ci95, o->sl.points, o->f1, o->f2, o->sl.fractal_dim);
+        if (r)
+            printf(" (outside eq. 16, which holds for 1 < d < 3: d = %.4f, %s)", -o->sl.slope - (dim - 1),
+                   r < 0 ? "a flatter spectrum, whose graph fills its space" : "a steeper spectrum, whose graph is "
+                   "smooth, D = E");
+        printf("\n");
+    }
     if (o->out || (!o->json && !o->angular && !o->preview)) {
         const char *names[4] = {"freq", "psd"};
         const double *cols[4] = {t->freq, t->val};
         int nc = 2;
-        char comment[200];
+        char comment[400], welch[200];
         if (t->se)
             names[nc] = "se", cols[nc++] = t->se;
         if (t->tgt)
             names[nc] = "target", cols[nc++] = t->tgt;
-        snprintf(comment, sizeof comment, "noiselab psd: two-sided %s density%s, freq in cycles per unit%s",
-                 o->welch ? "Welch" : "periodogram", dim == 1 ? "" : ", radial average",
+        snprintf(welch, sizeof welch, "Welch density (Welch's average of the periodograms of %zu Hann-windowed, "
+                 "half-overlapping segments of %zu samples per axis)", o->nseg, o->welch);
+        snprintf(comment, sizeof comment, "noiselab psd: two-sided %s%s, freq in cycles per unit%s",
+                 o->welch ? welch : "periodogram density", dim == 1 ? "" : ", radial average",
                  t->se ? ", mean over the fields with its standard error" : "");
-        if (!t->se) /* one field: the comment as it always was */
-            snprintf(comment, sizeof comment, "%s", dim == 1 ? "noiselab psd: two-sided periodogram density, freq in "
-                     "cycles per unit" : "noiselab psd: two-sided periodogram density, radial average, freq in "
-                     "cycles per unit");
         st = cli_write_table(o->out ? o->tmp : NULL, comment, nc, names, t->nf, cols);
         cli_check(st);
     }
@@ -256,6 +273,11 @@ static int distributed(psd_opts *o)
     if (o->welch || o->preview || o->target || (o->out && cli_has_ext(o->out, ".exr")))
         cli_dist_refuse("psd", o->welch ? "--welch" : o->preview ? "--preview" : o->target ? "--target" : "-o OUT.exr");
     cli_dist_read(&o->src, &s, &hdr);
+    if (o->slope) { /* every process alike */
+        nl_meta meta;
+        cli_check(cli_h5_read_meta(o->src.files[0], &meta));
+        cli_slope_band_check("psd", "--slope", o->f1, o->f2, cli_meta_model(&meta), hdr.dim);
+    }
     if (o->angular && hdr.dim != 2)
         cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", o->src.files[0], hdr.dim);
     maxn = hdr.n[0] + hdr.n[1] + hdr.n[2];
@@ -294,6 +316,8 @@ int cli_cmd_psd(int argc, char **argv)
     if (cli_dist_wanted(&o.src, "psd"))
         return distributed(&o);
     x = cli_inputs_read(&o.src, 0, NULL);
+    if (o.slope)
+        cli_slope_band_check("psd", "--slope", o.f1, o.f2, cli_inputs_model(&o.src), x->dim);
     if ((o.angular || o.preview || (o.out && cli_has_ext(o.out, ".exr"))) && x->dim != 2)
         cli_die(2, "psd: --angular, --preview and EXR output need a 2D field, %s is %dD", cli_inputs_name(&o.src, 0), x->dim);
     if (o.preview && !cli_has_ext(o.preview, ".png"))

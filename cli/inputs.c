@@ -5,6 +5,7 @@
 #include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 const cli_opt cli_inputs_rows[] = {
     CLI_COUNT("realizations", cli_inputs, K, .lo = 1, .hi = 100000, .what = "at most 100000"),
@@ -61,7 +62,7 @@ static nl_field *realization(cli_inputs *in, size_t k)
 
 nl_field *cli_inputs_read(cli_inputs *in, size_t k, const nl_field *like)
 {
-    nl_field *x = in->K ? realization(in, k) : cli_read_field(in->files[k], NULL);
+    nl_field *x = in->K ? realization(in, k) : cli_read_field(in->files[k], &in->meta);
     int same = !like || x->dim == like->dim;
     for (int a = 0; like && a < 3 && same; a++)
         same = x->n[a] == like->n[a] && (a >= x->dim || x->h[a] == like->h[a]);
@@ -69,6 +70,17 @@ nl_field *cli_inputs_read(cli_inputs *in, size_t k, const nl_field *like)
         cli_die(2, "%s: expected a field of the size and spacing of %s (an ensemble), got %dD of %zu samples",
                 in->files[k], in->files[0], x->dim, x->count);
     return x;
+}
+
+const char *cli_meta_model(const nl_meta *meta)
+{
+    /* cmd_shape.c appends " + shape:DIST" (or "shape:DIST") to the method */
+    return strstr(meta->method, "shape:") ? "" : meta->model;
+}
+
+const char *cli_inputs_model(const cli_inputs *in)
+{
+    return in->K ? in->spec : cli_meta_model(&in->meta);
 }
 
 void cli_inputs_free(cli_inputs *in)

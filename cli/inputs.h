@@ -26,6 +26,7 @@ typedef struct {
     nl_model *m;               /* the model, parsed once */
     nl_synth_fft_plan *plan;   /* planned on first use */
     char name[96];             /* the name of the last field asked for */
+    nl_meta meta;              /* the provenance of the last file read (zero: none) */
 } cli_inputs;
 
 /* The rows of --realizations K, --acf SPEC, --size N and --seed S, for a
@@ -42,6 +43,16 @@ void cli_inputs_operands(cli_inputs *in, const char *cmd, int argc, char **argv)
  * NULL the field must have its dim, size and spacing (an ensemble), or the
  * command exits 2. */
 nl_field *cli_inputs_read(cli_inputs *in, size_t k, const nl_field *like);
+
+/* The model whose spectrum the last field read holds: the spec of
+ * --realizations, or the model its file records, unless the file records a
+ * memoryless shaping (noiselab shape: its spectrum reaches beyond the
+ * model's band); "" when none (a field without provenance, a picture). */
+const char *cli_inputs_model(const cli_inputs *in);
+
+/* The same for a file's provenance (the model it records, or "" when it
+ * records none or a shaping); a string inside meta. */
+const char *cli_meta_model(const nl_meta *meta);
 
 /* The name of field k for messages: its file, or "realization (seed S)". */
 const char *cli_inputs_name(cli_inputs *in, size_t k);

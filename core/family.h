@@ -38,10 +38,12 @@ typedef struct nl_model nl_model;
 /* What a parameter is to the model. */
 typedef enum {
     NL_ROLE_SHAPE = 0,   /* a shape parameter (alpha, nu, omega, d, ...) */
-    NL_ROLE_VARIANCE,    /* var: R(0) of the continuous part (power: the target variance) */
+    NL_ROLE_VARIANCE,    /* var: R(0) of the continuous part, in every dimension (power: the
+                            integral of S over its band in dim dimensions) */
     NL_ROLE_SCALE,       /* scale: the correlation length (spherical: the range) */
     NL_ROLE_NUGGET,      /* nugget: white noise at lag 0 */
-    NL_ROLE_BAND         /* fmin, fmax: a frequency band */
+    NL_ROLE_BAND         /* fmin, fmax: the band of |f| outside which S is 0, lower edge
+                            first (nl_model_band, core/model.h) */
 } nl_param_role;
 
 /* Valid values of a parameter (checked by nl_model_parse). */

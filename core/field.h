@@ -3,7 +3,7 @@
  * Layout is row-major with x fastest: sample (i, j, k) (x, y, z index) is
  * data[(k * n[1] + j) * n[0] + i].  Axes beyond `dim` have n = 1 and h = 1.
  * h[a] is the grid spacing along axis a, so the lag between samples i and
- * i + m along x is m * h[0] (lags are always in spacing units).
+ * i + m along x is m * h[0] (lags are always lengths: index times spacing).
  *
  * Thread safety: every function here is thread-safe; a field itself is
  * plain memory (concurrent reads are fine, writes need the caller's care). */

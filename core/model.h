@@ -154,7 +154,7 @@ int nl_model_has_acf(const nl_model *m);
  * (a muParser object holds its variables and evaluation stack). */
 int nl_model_is_reentrant(const nl_model *m);
 
-/* R at the lag vector lag[0..dim-1] (spacing units), for models defined by R,
+/* R at the lag vector lag[0..dim-1] (lengths, in the units of scale), for models defined by R,
  * and for power:, whose R is computed by quadrature (the Fourier or Hankel
  * transform of its band-limited spectrum, Lewis 1987 eq. (13)).  For
  * spectrum: models returns NAN (use the sampled conversion in wk.h).  NAN
@@ -221,6 +221,20 @@ double nl_model_spectrum_iso(const nl_model *m, int dim, double w);
  * (nl_model_spectrum).  Thread safety as nl_model_spectrum (core/model.h,
  * "Thread safety"); GSL runs under the library's guard. */
 double nl_model_spectral_density(const nl_model *m, int dim, const double *f);
+
+/* The band of radial frequencies fmin <= |f| <= fmax (cycles per unit
+ * length, as the spectrum's) outside which the model's spectrum in dim
+ * dimensions is zero, so that a field made from it holds no power there
+ * (but for the estimator's leakage and rounding).  A family's band is its
+ * NL_ROLE_BAND parameters (core/family.h; power: fmin, fmax, defaults
+ * included); a family without is the whole axis, *fmin = 0 and *fmax =
+ * INFINITY.  A sum: the smallest band holding every term's (its spectrum
+ * is positive wherever a term's is; a gap between the terms' bands is not
+ * reported).  A product: 0 to the sum of the factors' fmax (its spectrum
+ * is the convolution of theirs).  The nugget is not counted (its white
+ * spectrum depends on the grid).  Returns NL_OK, or NL_EINVAL (dim not 1,
+ * 2 or 3, a NULL argument) with *fmin, *fmax untouched.  Thread-safe. */
+int nl_model_band(const nl_model *m, int dim, double *fmin, double *fmax);
 
 /* Is R a function of |lag| alone in dim > 1 (no sep, angle or ratio, and
  * for expressions no x, y, z)? */

@@ -1,6 +1,6 @@
 /* Wiener-Khinchine conversion on sampled grids: exactness of the round trip,
  * agreement with closed forms (conventions: two-sided density, cycles per
- * unit length, lags in spacing units). */
+ * unit length, lags in length units). */
 #include "../core/field.h"
 #include "../core/model.h"
 #include "../core/mem.h"

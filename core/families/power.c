@@ -1,6 +1,12 @@
 /* power: a power-law spectrum S = c |f|^-d on a band of frequencies
  * (Lewis 1987's fractal model); its R is computed by quadrature
- * (core/model_hankel.c, eq. (13)). */
+ * (core/model_hankel.c, eq. (13)).  var is R(0) in every dimension: c is
+ * var over the integral of |f|^-d over the band's shell in dim dimensions
+ * (power_norm), so that the integral of S over all frequencies is var.
+ * A grid holds only the frequencies |f| >= 1/(n h): at the default fmin,
+ * 64^3 samples of d=3.5 hold 26% of var (the sum of S over the grid's
+ * frequencies; six fields measured 0.25), 256^2 of d=2.5 hold 59%, and
+ * 65536 samples of d=1 all of it. */
 #include "families_internal.h"
 #include "../nl_error.h"
 
@@ -60,7 +66,10 @@ static double spectrum(const nl_model *m, int dim, const double *f)
 const nl_family nl_family_power = {
     .name = "power",
     .aliases = "",
-    .formula = "S = c |f|^-d for fmin <= |f| <= fmax (0 elsewhere), c such that the integral of S is var",
+    .formula = "S = c |f|^-d for fmin <= |f| <= fmax (0 elsewhere), c such that the integral of S over that band in "
+               "the field's dimension is var: var is R(0), the variance of the field in 1D, 2D and 3D alike (c depends "
+               "on the dimension); a grid of n samples at spacing h holds no frequency 0 < |f| < 1/(n h), so where fmin "
+               "is below that its variance falls short of var by the integral of S there",
     .flags = NL_FAMILY_SPECTRAL,
     .validity = "a non-negative density in every dimension: valid wherever its band is",
     .nparams = sizeof params / sizeof *params,

@@ -76,6 +76,9 @@ check() { # args...
 "$bin" synth fft --acf markov:scale=5 --clamp --size 301 --seed 4 --precision double -o "$work/f1.h5" ||
     { echo "analysis.sh: cannot make the fields"; exit 1; }
 f1=$work/f1.h5 f2=$work/f2.h5 f3=$work/f3.h5
+# a field that records a band-limited model (psd --slope keeps inside it)
+"$bin" synth fft --spectrum power:d=1 --size 2048 --seed 5 --precision double -o "$work/fp.h5" || say "cannot make fp.h5"
+fp=$work/fp.h5
 "$bin" synth fft --acf markov:scale=5 --clamp --size 64 --seed 4 -o "$work/f.tsv" || say "cannot make f.tsv"
 
 check acf "$f2"
@@ -94,6 +97,7 @@ check psd --json --mean 0 "$f3"
 check psd --json --slope 0.01:0.3 "$f1"
 check psd --json --slope 0.02:0.25 "$f2"
 check psd --slope 0.05:0.4 "$f3"
+check psd --json --slope 0.001:0.4 "$fp"
 check hist "$f2"
 check hist --json "$f2"
 check hist --json --bins 13 "$f3"
@@ -140,6 +144,7 @@ bad "--realizations" psd --realizations 2 --acf markov:scale=3 --size 32x32
 bad "not .h5" hist "$work/f.tsv"
 bad "bins" hist --bins 0 "$f2"
 bad "--slope 3:4" psd --slope 3:4 "$f2"
+bad "fmin = 0.0009765625" psd --slope 0.0001:0.4 "$fp"
 bad "-o" hist -o "$work/no/such/dir/x.tsv" "$f2"
 
 [ $fail = 0 ] && echo "analysis.sh: distributed acf, psd and hist agree with one process"
