@@ -55,9 +55,11 @@ MANDIR    ?= $(PREFIX)/share/man
 DOCDIR    ?= $(PREFIX)/share/doc/noiselab
 PCDIR     ?= $(LIBDIR)/pkgconfig
 DATADIR   ?= $(PREFIX)/share
-# noiselab.pc names the folders under PREFIX relative to it (${prefix}/lib).
-PC_LIBDIR  = $(patsubst $(PREFIX)/%,$${prefix}/%,$(LIBDIR))
-PC_INCLUDEDIR = $(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))
+# The folders the build writes into what it makes (noiselab.pc, the
+# planner's wisdom file), kept in a file rewritten only when they change, so
+# that `make install PREFIX=/usr` after a plain `make` remakes what names them.
+INSTALL_DIRS := PREFIX=$(PREFIX) LIBDIR=$(LIBDIR) INCLUDEDIR=$(INCLUDEDIR) PCDIR=$(PCDIR) DATADIR=$(DATADIR)
+PC        := $(BUILD)/noiselab.pc
 # Public headers: every module header but the *_internal.h ones.
 PUB_HDR   := $(filter-out %_internal.h,$(wildcard core/*.h synth/*.h analysis/*.h render/*.h))
 MPI_HDR   := $(filter-out %_internal.h,$(wildcard mpi/*.h))
@@ -66,9 +68,9 @@ MPI_HDR   := $(filter-out %_internal.h,$(wildcard mpi/*.h))
 PYTHON    ?= /usr/bin/python3
 PYDIR     ?= $(if $(filter /usr,$(PREFIX)),/usr/lib/python3/dist-packages,$(PREFIX)/lib/python$(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)/dist-packages)
 
-.PHONY: all deps wisdom test test-api figures experiments bench asan fuzz clean install uninstall
+.PHONY: all deps wisdom test test-api figures experiments bench asan fuzz clean install uninstall FORCE
 .SECONDARY:
-all: $(BIN) $(MPIBIN) $(LIB) $(SOLIB) $(MPISOLIB) $(MAN)
+all: $(BIN) $(MPIBIN) $(LIB) $(SOLIB) $(MPISOLIB) $(MAN) $(PC)
 
 # One list of packages, in deps.txt; the stamp is redone when it changes.
 $(DEPS_OK): deps.txt tools/deps.sh
@@ -91,6 +93,9 @@ $(BUILD)/core/rng%.o: CFLAGS += -ffp-contract=off
 $(BUILD)/synth/subdiv_simd%.o: CFLAGS += -ffp-contract=off
 # Where the planner finds the measured FFTW wisdom that install puts there.
 $(BUILD)/core/fftw_plan.o: CFLAGS += -DNL_WISDOM_FILE='"$(DATADIR)/noiselab/fftw-wisdom"'
+$(BUILD)/core/fftw_plan.o: $(BUILD)/install-dirs
+$(BUILD)/install-dirs: FORCE
+	@mkdir -p $(BUILD) && echo '$(INSTALL_DIRS)' | cmp -s - $@ || echo '$(INSTALL_DIRS)' > $@
 
 $(LIB): $(LIB_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
@@ -126,6 +131,11 @@ $(SOLIB): $(LIB_OBJ) $(BUILD)/libnoiselab.map
 	    -o $@ $(LIB_OBJ) -Wl,--no-as-needed $(LDLIBS)
 	ln -sf $(notdir $@) $(BUILD)/$(SONAME)
 	ln -sf $(SONAME) $(BUILD)/libnoiselab.so
+
+# noiselab.pc for pkg-config, its prefix relative to its own folder.
+$(PC): noiselab.pc.in tools/pcfile.sh $(BUILD)/install-dirs core/version.h
+	sh tools/pcfile.sh noiselab.pc.in '$(PREFIX)' '$(LIBDIR)' '$(INCLUDEDIR)' '$(PCDIR)' $(VERSION) \
+	    '-fopenmp $(LDLIBS)' > $@.tmp && mv $@.tmp $@
 
 # noiselab(1), from the help texts of the command and its subcommands.
 $(MAN): $(BIN) tools/manpage.sh
@@ -235,8 +245,7 @@ install: all $(WISDOM)
 	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libnoiselab.so
 	install -m 644 include/noiselab.h $(DESTDIR)$(INCLUDEDIR)/noiselab.h
 	for h in $(PUB_HDR); do install -m 644 $$h $(DESTDIR)$(INCLUDEDIR)/noiselab/$$h || exit 1; done
-	sed -e 's|@PREFIX@|$(PREFIX)|; s|@LIBDIR@|$(PC_LIBDIR)|; s|@INCLUDEDIR@|$(PC_INCLUDEDIR)|' \
-	    -e 's|@VERSION@|$(VERSION)|; s|@LIBS_PRIVATE@|-fopenmp $(LDLIBS)|' noiselab.pc.in > $(DESTDIR)$(PCDIR)/noiselab.pc
+	install -m 644 $(PC) $(DESTDIR)$(PCDIR)/noiselab.pc
 	install -m 644 $(MAN) $(DESTDIR)$(MANDIR)/man1/noiselab.1
 	install -m 644 examples/*.c $(DESTDIR)$(DOCDIR)/examples/
 	install -m 644 $(WISDOM) $(DESTDIR)$(DATADIR)/noiselab/fftw-wisdom
