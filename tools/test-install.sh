@@ -1,12 +1,15 @@
 #!/bin/sh
-# The library as a user gets it: `make install` into a scratch DESTDIR, then
-# every program of examples/ and the README's C example ("Using the library")
-# built with pkg-config alone, against the shared and against the static
-# library, and run; the installed headers, man page and symbols checked; the
-# Python package imported from the DESTDIR with the installed library; the
-# include layering of the source folders checked; `make uninstall` leaves no
-# file behind.  Called by `make test` with CC, EXAMPLE_CFLAGS (the build's
-# optimisation and sanitizer flags), MAKE and VERSION in the environment.
+# The library as a user gets it: `make install` into a scratch DESTDIR
+# (writing nothing into the checkout), then every program of examples/ and
+# the README's C example ("Using the library") built with the README's two
+# pkg-config lines, as written there, against the shared and against the
+# static library, and run; noiselab.pc found by PKG_CONFIG_PATH alone (no
+# sysroot, no --define-prefix), also once the tree is moved; the installed
+# headers, man page and symbols checked; the Python package imported from the
+# DESTDIR with the installed library; the include layering of the source
+# folders checked; `make uninstall` leaves no file behind.  Called by `make
+# test` with CC, EXAMPLE_CFLAGS (the build's optimisation and sanitizer
+# flags), MAKE and VERSION in the environment.
 set -u
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
@@ -88,18 +91,80 @@ no_file_left() {
 }
 
 # build_run NAME SRC: the program against the shared library, then the static one.
+# The README's lines `cc app.c $(pkg-config ...)` under "make install", as
+# written there (comments off): the first for the shared library, the second
+# (--static) for libnoiselab.a.
+readme_cc() {
+    awk '/doc-test: skip \(tools\/test-install.sh/ { blk = 1; next }
+         blk && /^    cc app[.]c / { sub(/^    /, ""); sub(/[[:space:]]+#[^#]*$/, ""); print; next }
+         blk && /^[^ ]/ && !/^$/ { exit }' README.md
+}
+cc_shared=$(readme_cc | grep -v -e '--static' | head -n 1)
+cc_static=$(readme_cc | grep -e '--static' | head -n 1)
+# cc as the README's lines call it, with the build's flags (sanitizers under make asan).
+cc() { command $CC $EXAMPLE_CFLAGS "$@"; }
+# in_dir DIR LINE: run LINE (a README command) in DIR.
+in_dir() { (cd "$1" && eval "$2"); }
+
+# build_run NAME SRC: the program, as app.c, built by the README's lines
+# against the shared library, then the static one, and run.
 build_run() {
-    exe=$tmp/$1
-    check "$1: build against libnoiselab.so" $CC $EXAMPLE_CFLAGS -o "$exe" "$2" $(pkg-config --cflags --libs noiselab)
-    check "$1: run against the installed libnoiselab.so" env LD_LIBRARY_PATH="$libdir" "$exe"
-    static=$(pkg-config --static --cflags --libs noiselab | sed 's/-lnoiselab/-Wl,-Bstatic -lnoiselab -Wl,-Bdynamic/')
-    check "$1: build against libnoiselab.a" $CC $EXAMPLE_CFLAGS -o "$exe-static" "$2" $static
-    check "$1: libnoiselab.a linked in, not the .so" sh -c "! readelf -d '$exe-static' | grep -q 'NEEDED.*libnoiselab'"
-    check "$1: run, linked statically" "$exe-static"
+    d=$tmp/$1
+    mkdir -p "$d" && cp "$2" "$d/app.c"
+    check "$1: README's line builds it against libnoiselab.so" in_dir "$d" "$cc_shared -o shared"
+    check "$1: run against the installed libnoiselab.so" sh -c "LD_LIBRARY_PATH='$libdir' ldd '$d/shared' | grep -q '=> $libdir/libnoiselab.so' && \
+        LD_LIBRARY_PATH='$libdir' '$d/shared'"
+    check "$1: README's --static line builds it against libnoiselab.a" in_dir "$d" "$cc_static -o static"
+    check "$1: linked with libnoiselab.a, ldd names no libnoiselab" sh -c "ldd '$d/static' && ! ldd '$d/static' | grep -q libnoiselab"
+    check "$1: run, linked statically" "$d/static"
 }
 
+# The checkout as git and the clock see it, build/ and bin/ left out (what
+# make builds), to show that install and uninstall write nothing else.
+tree_state() {
+    if git -C "$top" rev-parse --git-dir >/dev/null 2>&1; then
+        git -C "$top" status --porcelain --ignored --untracked-files=all | grep -v -e '^.. build/' -e '^.. bin/'
+    fi
+    find "$top" \( -path "$top/.git" -o -path "$top/build" -o -path "$top/bin" \) -prune -o -newer "$tmp/stamp" -print
+}
+wrote_nothing() {
+    tree_state >"$tmp/after"
+    diff -u "$tmp/before" "$tmp/after" || { echo "^ written into the checkout (+ lines)"; false; }
+}
+
+# PKG_CONFIG_PATH=DIR pkg-config --variable=VAR noiselab names the folder WANT.
+pc_names() {
+    got=$(PKG_CONFIG_PATH=$1 pkg-config --variable="$2" noiselab) &&
+        [ -d "$got" ] && [ "$(cd "$got" && pwd -P)" = "$(cd "$3" && pwd -P)" ] ||
+        { echo "$2 is \"$got\", expected $3"; false; }
+}
+
+check "README: the two cc lines under make install" test -n "$cc_shared" -a -n "$cc_static"
+# Whatever install needs is built first, so that the checkout's state is
+# compared around the install alone.
+$MAKE --no-print-directory all wisdom >"$tmp/log" 2>&1 || { echo "install: make all failed" >&2; cat "$tmp/log" >&2; exit 1; }
+touch "$tmp/stamp"
+sleep 1 # (find -newer: a second apart on coarse clocks)
+tree_state >"$tmp/before"
 check "make install DESTDIR=..." $MAKE --no-print-directory install DESTDIR="$root" PREFIX=$prefix
-export PKG_CONFIG_PATH="$libdir/pkgconfig" PKG_CONFIG_SYSROOT_DIR="$root"
+check "make install wrote nothing into the checkout" wrote_nothing
+# As a user of a staged tree does it: no PKG_CONFIG_SYSROOT_DIR, no --define-prefix.
+unset PKG_CONFIG_SYSROOT_DIR PKG_CONFIG_LIBDIR
+export PKG_CONFIG_PATH="$libdir/pkgconfig"
+check "pkg-config finds the staged includedir" pc_names "$libdir/pkgconfig" includedir "$root$prefix/include"
+check "pkg-config finds the staged libdir" pc_names "$libdir/pkgconfig" libdir "$libdir"
+# A moved tree describes itself too.
+mv "$root" "$tmp/moved"
+check "pkg-config finds a moved tree's libdir" pc_names "$tmp/moved$prefix/lib/pkgconfig" libdir "$tmp/moved$prefix/lib"
+mv "$tmp/moved" "$root"
+# Debian's multiarch layout: PCDIR three folders under PREFIX.
+ma=$tmp/ma/usr/lib/x86_64-linux-gnu
+mkdir -p "$ma/pkgconfig"
+sh tools/pcfile.sh noiselab.pc.in /usr /usr/lib/x86_64-linux-gnu /usr/include /usr/lib/x86_64-linux-gnu/pkgconfig "$VERSION" -lm \
+    >"$ma/pkgconfig/noiselab.pc"
+mkdir -p "$tmp/ma/usr/include"
+check "multiarch noiselab.pc: libdir" pc_names "$ma/pkgconfig" libdir "$ma"
+check "multiarch noiselab.pc: includedir" pc_names "$ma/pkgconfig" includedir "$tmp/ma/usr/include"
 export NOISELAB_FFTW=estimate # as in the other tests: no measured plans
 cflags=$(pkg-config --cflags noiselab)
 mpiflags=$(PKG_CONFIG_PATH= PKG_CONFIG_SYSROOT_DIR= pkg-config --cflags hdf5-openmpi mpi)
@@ -168,6 +233,7 @@ esac
 
 check "make uninstall" $MAKE --no-print-directory uninstall DESTDIR="$root" PREFIX=$prefix
 check "make uninstall leaves no file" no_file_left
+check "make install and uninstall wrote nothing into the checkout" wrote_nothing
 
 echo "install: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
