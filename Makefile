@@ -224,7 +224,8 @@ $(WISDOM): tools/wisdom.sh | $(BIN)
 wisdom: $(WISDOM)
 
 # DESTDIR, PREFIX, LIBDIR, INCLUDEDIR, MANDIR, DOCDIR, PCDIR as usual, and
-# INSTALL_BINDIR (BINDIR is where the build puts the program).
+# INSTALL_BINDIR (BINDIR is where the build puts the program).  Install copies
+# what the build made under build/ and bin/ and writes nothing else in the tree.
 # Headers go to INCLUDEDIR/noiselab/{core,synth,analysis,render}/ (the tree's
 # layout, so their relative includes hold) and noiselab.h to INCLUDEDIR.
 install: all $(WISDOM)
