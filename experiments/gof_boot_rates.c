@@ -1,7 +1,9 @@
 /* Experiment: the false-alarm rate and the power of the bootstrap
  * goodness-of-fit test of noiselab hist --against (analysis/gof_boot.h).
- * Each field is an FFT synthesis of MODEL (variance 1) on a SIZE x SIZE
- * grid, seeds 1..K, then
+ * Each field is an FFT synthesis of MODEL on a SIZE x SIZE grid, seeds
+ * 1..K, divided by its ensemble standard deviation on that grid (the
+ * plan's R(0): a power law's band below the grid's lowest frequency is
+ * missing from it), then
  *   exact    mapped exactly by F^-1(Phi(x)) onto DIST: a sample of a process
  *            whose marginal is DIST (false alarms);
  *   shape    shaped by noiselab shape --to DIST, which fits each field's own
@@ -26,9 +28,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Map the standard Gaussian field f for the mode. */
-static int map(nl_field *f, const nl_dist *to, const char *mode)
+/* Map the Gaussian field f of variance var for the mode. */
+static int map(nl_field *f, double var, const nl_dist *to, const char *mode)
 {
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] /= sqrt(var);
     if (strcmp(mode, "shape") == 0)
         return nl_synth_shape(f, to, 0);
     if (strncmp(mode, "scale:", 6) == 0) {
@@ -55,6 +59,7 @@ int main(int argc, char **argv)
     nl_synth_fft_plan *p;
     nl_field *f;
     nl_gof_boot b;
+    nl_synth_fft_info info;
     size_t n[2], K, B, rej[NL_GOF_NSTATS + 1] = {0}, rank[NL_GOF_NSTATS] = {0}, tested[NL_GOF_NSTATS] = {0};
     double lo = 0, hi = 0, ks = 0, radius = 0;
     if (argc != 6 && argc != 7)
@@ -64,8 +69,9 @@ int main(int argc, char **argv)
     if (nl_model_parse(argv[1], &m) || nl_dist_parse(argv[4], &d) || nl_synth_fft_plan_alloc(m, 2, n, NULL, 0, &p) ||
         !(f = nl_field_alloc(2, n, NULL, NULL)) || K == 0)
         return fprintf(stderr, "gof_boot_rates: bad arguments\n"), 2;
+    nl_synth_fft_plan_info(p, &info);
     for (size_t s = 1; s <= K; s++) {
-        if (nl_synth_fft_execute(p, s, f) || map(f, d, argv[5]) ||
+        if (nl_synth_fft_execute(p, s, f) || map(f, info.variance, d, argv[5]) ||
             nl_gof_boot_test((const nl_field *const *)&f, 1, d, B, NL_GOF_BOOT_SEED, 50, &b))
             return fprintf(stderr, "gof_boot_rates: seed %zu failed\n", s), 1;
         for (int t = 0; t < NL_GOF_NSTATS; t++)
