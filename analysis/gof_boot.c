@@ -156,8 +156,9 @@ static int draw(boot *t, uint64_t seed, size_t b)
 #pragma omp parallel for if (g->count >= 65536) schedule(static)
         for (size_t i = 0; i < g->count; i++) {
             u[i] = gsl_cdf_ugaussian_P(g->data[i]);
+            /* as nl_dist_transform, without computing Phi twice */
             if (xs)
-                xs[i] = nl_dist_transform(t->d, g->data[i]);
+                xs[i] = nl_dist_quantile(t->d, fmin(fmax(u[i], 1e-300), 1 - 1e-16));
         }
     }
     nl_gof_boot_stats(t->u, t->xs, t->want, &t->w, t->T + b * NL_GOF_NSTATS, t->half + b);
