@@ -17,7 +17,7 @@
 
 static const char help[] =
     "usage: noiselab hist IN...|--realizations K --acf SPEC --size N [--seed S]\n"
-    "                     [--bins B] [--against DIST [--draws B] [--draw-seed S] | --independent]\n"
+    "                     [--bins B] [--against DIST [--draws D] [--draw-seed S] | --independent]\n"
     "                     [--json] [-o OUT.tsv]\n\n"
     "Histogram of the samples of IN (EXR, PNG or 1D TSV) in B equal bins over\n"
     "[min, max] (default 50), with the mean, the unbiased variance, the skewness\n"
@@ -39,7 +39,7 @@ static const char help[] =
     "                gauss and power models mapped exactly to gauss, laplace, uniform\n"
     "                and lognormal), the verdict rejected GOF_FA_VERDICT of them\n"
     "                (experiments/gof_boot_rates.c).\n"
-    "  --draws B     null draws (default 199, at least 2)\n"
+    "  --draws D     null draws (default 199, at least 2)\n"
     "  --draw-seed S the seed of the null draws (default 1)\n"
     "  --independent test every sample as if independent (white fields only)\n"
     "  --json        every number on stdout as JSON\n"
