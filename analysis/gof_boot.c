@@ -12,7 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define Z975 1.959963984540054
 #define Z80 0.8416212335729143
 #define KS_MEDIAN 0.8275735551899077 /* median of the Kolmogorov law */
 #define KS_Q95 1.3580986393225505    /* its 95% point */
@@ -236,9 +235,11 @@ static void verdict(const boot *t, nl_gof_boot *out)
     out->p = fmin(1, pmin * (double)out->tests);
     out->var_ratio_lo = out->var_ratio_hi = NAN;
     if (v->tested) {
-        double r = v->null_sd / v->null_mean;
-        out->var_ratio_hi = Z80 * r < 1 ? (1 + Z975 * r) / (1 - Z80 * r) : INFINITY;
-        out->var_ratio_lo = fmax(1 - Z975 * r, 0) / (1 + Z80 * r);
+        /* the quantiles of the t law the variance test uses */
+        double r = v->null_sd / v->null_mean, ta = gsl_cdf_tdist_Pinv(0.975, out->moment_dof),
+               tb = gsl_cdf_tdist_Pinv(0.8, out->moment_dof);
+        out->var_ratio_hi = tb * r < 1 ? (1 + ta * r) / (1 - tb * r) : INFINITY;
+        out->var_ratio_lo = fmax(1 - ta * r, 0) / (1 + tb * r);
     }
     for (size_t b = 0; b < t->B; b++)
         hm += t->half[b];

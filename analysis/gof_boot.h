@@ -65,21 +65,23 @@
  * |T_b - m_b| >= |T - m_b|).  The verdict is Bonferroni's: the smallest
  * approximate p times the number of statistics tested, at most 1.
  *
- * Power at the 5% level (80% power, z_0.975 = 1.959964, z_0.8 = 0.841621):
+ * Power at the 5% level (80% power):
  *   variance  a field scaled about its mean so that its variance is r times
- *             the law's has variance statistic ~ N(r m, r s) (m, s: the
- *             draws' mean and sd of the variance); the test rejects it 80%
- *             of the time when r = (1 + z_0.975 s/m) / (1 - z_0.8 s/m), or
- *             below, r = (1 - z_0.975 s/m) / (1 + z_0.8 s/m);
+ *             the law's has a variance statistic r times the null's, of mean
+ *             r m and sd r s (m, s: the draws' mean and sd of the variance);
+ *             the test (t law, nu degrees of freedom) rejects it 80% of the
+ *             time when r = (1 + t_0.975 s/m) / (1 - t_0.8 s/m), or below,
+ *             r = (1 - t_0.975 s/m) / (1 + t_0.8 s/m) (t_q: quantiles of
+ *             t_nu);
  *   ks        a law at KS distance delta from F, attained at some u*, gives
  *             D >= |F_n(u*) - F_alt(u*)| ~ delta + e with e of sd at most
  *             sigma_1/2 (the draws' sd of F_n(1/2) - 1/2: the median
  *             indicator is the one of largest variance); D exceeds the
  *             draws' 95% quantile q_95 at least 80% of the time when
- *             delta = q_95 + z_0.8 sigma_1/2.
+ *             delta = q_95 + z_0.8 sigma_1/2 (z_0.8 = 0.841621).
  *
  * Thread safety: plans FFTW (analysis/acf.h, synth/fft.h): not thread-safe;
- * x and d are only read.  Memory: about four times the samples in doubles,
+ * x and d are only read.  Memory: about six times the samples in doubles,
  * besides the input. */
 #ifndef NL_GOF_BOOT_H
 #define NL_GOF_BOOT_H

@@ -140,6 +140,8 @@ static json_t *boot_json(const hist_opts *o, const nl_gof_boot *b)
     json_object_set_new(j, "draw_seed", json_integer((json_int_t)o->draw_seed));
     json_object_set_new(j, "tests", tests);
     json_object_set_new(j, "ks_effective_n", num(b->ks_n_eff));
+    json_object_set_new(j, "ks_shift", num(b->ks_shift));
+    json_object_set_new(j, "moment_dof", num(b->moment_dof));
     json_object_set_new(j, "chi2_scale", num(b->chi2_scale));
     json_object_set_new(j, "chi2_dof", num(b->chi2_dof));
     json_object_set_new(j, "verdict_p", num(b->p));
@@ -198,15 +200,16 @@ static void print_boot(const hist_opts *o, const nl_gof_boot *b)
     if (b->radius_min < b->radius_max)
         printf(" at most, %g at least", b->radius_min);
     printf(" samples)\n");
-    printf("# against %s: KS D %.6g p %.4g (rank p %.3g; Kolmogorov law with effective n %.1f)\n", a, ks->value,
-           ks->p, ks->p_rank, b->ks_n_eff);
+    printf("# against %s: KS D %.6g p %.4g (rank p %.3g; Kolmogorov law fitted to the draws, effective n %.1f)\n", a,
+           ks->value, ks->p, ks->p_rank, b->ks_n_eff);
     printf("# against %s: chi-square %.6g on %zu equal-probability bins p %.4g (rank p %.3g; %.3g chi-square on "
            "%.1f degrees of freedom)\n", a, c->value, b->bins, c->p, c->p_rank, b->chi2_scale, b->chi2_dof);
     for (int s = NL_GOF_MEAN; s < NL_GOF_NSTATS; s++) {
         const nl_gof_boot_stat *m = &b->stat[s];
         if (m->tested)
-            printf("# against %s: %s %.6g (law %.6g, null %.6g +- %.3g) p %.4g (rank p %.3g)\n", a,
-                   nl_gof_boot_name(s), m->value, m->expected, m->null_mean, m->null_sd, m->p, m->p_rank);
+            printf("# against %s: %s %.6g (law %.6g, null %.6g +- %.3g) p %.4g (rank p %.3g; t law, %.0f degrees of "
+                   "freedom)\n", a, nl_gof_boot_name(s), m->value, m->expected, m->null_mean, m->null_sd, m->p, m->p_rank,
+                   b->moment_dof);
     }
     printf("# against %s: verdict p %.4g (%s, times %zu tests): %s at 5%%\n", a, b->p, nl_gof_boot_name(b->p_from),
            b->tests, b->p < 0.05 ? "rejected" : "not rejected");
