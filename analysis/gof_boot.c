@@ -154,7 +154,7 @@ static int draw(boot *t, uint64_t seed, size_t b)
             return st;
 #pragma omp parallel for if (g->count >= 65536) schedule(static)
         for (size_t i = 0; i < g->count; i++) {
-            u[i] = gsl_cdf_ugaussian_P(g->data[i]);
+            u[i] = 0.5 * erfc(-g->data[i] / M_SQRT2); /* Phi, as GSL's to rounding, faster */
             /* as nl_dist_transform, without computing Phi twice */
             if (xs)
                 xs[i] = nl_dist_quantile(t->d, fmin(fmax(u[i], 1e-300), 1 - 1e-16));
