@@ -179,38 +179,61 @@ static double quantile(double *v, size_t B, double q)
     return i + 1 < B ? v[i] + (p - f) * (v[i + 1] - v[i]) : v[B - 1];
 }
 
-/* Mean, sd and rank p of statistic s over the draws; v receives the draws' values. */
-static void summarise(const boot *t, int s, double T, double *v, nl_gof_boot_stat *o)
+/* The scale on which a moment's null is nearly symmetric: the log of the
+ * variance (a sum of squares, skewed like a chi-square) and of the kurtosis
+ * + 3 = m4 / m2^2 >= 1; the mean and the skewness as they are. */
+static double sym(int s, double x)
 {
-    double m = 0, ss = 0, above = 0;
-    int moment = s >= NL_GOF_MEAN;
-    for (size_t b = 0; b < t->B; b++)
-        v[b] = t->T[b * NL_GOF_NSTATS + s], m += v[b];
-    m /= (double)t->B;
-    for (size_t b = 0; b < t->B; b++)
-        ss += (v[b] - m) * (v[b] - m);
-    for (size_t b = 0; b < t->B; b++)
-        above += moment ? fabs(v[b] - m) >= fabs(T - m) : v[b] >= T;
-    o->tested = 1, o->value = T, o->null_mean = m, o->null_sd = sqrt(ss / (double)(t->B - 1));
-    o->p_rank = (1 + above) / (double)(t->B + 1);
+    return s == NL_GOF_VARIANCE ? log(x) : s == NL_GOF_KURTOSIS ? log(x + 3) : x;
 }
 
-/* The approximate p-values (header: normal, Satterthwaite, Kolmogorov). */
-static void p_values(const boot *t, double *v, nl_gof_boot *out)
+static void mean_sd(const double *v, size_t B, double *m, double *sd)
+{
+    double a = 0, ss = 0;
+    for (size_t b = 0; b < B; b++)
+        a += v[b];
+    a /= (double)B;
+    for (size_t b = 0; b < B; b++)
+        ss += (v[b] - a) * (v[b] - a);
+    *m = a, *sd = sqrt(ss / (double)(B - 1));
+}
+
+/* Mean, sd and rank p of statistic s over the draws; v receives the draws'
+ * values.  Moments: *lm and *ls are the mean and sd on the symmetric scale,
+ * where the rank p is two-sided. */
+static void summarise(const boot *t, int s, double T, double *v, nl_gof_boot_stat *o, double *lm, double *ls)
+{
+    double above = 0;
+    int moment = s >= NL_GOF_MEAN;
+    for (size_t b = 0; b < t->B; b++)
+        v[b] = t->T[b * NL_GOF_NSTATS + s];
+    mean_sd(v, t->B, &o->null_mean, &o->null_sd);
+    if (moment) {
+        for (size_t b = 0; b < t->B; b++)
+            v[b] = sym(s, v[b]);
+        mean_sd(v, t->B, lm, ls);
+    }
+    for (size_t b = 0; b < t->B; b++)
+        above += moment ? fabs(v[b] - *lm) >= fabs(sym(s, T) - *lm) : v[b] >= T;
+    o->tested = 1, o->value = T, o->p_rank = (1 + above) / (double)(t->B + 1);
+}
+
+/* The approximate p-values (header: t, Satterthwaite, Kolmogorov). */
+static void p_values(const boot *t, double *v, const double *lm, const double *ls, nl_gof_boot *out)
 {
     nl_gof_boot_stat *ks = &out->stat[NL_GOF_KS], *c = &out->stat[NL_GOF_CHI2];
-    double var, med;
+    double var, med, d = 0;
     for (int s = NL_GOF_MEAN; s < NL_GOF_NSTATS; s++) {
         nl_gof_boot_stat *o = &out->stat[s];
         if (!o->tested)
             continue;
-        o->p = o->null_sd > 0 ? 2 * gsl_cdf_tdist_Q(fabs(o->value - o->null_mean) / o->null_sd, out->moment_dof)
-                              : o->value == o->null_mean;
+        o->p = ls[s] > 0 ? 2 * gsl_cdf_tdist_Q(fabs(sym(s, o->value) - lm[s]) / ls[s], out->moment_dof)
+                         : sym(s, o->value) == lm[s];
     }
     var = c->null_sd * c->null_sd;
     out->chi2_scale = var / (2 * c->null_mean), out->chi2_dof = 2 * c->null_mean * c->null_mean / var;
     c->p = var > 0 ? gsl_cdf_chisq_Q(c->value / out->chi2_scale, out->chi2_dof) : c->value <= c->null_mean;
-    summarise(t, NL_GOF_KS, ks->value, v, ks);
+    summarise(t, NL_GOF_KS, ks->value, v, ks, &d, &d);
     out->ks_q95 = quantile(v, t->B, 0.95);
     med = quantile(v, t->B, 0.5);
     if (out->ks_q95 > med)
@@ -220,8 +243,9 @@ static void p_values(const boot *t, double *v, nl_gof_boot *out)
     ks->p = q_ks(sqrt(out->ks_n_eff) * (ks->value - out->ks_shift));
 }
 
-/* Verdict and detectable departures (header: power). */
-static void verdict(const boot *t, nl_gof_boot *out)
+/* Verdict and detectable departures (header: power); ls_var: the sd of the
+ * log variance over the draws. */
+static void verdict(const boot *t, double ls_var, nl_gof_boot *out)
 {
     const nl_gof_boot_stat *v = &out->stat[NL_GOF_VARIANCE];
     double pmin = INFINITY, hm = 0, hs = 0;
@@ -236,10 +260,8 @@ static void verdict(const boot *t, nl_gof_boot *out)
     out->var_ratio_lo = out->var_ratio_hi = NAN;
     if (v->tested) {
         /* the quantiles of the t law the variance test uses */
-        double r = v->null_sd / v->null_mean, ta = gsl_cdf_tdist_Pinv(0.975, out->moment_dof),
-               tb = gsl_cdf_tdist_Pinv(0.8, out->moment_dof);
-        out->var_ratio_hi = tb * r < 1 ? (1 + ta * r) / (1 - tb * r) : INFINITY;
-        out->var_ratio_lo = fmax(1 - ta * r, 0) / (1 + tb * r);
+        double shift = (gsl_cdf_tdist_Pinv(0.975, out->moment_dof) + gsl_cdf_tdist_Pinv(0.8, out->moment_dof)) * ls_var;
+        out->var_ratio_hi = exp(shift), out->var_ratio_lo = exp(-shift);
     }
     for (size_t b = 0; b < t->B; b++)
         hm += t->half[b];
@@ -251,7 +273,7 @@ static void verdict(const boot *t, nl_gof_boot *out)
 
 static int run(boot *t, uint64_t seed, size_t bins, nl_gof_boot *out)
 {
-    double T[NL_GOF_NSTATS], *v;
+    double T[NL_GOF_NSTATS], lm[NL_GOF_NSTATS] = {0}, ls[NL_GOF_NSTATS] = {0}, *v;
     double (*law[])(const nl_dist *) = {nl_dist_mean, nl_dist_variance, nl_dist_skewness, nl_dist_kurtosis};
     int st;
     memset(out, 0, sizeof *out);
@@ -272,13 +294,14 @@ static int run(boot *t, uint64_t seed, size_t bins, nl_gof_boot *out)
         return NL_ERROR(NL_ENOMEM, "out of memory for %zu draws", t->B);
     for (int s = 0; s < NL_GOF_NSTATS; s++) {
         nl_gof_boot_stat *o = &out->stat[s];
-        if (t->want[s])
-            summarise(t, s, T[s], v, o);
+        /* a constant field has no skewness or kurtosis: not tested */
+        if (t->want[s] && !isnan(T[s]))
+            summarise(t, s, T[s], v, o, &lm[s], &ls[s]);
         else
             o->value = o->null_mean = o->null_sd = o->p = o->p_rank = NAN;
     }
-    p_values(t, v, out);
-    verdict(t, out);
+    p_values(t, v, lm, ls, out);
+    verdict(t, ls[NL_GOF_VARIANCE], out);
     free(v);
     out->n = t->n, out->fields = t->K, out->draws = t->B, out->bins = bins;
     return NL_OK;

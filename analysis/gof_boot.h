@@ -43,14 +43,18 @@
  *             kurtosis for the other three).
  * p-values, each statistic against its own bootstrap null (so that values
  * far below 1/B can be reported, the null is summarised by a law):
- *   moments   two-sided Student t, t = (T - m_b) / s_b with the draws' mean
- *             and sd: sample moments of a short-range dependent field are
- *             asymptotically normal (a central limit theorem for mixing
- *             fields, e.g. Bolthausen 1982), and s_b rests on a spectrum
- *             estimated from the field itself, with the equivalent degrees
- *             of freedom nu = 2 N / sum_l w(l)^2 of its lag window w
- *             (Priestley 1981, eq. (6.2.124); summed over an ensemble's
- *             fields): a normal law would reject some 9% of null fields;
+ *   moments   two-sided Student t, t = (g(T) - m_b) / s_b with m_b and s_b
+ *             the draws' mean and sd of g(T_b), g the log for the variance
+ *             and log(kurtosis + 3) for the kurtosis (their nulls are
+ *             skewed like a chi-square's; the logs are nearly symmetric),
+ *             the identity for the mean and skewness: sample moments of a
+ *             short-range dependent field are asymptotically normal (a
+ *             central limit theorem for mixing fields, e.g. Bolthausen
+ *             1982), and s_b rests on a spectrum estimated from the field
+ *             itself, with the equivalent degrees of freedom nu = 2 N /
+ *             sum_l w(l)^2 of its lag window w (Priestley 1981, eq.
+ *             (6.2.124); summed over an ensemble's fields): a normal law
+ *             would reject some 9% of null fields;
  *   chi2      a chi2_nu law scaled by a, matched to the draws' mean m and
  *             variance v (Satterthwaite 1946): a = v / (2m), nu = 2m^2 / v,
  *             p = Q_chi2(X^2 / a; nu);
@@ -62,17 +66,16 @@
  *             supremum follows a few slow modes), which rejected 17% of
  *             null fields at 5% (experiments/gof_boot_rates.c);
  * and the rank p-value (1 + #{T_b >= T}) / (B + 1) of each (moments:
- * |T_b - m_b| >= |T - m_b|).  The verdict is Bonferroni's: the smallest
+ * |g(T_b) - m_b| >= |g(T) - m_b|).  The verdict is Bonferroni's: the smallest
  * approximate p times the number of statistics tested, at most 1.
  *
  * Power at the 5% level (80% power):
  *   variance  a field scaled about its mean so that its variance is r times
- *             the law's has a variance statistic r times the null's, of mean
- *             r m and sd r s (m, s: the draws' mean and sd of the variance);
- *             the test (t law, nu degrees of freedom) rejects it 80% of the
- *             time when r = (1 + t_0.975 s/m) / (1 - t_0.8 s/m), or below,
- *             r = (1 - t_0.975 s/m) / (1 + t_0.8 s/m) (t_q: quantiles of
- *             t_nu);
+ *             the law's has a variance statistic r times the null's: its
+ *             log moves by log r and keeps its sd s (the draws' sd of the
+ *             log variance); the test (t law, nu degrees of freedom)
+ *             rejects it 80% of the time when |log r| = (t_0.975 + t_0.8) s
+ *             (t_q: quantiles of t_nu), r = exp(+-(t_0.975 + t_0.8) s);
  *   ks        a law at KS distance delta from F, attained at some u*, gives
  *             D >= |F_n(u*) - F_alt(u*)| ~ delta + e with e of sd at most
  *             sigma_1/2 (the draws' sd of F_n(1/2) - 1/2: the median

@@ -45,10 +45,11 @@ static void test(const nl_field *f, const char *law, size_t B, nl_gof_boot *b)
 }
 
 /* The README's problem: a Laplace field (shape --to laplace, variance 2)
- * against the standard normal.  Its variance is 12 standard errors of the
- * null away and its kurtosis (3 against 0) some 20: the verdict, the
- * smallest p times 6, is far below 1e-3 (1e-60 measured); the thinned test
- * this replaces gave p = 0.73 (KS) and 0.17 (chi-square). */
+ * against the standard normal.  Its variance is some 11 null standard
+ * deviations away and its kurtosis (2.2 against 0) some 17: the verdict,
+ * the smallest p times 6, is far below 1e-3 (5e-11 measured with 199
+ * draws); the thinned test this replaces gave p = 0.73 (KS) and 0.17
+ * (chi-square). */
 Test(gof_boot, laplace_field_rejected_as_gaussian)
 {
     nl_field *f = markov_field();
@@ -64,7 +65,7 @@ Test(gof_boot, laplace_field_rejected_as_gaussian)
 
 /* A Gaussian field of variance 2 against the standard normal: only the
  * variance (or the spread the KS and chi-square see) tells; the reported
- * detectable ratio for this field is about 1.23, so a ratio of 2 is far
+ * detectable ratio for this field is about 1.27, so a ratio of 2 is far
  * beyond it and p < 1e-3. */
 Test(gof_boot, variance_two_gaussian_rejected)
 {
