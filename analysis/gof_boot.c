@@ -236,9 +236,10 @@ static void p_values(const boot *t, double *v, const double *lm, const double *l
     summarise(t, NL_GOF_KS, ks->value, v, ks, &d, &d);
     out->ks_q95 = quantile(v, t->B, 0.95);
     med = quantile(v, t->B, 0.5);
-    if (out->ks_q95 > med)
-        out->ks_n_eff = pow((KS_Q95 - KS_MEDIAN) / (out->ks_q95 - med), 2), out->ks_shift = med - KS_MEDIAN / sqrt(out->ks_n_eff);
-    else
+    if (out->ks_q95 > med) {
+        out->ks_n_eff = pow((KS_Q95 - KS_MEDIAN) / (out->ks_q95 - med), 2);
+        out->ks_shift = med - KS_MEDIAN / sqrt(out->ks_n_eff);
+    } else
         out->ks_n_eff = pow(KS_MEDIAN / med, 2), out->ks_shift = 0;
     ks->p = q_ks(sqrt(out->ks_n_eff) * (ks->value - out->ks_shift));
 }
@@ -281,9 +282,10 @@ static int run(boot *t, uint64_t seed, size_t bins, nl_gof_boot *out)
         out->stat[s].expected = s >= NL_GOF_MEAN ? law[s - NL_GOF_MEAN](t->d) : NAN;
     /* a moment's normal law needs the moment of twice its order: the
      * variance for the mean, the kurtosis for the others */
-    for (int s = 0; s < NL_GOF_NSTATS; s++)
-        t->want[s] = s < NL_GOF_MEAN || (isfinite(out->stat[s].expected) &&
-                                         isfinite(out->stat[s == NL_GOF_MEAN ? NL_GOF_VARIANCE : NL_GOF_KURTOSIS].expected));
+    for (int s = 0; s < NL_GOF_NSTATS; s++) {
+        int need = s == NL_GOF_MEAN ? NL_GOF_VARIANCE : NL_GOF_KURTOSIS;
+        t->want[s] = s < NL_GOF_MEAN || (isfinite(out->stat[s].expected) && isfinite(out->stat[need].expected));
+    }
     if ((st = boot_alloc(t, bins, out)))
         return st;
     data_stats(t, T);

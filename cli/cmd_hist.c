@@ -208,8 +208,8 @@ static void print_boot(const hist_opts *o, const nl_gof_boot *b)
         const nl_gof_boot_stat *m = &b->stat[s];
         if (m->tested)
             printf("# against %s: %s %.6g (law %.6g, null %.6g +- %.3g) p %.4g (rank p %.3g; t law, %.0f degrees of "
-                   "freedom)\n", a, nl_gof_boot_name(s), m->value, m->expected, m->null_mean, m->null_sd, m->p, m->p_rank,
-                   b->moment_dof);
+                   "freedom)\n", a, nl_gof_boot_name(s), m->value, m->expected, m->null_mean, m->null_sd, m->p,
+                   m->p_rank, b->moment_dof);
     }
     printf("# against %s: verdict p %.4g (%s, times %zu tests): %s at 5%%\n", a, b->p, nl_gof_boot_name(b->p_from),
            b->tests, b->p < 0.05 ? "rejected" : "not rejected");
@@ -326,8 +326,8 @@ static void test(const hist_opts *o, nl_field **x, const nl_dist *dist, hist_tes
         t->n += x[k]->count;
     if (!o->independent) {
         bins = t->n / 5 < o->bins ? t->n / 5 : o->bins;
-        if ((st = nl_gof_boot_test((const nl_field *const *)x, o->nin, dist, o->draws, o->draw_seed, bins < 2 ? 2 : bins,
-                                   &t->b)))
+        bins = bins < 2 ? 2 : bins;
+        if ((st = nl_gof_boot_test((const nl_field *const *)x, o->nin, dist, o->draws, o->draw_seed, bins, &t->b)))
             cli_die(nl_error_is_input(st) ? 2 : 1, "--against %s: %s", o->against, nl_errmsg());
         return;
     }
