@@ -54,7 +54,7 @@
  *             itself, with the equivalent degrees of freedom nu = 2 N /
  *             sum_l w(l)^2 of its lag window w (Priestley 1981, eq.
  *             (6.2.124); summed over an ensemble's fields): a normal law
- *             would reject some 9% of null fields;
+ *             would ignore the noise of that estimate and reject too often;
  *   chi2      a chi2_nu law scaled by a, matched to the draws' mean m and
  *             variance v (Satterthwaite 1946): a = v / (2m), nu = 2m^2 / v,
  *             p = Q_chi2(X^2 / a; nu);
