@@ -358,3 +358,42 @@ double nl_dist_variance(const nl_dist *d)
     default: return NAN;
     }
 }
+
+/* Raw moments E[U^(kP)] = 1 / (kP + 1) of power:p=P turned into central
+ * ones; k = 3 or 4 gives the skewness or the excess kurtosis. */
+static double power_shape(double P, int k)
+{
+    double m1 = 1 / (P + 1), m2 = 1 / (2 * P + 1), m3 = 1 / (3 * P + 1), m4 = 1 / (4 * P + 1);
+    double c2 = m2 - m1 * m1, c3 = m3 - 3 * m1 * m2 + 2 * m1 * m1 * m1;
+    double c4 = m4 - 4 * m1 * m3 + 6 * m1 * m1 * m2 - 3 * m1 * m1 * m1 * m1;
+    return k == 3 ? c3 / pow(c2, 1.5) : c4 / (c2 * c2) - 3;
+}
+
+static double finite_or_nan(double v) { return isfinite(v) ? v : NAN; }
+
+double nl_dist_skewness(const nl_dist *d)
+{
+    double s2 = d->p2 * d->p2;
+    switch (d->kind) {
+    case D_GAUSS: case D_UNIFORM: case D_LAPLACE: case D_HYPERBOLIC: return 0;
+    case D_LOGNORMAL: return finite_or_nan((exp(s2) + 2) * sqrt(expm1(s2)));
+    case D_CHI2: return sqrt(8);
+    case D_POWER: return finite_or_nan(power_shape(d->p1, 3));
+    default: return NAN;
+    }
+}
+
+double nl_dist_kurtosis(const nl_dist *d)
+{
+    double s2 = d->p2 * d->p2;
+    switch (d->kind) {
+    case D_GAUSS: return 0;
+    case D_UNIFORM: return -1.2;
+    case D_LAPLACE: return 3;
+    case D_HYPERBOLIC: return 2;
+    case D_LOGNORMAL: return finite_or_nan(exp(4 * s2) + 2 * exp(3 * s2) + 3 * exp(2 * s2) - 6);
+    case D_CHI2: return 12;
+    case D_POWER: return finite_or_nan(power_shape(d->p1, 4));
+    default: return NAN;
+    }
+}

@@ -71,6 +71,12 @@ int nl_dist_is_function(const nl_dist *d);
 double nl_dist_mean(const nl_dist *d);
 double nl_dist_variance(const nl_dist *d);
 
+/* Skewness E[(Y - mean)^3] / variance^1.5 and excess kurtosis
+ * E[(Y - mean)^4] / variance^2 - 3 (0 and 0 for the Gaussian; NAN where not
+ * finite or not known in closed form: table:, expr:). */
+double nl_dist_skewness(const nl_dist *d);
+double nl_dist_kurtosis(const nl_dist *d);
+
 #ifdef __cplusplus
 }
 #endif

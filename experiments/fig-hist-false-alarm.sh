@@ -1,6 +1,7 @@
 #!/bin/sh
-# The false-alarm rate and the power of hist --against on correlated fields
-# (experiments/hist_false_alarm.c): 400 fields of markov:scale=8, 256x256,
+# The false-alarm rate and the power of the thinned goodness-of-fit test
+# (nl_gof_test_thinned, analysis/gof_dep.h; experiments/hist_false_alarm.c),
+# which hist --against used before its bootstrap (fig-gof-boot.sh): 400 fields of markov:scale=8, 256x256,
 # seeds 1..400, at a nominal 5%.
 . "$(dirname "$0")/lib.sh"
 run() { "$xb/hist_false_alarm" markov:scale=8 256 400 hyperbolic "$1" 0.05 50 "$2"; }
@@ -12,7 +13,7 @@ ks=$(col exact-gauss ks 2) chi=$(col exact-gauss chi2 2)
 verdict=pass
 awk -v a="$ks" -v b="$chi" 'BEGIN { exit !(a >= 0.025 && a <= 0.10 && b >= 0.025 && b <= 0.10) }' || verdict=FAIL
 cat > "$d/95-hist-false-alarm.md" <<MD
-## Goodness of fit on correlated fields (noiselab hist --against)
+## Goodness of fit on correlated fields by thinning (analysis/gof_dep.h)
 
 400 fields of markov:scale=8, 256 x 256 (seeds 1 to 400), each a sample of a process whose
 marginal is the hyperbolic secant distribution (a Gaussian field mapped by F^-1(Phi(x))),

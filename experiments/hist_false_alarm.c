@@ -1,6 +1,7 @@
-/* Experiment: the false-alarm rate and the power of hist --against on
- * correlated fields, with and without the effective-sample-size correction
- * (analysis/gof_dep.h).  Each field is an FFT synthesis of MODEL on a SIZE x
+/* Experiment: the false-alarm rate and the power of the thinned test on
+ * correlated fields (nl_gof_test_thinned, which hist --against used before
+ * its bootstrap, analysis/gof_boot.h), with and without the
+ * effective-sample-size correction (analysis/gof_dep.h).  Each field is an FFT synthesis of MODEL on a SIZE x
  * SIZE grid (seeds 1..K), shaped to DIST (the README's demo: synth fft,
  * shape --to DIST, hist --against DIST); the false-alarm rate is the share
  * of fields whose p-value is below ALPHA against DIST, the power the share
@@ -10,7 +11,7 @@
  * process whose marginal is DIST (shape standardises each field by its own
  * mean and deviation, which removes most of the slow fluctuation of the
  * empirical CDF: the test is then conservative).
- * The tests are those of noiselab hist --against: the field thinned
+ * The tests: the field thinned
  * (analysis/gof_dep.h), KS with the effective n, chi-square on at most
  * n_eff / 5 equal-probability bins counting each kept sample once.
  * usage: hist_false_alarm MODEL SIZE K DIST WRONG ALPHA BINS shape|exact

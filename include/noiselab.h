@@ -81,6 +81,7 @@ extern "C" {
 #include "noiselab/analysis/hist.h"
 #include "noiselab/analysis/gof.h"
 #include "noiselab/analysis/gof_dep.h"
+#include "noiselab/analysis/gof_boot.h"
 #include "noiselab/analysis/ensemble.h"
 #include "noiselab/analysis/check.h"
 #include "noiselab/analysis/check_intrinsic.h"

@@ -224,16 +224,53 @@ def _bins(bins):
     return as_int("bins", bins, 1, 10000000)
 
 
-def hist(field, bins=50):
+def hist(field, bins=50, against=None, draws=199, draw_seed=1):
     """Histogram of the samples in `bins` equal bins over [min, max] (the
     maximum in the last bin), as ``noiselab hist``.  Returns (edges, counts,
     moments): edges bins + 1 values, counts `bins` values (float64), and
-    the dict of :func:`moments`."""
+    the dict of :func:`moments`.  With ``against=DIST`` (a law as in
+    :func:`shape`) a fourth item, the test of ``noiselab hist --against``
+    (analysis/gof_boot.h: `draws` null fields with the field's own
+    correlation, seed `draw_seed`; chi-square on min(bins, n/5) bins): a
+    dict with p (the Bonferroni verdict), p_from, tests (per statistic:
+    statistic, expected, null_mean, null_sd, p, p_rank), draws,
+    ks_effective_n, chi2_scale, chi2_dof, detectable (variance_ratio as
+    (lo, hi), ks_distance, ks_q95) and window_radius."""
     bins = _bins(bins)
     v = FieldView(field, 1.0, "hist: field")
     edges, counts = np.empty(bins + 1), np.empty(bins)
     check(lib.nl_hist(v.f, bins, _dptr(edges), _dptr(counts)))
-    return edges, counts, moments(v.array)
+    if against is None:
+        return edges, counts, moments(v.array)
+    return edges, counts, moments(v.array), _gof_boot(v, bins, against, draws, draw_seed)
+
+
+def _gof_boot(v, bins, against, draws, draw_seed):
+    """The bootstrap goodness-of-fit test of one field (hist's against=)."""
+    d = Dist(against, "against")
+    draws = as_int("draws", draws, 2, 100000)
+    draw_seed = as_int("draw_seed", draw_seed, 0, (1 << 64) - 1)
+    n = v.f.count
+    cb = max(2, min(bins, n // 5))
+    b = ffi.new("nl_gof_boot *")
+    fields = ffi.new("const nl_field *[1]", [v.f])
+    with planner:
+        check(lib.nl_gof_boot_test(fields, 1, d.ptr, draws, draw_seed, cb, b))
+
+    def num(x):
+        return None if math.isnan(x) else x
+    tests = {}
+    for i in range(6):
+        t = b.stat[i]
+        if t.tested:
+            tests[ffi.string(lib.nl_gof_boot_name(i)).decode()] = {
+                "statistic": t.value, "expected": num(t.expected), "null_mean": t.null_mean,
+                "null_sd": t.null_sd, "p": t.p, "p_rank": t.p_rank}
+    return {"p": b.p, "p_from": ffi.string(lib.nl_gof_boot_name(b.p_from)).decode(), "tests": tests,
+            "draws": b.draws, "ks_effective_n": b.ks_n_eff, "chi2_scale": b.chi2_scale, "chi2_dof": b.chi2_dof,
+            "detectable": {"variance_ratio": (num(b.var_ratio_lo), num(b.var_ratio_hi)),
+                           "ks_distance": b.ks_detectable, "ks_q95": b.ks_q95},
+            "window_radius": b.radius_max}
 
 
 _WHY = ("valid", "negative-integral", "negative-spectrum", "isotropic-bound", "negative-eigenvalue",

@@ -464,6 +464,37 @@ typedef struct {
 int nl_moments_compute(const nl_field *x, nl_moments *m);
 int nl_hist(const nl_field *x, size_t bins, double *edges, double *counts);
 
+/* analysis/gof_boot.h */
+typedef struct {
+    int tested;
+    double value;
+    double expected;
+    double null_mean;
+    double null_sd;
+    double p;
+    double p_rank;
+} nl_gof_boot_stat;
+typedef struct {
+    size_t n;
+    size_t fields;
+    size_t draws;
+    size_t bins;
+    size_t tests;
+    nl_gof_boot_stat stat[6];
+    double ks_n_eff, ks_shift;
+    double moment_dof;
+    double chi2_scale, chi2_dof;
+    double p;
+    int p_from;
+    double var_ratio_lo, var_ratio_hi;
+    double ks_q95;
+    double ks_detectable;
+    double radius_min, radius_max;
+} nl_gof_boot;
+int nl_gof_boot_test(const nl_field *const *x, size_t K, const nl_dist *d, size_t draws, uint64_t seed, size_t bins,
+                     nl_gof_boot *out);
+const char *nl_gof_boot_name(int stat);
+
 /* analysis/ensemble.h */
 typedef struct {
     size_t K;

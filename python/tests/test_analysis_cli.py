@@ -66,6 +66,25 @@ def test_hist(cli, field):
         close([mo[k]], [j[k]])
 
 
+def test_hist_against(cli, field):
+    """The bootstrap test of hist --against: the same numbers as the CLI's."""
+    path, f = field
+    j = js(cli, "hist", path, "--bins", "7", "--against", "laplace", "--draws", "19", "--draw-seed", "3")
+    b = j["against"]["bootstrap"]
+    t = noiselab.hist(f, bins=7, against="laplace", draws=19, draw_seed=3)[3]
+    close([t["p"]], [b["verdict_p"]])
+    assert t["p_from"] == b["verdict_from"] and t["draws"] == 19
+    assert sorted(t["tests"]) == sorted(b["tests"])
+    for k, v in t["tests"].items():
+        close([v["statistic"], v["p"], v["p_rank"], v["null_sd"]],
+              [b["tests"][k]["statistic"], b["tests"][k]["p"], b["tests"][k]["p_rank"], b["tests"][k]["null_sd"]])
+    close(t["detectable"]["variance_ratio"], b["detectable"]["variance_ratio"])
+    with pytest.raises(noiselab.Error):
+        noiselab.hist(f, against="expr:x^2")
+    with pytest.raises(noiselab.Error):
+        noiselab.hist(f, against="gauss", draws=1)
+
+
 def test_check(cli):
     j = js(cli, "check", "--acf", "oscillatory:scale=4,omega=2", "--dim", "2")
     c = noiselab.check(acf="oscillatory:scale=4,omega=2", dim=2)
