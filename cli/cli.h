@@ -251,6 +251,10 @@ int cli_field_is_float32(const char *path);
  * format with meta; an .h5 through cli_h5, with the XDMF sidecar PATH.xmf
  * (minus .h5) beside it, committed with the run's outputs; exits on error. */
 void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta);
+/* The XDMF sidecar of the .h5 output path (PATH minus .h5, plus .xmf): a
+ * dim-D grid of n samples at spacing h, first sample at meta->origin (in
+ * samples), float64 when cli_h5_double; begun and committed as an output. */
+void cli_write_xdmf(const char *path, int dim, const size_t *n, const double *h, const nl_meta *meta);
 
 /* nl_field_alloc, exiting on error. */
 nl_field *cli_field_alloc(int dim, const size_t *n, const double *h);

@@ -57,9 +57,7 @@ int cli_field_is_float32(const char *path)
            !((t->types & NL_FORMAT_F64) && t->precision == 64);
 }
 
-/* The .xmf beside path (an .h5 output): a uniform grid over f with the
- * origin meta records (in samples), written and committed like path. */
-static void write_xdmf(const char *path, const nl_field *f, const nl_meta *meta)
+void cli_write_xdmf(const char *path, int dim, const size_t *n, const double *h, const nl_meta *meta)
 {
     char xmf[4096];
     const char *base = strrchr(path, '/');
@@ -69,10 +67,10 @@ static void write_xdmf(const char *path, const nl_field *f, const nl_meta *meta)
     if (snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)k, path) >= (int)sizeof xmf)
         cli_die(2, "-o: path too long: \"%s\"", path);
     int no = meta ? sscanf(meta->origin, "%ld,%ld", &o[0], &o[1]) : 0;
-    for (int a = 0; a < no && a < f->dim; a++)
-        origin[a] = (double)o[a] * f->h[a];
+    for (int a = 0; a < no && a < dim; a++)
+        origin[a] = (double)o[a] * h[a];
     const char *tmp = cli_out_begin(xmf);
-    cli_check(nl_xdmf_write(tmp, base ? base + 1 : path, f->dim, f->n, f->h, origin, cli_h5_double));
+    cli_check(nl_xdmf_write(tmp, base ? base + 1 : path, dim, n, h, origin, cli_h5_double));
     cli_out_commit(xmf);
 }
 
@@ -83,7 +81,7 @@ void cli_write_field(const char *path, const char *tmp, const nl_field *f, const
         if (!cli_h5)
             cli_die(2, "%s: HDF5 files are read and written by noiselab-mpi", path);
         cli_check(cli_h5->write(tmp, f, meta, cli_h5_double));
-        write_xdmf(path, f, meta);
+        cli_write_xdmf(path, f->dim, f->n, f->h, meta);
         return;
     }
     nl_write_options o = {.format = t->name, .precision = cli_h5_double ? 64 : 0, .lo = cli_field_range[0],

@@ -88,7 +88,6 @@ static const char *precision_name(int p) { return p == 64 ? "float64" : "float32
 /* nl_field_write's checks of f and o against format t, before anything is written. */
 static int check_write(const nl_format *t, const nl_field *f, const nl_write_options *o, int *prec)
 {
-    size_t first;
     int integer = !(t->types & (NL_FORMAT_F32 | NL_FORMAT_F64));
     if (t->flags & NL_FORMAT_EXTERNAL)
         return NL_ERROR(NL_EINVAL, "format %s: read and written by libnoiselab_mpi (mpi/h5.h), not here", t->name);
@@ -102,9 +101,13 @@ static int check_write(const nl_format *t, const nl_field *f, const nl_write_opt
         return NL_ERROR(NL_EINVAL, "format %s: does not store %s samples", t->name, precision_name(*prec));
     if (!(isfinite(o->lo) && isfinite(o->hi)) || o->lo > o->hi)
         return NL_ERROR(NL_EINVAL, "range %g,%g: expected finite lo < hi", o->lo, o->hi);
-    if (nl_field_check_finite(f, integer || *prec == 64 ? INFINITY : FLT_MAX, &first))
-        return NL_ERROR(NL_EINVAL, "format %s: sample %zu is %g; expected finite values%s", t->name, first,
-                        f->data[first], integer || *prec == 64 ? "" : " within float32");
+    for (size_t i = 0; i < f->count; i++) { /* NaN: a missing value, where a float can hold it */
+        double v = f->data[i];
+        if (isnan(v) ? integer : !(fabs(v) <= (integer || *prec == 64 ? DBL_MAX : FLT_MAX)))
+            return NL_ERROR(NL_EINVAL, "format %s: sample %zu is %g; expected %s", t->name, i, v,
+                            integer ? "finite values (no missing-value code)"
+                                    : *prec == 64 ? "finite values or NaN" : "values within float32 or NaN");
+    }
     return NL_OK;
 }
 

@@ -129,8 +129,9 @@ int nl_format_resolve(const char *path, const char *format, const nl_format **ou
  * the provenance of meta (may be NULL; written where the format carries
  * it).  Checks first, writing nothing on failure: NL_EINVAL for an unknown
  * format or extension, a dimension or precision the format does not hold,
- * a range with lo > hi, a non-finite sample, a sample beyond float32 in a
- * float32 format, or an NL_FORMAT_EXTERNAL format (HDF5: nl_mpi_h5_write_field
+ * a range with lo > hi, an infinite sample, a sample beyond float32 in a
+ * float32 format, a NaN (a missing value, which float formats keep) in an
+ * integer format, or an NL_FORMAT_EXTERNAL format (HDF5: nl_mpi_h5_write_field
  * in libnoiselab_mpi); then what the format's writer returns (NL_OK,
  * NL_EIO, NL_ETOOBIG, NL_ENOMEM).  Integer formats map [lo, hi] linearly
  * onto their codes, rounding to nearest and clamping. */
