@@ -98,7 +98,8 @@ static int check_write(const nl_format *t, const nl_field *f, const nl_write_opt
     if (o->precision && o->precision != 32 && o->precision != 64)
         return NL_ERROR(NL_EINVAL, "precision %d: expected 32 or 64", o->precision);
     if (!integer && !(t->types & (*prec == 64 ? NL_FORMAT_F64 : NL_FORMAT_F32)))
-        return NL_ERROR(NL_EINVAL, "format %s: does not store %s samples", t->name, precision_name(*prec));
+        return NL_ERROR(NL_EINVAL, "format %s: precision %d: does not store %s samples", t->name, *prec,
+                        precision_name(*prec));
     if (!(isfinite(o->lo) && isfinite(o->hi)) || o->lo > o->hi)
         return NL_ERROR(NL_EINVAL, "range %g,%g: expected finite lo < hi", o->lo, o->hi);
     for (size_t i = 0; i < f->count; i++) { /* NaN: a missing value, where a float can hold it */

@@ -195,7 +195,7 @@ static int choose(const char *path, const nl_read_options *o, const unsigned cha
             fallback = t;
     }
     t = nl_format_for_path(path);
-    *out = t && !t->magic ? t : fallback;
+    *out = t && (!t->magic || (t->flags & NL_FORMAT_EXTERNAL)) ? t : fallback;
     st = *out ? NL_OK : NL_ERROR(NL_EINPUT, "%s: not a field file this library reads", path);
     return st;
 }

@@ -98,7 +98,7 @@ def read(path, meta=False, format=None, size=None, range=None):
             head = fp.read(8)
     except OSError:
         pass  # the library names the file in its message
-    if (format == "h5") or (format is None and head == b"\x89HDF\r\n\x1a\n"):
+    if format == "h5" or (format is None and (head == b"\x89HDF\r\n\x1a\n" or p.lower().endswith(".h5"))):
         check(h5lib().nl_mpi_h5_read(b, out, m))
     else:
         check(lib.nl_field_read_opts(b, o, out, m))
