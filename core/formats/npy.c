@@ -173,8 +173,8 @@ static int parse_head(const char *path, npy_head *h)
         int bit = 0;
         if (!quoted(h, key) || !expect(h, ':'))
             return NL_ERROR(NL_EINPUT, "%s: .npy header: expected 'key': value", path);
-        bit = strcmp(key, "descr") == 0 ? 1 : strcmp(key, "fortran_order") == 0 ? 2 : 4;
-        if (seen & bit)
+        bit = strcmp(key, "descr") == 0 ? 1 : strcmp(key, "fortran_order") == 0 ? 2 : strcmp(key, "shape") == 0 ? 4 : 0;
+        if (seen & (unsigned)bit)
             return NL_ERROR(NL_EINPUT, "%s: .npy header: %s given twice", path, key);
         if ((st = value(path, h, key)))
             return st;

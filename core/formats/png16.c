@@ -45,7 +45,8 @@ static int read_text(const char *path, const unsigned char *buf, size_t len, cha
                 if (strcmp(d + 9, nl_meta_key(i)) == 0)
                     slot = nl_meta_slot(meta, i), cap = nl_meta_capacity(i);
             if (slot && vl >= cap)
-                return NL_ERROR(NL_EINPUT, "%s: PNG text %s: expected at most %zu bytes, got %zu", path, d, cap - 1, vl);
+                return NL_ERROR(NL_EINPUT, "%s: PNG text %s: expected at most %zu bytes, got %zu", path, d, cap - 1,
+                                vl);
             for (size_t c = 0; slot && c < vl; c++)
                 if ((unsigned char)v[1 + c] < 0x20 || v[1 + c] == 0x7f)
                     return NL_ERROR(NL_EINPUT, "%s: PNG text %s: expected text without control characters", path, d);
