@@ -38,7 +38,7 @@ def _format(what, path, b, format):
     """The registry's descriptor for format= (a name) or else path's
     extension; Error naming what is expected otherwise."""
     out = ffi.new("const nl_format **")
-    name = ffi.NULL if format is None else as_str(what + ": format", format).encode()
+    name = ffi.NULL if format is None else as_str(what + ": format", format)
     check(lib.nl_format_resolve(b, name, out))
     return out[0]
 
@@ -84,7 +84,7 @@ def read(path, meta=False, format=None, size=None, range=None):
     o = ffi.new("nl_read_options *")
     keep = []
     if format is not None:
-        keep.append(ffi.new("char[]", as_str("read: format", format).encode()))
+        keep.append(ffi.new("char[]", as_str("read: format", format)))
         o.format = keep[0]
     if size is not None:
         shape = as_size("read: size", size)
