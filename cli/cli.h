@@ -233,7 +233,7 @@ int cli_h5_read_meta(const char *path, nl_meta *meta);
 extern int cli_h5_double;
 
 /* Fields written through the format registry (cli/field_out.c).  --format
- * NAME and --range LO,HI (CLI_OPT_FORMAT, or synth's own parse) set
+ * NAME and --range LO:HI (CLI_OPT_FORMAT, or synth's own parse) set
  * cli_field_format (NULL: by the output's extension) and cli_field_range
  * (both 0: the field's min..max, for integer formats). */
 extern const char *cli_field_format;

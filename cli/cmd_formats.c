@@ -11,7 +11,7 @@ static const char help[] =
     "--format NAME) and read from (by content where the format has a signature,\n"
     "else by extension, else TSV): name, extensions, dimensions, value types and\n"
     "the metadata each carries.  Integer formats (png16, r16) map a value range,\n"
-    "by default the field's min..max or --range LO,HI, linearly onto their codes.\n";
+    "by default the field's min..max or --range LO:HI, linearly onto their codes.\n";
 
 typedef struct {
     int json; /* --json */

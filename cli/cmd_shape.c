@@ -11,7 +11,7 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: noiselab shape --to DIST IN -o OUT [--format NAME] [--range LO,HI] [--empirical]\n\n"
+    "usage: noiselab shape --to DIST IN -o OUT [--format NAME] [--range LO:HI] [--empirical]\n\n"
     "Applies the memoryless nonlinearity y = F_y^-1(F_x(x)) (Lewis GI '86, section 4)\n"
     "so that the field's histogram becomes DIST; F_x is the Gaussian CDF with the\n"
     "field's mean and standard deviation (by a 65536-entry table), or with\n"

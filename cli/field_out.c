@@ -23,12 +23,17 @@ void cli_opt_format(void *obj, const char *label, const char *arg)
     cli_die(2, "%s: expected a format, one of %s, got \"%s\"", label, list, arg ? arg : "");
 }
 
+/* LO:HI, as render's --range */
 void cli_opt_range(void *obj, const char *label, const char *arg)
 {
+    double lo, hi;
+    char junk;
     (void)obj;
-    cli_parse_pair(label, arg, &cli_field_range[0], &cli_field_range[1]);
-    if (!(cli_field_range[0] < cli_field_range[1]))
-        cli_die(2, "%s: expected LO,HI with LO < HI, got \"%s\"", label, arg);
+    if (!arg || sscanf(arg, "%lf:%lf%c", &lo, &hi, &junk) != 2 || !(lo < hi) || !isfinite(lo) || !isfinite(hi) ||
+        !isfinite(hi - lo))
+        cli_die(2, "%s: expected LO:HI with LO < HI, both finite and HI - LO finite, got \"%s\"", label,
+                arg ? arg : "");
+    cli_field_range[0] = lo, cli_field_range[1] = hi;
 }
 
 const nl_format *cli_field_out_check(const char *label, const char *path, int dim)
