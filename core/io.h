@@ -1,4 +1,5 @@
-/* Field files: OpenEXR (through the OpenEXRCore C API), PNG, TSV.
+/* Field files: OpenEXR (through the OpenEXRCore C API), PNG, TSV; the
+ * format registry over them and the other formats is core/format.h.
  *
  * EXR: one FLOAT channel "Y", uncompressed scanlines: random fields do not
  * compress (PIZ saved 0% on white-ish noise and 9% on a smooth Gaussian
