@@ -231,6 +231,8 @@ int cli_is_h5(const char *path);
 int cli_h5_read_meta(const char *path, nl_meta *meta);
 /* HDF5 outputs in float64 (synth --precision double); float32 otherwise. */
 extern int cli_h5_double;
+/* --precision single given: float32 outputs where the format has them (.npy). */
+extern int cli_field_single;
 
 /* Fields written through the format registry (cli/field_out.c).  --format
  * NAME and --range LO:HI (CLI_OPT_FORMAT, or synth's own parse) set

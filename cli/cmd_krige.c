@@ -18,7 +18,7 @@
 
 static const char help[] =
     "usage: noiselab krige --data PTS.tsv --acf SPEC --grid W[xH[xD]] --extent a:b[,c:d[,e:f]]\n"
-    "                      [--mean M] [--strict] [--json] -o OUT.exr|OUT.tsv [--variance VAR.exr]\n"
+    "                      [--mean M] [--strict] [--json] -o OUT [--variance VAR] [--format NAME]\n"
     "                      [--nmax K] [--radius D] [--drift TERMS [--covariate NAME=FIELD.exr]...]\n"
     "       noiselab krige --data PTS.tsv --acf SPEC --at TABLE.tsv -o OUT.tsv [--nmax K] [--radius D]\n"
     "                      [--drift TERMS] [--mean M] [--json]\n"

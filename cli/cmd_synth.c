@@ -494,6 +494,7 @@ static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
     if (g->precision && strcmp(g->precision, "single") && strcmp(g->precision, "double"))
         cli_die(2, "--precision: expected single or double, got \"%s\"", g->precision);
     cli_h5_double = g->precision && !strcmp(g->precision, "double");
+    cli_field_single = g->precision && !strcmp(g->precision, "single");
     if (!at)
         cli_field_out_check("-o", g->out, job->dim);
     if (g->preview && job->dim == 1)

@@ -9,6 +9,7 @@
 #include <string.h>
 
 const char *cli_field_format;
+int cli_field_single;
 double cli_field_range[2];
 
 void cli_opt_format(void *obj, const char *label, const char *arg)
@@ -59,7 +60,7 @@ int cli_field_is_float32(const char *path)
 {
     const nl_format *t = cli_field_format ? nl_format_find(cli_field_format) : nl_format_for_path(path);
     return t && (t->types & NL_FORMAT_F32) && !(cli_h5_double && (t->types & NL_FORMAT_F64)) &&
-           !((t->types & NL_FORMAT_F64) && t->precision == 64);
+           !((t->types & NL_FORMAT_F64) && t->precision == 64 && !cli_field_single);
 }
 
 void cli_write_xdmf(const char *path, int dim, const size_t *n, const double *h, const nl_meta *meta)
@@ -89,7 +90,7 @@ void cli_write_field(const char *path, const char *tmp, const nl_field *f, const
         cli_write_xdmf(path, f->dim, f->n, f->h, meta);
         return;
     }
-    nl_write_options o = {.format = t->name, .precision = cli_h5_double ? 64 : 0, .lo = cli_field_range[0],
-                          .hi = cli_field_range[1]};
+    int prec = cli_h5_double ? 64 : cli_field_single && (t->types & NL_FORMAT_F32) ? 32 : 0;
+    nl_write_options o = {.format = t->name, .precision = prec, .lo = cli_field_range[0], .hi = cli_field_range[1]};
     cli_check(nl_field_write(tmp, f, meta, &o));
 }
