@@ -165,7 +165,8 @@ int nl_format_raw_size(const char *path, size_t count, const nl_read_options *o,
     while ((s + 1) * (s + 1) <= count)
         s++;
     if (s < 2 || s * s != count)
-        return NL_ERROR(NL_EINPUT, "%s: a headerless file of %zu samples, not a square; give its size", path, count);
+        return NL_ERROR(NL_EINPUT, "%s: a headerless file of %zu samples, not a square; expected a square, or its "
+                        "size in the read options (Python's read(size=))", path, count);
     *dim = 2, n[0] = n[1] = s;
     return NL_OK;
 }
