@@ -13,7 +13,7 @@ CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
 LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lmuparser -lm
 BUILD     := build
 
-LIB_SRC   := $(wildcard core/*.c core/families/*.c synth/*.c analysis/*.c render/*.c)
+LIB_SRC   := $(wildcard core/*.c core/families/*.c core/formats/*.c synth/*.c analysis/*.c render/*.c)
 # cli/h5_*.c are the command line's HDF5 and MPI parts: noiselab-mpi only.
 CLI_SRC   := $(filter-out cli/h5_%.c,$(wildcard cli/*.c))
 # The distributed module (mpi/): Open MPI, FFTW-MPI and parallel HDF5, in a
@@ -158,7 +158,7 @@ python: $(SOLIB)
 	PYTHONPATH=python $(PYTHON) -c 'import noiselab'
 
 # The option tables' tests (tests/test_opt.c) link the command line's parser.
-CLI_OPT_OBJ := $(patsubst %,$(BUILD)/cli/%.o,opt util inputs outputs progress)
+CLI_OPT_OBJ := $(patsubst %,$(BUILD)/cli/%.o,opt util inputs outputs progress field_out)
 $(BUILD)/tests/run: $(TEST_OBJ) $(CLI_OPT_OBJ) $(LIB)
 	$(CC) $(CFLAGS) -o $@ $(TEST_OBJ) $(CLI_OPT_OBJ) $(LIB) $(LDLIBS) -lcriterion
 

@@ -5,6 +5,7 @@
 #include "../analysis/hist.h"
 #include "../analysis/slope.h"
 #include "../core/field.h"
+#include "../core/format.h"
 #include "../core/io.h"
 
 #include <jansson.h>
@@ -17,6 +18,7 @@ int cli_cmd_acf(int argc, char **argv);
 int cli_cmd_psd(int argc, char **argv);
 int cli_cmd_hist(int argc, char **argv);
 int cli_cmd_models(int argc, char **argv);
+int cli_cmd_formats(int argc, char **argv);
 int cli_cmd_coeffs(int argc, char **argv);
 int cli_cmd_check(int argc, char **argv);
 int cli_cmd_validate(int argc, char **argv);
@@ -229,11 +231,32 @@ int cli_is_h5(const char *path);
 int cli_h5_read_meta(const char *path, nl_meta *meta);
 /* HDF5 outputs in float64 (synth --precision double); float32 otherwise. */
 extern int cli_h5_double;
+/* --precision single given: float32 outputs where the format has them (.npy). */
+extern int cli_field_single;
 
-/* Write f to tmp (the temporary of path, from cli_out_begin) as EXR with
- * meta when path ends in .exr, else as a 1D TSV with columns t, value;
- * exits on error. */
+/* Fields written through the format registry (cli/field_out.c).  --format
+ * NAME and --range LO:HI (CLI_OPT_FORMAT, or synth's own parse) set
+ * cli_field_format (NULL: by the output's extension) and cli_field_range
+ * (both 0: the field's min..max, for integer formats). */
+extern const char *cli_field_format;
+extern double cli_field_range[2];
+void cli_opt_format(void *obj, const char *label, const char *arg);
+void cli_opt_range(void *obj, const char *label, const char *arg);
+/* The format path is written in (--format, else its extension); exit 2
+ * naming label (e.g. "-o") and listing the registry when there is none,
+ * when it does not hold dim-D fields (dim 0: not checked yet), when
+ * --precision double or --range does not fit it. */
+const nl_format *cli_field_out_check(const char *label, const char *path, int dim);
+/* Does path's format (as cli_field_out_check finds it) store float32? */
+int cli_field_is_float32(const char *path);
+/* Write f to tmp (the temporary of path, from cli_out_begin) in path's
+ * format with meta; an .h5 through cli_h5, with the XDMF sidecar PATH.xmf
+ * (minus .h5) beside it, committed with the run's outputs; exits on error. */
 void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta);
+/* The XDMF sidecar of the .h5 output path (PATH minus .h5, plus .xmf): a
+ * dim-D grid of n samples at spacing h, first sample at meta->origin (in
+ * samples), float64 when cli_h5_double; begun and committed as an output. */
+void cli_write_xdmf(const char *path, int dim, const size_t *n, const double *h, const nl_meta *meta);
 
 /* nl_field_alloc, exiting on error. */
 nl_field *cli_field_alloc(int dim, const size_t *n, const double *h);

@@ -127,7 +127,7 @@ static void write_centred(const acf_opts *o, const nl_field *full)
             cli_die(2, "-o: the estimate %g does not fit the float32 samples of \"%s\"; expected |acf| <= %g "
                     "(scale the input)", C->data[i], o->out, FLT_MAX);
     snprintf(meta.method, sizeof meta.method, "acf %s, lag 0 at the centre", o->unbiased ? "unbiased" : "biased");
-    cli_check(nl_exr_write(o->tmp, C, &meta));
+    cli_write_field(o->out, o->tmp, C, &meta);
     cli_out_commit(o->out);
     nl_field_free(C);
 }

@@ -18,7 +18,7 @@
 
 static const char help[] =
     "usage: noiselab krige --data PTS.tsv --acf SPEC --grid W[xH[xD]] --extent a:b[,c:d[,e:f]]\n"
-    "                      [--mean M] [--strict] [--json] -o OUT.exr|OUT.tsv [--variance VAR.exr]\n"
+    "                      [--mean M] [--strict] [--json] -o OUT [--variance VAR] [--format NAME]\n"
     "                      [--nmax K] [--radius D] [--drift TERMS [--covariate NAME=FIELD.exr]...]\n"
     "       noiselab krige --data PTS.tsv --acf SPEC --at TABLE.tsv -o OUT.tsv [--nmax K] [--radius D]\n"
     "                      [--drift TERMS] [--mean M] [--json]\n"
@@ -107,7 +107,8 @@ static const cli_opt rows[] = {
     CLI_STRING("grid", opts_t, grid, .need = "the output grid WxH[xD]"),
     CLI_STRING("extent", opts_t, ext, .need = "the grid's extent a:b,c:d[,e:f]"), CLI_DOUBLE("mean", opts_t, mean),
     CLI_FLAG("strict", opts_t, strict), CLI_OPT_JSON(opts_t, json),
-    CLI_OPT_OUTPUT(opts_t, out, .need = "an output file (.exr or .tsv)"), CLI_STRING("variance", opts_t, vout),
+    CLI_OPT_OUTPUT(opts_t, out, .need = "an output file (noiselab formats)"), CLI_STRING("variance", opts_t, vout),
+    CLI_OPT_FORMAT,
     /* the local or universal path */
     CLI_COUNT("nmax", opts_t, nmax, CLI_GIVEN(opts_t, local), .lo = 1),
     CLI_POSITIVE("radius", opts_t, radius, CLI_GIVEN(opts_t, local), .what = "distance"),
@@ -176,12 +177,9 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "--mean: expected no --drift with a known mean, got --mean %g", a->mean);
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);
     parse_extent(a);
-    if (!cli_has_ext(a->out, ".exr") && !cli_has_ext(a->out, ".tsv"))
-        cli_die(2, "-o: expected .exr or .tsv, got \"%s\"", a->out);
-    if (cli_has_ext(a->out, ".tsv") && a->gdim != 1)
-        cli_die(2, "-o: TSV holds 1D grids; use .exr, got \"%s\"", a->out);
-    if (a->vout && !cli_has_ext(a->vout, ".exr"))
-        cli_die(2, "--variance: expected a .exr file, got \"%s\"", a->vout);
+    cli_field_out_check("-o", a->out, a->gdim);
+    if (a->vout)
+        cli_field_out_check("--variance", a->vout, a->gdim);
     if (a->vout && strcmp(a->vout, a->out) == 0)
         cli_die(2, "--variance: expected a file other than -o, got \"%s\" for both -o and --variance", a->vout);
 }
@@ -200,7 +198,7 @@ static const char *kind_name(const opts_t *a)
 /* A field bound for a float32 EXR fits it. */
 static void check_float(const char *opt, const char *path, const nl_field *f)
 {
-    if (!path || !cli_has_ext(path, ".exr"))
+    if (!path || !cli_field_is_float32(path))
         return;
     for (size_t i = 0; i < f->count; i++)
         if (!(fabs(f->data[i]) <= FLT_MAX) && !isnan(f->data[i])) /* NaN: a missing cell */
@@ -243,8 +241,8 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
     check_float("-o", a->out, f);
     if (vf)
         check_float("--variance", a->vout, vf);
-    if (cli_has_ext(a->out, ".exr"))
-        st = nl_exr_write(tmp, f, &meta);
+    if (strcmp(cli_field_out_check("-o", a->out, a->gdim)->name, "tsv"))
+        cli_write_field(a->out, tmp, f, &meta), st = NL_OK;
     else { /* 1D: the record as in EXR, and cell centres as x */
         double *xs = cli_malloc(a->g[0] * sizeof *xs);
         for (size_t i = 0; i < a->g[0]; i++)
@@ -252,9 +250,9 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
         st = nl_tsv_write_field(tmp, f, &meta, "x", xs);
         free(xs);
     }
-    if (!st && vf)
-        st = nl_exr_write(vtmp, vf, &meta);
     cli_check(st);
+    if (vf)
+        cli_write_field(a->vout, vtmp, vf, &meta);
     cli_out_commit(a->out);
     cli_out_commit(a->vout);
 }

@@ -112,7 +112,7 @@ static void write_centred(psd_opts *o, const nl_field *P)
         nl_meta meta = {0};
         snprintf(meta.method, sizeof meta.method, "psd%s, zero frequency at (%zu, %zu)", o->welch ? " welch" : "",
                  P->n[0] / 2, P->n[1] / 2);
-        cli_check(nl_exr_write(o->tmp, C, &meta));
+        cli_write_field(o->out, o->tmp, C, &meta);
     }
     if (o->preview) {
         double mx = nl_fftshift_log10_floor(C, 1e-12);

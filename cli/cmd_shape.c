@@ -11,7 +11,7 @@
 #include <string.h>
 
 static const char help[] =
-    "usage: noiselab shape --to DIST IN -o OUT.exr|OUT.tsv [--empirical]\n\n"
+    "usage: noiselab shape --to DIST IN -o OUT [--format NAME] [--range LO:HI] [--empirical]\n\n"
     "Applies the memoryless nonlinearity y = F_y^-1(F_x(x)) (Lewis GI '86, section 4)\n"
     "so that the field's histogram becomes DIST; F_x is the Gaussian CDF with the\n"
     "field's mean and standard deviation (by a 65536-entry table), or with\n"
@@ -21,7 +21,8 @@ static const char help[] =
     "      paper's y^2.5 terrains on the uniform rank), table:FILE (TSV columns u y),\n"
     "      or any nonlinearity expr:G, y = G(z) of the standardised field z (e.g.\n"
     "      expr:x^2, expr:exp(x), expr:2*step(x)-1; variable x; with --empirical z is\n"
-    "      the Gaussian score of the rank)\n";
+    "      the Gaussian score of the rank)\n"
+    "OUT: a field file by its extension or --format NAME (noiselab formats).\n";
 
 /* The command's options. */
 typedef struct {
@@ -31,8 +32,8 @@ typedef struct {
 
 static const cli_opt rows[] = {
     CLI_STRING("to", opts_t, to, .need = "a distribution (e.g. --to laplace)"),
-    CLI_FLAG("empirical", opts_t, empirical), CLI_OPT_OUTPUT(opts_t, out, .need = "an output file (.exr or .tsv)"),
-    {0}};
+    CLI_FLAG("empirical", opts_t, empirical), CLI_OPT_OUTPUT(opts_t, out, .need = "an output file (noiselab formats)"),
+    CLI_OPT_FORMAT, {0}};
 
 int cli_cmd_shape(int argc, char **argv)
 {
@@ -45,19 +46,17 @@ int cli_cmd_shape(int argc, char **argv)
         return 0;
     const char *in = cli_one_operand("shape", "input file", argc, argv);
     cli_opt_need("shape", rows, &a);
-    if (!cli_has_ext(a.out, ".exr") && !cli_has_ext(a.out, ".tsv"))
-        cli_die(2, "-o: expected a file name ending in .exr or .tsv, got \"%s\"", a.out);
+    cli_field_out_check("-o", a.out, 0);
     cli_check(nl_dist_parse(a.to, &d));
     x = cli_read_field(in, &meta);
-    if (cli_has_ext(a.out, ".tsv") && x->dim != 1)
-        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", x->dim, a.out);
+    cli_field_out_check("-o", a.out, x->dim);
     tmp = cli_out_begin(a.out);
     cli_check(nl_synth_shape(x, d, a.empirical));
     for (size_t i = 0; i < x->count; i++)
-        if (!isfinite(x->data[i]) || (cli_has_ext(a.out, ".exr") && !(fabs(x->data[i]) <= FLT_MAX)))
+        if (!isfinite(x->data[i]) || (cli_field_is_float32(a.out) && !(fabs(x->data[i]) <= FLT_MAX)))
             cli_die(2, "--to: %s gives the value %g at sample %zu, beyond %s; expected a distribution whose "
-                    "values fit the output", a.to, x->data[i], i, cli_has_ext(a.out, ".exr") ? "the float32 range of "
-                    "EXR" : "the finite numbers");
+                    "values fit the output", a.to, x->data[i], i, cli_field_is_float32(a.out) ? "the float32 range of "
+                    "the output" : "the finite numbers");
     size_t len = strlen(meta.method);
     snprintf(meta.method + len, sizeof meta.method - len, "%s shape:%s%s", len ? " +" : "", a.to,
              a.empirical ? ",empirical" : "");

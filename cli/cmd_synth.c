@@ -268,7 +268,8 @@ static const struct option *options_table(void)
         {"interpolation", required_argument, 0, 'Q'}, {"ensemble-mean", required_argument, 0, 'g'},
         {"ensemble-variance", required_argument, 0, 'J'}, {"nmax", required_argument, 0, 'q'},
         {"precision", required_argument, 0, 'G'}, {"at", required_argument, 0, 'T'},
-        {"grid-out", required_argument, 0, 'W'}};
+        {"grid-out", required_argument, 0, 'W'},  {"format", required_argument, 0, 'X'},
+        {"range", required_argument, 0, 'R'}};
     static struct option opts[sizeof common / sizeof *common + CLI_MAX_MOPTS + 1];
     size_t n = sizeof common / sizeof *common;
     collect_mopts();
@@ -285,7 +286,8 @@ static const struct option *options_table(void)
  * checked against the record by apply_from. */
 static int with_from(int c)
 {
-    return c == 'o' || c == 'p' || c == 'j' || c == 'F' || c == 'G' || c == 'h' || c == 'a' || c == 'S' ||
+    return c == 'o' || c == 'p' || c == 'j' || c == 'F' || c == 'G' || c == 'X' || c == 'R' || c == 'h' ||
+           c == 'a' || c == 'S' ||
            (c >= CLI_MOPT && c < CLI_MOPT + nmopts && (mopts[c - CLI_MOPT].row->flags & NL_METHOD_FILE));
 }
 
@@ -332,6 +334,8 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'O': g->origin = optarg; break;
         case 'F': g->from = optarg; break;
         case 'G': g->precision = optarg; break;
+        case 'X': cli_opt_format(NULL, "--format", optarg); break;
+        case 'R': cli_opt_range(NULL, "--range", optarg); break;
         case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q': case 'T': case 'W':
             cli_synth_cond_option(&g->cond, c, optarg); break;
         case 'h': cli_synth_print_help(); return 1;
@@ -350,7 +354,7 @@ static void method_source(int argc, char **argv, cli_synth_job *job, cli_synth_a
         int file[CLI_MAX_MOPTS];
         /* --from regenerates FILE bit for bit: an option that would change it is refused, not ignored */
         if (g->other)
-            cli_die(2, "synth: %s%s%s%s: expected no option but -o, --preview, --json, --precision and the files "
+            cli_die(2, "synth: %s%s%s%s: expected no option but -o, --format, --range, --preview, --json, --precision and the files "
                     "the record names with --from %s, which takes the method, its options, model, seed, size and "
                     "spacing from it", g->other, g->other_value ? " \"" : "", g->other_value ? g->other_value : "",
                     g->other_value ? "\"" : "", g->from);
@@ -482,21 +486,17 @@ static void check_outputs_and_model(cli_synth_job *job, const cli_synth_args *g)
     if (!g->size)
         cli_die(2, "synth: --size: expected N, NxM or NxMxK");
     if (!g->out)
-        cli_die(2, "synth: -o: expected an output file (.exr or .tsv)");
+        cli_die(2, "synth: -o: expected an output file (noiselab formats lists them)");
     job->dim = cli_parse_size("--size", g->size, job->n, 2);
     if (g->spacing)
         cli_parse_spacing("--spacing", g->spacing, job->dim, job->h);
     int at = cli_synth_cond_check_out(&g->cond, g->out, job->dim); /* -o the table of --at */
-    if (!at && !cli_has_ext(g->out, ".exr") && !cli_has_ext(g->out, ".tsv") && !cli_is_h5(g->out))
-        cli_die(2, "-o: expected a file name ending in .exr, .tsv or .h5, got \"%s\"", g->out);
     if (g->precision && strcmp(g->precision, "single") && strcmp(g->precision, "double"))
         cli_die(2, "--precision: expected single or double, got \"%s\"", g->precision);
     cli_h5_double = g->precision && !strcmp(g->precision, "double");
-    if (cli_h5_double && !cli_is_h5(g->out))
-        cli_die(2, "--precision double: EXR stores float32 and TSV ten digits; expected an .h5 output, got \"%s\"",
-                g->out);
-    if (!at && cli_has_ext(g->out, ".tsv") && job->dim != 1)
-        cli_die(2, "-o: TSV holds 1D fields; use .exr for a %dD field, got \"%s\"", job->dim, g->out);
+    cli_field_single = g->precision && !strcmp(g->precision, "single");
+    if (!at)
+        cli_field_out_check("-o", g->out, job->dim);
     if (g->preview && job->dim == 1)
         cli_die(2, "--preview: expected a 2D or 3D field, got --size \"%s\"", g->size);
     if (g->preview && !cli_has_ext(g->preview, ".png"))
@@ -522,7 +522,7 @@ static void print_json(const cli_synth_job *job, const nl_meta *meta, const cli_
 static void check_output(const cli_synth_job *job, const cli_synth_args *g, const nl_field *f)
 {
     const char *out = cli_synth_cond_grid(&g->cond, g->out);
-    int exr = out && (cli_has_ext(out, ".exr") || (cli_is_h5(out) && !cli_h5_double));
+    int exr = out && cli_field_is_float32(out);
     size_t k;
     if (nl_field_check_finite(f, exr ? FLT_MAX : INFINITY, &k))
         cli_die(2, "synth %s%s%s: %s%s; %s not written", job->method, job->m ? " " : "",

@@ -226,8 +226,10 @@ int cli_h5_synth(cli_synth_job *job, const char *out, cli_synth_run_fn run, int 
     cli_check(nl_mpi_h5_write(tmp, MPI_COMM_WORLD, job->dim, job->n, job->s0, job->ns, job->ns ? f->data : NULL,
                               &meta, cli_h5_double, P));
     t[2] = MPI_Wtime();
-    if (rank == 0)
+    if (rank == 0) {
         cli_out_commit(out);
+        cli_write_xdmf(out, job->dim, job->n, job->h, &meta);
+    }
     if (json) {
         double d[2] = {t[1] - t[0], t[2] - t[1]};
         print_json(job, &meta, &res, P, d);

@@ -162,11 +162,11 @@ static void write_grid(const cli_krige_fl_ctx *c, const char *opt, const char *p
     nl_field *f = cli_field_alloc(c->gdim, c->g, h);
     memcpy(f->data, v, f->count * sizeof *v);
     int st;
-    if (cli_has_ext(path, ".exr")) {
-        for (size_t i = 0; i < f->count; i++)
+    if (strcmp(cli_field_out_check(opt, path, c->gdim)->name, "tsv")) {
+        for (size_t i = 0; cli_field_is_float32(path) && i < f->count; i++)
             if (!(fabs(f->data[i]) <= FLT_MAX))
                 cli_die(2, "%s: sample %zu is %g, beyond the float32 range of \"%s\"", opt, i, f->data[i], path);
-        st = nl_exr_write(tmp, f, meta);
+        cli_write_field(path, tmp, f, meta), st = NL_OK;
     } else {
         double *xs = cli_malloc(c->g[0] * sizeof *xs);
         for (size_t i = 0; i < c->g[0]; i++)

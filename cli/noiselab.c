@@ -15,6 +15,7 @@ static const struct {
     const char *summary;
 } commands[] = {
     {"models", cli_cmd_models, "list the autocorrelation and spectrum models with their parameters"},
+    {"formats", cli_cmd_formats, "list the field file formats (-o, --format) with what each holds"},
     {"validate", cli_cmd_validate, "check a model and test every method on it: a report with a verdict"},
     {"check", cli_cmd_check, "is a model positive definite, how smooth, where singular"},
     {"coeffs", cli_cmd_coeffs, "subdivision coefficients, variances and flags per level"},
@@ -77,6 +78,6 @@ int cli_main(int argc, char **argv)
             cli_out_finish(rc == 0);
             return rc;
         }
-    cli_die(2, "unknown command \"%s\" (expected one of: models, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, variogram, fit, sample, cloud, lattice, ocean, card, render, detect, bench; see noiselab --help)",
+    cli_die(2, "unknown command \"%s\" (expected one of: models, formats, validate, check, coeffs, synth, acf, psd, hist, nonlin, shape, krige, variogram, fit, sample, cloud, lattice, ocean, card, render, detect, bench; see noiselab --help)",
             argv[1]);
 }

@@ -60,10 +60,10 @@ static void check_given(const cli_synth_cond *c, const cli_synth_job *job, int f
         cli_die(2, "--realizations: expected at most 9999, got %zu", c->K);
     if (c->evar && c->K < 2)
         cli_die(2, "--ensemble-variance: expected --realizations K with K >= 2, got %zu", c->K);
-    if ((c->emean && !cli_has_ext(c->emean, ".exr")) || (c->evar && !cli_has_ext(c->evar, ".exr")))
-        cli_die(2, "%s: expected a file name ending in .exr, got \"%s\"",
-                c->emean && !cli_has_ext(c->emean, ".exr") ? "--ensemble-mean" : "--ensemble-variance",
-                c->emean && !cli_has_ext(c->emean, ".exr") ? c->emean : c->evar);
+    if (c->emean)
+        cli_field_out_check("--ensemble-mean", c->emean, 0);
+    if (c->evar)
+        cli_field_out_check("--ensemble-variance", c->evar, 0);
 }
 
 static void parse_extent(cli_synth_cond *c, const cli_synth_job *job)
@@ -285,11 +285,11 @@ void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta)
     snprintf(m.method, sizeof m.method, "ensemble mean of %zu conditional realizations (data=%s,extent=%s)", c->K,
              c->data, c->extent);
     if (c->emean)
-        cli_check(nl_exr_write(c->etmp[0], nl_welford_mean(c->acc), &m));
+        cli_write_field(c->emean, c->etmp[0], nl_welford_mean(c->acc), &m);
     snprintf(m.method, sizeof m.method, "ensemble variance of %zu conditional realizations (data=%s,extent=%s)",
              c->K, c->data, c->extent);
     if (c->evar)
-        cli_check(nl_exr_write(c->etmp[1], var, &m));
+        cli_write_field(c->evar, c->etmp[1], var, &m);
     nl_field_free(var);
     cli_out_commit(c->emean);
     cli_out_commit(c->evar);

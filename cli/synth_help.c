@@ -10,7 +10,7 @@
 static const char help_usage[] =
     "usage: noiselab synth METHOD (--acf SPEC | --spectrum SPEC) --size N[xM[xK]]\n"
     "                      [--seed S] [--spacing H[,H...]] [--clamp] [--preview P.png]\n"
-    "                      [--json] [method options] -o OUT.exr|OUT.tsv|OUT.h5\n"
+    "                      [--json] [method options] -o OUT [--format NAME] [--range LO:HI]\n"
     "                      [--precision single|double]\n\n"
     "METHOD\n";
 
@@ -54,9 +54,15 @@ static const char help_condition[] =
     "                   \"# key: value\" lines, then columns t, value, t = (origin + i) h);\n"
     "                   or HDF5 (.h5: dataset /field, float32, attributes model, method, seed,\n"
     "                   size, spacing, origin, version, flags, processes; read by noiselab-mpi,\n"
-    "                   which noiselab hands .h5 runs to); nothing is written unless every\n"
-    "                   sample is finite (and, in float32, within its range)\n"
-    "  --precision single|double  .h5 outputs: float32 (default) or float64\n";
+    "                   which noiselab hands .h5 runs to, with an .xmf sidecar for ParaView);\n"
+    "                   or NumPy .npy, a 16-bit PNG heightmap (.png), raw .r16 or .f32 (noiselab\n"
+    "                   formats lists them); nothing is written unless every sample is finite\n"
+    "                   (and, in float32, within its range)\n"
+    "  --format NAME    write -o in format NAME whatever its extension\n"
+    "  --range LO:HI    16-bit outputs (png16, r16): the values mapped to 0 and 65535\n"
+    "                   (default: the field's min and max)\n"
+    "  --precision single|double  .h5 and .npy outputs: float32 or float64 (.h5 default\n"
+    "                   float32, .npy float64)\n";
 /* then the paragraph on distributed runs, naming the distributed methods,
  * filled to this width */
 #define HELP_MPI_WIDTH 82

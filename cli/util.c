@@ -251,16 +251,6 @@ static const cli_h5_hooks *h5_or_die(const char *path)
 
 int cli_h5_read_meta(const char *path, nl_meta *meta) { return h5_or_die(path)->meta(path, meta); }
 
-void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta)
-{
-    if (cli_is_h5(path))
-        cli_check(h5_or_die(path)->write(tmp, f, meta, cli_h5_double));
-    else if (cli_has_ext(path, ".exr"))
-        cli_check(nl_exr_write(tmp, f, meta));
-    else
-        cli_check(nl_tsv_write_field(tmp, f, meta, NULL, NULL));
-}
-
 nl_field *cli_field_alloc(int dim, const size_t *n, const double *h)
 {
     int st;

@@ -1,4 +1,5 @@
-/* Field files: OpenEXR (through the OpenEXRCore C API), PNG, TSV.
+/* Field files: OpenEXR (through the OpenEXRCore C API), PNG, TSV; the
+ * format registry over them and the other formats is core/format.h.
  *
  * EXR: one FLOAT channel "Y", uncompressed scanlines: random fields do not
  * compress (PIZ saved 0% on white-ish noise and 9% on a smooth Gaussian
@@ -121,13 +122,15 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
  * NL_ENOMEM when the samples do not fit in memory. */
 int nl_tsv_read_field(const char *path, nl_field **out);
 
-/* Read any field: EXR by content, else PNG by content, else TSV.  The file
- * is read once, front to back, into memory (core/io_read_internal.h), so a pipe, a
- * FIFO or /dev/stdin works as well as a file (nl_exr_read and nl_png_read
- * read once too); NL_ETOOBIG when it grows beyond the memory available,
- * NL_EINPUT for a folder.  Samples
- * must be finite (NL_EINPUT names the first that is not).  `meta` (may be
- * NULL) is zeroed, then filled from EXR attributes or TSV comment lines. */
+/* Read any field through the format registry (core/format.h): by content
+ * where a format has a signature (EXR, PNG, .npy), else by the extension
+ * (.r16, .raw, .f32), else TSV.  The file is read once, front to back
+ * (core/io_read_internal.h), so a pipe, a FIFO or /dev/stdin works as well
+ * as a file; NL_ETOOBIG when it grows beyond the memory available,
+ * NL_EINPUT for a folder or an HDF5 file (libnoiselab_mpi reads those:
+ * NL_EINVAL).  Samples must be finite (NL_EINPUT names the first that is
+ * not).  `meta` (may be NULL) is zeroed, then filled from what the format
+ * records (EXR attributes, TSV comment lines, PNG text chunks). */
 int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
 
 #ifdef __cplusplus

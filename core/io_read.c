@@ -1,7 +1,9 @@
-/* Reading a file once into memory, and reading any field file (images
- * from a copy in memory, TSV series parsed as they are read). */
+/* Reading a file once into memory, and reading any field file through
+ * the format registry (core/format.h): binary formats from a copy in
+ * memory, text formats parsed as they are read. */
 #include "io_read_internal.h"
 #include "field.h"
+#include "format.h"
 #include "nl_error.h"
 
 #include <errno.h>
@@ -62,7 +64,7 @@ static int read_all(int fd, const char *path, unsigned char **buf, size_t *cap, 
     return NL_OK;
 }
 
-/* The rest of open file fd, after the n <= 4 bytes already read into
+/* The rest of open file fd, after the n <= 8 bytes already read into
  * head, into a new block (*buf, *len bytes of it), within the memory
  * available. */
 static int slurp_fd(int fd, const char *path, const unsigned char *head, size_t n, unsigned char **buf, size_t *len)
@@ -123,7 +125,7 @@ int nl_io_slurp(const char *path, unsigned char **buf, size_t *len)
  * (the TSV parser reads it line by line, as it arrives). */
 typedef struct {
     int fd;                 /* the file, read on after the head */
-    unsigned char head[4];  /* bytes read to tell the format */
+    unsigned char head[8];  /* bytes read to tell the format */
     size_t n, pos;          /* how many, how many given back */
 } prefixed;
 
@@ -142,79 +144,109 @@ static ssize_t prefixed_read(void *cookie, char *buf, size_t size)
     return got;
 }
 
-/* A TSV series from fd (the n bytes of head already read), parsed as it is
- * read: memory grows with the samples, within the memory limit, and never
- * holds the file. */
-static int tsv_fd(const char *path, int fd, const unsigned char *head, size_t n, nl_field **out, nl_meta *meta)
+/* A text format from fd (the n bytes of head already read), parsed as it
+ * is read: memory grows with the samples, within the memory limit, and
+ * never holds the file. */
+static int stream_fd(const nl_format *t, const char *path, int fd, const unsigned char *head, size_t n,
+                     nl_field **out, nl_meta *meta)
 {
     prefixed p = {.fd = fd, .n = n};
     cookie_io_functions_t io = {.read = prefixed_read};
     FILE *fp;
     int st;
     *out = NULL;
-    if (n == 0)
-        return NL_ERROR(NL_EINPUT, "%s: expected a TSV header line, found none", path);
     memcpy(p.head, head, n);
     if (!(fp = fopencookie(&p, "r", io)))
         return NL_ERROR(NL_ENOMEM, "out of memory reading %s", path);
-    st = nl_tsv_read_stream(fp, path, out, meta);
+    st = t->read_stream(fp, path, out, meta);
     fclose(fp);
     return st;
 }
 
-/* Up to 4 bytes from fd into head (fewer at the end of the file). */
+/* Up to 8 bytes from fd into head (fewer at the end of the file). */
 static int read_head(int fd, const char *path, unsigned char *head, size_t *n)
 {
     size_t got = 1;
     int st;
     *n = 0;
-    while (*n < 4 && got > 0) {
-        if ((st = read_some(fd, path, head + *n, 4 - *n, &got)))
+    while (*n < 8 && got > 0) {
+        if ((st = read_some(fd, path, head + *n, 8 - *n, &got)))
             return st;
         *n += got;
     }
     return NL_OK;
 }
 
-/* An EXR or PNG image, decoded from a copy of the whole file. */
-static int image_fd(const char *path, int fd, const unsigned char *head, size_t n, int exr, nl_field **out,
-                    nl_meta *meta)
+/* The format of a file that starts with the n bytes of head: o->format by
+ * name, else the first whose signature matches, else the one path's
+ * extension selects (formats without a signature), else the fallback. */
+static int choose(const char *path, const nl_read_options *o, const unsigned char *head, size_t n,
+                  const nl_format **out)
+{
+    const nl_format *t, *fallback = NULL;
+    int st;
+    *out = NULL;
+    if (o && o->format)
+        return nl_format_resolve(path, o->format, out);
+    for (size_t i = 0; (t = nl_format_get(i)); i++) {
+        if (t->magic && n >= t->magic_len && memcmp(head, t->magic, t->magic_len) == 0)
+            return *out = t, NL_OK;
+        if (t->flags & NL_FORMAT_FALLBACK && !fallback)
+            fallback = t;
+    }
+    t = nl_format_for_path(path);
+    *out = t && (!t->magic || (t->flags & NL_FORMAT_EXTERNAL)) ? t : fallback;
+    st = *out ? NL_OK : NL_ERROR(NL_EINPUT, "%s: not a field file this library reads", path);
+    return st;
+}
+
+/* Any sample not finite: NL_EINPUT naming the first, f released. */
+static int check_finite(const char *path, nl_field **f)
+{
+    for (size_t i = 0; i < (*f)->count; i++)
+        if (!isfinite((*f)->data[i])) {
+            int st = NL_ERROR(NL_EINPUT, "%s: sample %zu is %g; expected finite values", path, i, (*f)->data[i]);
+            nl_field_free(*f);
+            *f = NULL;
+            return st;
+        }
+    return NL_OK;
+}
+
+/* Read fd (the n bytes of head already read) as format t. */
+static int read_as(const nl_format *t, const char *path, int fd, const unsigned char *head, size_t n,
+                   const nl_read_options *o, nl_field **out, nl_meta *meta)
 {
     unsigned char *buf;
     size_t len;
-    int st = slurp_fd(fd, path, head, n, &buf, &len);
-    if (st)
+    int st;
+    if (t->flags & NL_FORMAT_EXTERNAL)
+        return NL_ERROR(NL_EINVAL, "%s: format %s is read by libnoiselab_mpi (mpi/h5.h), not here", path, t->name);
+    if (t->read_stream)
+        return stream_fd(t, path, fd, head, n, out, meta);
+    if ((st = slurp_fd(fd, path, head, n, &buf, &len)))
         return st;
-    if (!exr)
-        st = nl_png_read_mem(path, buf, len, out);
-    else if (!(st = nl_exr_read_mem(path, buf, len, out, meta)))
-        for (size_t i = 0; i < (*out)->count; i++)
-            if (!isfinite((*out)->data[i])) {
-                st = NL_ERROR(NL_EINPUT, "%s: sample %zu is %g; expected finite values", path, i, (*out)->data[i]);
-                nl_field_free(*out);
-                *out = NULL;
-                break;
-            }
+    st = t->read(path, buf, len, o, out, meta);
     free(buf);
     return st;
 }
 
-int nl_field_read(const char *path, nl_field **out, nl_meta *meta)
+int nl_field_read_opts(const char *path, const nl_read_options *o, nl_field **out, nl_meta *meta)
 {
-    static const unsigned char exr_magic[4] = {0x76, 0x2f, 0x31, 0x01};
-    static const unsigned char png_magic[4] = {0x89, 'P', 'N', 'G'};
-    unsigned char head[4];
+    const nl_format *t;
+    unsigned char head[8];
     size_t n;
-    int st, fd, exr, png;
+    int st, fd;
     *out = NULL;
     if (meta)
         memset(meta, 0, sizeof *meta);
     if ((st = open_input(path, &fd)))
         return st;
-    if (!(st = read_head(fd, path, head, &n))) {
-        exr = n == 4 && memcmp(head, exr_magic, 4) == 0, png = n == 4 && memcmp(head, png_magic, 4) == 0;
-        st = exr || png ? image_fd(path, fd, head, n, exr, out, meta) : tsv_fd(path, fd, head, n, out, meta);
-    }
+    if (!(st = read_head(fd, path, head, &n)) && !(st = choose(path, o, head, n, &t)) &&
+        !(st = read_as(t, path, fd, head, n, o, out, meta)))
+        st = check_finite(path, out);
     close(fd);
     return st;
 }
+
+int nl_field_read(const char *path, nl_field **out, nl_meta *meta) { return nl_field_read_opts(path, NULL, out, meta); }

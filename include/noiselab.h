@@ -44,6 +44,7 @@ extern "C" {
 #include "noiselab/core/autocorr_plan.h"
 #include "noiselab/core/fftw_plan.h"
 #include "noiselab/core/io.h"
+#include "noiselab/core/format.h"
 #include "noiselab/core/provenance.h"
 #include "noiselab/core/io_obj.h"
 #include "noiselab/core/io_points.h"

@@ -25,7 +25,7 @@ to this package, then the installed libnoiselab.so.1.
 """
 from ._ffi import LIBRARY_PATH, Error
 from ._synth import METHODS, Plan, methods, synth
-from ._io import models, read, version, write
+from ._io import formats, models, read, version, write
 from ._analysis import acf, check_model, coeffs, hist, krige, moments, nonlin, psd, shape, variogram
 from ._krige import CondSim, condsim
 from ._sample import sample
@@ -36,7 +36,7 @@ from ._model import Model
 check = check_model  # noiselab.check, as the CLI's verb
 
 __version__ = version()
-__all__ = ["Error", "Plan", "synth", "read", "write", "models", "version", "acf", "psd", "hist", "moments",
+__all__ = ["Error", "Plan", "synth", "read", "write", "formats", "models", "version", "acf", "psd", "hist", "moments",
            "check", "check_model", "coeffs", "nonlin", "shape", "krige", "Krige", "CondSim", "condsim", "sample",
            "variogram", "fit", "METHODS", "methods",
            "ensemble_acf", "ensemble_psd", "ensemble_hist", "Model",

@@ -41,6 +41,44 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
                        const double *t);
 int nl_field_read(const char *path, nl_field **out, nl_meta *meta);
 
+/* core/format.h */
+typedef ... FILE;
+typedef struct {
+    const char *format;
+    int precision;
+    double lo, hi;
+} nl_write_options;
+typedef struct {
+    const char *format;
+    int dim;
+    size_t n[3];
+    double lo, hi;
+} nl_read_options;
+typedef struct nl_format {
+    const char *name;
+    const char *extensions;
+    const char *summary;
+    unsigned dims;
+    unsigned types;
+    int precision;
+    unsigned meta;
+    unsigned flags;
+    const char *magic;
+    size_t magic_len;
+    int (*read)(const char *path, const unsigned char *buf, size_t len, const nl_read_options *o,
+                nl_field **out, nl_meta *meta);
+    int (*read_stream)(FILE *fp, const char *path, nl_field **out, nl_meta *meta);
+    int (*write)(const char *path, const nl_field *f, const nl_meta *meta, const nl_write_options *o);
+} nl_format;
+size_t nl_format_count(void);
+const nl_format *nl_format_get(size_t i);
+const nl_format *nl_format_find(const char *name);
+int nl_format_resolve(const char *path, const char *format, const nl_format **out);
+int nl_field_write(const char *path, const nl_field *f, const nl_meta *meta, const nl_write_options *o);
+int nl_field_read_opts(const char *path, const nl_read_options *o, nl_field **out, nl_meta *meta);
+int nl_xdmf_write(const char *xmf_path, const char *h5_name, int dim, const size_t *n, const double *h,
+                  const double *origin, int dbl);
+
 /* core/provenance.h */
 enum { NL_META_NKEYS = 8 };
 typedef struct {

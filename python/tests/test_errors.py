@@ -109,7 +109,7 @@ def test_read_not_a_field(tmp_path):
     (lambda: noiselab.variogram(np.zeros((3, 2)), np.zeros(3), width=-1), "width"),
     (lambda: noiselab.fit(field=np.random.default_rng(1).normal(size=(8, 8)), model="nosuch"), ""),
     (lambda: noiselab.write("/nonexistent/dir/f.exr", np.zeros((4, 4))), ""),
-    (lambda: noiselab.write("f.tsv", np.zeros((4, 4))), "TSV holds 1D"),
+    (lambda: noiselab.write("f.tsv", np.zeros((4, 4))), "does not hold 2D"),
     (lambda: noiselab.write("f.exr", np.full(4, 1e300)), "float32"),
     (lambda: noiselab.write("f.exr", np.zeros(4), colour="red"), "unknown provenance"),
     (lambda: noiselab.check(acf="markov", dim=4), "dim"),

@@ -15,7 +15,7 @@ from conftest import TOP
 import noiselab
 from noiselab import _ffi
 
-HEADERS = ["core/version.h", "core/nl_error.h", "core/field.h", "core/mem.h", "core/io.h", "core/provenance.h", "core/model.h",
+HEADERS = ["core/version.h", "core/nl_error.h", "core/field.h", "core/mem.h", "core/io.h", "core/format.h", "core/provenance.h", "core/model.h",
            "core/dist.h", "core/wk.h", "synth/fft.h", "synth/circulant.h", "synth/cholesky.h", "synth/subdiv.h",
            "synth/midpoint.h", "synth/faulting.h", "synth/sparse.h", "synth/lattice.h", "synth/method.h", "synth/shape.h",
            "analysis/acf.h", "analysis/psd.h", "analysis/welch.h", "analysis/radial.h", "analysis/spectral.h",
