@@ -35,6 +35,8 @@ typedef struct {
     char version[32];
     char flags[256];
     char origin[64];
+    char crs[1024];
+    char extent[192];
 } nl_meta;
 int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta);
 int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta, const char *coord,
