@@ -20,7 +20,7 @@ static int nc_read(const char *path, const unsigned char *buf, size_t len, const
 
 static int nc_write(const char *path, const nl_field *f, const nl_meta *meta, const nl_write_options *o)
 {
-    static const char *const copts[] = {"FORMAT=NC", "WRITE_LONLAT=NO", NULL};
+    static const char *const copts[] = {"FORMAT=NC", NULL};
     return nl_gdal_write("netCDF", copts, path, f, meta, o);
 }
 #define NL_GDAL_FNS .read = nc_read, .write = nc_write

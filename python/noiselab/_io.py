@@ -30,7 +30,7 @@ def formats():
                         dims=[d for d in (1, 2, 3) if f.dims & (1 << d)],
                         values=[t for k, t in enumerate(_TYPES) if f.types & (1 << k)],
                         metadata=[m for k, m in enumerate(_METAS) if f.meta & (1 << k)],
-                        external=bool(f.flags & 1), summary=ffi.string(f.summary).decode()))
+                        external=bool(f.flags & 1), off=bool(f.flags & 8), summary=ffi.string(f.summary).decode()))
     return out
 
 
@@ -109,10 +109,13 @@ def read(path, meta=False, format=None, size=None, range=None):
         return arr
     d = {k: ffi.string(getattr(m, k)).decode("utf-8", "replace") for k in META_KEYS}
     d["spacing_array"] = spacing
+    for k in _GEO_KEYS:  # georeferencing: GeoTIFF and NetCDF (core/formats/gdal_io.h)
+        d[k] = ffi.string(getattr(m, k)).decode("utf-8", "replace")
     return arr, d
 
 
 range_ = range  # read() and write() take a keyword named range
+_GEO_KEYS = ("crs", "extent")
 
 
 def _auto_provenance(f):
@@ -151,9 +154,12 @@ def write(path, array, spacing=1.0, precision=None, format=None, range=None, **p
                 flags, origin, version (default: this library's); size and
                 spacing are recorded from the array and `spacing`.  E.g.
                 ``write(p, plan(seed), **plan.provenance(seed))`` writes the
-                file noiselab synth writes.
+                file noiselab synth writes.  The georeferenced formats
+                (geotiff, cog, netcdf) also take crs ("EPSG:N" or WKT) and
+                extent ("x0:x1,y0:y1", the cells' outer edges; array row 0
+                is the southernmost), and read() returns both.
     """
-    keys = ("model", "method", "seed", "flags", "origin", "version")
+    keys = ("model", "method", "seed", "flags", "origin", "version") + _GEO_KEYS
     bad = set(provenance) - set(keys)
     if bad:
         raise Error("write: unknown provenance key %s (expected %s; size and spacing come from the array and "
@@ -174,6 +180,13 @@ def write(path, array, spacing=1.0, precision=None, format=None, range=None, **p
         s = as_str("write: " + k, auto.get(k, "") if s is None else s, empty=True)
         if len(s) >= ffi.sizeof(getattr(m, k)):
             raise Error("write: %s: expected at most %d bytes, got %d" % (k, ffi.sizeof(getattr(m, k)) - 1, len(s)))
+        setattr(m, k, s)
+    for k in _GEO_KEYS:
+        s = as_str("write: " + k, provenance.get(k, ""), empty=True)
+        if len(s) >= ffi.sizeof(getattr(m, k)):
+            raise Error("write: %s: expected at most %d bytes, got %d" % (k, ffi.sizeof(getattr(m, k)) - 1, len(s)))
+        if k == "crs" and s:
+            check(lib.nl_format_crs_check(s))
         setattr(m, k, s)
     if t.flags & 1:  # NL_FORMAT_EXTERNAL: HDF5, through libnoiselab_mpi
         dbl = precision == "double"
