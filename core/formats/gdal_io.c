@@ -20,7 +20,7 @@
 static const char *gdal_msg(void)
 {
     const char *m = CPLGetLastErrorMsg();
-    return m && *m ? m : "unknown error";
+    return m && *m ? m : "no reason given (truncated, or not this format)";
 }
 
 /* The first sample's centre (x0, y0) of f by gdal_io.h's rules. */
