@@ -103,7 +103,7 @@ $(BUILD)/core/fftw_plan.o: $(BUILD)/install-dirs
 # The GDAL objects are remade when NL_GDAL changes.
 $(GDAL_OBJ): CFLAGS += $(if $(filter 1,$(NL_GDAL)),-DNL_HAVE_GDAL $(shell pkg-config --cflags gdal))
 $(GDAL_OBJ): $(BUILD)/gdal-config
-$(BUILD)/gdal-config: FORCE
+$(BUILD)/gdal-config: FORCE | $(DEPS_OK)
 	@mkdir -p $(BUILD) && echo 'NL_GDAL=$(NL_GDAL)' | cmp -s - $@ || echo 'NL_GDAL=$(NL_GDAL)' > $@
 
 # The descriptors compile without GDAL too (as "off"): a check of the

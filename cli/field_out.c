@@ -40,7 +40,11 @@ void cli_opt_range(void *obj, const char *label, const char *arg)
 
 void cli_opt_crs(void *obj, const char *label, const char *arg)
 {
+    const nl_format *tif = nl_format_find("geotiff");
     (void)obj;
+    if (tif && (tif->flags & NL_FORMAT_OFF))
+        cli_die(2, "%s: no format of this build carries a CRS (%s), got \"%s\"", label, tif->summary,
+                arg ? arg : "");
     if (!arg || nl_format_crs_check(arg))
         cli_die(2, "%s: expected a coordinate reference system GDAL knows, e.g. EPSG:28992, got \"%s\"", label,
                 arg ? arg : "");
