@@ -139,3 +139,25 @@ def test_krige_map_honours_datum_where_crs_puts_it(tmp_path, cli, meuse):
     g.SetAxisMappingStrategy(osr.OAMS_TRADITIONAL_GIS_ORDER)
     lon, lat, _ = osr.CoordinateTransformation(s, g).TransformPoint(x, y)
     assert 5.70 < lon < 5.78 and 50.95 < lat < 51.0
+
+
+def test_missing_cells_are_nodata_and_crs_carries_over(tmp_path, cli):
+    pts = tmp_path / "p.tsv"
+    pts.write_text("x\ty\tvalue\n181050\t333050\t6.9\n180650\t332650\t5.2\n")
+    grid = ("--grid", "20x20", "--extent", "180000:182000,332000:334000")
+    out = str(tmp_path / "m.tif")
+    # a 150 m radius reaches the cells whose centres lie within it of a datum: 2 x 9 of 400
+    cli("krige", "--data", pts, "--acf", "spherical:scale=900", *grid, "--radius", "150", "--crs", "EPSG:28992",
+        "-o", out)
+    ds = gdal.Open(out)
+    a = ds.GetRasterBand(1).ReadAsArray()
+    assert np.isnan(ds.GetRasterBand(1).GetNoDataValue())
+    assert np.count_nonzero(~np.isnan(a)) == 18 and a[9, 10] == np.float32(6.9)  # row 9 from the top: y 333050
+    # a command that reads the map and writes a field keeps its CRS and place
+    m2 = str(tmp_path / "m2.tif")
+    full = str(tmp_path / "full.tif")
+    cli("krige", "--data", pts, "--acf", "spherical:scale=900", *grid, "--crs", "EPSG:28992", "-o", full)
+    cli("shape", "--to", "uniform", full, "-o", m2)
+    d2 = gdal.Open(m2)
+    assert d2.GetGeoTransform() == gdal.Open(full).GetGeoTransform()
+    assert osr.SpatialReference(wkt=d2.GetProjection()).GetAuthorityCode(None) == "28992"
