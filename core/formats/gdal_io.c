@@ -128,15 +128,15 @@ int nl_gdal_write(const char *driver, const char *const *copts, const char *path
     if (f->n[0] > 0x7fffffff || (f->dim > 1 && f->n[1] > 0x7fffffff) || (f->dim > 2 && f->n[2] > 0x7fffffff))
         return NL_ERROR(NL_ETOOBIG, "%s: more than 2^31 - 1 samples on an axis", path);
     GDALAllRegister();
-    if ((st = crs_wkt(meta ? meta->crs : NULL, &wkt)))
-        return st;
     CPLPushErrorHandler(CPLQuietErrorHandler);
     CPLErrorReset();
-    if (!(drv = GDALGetDriverByName(driver)))
+    st = crs_wkt(meta ? meta->crs : NULL, &wkt);
+    if (!st && !(drv = GDALGetDriverByName(driver)))
         st = NL_ERROR(NL_EIO, "%s: GDAL has no %s driver", path, driver);
-    else if (!(mem = mem_copy(f, meta, o->precision == 64, wkt, strcmp(driver, "netCDF") ? "" : "NC_GLOBAL#")))
+    else if (!st && !(mem = mem_copy(f, meta, o->precision == 64, wkt, strcmp(driver, "netCDF") ? "" : "NC_GLOBAL#")))
         st = NL_ERROR(NL_ENOMEM, "%s: GDAL: %s", path, gdal_msg());
-    else {
+    else if (!st) {
+        CPLErrorReset();
         out = GDALCreateCopy(drv, path, mem, FALSE, (char **)copts, NULL, NULL);
         if (out)
             GDALClose(out); /* void in GDAL 3.6: a failed flush shows as the last error */
