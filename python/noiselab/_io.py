@@ -21,8 +21,10 @@ def formats():
     registry (core/format.h): a list of dicts with name (as format= takes
     it), extensions (those that select it), dims (the dimensions it holds),
     values (float32, float64, uint16), metadata (provenance, spacing,
-    origin, range: what it records; [] for none), external (True: read and
-    written through libnoiselab_mpi, HDF5) and summary."""
+    origin, range, crs, nodata: what it records; [] for none), external
+    (True: read and written through libnoiselab_mpi, HDF5), off (True: not
+    in this build, e.g. GeoTIFF and NetCDF without GDAL; the summary says
+    why) and summary."""
     out = []
     for i in range(lib.nl_format_count()):
         f = lib.nl_format_get(i)
@@ -58,7 +60,8 @@ def _range(what, value):
 
 def read(path, meta=False, format=None, size=None, range=None):
     """Read a field with the library's reader (nl_field_read, core/format.h):
-    by content where the format has a signature (EXR, PNG, .npy, HDF5), else
+    by content where the format has a signature (EXR, PNG, .npy, HDF5,
+    TIFF, netCDF), else
     by extension (.r16/.raw, .f32), else a 1D TSV table -- every format of
     the registry (formats()), so the formats it gains later are read here
     unchanged.
@@ -75,7 +78,9 @@ def read(path, meta=False, format=None, size=None, range=None):
     samples are float32 widened exactly.  With meta=True returns (array,
     dict): the provenance (model, method, seed, spacing, size, version,
     flags, origin: the strings recorded; the spacing "hx[,hy[,hz]]" lists x
-    first) plus "spacing_array": the spacing in the array's axis order.
+    first) plus "spacing_array": the spacing in the array's axis order, and
+    "crs" and "extent" (GeoTIFF, NetCDF: "EPSG:N" or WKT, and the cells'
+    outer edges "x0:x1,y0:y1"; array row 0 is the south; "" when none).
     """
     p, b = as_path("read: path", path)
     meta = as_bool("read: meta", meta)
