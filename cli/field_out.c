@@ -72,7 +72,7 @@ const nl_format *cli_field_out_check(const char *label, const char *path, int di
                 label, t->name, dim, path);
     if (cli_h5_double && !(t->types & NL_FORMAT_F64))
         cli_die(2, "--precision double: format %s stores no float64; expected %s", t->name,
-                "an .h5 or .npy output");
+                "an .h5 or .npy output (or .tif, .nc)");
     if (cli_field_range[0] < cli_field_range[1] && (t->types & (NL_FORMAT_F32 | NL_FORMAT_F64)))
         cli_die(2, "--range: format %s stores floats, not codes of a range; expected png16 or r16", t->name);
     if (cli_field_crs && !(t->meta & NL_FORMAT_META_CRS))
