@@ -78,6 +78,7 @@ Test(gof_boot, variance_two_gaussian_rejected)
     cr_expect_lt(b.stat[NL_GOF_VARIANCE].p, 1e-3, "variance p %g", b.stat[NL_GOF_VARIANCE].p);
     cr_expect_gt(b.var_ratio_hi, 1.05, "detectable ratio %g", b.var_ratio_hi);
     cr_expect_lt(b.var_ratio_hi, 2, "detectable ratio %g", b.var_ratio_hi);
+    nl_field_free(f);
 }
 
 /* The same field mapped exactly onto laplace (F^-1(Phi(x))) is a sample of
