@@ -10,8 +10,16 @@ CC        ?= gcc
 OPT       ?= -O2 -g
 CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
              -I/usr/include/OpenEXR
-LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lmuparser -lm
+LDLIBS     = -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lmuparser -lm $(VDB_LIBS)
 BUILD     := build
+# OpenVDB is optional (Debian's libopenvdb-dev ships no .pc: found by its
+# header).  Without it core/formats/vdb_io.cc compiles empty and the format
+# openvdb is registered off (core/formats/vdb.c).  Recursive (=): looked for
+# when recipes run, after deps.txt's packages are installed; the stamp
+# rebuilds both objects when the answer changes.
+HAVE_OPENVDB = $(shell test -f /usr/include/openvdb/openvdb.h && echo 1)
+VDB_LIBS   = $(if $(HAVE_OPENVDB),-lopenvdb -ltbb -lImath -lstdc++)
+CXXFLAGS  += -std=c++17 -D_GNU_SOURCE -Wall -Wextra $(OPT) -MMD -MP -fPIC -fno-semantic-interposition
 
 LIB_SRC   := $(wildcard core/*.c core/families/*.c core/formats/*.c synth/*.c analysis/*.c render/*.c)
 # cli/h5_*.c are the command line's HDF5 and MPI parts: noiselab-mpi only.
@@ -32,7 +40,7 @@ BENCH_SRC := $(wildcard bench/*.c)
 TEST_SRC  := $(wildcard tests/*.c)
 EXP_SRC   := $(wildcard experiments/*.c)
 EXP_BIN   := $(EXP_SRC:%.c=$(BUILD)/%)
-LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
+LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/core/formats/vdb_io.o
 CLI_OBJ   := $(CLI_SRC:%.c=$(BUILD)/%.o) $(BENCH_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ  := $(TEST_SRC:%.c=$(BUILD)/%.o)
 LIB       := $(BUILD)/libnoiselab.a
@@ -81,6 +89,17 @@ deps: $(DEPS_OK)
 $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c $< -o $@
+
+# The one C++ translation unit (OpenVDB), behind a C interface.
+$(BUILD)/%.o: %.cc | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -c $< -o $@
+VDB_OBJ := $(BUILD)/core/formats/vdb.o $(BUILD)/core/formats/vdb_io.o
+$(VDB_OBJ): $(BUILD)/openvdb-found
+$(VDB_OBJ): CFLAGS += $(if $(HAVE_OPENVDB),-DNL_HAVE_OPENVDB)
+$(VDB_OBJ): CXXFLAGS += $(if $(HAVE_OPENVDB),-DNL_HAVE_OPENVDB)
+$(BUILD)/openvdb-found: FORCE | $(DEPS_OK)
+	@echo '$(HAVE_OPENVDB)' | cmp -s - $@ || echo '$(HAVE_OPENVDB)' > $@
 
 # Library objects serve both the static and the shared library (and are
 # rebuilt when the Makefile, and so maybe their flags, changes).

@@ -11,7 +11,8 @@ static const char help[] =
     "--format NAME) and read from (by content where the format has a signature,\n"
     "else by extension, else TSV): name, extensions, dimensions, value types and\n"
     "the metadata each carries.  Integer formats (png16, r16) map a value range,\n"
-    "by default the field's min..max or --range LO:HI, linearly onto their codes.\n";
+    "by default the field's min..max or --range LO:HI, linearly onto their codes.\n"
+    "A format marked (off) is not in this build; its line says why.\n";
 
 typedef struct {
     int json; /* --json */
@@ -63,15 +64,16 @@ int cli_cmd_formats(int argc, char **argv)
         return 0;
     cli_no_operands("formats", argc, argv);
     if (!a.json)
-        printf("%-6s %-10s %-9s %-16s %s\n", "name", "extensions", "dims", "values", "metadata");
+        printf("%-7s %-10s %-9s %-16s %s\n", "name", "extensions", "dims", "values", "metadata");
     for (size_t i = 0; i < nl_format_count(); i++) {
         const nl_format *f = nl_format_get(i);
         words(f->dims, dim_names, 4, ",", d, sizeof d);
         words(f->types, type_names, 4, ",", t, sizeof t);
         words(f->meta, meta_names, 6, ",", m, sizeof m);
         if (!a.json) {
-            printf("%-6s %-10s %-9s %-16s %s%s\n       %s\n", f->name, f->extensions, d, t, m,
-                   f->flags & NL_FORMAT_EXTERNAL ? " (noiselab-mpi)" : "", f->summary);
+            printf("%-7s %-10s %-9s %-16s %s%s\n        %s\n", f->name, f->extensions, d, t, m,
+                   f->flags & NL_FORMAT_EXTERNAL ? " (noiselab-mpi)" : f->flags & NL_FORMAT_OFF ? " (off)" : "",
+                   f->summary);
             continue;
         }
         json_t *o = json_object();
@@ -81,6 +83,7 @@ int cli_cmd_formats(int argc, char **argv)
         json_object_set_new(o, "values", word_array(t));
         json_object_set_new(o, "metadata", word_array(m));
         json_object_set_new(o, "external", json_boolean(f->flags & NL_FORMAT_EXTERNAL));
+        json_object_set_new(o, "off", json_boolean(f->flags & NL_FORMAT_OFF));
         json_object_set_new(o, "summary", json_string(f->summary));
         json_array_append_new(all, o);
     }

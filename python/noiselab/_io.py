@@ -22,7 +22,8 @@ def formats():
     it), extensions (those that select it), dims (the dimensions it holds),
     values (float32, float64, uint16), metadata (provenance, spacing,
     origin, range: what it records; [] for none), external (True: read and
-    written through libnoiselab_mpi, HDF5) and summary."""
+    written through libnoiselab_mpi, HDF5), off (True: registered but not in
+    this build, the summary says why) and summary."""
     out = []
     for i in range(lib.nl_format_count()):
         f = lib.nl_format_get(i)
@@ -30,7 +31,7 @@ def formats():
                         dims=[d for d in (1, 2, 3) if f.dims & (1 << d)],
                         values=[t for k, t in enumerate(_TYPES) if f.types & (1 << k)],
                         metadata=[m for k, m in enumerate(_METAS) if f.meta & (1 << k)],
-                        external=bool(f.flags & 1), summary=ffi.string(f.summary).decode()))
+                        external=bool(f.flags & 1), off=bool(f.flags & 8), summary=ffi.string(f.summary).decode()))
     return out
 
 
