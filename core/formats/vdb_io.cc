@@ -1,7 +1,8 @@
 // OpenVDB reader and writer (core/formats/vdb.c says what is stored): C++
 // behind the C functions of vdb_internal.h.  Every exception stops here:
-// std::bad_alloc is NL_ENOMEM, anything else NL_EIO when writing and
-// NL_EINPUT when reading, with OpenVDB's reason in the message.  Without
+// std::bad_alloc is NL_ENOMEM when writing and NL_ETOOBIG when reading (a
+// size the file declares), anything else NL_EIO when writing and NL_EINPUT
+// when reading, with OpenVDB's reason in the message.  Without
 // NL_HAVE_OPENVDB (the build found no OpenVDB) this file is empty.
 #ifdef NL_HAVE_OPENVDB
 
@@ -222,8 +223,8 @@ extern "C" int nl_vdb_read(const char *path, const unsigned char *buf, size_t le
     } catch (const std::ios_base::failure &) {
         return NL_ERROR(NL_EINPUT, "%s: not a readable OpenVDB file: it ends before its grids do (%zu bytes)", path,
                         len);
-    } catch (const std::bad_alloc &) {
-        return NL_ERROR(NL_ENOMEM, "%s: out of memory reading the OpenVDB file", path);
+    } catch (const std::bad_alloc &) { // a size the file declares (a corrupt one, or too large a grid)
+        return NL_ERROR(NL_ETOOBIG, "%s: the OpenVDB file declares more than fits in memory", path);
     } catch (const std::exception &e) {
         return NL_ERROR(NL_EINPUT, "%s: not a readable OpenVDB file: %s", path, e.what());
     } catch (...) {
