@@ -10,9 +10,10 @@ static const char help[] =
     "Lists the formats a field is written in (-o, chosen by the extension or by\n"
     "--format NAME) and read from (by content where the format has a signature,\n"
     "else by extension, else TSV): name, extensions, dimensions, value types and\n"
-    "the metadata each carries.  Integer formats (png16, r16) map a value range,\n"
-    "by default the field's min..max or --range LO:HI, linearly onto their codes.\n"
-    "A format marked (off) is not in this build; its line says why.\n";
+    "the metadata each carries; formats this build lacks (GeoTIFF, COG and NetCDF\n"
+    "without GDAL, OpenVDB without it) are listed with \"off\" and why.  Integer formats (png16, r16)\n"
+    "map a value range, by default the field's min..max or --range LO:HI, linearly\n"
+    "onto their codes.  --crs EPSG:N georeferences .tif, .nc and --cog outputs.\n";
 
 typedef struct {
     int json; /* --json */
