@@ -10,7 +10,7 @@ CC        ?= gcc
 OPT       ?= -O2 -g
 CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
              -I/usr/include/OpenEXR
-LDLIBS    = -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lmuparser -lm $(GDAL_LIBS)
+LDLIBS    = -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lmuparser -lm $(GDAL_LIBS) $(VDB_LIBS)
 # GDAL (GeoTIFF, COG, NetCDF: core/formats/gdal_io.c) when pkg-config finds
 # it; NL_GDAL=0 builds without, the formats then listed as off.  Recursive
 # (=): pkg-config runs once the packages are installed.
@@ -18,6 +18,14 @@ NL_GDAL   ?= $(shell pkg-config --exists gdal && echo 1 || echo 0)
 GDAL_LIBS  = $(if $(filter 1,$(NL_GDAL)),$(shell pkg-config --libs gdal))
 GDAL_OBJ   = $(patsubst %.c,$(BUILD)/%.o,core/formats/gdal_io.c core/formats/geotiff.c core/formats/netcdf.c)
 BUILD     := build
+# OpenVDB is optional (Debian's libopenvdb-dev ships no .pc: found by its
+# header).  Without it core/formats/vdb_io.cc compiles empty and the format
+# openvdb is registered off (core/formats/vdb.c).  Recursive (=): looked for
+# when recipes run, after deps.txt's packages are installed; the stamp
+# rebuilds both objects when the answer changes.
+HAVE_OPENVDB = $(shell test -f /usr/include/openvdb/openvdb.h && echo 1)
+VDB_LIBS   = $(if $(HAVE_OPENVDB),-lopenvdb -ltbb -lImath -lstdc++)
+CXXFLAGS  += -std=c++17 -D_GNU_SOURCE -Wall -Wextra $(OPT) -MMD -MP -fPIC -fno-semantic-interposition
 
 LIB_SRC   := $(wildcard core/*.c core/families/*.c core/formats/*.c synth/*.c analysis/*.c render/*.c)
 # cli/h5_*.c are the command line's HDF5 and MPI parts: noiselab-mpi only.
@@ -38,7 +46,7 @@ BENCH_SRC := $(wildcard bench/*.c)
 TEST_SRC  := $(wildcard tests/*.c)
 EXP_SRC   := $(wildcard experiments/*.c)
 EXP_BIN   := $(EXP_SRC:%.c=$(BUILD)/%)
-LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o)
+LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/%.o) $(BUILD)/core/formats/vdb_io.o
 CLI_OBJ   := $(CLI_SRC:%.c=$(BUILD)/%.o) $(BENCH_SRC:%.c=$(BUILD)/%.o)
 TEST_OBJ  := $(TEST_SRC:%.c=$(BUILD)/%.o)
 LIB       := $(BUILD)/libnoiselab.a
@@ -87,6 +95,17 @@ deps: $(DEPS_OK)
 $(BUILD)/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -c $< -o $@
+
+# The one C++ translation unit (OpenVDB), behind a C interface.
+$(BUILD)/%.o: %.cc | $(DEPS_OK)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) -c $< -o $@
+VDB_OBJ := $(BUILD)/core/formats/vdb.o $(BUILD)/core/formats/vdb_io.o
+$(VDB_OBJ): $(BUILD)/openvdb-found
+$(VDB_OBJ): CFLAGS += $(if $(HAVE_OPENVDB),-DNL_HAVE_OPENVDB)
+$(VDB_OBJ): CXXFLAGS += $(if $(HAVE_OPENVDB),-DNL_HAVE_OPENVDB)
+$(BUILD)/openvdb-found: FORCE | $(DEPS_OK)
+	@echo '$(HAVE_OPENVDB)' | cmp -s - $@ || echo '$(HAVE_OPENVDB)' > $@
 
 # Library objects serve both the static and the shared library (and are
 # rebuilt when the Makefile, and so maybe their flags, changes).

@@ -11,7 +11,7 @@ static const char help[] =
     "--format NAME) and read from (by content where the format has a signature,\n"
     "else by extension, else TSV): name, extensions, dimensions, value types and\n"
     "the metadata each carries; formats this build lacks (GeoTIFF, COG and NetCDF\n"
-    "without GDAL) are listed with \"off\" and why.  Integer formats (png16, r16)\n"
+    "without GDAL, OpenVDB without it) are listed with \"off\" and why.  Integer formats (png16, r16)\n"
     "map a value range, by default the field's min..max or --range LO:HI, linearly\n"
     "onto their codes.  --crs EPSG:N georeferences .tif, .nc and --cog outputs.\n";
 
@@ -65,15 +65,16 @@ int cli_cmd_formats(int argc, char **argv)
         return 0;
     cli_no_operands("formats", argc, argv);
     if (!a.json)
-        printf("%-6s %-10s %-9s %-16s %s\n", "name", "extensions", "dims", "values", "metadata");
+        printf("%-7s %-10s %-9s %-16s %s\n", "name", "extensions", "dims", "values", "metadata");
     for (size_t i = 0; i < nl_format_count(); i++) {
         const nl_format *f = nl_format_get(i);
         words(f->dims, dim_names, 4, ",", d, sizeof d);
         words(f->types, type_names, 4, ",", t, sizeof t);
         words(f->meta, meta_names, 6, ",", m, sizeof m);
         if (!a.json) {
-            printf("%-6s %-10s %-9s %-16s %s%s\n       %s\n", f->name, f->extensions, d, t, m,
-                   f->flags & NL_FORMAT_EXTERNAL ? " (noiselab-mpi)" : "", f->summary);
+            printf("%-7s %-10s %-9s %-16s %s%s\n        %s\n", f->name, f->extensions, d, t, m,
+                   f->flags & NL_FORMAT_EXTERNAL ? " (noiselab-mpi)" : f->flags & NL_FORMAT_OFF ? " (off)" : "",
+                   f->summary);
             continue;
         }
         json_t *o = json_object();

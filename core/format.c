@@ -95,7 +95,8 @@ static int check_write(const nl_format *t, const nl_field *f, const nl_write_opt
         return NL_ERROR(NL_EINVAL, "format %s: %s", t->name, t->summary);
     if (f->dim < 1 || f->dim > 3 || !(t->dims & (1u << f->dim)))
         return NL_ERROR(NL_EINVAL, "format %s: does not hold %dD fields (it holds %s)", t->name, f->dim,
-                        t->dims == 4 ? "2D fields" : t->dims == 14 ? "1D, 2D and 3D fields" : "1D fields");
+                        t->dims == 4 ? "2D fields" : t->dims == 8 ? "3D fields" : t->dims == 14 ? "1D, 2D and 3D fields"
+                                                                                  : "1D fields");
     *prec = o->precision ? o->precision : t->precision;
     if (o->precision && o->precision != 32 && o->precision != 64)
         return NL_ERROR(NL_EINVAL, "precision %d: expected 32 or 64", o->precision);

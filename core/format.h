@@ -60,7 +60,7 @@ enum {
     NL_FORMAT_FALLBACK = 1 << 1, /* what nl_field_read takes a file that nothing else claims for */
     NL_FORMAT_SIZED = 1 << 2,    /* no header: reading needs the size (nl_read_options.n), or
                                     takes a square 2D field when the length is one */
-    NL_FORMAT_OFF = 1 << 3       /* not built in (e.g. no GDAL at build time): read and write
+    NL_FORMAT_OFF = 1 << 3       /* not built in (e.g. no GDAL or OpenVDB at build time): read and write
                                     NULL, the summary says why; nl_field_write / _read refuse it */
 };
 
@@ -91,7 +91,7 @@ typedef struct nl_format {
     unsigned types;         /* NL_FORMAT_F32 ... */
     int precision;          /* float formats: the default precision, 32 or 64 */
     unsigned meta;          /* NL_FORMAT_META_* */
-    unsigned flags;         /* NL_FORMAT_EXTERNAL, _FALLBACK, _SIZED */
+    unsigned flags;         /* NL_FORMAT_EXTERNAL, _FALLBACK, _SIZED, _OFF */
     const char *magic;      /* the file's first bytes, or NULL: none (told by extension) */
     size_t magic_len;       /* at most 8 */
     /* A field from the len bytes of a file at buf (path names it in
@@ -136,12 +136,14 @@ int nl_format_resolve(const char *path, const char *format, const nl_format **ou
  * integer format, or an NL_FORMAT_EXTERNAL format (HDF5: nl_mpi_h5_write_field
  * in libnoiselab_mpi); then what the format's writer returns (NL_OK,
  * NL_EIO, NL_ETOOBIG, NL_ENOMEM).  Integer formats map [lo, hi] linearly
- * onto their codes, rounding to nearest and clamping. */
+ * onto their codes, rounding to nearest and clamping.  An NL_FORMAT_OFF
+ * format is NL_EINVAL with its summary as the reason. */
 int nl_field_write(const char *path, const nl_field *f, const nl_meta *meta, const nl_write_options *o);
 
 /* nl_field_read (core/io.h) with options: o->format forces a format; a
  * headerless one (NL_FORMAT_SIZED) takes its size and value range from o.
- * NL_EINVAL for an unknown name or an NL_FORMAT_EXTERNAL format. */
+ * NL_EINVAL for an unknown name or an NL_FORMAT_EXTERNAL format, and for a
+ * file of an NL_FORMAT_OFF format (named by its signature or extension). */
 int nl_field_read_opts(const char *path, const nl_read_options *o, nl_field **out, nl_meta *meta);
 
 /* NL_OK when crs is a coordinate reference system GDAL knows ("EPSG:N",

@@ -221,7 +221,8 @@ Test(formats, registry_is_consistent)
         cr_assert_eq(nl_format_find(t->name), t, "%s", t->name);
         cr_assert(t->summary && *t->summary && t->dims && t->types, "%s", t->name);
         cr_assert(t->magic_len <= 8, "%s", t->name);
-        cr_assert((t->flags & NL_FORMAT_EXTERNAL) ? !t->write && !t->read : t->write && t->read, "%s", t->name);
+        cr_assert((t->flags & (NL_FORMAT_EXTERNAL | NL_FORMAT_OFF)) ? !t->write && !t->read : t->write && t->read, "%s",
+                  t->name);
         for (const char *e = t->extensions; *e;) {
             size_t k = strcspn(e, " ");
             snprintf(p, sizeof p, "x%.*s", (int)k, e);

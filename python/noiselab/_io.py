@@ -23,7 +23,7 @@ def formats():
     values (float32, float64, uint16), metadata (provenance, spacing,
     origin, range, crs, nodata: what it records; [] for none), external
     (True: read and written through libnoiselab_mpi, HDF5), off (True: not
-    in this build, e.g. GeoTIFF and NetCDF without GDAL; the summary says
+    in this build, e.g. GeoTIFF and NetCDF without GDAL, OpenVDB without it; the summary says
     why) and summary."""
     out = []
     for i in range(lib.nl_format_count()):
@@ -145,8 +145,10 @@ def write(path, array, spacing=1.0, precision=None, format=None, range=None, **p
     precision="single"; no metadata), 16-bit PNG heightmaps (.png, 2D),
     raw heightmaps (.r16/.raw uint16, .f32 float32; no header), HDF5 (.h5:
     dataset /field, float32 or with precision="double" float64, with an
-    .xmf sidecar for ParaView; through libnoiselab_mpi) or TSV (.tsv, 1D
-    only).  An unknown extension or format raises Error.
+    .xmf sidecar for ParaView; through libnoiselab_mpi), OpenVDB (.vdb, 3D
+    only: a float32 FloatGrid "density" for Blender and Houdini, voxel size
+    the spacing; off in a build without OpenVDB) or TSV (.tsv, 1D only).  An
+    unknown extension or format raises Error.
 
     array       1 to 3 axes, float64 (others converted), finite; in float32
                 formats each sample must fit in float32.
