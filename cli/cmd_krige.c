@@ -238,6 +238,7 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
                 "shorter numbers", a->ext, len);
     if (info->pseudo_inverse)
         snprintf(meta.flags, sizeof meta.flags, "singular,pseudo-inverse");
+    cli_meta_extent(&meta, a->gdim, a->lo, a->hi, a->g);
     check_float("-o", a->out, f);
     if (vf)
         check_float("--variance", a->vout, vf);
