@@ -97,6 +97,14 @@ void cli_write_field(const char *path, const char *tmp, const nl_field *f, const
         return;
     }
     int prec = cli_h5_double ? 64 : cli_field_single && (t->types & NL_FORMAT_F32) ? 32 : 0;
+    char side[4096];
     nl_write_options o = {.format = t->name, .precision = prec, .lo = cli_field_range[0], .hi = cli_field_range[1]};
+    if (t->flags & NL_FORMAT_SIZED) { /* the raw formats' JSON sidecar, an output of its own */
+        if (snprintf(side, sizeof side, "%s.json", path) >= (int)sizeof side)
+            cli_die(2, "-o: path too long: \"%s\"", path);
+        o.sidecar = cli_out_begin(side);
+    }
     cli_check(nl_field_write(tmp, f, meta, &o));
+    if (o.sidecar)
+        cli_out_commit(side);
 }

@@ -69,6 +69,9 @@ typedef struct {
                            (nl_format.precision); ignored by integer formats */
     double lo, hi;      /* integer formats: the values mapped to 0 and to the largest code;
                            lo == hi (e.g. both 0): the field's min and max */
+    const char *sidecar; /* headerless raw formats (.r16, .raw, .f32): where their JSON sidecar
+                            of size, range, spacing, origin and byte order goes; NULL: the
+                            path plus ".json" (height.r16.json); "": none */
 } nl_write_options;
 
 /* How a field is read (NULL: all defaults). */

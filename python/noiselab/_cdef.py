@@ -47,6 +47,7 @@ typedef struct {
     const char *format;
     int precision;
     double lo, hi;
+    const char *sidecar;
 } nl_write_options;
 typedef struct {
     const char *format;
