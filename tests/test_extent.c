@@ -1,6 +1,7 @@
 /* Where a grid lies: noiselab.origin through nl_meta_origin and
  * nl_meta_set_origin (core/provenance.h), the older "extent=" of maps, and
  * the commands that read it (sample, krige --covariate). */
+#include "../core/format.h"
 #include "../core/io.h"
 #include "../core/nl_error.h"
 #include "../core/provenance.h"
@@ -163,5 +164,37 @@ Test(extent, conditional_map_records_its_cells)
     cr_expect_str_eq(m.origin, "20.5,-7.5");
     cr_assert_eq(nl_meta_origin(&m, 2, f->n, f->h, o), NL_OK);
     cr_expect(o[0] == 10.25 && o[1] == -3.75, "%g %g", o[0], o[1]);
+    nl_field_free(f);
+}
+
+/* .r16 and .f32 with their sidecar: read back without options, the size
+ * (not square: 7 x 3), spacing and origin come from it, and the r16 values
+ * within half a 16-bit step of the range, (hi - lo) / 131070; f32 to
+ * float32 rounding (2^-24 relative). */
+Test(extent, raw_round_trip_through_the_sidecar)
+{
+    size_t n[2] = {7, 3};
+    double h[2] = {0.25, 2.385}, o[2] = {-1.5, 4.77}, got[3];
+    static const char *ext[] = {"r16", "f32"};
+    nl_field *f = nl_field_alloc(2, n, h, NULL), *g;
+    nl_meta m = {0}, mr;
+    for (size_t i = 0; i < f->count; i++)
+        f->data[i] = sin(0.7 * (double)i) * 3.1;
+    cr_assert_eq(nl_meta_set_origin(&m, 2, h, o), NL_OK);
+    for (int e = 0; e < 2; e++) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/raw.%s", scratch_dir(), ext[e]);
+        cr_assert_eq(nl_field_write(path, f, &m, NULL), NL_OK, "%s", nl_errmsg());
+        cr_assert_eq(nl_field_read(path, &g, &mr), NL_OK, "%s: %s", ext[e], nl_errmsg());
+        cr_assert(g->dim == 2 && g->n[0] == 7 && g->n[1] == 3, "%s: %dD %zu x %zu", ext[e], g->dim, g->n[0], g->n[1]);
+        cr_expect(g->h[0] == h[0] && g->h[1] == h[1], "%s: spacing %g %g", ext[e], g->h[0], g->h[1]);
+        cr_assert_eq(nl_meta_origin(&mr, 2, g->n, g->h, got), NL_OK);
+        for (int a = 0; a < 2; a++)
+            cr_expect(fabs(got[a] - o[a]) <= 4e-16 * fabs(o[a]), "%s: origin %d %.17g", ext[e], a, got[a]);
+        for (size_t i = 0; i < f->count; i++)
+            cr_expect(fabs(g->data[i] - f->data[i]) <= (e ? 0x1p-24 * 3.1 : 6.2 / 131070 * 1.000001), "%s: %zu", ext[e],
+                      i);
+        nl_field_free(g);
+    }
     nl_field_free(f);
 }

@@ -44,12 +44,13 @@ static int f32_read(const char *path, const unsigned char *buf, size_t len, cons
     double h[3], origin[3];
     size_t n[3];
     nl_field *f;
-    int dim, st, side;
+    int dim, st, side, sdim;
     *out = NULL;
     if (len % 4)
         return NL_ERROR(NL_EINPUT, "%s: %zu bytes; a float32 raw file holds a multiple of 4", path, len);
     if ((st = nl_raw_sidecar_read(path, "f32", len / 4, &r, h, origin, &side)))
         return st;
+    sdim = r.dim;
     if (o && o->dim) /* what the caller says wins */
         r.dim = o->dim, memcpy(r.n, o->n, sizeof r.n);
     if ((st = nl_format_raw_size(path, len / 4, &r, &dim, n)))
@@ -63,7 +64,7 @@ static int f32_read(const char *path, const unsigned char *buf, size_t len, cons
         memcpy(&x, &u, 4);
         f->data[i] = x;
     }
-    if (side && (!o || !o->dim) && (st = nl_raw_sidecar_apply(f, meta, h, origin))) {
+    if (side && dim == sdim && (st = nl_raw_sidecar_apply(f, meta, h, origin))) {
         nl_field_free(f);
         return st;
     }

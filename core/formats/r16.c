@@ -47,7 +47,7 @@ static int r16_read(const char *path, const unsigned char *buf, size_t len, cons
     double lo = 0, hi = 1, h[3], origin[3];
     size_t n[3];
     nl_field *f;
-    int dim, st, side;
+    int dim, st, side, sdim;
     *out = NULL;
     if (len % 2)
         return NL_ERROR(NL_EINPUT, "%s: %zu bytes; a 16-bit raw file holds an even count", path, len);
@@ -55,6 +55,7 @@ static int r16_read(const char *path, const unsigned char *buf, size_t len, cons
         return st;
     if (side)
         lo = r.lo, hi = r.hi;
+    sdim = r.dim;
     if (o && o->dim) /* what the caller says wins */
         r.dim = o->dim, memcpy(r.n, o->n, sizeof r.n);
     if (o && o->lo < o->hi)
@@ -65,7 +66,7 @@ static int r16_read(const char *path, const unsigned char *buf, size_t len, cons
         return st;
     for (size_t i = 0; i < f->count; i++)
         f->data[i] = lo + (hi - lo) * (buf[2 * i] | buf[2 * i + 1] << 8) / 65535.0;
-    if (side && (!o || !o->dim) && (st = nl_raw_sidecar_apply(f, meta, h, origin))) {
+    if (side && dim == sdim && (st = nl_raw_sidecar_apply(f, meta, h, origin))) {
         nl_field_free(f);
         return st;
     }
