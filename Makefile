@@ -10,7 +10,7 @@ CC        ?= gcc
 OPT       ?= -O2 -g
 CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
              -I/usr/include/OpenEXR
-LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lmuparser -lm
+LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lzip -lmuparser -lm
 BUILD     := build
 
 LIB_SRC   := $(wildcard core/*.c core/families/*.c core/formats/*.c synth/*.c analysis/*.c render/*.c)

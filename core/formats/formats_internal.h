@@ -18,6 +18,18 @@ uint32_t nl_format_code(double v, double lo, double hi, uint32_t top);
  * naming path otherwise. */
 int nl_format_raw_size(const char *path, size_t count, const nl_read_options *o, int *dim, size_t *n);
 
+/* nl_field_write's checks of f against t with o (its precision set to
+ * the one written), for writers reached another way (nl_npz_write). */
+int nl_format_check(const nl_format *t, const nl_field *f, nl_write_options *o);
+
+/* .npy pieces (npy.c) for .npz (npz.c): the version 1.0 header of f with
+ * samples of size bytes (4 or 8) into head (256 bytes), its length
+ * returned; samples i0 .. i0 + k - 1 of f, little-endian, into buf; and a
+ * field from the .npy bytes buf (path names it in messages). */
+size_t nl_npy_header(const nl_field *f, size_t size, char *head);
+void nl_npy_samples(const nl_field *f, size_t size, size_t i0, size_t k, unsigned char *buf);
+int nl_npy_decode(const char *path, const unsigned char *buf, size_t len, nl_field **out);
+
 /* The JSON sidecar of a headerless raw file (.r16, .raw, .f32), written
  * beside it (core/formats/raw_sidecar.c):
  *   {"format": "r16", "size": [nx, ny], "byte_order": "little",
