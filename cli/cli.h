@@ -186,6 +186,8 @@ typedef struct {
     double h[3];
     size_t s0, ns;
     double *data;
+    double origin[3]; /* this slab's first sample, x first, in length units: the field's
+                         origin (nl_meta_origin) plus s0 h on the slowest axis */
 } cli_slab;
 
 /* The HDF5 and MPI parts of the command line (cli/h5_*.c, mpi/), present in
