@@ -198,3 +198,17 @@ Test(extent, raw_round_trip_through_the_sidecar)
     }
     nl_field_free(f);
 }
+
+/* variogram of a field: lags in the file's spacing, wherever it is kept
+ * (the EXR's attribute, the .f32's sidecar): the same table. */
+Test(extent, variogram_takes_the_spacing_from_the_file)
+{
+    char out[8192], out2[8192], err[1024];
+    cr_assert_eq(run_noiselab("synth subdiv --acf markov:scale=2 --size 24x24 --nonperiodic --spacing 0.25 --seed 3 "
+                              "-o v.exr", out, sizeof out, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(run_noiselab("synth subdiv --acf markov:scale=2 --size 24x24 --nonperiodic --spacing 0.25 --seed 3 "
+                              "-o v.f32", out, sizeof out, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(run_noiselab("variogram v.exr", out, sizeof out, err, sizeof err), 0, "%s", err);
+    cr_assert_eq(run_noiselab("variogram v.f32", out2, sizeof out2, err, sizeof err), 0, "%s", err);
+    cr_expect_str_eq(out2, out);
+}
