@@ -10,7 +10,13 @@ CC        ?= gcc
 OPT       ?= -O2 -g
 CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
              -I/usr/include/OpenEXR
-LDLIBS    := -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lzip -lmuparser -lm
+LDLIBS    = -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lzip -lmuparser -lm $(GDAL_LIBS)
+# GDAL (GeoTIFF, COG, NetCDF: core/formats/gdal_io.c) when pkg-config finds
+# it; NL_GDAL=0 builds without, the formats then listed as off.  Recursive
+# (=): pkg-config runs once the packages are installed.
+NL_GDAL   ?= $(shell pkg-config --exists gdal && echo 1 || echo 0)
+GDAL_LIBS  = $(if $(filter 1,$(NL_GDAL)),$(shell pkg-config --libs gdal))
+GDAL_OBJ   = $(patsubst %.c,$(BUILD)/%.o,core/formats/gdal_io.c core/formats/geotiff.c core/formats/netcdf.c)
 BUILD     := build
 
 LIB_SRC   := $(wildcard core/*.c core/families/*.c core/formats/*.c synth/*.c analysis/*.c render/*.c)
@@ -68,7 +74,7 @@ MPI_HDR   := $(filter-out %_internal.h,$(wildcard mpi/*.h))
 PYTHON    ?= /usr/bin/python3
 PYDIR     ?= $(if $(filter /usr,$(PREFIX)),/usr/lib/python3/dist-packages,$(PREFIX)/lib/python$(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)/dist-packages)
 
-.PHONY: all deps wisdom test test-api figures experiments bench asan fuzz clean install uninstall FORCE
+.PHONY: all deps wisdom gdal-off-check test test-api figures experiments bench asan fuzz clean install uninstall FORCE
 .SECONDARY:
 all: $(BIN) $(MPIBIN) $(LIB) $(SOLIB) $(MPISOLIB) $(MAN) $(PC)
 
@@ -94,6 +100,19 @@ $(BUILD)/synth/subdiv_simd%.o: CFLAGS += -ffp-contract=off
 # Where the planner finds the measured FFTW wisdom that install puts there.
 $(BUILD)/core/fftw_plan.o: CFLAGS += -DNL_WISDOM_FILE='"$(DATADIR)/noiselab/fftw-wisdom"'
 $(BUILD)/core/fftw_plan.o: $(BUILD)/install-dirs
+# The GDAL objects are remade when NL_GDAL changes.
+$(GDAL_OBJ): CFLAGS += $(if $(filter 1,$(NL_GDAL)),-DNL_HAVE_GDAL $(shell pkg-config --cflags gdal))
+$(GDAL_OBJ): $(BUILD)/gdal-config
+$(BUILD)/gdal-config: FORCE | $(DEPS_OK)
+	@mkdir -p $(BUILD) && echo 'NL_GDAL=$(NL_GDAL)' | cmp -s - $@ || echo 'NL_GDAL=$(NL_GDAL)' > $@
+
+# The descriptors compile without GDAL too (as "off"): a check of the
+# sources alone, not a rebuild.
+gdal-off-check:
+	@for f in core/formats/gdal_io.c core/formats/geotiff.c core/formats/netcdf.c; do \
+	    $(CC) -std=c11 -D_GNU_SOURCE -Wall -Wextra -Werror -UNL_HAVE_GDAL -fsyntax-only $$f || exit 1; done
+	@echo "gdal-off-check: the GDAL formats compile without GDAL"
+
 $(BUILD)/install-dirs: FORCE
 	@mkdir -p $(BUILD) && echo '$(INSTALL_DIRS)' | cmp -s - $@ || echo '$(INSTALL_DIRS)' > $@
 
@@ -178,7 +197,7 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # test-api checks the installed headers and the libraries' exports.
 # Then tools/test-install.sh installs into a scratch DESTDIR and builds the
 # examples and the README's example against it with pkg-config alone.
-test: all test-api $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
+test: all test-api gdal-off-check $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP_BIN) $(MPITEST_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2 --filter '!(*_slow)/*'
 	LIMIT=$(if $(findstring sanitize,$(OPT)),60,5) NOISELAB_FFTW=estimate sh tests/check/run.sh $(BIN)
 	MPI_NPS="2 3" NOISELAB_FFTW=estimate NOISELAB_SANITIZED=$(if $(findstring sanitize,$(OPT)),1,) sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi

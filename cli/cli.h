@@ -244,6 +244,11 @@ extern const char *cli_field_format;
 extern double cli_field_range[2];
 void cli_opt_format(void *obj, const char *label, const char *arg);
 void cli_opt_range(void *obj, const char *label, const char *arg);
+/* --crs CRS (cli_field_crs: NULL, none given): a CRS GDAL knows, recorded in
+ * the output's nl_meta.crs; exit 2 for another.  --cog: format cog. */
+extern const char *cli_field_crs;
+void cli_opt_crs(void *obj, const char *label, const char *arg);
+void cli_opt_cog(void *obj, const char *label, const char *arg);
 /* The format path is written in (--format, else its extension); exit 2
  * naming label (e.g. "-o") and listing the registry when there is none,
  * when it does not hold dim-D fields (dim 0: not checked yet), when

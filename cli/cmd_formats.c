@@ -10,8 +10,10 @@ static const char help[] =
     "Lists the formats a field is written in (-o, chosen by the extension or by\n"
     "--format NAME) and read from (by content where the format has a signature,\n"
     "else by extension, else TSV): name, extensions, dimensions, value types and\n"
-    "the metadata each carries.  Integer formats (png16, r16) map a value range,\n"
-    "by default the field's min..max or --range LO:HI, linearly onto their codes.\n";
+    "the metadata each carries; formats this build lacks (GeoTIFF, COG and NetCDF\n"
+    "without GDAL) are listed with \"off\" and why.  Integer formats (png16, r16)\n"
+    "map a value range, by default the field's min..max or --range LO:HI, linearly\n"
+    "onto their codes.  --crs EPSG:N georeferences .tif, .nc and --cog outputs.\n";
 
 typedef struct {
     int json; /* --json */
@@ -81,6 +83,7 @@ int cli_cmd_formats(int argc, char **argv)
         json_object_set_new(o, "values", word_array(t));
         json_object_set_new(o, "metadata", word_array(m));
         json_object_set_new(o, "external", json_boolean(f->flags & NL_FORMAT_EXTERNAL));
+        json_object_set_new(o, "off", json_boolean(f->flags & NL_FORMAT_OFF));
         json_object_set_new(o, "summary", json_string(f->summary));
         json_array_append_new(all, o);
     }

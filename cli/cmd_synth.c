@@ -269,7 +269,8 @@ static const struct option *options_table(void)
         {"ensemble-variance", required_argument, 0, 'J'}, {"nmax", required_argument, 0, 'q'},
         {"precision", required_argument, 0, 'G'}, {"at", required_argument, 0, 'T'},
         {"grid-out", required_argument, 0, 'W'},  {"format", required_argument, 0, 'X'},
-        {"range", required_argument, 0, 'R'}};
+        {"range", required_argument, 0, 'R'},     {"crs", required_argument, 0, 'E'},
+        {"cog", no_argument, 0, 'U'}};
     static struct option opts[sizeof common / sizeof *common + CLI_MAX_MOPTS + 1];
     size_t n = sizeof common / sizeof *common;
     collect_mopts();
@@ -286,7 +287,7 @@ static const struct option *options_table(void)
  * checked against the record by apply_from. */
 static int with_from(int c)
 {
-    return c == 'o' || c == 'p' || c == 'j' || c == 'F' || c == 'G' || c == 'X' || c == 'R' || c == 'h' ||
+    return c == 'o' || c == 'p' || c == 'j' || c == 'F' || c == 'G' || c == 'X' || c == 'R' || c == 'E' || c == 'U' || c == 'h' ||
            c == 'a' || c == 'S' ||
            (c >= CLI_MOPT && c < CLI_MOPT + nmopts && (mopts[c - CLI_MOPT].row->flags & NL_METHOD_FILE));
 }
@@ -336,6 +337,8 @@ static int parse_options(int argc, char **argv, cli_synth_job *job, cli_synth_ar
         case 'G': g->precision = optarg; break;
         case 'X': cli_opt_format(NULL, "--format", optarg); break;
         case 'R': cli_opt_range(NULL, "--range", optarg); break;
+        case 'E': cli_opt_crs(NULL, "--crs", optarg); break;
+        case 'U': cli_opt_cog(NULL, "--cog", NULL); break;
         case 'Y': case 'Z': case 'k': case 'M': case 'Q': case 'g': case 'J': case 'q': case 'T': case 'W':
             cli_synth_cond_option(&g->cond, c, optarg); break;
         case 'h': cli_synth_print_help(); return 1;

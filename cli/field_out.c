@@ -10,6 +10,7 @@
 #include <string.h>
 
 const char *cli_field_format;
+const char *cli_field_crs;
 int cli_field_single;
 double cli_field_range[2];
 
@@ -38,6 +39,27 @@ void cli_opt_range(void *obj, const char *label, const char *arg)
     cli_field_range[0] = lo, cli_field_range[1] = hi;
 }
 
+void cli_opt_crs(void *obj, const char *label, const char *arg)
+{
+    const nl_format *tif = nl_format_find("geotiff");
+    (void)obj;
+    if (tif && (tif->flags & NL_FORMAT_OFF))
+        cli_die(2, "%s: no format of this build carries a CRS (%s), got \"%s\"", label, tif->summary,
+                arg ? arg : "");
+    if (!arg || nl_format_crs_check(arg))
+        cli_die(2, "%s: expected a coordinate reference system GDAL knows, e.g. EPSG:28992, got \"%s\"", label,
+                arg ? arg : "");
+    cli_field_crs = arg;
+}
+
+void cli_opt_cog(void *obj, const char *label, const char *arg)
+{
+    (void)obj;
+    if (arg)
+        cli_die(2, "%s: takes no value, got \"%s\"", label, arg);
+    cli_opt_format(NULL, "--format", "cog");
+}
+
 const nl_format *cli_field_out_check(const char *label, const char *path, int dim)
 {
     const nl_format *t = cli_field_format ? nl_format_find(cli_field_format) : nl_format_for_path(path);
@@ -51,9 +73,14 @@ const nl_format *cli_field_out_check(const char *label, const char *path, int di
                 label, t->name, dim, path);
     if (cli_h5_double && !(t->types & NL_FORMAT_F64))
         cli_die(2, "--precision double: format %s stores no float64; expected %s", t->name,
-                "an .h5 or .npy output");
+                "an .h5 or .npy output (or .tif, .nc)");
     if (cli_field_range[0] < cli_field_range[1] && (t->types & (NL_FORMAT_F32 | NL_FORMAT_F64)))
         cli_die(2, "--range: format %s stores floats, not codes of a range; expected png16 or r16", t->name);
+    if (cli_field_crs && !(t->meta & NL_FORMAT_META_CRS))
+        cli_die(2, "--crs: format %s carries no CRS; expected a .tif, .nc or --format cog output, got \"%s\"",
+                t->name, path);
+    if (t->flags & NL_FORMAT_OFF)
+        cli_die(2, "%s: format %s: %s", label, t->name, t->summary);
     return t;
 }
 
@@ -96,6 +123,12 @@ void cli_write_field(const char *path, const char *tmp, const nl_field *f, const
         cli_write_xdmf(path, f->dim, f->n, f->h, meta);
         return;
     }
+    nl_meta m = {0};
+    if (meta)
+        m = *meta;
+    if (cli_field_crs)
+        snprintf(m.crs, sizeof m.crs, "%s", cli_field_crs);
+    meta = &m;
     int prec = cli_h5_double ? 64 : cli_field_single && (t->types & NL_FORMAT_F32) ? 32 : 0;
     char side[4096];
     nl_write_options o = {.format = t->name, .precision = prec, .lo = cli_field_range[0], .hi = cli_field_range[1]};

@@ -91,10 +91,12 @@ void cli_opt_need(const char *cmd, const cli_opt *rows, const void *obj);
 
 /* Rows many commands share: one definition each (T the options struct, F the field). */
 #define CLI_OPT_OUTPUT(T, F, ...) CLI_STRING("output", T, F, .letter = 'o', .label = "-o", __VA_ARGS__)
-/* --format NAME and --range LO:HI of a field output (cli_field_format, cli/field_out.c) */
+/* --format NAME, --range LO:HI, --crs CRS and --cog of a field output (cli_field_format, cli/field_out.c) */
 #define CLI_OPT_FORMAT                                                                                            \
     CLI_CALL("format", cli_opt_format, .what = "a format (noiselab formats)"),                                    \
-        CLI_CALL("range", cli_opt_range, .what = "LO:HI")
+        CLI_CALL("range", cli_opt_range, .what = "LO:HI"),                                                         \
+        CLI_CALL("crs", cli_opt_crs, .what = "a CRS, EPSG:N (geotiff, cog, netcdf)"),                            \
+        CLI_CALL("cog", cli_opt_cog, .what = "no value (format cog)", .flags = CLI_OPTIONAL)
 #define CLI_OPT_JSON(T, F) {.name = "json", .type = CLI_OPT_FLAG, CLI_AT(T, F)}
 /* --seed S, and G set when given */
 #define CLI_OPT_SEED(T, F, G) {.name = "seed", .type = CLI_OPT_U64, CLI_AT(T, F), CLI_GIVEN(T, G)}

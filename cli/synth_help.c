@@ -60,6 +60,8 @@ static const char help_condition[] =
     "                   (and, in float32, within its range)\n"
     "  --format NAME    write -o in format NAME whatever its extension\n"
     "  --range LO:HI    16-bit outputs (png16, r16): the values mapped to 0 and 65535\n"
+    "  --crs CRS        georeferenced outputs (.tif, .nc, --cog): the CRS, e.g. EPSG:28992\n"
+    "  --cog            write -o as a cloud-optimised GeoTIFF (format cog)\n"
     "                   (default: the field's min and max)\n"
     "  --precision single|double  .h5 and .npy outputs: float32 or float64 (.h5 default\n"
     "                   float32, .npy float64)\n";

@@ -91,6 +91,8 @@ static int check_write(const nl_format *t, const nl_field *f, const nl_write_opt
     int integer = !(t->types & (NL_FORMAT_F32 | NL_FORMAT_F64));
     if (t->flags & NL_FORMAT_EXTERNAL)
         return NL_ERROR(NL_EINVAL, "format %s: read and written by libnoiselab_mpi (mpi/h5.h), not here", t->name);
+    if (t->flags & NL_FORMAT_OFF)
+        return NL_ERROR(NL_EINVAL, "format %s: %s", t->name, t->summary);
     if (f->dim < 1 || f->dim > 3 || !(t->dims & (1u << f->dim)))
         return NL_ERROR(NL_EINVAL, "format %s: does not hold %dD fields (it holds %s)", t->name, f->dim,
                         t->dims == 4 ? "2D fields" : t->dims == 14 ? "1D, 2D and 3D fields" : "1D fields");

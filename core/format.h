@@ -16,9 +16,9 @@
  * nl_field_write / nl_field_read refuse it with NL_EINVAL naming
  * libnoiselab_mpi; callers that load that library (cli/ through cli_h5,
  * Python through h5lib) test the flag and call nl_mpi_h5_* themselves,
- * then nl_xdmf_write for the sidecar.  Georeferenced formats (GeoTIFF,
- * NetCDF through GDAL or netCDF) are meant to come the same way, with the
- * NL_FORMAT_META_CRS / _NODATA bits.
+ * then nl_xdmf_write for the sidecar.  The georeferenced formats (GeoTIFF,
+ * COG, NetCDF-CF) go through GDAL (core/formats/gdal_io.h) when it was found
+ * at build time, else their descriptors carry NL_FORMAT_OFF.
  *
  * Samples are x fastest (core/field.h), row j = 0 first: in the image
  * formats that row is the image's top.  Descriptors are constant and live
@@ -50,16 +50,18 @@ enum {
     NL_FORMAT_META_SPACING = 1 << 1,    /* the grid spacing (else read as 1) */
     NL_FORMAT_META_ORIGIN = 1 << 2,     /* a window's first sample (nl_meta.origin) */
     NL_FORMAT_META_RANGE = 1 << 3,      /* the value range of integer samples, to map back */
-    NL_FORMAT_META_CRS = 1 << 4,        /* a coordinate reference system (none yet) */
-    NL_FORMAT_META_NODATA = 1 << 5      /* a missing-value marker (none yet) */
+    NL_FORMAT_META_CRS = 1 << 4,        /* a coordinate reference system (nl_meta.crs) */
+    NL_FORMAT_META_NODATA = 1 << 5      /* a missing-value marker: NaN samples declared missing */
 };
 
 /* Descriptor flags. */
 enum {
     NL_FORMAT_EXTERNAL = 1 << 0, /* read and written by libnoiselab_mpi (mpi/h5.h): read, write NULL */
     NL_FORMAT_FALLBACK = 1 << 1, /* what nl_field_read takes a file that nothing else claims for */
-    NL_FORMAT_SIZED = 1 << 2     /* no header: reading needs the size (nl_read_options.n), or
+    NL_FORMAT_SIZED = 1 << 2,    /* no header: reading needs the size (nl_read_options.n), or
                                     takes a square 2D field when the length is one */
+    NL_FORMAT_OFF = 1 << 3       /* not built in (e.g. no GDAL at build time): read and write
+                                    NULL, the summary says why; nl_field_write / _read refuse it */
 };
 
 /* How a field is written (NULL: all defaults). */
@@ -153,6 +155,12 @@ int nl_npz_write(const char *path, const nl_field *field, const nl_field *varian
  * headerless one (NL_FORMAT_SIZED) takes its size and value range from o.
  * NL_EINVAL for an unknown name or an NL_FORMAT_EXTERNAL format. */
 int nl_field_read_opts(const char *path, const nl_read_options *o, nl_field **out, nl_meta *meta);
+
+/* NL_OK when crs is a coordinate reference system GDAL knows ("EPSG:N",
+ * WKT or PROJ text), as nl_meta.crs takes it for the georeferenced formats;
+ * NL_EINVAL with a message naming it otherwise, and always in a build
+ * without GDAL. */
+int nl_format_crs_check(const char *crs);
 
 /* Write the XDMF 3 sidecar xmf_path describing the dataset /field of the
  * HDF5 file h5_name (as the sidecar refers to it: a name relative to the

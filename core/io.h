@@ -44,6 +44,11 @@ typedef struct {
     char version[32];   /* noiselab.version */
     char flags[256];    /* noiselab.flags: comma-separated detector flags */
     char origin[64];    /* noiselab.origin: where sample 0 sits, "X[,Y[,Z]]" in samples (nl_meta_origin) */
+    /* Georeferencing, carried by the GDAL formats (geotiff, cog, netcdf)
+     * alone; the others neither write nor read it. */
+    char crs[1024];     /* coordinate reference system: "EPSG:N", or WKT; "": none */
+    char extent[192];   /* the grid's outer extent in CRS units, cell edges,
+                           "x0:x1,y0:y1" (%.17g), y0 the south edge; "": none */
 } nl_meta;
 
 /* Write `f` as EXR with the attributes of `meta` (may be NULL).  Samples

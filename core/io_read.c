@@ -222,6 +222,8 @@ static int read_as(const nl_format *t, const char *path, int fd, const unsigned 
     int st;
     if (t->flags & NL_FORMAT_EXTERNAL)
         return NL_ERROR(NL_EINVAL, "%s: format %s is read by libnoiselab_mpi (mpi/h5.h), not here", path, t->name);
+    if (t->flags & NL_FORMAT_OFF)
+        return NL_ERROR(NL_EINVAL, "%s: format %s: %s", path, t->name, t->summary);
     if (t->read_stream)
         return stream_fd(t, path, fd, head, n, out, meta);
     if ((st = slurp_fd(fd, path, head, n, &buf, &len)))

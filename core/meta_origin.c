@@ -1,6 +1,7 @@
 /* The grid's place in a field's record: nl_meta_origin and
  * nl_meta_set_origin (core/provenance.h).  One representation,
- * noiselab.origin in samples, with the older "extent=" of maps still read. */
+ * noiselab.origin in samples, with the older "extent=" of maps and the
+ * extent of georeferenced files (nl_meta.extent) still read. */
 #include "provenance.h"
 #include "nl_error.h"
 
@@ -9,19 +10,19 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The cell centres of "extent=a:b[,c:d[,e:f]]" in a method string. */
-static int legacy_extent(const char *method, int dim, const size_t *n, double *h, double *origin)
+/* The cell centres of an extent "a:b[,c:d[,e:f]]" of cell edges. */
+static int legacy_extent(const char *e, int dim, const size_t *n, double *h, double *origin)
 {
-    const char *e = strstr(method, "extent=") + 7, *s = e;
+    const char *s = e;
     for (int d = 0; d < dim; d++) {
         char *end;
         const char *b;
         double lo = strtod(s, &end), hi;
         if (end == s || *end != ':' || !isfinite(lo))
-            return NL_ERROR(NL_EINPUT, "noiselab.method: extent \"%.60s\": expected a:b per axis", e);
+            return NL_ERROR(NL_EINPUT, "extent \"%.60s\": expected a:b per axis", e);
         hi = strtod(b = end + 1, &end);
         if (end == b || !(hi > lo) || !isfinite(hi - lo))
-            return NL_ERROR(NL_EINPUT, "noiselab.method: extent \"%.60s\": expected a:b per axis with a < b", e);
+            return NL_ERROR(NL_EINPUT, "extent \"%.60s\": expected a:b per axis with a < b", e);
         h[d] = (hi - lo) / (double)n[d];
         origin[d] = lo + 0.5 * h[d];
         s = end + (*end == ',');
@@ -38,8 +39,10 @@ int nl_meta_origin(const nl_meta *m, int dim, const size_t *n, double *h, double
         origin[d] = 0;
     if (!m)
         return NL_OK;
+    if (!m->origin[0] && m->extent[0]) /* a georeferenced file's (GDAL formats) */
+        return legacy_extent(m->extent, dim < 2 ? dim : 2, n, h, origin);
     if (!m->origin[0] && strstr(m->method, "extent="))
-        return legacy_extent(m->method, dim, n, h, origin);
+        return legacy_extent(strstr(m->method, "extent=") + 7, dim, n, h, origin);
     memcpy(only.origin, m->origin, sizeof only.origin);
     if ((st = nl_provenance_parse(&only, NL_PROV_ORIGIN, &p)))
         return st;

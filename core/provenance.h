@@ -106,8 +106,9 @@ int nl_provenance_parse(const nl_meta *kv, unsigned keys, nl_provenance *p);
  * it does not give: 0).  Files written before maps made on an extent
  * recorded it (krige, synth --condition) say "extent=a:b,..." in
  * noiselab.method instead: their samples are the cell centres, h[a] =
- * (b - a) / n[a] (written back to h) and origin[a] = a + h[a] / 2.  Neither
- * recorded: 0.  NL_OK, or NL_EINPUT with one line quoting a malformed
+ * (b - a) / n[a] (written back to h) and origin[a] = a + h[a] / 2; so
+ * do georeferenced files without noiselab.origin, whose m->extent holds
+ * the cell edges "x0:x1,y0:y1" (the GDAL formats).  None recorded: 0.  NL_OK, or NL_EINPUT with one line quoting a malformed
  * value. */
 int nl_meta_origin(const nl_meta *m, int dim, const size_t *n, double *h, double *origin);
 

@@ -35,6 +35,8 @@ typedef struct {
     char version[32];
     char flags[256];
     char origin[64];
+    char crs[1024];
+    char extent[192];
 } nl_meta;
 int nl_exr_write(const char *path, const nl_field *f, const nl_meta *meta);
 int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta, const char *coord,
@@ -77,6 +79,7 @@ const nl_format *nl_format_find(const char *name);
 int nl_format_resolve(const char *path, const char *format, const nl_format **out);
 int nl_field_write(const char *path, const nl_field *f, const nl_meta *meta, const nl_write_options *o);
 int nl_field_read_opts(const char *path, const nl_read_options *o, nl_field **out, nl_meta *meta);
+int nl_format_crs_check(const char *crs);
 int nl_xdmf_write(const char *xmf_path, const char *h5_name, int dim, const size_t *n, const double *h,
                   const double *origin, int dbl);
 

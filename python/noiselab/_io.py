@@ -21,8 +21,10 @@ def formats():
     registry (core/format.h): a list of dicts with name (as format= takes
     it), extensions (those that select it), dims (the dimensions it holds),
     values (float32, float64, uint16), metadata (provenance, spacing,
-    origin, range: what it records; [] for none), external (True: read and
-    written through libnoiselab_mpi, HDF5) and summary."""
+    origin, range, crs, nodata: what it records; [] for none), external
+    (True: read and written through libnoiselab_mpi, HDF5), off (True: not
+    in this build, e.g. GeoTIFF and NetCDF without GDAL; the summary says
+    why) and summary."""
     out = []
     for i in range(lib.nl_format_count()):
         f = lib.nl_format_get(i)
@@ -30,7 +32,7 @@ def formats():
                         dims=[d for d in (1, 2, 3) if f.dims & (1 << d)],
                         values=[t for k, t in enumerate(_TYPES) if f.types & (1 << k)],
                         metadata=[m for k, m in enumerate(_METAS) if f.meta & (1 << k)],
-                        external=bool(f.flags & 1), summary=ffi.string(f.summary).decode()))
+                        external=bool(f.flags & 1), off=bool(f.flags & 8), summary=ffi.string(f.summary).decode()))
     return out
 
 
@@ -58,7 +60,8 @@ def _range(what, value):
 
 def read(path, meta=False, format=None, size=None, range=None):
     """Read a field with the library's reader (nl_field_read, core/format.h):
-    by content where the format has a signature (EXR, PNG, .npy, HDF5), else
+    by content where the format has a signature (EXR, PNG, .npy, HDF5,
+    TIFF, netCDF), else
     by extension (.r16/.raw, .f32), else a 1D TSV table -- every format of
     the registry (formats()), so the formats it gains later are read here
     unchanged.
@@ -75,7 +78,9 @@ def read(path, meta=False, format=None, size=None, range=None):
     samples are float32 widened exactly.  With meta=True returns (array,
     dict): the provenance (model, method, seed, spacing, size, version,
     flags, origin: the strings recorded; the spacing "hx[,hy[,hz]]" lists x
-    first) plus "spacing_array": the spacing in the array's axis order.
+    first) plus "spacing_array": the spacing in the array's axis order, and
+    "crs" and "extent" (GeoTIFF, NetCDF: "EPSG:N" or WKT, and the cells'
+    outer edges "x0:x1,y0:y1"; array row 0 is the south; "" when none).
     """
     p, b = as_path("read: path", path)
     meta = as_bool("read: meta", meta)
@@ -109,10 +114,13 @@ def read(path, meta=False, format=None, size=None, range=None):
         return arr
     d = {k: ffi.string(getattr(m, k)).decode("utf-8", "replace") for k in META_KEYS}
     d["spacing_array"] = spacing
+    for k in _GEO_KEYS:  # georeferencing: GeoTIFF and NetCDF (core/formats/gdal_io.h)
+        d[k] = ffi.string(getattr(m, k)).decode("utf-8", "replace")
     return arr, d
 
 
 range_ = range  # read() and write() take a keyword named range
+_GEO_KEYS = ("crs", "extent")
 
 
 def _auto_provenance(f):
@@ -151,9 +159,12 @@ def write(path, array, spacing=1.0, precision=None, format=None, range=None, **p
                 flags, origin, version (default: this library's); size and
                 spacing are recorded from the array and `spacing`.  E.g.
                 ``write(p, plan(seed), **plan.provenance(seed))`` writes the
-                file noiselab synth writes.
+                file noiselab synth writes.  The georeferenced formats
+                (geotiff, cog, netcdf) also take crs ("EPSG:N" or WKT) and
+                extent ("x0:x1,y0:y1", the cells' outer edges; array row 0
+                is the southernmost), and read() returns both.
     """
-    keys = ("model", "method", "seed", "flags", "origin", "version")
+    keys = ("model", "method", "seed", "flags", "origin", "version") + _GEO_KEYS
     bad = set(provenance) - set(keys)
     if bad:
         raise Error("write: unknown provenance key %s (expected %s; size and spacing come from the array and "
@@ -174,6 +185,13 @@ def write(path, array, spacing=1.0, precision=None, format=None, range=None, **p
         s = as_str("write: " + k, auto.get(k, "") if s is None else s, empty=True)
         if len(s) >= ffi.sizeof(getattr(m, k)):
             raise Error("write: %s: expected at most %d bytes, got %d" % (k, ffi.sizeof(getattr(m, k)) - 1, len(s)))
+        setattr(m, k, s)
+    for k in _GEO_KEYS:
+        s = as_str("write: " + k, provenance.get(k, ""), empty=True)
+        if len(s) >= ffi.sizeof(getattr(m, k)):
+            raise Error("write: %s: expected at most %d bytes, got %d" % (k, ffi.sizeof(getattr(m, k)) - 1, len(s)))
+        if k == "crs" and s:
+            check(lib.nl_format_crs_check(s))
         setattr(m, k, s)
     if t.flags & 1:  # NL_FORMAT_EXTERNAL: HDF5, through libnoiselab_mpi
         dbl = precision == "double"
