@@ -161,16 +161,16 @@ size_t kp_missing(const double *est, size_t count, const char *what)
     return miss;
 }
 
-/* A covariate field c that records where it lies (noiselab.origin, or the
- * extent of an older map) must lie on the grid of f, first cell centre at
- * lo + h / 2: the same first sample and spacing, to 1e-9 of a cell (the
- * records' %.17g round trip is far below that).  One recording nothing is
- * taken as the grid's, sample for cell. */
+/* A covariate field c that records where it lies (noiselab.origin, a
+ * georeferenced file's extent, or the extent of an older map) must lie on
+ * the grid of f, first cell centre at lo + h / 2: the same first sample and
+ * spacing, to 1e-9 of a cell (the records' %.17g round trip is far below
+ * that).  One recording nothing is taken as the grid's, sample for cell. */
 static void check_cov_grid(const char *path, const nl_field *c, const nl_meta *meta, const double *lo,
                            const nl_field *f)
 {
     double h[3] = {c->h[0], c->h[1], c->h[2]}, o[3];
-    if (!meta->origin[0] && !strstr(meta->method, "extent="))
+    if (!meta->origin[0] && !meta->extent[0] && !strstr(meta->method, "extent="))
         return;
     if (nl_meta_origin(meta, c->dim, c->n, h, o))
         cli_die(2, "--covariate: %s: %s", path, nl_errmsg());
