@@ -10,7 +10,7 @@ CC        ?= gcc
 OPT       ?= -O2 -g
 CFLAGS    += -std=c11 -D_GNU_SOURCE -Wall -Wextra -fopenmp $(OPT) -MMD -MP \
              -I/usr/include/OpenEXR
-LDLIBS    = -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lmuparser -lm $(GDAL_LIBS) $(VDB_LIBS)
+LDLIBS    = -lOpenEXRCore -lfftw3_omp -lfftw3 -lgsl -lopenblas -lpng -ljansson -lzip -lmuparser -lm $(GDAL_LIBS) $(VDB_LIBS)
 # GDAL (GeoTIFF, COG, NetCDF: core/formats/gdal_io.c) when pkg-config finds
 # it; NL_GDAL=0 builds without, the formats then listed as off.  Recursive
 # (=): pkg-config runs once the packages are installed.

@@ -186,6 +186,8 @@ typedef struct {
     double h[3];
     size_t s0, ns;
     double *data;
+    double origin[3]; /* this slab's first sample, x first, in length units: the field's
+                         origin (nl_meta_origin) plus s0 h on the slowest axis */
 } cli_slab;
 
 /* The HDF5 and MPI parts of the command line (cli/h5_*.c, mpi/), present in
@@ -259,9 +261,14 @@ int cli_field_is_float32(const char *path);
  * (minus .h5) beside it, committed with the run's outputs; exits on error. */
 void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta);
 /* The XDMF sidecar of the .h5 output path (PATH minus .h5, plus .xmf): a
- * dim-D grid of n samples at spacing h, first sample at meta->origin (in
- * samples), float64 when cli_h5_double; begun and committed as an output. */
+ * dim-D grid of n samples at spacing h, first sample where meta says
+ * (nl_meta_origin), float64 when cli_h5_double; begun and committed as an output. */
 void cli_write_xdmf(const char *path, int dim, const size_t *n, const double *h, const nl_meta *meta);
+
+/* Record in m the grid of a map made on an extent lo..hi (x first) of
+ * n cells per axis: spacing (hi - lo) / n, sample 0 at the first cell
+ * centre (nl_meta_set_origin); exits on error. */
+void cli_meta_extent(nl_meta *m, int dim, const double *lo, const double *hi, const size_t *n);
 
 /* nl_field_alloc, exiting on error. */
 nl_field *cli_field_alloc(int dim, const size_t *n, const double *h);

@@ -61,6 +61,7 @@ static const char help[] =
 typedef struct {
     const char *data, *spec, *grid, *ext, *out, *vout;  /* as given, or NULL */
     double mean, lo[3], hi[3];                          /* --mean (NAN: ordinary), --extent */
+    int npz;                                            /* -o is an .npz: the variance goes in it too */
     int strict, json, gdim;                             /* --strict, --json, grid dimension */
     int local, cv, drift;                               /* local/universal path, --cross-validate, --drift */
     size_t nmax;                                        /* --nmax (0: all) */
@@ -177,7 +178,7 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "--mean: expected no --drift with a known mean, got --mean %g", a->mean);
     a->gdim = cli_parse_size("--grid", a->grid, a->g, 1);
     parse_extent(a);
-    cli_field_out_check("-o", a->out, a->gdim);
+    a->npz = strcmp(cli_field_out_check("-o", a->out, a->gdim)->name, "npz") == 0;
     if (a->vout)
         cli_field_out_check("--variance", a->vout, a->gdim);
     if (a->vout && strcmp(a->vout, a->out) == 0)
@@ -238,10 +239,13 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
                 "shorter numbers", a->ext, len);
     if (info->pseudo_inverse)
         snprintf(meta.flags, sizeof meta.flags, "singular,pseudo-inverse");
+    cli_meta_extent(&meta, a->gdim, a->lo, a->hi, a->g);
     check_float("-o", a->out, f);
-    if (vf)
+    if (vf && a->vout)
         check_float("--variance", a->vout, vf);
-    if (strcmp(cli_field_out_check("-o", a->out, a->gdim)->name, "tsv"))
+    if (a->npz) /* the map and its variance, numpy.load's "field" and "variance" */
+        st = nl_npz_write(tmp, f, vf, cli_field_single ? 32 : 64);
+    else if (strcmp(cli_field_out_check("-o", a->out, a->gdim)->name, "tsv"))
         cli_write_field(a->out, tmp, f, &meta), st = NL_OK;
     else { /* 1D: the record as in EXR, and cell centres as x */
         double *xs = cli_malloc(a->g[0] * sizeof *xs);
@@ -251,7 +255,7 @@ static void write_outputs(const opts_t *a, const nl_field *f, const nl_field *vf
         free(xs);
     }
     cli_check(st);
-    if (vf)
+    if (vf && a->vout)
         cli_write_field(a->vout, vtmp, vf, &meta);
     cli_out_commit(a->out);
     cli_out_commit(a->vout);
@@ -352,14 +356,15 @@ static int cli_krige_local(opts_t *a)
     int st;
     for (int dd = 0; dd < 3; dd++)
         h[dd] = (a->hi[dd] - a->lo[dd]) / (double)a->g[dd];
-    if ((st = nl_size_check(a->gdim, a->g, sizeof(double), a->vout ? 2 : 1, NULL))) {
+    if ((st = nl_size_check(a->gdim, a->g, sizeof(double), a->vout || a->npz ? 2 : 1, NULL))) {
         char why[NL_ERRMSG_MAX];
         snprintf(why, sizeof why, "%s", nl_errmsg());
         cli_die(st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1, "--grid %s: %s", a->grid, why);
     }
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
-    nl_field *f = cli_field_alloc(a->gdim, a->g, h), *vf = a->vout ? cli_field_alloc(a->gdim, a->g, h) : NULL;
+    nl_field *f = cli_field_alloc(a->gdim, a->g, h);
+    nl_field *vf = a->vout || a->npz ? cli_field_alloc(a->gdim, a->g, h) : NULL;
     kp_grid(&a->pr, k, a->lo, f, vf);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
@@ -412,12 +417,12 @@ int cli_cmd_krige(int argc, char **argv)
     double h[3];
     for (int d = 0; d < 3; d++)
         h[d] = (a.hi[d] - a.lo[d]) / (double)a.g[d];
-    if ((st = nl_size_check(a.gdim, a.g, sizeof(double), a.vout ? 2 : 1, NULL))) {
+    if ((st = nl_size_check(a.gdim, a.g, sizeof(double), a.vout || a.npz ? 2 : 1, NULL))) {
         char why[NL_ERRMSG_MAX];
         snprintf(why, sizeof why, "%s", nl_errmsg());
         cli_die(st == NL_ETOOBIG || nl_error_is_input(st) ? 2 : 1, "--grid %s: %s", a.grid, why);
     }
-    nl_field *f = cli_field_alloc(a.gdim, a.g, h), *vf = a.vout ? cli_field_alloc(a.gdim, a.g, h) : NULL;
+    nl_field *f = cli_field_alloc(a.gdim, a.g, h), *vf = a.vout || a.npz ? cli_field_alloc(a.gdim, a.g, h) : NULL;
     cli_check(nl_krige_eval_grid(p, a.lo, f, vf));
     clock_gettime(CLOCK_MONOTONIC, &t1);
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);

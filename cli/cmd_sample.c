@@ -4,6 +4,7 @@
 #include "../core/field_sample.h"
 #include "../core/io_coords.h"
 #include "../core/nl_error.h"
+#include "../core/provenance.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -55,40 +56,12 @@ static void parse(int argc, char **argv, opts_t *a)
         cli_die(2, "-o: expected a file name ending in .tsv, got \"%s\"", a->out);
 }
 
-/* Coordinate of sample 0 per axis: the recorded origin (in samples) times
- * the spacing; for a map made on an extent, its first cell centre, the
- * spacing then being the extent's width over the samples (whatever spacing
- * the file records). */
+/* Coordinate of sample 0 per axis, as the file records it (nl_meta_origin:
+ * a window's origin, a map's first cell centre, whose spacing it may set). */
 static void first_sample(const opts_t *a, nl_field *f, const nl_meta *meta, double *x0)
 {
-    const char *p = meta->origin, *e = strstr(meta->method, "extent=");
-    for (int d = 0; d < 3; d++)
-        x0[d] = 0;
-    if (e) { /* made on an extent a:b (synth --condition and its ensemble maps, krige): cell centres */
-        e += 7;
-        for (int d = 0; d < f->dim; d++) {
-            char *end;
-            const char *b;
-            double lo = strtod(e, &end), hi;
-            if (end == e || *end != ':' || !isfinite(lo))
-                cli_die(2, "sample: %s records an extent \"%s\"; expected a:b per axis", a->field, e);
-            hi = strtod(b = end + 1, &end);
-            if (end == b || !(hi > lo) || !isfinite(hi - lo))
-                cli_die(2, "sample: %s records an extent \"%s\"; expected a:b per axis with a < b", a->field, e);
-            f->h[d] = (hi - lo) / (double)f->n[d];
-            x0[d] = lo + 0.5 * f->h[d];
-            e = end + (*end == ',');
-        }
-        return;
-    }
-    for (int d = 0; d < f->dim && *p; d++) {
-        char *end;
-        double o = strtod(p, &end);
-        if (end == p || !isfinite(o) || (*end && *end != ','))
-            cli_die(2, "sample: %s records an origin \"%s\"; expected X[,Y] in samples", a->field, meta->origin);
-        x0[d] = o * f->h[d];
-        p = *end ? end + 1 : end;
-    }
+    if (nl_meta_origin(meta, f->dim, f->n, f->h, x0))
+        cli_die(2, "sample: %s: %s", a->field, nl_errmsg());
 }
 
 /* The points: read (and matched to the field's dimension) or drawn. */

@@ -3,6 +3,7 @@
  * run, and the write itself (HDF5 through cli_h5, with its XDMF sidecar). */
 #include "cli.h"
 #include "../core/format.h"
+#include "../core/provenance.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -94,17 +95,22 @@ void cli_write_xdmf(const char *path, int dim, const size_t *n, const double *h,
 {
     char xmf[4096];
     const char *base = strrchr(path, '/');
-    long o[2] = {0, 0};
-    double origin[3] = {0, 0, 0};
+    double origin[3], hh[3] = {h[0], dim > 1 ? h[1] : 1, dim > 2 ? h[2] : 1};
     size_t k = strlen(path) - 3; /* the name without ".h5" */
     if (snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)k, path) >= (int)sizeof xmf)
         cli_die(2, "-o: path too long: \"%s\"", path);
-    int no = meta ? sscanf(meta->origin, "%ld,%ld", &o[0], &o[1]) : 0;
-    for (int a = 0; a < no && a < dim; a++)
-        origin[a] = (double)o[a] * h[a];
+    cli_check(nl_meta_origin(meta, dim, n, hh, origin));
     const char *tmp = cli_out_begin(xmf);
-    cli_check(nl_xdmf_write(tmp, base ? base + 1 : path, dim, n, h, origin, cli_h5_double));
+    cli_check(nl_xdmf_write(tmp, base ? base + 1 : path, dim, n, hh, origin, cli_h5_double));
     cli_out_commit(xmf);
+}
+
+void cli_meta_extent(nl_meta *m, int dim, const double *lo, const double *hi, const size_t *n)
+{
+    double h[3], origin[3];
+    for (int a = 0; a < dim; a++)
+        h[a] = (hi[a] - lo[a]) / (double)n[a], origin[a] = lo[a] + 0.5 * h[a];
+    cli_check(nl_meta_set_origin(m, dim, h, origin));
 }
 
 void cli_write_field(const char *path, const char *tmp, const nl_field *f, const nl_meta *meta)
@@ -124,6 +130,14 @@ void cli_write_field(const char *path, const char *tmp, const nl_field *f, const
         snprintf(m.crs, sizeof m.crs, "%s", cli_field_crs);
     meta = &m;
     int prec = cli_h5_double ? 64 : cli_field_single && (t->types & NL_FORMAT_F32) ? 32 : 0;
+    char side[4096];
     nl_write_options o = {.format = t->name, .precision = prec, .lo = cli_field_range[0], .hi = cli_field_range[1]};
+    if (t->flags & NL_FORMAT_SIZED) { /* the raw formats' JSON sidecar, an output of its own */
+        if (snprintf(side, sizeof side, "%s.json", path) >= (int)sizeof side)
+            cli_die(2, "-o: path too long: \"%s\"", path);
+        o.sidecar = cli_out_begin(side);
+    }
     cli_check(nl_field_write(tmp, f, meta, &o));
+    if (o.sidecar)
+        cli_out_commit(side);
 }

@@ -4,6 +4,7 @@
 #include "h5_analysis.h"
 #include "../core/mem.h"
 #include "../core/nl_error.h"
+#include "../core/provenance.h"
 #include "../mpi/analysis.h"
 #include "../mpi/dist.h"
 #include "../mpi/h5.h"
@@ -21,8 +22,12 @@ static nl_mpi_slab slab_of(const cli_slab *s)
 static int read_slab(const char *path, cli_slab *s)
 {
     nl_meta meta;
+    int st;
     s->data = NULL;
-    return nl_mpi_h5_read_slab(path, MPI_COMM_WORLD, &s->dim, s->n, s->h, &meta, &s->s0, &s->ns, &s->data);
+    st = nl_mpi_h5_read_slab(path, MPI_COMM_WORLD, &s->dim, s->n, s->h, &meta, &s->s0, &s->ns, &s->data);
+    if (!st && !(st = nl_meta_origin(&meta, s->dim, s->n, s->h, s->origin)))
+        s->origin[s->dim - 1] += (double)s->s0 * s->h[s->dim - 1];
+    return st;
 }
 
 static void slab_free(cli_slab *s)

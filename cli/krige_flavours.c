@@ -160,7 +160,10 @@ static void write_grid(const cli_krige_fl_ctx *c, const char *opt, const char *p
     for (int a = 0; a < 3; a++)
         h[a] = a < c->gdim ? (c->hi[a] - c->lo[a]) / (double)c->g[a] : 1;
     nl_field *f = cli_field_alloc(c->gdim, c->g, h);
+    nl_meta m = *meta;
     memcpy(f->data, v, f->count * sizeof *v);
+    cli_meta_extent(&m, c->gdim, c->lo, c->hi, c->g);
+    meta = &m;
     int st;
     if (strcmp(cli_field_out_check(opt, path, c->gdim)->name, "tsv")) {
         for (size_t i = 0; cli_field_is_float32(path) && i < f->count; i++)

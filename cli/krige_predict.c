@@ -1,6 +1,7 @@
 /* noiselab krige: --at, external drift and k-fold cross-validation
  * (cli/krige_predict.h). */
 #include "krige_predict.h"
+#include "../core/provenance.h"
 #include "cli.h"
 #include "drift_terms.h"
 #include "../core/io_table.h"
@@ -160,8 +161,30 @@ size_t kp_missing(const double *est, size_t count, const char *what)
     return miss;
 }
 
+/* A covariate field c that records where it lies (noiselab.origin, a
+ * georeferenced file's extent, or the extent of an older map) must lie on
+ * the grid of f, first cell centre at lo + h / 2: the same first sample and
+ * spacing, to 1e-9 of a cell (the records' %.17g round trip is far below
+ * that).  One recording nothing is taken as the grid's, sample for cell. */
+static void check_cov_grid(const char *path, const nl_field *c, const nl_meta *meta, const double *lo,
+                           const nl_field *f)
+{
+    double h[3] = {c->h[0], c->h[1], c->h[2]}, o[3];
+    if (!meta->origin[0] && !meta->extent[0] && !strstr(meta->method, "extent="))
+        return;
+    if (nl_meta_origin(meta, c->dim, c->n, h, o))
+        cli_die(2, "--covariate: %s: %s", path, nl_errmsg());
+    for (int a = 0; a < f->dim; a++) {
+        double g0 = lo[a] + 0.5 * f->h[a];
+        if (fabs(o[a] - g0) > 1e-9 * f->h[a] || fabs(h[a] - f->h[a]) > 1e-9 * f->h[a])
+            cli_die(2, "--covariate: %s lies on a grid of first sample %.10g and spacing %.10g on axis %c; expected "
+                    "the kriging grid's first cell centre %.10g and spacing %.10g", path, o[a], h[a], "xyz"[a], g0,
+                    f->h[a]);
+    }
+}
+
 /* The covariates of the grid's cells (count * ncov) from --covariate. */
-static double *grid_cov(const kp_opts *p, const nl_field *f)
+static double *grid_cov(const kp_opts *p, const double *lo, const nl_field *f)
 {
     double *cov = cli_malloc(f->count * p->ncov * sizeof *cov);
     for (size_t j = 0; j < p->ncov; j++) {
@@ -180,6 +203,7 @@ static double *grid_cov(const kp_opts *p, const nl_field *f)
             cli_die(2, "--covariate: %s has %zu x %zu x %zu samples; expected the grid's %zu x %zu x %zu", p->fpath[i],
                     c->n[0], c->dim > 1 ? c->n[1] : 1, c->dim > 2 ? c->n[2] : 1, f->n[0], f->dim > 1 ? f->n[1] : 1,
                     f->dim > 2 ? f->n[2] : 1);
+        check_cov_grid(p->fpath[i], c, &meta, lo, f);
         for (size_t t = 0; t < f->count; t++)
             cov[t * p->ncov + j] = c->data[t];
         nl_field_free(c);
@@ -195,7 +219,7 @@ void kp_grid(const kp_opts *p, const nl_krige_local *k, const double *lo, nl_fie
             cli_die(st == NL_EINVAL ? 2 : 1, "--grid: %s", nl_errmsg());
         return;
     }
-    double *cov = grid_cov(p, f), *x = cli_malloc(f->count * (size_t)dim * sizeof *x);
+    double *cov = grid_cov(p, lo, f), *x = cli_malloc(f->count * (size_t)dim * sizeof *x);
     for (size_t t = 0; t < f->count; t++) { /* cell t = i + n0 (j + n1 l), as nl_krige_local_grid */
         size_t ix[3] = {t % f->n[0], dim > 1 ? t / f->n[0] % f->n[1] : 0, dim > 2 ? t / (f->n[0] * f->n[1]) : 0};
         for (int a = 0; a < dim; a++)

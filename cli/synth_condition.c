@@ -195,8 +195,11 @@ void cli_synth_cond_apply(const cli_synth_cond *c, const cli_synth_job *job, nl_
 void cli_synth_cond_write(const cli_synth_cond *c, const char *path, const char *tmp, const nl_field *f,
                           const nl_meta *meta)
 {
+    nl_meta m = *meta;
     if (!path)
         return; /* --at without --grid-out */
+    if (c->data) /* the grid's cells on the extent */
+        cli_meta_extent(&m, f->dim, c->lo, c->hi, f->n), meta = &m;
     if (!c->data || !cli_has_ext(path, ".tsv")) {
         cli_write_field(path, tmp, f, meta);
         return;
@@ -282,6 +285,7 @@ void cli_synth_cond_finish(cli_synth_cond *c, const nl_meta *meta)
         return;
     cli_check(nl_welford_variance(c->acc, &var)); /* unbiased, divisor K - 1 */
     m.seed[0] = 0, m.flags[0] = 0;
+    cli_meta_extent(&m, var->dim, c->lo, c->hi, var->n);
     snprintf(m.method, sizeof m.method, "ensemble mean of %zu conditional realizations (data=%s,extent=%s)", c->K,
              c->data, c->extent);
     if (c->emean)

@@ -115,6 +115,11 @@ static int check_write(const nl_format *t, const nl_field *f, const nl_write_opt
     return NL_OK;
 }
 
+int nl_format_check(const nl_format *t, const nl_field *f, nl_write_options *o)
+{
+    return check_write(t, f, o, &o->precision);
+}
+
 int nl_field_write(const char *path, const nl_field *f, const nl_meta *meta, const nl_write_options *o)
 {
     static const nl_write_options none;

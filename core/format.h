@@ -71,6 +71,9 @@ typedef struct {
                            (nl_format.precision); ignored by integer formats */
     double lo, hi;      /* integer formats: the values mapped to 0 and to the largest code;
                            lo == hi (e.g. both 0): the field's min and max */
+    const char *sidecar; /* headerless raw formats (.r16, .raw, .f32): where their JSON sidecar
+                            of size, range, spacing, origin and byte order goes; NULL: the
+                            path plus ".json" (height.r16.json); "": none */
 } nl_write_options;
 
 /* How a field is read (NULL: all defaults). */
@@ -139,6 +142,15 @@ int nl_format_resolve(const char *path, const char *format, const nl_format **ou
  * onto their codes, rounding to nearest and clamping.  An NL_FORMAT_OFF
  * format is NL_EINVAL with its summary as the reason. */
 int nl_field_write(const char *path, const nl_field *f, const nl_meta *meta, const nl_write_options *o);
+
+/* A kriged map and its variance in one NumPy .npz (numpy.savez's layout:
+ * a zip of uncompressed members "field.npy" and "variance.npy", which
+ * numpy.load gives as arrays "field" and "variance", axes slowest first);
+ * variance may be NULL (then "field" alone, as nl_field_write of an .npz
+ * path) and must otherwise have field's shape.  precision 32 or 64 (0:
+ * 64).  The checks of nl_field_write on each (NL_EINVAL, nothing written),
+ * then NL_OK, NL_EIO or NL_ENOMEM.  No metadata: the format holds none. */
+int nl_npz_write(const char *path, const nl_field *field, const nl_field *variance, int precision);
 
 /* nl_field_read (core/io.h) with options: o->format forces a format; a
  * headerless one (NL_FORMAT_SIZED) takes its size and value range from o.

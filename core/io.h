@@ -43,7 +43,7 @@ typedef struct {
     char size[64];      /* noiselab.size: "N[xM[xK]]" */
     char version[32];   /* noiselab.version */
     char flags[256];    /* noiselab.flags: comma-separated detector flags */
-    char origin[64];    /* noiselab.origin: a window's first sample "X[,Y]", in samples */
+    char origin[64];    /* noiselab.origin: where sample 0 sits, "X[,Y[,Z]]" in samples (nl_meta_origin) */
     /* Georeferencing, carried by the GDAL formats (geotiff, cog, netcdf)
      * alone; the others neither write nor read it. */
     char crs[1024];     /* coordinate reference system: "EPSG:N", or WKT; "": none */

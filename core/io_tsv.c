@@ -59,25 +59,27 @@ static void write_meta(FILE *fp, const nl_meta *meta)
     }
 }
 
-/* The first sample's index from meta->origin ("X" or "X,Y"; 0 when empty). */
-static int origin_index(const nl_meta *meta, long long *x)
+/* The first sample's place from meta->origin, in samples ("X[,...]", any
+ * real; 0 when empty). */
+static int origin_index(const nl_meta *meta, double *x)
 {
-    char *end;
+    nl_meta only = {0};
+    nl_provenance p;
     *x = 0;
     if (!meta || !meta->origin[0])
         return NL_OK;
-    errno = 0;
-    *x = strtoll(meta->origin, &end, 10);
-    if (end == meta->origin || (*end && *end != ',') || errno == ERANGE)
-        return NL_ERROR(NL_EINVAL, "TSV: origin \"%.*s\": expected an integer X or X,Y", (int)sizeof meta->origin,
+    memcpy(only.origin, meta->origin, sizeof only.origin);
+    if (nl_provenance_parse(&only, NL_PROV_ORIGIN, &p))
+        return NL_ERROR(NL_EINVAL, "TSV: origin \"%.*s\": expected numbers X[,Y[,Z]]", (int)sizeof meta->origin,
                         meta->origin);
+    *x = p.origin[0];
     return NL_OK;
 }
 
 int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta, const char *coord,
                        const double *t)
 {
-    long long x0;
+    double x0;
     FILE *fp;
     int st;
     if (f->dim != 1)
@@ -89,7 +91,7 @@ int nl_tsv_write_field(const char *path, const nl_field *f, const nl_meta *meta,
     write_meta(fp, meta);
     fprintf(fp, "%s\tvalue\n", coord ? coord : "t");
     for (size_t i = 0; i < f->count; i++) { /* t = (X + i) h: the window's own coordinates; NaN: missing, NA */
-        double ti = t ? t[i] : (double)(x0 + (long long)i) * f->h[0];
+        double ti = t ? t[i] : (x0 + (double)i) * f->h[0];
         if (isnan(f->data[i]))
             fprintf(fp, "%.10g\tNA\n", ti);
         else

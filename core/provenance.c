@@ -56,8 +56,8 @@ static int put(nl_meta *kv, int i, size_t *at, const char *fmt, ...)
 
 static int check_record(const nl_provenance *p)
 {
-    if (p->dim < 0 || p->dim > 3 || p->nspacing < 0 || p->nspacing > 3 || p->norigin < 0 || p->norigin > 2)
-        return NL_ERROR(NL_EINVAL, "provenance: expected 0 to 3 sizes and spacings and 0 to 2 origin numbers, got "
+    if (p->dim < 0 || p->dim > 3 || p->nspacing < 0 || p->nspacing > 3 || p->norigin < 0 || p->norigin > 3)
+        return NL_ERROR(NL_EINVAL, "provenance: expected 0 to 3 sizes, spacings and origin numbers, got "
                         "%d, %d and %d", p->dim, p->nspacing, p->norigin);
     for (int a = 0; a < p->dim; a++)
         if (!p->n[a])
@@ -92,7 +92,7 @@ int nl_provenance_format(const nl_provenance *p, nl_meta *kv)
     for (int a = 0; !st && a < p->dim; a++)
         st = put(kv, K_SIZE, &at[K_SIZE], "%s%zu", a ? "x" : "", p->n[a]);
     for (int a = 0; !st && a < p->norigin; a++)
-        st = put(kv, K_ORIGIN, &at[K_ORIGIN], "%s%ld", a ? "," : "", p->origin[a]);
+        st = put(kv, K_ORIGIN, &at[K_ORIGIN], "%s%.17g", a ? "," : "", p->origin[a]);
     if (st)
         memset(kv, 0, sizeof *kv);
     return st;
@@ -168,11 +168,10 @@ static int parse_origin(const char *v, nl_provenance *p)
     const char *s = v;
     int a = 0;
     for (;; a++) {
-        char *end;
-        errno = 0;
-        long x = strtol(s, &end, 10);
-        if (a == 2 || end == s || errno || (*end && *end != ',') || !(*s == '-' || (*s >= '0' && *s <= '9')))
-            return refuse(K_ORIGIN, v, "an integer X or X,Y");
+        char *end = (char *)s;
+        double x = isspace((unsigned char)*s) ? NAN : strtod(s, &end);
+        if (a == 3 || end == s || !(fabs(x) <= 0x1p53) || (*end && *end != ','))
+            return refuse(K_ORIGIN, v, "1 to 3 numbers X[,Y[,Z]] within +-2^53 samples, separated by commas");
         p->origin[a] = x;
         if (!*end)
             break;

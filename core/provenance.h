@@ -9,7 +9,7 @@
  *
  * Formatting writes exactly what the writers have always recorded (seed in
  * decimal, size "N[xM[xK]]", spacing "h0[,h1[,h2]]" with %.17g, so that
- * it reads back to the same double, origin "X[,Y]"), so parse(format(p))
+ * it reads back to the same double, origin "X[,Y[,Z]]" the same way), so parse(format(p))
  * gives p back.  Parsing refuses a value that is not what its key holds
  * with NL_EINPUT and one line naming the key and the value (a file's
  * attributes are input: they may be damaged or hostile).
@@ -40,7 +40,7 @@ enum {
     NL_PROV_SIZE = 1 << 4,    /* size: 1 to 3 counts >= 1, "x" between */
     NL_PROV_VERSION = 1 << 5, /* version: any text */
     NL_PROV_FLAGS = 1 << 6,   /* flags: any text */
-    NL_PROV_ORIGIN = 1 << 7,  /* origin: one or two integers, "," between */
+    NL_PROV_ORIGIN = 1 << 7,  /* origin: 1 to 3 numbers within +-2^53, "," between */
     NL_PROV_ALL = (1 << 8) - 1
 };
 
@@ -57,8 +57,9 @@ typedef struct {
     size_t n[3];       /* samples per axis, x first (n[dim..2] are 1) */
     int nspacing;      /* spacing values recorded (0: none; else 1 to 3) */
     double h[3];       /* spacing per axis, x first (h[nspacing..2] are 0) */
-    int norigin;       /* origin numbers recorded (0: none; 1 or 2) */
-    long origin[2];    /* a window's first sample, in samples, x first */
+    int norigin;       /* origin numbers recorded (0: none; else 1 to 3) */
+    double origin[3];  /* where sample 0 sits, in samples (times h: length units), x first;
+                          integers for a window of a larger field (nl_meta_origin) */
 } nl_provenance;
 
 /* "model", "method", ... for i < NL_META_NKEYS, in the files' order; NULL
@@ -96,6 +97,28 @@ int nl_provenance_format(const nl_provenance *p, nl_meta *kv);
  * key "noiselab.KEY" and quoting the value, or what nl_model_parse returns
  * for a bad model, with its message. */
 int nl_provenance_parse(const nl_meta *kv, unsigned keys, nl_provenance *p);
+
+/* Where a field's grid sits, as its record m says: for a dim-D field of
+ * n[0..dim-1] samples (x first) whose spacing is h (in: the field's, e.g.
+ * nl_field.h), the coordinate of sample 0 per axis into origin (x first,
+ * length units), so that sample i of axis a sits at origin[a] + i h[a].
+ * From noiselab.origin, in samples: origin[a] = value a times h[a] (axes
+ * it does not give: 0).  Files written before maps made on an extent
+ * recorded it (krige, synth --condition) say "extent=a:b,..." in
+ * noiselab.method instead: their samples are the cell centres, h[a] =
+ * (b - a) / n[a] (written back to h) and origin[a] = a + h[a] / 2; so
+ * do georeferenced files without noiselab.origin, whose m->extent holds
+ * the cell edges "x0:x1,y0:y1" (the GDAL formats).  None recorded: 0.  NL_OK, or NL_EINPUT with one line quoting a malformed
+ * value. */
+int nl_meta_origin(const nl_meta *m, int dim, const size_t *n, double *h, double *origin);
+
+/* Record the grid of a dim-D field in m: noiselab.spacing h and
+ * noiselab.origin origin[a] / h[a] (origin x first, in length units, as
+ * nl_meta_origin gives it back; a value within 1e-9 of an integer number of
+ * samples is written as that integer), both with %.17g.  NL_EINVAL (m
+ * unchanged) for dim outside 1..3, a spacing that is not positive and
+ * finite or an origin that is not finite; NL_ETOOBIG when they do not fit. */
+int nl_meta_set_origin(nl_meta *m, int dim, const double *h, const double *origin);
 
 #ifdef __cplusplus
 }

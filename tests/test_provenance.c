@@ -102,9 +102,11 @@ Test(provenance, bad_values_are_refused_with_one_line)
     refused("spacing", "1,2,3,4", "noiselab.spacing");
     refused("spacing", "1,\n2", "noiselab.spacing: expected 1 to 3 positive finite numbers separated by commas, "
             "got \"1,?2\"");
-    refused("origin", "1,2,3", "noiselab.origin");
+    refused("origin", "1,2,3,4", "noiselab.origin");
     refused("origin", " 1", "noiselab.origin");
     refused("origin", "99999999999999999999999", "noiselab.origin");
+    refused("origin", "nan", "noiselab.origin");
+    refused("origin", "2.5,inf", "noiselab.origin");
     refused("model", "junk:x=1", "unknown model");
     refused("method", "fft\x01", "noiselab.method: expected text without control characters");
     refused("flags", "a\nb", "noiselab.flags");

@@ -23,25 +23,13 @@ static const char *gdal_msg(void)
     return m && *m ? m : "no reason given (truncated, or not this format)";
 }
 
-/* The first sample's centre (x0, y0) of f by gdal_io.h's rules. */
+/* The first sample's centre (x0, y0) of f as its record says (nl_meta_origin). */
 static void first_centre(const nl_field *f, const nl_meta *meta, double *x0, double *y0)
 {
-    double a, b, c, d;
-    const char *e;
-    long ox = 0, oy = 0;
-    *x0 = *y0 = 0;
-    if (!meta)
-        return;
-    if (sscanf(meta->extent, "%lf:%lf,%lf:%lf", &a, &b, &c, &d) == 4 ||
-        ((e = strstr(meta->method, "extent=")) && sscanf(e + 7, "%lf:%lf,%lf:%lf", &a, &b, &c, &d) == 4)) {
-        *x0 = a + f->h[0] / 2, *y0 = c + f->h[1] / 2;
-        return;
-    }
-    int k = sscanf(meta->origin, "%ld,%ld", &ox, &oy);
-    if (k >= 1)
-        *x0 = (double)ox * f->h[0];
-    if (k == 2)
-        *y0 = (double)oy * f->h[1];
+    double h[3] = {f->h[0], f->h[1], f->h[2]}, o[3] = {0, 0, 0};
+    if (meta && nl_meta_origin(meta, f->dim, f->n, h, o))
+        o[0] = o[1] = 0;
+    *x0 = o[0], *y0 = o[1];
 }
 
 int nl_format_crs_check(const char *crs)

@@ -45,33 +45,44 @@ static void put_le(unsigned char *p, double v, size_t size)
         p[b] = (unsigned char)(u >> (8 * b));
 }
 
-static int npy_write(const char *path, const nl_field *f, const nl_meta *meta, const nl_write_options *o)
+size_t nl_npy_header(const nl_field *f, size_t size, char *head)
 {
-    char head[256];
-    size_t size = o->precision == 32 ? 4 : 8, chunk = 4096, k;
-    unsigned char buf[4096 * 8];
-    int len, st = NL_OK;
-    FILE *fp;
-    (void)meta;
-    len = snprintf(head + 10, sizeof head - 10, "{'descr': '<f%zu', 'fortran_order': False, 'shape': (", size);
+    int len = snprintf(head + 10, 246, "{'descr': '<f%zu', 'fortran_order': False, 'shape': (", size);
     for (int a = f->dim - 1; a >= 0; a--)
-        len += snprintf(head + 10 + len, sizeof head - 10 - (size_t)len, "%zu,%s", f->n[a], a ? " " : "");
+        len += snprintf(head + 10 + len, 246 - (size_t)len, "%zu,%s", f->n[a], a ? " " : "");
     if (f->dim > 1) /* (5,) but (3, 4) */
         len--;
-    len += snprintf(head + 10 + len, sizeof head - 10 - (size_t)len, "), }");
+    len += snprintf(head + 10 + len, 246 - (size_t)len, "), }");
     while ((10 + len + 1) % 64)
         head[10 + len++] = ' ';
     head[10 + len++] = '\n';
     memcpy(head, "\x93NUMPY\x01\x00", 8);
     head[8] = (char)(len & 0xff), head[9] = (char)(len >> 8);
+    return (size_t)(10 + len);
+}
+
+void nl_npy_samples(const nl_field *f, size_t size, size_t i0, size_t k, unsigned char *buf)
+{
+    for (size_t j = 0; j < k; j++)
+        put_le(buf + j * size, f->data[i0 + j], size);
+}
+
+static int npy_write(const char *path, const nl_field *f, const nl_meta *meta, const nl_write_options *o)
+{
+    char head[256];
+    size_t size = o->precision == 32 ? 4 : 8, chunk = 4096, k, hl;
+    unsigned char buf[4096 * 8];
+    int st = NL_OK;
+    FILE *fp;
+    (void)meta;
+    hl = nl_npy_header(f, size, head);
     if (!(fp = fopen(path, "wb")))
         return NL_ERROR(NL_EIO, "cannot create %s: %s", path, strerror(errno));
-    if (fwrite(head, 1, (size_t)(10 + len), fp) != (size_t)(10 + len))
+    if (fwrite(head, 1, hl, fp) != hl)
         st = NL_ERROR(NL_EIO, "%s: write failed: %s", path, strerror(errno));
     for (size_t i = 0; i < f->count && !st; i += k) {
         k = f->count - i < chunk ? f->count - i : chunk;
-        for (size_t j = 0; j < k; j++)
-            put_le(buf + j * size, f->data[i + j], size);
+        nl_npy_samples(f, size, i, k, buf);
         if (fwrite(buf, size, k, fp) != k)
             st = NL_ERROR(NL_EIO, "%s: write failed: %s", path, strerror(errno));
     }
@@ -185,14 +196,12 @@ static int parse_head(const char *path, npy_head *h)
     return seen == 7 ? NL_OK : NL_ERROR(NL_EINPUT, "%s: .npy header: expected descr, fortran_order and shape", path);
 }
 
-static int npy_read(const char *path, const unsigned char *buf, size_t len, const nl_read_options *o, nl_field **out,
-                    nl_meta *meta)
+int nl_npy_decode(const char *path, const unsigned char *buf, size_t len, nl_field **out)
 {
     npy_head h = {0};
     size_t n[3], hlen, at, count, need;
     nl_field *f;
     int st;
-    (void)o, (void)meta;
     *out = NULL;
     if (len < 10 || memcmp(buf, "\x93NUMPY", 6) || buf[6] < 1 || buf[6] > 3)
         return NL_ERROR(NL_EINPUT, "%s: not a .npy file of version 1 to 3", path);
@@ -219,6 +228,13 @@ static int npy_read(const char *path, const unsigned char *buf, size_t len, cons
         f->data[i] = get_le(buf + at + hlen + i * h.size, h.size);
     *out = f;
     return NL_OK;
+}
+
+static int npy_read(const char *path, const unsigned char *buf, size_t len, const nl_read_options *o, nl_field **out,
+                    nl_meta *meta)
+{
+    (void)o, (void)meta;
+    return nl_npy_decode(path, buf, len, out);
 }
 
 const nl_format nl_format_npy = {

@@ -175,7 +175,7 @@ const nl_format nl_format_png16 = {
                "in tEXt chunks",
     .dims = 1 << 2,
     .types = NL_FORMAT_U16,
-    .meta = NL_FORMAT_META_PROVENANCE | NL_FORMAT_META_SPACING | NL_FORMAT_META_RANGE,
+    .meta = NL_FORMAT_META_PROVENANCE | NL_FORMAT_META_SPACING | NL_FORMAT_META_ORIGIN | NL_FORMAT_META_RANGE,
     .magic = "\x89PNG",
     .magic_len = 4,
     .read = png16_read,

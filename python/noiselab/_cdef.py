@@ -49,6 +49,7 @@ typedef struct {
     const char *format;
     int precision;
     double lo, hi;
+    const char *sidecar;
 } nl_write_options;
 typedef struct {
     const char *format;
@@ -96,7 +97,7 @@ typedef struct {
     int nspacing;
     double h[3];
     int norigin;
-    long origin[2];
+    double origin[3];
 } nl_provenance;
 const char *nl_meta_key(int i);
 void nl_provenance_init(nl_provenance *p);
