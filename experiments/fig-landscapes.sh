@@ -75,7 +75,7 @@ slope=$1 ci=$2 dim=$3
 # keeps near 1 (the unshaped fields: within 1.25 either way, the scatter of
 # the deciles' rms over a 512 x 512 field is a few per cent) and y^2.5 must
 # raise to at least 2 (the peaks visibly steeper than the valleys)
-ks=$("$nl" hist "$d/ls-fractal-pow.exr" --against power:p=2.5 | sed -n 's/.*KS D \([0-9.e+-]*\) p \([0-9.e+-]*\);.*/\2/p')
+ks=$("$nl" hist "$d/ls-fractal-pow.exr" --against power:p=2.5 | sed -n 's/.*KS D \([0-9.e+-]*\) p \([0-9.e+-]*\) .*/\2/p')
 skew=$("$nl" hist "$d/ls-fractal-pow.exr" | sed -n 's/^# skewness //p')
 set -- $("$xb/height_slope" "$d/ls-nonfractal.exr" 0.1) $("$xb/height_slope" "$d/ls-nonfractal-pow.exr" 0.1) \
     $("$xb/height_slope" "$d/ls-fractal.exr" 0.1) $("$xb/height_slope" "$d/ls-fractal-pow.exr" 0.1)

@@ -47,8 +47,9 @@ clag=$(printf '%.1f' "$5") cval=$(printf '%.3f' "$6")
 # 2 sd, sd the spread of one FFT field's A: an anisotropy inside the range
 # (95%) over which one exact field's A wanders cannot be seen in one
 # picture; beyond it, it can.
+# the centre of the map of lags -20..20 (acf --max-lag 20 keeps them alone) is sample (20, 20)
 printf 'x\ty\n' > "$d/tx-lags.tsv"
-awk 'BEGIN { c = 255; q = 10 / sqrt(2); printf "%d\t%d\n%d\t%d\n%d\t%d\n%.8f\t%.8f\n%.8f\t%.8f\n", c, c, c + 10, c, c, c + 10, c + q, c + q, c + q, c - q }' >> "$d/tx-lags.tsv"
+awk 'BEGIN { c = 20; q = 10 / sqrt(2); printf "%d\t%d\n%d\t%d\n%d\t%d\n%.8f\t%.8f\n%.8f\t%.8f\n", c, c, c + 10, c, c, c + 10, c + q, c + q, c + q, c - q }' >> "$d/tx-lags.tsv"
 aniso() { # synth arguments -> mean A, sd of one field's A, mean axis ACF, mean diagonal ACF
     for s in 2 3 4 5 6 7 8 9; do
         "$nl" synth "$@" --size 256x256 --seed "$s" -o "$d/tx-iso.exr"
