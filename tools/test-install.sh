@@ -187,7 +187,11 @@ check "man -l renders noiselab(1) without warnings" sh -c "MANWIDTH=80 man --war
 check "man noiselab finds it with MANPATH" sh -c "test \"\$(MANPATH='$root$prefix/share/man' man -w noiselab)\" = '$root$prefix/share/man/man1/noiselab.1'"
 nm -D --defined-only "$libdir/libnoiselab.so" >"$tmp/nm-so" 2>&1
 check "nm -D libnoiselab.so: nl_/NL_ names only" only_nl <"$tmp/nm-so"
-nm -g --defined-only "$libdir/libnoiselab.a" 2>/dev/null | grep -v ':$' >"$tmp/nm-a"
+# Weak and unique definitions (nm types W, V, u) are the inline and template
+# instantiations a C++ translation unit (core/formats/vdb_io.cc) emits for
+# the headers it includes; the linker merges them with every other copy:
+# they are not names the library defines.
+nm -g --defined-only "$libdir/libnoiselab.a" 2>/dev/null | grep -v ':$' | grep -v ' [WVu] ' >"$tmp/nm-a"
 check "nm -g libnoiselab.a: nl_/NL_ names only" only_nl <"$tmp/nm-a"
 nm -D --defined-only "$libdir/libnoiselab_mpi.so" >"$tmp/nm-mpi" 2>&1
 check "nm -D libnoiselab_mpi.so: nl_/NL_ names only" only_nl <"$tmp/nm-mpi"
