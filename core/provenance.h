@@ -108,8 +108,9 @@ int nl_provenance_parse(const nl_meta *kv, unsigned keys, nl_provenance *p);
  * noiselab.method instead: their samples are the cell centres, h[a] =
  * (b - a) / n[a] (written back to h) and origin[a] = a + h[a] / 2; so
  * do georeferenced files without noiselab.origin, whose m->extent holds
- * the cell edges "x0:x1,y0:y1" (the GDAL formats).  None recorded: 0.  NL_OK, or NL_EINPUT with one line quoting a malformed
- * value. */
+ * the cell edges "x0:x1,y0:y1" (the GDAL formats).  None recorded: 0.
+ * h and origin hold 3 entries (origin's past dim set to 0).  NL_OK, or
+ * NL_EINPUT with one line quoting a malformed value. */
 int nl_meta_origin(const nl_meta *m, int dim, const size_t *n, double *h, double *origin);
 
 /* Record the grid of a dim-D field in m: noiselab.spacing h and

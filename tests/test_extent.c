@@ -40,7 +40,7 @@ Test(extent, legacy_extent_in_the_method)
 {
     nl_meta m = {0};
     size_t n[2] = {10, 4};
-    double h[2] = {1, 1}, o[2];
+    double h[3] = {1, 1, 1}, o[3];
     strcpy(m.method, "krige:ordinary,points=4,extent=0:5,-2:2");
     cr_assert_eq(nl_meta_origin(&m, 2, n, h, o), NL_OK, "%s", nl_errmsg());
     cr_expect(h[0] == 0.5 && h[1] == 1 && o[0] == 0.25 && o[1] == -1.5, "h %g %g o %g %g", h[0], h[1], o[0], o[1]);
