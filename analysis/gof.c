@@ -2,6 +2,7 @@
  * chi-square distribution; the Kolmogorov series is summed here, GSL has
  * no KS test). */
 #include "gof.h"
+#include "gof_boot_internal.h"
 #include "../core/gsl_guard_internal.h"
 #include "../core/nl_error.h"
 
@@ -11,7 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-static double q_ks(double l)
+/* Q_KS(l), the Kolmogorov tail (analysis/gof_boot_internal.h). */
+double nl_gof_ks_tail(double l)
 {
     double s = 0, sign = 1;
     if (l < 0.2)
@@ -49,7 +51,7 @@ static int gof_test(const double *x, size_t n, const nl_dist *d, size_t bins, do
     }
     en = sqrt(n_eff);
     out->D = D;
-    out->p_ks = q_ks((en + 0.12 + 0.11 / en) * D);
+    out->p_ks = nl_gof_ks_tail((en + 0.12 + 0.11 / en) * D);
     out->chi2 = 0;
     for (size_t b = 0; b < bins; b++) {
         double e = (double)n / (double)bins;

@@ -49,22 +49,6 @@ static uint64_t draw_seed(uint64_t seed, size_t b, size_t k, size_t K)
     return mix(mix(seed) + 0x9e3779b97f4a7c15u * ((uint64_t)b * K + k + 1));
 }
 
-/* The Kolmogorov tail Q_KS(l) = 2 sum_k (-1)^(k-1) exp(-2 k^2 l^2), as analysis/gof.c. */
-static double q_ks(double l)
-{
-    double s = 0, sign = 1;
-    if (l < 0.2)
-        return 1.0;
-    for (int k = 1; k <= 100; k++) {
-        double t = sign * exp(-2.0 * k * k * l * l);
-        s += t;
-        if (fabs(t) < 1e-16 * fabs(s))
-            break;
-        sign = -sign;
-    }
-    return fmin(fmax(2 * s, 0), 1);
-}
-
 static int check(const nl_field *const *x, size_t K, const nl_dist *d, size_t draws, size_t bins, size_t *n)
 {
     *n = 0;
@@ -241,7 +225,7 @@ static void p_values(const boot *t, double *v, const double *lm, const double *l
         out->ks_shift = med - KS_MEDIAN / sqrt(out->ks_n_eff);
     } else
         out->ks_n_eff = pow(KS_MEDIAN / med, 2), out->ks_shift = 0;
-    ks->p = q_ks(sqrt(out->ks_n_eff) * (ks->value - out->ks_shift));
+    ks->p = nl_gof_ks_tail(sqrt(out->ks_n_eff) * (ks->value - out->ks_shift));
 }
 
 /* Verdict and detectable departures (header: power); ls_var: the sd of the

@@ -26,4 +26,8 @@ void nl_gof_boot_work_free(nl_gof_boot_work *w);
 void nl_gof_boot_stats(const double *u, const double *x, const int *want, nl_gof_boot_work *w, double *T,
                        double *half);
 
+/* The Kolmogorov tail Q_KS(l) = 2 sum_{k>=1} (-1)^(k-1) exp(-2 k^2 l^2)
+ * (1 below l = 0.2), shared by analysis/gof.c and the bootstrap. */
+double nl_gof_ks_tail(double l);
+
 #endif
