@@ -222,7 +222,7 @@ static void every_kind(int dim)
     }
 }
 
-Test(check_cli, every_kind_1d) { every_kind(1); }
+Test(check_cli_slow, every_kind_1d) { every_kind(1); }
 Test(check_cli_slow, every_kind_2d) { every_kind(2); }
 Test(check_cli_slow, every_kind_3d) { every_kind(3); }
 

@@ -39,7 +39,7 @@ static void bad(const char *args, const char *needle)
     cr_expect_eq(outputs_left(), 0, "%s: left an output file", args);
 }
 
-Test(cli, nl_synth_error_paths)
+Test(cli_slow, nl_synth_error_paths)
 {
     bad("synth fft --acf markov:scale=8 --size 0x5 -o out.exr", "\"0x5\"");
     bad("synth fft --acf markov --size 1 -o out.exr", "\"1\"");
@@ -97,7 +97,7 @@ Test(cli, nl_synth_error_paths)
     bad("synth fft --acf markov --size 64 --preview out.png -o out.exr", "--preview");
 }
 
-Test(cli, estimator_error_paths)
+Test(cli_slow, estimator_error_paths)
 {
     bad("acf /nonexistent.exr", "/nonexistent.exr");
     bad("acf", "expected one input file");
@@ -297,7 +297,7 @@ static int same_file(const char *a, const char *b)
 }
 
 /* A field's EXR records everything needed to regenerate it, bit for bit. */
-Test(cli, nl_synth_from_regenerates)
+Test(cli_slow, nl_synth_from_regenerates)
 {
     const char *cmds[] = {"synth fft --acf markov:scale=3 --size 64x48 --seed 5",
                           "synth subdiv --acf markaussian:alpha=1.4,scale=8 --size 128x128 --seed 3 --neighborhood auto",
@@ -322,7 +322,7 @@ Test(cli, nl_synth_from_regenerates)
 /* validate writes a complete report (a tolerance far above what 16
  * realizations resolve, so that every method is within it); a model that is
  * not positive definite is refused by every method: exit 3, report kept. */
-Test(cli, validate_reports)
+Test(cli_slow, validate_reports)
 {
     char path[512];
     json_error_t je;

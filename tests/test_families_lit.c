@@ -98,7 +98,7 @@ static int randomfields_available(void)
 
 /* RandomFields computes R in double precision with R's own Bessel, beta
  * and power functions: both sides agree to rounding, far inside 1e-10. */
-Test(families_lit, r_matches_randomfields)
+Test(families_lit_slow, r_matches_randomfields)
 {
     static char script[16384];
     static double v[NRF * NLAGS + 1];
@@ -129,7 +129,7 @@ Test(families_lit, r_matches_randomfields)
 
 /* gstat's Wav and Hol (sinc's peer names) against variogramLine(covariance
  * = TRUE), which prints 17 digits of psill - gamma(h). */
-Test(families_lit, gstat_wave_and_hole)
+Test(families_lit_slow, gstat_wave_and_hole)
 {
     static const char *spec[] = {"Wav:psill=1.7,range=3", "Hol:psill=1.7,range=3", "Wav:psill=0.4,range=0.5"};
     static double v[3 * NLAGS + 1];

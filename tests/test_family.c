@@ -258,7 +258,7 @@ static void gaussian_data(const char *spec, double *x, double *z)
  * worse: a shortfall is the optimiser stopping early), and its profile
  * intervals hold its own estimates.  Tolerance 0.01 in -2 l: the simplex
  * stops at size 1e-5 in log units. */
-Test(family, gencauchy_ml_both_shapes_free, .timeout = 300)
+Test(family_slow, gencauchy_ml_both_shapes_free, .timeout = 300)
 {
     double x[2 * NPTS], z[NPTS];
     nl_fit_options o = {.family = "gencauchy", .intervals = NL_FIT_INTERVALS_ALL};
@@ -284,7 +284,7 @@ Test(family, gencauchy_ml_both_shapes_free, .timeout = 300)
  * closed-form value over those frequencies (the quadrature's tolerance
  * with room for its oscillatory tail).
  * Families defined by S (power, spectrum:) have nothing to compare. */
-Test(family, closed_form_spectra, .timeout = 120)
+Test(family_slow, closed_form_spectra, .timeout = 120)
 {
     int compared = 0;
     for (size_t i = 0; i < nl_family_count(); i++) {

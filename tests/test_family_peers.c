@@ -95,7 +95,7 @@ static int randomfields_available(void)
 
 #define RF(m) "RFcov(" m ", x = h)"
 
-Test(family_peers, randomfields)
+Test(family_peers_slow, randomfields)
 {
     static const struct peer_case c[] = {
         {"RMexp:var=1.7,scale=3", RF("RMexp(var = 1.7, scale = 3)")},

@@ -45,10 +45,10 @@ Test(fft_stat, markov_1d) { check("markov:scale=8", r_markov, 1); }
 Test(fft_stat, gauss_1d) { check("gauss:scale=6", r_gauss, 1); }
 Test(fft_stat, oscillatory_1d) { check("oscillatory:omega=0.5,scale=10", r1_osc, 1); }
 Test(fft_stat, expr_1d) { check("expr:1.5*exp(-abs(t)/5)*(1+abs(t)/5)", r_expr, 1); }
-Test(fft_stat, markov_2d) { check("markov:scale=8", r_markov, 2); }
+Test(fft_stat_slow, markov_2d) { check("markov:scale=8", r_markov, 2); }
 Test(fft_stat, gauss_2d) { check("gauss:scale=6", r_gauss, 2); }
 Test(fft_stat, oscillatory_2d_separable) { check("oscillatory:omega=0.5,scale=10,sep", r_osc, 2); }
-Test(fft_stat, expr_2d) { check("expr:1.5*exp(-r/5)*(1+r/5)", r_expr, 2); }
+Test(fft_stat_slow, expr_2d) { check("expr:1.5*exp(-r/5)*(1+r/5)", r_expr, 2); }
 Test(fft_stat, ellipsoidal_2d) { check("markov:scale=8,angle=30,ratio=0.4", r_ellipse, 2); }
 
 static double r_gosc1(double x, double y) { (void)y; return cos(0.4 * x) * exp(-x * x / 36); }
@@ -60,6 +60,6 @@ static double r_matern(double x, double y)
 }
 
 Test(fft_stat, gauss_osc_1d) { check("gauss-osc:omega=0.4,scale=6", r_gosc1, 1); }
-Test(fft_stat, gauss_osc_2d_separable) { check("gauss-osc:omega=0.4,scale=6,sep", r_gosc2, 2); }
+Test(fft_stat_slow, gauss_osc_2d_separable) { check("gauss-osc:omega=0.4,scale=6,sep", r_gosc2, 2); }
 Test(fft_stat, matern_1d) { check("matern:nu=1.5,scale=5", r_matern, 1); }
 Test(fft_stat, matern_2d) { check("matern:nu=1.5,scale=5", r_matern, 2); }

@@ -89,7 +89,7 @@ static const char fit_script[] =
  * scale: 1e-5 of the sill (var + nugget) for var and nugget, 1e-5 relative
  * for the range.  Data: 400 nearest-node samples of a circulant field with
  * a nugget (a positive nugget for gstat's unconstrained fit to find). */
-Test(fit_gstat, wls_equals_fit_variogram)
+Test(fit_gstat_slow, wls_equals_fit_variogram)
 {
     if (!gstat_available("fit vs gstat fit.variogram"))
         return;
@@ -222,7 +222,7 @@ Test(fit_gstat, nested_equals_fit_variogram_meuse)
  * range 12, long 40: the 3-unit bins to 90 resolve both structures and
  * the nugget; gstat finds the fit regular, attr "singular" FALSE).
  * Tolerance as above. */
-Test(fit_gstat, nested_free_equals_fit_variogram)
+Test(fit_gstat_slow, nested_free_equals_fit_variogram)
 {
     if (!gstat_available("free nested fit vs gstat"))
         return;

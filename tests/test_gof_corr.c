@@ -60,7 +60,7 @@ static void rejections(size_t K, const char *shape, size_t rej[3])
  * at least 30 of 40 here.  Fields of variance 8 (laplace:a=2) are wrong:
  * the thinned tests rejected 93% to 98% of them in the experiment; at
  * least 30 of 40 fails a power of 90% with probability 0.001. */
-Test(gof_corr, false_alarms_and_power_on_correlated_fields)
+Test(gof_corr_slow, false_alarms_and_power_on_correlated_fields)
 {
     size_t rej[3];
     rejections(40, "hyperbolic", rej);

@@ -75,7 +75,7 @@ Test(intrinsic_krige, ordinary_equals_gstat_on_meuse)
     nl_krige_plan_free(p), nl_model_free(m);
 }
 
-Test(intrinsic_krige, local_equals_gstat_on_meuse)
+Test(intrinsic_krige_slow, local_equals_gstat_on_meuse)
 {
     if (!gstat_available("Meuse power-variogram kriging, nmax 32, vs gstat"))
         return;
@@ -126,7 +126,7 @@ Test(intrinsic_krige, variogram_of_models)
 /* Leave-one-out cross-validation with the power variogram, global
  * neighbourhood, against gstat's krige.cv: each left-out prediction and
  * variance to 1e-10 relative (as above). */
-Test(intrinsic_krige, cross_validation_equals_gstat_on_meuse)
+Test(intrinsic_krige_slow, cross_validation_equals_gstat_on_meuse)
 {
     if (!gstat_available("Meuse power-variogram krige.cv vs gstat"))
         return;

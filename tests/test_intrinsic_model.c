@@ -17,7 +17,7 @@
  * gstat's variogramLine(vgm(psill, "Pow", range, nugget)) and
  * RandomFields' RFvariogram(RMfbm(alpha, var, scale)), printed by R with
  * 17 digits; agreement to 1e-10 relative (one pow each side). */
-Test(intrinsic_model, peers_names_against_gstat_and_randomfields)
+Test(intrinsic_model_slow, peers_names_against_gstat_and_randomfields)
 {
     const double h[5] = {0.37, 1, 2.2, 7.9, 21};
     const char *specs[] = {"powvar:alpha=1.385,c=2.5,nugget=0.3", "Pow:psill=2.5,range=1.385,nugget=0.3",

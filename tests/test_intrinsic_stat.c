@@ -133,9 +133,9 @@ static void check(int dim, size_t n0, size_t n1, double alpha, double c, double 
     cr_expect_gt(zwrong, zc, "%s: told alpha=%g, the test does not reject (|z| %.2f)", what, alpha + 0.2, zwrong);
 }
 
-Test(intrinsic_stat, power_variogram_2d_alpha_1, .timeout = 60) { check(2, 128, 128, 1.0, 1.0, 0); }
-Test(intrinsic_stat, power_variogram_2d_alpha_1_5, .timeout = 60) { check(2, 128, 128, 1.5, 2.385, 0); }
-Test(intrinsic_stat, power_variogram_2d_alpha_1_8, .timeout = 60) { check(2, 128, 128, 1.8, 1.0, 0); }
+Test(intrinsic_stat_slow, power_variogram_2d_alpha_1, .timeout = 60) { check(2, 128, 128, 1.0, 1.0, 0); }
+Test(intrinsic_stat_slow, power_variogram_2d_alpha_1_5, .timeout = 60) { check(2, 128, 128, 1.5, 2.385, 0); }
+Test(intrinsic_stat_slow, power_variogram_2d_alpha_1_8, .timeout = 60) { check(2, 128, 128, 1.8, 1.0, 0); }
 Test(intrinsic_stat, power_variogram_1d_alpha_0_5, .timeout = 60) { check(1, 1024, 1, 0.5, 1.0, 0); }
 Test(intrinsic_stat, power_variogram_1d_alpha_1_5, .timeout = 60) { check(1, 1024, 1, 1.5, 0.7, 0); }
 /* the nugget adds white noise: 2 gamma(h) = 2 (nugget + c |h|^alpha) off lag 0 */

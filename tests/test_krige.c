@@ -140,7 +140,7 @@ Test(krige, singular_systems)
  * squared error to the mean variance is 1 for a correct predictor; over 10
  * fields and 20000 (correlated) errors its sampling spread is a few
  * percent; 20% bounds it with margin. */
-Test(krige, calibration)
+Test(krige_slow, calibration)
 {
     nl_model *m = test_model("markov:scale=8");
     size_t n[2] = {128, 128};

@@ -160,7 +160,7 @@ Test(krige_at, equals_gstat_krige_meuse_grid)
 /* Universal kriging with an external drift, gstat's krige(log(zinc) ~
  * sqrt(dist), ...), equals gstat to 1e-6 (the task's bound; measured about
  * 1e-14), globally and with the 30 nearest data within 1000 m. */
-Test(krige_at, external_drift_equals_gstat)
+Test(krige_at_slow, external_drift_equals_gstat)
 {
     static double r[4 * NGRID], e[NGRID], v[NGRID];
     char script[4096];
@@ -197,7 +197,7 @@ Test(krige_at, external_drift_equals_gstat)
 /* With a radius, locations with no datum within it are missing (NA), as
  * gstat's krige(maxdist = 150): the same NA locations, the same values
  * elsewhere (1e-9), and the count in --json. */
-Test(krige_at, radius_missing_as_gstat)
+Test(krige_at_slow, radius_missing_as_gstat)
 {
     static double r[2 * NGRID], e[NGRID], v[NGRID];
     char script[4096];
@@ -229,7 +229,7 @@ Test(krige_at, radius_missing_as_gstat)
  * drift and nmax 30.  The table is written with 10 significant digits:
  * predictions between 1 and 10 are rounded by 5e-10 at most, within the
  * 1e-9 bound (the computation itself agrees to about 1e-14). */
-Test(krige_at, kfold_equals_gstat_krige_cv)
+Test(krige_at_slow, kfold_equals_gstat_krige_cv)
 {
     static double r[6 * NDATA], p[NDATA], v[NDATA], fo[NDATA], z[NDATA];
     char script[4096];

@@ -146,7 +146,7 @@ Test(krige_flavours, trans_gaussian_equals_krigeTg_meuse)
  * violations); R also applies GSLIB's ordrel (clip, cummax, reversed
  * cummin, average) as the reference of the correction.  Tolerance as in
  * the block test, on probabilities. */
-Test(krige_flavours, indicator_equals_gstat_meuse)
+Test(krige_flavours_slow, indicator_equals_gstat_meuse)
 {
     if (!gstat_available("indicator kriging vs gstat"))
         return;
@@ -316,7 +316,7 @@ Test(krige_flavours, refusals)
  * alone), on scattered data of the unit cube and interval, with an
  * exponential model and a nugget (which the block's own variance must
  * leave out); tolerance as block_equals_gstat_meuse. */
-Test(krige_flavours, block_3d_and_1d_equal_gstat)
+Test(krige_flavours_slow, block_3d_and_1d_equal_gstat)
 {
     if (!gstat_available("3D and 1D block kriging vs gstat"))
         return;

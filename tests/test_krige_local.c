@@ -75,7 +75,7 @@ static void against_gstat(const char *spec, const char *formula, const char *vgm
 
 /* markov:scale=a is gstat's vgm(1, "Exp", a) (exp(-h/a)); gauss:scale=a
  * is vgm(1, "Gau", a) (exp(-(h/a)^2)). */
-Test(krige_local, nmax32_equals_gstat)
+Test(krige_local_slow, nmax32_equals_gstat)
 {
     if (!gstat_available("krige nmax = 32 vs gstat"))
         return;
@@ -86,7 +86,7 @@ Test(krige_local, nmax32_equals_gstat)
     against_gstat("markov:scale=0.2", "value ~ x + y", "vgm(1, 'Exp', 0.2)", &o, "universal linear, nmax 32");
 }
 
-Test(krige_local, universal_equals_gstat)
+Test(krige_local_slow, universal_equals_gstat)
 {
     if (!gstat_available("krige value ~ x + y vs gstat"))
         return;
@@ -97,7 +97,7 @@ Test(krige_local, universal_equals_gstat)
                   "universal quadratic, global");
 }
 
-Test(krige_local, cv_equals_gstat)
+Test(krige_local_slow, cv_equals_gstat)
 {
     if (!gstat_available("krige.cv vs gstat"))
         return;
@@ -219,7 +219,7 @@ Test(krige_local, cv_overflowing_values_refused)
  * c(90 - angle, ratio) (gstat's principal direction is clockwise from
  * north, ours counterclockwise from x; both ratios are minor over major
  * when below 1). */
-Test(krige_local, nested_equals_gstat)
+Test(krige_local_slow, nested_equals_gstat)
 {
     if (!gstat_available("krige with a nested model vs gstat"))
         return;

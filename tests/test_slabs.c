@@ -168,7 +168,7 @@ Test(slabs, subdiv_periodic_correlated_and_clamp)
 /* Large enough that refinement and displacements run on several threads
  * (above 65536 samples per level): the split among threads must not
  * matter either. */
-Test(slabs, subdiv_threaded)
+Test(slabs_slow, subdiv_threaded)
 {
     nl_subdiv_options o = opts();
     o.displacements = NL_SUBDIV_DISP_ERROR;

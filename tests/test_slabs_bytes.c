@@ -95,7 +95,7 @@ Test(slabs, subdiv_bytes_measured)
     nl_model_free(m);
 }
 
-Test(slabs, sparse_bytes_measured)
+Test(slabs_slow, sparse_bytes_measured)
 {
     size_t n[2] = {2048, 2048}, ns[2] = {2048, 512};
     nl_synth_sparse_plan *p;

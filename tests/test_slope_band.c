@@ -147,7 +147,7 @@ static void refused(const char *args, const char *const *needles)
  * option, the band, the edge and what was expected; from a file (TSV, EXR)
  * and from --realizations alike.  Fields without such a model, or shaped
  * since, are fitted as before. */
-Test(slope_band, refused_outside_the_model_band)
+Test(slope_band_slow, refused_outside_the_model_band)
 {
     const char *lo[] = {"psd: --slope 0.0001:0.4", "below", "power:d=1", "fmin = 0.0009765625",
                         "expected F1 >= 0.0009765625", NULL};

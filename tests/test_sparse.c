@@ -60,16 +60,16 @@ static void check(const char *spec, double (*R)(double, double), int dim)
 Test(sparse, markov_1d) { check("markov:scale=6", r_markov, 1); }
 Test(sparse, matern_1d) { check("matern:nu=1.5,scale=5", r_matern, 1); }
 Test(sparse, gauss_osc_1d) { check("gauss-osc:omega=0.4,scale=6", r_gosc, 1); }
-Test(sparse, markov_2d) { check("markov:scale=6", r_markov, 2); }
-Test(sparse, matern_2d) { check("matern:nu=1.5,scale=5", r_matern, 2); }
-Test(sparse, gauss_osc_2d_separable) { check("gauss-osc:omega=0.4,scale=6,sep", r_gosc, 2); }
+Test(sparse_slow, markov_2d) { check("markov:scale=6", r_markov, 2); }
+Test(sparse_slow, matern_2d) { check("matern:nu=1.5,scale=5", r_matern, 2); }
+Test(sparse_slow, gauss_osc_2d_separable) { check("gauss-osc:omega=0.4,scale=6,sep", r_gosc, 2); }
 
 /* Excess kurtosis against density: the measured value (mean over 16
  * periodic 128x128 realizations, its standard error from their spread)
  * agrees with the compound-Poisson prediction 3 sum h^4 / (lambda (sum
  * h^2)^2) within the t(15) Bonferroni bound over the 4 densities, and the
  * measured values fall toward 0 (Gaussian) as the density grows. */
-Test(sparse, kurtosis_against_density)
+Test(sparse_slow, kurtosis_against_density)
 {
     const double dens[4] = {0.5, 4, 32, 256};
     size_t n[2] = {128, 128};

@@ -109,8 +109,8 @@ Test(nl_subdiv_stat, markov_1d_is_exact)
 Test(nl_subdiv_stat, markaussian_1d) { check_1d("markaussian:alpha=1.4,scale=8", 1.0, NULL); }
 Test(nl_subdiv_stat, lewis_table1_model_1d) { check_1d("expr:100*cos(10*t)*exp(-abs(t))", 15.0 / 1024, NULL); }
 Test(nl_subdiv_stat, gauss_osc_1d) { check_1d("gauss-osc:omega=10", 0.01171875, NULL); }
-Test(nl_subdiv_stat, isotropic_markaussian_2d) { check_2d("markaussian:alpha=1.4,scale=6", 2, NULL); }
-Test(nl_subdiv_stat, separable_markov_2d) { check_2d("markov:scale=6,sep", 2, NULL); }
+Test(nl_subdiv_stat_slow, isotropic_markaussian_2d) { check_2d("markaussian:alpha=1.4,scale=6", 2, NULL); }
+Test(nl_subdiv_stat_slow, separable_markov_2d) { check_2d("markov:scale=6,sep", 2, NULL); }
 
 /* Correlated displacements (synth/subdiv_disp.c): the ensembles must match
  * the exact propagation with the filter's covariance (the same t-test), and
@@ -138,5 +138,5 @@ Test(nl_subdiv_corr, lewis_table1_model_1d)
     improves("expr:100*cos(10*t)*exp(-abs(t))", 1, 15.0 / 1024, 4, 4, 10);
 }
 Test(nl_subdiv_corr, gauss_osc_1d) { improves("gauss-osc:omega=10", 1, 0.01171875, 4, 4, 5); }
-Test(nl_subdiv_corr, isotropic_markaussian_2d) { improves("markaussian:alpha=1.4,scale=6", 2, 1.0, 2, 2, 5); }
+Test(nl_subdiv_corr_slow, isotropic_markaussian_2d) { improves("markaussian:alpha=1.4,scale=6", 2, 1.0, 2, 2, 5); }
 Test(nl_subdiv_corr_slow, separable_markov_2d) { improves("markov:scale=6,sep", 2, 1.0, 2, 4, 5); }

@@ -114,7 +114,7 @@ Test(trap_rank1, enomem)
     cr_assert_null(L.k);
 }
 
-Test(trap_rank1, enomem_synthesize)
+Test(trap_rank1_slow, enomem_synthesize)
 {
     nl_rank1_lattice L;
     long g[1] = {1};

@@ -285,7 +285,7 @@ Test(validate, large_bands)
  * methods (its wrapped spectrum goes negative) while subdivision's exact ACF
  * is still reported (its levels are positive definite); 1 - |t|/3 in 1D has
  * subdivision levels that are not, so no exact ACF. */
-Test(validate, refusals)
+Test(validate_slow, refusals)
 {
     nl_model *m = test_model("gauss:scale=20"), *tri = test_model("expr:1-abs(t)/3");
     nl_validate_options o;

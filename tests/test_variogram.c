@@ -143,7 +143,7 @@ static void compare(const char *args, const char *rexpr, const char *what)
     json_decref(j);
 }
 
-Test(variogram, equals_gstat_2d)
+Test(variogram_slow, equals_gstat_2d)
 {
     if (!gstat_available("variogram vs gstat"))
         return;

@@ -76,7 +76,7 @@ static double pairs_in(const char *args, size_t k)
  * (400, 450]; with cutoff 450 the 450 m pair is kept (h <= cutoff).  Every
  * bin equals gstat's, for the default bins too, and --bins floor moves
  * the boundary pairs (the test sees a boundary). */
-Test(variogram_gstat, meuse_bins)
+Test(variogram_gstat_slow, meuse_bins)
 {
     if (!gstat_available("variogram bins vs gstat on Meuse"))
         return;
@@ -101,7 +101,7 @@ Test(variogram_gstat, meuse_bins)
  * least squares loses digits (its gammas differ from R's lm residuals by
  * 1.5e-5 relative; ours and R's lm agree to 1e-10), and the residuals do
  * not depend on the polynomial's basis. */
-Test(variogram_gstat, meuse_drift)
+Test(variogram_gstat_slow, meuse_drift)
 {
     if (!gstat_available("residual variogram vs gstat on Meuse"))
         return;
@@ -152,7 +152,7 @@ Test(variogram_gstat, boundary_rule)
  * gstat's); the unconverted angle=30 does not (the test sees the angle).
  * Tolerance 1e-6: the EXR output holds 32-bit floats (half an ulp of
  * values below 8 is 4.8e-7); the systems themselves agree to ~1e-12. */
-Test(variogram_gstat, anisotropy_angle_krige)
+Test(variogram_gstat_slow, anisotropy_angle_krige)
 {
     if (!gstat_available("anisotropic kriging vs gstat on Meuse"))
         return;

@@ -18,6 +18,10 @@ TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(TOP, "python"))
 
 
+def pytest_configure(config):
+    config.addinivalue_line("markers", "slow: tens of seconds: run by make test-slow, not make test")
+
+
 def cli_path():
     return os.environ.get("NOISELAB") or os.path.join(TOP, "bin", "noiselab")
 

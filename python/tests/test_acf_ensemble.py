@@ -15,6 +15,7 @@ fixed, so the outcome is deterministic).  The band must also be narrow
 enough to mean something: it must reject the neighbouring model
 markov:scale=9 at some lag."""
 import numpy as np
+import pytest
 
 import noiselab
 
@@ -41,6 +42,7 @@ def ensemble(axis):
     return lag, mean, se, target
 
 
+@pytest.mark.slow
 def test_ensemble_acf_within_band():
     for axis in ("x", "y"):
         lag, mean, se, target = ensemble(axis)

@@ -18,6 +18,7 @@ def data():
     return pts, val
 
 
+@pytest.mark.slow
 def test_linear_drift_equals_cli(cli, tmp_path, data):
     pts, val = data
     path = tmp_path / "p.tsv"

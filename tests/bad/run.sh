@@ -23,7 +23,7 @@
 # for EXIT 0: no nan or inf on stdout or in any text output, and every EXR
 # output finite.  SHARD=I/N runs only the cases whose number (from 0, over
 # all the files) is I modulo N, with fixtures of its own (tests/par.sh runs
-# the shards at once).
+# the shards at once).  BAD_TIMES=FILE appends each case's milliseconds.
 set -u
 shard=${SHARD:-0/1}
 si=${shard%/*} sn=${shard#*/}
@@ -52,10 +52,11 @@ for file in "$@"; do
         d="$work/case"
         rm -rf "$d" && mkdir "$d"
         ln -s "$work"/fix/* "$d/"
-        start=$(date +%s)
+        start=$(date +%s%N)
         (cd "$d" && timeout -k 5 "$secs" sh -c "$cmd" >"$work/out" 2>"$work/err" </dev/null)
         rc=$?
-        took=$(( $(date +%s) - start ))
+        took=$(( ($(date +%s%N) - start) / 1000000 ))
+        [ -z "${BAD_TIMES:-}" ] || printf '%s\t%s\t%s\n' "$took" "$(basename "$file")" "$(echo "$cmd" | tr '\n' ' ')" >>"$BAD_TIMES"
         why=""
         [ "$rc" = "$exit" ] || why="exit $rc, expected $exit"
         [ "$rc" = 124 ] && why="ran over $secs s"
@@ -82,7 +83,7 @@ for file in "$@"; do
         else
             fail=$((fail + 1))
             echo "bad-inputs: FAILED [rule $rule] $(basename "$file"): $(echo "$cmd" | tr "\n" " ")" | sed "s|$NL|noiselab|g"
-            echo "    $why (${took}s)"
+            echo "    $why (${took} ms)"
             sed 's/^/    stderr: /' "$work/err" | head -3
         fi
     done <"$file"
