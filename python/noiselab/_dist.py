@@ -24,7 +24,11 @@ class Dist:
     not known), function (an expr: map)."""
 
     def __init__(self, spec, function=False):
-        self._d = _CDist(spec, "spec")
+        try:
+            self._d = _CDist(spec, "spec")
+        except Error as e:
+            msg = str(e)
+            raise Error(msg if msg.startswith("spec:") else "spec: " + msg, e.code) from None
         self.function = bool(lib.nl_dist_is_function(self._d.ptr))
         if self.function and not function:
             raise Error("spec: expected a distribution (gauss, laplace, ...), got the nonlinearity %r, which has "

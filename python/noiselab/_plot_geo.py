@@ -7,7 +7,7 @@ from . import _analysis
 from ._args import Error, as_array, as_int, refuse
 from ._krige import _extent
 from ._model import Model
-from ._plot_util import axes, colorbar, finish, legend, length_unit, mpl, overlay_points, text
+from ._plot_util import axes, colorbar, finish, legend, length_unit, mpl, overlay_points, short_spec, text
 
 
 def _vlabel(label, value_unit):
@@ -55,9 +55,9 @@ def variogram(points=None, values=None, field=None, fit=None, model=None, width=
             ax_.annotate("%d" % k, (x, y), xytext=(4, -9), textcoords="offset points", fontsize=7, color="0.3")
     if m is not None:
         h = np.linspace(0, d.max() * 1.05, 240)
-        ax_.plot(h, m.variogram(h, dim=dim), "k-", lw=1.3, label=how + m.spec)
+        ax_.plot(h, m.variogram(h, dim=dim), "k-", lw=1.3, label=how + short_spec(m.spec))
     ax_.set_xlim(0, d.max() * 1.08)
-    ax_.set_ylim(0, max(g.max(), ax_.get_ylim()[1]) * 1.08)
+    ax_.set_ylim(0, max(g.max(), ax_.get_ylim()[1]) * 1.3)  # headroom for the legend
     sq = "%s^2" % vu if vu else "%s^2" % label
     finish(ax_, "distance (%s)" % u, "semivariance (%s)" % sq, title)
     legend(ax_)
@@ -133,7 +133,7 @@ def conditional(realizations, mean, extent, points=None, axes=None, unit=None, l
     ext = _map_extent(extent)
     u = length_unit(unit, 0.0)
     k = len(reals)
-    axs = _axes2(axes, k + 1, (min(9.0, 2.3 * (k + 1) + 0.9), 2.9))
+    axs = _axes2(axes, k + 1, (min(9.0, 2.1 * (k + 1) + 0.9), 2.5 if k + 1 >= 4 else 2.9))
     lo = min(float(mu.min()), min(float(r.min()) for r in reals))
     hi = max(float(mu.max()), max(float(r.max()) for r in reals))
     plt = mpl()

@@ -43,6 +43,33 @@ def length_unit(unit, spacing):
     return "samples" if h is not None and np.all(h == 1.0) else "length units"
 
 
+def per(unit):
+    """The length unit after "per": "sample" for "samples"."""
+    return "sample" if unit == "samples" else unit
+
+
+def value_axis(label, value_unit):
+    """A value axis' label: "<label> (<value unit>)", "arbitrary units"
+    without one."""
+    vu = text("value_unit", value_unit, none=True)
+    return "%s (%s)" % (label, vu or "arbitrary units")
+
+
+def short_spec(spec):
+    """A spec with its numbers to 4 significant digits, for a legend."""
+    import re
+    return re.sub(r"(?<=[=])[-+0-9.eE]+", lambda m: "%.4g" % float(m.group(0)) if _num(m.group(0)) else m.group(0),
+                  spec)
+
+
+def _num(s):
+    try:
+        float(s)
+        return True
+    except ValueError:
+        return False
+
+
 def squared(value_unit):
     """The unit of a variance: "<value unit>^2", or "value^2" without one."""
     value_unit = text("value_unit", value_unit, none=True)
@@ -101,6 +128,10 @@ def data_points(ax):
             v = p.vertices
             if len(v):
                 pts.append(c.get_transform().transform(v))
+    for t in ax.texts:  # annotations written beside the data (variogram's pair counts)
+        xy = getattr(t, "xy", None)
+        if xy is not None:
+            pts.append(ax.transData.transform(np.array([xy], float)))
     for r in ax.patches:
         try:
             x0, y0, w, h = r.get_x(), r.get_y(), r.get_width(), r.get_height()
@@ -125,11 +156,12 @@ def covered(bbox, pts):
 
 
 def _renderer(fig):
-    try:
-        fig.canvas.draw()  # lays the figure out (constrained layout) and resolves the data limits
-        return fig.canvas.get_renderer()
-    except AttributeError:  # a canvas without a renderer of its own: leave the box where matplotlib puts it
-        return None
+    """The figure's renderer, without drawing: a full draw (constrained
+    layout, log axes' tick labels) costs seconds, and the axes keep their
+    place within a few per cent after the layout (place() pads the boxes
+    for it)."""
+    get = getattr(fig.canvas, "get_renderer", None)
+    return get() if get is not None else None
 
 
 def place(ax, make, avoid=()):
@@ -144,7 +176,7 @@ def place(ax, make, avoid=()):
     best, best_loc = None, None
     for loc in _LOCS:
         box = make(loc)
-        bb = box.get_window_extent(r)
+        bb = box.get_window_extent(r).expanded(1.15, 1.15)  # the axes shrink a little in the layout
         score = covered(bb, pts) + sum(1.0 for a in avoid if bb.overlaps(a.get_window_extent(r)))
         box.remove()
         if best is None or score < best:
@@ -153,7 +185,16 @@ def place(ax, make, avoid=()):
             break
     if best <= CLEAR:
         return make(best_loc)
-    return make(("upper left", (1.02, 1.0)))
+    box = make(("upper left", (1.02, 1.0)))
+    axbb = ax.get_window_extent(r)
+    bb = box.get_window_extent(r)
+    if bb.width > 0.45 * axbb.width:  # too wide for the side: above the axes, the title above it
+        box.remove()
+        box = make(("lower left", (0.0, 1.02)))
+        title = ax.get_title()
+        if title:
+            ax.set_title(title, y=1.04 + box.get_window_extent(r).height / axbb.height)
+    return box
 
 
 def legend(ax, avoid=()):

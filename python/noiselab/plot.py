@@ -27,8 +27,8 @@ from ._args import Error, as_array, as_choice, as_fields, as_int, as_spacing, re
 from ._dist import Dist, band_chisq, welch_edf
 from ._krige import _extent
 from ._model import Model
-from ._plot_util import (axes, colorbar, finish, legend, length_unit, mpl, overlay_points, per_dim, squared, text,
-                         textbox)
+from ._plot_util import (axes, colorbar, finish, legend, length_unit, overlay_points, per, per_dim, short_spec,
+                         squared, text, textbox, value_axis)
 from ._plot_geo import conditional, kriging, variogram
 
 __all__ = ["field", "acf", "spectrum", "periodogram_welch", "histogram", "nonlinearity", "variogram", "kriging",
@@ -94,7 +94,7 @@ def field(f, spacing=1.0, origin=None, ax=None, unit=None, label="value", title=
     if dim == 1:
         x = o[0] + np.arange(a.size) * h[0]
         ax.plot(x, a, lw=0.8, color="C0")
-        finish(ax, "position (%s)" % u, label + vu, title)
+        finish(ax, "position (%s)" % u, value_axis(label, value_unit), title)
         if points is not None:
             raise Error("points: expected a 2D or 3D field for points, got 1D")
         return ax
@@ -151,7 +151,7 @@ def acf(fields, model=None, spacing=1.0, max_lag=None, axis="x", ax=None, unit=N
         ax_.fill_between(lag, band[0], band[1], color="C0", alpha=0.22, lw=0, label=band[2])
     ax_.plot(lag, est, color="C0", lw=1.4, label=what)
     if m is not None:
-        ax_.plot(lag, target, "k-", lw=1.0, label="model R: " + m.spec)
+        ax_.plot(lag, target, "k-", lw=1.0, label="model R: " + short_spec(m.spec))
         ax_.plot(lag, expected, "k--", lw=1.0, label="expectation of the estimate")
     ax_.axhline(0.0, color="0.6", lw=0.5, zorder=0)
     finish(ax_, "lag along %s (%s)" % (axis, u), "autocovariance R(lag) (%s)" % squared(value_unit), title)
@@ -178,7 +178,7 @@ def _spectrum_axes(ax, dim, u, value_unit, title, loglog):
     if loglog:
         ax.set_xscale("log")
         ax.set_yscale("log")
-    finish(ax, "frequency (cycles per %s)" % u, "spectral density (%s %s)" % (squared(value_unit), per_dim(u, dim)),
+    finish(ax, "frequency (cycles per %s)" % per(u), "spectral density (%s %s)" % (squared(value_unit), per_dim(u, dim)),
            title)
 
 
@@ -219,13 +219,12 @@ def spectrum(fields, model=None, spacing=1.0, welch=None, ax=None, unit=None, ti
             nu = (2.0 if welch is None else welch_edf(shape, welch)) * K
             lo, hi = _chisq_band(nu, tgt)
             ax_.fill_between(ft[keep], lo[keep], hi[keep], color="C1", alpha=0.25, lw=0,
-                             label="95%% band of the estimate under the model (chi-square, nu = %.3g; approximate)"
-                             % nu)
+                             label="95%% band under the model (chi-square, nu = %.3g; approx.)" % nu)
     keep = _positive(f, p) if loglog else np.isfinite(p)
     ax_.plot(f[keep], p[keep], color="C0", lw=0.7 if welch is None and K == 1 else 1.2, label=what)
     if m is not None:
         keep = _positive(ft, tgt) if loglog else np.isfinite(tgt)
-        ax_.plot(ft[keep], tgt[keep], "k-", lw=1.2, label="target: " + m.spec)
+        ax_.plot(ft[keep], tgt[keep], "k-", lw=1.2, label="target: " + short_spec(m.spec))
     _spectrum_axes(ax_, dim, u, value_unit, title, loglog)
     legend(ax_)
     return ax_
@@ -257,7 +256,7 @@ def periodogram_welch(field, model=None, segment=None, spacing=1.0, ax=None, uni
         ft, tgt = m.periodogram_target(x.shape, spacing)
         fwt, wt = m.welch_target(x.shape, spacing, segment)
         k, kw = _positive(ft, tgt), _positive(fwt, wt)
-        ax_.plot(ft[k], tgt[k], "k-", lw=1.0, label="periodogram's target: " + m.spec)
+        ax_.plot(ft[k], tgt[k], "k-", lw=1.0, label="periodogram's target: " + short_spec(m.spec))
         ax_.plot(fwt[kw], wt[kw], "--", color="C3", lw=1.2, label="Welch's target (on the segment's grid)")
     _spectrum_axes(ax_, x.ndim, u, value_unit, title, True)
     legend(ax_)
@@ -306,8 +305,7 @@ def histogram(fields, against=None, bins=50, ax=None, unit=None, label="value", 
         textbox(ax_, verdict, avoid=boxes)
     else:
         legend(ax_)
-    finish(ax_, label + (" (%s)" % vu if vu else " (value units)"),
-           "probability density (per %s)" % (vu or "value unit"), title)
+    finish(ax_, value_axis(label, vu), "probability density (per %s)" % (vu or "unit of %s" % label), title)
     return ax_
 
 
@@ -354,6 +352,7 @@ def nonlinearity(acf, g, field=None, size=4096, spacing=1.0, ax=None, unit=None,
         f, s = pred["freq"], pred["output_psd"]
         k = _positive(f, s) & (s > 1e-9 * np.nanmax(s))
         ax_.plot(f[k], s[k], "k--", lw=1.2, label=plab)
+        ax_.set_ylim(bottom=max(ax_.get_ylim()[0], 1e-9 * np.nanmax(s)))
         _spectrum_axes(ax_, 1, u, value_unit, title, True)
     legend(ax_)
     return ax_
