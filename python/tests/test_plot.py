@@ -311,3 +311,14 @@ def test_on_given_axes():
 def test_bad_arguments(call, name):
     with pytest.raises(noiselab.Error, match=name):
         call()
+
+
+def test_python_page_example(tmp_path, monkeypatch):
+    """docs/python.md's example of "Figures: noiselab.plot" runs as shown."""
+    import re
+    monkeypatch.chdir(tmp_path)
+    text = open(os.path.join(TOP, "docs", "python.md")).read()
+    section = text[text.index("## Figures: noiselab.plot"):]
+    code = re.findall(r"^```python\n(.*?)^```", section, re.S | re.M)[0]
+    exec(compile(code, "docs/python.md", "exec"), {})
+    assert os.path.getsize("acf-band.png") > 0
