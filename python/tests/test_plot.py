@@ -109,6 +109,8 @@ def test_field():
     cb = im.colorbar
     assert cb is not None and cb.ax.get_ylabel() == "height (mm)"
     np.testing.assert_array_equal(ax.collections[0].get_offsets(), pts)
+    # a grid of Krige.grid: cells of (hi - lo) / n over the extent
+    assert list(nlp.field(f, extent=((0, 48), (10, 26))).images[0].get_extent()) == [0, 48, 10, 26]
     ax1 = nlp.field(f[0], unit="km")
     labelled(ax1, "km")
     np.testing.assert_array_equal(ax1.lines[0].get_ydata(), f[0])
