@@ -27,7 +27,7 @@ from ._args import Error, as_array, as_choice, as_fields, as_int, as_spacing, re
 from ._dist import Dist, band_chisq, welch_edf
 from ._krige import _extent
 from ._model import Model
-from ._plot_util import (axes, colorbar, finish, legend, length_unit, overlay_points, per, per_dim, short_spec,
+from ._plot_util import (axes, colorbar, finish, legend, length_unit, map_figsize, overlay_points, per, per_dim, short_spec,
                          squared, text, textbox, value_axis)
 from ._plot_geo import conditional, kriging, variogram
 
@@ -86,7 +86,11 @@ def field(f, spacing=1.0, origin=None, ax=None, unit=None, label="value", title=
             o = o * dim
         if len(o) != dim or not np.isfinite(o).all():
             refuse("origin", "a number or %d finite numbers, x first" % dim, origin)
-    ax, = axes(ax, figsize=(6, 2.8) if dim == 1 else None)
+    if dim == 1:
+        fs = (6, 2.8)
+    else:
+        fs = map_figsize(a.shape[-2] * h[1] / (a.shape[-1] * h[0]))
+    ax, = axes(ax, figsize=fs)
     if dim == 3:
         k = a.shape[0] // 2
         a = a[k]
