@@ -23,12 +23,12 @@ Bad arguments raise noiselab.Error naming the argument.
 import numpy as np
 
 from . import _analysis, _ensemble
-from ._args import Error, as_array, as_choice, as_fields, as_int, as_spacing, refuse
+from ._args import Error, as_array, as_choice, as_int, as_spacing, refuse
 from ._dist import Dist, band_chisq, welch_edf
 from ._krige import _extent
 from ._model import Model
-from ._plot_util import (axes, colorbar, finish, legend, length_unit, map_figsize, overlay_points, per, per_dim, short_spec,
-                         squared, text, textbox, value_axis)
+from ._plot_util import (axes, colorbar, finish, legend, length_unit, map_figsize, overlay_points, per, per_dim,
+                         short_spec, squared, text, textbox, value_axis)
 from ._plot_geo import conditional, kriging, variogram
 
 __all__ = ["field", "acf", "spectrum", "periodogram_welch", "histogram", "nonlinearity", "variogram", "kriging",
@@ -182,8 +182,8 @@ def _spectrum_axes(ax, dim, u, value_unit, title, loglog):
     if loglog:
         ax.set_xscale("log")
         ax.set_yscale("log")
-    finish(ax, "frequency (cycles per %s)" % per(u), "spectral density (%s %s)" % (squared(value_unit), per_dim(u, dim)),
-           title)
+    finish(ax, "frequency (cycles per %s)" % per(u),
+           "spectral density (%s %s)" % (squared(value_unit), per_dim(u, dim)), title)
 
 
 def _positive(f, *ys):

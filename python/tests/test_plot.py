@@ -178,7 +178,8 @@ def test_spectrum():
     _, tw = noiselab.Model(SPEC).welch_target(512, segment=64)
     np.testing.assert_allclose(blo, noiselab.band_chisq(nu)[0] * tw[1:], **EXACT)
     np.testing.assert_allclose(line(ax, "mean of 2").get_ydata(), noiselab.ensemble_psd(fs, welch=64)[1][1:], **EXACT)
-    assert ax.get_xlabel() == "frequency (cycles per sample)" and ax.get_ylabel() == "spectral density (value^2 samples)"
+    assert ax.get_xlabel() == "frequency (cycles per sample)"
+    assert ax.get_ylabel() == "spectral density (value^2 samples)"
 
 
 def test_periodogram_welch():
