@@ -204,8 +204,12 @@ def spectrum(fields, model=None, spacing=1.0, welch=None, ax=None, unit=None, ti
     noiselab.welch_edf for Welch, times K for a mean (noiselab.band_chisq).
     The band is drawn about the target (the expectation is the target
     smoothed by the Fejer or Hann kernel: approximate where the spectrum is
-    steep over 1/(n h)); a radial profile averages several ordinates and
-    gets no band."""
+    steep over 1/(n h)).  A radial profile (2D, 3D) of the periodogram
+    gets the band of each ring's average: nu = the ring's ordinate count
+    (psd(counts=True)) times K, half of them independent (P(f) = P(-f)),
+    and the spectrum taken constant around the ring (approximate for an
+    anisotropic model); Welch's radial profile gets none (its neighbouring
+    ordinates are correlated by the window)."""
     fl = _fields(fields)
     m = _model(model)
     title = text("title", title, none=True)
@@ -224,6 +228,14 @@ def spectrum(fields, model=None, spacing=1.0, welch=None, ax=None, unit=None, ti
             lo, hi = _chisq_band(nu, tgt)
             ax_.fill_between(ft[keep], lo[keep], hi[keep], color="C1", alpha=0.25, lw=0,
                              label="95%% band under the model (chi-square, nu = %.3g; approx.)" % nu)
+        elif welch is None:  # a ring of c ordinates: about c/2 independent ones, nu = c per field
+            c = _analysis.psd(fl[0], spacing, counts=True)[-1]
+            keep &= c > 0
+            lo, hi = np.full(tgt.shape, np.nan), np.full(tgt.shape, np.nan)
+            for i in np.flatnonzero(keep):
+                lo[i], hi[i] = _chisq_band(c[i] * K, tgt[i])
+            ax_.fill_between(ft[keep], lo[keep], hi[keep], color="C1", alpha=0.25, lw=0,
+                             label="95% band under the model (chi-square per ring; approx.)")
     keep = _positive(f, p) if loglog else np.isfinite(p)
     ax_.plot(f[keep], p[keep], color="C0", lw=0.7 if welch is None and K == 1 else 1.2, label=what)
     if m is not None:
