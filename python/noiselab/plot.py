@@ -328,7 +328,7 @@ def histogram(fields, against=None, bins=50, ax=None, unit=None, label="value", 
 # -- 6. a nonlinearity ---------------------------------------------------------
 
 def nonlinearity(acf, g, field=None, size=4096, spacing=1.0, ax=None, unit=None, title=None, show="spectrum",
-                 terms=24, welch="auto", value_unit=None):
+                 terms=24, welch="auto", value_unit=None, max_lag=None):
     """What g does to a Gaussian field of autocorrelation `acf`: the
     spectrum (show="spectrum", the default) or autocovariance (show="acf")
     of g(X) predicted by noiselab.nonlin's Hermite series (both are what it
@@ -337,7 +337,9 @@ def nonlinearity(acf, g, field=None, size=4096, spacing=1.0, ax=None, unit=None,
     mapped by noiselab.Dist(g).transform (g a law or expr:G, applied to X /
     sd as nonlin does).  The measured spectrum is Welch's (welch="auto":
     segments of size/16, at least 64; an integer: that segment; None: the
-    periodogram)."""
+    periodogram).  show="acf": lags up to max_lag (length units; default
+    four times the lag where the predicted autocovariance first falls
+    below 5% of its variance, at most a quarter of the field)."""
     show = as_choice("show", show, ("spectrum", "acf"))
     title = text("title", title, none=True)
     u = length_unit(unit, spacing)
@@ -353,7 +355,10 @@ def nonlinearity(acf, g, field=None, size=4096, spacing=1.0, ax=None, unit=None,
     nterm = len(pred["hermite_coefficients"])
     plab = "predicted (Hermite, %d terms)" % nterm
     if show == "acf":
-        lag, est = _analysis.acf(y, spacing, max_lag=pred["lag"][-1] / 4 if field is None else None)
+        if max_lag is None:
+            low = np.flatnonzero(np.abs(pred["output_acf"]) < 0.05 * pred["output_acf"][0])
+            max_lag = min(4 * pred["lag"][low[0]] if low.size else np.inf, (y.size // 4) * pred["lag"][1])
+        lag, est = _analysis.acf(y, spacing, max_lag=max_lag)
         k = min(len(lag), len(pred["lag"]))
         ax_.plot(lag, est, color="C0", lw=1.4, label="measured")
         ax_.plot(pred["lag"][:k], pred["output_acf"][:k], "k--", lw=1.2, label=plab)
