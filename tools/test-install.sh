@@ -227,6 +227,16 @@ assert noiselab.__file__.startswith("$pydir"), noiselab.__file__
 maps = [l.split()[-1] for l in open("/proc/self/maps") if "libnoiselab" in l]
 assert maps and all(m.startswith("$libdir") for m in maps), maps
 print(noiselab.synth('fft', acf='markov:scale=8', size=(64, 64), seed=7).std())
+import sys
+assert "matplotlib" not in sys.modules, "import noiselab imported matplotlib"
+try:
+    import matplotlib
+except ImportError:  # noiselab.plot is optional: matplotlib (python3-matplotlib) is not a dependency
+    matplotlib = None
+if matplotlib:
+    matplotlib.use("Agg")
+    import noiselab.plot
+    assert noiselab.plot.__file__.startswith("$pydir"), noiselab.plot.__file__
 EOF
 # (a sanitized library does not load into python3: not under make asan)
 case $EXAMPLE_CFLAGS in

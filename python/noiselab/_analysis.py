@@ -154,7 +154,7 @@ def _welch(welch):
     return 0 if welch is None else as_int("welch", welch, 4, (1 << 63) - 1)
 
 
-def psd(field, spacing=1.0, welch=None, mean=None, grid=None, target=None):
+def psd(field, spacing=1.0, welch=None, mean=None, grid=None, target=None, counts=False):
     """Power spectral density estimate, as ``noiselab psd``.
 
     The periodogram P(f) = (h1...hd / N) |DFT(x - mean)|^2, or with
@@ -174,10 +174,16 @@ def psd(field, spacing=1.0, welch=None, mean=None, grid=None, target=None):
     same layout: returns (freq, psd, target), the column of ``noiselab psd
     --target`` (Model.periodogram_target, Model.welch_target): the sampled
     process's spectrum, aliasing included.
+
+    counts=True appends the number of grid ordinates averaged into each
+    value (float64; 1 in 1D, 0 for an empty radial bin): a radial bin of c
+    periodogram ordinates holds about c/2 independent ones (P(f) = P(-f)
+    for a real field), so its average has about c degrees of freedom.
     """
     v = FieldView(field, spacing, "psd: field")
     _grid(grid)
     welch, mu = _welch(welch), _mean(mean)
+    counts = as_bool("counts", counts)
     m = None if target is None else model_of(target, "target")
     if m is not None and grid is not None:
         raise Error("target: a column beside the profile; expected grid=None with target, got grid=%r" % grid)
@@ -197,6 +203,7 @@ def psd(field, spacing=1.0, welch=None, mean=None, grid=None, target=None):
         k = lib.nl_psd_profile_size(P[0])
         freq, val, cnt, nf = np.empty(k), np.empty(k), ffi.new("size_t[]", max(k, 1)), ffi.new("size_t *")
         check(lib.nl_psd_profile(P[0], _dptr(freq), _dptr(val), cnt, nf))
+        ords = np.array([cnt[i] if P[0].dim > 1 else 1 for i in range(nf[0])], dtype=np.float64)
         if m is not None:
             tgt, nt = np.empty(k), ffi.new("size_t *")
             with planner:
@@ -204,9 +211,8 @@ def psd(field, spacing=1.0, welch=None, mean=None, grid=None, target=None):
     finally:
         if grid != "wrapped":
             lib.nl_field_free(P[0])
-    if m is not None:
-        return freq[:nf[0]], val[:nf[0]], tgt[:nf[0]]
-    return freq[:nf[0]], val[:nf[0]]
+    out = (freq[:nf[0]], val[:nf[0]]) + ((tgt[:nf[0]],) if m is not None else ())
+    return out + (ords,) if counts else out
 
 
 def moments(field):

@@ -7,7 +7,7 @@ from . import _analysis
 from ._args import Error, as_array, as_int, refuse
 from ._krige import _extent
 from ._model import Model
-from ._plot_util import axes, colorbar, finish, legend, length_unit, mpl, overlay_points, short_spec, text
+from ._plot_util import axes, colorbar, finish, legend, length_unit, map_figsize, mpl, overlay_points, short_spec, text
 
 
 def _vlabel(label, value_unit):
@@ -92,7 +92,8 @@ def kriging(estimate, variance, extent, points=None, values=None, axes=None, uni
         raise Error("variance: expected variances >= 0, got %g" % var.min())
     ext = _map_extent(extent)
     u = length_unit(unit, 0.0)
-    a, b = _axes2(axes, 2, (9, 3.6))
+    ratio = (ext[3] - ext[2]) / (ext[1] - ext[0])
+    a, b = _axes2(axes, 2, map_figsize(ratio, 2, 2))
     im = a.imshow(est, origin="lower", extent=ext, cmap=cmap, interpolation="nearest")
     colorbar(a, im, "estimate of %s%s" % (label, " (%s)" % vu if vu else ""))
     overlay_points(a, points, values, im.norm, im.cmap)
@@ -133,7 +134,8 @@ def conditional(realizations, mean, extent, points=None, axes=None, unit=None, l
     ext = _map_extent(extent)
     u = length_unit(unit, 0.0)
     k = len(reals)
-    axs = _axes2(axes, k + 1, (min(9.0, 2.1 * (k + 1) + 0.9), 2.5 if k + 1 >= 4 else 2.9))
+    ratio = (ext[3] - ext[2]) / (ext[1] - ext[0])
+    axs = _axes2(axes, k + 1, map_figsize(ratio, k + 1, 1, min(9.0, 2.4 * (k + 1) + 0.9)))
     lo = min(float(mu.min()), min(float(r.min()) for r in reals))
     hi = max(float(mu.max()), max(float(r.max()) for r in reals))
     plt = mpl()
@@ -143,7 +145,7 @@ def conditional(realizations, mean, extent, points=None, axes=None, unit=None, l
         overlay_points(axj, points)
         axj.set_title("kriging mean" if j == 0 else "realization %d" % j, fontsize="medium")
         finish(axj, "x (%s)" % u, "y (%s)" % u, None)
-    colorbar(axs[0], im, label + (" (%s)" % vu if vu else ""), axes_for=axs)
+    colorbar(axs[-1], im, label + (" (%s)" % vu if vu else ""))
     if title:
         axs[0].figure.suptitle(title)
     return axs

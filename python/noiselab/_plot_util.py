@@ -101,6 +101,16 @@ def axes(ax, n=1, figsize=None, name="ax"):
     return items
 
 
+def map_figsize(ratio, panels=1, colorbars=1, width=None):
+    """A figure size for `panels` maps of height/width `ratio` side by side
+    (with `colorbars` colour bars) in which the maps fill their panels, so
+    that the figure has little blank: about 0.75 inch of y label per panel,
+    0.85 per colour bar and 0.75 of title and x label."""
+    width = width or min(9.0, PANEL[0] * panels)
+    w = (width - 0.75 * panels - 0.85 * colorbars) / panels
+    return width, float(np.clip(w * ratio + 0.75, 2.0, 6.5))
+
+
 def finish(ax, xlabel, ylabel, title):
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
@@ -222,8 +232,11 @@ def textbox(ax, text_, avoid=()):
     return place(ax, make, avoid)
 
 
-def colorbar(ax, mappable, label, axes_for=None):
-    cb = ax.figure.colorbar(mappable, ax=axes_for if axes_for is not None else ax)
+def colorbar(ax, mappable, label):
+    """A labelled colour bar right of ax, as tall as its (aspect-kept) map:
+    an inset of the axes, so that it follows the map's box."""
+    cax = ax.inset_axes([1.04, 0.0, 0.05, 1.0])
+    cb = ax.figure.colorbar(mappable, cax=cax)
     cb.set_label(label)
     return cb
 

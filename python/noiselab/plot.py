@@ -23,12 +23,12 @@ Bad arguments raise noiselab.Error naming the argument.
 import numpy as np
 
 from . import _analysis, _ensemble
-from ._args import Error, as_array, as_choice, as_fields, as_int, as_spacing, refuse
+from ._args import Error, as_array, as_choice, as_int, as_spacing, refuse
 from ._dist import Dist, band_chisq, welch_edf
 from ._krige import _extent
 from ._model import Model
-from ._plot_util import (axes, colorbar, finish, legend, length_unit, overlay_points, per, per_dim, short_spec,
-                         squared, text, textbox, value_axis)
+from ._plot_util import (axes, colorbar, finish, legend, length_unit, map_figsize, overlay_points, per, per_dim,
+                         short_spec, squared, text, textbox, value_axis)
 from ._plot_geo import conditional, kriging, variogram
 
 __all__ = ["field", "acf", "spectrum", "periodogram_welch", "histogram", "nonlinearity", "variogram", "kriging",
@@ -86,7 +86,11 @@ def field(f, spacing=1.0, origin=None, ax=None, unit=None, label="value", title=
             o = o * dim
         if len(o) != dim or not np.isfinite(o).all():
             refuse("origin", "a number or %d finite numbers, x first" % dim, origin)
-    ax, = axes(ax, figsize=(6, 2.8) if dim == 1 else None)
+    if dim == 1:
+        fs = (6, 2.8)
+    else:
+        fs = map_figsize(a.shape[-2] * h[1] / (a.shape[-1] * h[0]))
+    ax, = axes(ax, figsize=fs)
     if dim == 3:
         k = a.shape[0] // 2
         a = a[k]
@@ -178,8 +182,8 @@ def _spectrum_axes(ax, dim, u, value_unit, title, loglog):
     if loglog:
         ax.set_xscale("log")
         ax.set_yscale("log")
-    finish(ax, "frequency (cycles per %s)" % per(u), "spectral density (%s %s)" % (squared(value_unit), per_dim(u, dim)),
-           title)
+    finish(ax, "frequency (cycles per %s)" % per(u),
+           "spectral density (%s %s)" % (squared(value_unit), per_dim(u, dim)), title)
 
 
 def _positive(f, *ys):
@@ -200,8 +204,12 @@ def spectrum(fields, model=None, spacing=1.0, welch=None, ax=None, unit=None, ti
     noiselab.welch_edf for Welch, times K for a mean (noiselab.band_chisq).
     The band is drawn about the target (the expectation is the target
     smoothed by the Fejer or Hann kernel: approximate where the spectrum is
-    steep over 1/(n h)); a radial profile averages several ordinates and
-    gets no band."""
+    steep over 1/(n h)).  A radial profile (2D, 3D) of the periodogram
+    gets the band of each ring's average: nu = the ring's ordinate count
+    (psd(counts=True)) times K, half of them independent (P(f) = P(-f)),
+    and the spectrum taken constant around the ring (approximate for an
+    anisotropic model); Welch's radial profile gets none (its neighbouring
+    ordinates are correlated by the window)."""
     fl = _fields(fields)
     m = _model(model)
     title = text("title", title, none=True)
@@ -220,6 +228,14 @@ def spectrum(fields, model=None, spacing=1.0, welch=None, ax=None, unit=None, ti
             lo, hi = _chisq_band(nu, tgt)
             ax_.fill_between(ft[keep], lo[keep], hi[keep], color="C1", alpha=0.25, lw=0,
                              label="95%% band under the model (chi-square, nu = %.3g; approx.)" % nu)
+        elif welch is None:  # a ring of c ordinates: about c/2 independent ones, nu = c per field
+            c = _analysis.psd(fl[0], spacing, counts=True)[-1]
+            keep &= c > 0
+            lo, hi = np.full(tgt.shape, np.nan), np.full(tgt.shape, np.nan)
+            for i in np.flatnonzero(keep):
+                lo[i], hi[i] = _chisq_band(c[i] * K, tgt[i])
+            ax_.fill_between(ft[keep], lo[keep], hi[keep], color="C1", alpha=0.25, lw=0,
+                             label="95% band under the model (chi-square per ring; approx.)")
     keep = _positive(f, p) if loglog else np.isfinite(p)
     ax_.plot(f[keep], p[keep], color="C0", lw=0.7 if welch is None and K == 1 else 1.2, label=what)
     if m is not None:
@@ -312,7 +328,7 @@ def histogram(fields, against=None, bins=50, ax=None, unit=None, label="value", 
 # -- 6. a nonlinearity ---------------------------------------------------------
 
 def nonlinearity(acf, g, field=None, size=4096, spacing=1.0, ax=None, unit=None, title=None, show="spectrum",
-                 terms=24, welch="auto", value_unit=None):
+                 terms=24, welch="auto", value_unit=None, max_lag=None):
     """What g does to a Gaussian field of autocorrelation `acf`: the
     spectrum (show="spectrum", the default) or autocovariance (show="acf")
     of g(X) predicted by noiselab.nonlin's Hermite series (both are what it
@@ -321,7 +337,9 @@ def nonlinearity(acf, g, field=None, size=4096, spacing=1.0, ax=None, unit=None,
     mapped by noiselab.Dist(g).transform (g a law or expr:G, applied to X /
     sd as nonlin does).  The measured spectrum is Welch's (welch="auto":
     segments of size/16, at least 64; an integer: that segment; None: the
-    periodogram)."""
+    periodogram).  show="acf": lags up to max_lag (length units; default
+    four times the lag where the predicted autocovariance first falls
+    below 5% of its variance, at most a quarter of the field)."""
     show = as_choice("show", show, ("spectrum", "acf"))
     title = text("title", title, none=True)
     u = length_unit(unit, spacing)
@@ -337,7 +355,10 @@ def nonlinearity(acf, g, field=None, size=4096, spacing=1.0, ax=None, unit=None,
     nterm = len(pred["hermite_coefficients"])
     plab = "predicted (Hermite, %d terms)" % nterm
     if show == "acf":
-        lag, est = _analysis.acf(y, spacing, max_lag=pred["lag"][-1] / 4 if field is None else None)
+        if max_lag is None:
+            low = np.flatnonzero(np.abs(pred["output_acf"]) < 0.05 * pred["output_acf"][0])
+            max_lag = min(4 * pred["lag"][low[0]] if low.size else np.inf, (y.size // 4) * pred["lag"][1])
+        lag, est = _analysis.acf(y, spacing, max_lag=max_lag)
         k = min(len(lag), len(pred["lag"]))
         ax_.plot(lag, est, color="C0", lw=1.4, label="measured")
         ax_.plot(pred["lag"][:k], pred["output_acf"][:k], "k--", lw=1.2, label=plab)

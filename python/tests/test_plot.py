@@ -178,7 +178,25 @@ def test_spectrum():
     _, tw = noiselab.Model(SPEC).welch_target(512, segment=64)
     np.testing.assert_allclose(blo, noiselab.band_chisq(nu)[0] * tw[1:], **EXACT)
     np.testing.assert_allclose(line(ax, "mean of 2").get_ydata(), noiselab.ensemble_psd(fs, welch=64)[1][1:], **EXACT)
-    assert ax.get_xlabel() == "frequency (cycles per sample)" and ax.get_ylabel() == "spectral density (value^2 samples)"
+    assert ax.get_xlabel() == "frequency (cycles per sample)"
+    assert ax.get_ylabel() == "spectral density (value^2 samples)"
+
+
+def test_spectrum_radial_band():
+    # a ring of c ordinates: about c/2 independent periodogram ordinates, nu = c
+    # (coverage 0.947 over 200 fields of 64 x 64 and 32 rings, markov:scale=4)
+    x = noiselab.synth("fft", acf=SPEC, size=(32, 32), seed=4)
+    f, p, c = noiselab.psd(x, counts=True)
+    assert c[0] == 1 and c.sum() <= 32 * 32 and np.array_equal(p, noiselab.psd(x)[1], equal_nan=True)
+    assert np.all(noiselab.psd(x[0], counts=True)[2] == 1)
+    ax = nlp.spectrum(x, model=SPEC)
+    _, tgt = noiselab.Model(SPEC).periodogram_target((32, 32))
+    keep = (f > 0) & (c > 0)
+    _, lo, hi = band(ax)
+    np.testing.assert_allclose(lo, [noiselab.band_chisq(k)[0] * t for k, t in zip(c[keep], tgt[keep])], **EXACT)
+    np.testing.assert_allclose(hi, [noiselab.band_chisq(k)[1] * t for k, t in zip(c[keep], tgt[keep])], **EXACT)
+    assert ax.get_ylabel() == "spectral density (value^2 samples^2)"
+    clear(ax)
 
 
 def test_periodogram_welch():
