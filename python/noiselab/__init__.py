@@ -32,6 +32,7 @@ from ._sample import sample
 from ._krige_flavours import Krige, fit  # Krige with block=, transform=, indicator=; fit with variogram=
 from ._ensemble import ensemble_acf, ensemble_hist, ensemble_psd
 from ._model import Model
+from ._dist import Dist, band_chisq, welch_edf
 
 check = check_model  # noiselab.check, as the CLI's verb
 
@@ -39,5 +40,5 @@ __version__ = version()
 __all__ = ["Error", "Plan", "synth", "read", "write", "formats", "models", "version", "acf", "psd", "hist", "moments",
            "check", "check_model", "coeffs", "nonlin", "shape", "krige", "Krige", "CondSim", "condsim", "sample",
            "variogram", "fit", "METHODS", "methods",
-           "ensemble_acf", "ensemble_psd", "ensemble_hist", "Model",
+           "ensemble_acf", "ensemble_psd", "ensemble_hist", "Model", "Dist", "band_chisq", "welch_edf",
            "LIBRARY_PATH"]

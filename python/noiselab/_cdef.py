@@ -184,6 +184,18 @@ const nl_family *nl_family_get(size_t i);
 typedef struct nl_dist nl_dist;
 int nl_dist_parse(const char *spec, nl_dist **out);
 void nl_dist_free(nl_dist *d);
+const char *nl_dist_spec(const nl_dist *d);
+double nl_dist_cdf(const nl_dist *d, double y);
+double nl_dist_pdf(const nl_dist *d, double y);
+double nl_dist_quantile(const nl_dist *d, double u);
+double nl_dist_transform(const nl_dist *d, double x);
+int nl_dist_is_function(const nl_dist *d);
+double nl_dist_mean(const nl_dist *d);
+double nl_dist_variance(const nl_dist *d);
+
+/* analysis/bands.h */
+int nl_band_chisq(double nu, double *lo, double *hi);
+int nl_welch_edf(int dim, const size_t *n, size_t S, double *nu);
 
 /* synth/fft.h */
 typedef struct nl_synth_fft_plan nl_synth_fft_plan;

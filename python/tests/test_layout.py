@@ -19,7 +19,7 @@ HEADERS = ["core/version.h", "core/nl_error.h", "core/field.h", "core/mem.h", "c
            "core/dist.h", "core/wk.h", "synth/fft.h", "synth/circulant.h", "synth/cholesky.h", "synth/subdiv.h",
            "synth/midpoint.h", "synth/faulting.h", "synth/sparse.h", "synth/lattice.h", "synth/method.h", "synth/shape.h",
            "analysis/acf.h", "analysis/psd.h", "analysis/welch.h", "analysis/radial.h", "analysis/spectral.h",
-           "analysis/fftshift.h", "analysis/hist.h", "analysis/gof_boot.h", "analysis/ensemble.h", "analysis/check.h", "analysis/nonlin.h", "analysis/krige.h",
+           "analysis/fftshift.h", "analysis/bands.h", "analysis/hist.h", "analysis/gof_boot.h", "analysis/ensemble.h", "analysis/check.h", "analysis/nonlin.h", "analysis/krige.h",
            "analysis/krige_local.h", "analysis/krige_flavours.h", "analysis/condsim.h", "core/field_sample.h", "core/io_points.h", "analysis/variogram.h", "analysis/fit.h"]
 
 
