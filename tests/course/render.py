@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""Render executed notebooks to HTML pages that work offline, and an index of them.
+
+usage: tests/course/render.py OUTDIR NOTEBOOK.ipynb ...
+
+Each executed notebook (tests/course/run.py --out) becomes OUTDIR/NAME.html
+(nbconvert's lab template, figures embedded as data: PNGs), and OUTDIR/index.html
+lists them, one line each: the notebook's title and the first line under it.
+nbconvert's pages load require.js and MathJax from URLs: here they name copies
+beside the pages (OUTDIR/require.min.js, OUTDIR/mathjax/ a link to Debian's
+libjs-mathjax), so the folder opens in a browser with no network.  The widget
+state nbclient records (empty with ipywidgets 6) is dropped, since the page
+would otherwise fetch the widget manager from unpkg.com; each page says,
+above the notebook, that its sliders move only in Jupyter and that its
+figures are drawn at the sliders' defaults.
+"""
+import html
+import os
+import re
+import shutil
+import sys
+
+REQUIRE_JS = "/usr/share/javascript/requirejs/require.min.js"   # Debian's libjs-requirejs
+MATHJAX_DIR = "/usr/share/javascript/mathjax"                    # Debian's libjs-mathjax
+
+def note_cell(nbformat):
+    text = ("*A rendered copy of the notebook: its sliders move only when the notebook runs in "
+            "Jupyter (docs/course/README.md says how); each figure here is drawn at the slider's "
+            "default value.*")
+    return nbformat.v4.new_markdown_cell(text)
+
+
+def title_and_line(nb, fallback):
+    """The notebook's first heading and the first line of text after it."""
+    for cell in nb.cells:
+        if cell.cell_type != "markdown":
+            continue
+        lines = [ln.strip() for ln in cell.source.splitlines() if ln.strip()]
+        heads = [i for i, ln in enumerate(lines) if ln.startswith("#")]
+        if not heads:
+            continue
+        title = lines[heads[0]].lstrip("#").strip()
+        rest = [ln for ln in lines[heads[0] + 1:] if not ln.startswith("#")]
+        return title, (rest[0] if rest else "")
+    return fallback, ""
+
+
+def plain(md):
+    """A markdown line as plain text for the index: links, emphasis and code marks dropped."""
+    md = re.sub(r"\[([^\]]*)\]\([^)]*\)", r"\1", md)
+    return re.sub(r"[*_`]", "", md)
+
+
+def main(argv):
+    if len(argv) < 2:
+        print("usage: render.py OUTDIR NOTEBOOK.ipynb ...", file=sys.stderr)
+        return 2
+    import nbformat
+    from nbconvert import HTMLExporter
+
+    out = argv[0]
+    os.makedirs(out, exist_ok=True)
+    shutil.copyfile(REQUIRE_JS, os.path.join(out, "require.min.js"))
+    link = os.path.join(out, "mathjax")
+    if not os.path.islink(link):
+        os.symlink(MATHJAX_DIR, link)
+    exporter = HTMLExporter(require_js_url="require.min.js",
+                            mathjax_url="mathjax/MathJax.js?config=TeX-AMS_CHTML-full,Safe")
+    rows = []
+    for path in argv[1:]:
+        name = os.path.splitext(os.path.basename(path))[0]
+        nb = nbformat.read(path, as_version=4)
+        nb.metadata.pop("widgets", None)
+        title, first = title_and_line(nb, name)
+        heading = next((i for i, c in enumerate(nb.cells) if c.cell_type == "markdown"), -1)
+        nb.cells.insert(heading + 1, note_cell(nbformat))
+        body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": title}})
+        with open(os.path.join(out, name + ".html"), "w", encoding="utf-8") as f:
+            f.write(body)
+        rows.append('<li><a href="%s.html">%s</a>: %s</li>' % (
+            html.escape(name), html.escape(title), html.escape(plain(first))))
+        print("rendered %s.html" % name)
+    with open(os.path.join(out, "index.html"), "w", encoding="utf-8") as f:
+        f.write("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+                "<title>noiselab: a course in stationary random fields</title></head>\n<body>\n"
+                "<h1>A course in stationary random fields</h1>\n"
+                "<p>The course's notebooks, executed and rendered. Their sliders move only when a notebook "
+                "runs in Jupyter (docs/course/README.md says how to start it); on these pages each figure "
+                "is drawn at its slider's default value.</p>\n<ol>\n%s\n</ol>\n</body></html>\n"
+                % "\n".join(rows))
+    print("rendered index.html (%d notebooks)" % len(rows))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
