@@ -8,8 +8,8 @@ kernel "python3" whose working folder is the notebook's own (docs/course for
 the course), with the tree's package first on PYTHONPATH; NOISELAB_LIB and
 NOISELAB pass through to the kernel as they are.  N notebooks run at once
 (default 2, the machine's cores), each in a process of its own, within a
-budget of S seconds (default 60) counted from the kernel's start to the last
-cell's end.  One line per notebook: its name, seconds, cells run, ok or
+budget of S seconds (default 60) counted from the first cell's start to the
+last cell's end (the kernel's start is not the notebook's: it is not counted).  One line per notebook: its name, seconds, cells run, ok or
 FAILED/OVERRUN, then for a failure the failing cell's first lines and the
 exception's last line.  --out DIR writes each executed notebook, outputs and
 all, to DIR/NAME.ipynb (make course renders those).  Exit status: 0 when
@@ -28,7 +28,7 @@ import time
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 # the kernel's start and shutdown, beyond the cells' budget, before the
 # runner gives up on a notebook's process altogether
-GRACE_S = 30
+GRACE_S = 60
 
 
 def kernel_env():
@@ -56,19 +56,20 @@ def run_one(path, budget, out):
             return super().on_comm_open_jupyter_widget(msg)
 
         async def async_execute_cell(self, cell, cell_index, *args, **kwargs):
+            if self.t0 is None:
+                self.t0 = time.monotonic()
             self.current_index = cell_index
             return await super().async_execute_cell(cell, cell_index, *args, **kwargs)
 
     nb = nbformat.read(path, as_version=4)
-    t0 = time.monotonic()
 
     def remaining(cell):
         # each cell may use what the notebook's budget has left
-        return max(1, math.ceil(budget - (time.monotonic() - t0)))
+        return max(1, math.ceil(budget - (time.monotonic() - client.t0)))
 
     client = Client(nb, kernel_name="python3", timeout_func=remaining,
                     resources={"metadata": {"path": os.path.dirname(os.path.abspath(path))}})
-    client.current_index = None
+    client.current_index, client.t0 = None, None
     res = {"status": "ok", "cells": 0, "why": "", "source": ""}
     try:
         client.execute()
@@ -85,7 +86,7 @@ def run_one(path, budget, out):
     except Exception as e:  # a notebook that does not parse, a kernel that does not start
         res["status"] = "FAILED"
         res["why"] = "%s: %s" % (type(e).__name__, str(e).strip().splitlines()[-1] if str(e).strip() else "")
-    res["seconds"] = time.monotonic() - t0
+    res["seconds"] = time.monotonic() - client.t0 if client.t0 is not None else 0.0
     code = [i for i, c in enumerate(nb.cells) if c.cell_type == "code"]
     res["total"] = len(code)
     res["cells"] = sum(1 for i in code if nb.cells[i].get("execution_count") is not None)

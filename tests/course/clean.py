@@ -1,0 +1,89 @@
+#!/usr/bin/python3
+"""Check committed course notebooks without running them: clean, and shaped as a lesson.
+
+usage: tests/course/clean.py [NOTEBOOK.ipynb ...]   (default: every docs/course/*.ipynb)
+
+A notebook passes when it
+  - is valid nbformat 4 and names the kernel "python3" (if it names one);
+  - carries no outputs, no execution counts and no widget state (committed
+    notebooks are stripped: outputs are made by the runner, not stored);
+  - has a slider: a code cell calling widgets.interact with a FloatSlider,
+    IntSlider or SelectionSlider;
+  - has at least two exercise checks: code cells with an `assert` statement;
+  - ends with references: a markdown heading "References";
+  - links, from its markdown, only to files that exist (relative links).
+One line per notebook (ok, or FAILED and what is wrong); exit status 0 when
+all pass, 1 otherwise, 2 for bad usage.  It takes well under a second.
+"""
+import glob
+import os
+import re
+import sys
+
+TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SLIDER = re.compile(r"widgets\.interact\s*\((?s:.*)\b(Float|Int|Selection)Slider\s*\(")
+ASSERT = re.compile(r"^\s*assert\b", re.M)
+REFERENCES = re.compile(r"^#+\s*References\b", re.M | re.I)
+LINK = re.compile(r"\]\(([^)#:\s]+)(?:#[^)]*)?\)")
+
+
+def problems(path):
+    """What is wrong with one notebook, as short sentences (none: it passes)."""
+    import nbformat
+    try:
+        nb = nbformat.read(path, as_version=nbformat.NO_CONVERT)
+        nbformat.validate(nb)
+    except Exception as e:  # not JSON, not a notebook, not valid
+        return ["not a valid notebook: %s" % str(e).strip().splitlines()[0]]
+    out = []
+    if nb.nbformat != 4:
+        out.append("nbformat %d, expected 4" % nb.nbformat)
+    kernel = nb.metadata.get("kernelspec", {}).get("name")
+    if kernel not in (None, "python3"):
+        out.append('kernel "%s", expected "python3"' % kernel)
+    code = [(i, c) for i, c in enumerate(nb.cells) if c.cell_type == "code"]
+    with_out = [i for i, c in code if c.get("outputs")]
+    counted = [i for i, c in code if c.get("execution_count") is not None]
+    if with_out:
+        out.append("outputs committed in cells %s (clear them)" % with_out[:8])
+    if counted:
+        out.append("execution counts committed in cells %s (clear them)" % counted[:8])
+    if "widgets" in nb.metadata:
+        out.append("widget state committed in the notebook's metadata (clear it)")
+    if not any(SLIDER.search(c.source) for _, c in code):
+        out.append("no slider: no code cell calls widgets.interact with a FloatSlider/IntSlider")
+    checks = sum(1 for _, c in code if ASSERT.search(c.source))
+    if checks < 2:
+        out.append("%d exercise checks (code cells with assert), expected at least 2" % checks)
+    md = [c.source for c in nb.cells if c.cell_type == "markdown"]
+    if not any(REFERENCES.search(s) for s in md):
+        out.append('no "References" heading')
+    here = os.path.dirname(os.path.abspath(path))
+    for s in md:
+        for link in LINK.findall(s):
+            if not os.path.exists(os.path.join(here, link)):
+                out.append("links to %s, which does not exist" % link)
+    return out
+
+
+def main(argv):
+    if any(a.startswith("-") for a in argv):
+        print("usage: clean.py [NOTEBOOK.ipynb ...]", file=sys.stderr)
+        return 2
+    paths = argv or sorted(glob.glob(os.path.join(TOP, "docs", "course", "*.ipynb")))
+    bad = 0
+    for p in paths:
+        if not os.path.isfile(p):
+            print("clean.py: %s: no such notebook" % p, file=sys.stderr)
+            return 2
+        why = problems(p)
+        bad += bool(why)
+        print("%-7s %s" % ("FAILED" if why else "ok", os.path.basename(p)))
+        for w in why:
+            print("        " + w)
+    print("course notebooks' shape: %d notebooks, %d failed" % (len(paths), bad))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
