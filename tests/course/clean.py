@@ -2,6 +2,7 @@
 """Check committed course notebooks without running them: clean, and shaped as a lesson.
 
 usage: tests/course/clean.py [NOTEBOOK.ipynb ...]   (default: every docs/course/*.ipynb)
+       tests/course/clean.py --strip NOTEBOOK.ipynb ...
 
 A notebook passes when it
   - is valid nbformat 4 and names the kernel "python3" (if it names one);
@@ -14,6 +15,8 @@ A notebook passes when it
   - links, from its markdown, only to files that exist (relative links).
 One line per notebook (ok, or FAILED and what is wrong); exit status 0 when
 all pass, 1 otherwise, 2 for bad usage.  It takes well under a second.
+--strip rewrites the notebooks given without their outputs, execution counts
+and widget state (what to do before committing one), then checks them.
 """
 import glob
 import os
@@ -66,9 +69,22 @@ def problems(path):
     return out
 
 
+def strip(path):
+    """Rewrite a notebook without outputs, execution counts and widget state."""
+    import nbformat
+    nb = nbformat.read(path, as_version=nbformat.NO_CONVERT)
+    for c in nb.cells:
+        if c.cell_type == "code":
+            c.outputs, c.execution_count = [], None
+    nb.metadata.pop("widgets", None)
+    nbformat.write(nb, path)
+
+
 def main(argv):
-    if any(a.startswith("-") for a in argv):
-        print("usage: clean.py [NOTEBOOK.ipynb ...]", file=sys.stderr)
+    do_strip = argv[:1] == ["--strip"]
+    argv = argv[1:] if do_strip else argv
+    if any(a.startswith("-") for a in argv) or (do_strip and not argv):
+        print("usage: clean.py [--strip] [NOTEBOOK.ipynb ...]", file=sys.stderr)
         return 2
     paths = argv or sorted(glob.glob(os.path.join(TOP, "docs", "course", "*.ipynb")))
     bad = 0
@@ -76,6 +92,8 @@ def main(argv):
         if not os.path.isfile(p):
             print("clean.py: %s: no such notebook" % p, file=sys.stderr)
             return 2
+        if do_strip:
+            strip(p)
         why = problems(p)
         bad += bool(why)
         print("%-7s %s" % ("FAILED" if why else "ok", os.path.basename(p)))

@@ -95,11 +95,19 @@ def test_clean_check(runs, tmp_path):
     no_slider = variant(tmp_path, "no-slider.ipynb", lambda nb: nb.cells.remove(code_cell(nb, "interact")))
     one_check = variant(tmp_path, "one-check.ipynb", lambda nb: nb.cells.remove(code_cell(nb, "assert abs(answer_2")))
     no_refs = variant(tmp_path, "no-refs.ipynb", lambda nb: nb.cells.pop())
-    rc, text = tool("clean.py", no_slider, one_check, no_refs)
+    bad_link = variant(tmp_path, "bad-link.ipynb",
+                       lambda nb: nb.cells.append(nbformat.v4.new_markdown_cell("[gone](no-such-page.md)")))
+    rc, text = tool("clean.py", no_slider, one_check, no_refs, bad_link)
     assert rc == 1, text
     assert "no slider" in report(text, "no-slider.ipynb"), text
     assert "1 exercise checks" in report(text, "one-check.ipynb"), text
     assert 'no "References"' in report(text, "no-refs.ipynb"), text
+    assert "links to no-such-page.md" in report(text, "bad-link.ipynb"), text
+    # --strip leaves nothing of the run behind (the copy's relative links point nowhere from tmp_path)
+    executed = tmp_path / "executed.ipynb"
+    executed.write_bytes((runs["out"] / "tiny.ipynb").read_bytes())
+    rc, text = tool("clean.py", "--strip", executed)
+    assert "committed" not in text and "links to ../../docs/models.md" in text, text
 
 
 def test_rendered_page_opens_clean_offline(runs, tmp_path):
