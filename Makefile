@@ -247,7 +247,7 @@ course: $(BIN) $(SOLIB)
 ifeq ($(COURSE_NB),)
 	@echo "course: docs/course has no notebooks yet: nothing to run"
 else
-	$(PYTHON) tests/course/clean.py $(COURSE_NB)
+	$(PYTHON) tests/course/clean.py
 	rm -rf $(COURSE) && NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) \
 	    $(PYTHON) tests/course/run.py --out $(COURSE) $(COURSE_NB)
 	$(PYTHON) tests/course/render.py $(COURSE)/html $(addprefix $(COURSE)/,$(notdir $(COURSE_NB)))

@@ -13,6 +13,7 @@ A notebook passes when it
   - has at least two exercise checks: code cells with an `assert` statement;
   - ends with references: a markdown heading "References";
   - links, from its markdown, only to files that exist (relative links).
+With no notebook named, docs/course/README.md must also list each of them.
 One line per notebook (ok, or FAILED and what is wrong); exit status 0 when
 all pass, 1 otherwise, 2 for bad usage.  It takes well under a second.
 --strip rewrites the notebooks given without their outputs, execution counts
@@ -69,6 +70,22 @@ def problems(path):
     return out
 
 
+def index_problems(paths):
+    """docs/course/README.md, the course's index, must link to every notebook of
+    docs/course; a link to a notebook not (yet) there is only reported.  The
+    number of failures (0 or 1)."""
+    readme = os.path.join(TOP, "docs", "course", "README.md")
+    with open(readme, encoding="utf-8") as f:
+        links = set(LINK.findall(f.read()))
+    missing = [os.path.basename(p) for p in paths if os.path.basename(p) not in links]
+    for link in sorted(links):
+        if link.endswith(".ipynb") and not os.path.exists(os.path.join(os.path.dirname(readme), link)):
+            print("note    docs/course/README.md lists %s, which is not there" % link)
+    if missing:
+        print("FAILED  docs/course/README.md does not list %s" % ", ".join(missing))
+    return 1 if missing else 0
+
+
 def strip(path):
     """Rewrite a notebook without outputs, execution counts and widget state."""
     import nbformat
@@ -99,6 +116,8 @@ def main(argv):
         print("%-7s %s" % ("FAILED" if why else "ok", os.path.basename(p)))
         for w in why:
             print("        " + w)
+    if not argv:
+        bad += index_problems(paths)
     print("course notebooks' shape: %d notebooks, %d failed" % (len(paths), bad))
     return 1 if bad else 0
 
