@@ -5,7 +5,8 @@ usage: tests/course/render.py OUTDIR NOTEBOOK.ipynb ...
 
 Each executed notebook (tests/course/run.py --out) becomes OUTDIR/NAME.html
 (nbconvert's lab template, figures embedded as data: PNGs), and OUTDIR/index.html
-lists them, one line each: the notebook's title and the first line under it.
+lists them, one line each: the notebook's title and what it teaches (the
+table of docs/course/README.md, else the notebook's first sentence).
 nbconvert's pages load require.js and MathJax from URLs: here they name copies
 beside the pages (OUTDIR/require.min.js, OUTDIR/mathjax/ a link to Debian's
 libjs-mathjax), so the folder opens in a browser with no network.  The widget
@@ -30,8 +31,23 @@ def note_cell(nbformat):
     return nbformat.v4.new_markdown_cell(text)
 
 
+def readme_lines():
+    """What each notebook teaches, from the table of docs/course/README.md: {name.ipynb: text}."""
+    top = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    rows = {}
+    try:
+        with open(os.path.join(top, "docs", "course", "README.md"), encoding="utf-8") as f:
+            for ln in f:
+                m = re.match(r"\|\s*\[([^\]]+\.ipynb)\]\([^)]*\)\s*\|(.*)\|\s*$", ln)
+                if m:
+                    rows[m.group(1)] = m.group(2).strip()
+    except OSError:
+        pass
+    return rows
+
+
 def title_and_line(nb, fallback):
-    """The notebook's first heading and the first line of text after it."""
+    """The notebook's first heading and the first sentence of text after it."""
     for cell in nb.cells:
         if cell.cell_type != "markdown":
             continue
@@ -40,15 +56,15 @@ def title_and_line(nb, fallback):
         if not heads:
             continue
         title = lines[heads[0]].lstrip("#").strip()
-        rest = [ln for ln in lines[heads[0] + 1:] if not ln.startswith("#")]
-        return title, (rest[0] if rest else "")
+        rest = " ".join(ln for ln in lines[heads[0] + 1:] if not ln.startswith("#"))
+        return title, re.split(r"(?<=\.)\s", rest, maxsplit=1)[0]
     return fallback, ""
 
 
 def plain(md):
-    """A markdown line as plain text for the index: links, emphasis and code marks dropped."""
+    """A markdown line as plain text for the index: links, emphasis, code and math marks dropped."""
     md = re.sub(r"\[([^\]]*)\]\([^)]*\)", r"\1", md)
-    return re.sub(r"[*_`]", "", md)
+    return re.sub(r"[*_`$]|\\(?=[a-zA-Z])", "", md)
 
 
 def main(argv):
@@ -66,12 +82,13 @@ def main(argv):
         os.symlink(MATHJAX_DIR, link)
     exporter = HTMLExporter(require_js_url="require.min.js",
                             mathjax_url="mathjax/MathJax.js?config=TeX-AMS_CHTML-full,Safe")
-    rows = []
+    rows, teaches = [], readme_lines()
     for path in argv[1:]:
         name = os.path.splitext(os.path.basename(path))[0]
         nb = nbformat.read(path, as_version=4)
         nb.metadata.pop("widgets", None)
         title, first = title_and_line(nb, name)
+        first = teaches.get(name + ".ipynb", first)
         heading = next((i for i, c in enumerate(nb.cells) if c.cell_type == "markdown"), -1)
         nb.cells.insert(heading + 1, note_cell(nbformat))
         body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": title}})
@@ -82,7 +99,9 @@ def main(argv):
         print("rendered %s.html" % name)
     with open(os.path.join(out, "index.html"), "w", encoding="utf-8") as f:
         f.write("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-                "<title>noiselab: a course in stationary random fields</title></head>\n<body>\n"
+                "<title>noiselab: a course in stationary random fields</title>\n"
+                "<style>body { font-family: sans-serif; max-width: 60em; margin: 2em auto; line-height: 1.5 }"
+                " li { margin-bottom: 0.6em }</style></head>\n<body>\n"
                 "<h1>A course in stationary random fields</h1>\n"
                 "<p>The course's notebooks, executed and rendered. Their sliders move only when a notebook "
                 "runs in Jupyter (docs/course/README.md says how to start it); on these pages each figure "
