@@ -105,7 +105,7 @@ def main(argv):
                 "<h1>A course in stationary random fields</h1>\n"
                 "<p>The course's notebooks, executed and rendered. Their sliders move only when a notebook "
                 "runs in Jupyter (docs/course/README.md says how to start it); on these pages each figure "
-                "is drawn at its slider's default value.</p>\n<ol>\n%s\n</ol>\n</body></html>\n"
+                "is drawn at its slider's default value.</p>\n<ul>\n%s\n</ul>\n</body></html>\n"
                 % "\n".join(rows))
     print("rendered index.html (%d notebooks)" % len(rows))
     return 0
