@@ -7,8 +7,9 @@ Each page is loaded from its file (no network is needed or used: the pages
 must carry or link what they load).  A page fails on any console error
 (console.error, an uncaught exception, a resource that did not load: the
 browser logs each as an error), on an <img> that did not load (naturalWidth
-0), or when it shows no figure at all (no loaded <img>; pages named with
---no-figure-ok, such as an index, are spared that rule).  --shots DIR saves a
+0), on a link to a local file that does not exist, or when it shows no
+figure at all (no loaded <img>; pages named with --no-figure-ok, such as an
+index, are spared that rule).  --shots DIR saves a
 screenshot of each page (the first 6000 pixels of it, 1000 wide) to
 DIR/NAME.png.  One line per page; exit status 0 when every page passed, 1
 otherwise, 2 for bad usage.
@@ -27,6 +28,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import urllib.parse
 
 CHROMIUM = os.environ.get("CHROMIUM", "chromium")
 WIDTH, MAX_HEIGHT = 1000, 6000
@@ -145,6 +147,21 @@ IMAGES_JS = """JSON.stringify(Array.from(document.images).map(function (i) {
     return [i.src.slice(0, 60), i.complete, i.naturalWidth]; }))"""
 
 
+LINKS_JS = """JSON.stringify(Array.from(document.links).map(function (a) { return a.href; }))"""
+
+
+def dead_links(b):
+    """The page's links to local files that do not exist."""
+    res = b.call("Runtime.evaluate", session=True, expression=LINKS_JS, returnByValue=True)
+    out = []
+    for href in json.loads(res["result"]["value"]):
+        if href.startswith("file://"):
+            path = urllib.parse.unquote(urllib.parse.urlsplit(href).path)
+            if not os.path.exists(path):
+                out.append("dead link: %s" % path)
+    return out
+
+
 def visit(b, path, shots):
     """Load one page, let it settle; return its problems and its loaded figures."""
     b.events = []
@@ -174,6 +191,7 @@ def visit(b, path, shots):
     res = b.call("Runtime.evaluate", session=True, expression=IMAGES_JS, returnByValue=True)
     images = json.loads(res["result"]["value"])
     problems += ["<img> not loaded: %s" % src for src, complete, w in images if w == 0]
+    problems += dead_links(b)
     if shots:
         size = b.call("Page.getLayoutMetrics", session=True)["cssContentSize"]
         h = min(MAX_HEIGHT, max(1, int(size["height"])))

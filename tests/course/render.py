@@ -13,7 +13,9 @@ libjs-mathjax), so the folder opens in a browser with no network.  The widget
 state nbclient records (empty with ipywidgets 6) is dropped, since the page
 would otherwise fetch the widget manager from unpkg.com; each page says,
 above the notebook, that its sliders move only in Jupyter and that its
-figures are drawn at the sliders' defaults.
+figures are drawn at the sliders' defaults.  The notebooks' relative links,
+written for docs/course/, are rewritten to work from OUTDIR: a link to a
+course notebook goes to its page, any other to the file in the tree.
 """
 import html
 import os
@@ -23,6 +25,8 @@ import sys
 
 REQUIRE_JS = "/usr/share/javascript/requirejs/require.min.js"   # Debian's libjs-requirejs
 MATHJAX_DIR = "/usr/share/javascript/mathjax"                    # Debian's libjs-mathjax
+TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SRC = os.path.join(TOP, "docs", "course")  # where the notebooks' relative links start
 
 def note_cell(nbformat):
     text = ("*A rendered copy of the notebook: its sliders move only when the notebook runs in "
@@ -33,10 +37,9 @@ def note_cell(nbformat):
 
 def readme_lines():
     """What each notebook teaches, from the table of docs/course/README.md: {name.ipynb: text}."""
-    top = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     rows = {}
     try:
-        with open(os.path.join(top, "docs", "course", "README.md"), encoding="utf-8") as f:
+        with open(os.path.join(SRC, "README.md"), encoding="utf-8") as f:
             for ln in f:
                 m = re.match(r"\|\s*\[([^\]]+\.ipynb)\]\([^)]*\)\s*\|(.*)\|\s*$", ln)
                 if m:
@@ -59,6 +62,22 @@ def title_and_line(nb, fallback):
         rest = " ".join(ln for ln in lines[heads[0] + 1:] if not ln.startswith("#"))
         return title, re.split(r"(?<=\.)\s", rest, maxsplit=1)[0]
     return fallback, ""
+
+
+def relink(nb, src, out):
+    """Relative links of the markdown cells, written for the notebook's folder src,
+    made to work from out: a notebook of the course becomes its page, anything
+    else (../models.md) the path to the tree's file."""
+    def fix(m):
+        link, anchor = m.group(1), m.group(2) or ""
+        if re.match(r"[a-z]+:", link):
+            return m.group(0)
+        if link.endswith(".ipynb") and os.path.dirname(link) == "":
+            return "](%s.html%s)" % (link[:-len(".ipynb")], anchor)
+        return "](%s%s)" % (os.path.relpath(os.path.join(src, link), out), anchor)
+    for cell in nb.cells:
+        if cell.cell_type == "markdown":
+            cell.source = re.sub(r"\]\(([^)#\s]+)(#[^)\s]*)?\)", fix, cell.source)
 
 
 def plain(md):
@@ -87,6 +106,7 @@ def main(argv):
         name = os.path.splitext(os.path.basename(path))[0]
         nb = nbformat.read(path, as_version=4)
         nb.metadata.pop("widgets", None)
+        relink(nb, SRC, out)
         title, first = title_and_line(nb, name)
         first = teaches.get(name + ".ipynb", first)
         heading = next((i for i, c in enumerate(nb.cells) if c.cell_type == "markdown"), -1)

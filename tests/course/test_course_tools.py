@@ -129,13 +129,14 @@ def test_rendered_page_opens_clean_offline(runs, tmp_path):
 def test_browser_check_fails_broken_pages():
     pages = os.path.join(HERE, "pages")
     names = ["good.html", "broken-img.html", "console-error.html", "uncaught.html", "missing-script.html",
-             "no-figure.html"]
+             "no-figure.html", "dead-link.html"]
     rc, text = tool("browser.py", *[os.path.join(pages, n) for n in names])
     assert rc == 1, text
     assert report(text, "good.html").startswith("ok"), text
     want = {"broken-img.html": "<img> not loaded", "console-error.html": "a crafted console error",
             "uncaught.html": "uncaught: Error: a crafted exception",
-            "missing-script.html": "no-such-script.js", "no-figure.html": "no figure on the page"}
+            "missing-script.html": "no-such-script.js", "no-figure.html": "no figure on the page",
+            "dead-link.html": "dead link: " + os.path.join(pages, "no-such-page.html")}
     for name, why in want.items():
         r = report(text, name)
         assert r.startswith("FAILED") and why in r, text
