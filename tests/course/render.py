@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Render executed notebooks to HTML pages that work offline, and an index of them.
 
-usage: tests/course/render.py OUTDIR NOTEBOOK.ipynb ...
+usage: tests/course/render.py [--src DIR] OUTDIR NOTEBOOK.ipynb ...
 
 Each executed notebook (tests/course/run.py --out) becomes OUTDIR/NAME.html
 (nbconvert's lab template, figures embedded as data: PNGs), and OUTDIR/index.html
@@ -14,8 +14,9 @@ state nbclient records (empty with ipywidgets 6) is dropped, since the page
 would otherwise fetch the widget manager from unpkg.com; each page says,
 above the notebook, that its sliders move only in Jupyter and that its
 figures are drawn at the sliders' defaults.  The notebooks' relative links,
-written for docs/course/, are rewritten to work from OUTDIR: a link to a
-course notebook goes to its page, any other to the file in the tree.
+written for their folder (--src, default docs/course/), are rewritten to
+work from OUTDIR: a link to a course notebook goes to its page, any other
+to the file in the tree.
 """
 import html
 import os
@@ -87,8 +88,11 @@ def plain(md):
 
 
 def main(argv):
-    if len(argv) < 2:
-        print("usage: render.py OUTDIR NOTEBOOK.ipynb ...", file=sys.stderr)
+    src = SRC
+    if argv[:1] == ["--src"] and len(argv) > 1:
+        src, argv = os.path.abspath(argv[1]), argv[2:]
+    if len(argv) < 2 or argv[0].startswith("-"):
+        print("usage: render.py [--src DIR] OUTDIR NOTEBOOK.ipynb ...", file=sys.stderr)
         return 2
     import nbformat
     from nbconvert import HTMLExporter
@@ -106,7 +110,7 @@ def main(argv):
         name = os.path.splitext(os.path.basename(path))[0]
         nb = nbformat.read(path, as_version=4)
         nb.metadata.pop("widgets", None)
-        relink(nb, SRC, out)
+        relink(nb, src, out)
         title, first = title_and_line(nb, name)
         first = teaches.get(name + ".ipynb", first)
         heading = next((i for i, c in enumerate(nb.cells) if c.cell_type == "markdown"), -1)

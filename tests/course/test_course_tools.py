@@ -114,7 +114,7 @@ def test_rendered_page_opens_clean_offline(runs, tmp_path):
     """tiny's executed copy rendered: the page loads require.js and MathJax from
     beside it (the network is not needed) and shows its figure."""
     html = tmp_path / "html"
-    rc, text = tool("render.py", html, runs["out"] / "tiny.ipynb")
+    rc, text = tool("render.py", "--src", HERE, html, runs["out"] / "tiny.ipynb")
     assert rc == 0, text
     page = (html / "tiny.html").read_text()
     assert "https://" not in page.split("<style")[0] and 'src="require.min.js"' in page, "the page loads from the network"
