@@ -9,7 +9,8 @@ the course), with the tree's package first on PYTHONPATH; NOISELAB_LIB and
 NOISELAB pass through to the kernel as they are.  N notebooks run at once
 (default 2, the machine's cores), each in a process of its own, within a
 budget of S seconds (default 60) counted from the first cell's start to the
-last cell's end (the kernel's start is not the notebook's: it is not counted).  One line per notebook: its name, seconds, cells run, ok or
+last cell's end (the kernel's start is not the notebook's and is not
+counted).  One line per notebook: its name, seconds, cells run, ok or
 FAILED/OVERRUN, then for a failure the failing cell's first lines and the
 exception's last line.  --out DIR writes each executed notebook, outputs and
 all, to DIR/NAME.ipynb (make course renders those).  Exit status: 0 when
