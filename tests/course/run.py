@@ -162,17 +162,27 @@ def main():
     if args.out:
         os.makedirs(args.out, exist_ok=True)
         args.out = os.path.abspath(args.out)
+    def interrupted(signum, frame):
+        raise KeyboardInterrupt
+    signal.signal(signal.SIGTERM, interrupted)  # make's timeouts and kill: as Ctrl-C
     todo, running, bad = list(paths), [], 0
     t_all = time.monotonic()
-    while todo or running:
-        while todo and len(running) < args.jobs:
-            p = todo.pop(0)
-            running.append((p, start(p, args), time.monotonic()))
-        # wait for the oldest: they were started in order and share one budget
-        p, proc, t0 = running.pop(0)
-        res = finish(proc, t0, args.budget)
-        bad += res["status"] != "ok"
-        print(line(os.path.basename(p), res), flush=True)
+    try:
+        while todo or running:
+            while todo and len(running) < args.jobs:
+                p = todo.pop(0)
+                running.append((p, start(p, args), time.monotonic()))
+            # wait for the oldest: they were started in order and share one budget
+            p, proc, t0 = running[0]
+            res = finish(proc, t0, args.budget)
+            running.pop(0)
+            bad += res["status"] != "ok"
+            print(line(os.path.basename(p), res), flush=True)
+    except KeyboardInterrupt:
+        # the notebooks' processes are in sessions of their own: Ctrl-C does not reach their kernels
+        for _, proc, _ in running:
+            os.killpg(proc.pid, signal.SIGKILL)
+        raise
     print("course: %d notebooks, %d failed, %.1f s" % (len(paths), bad, time.monotonic() - t_all))
     return 1 if bad else 0
 
