@@ -1,6 +1,7 @@
 # noiselab: `make` builds bin/noiselab, build/libnoiselab.a and the shared
 # library; `make test` runs the tests; `make figures` reproduces the paper
-# figures; `make install` installs.  Every target first installs the missing
+# figures; `make course` runs and renders the course's notebooks;
+# `make install` installs.  Every target first installs the missing
 # Debian packages of deps.txt.
 
 # The version is written once, in core/version.h.
@@ -212,7 +213,8 @@ $(BUILD)/experiments/%: $(BUILD)/experiments/%.o $(LIB)
 # tests plan with FFTW_ESTIMATE, except the one comparing the two planners.
 # tests/doc/run.sh runs every command of README.md, docs/tour.md, docs/geostatistics.md,
 # docs/meuse.md (which needs R with sp and gstat), docs/scale-out.md, docs/validating.md and docs/expressions.md;
-# tests/mpi/run.sh the distributed tests under mpirun -np 1..4; python/tests the Python package (pytest).
+# tests/mpi/run.sh the distributed tests under mpirun -np 1..4; python/tests the Python package (pytest);
+# tests/course the course's tools, then `make course` runs and renders the course's notebooks.
 # test-api checks the installed headers and the libraries' exports.
 # Then tools/test-install.sh installs into a scratch DESTDIR and builds the
 # examples and the README's example against it with pkg-config alone.
@@ -224,10 +226,34 @@ test: all test-api gdal-off-check $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP
 	    "SHARD=1/2 sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite"
 	NOISELAB_FFTW=estimate sh tests/par.sh "SHARD=0/2 sh tests/doc/run.sh $(BINDIR)" "SHARD=1/2 sh tests/doc/run.sh $(BINDIR)"
 	sh tests/plots/run.sh
-	$(if $(findstring sanitize,$(OPT)),@echo "python: skipped (a sanitized library does not load into $(PYTHON))",NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) $(PYTHON) -m pytest -q -p no:cacheprovider -m "not slow" python/tests)
+	$(if $(findstring sanitize,$(OPT)),@echo "python: skipped (a sanitized library does not load into $(PYTHON))",NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) $(PYTHON) -m pytest -q -p no:cacheprovider -m "not slow" python/tests tests/course)
+	$(if $(findstring sanitize,$(OPT)),@echo "course: skipped (a sanitized library does not load into $(PYTHON))",@$(MAKE) --no-print-directory course)
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
 	MAKE="$(MAKE)" CC="$(CC)" EXAMPLE_CFLAGS="$(OPT)" VERSION=$(VERSION) WISDOM_SIZES=64 sh tools/test-install.sh
+
+# The course (docs/course/*.ipynb, docs/course/README.md): tests/course/clean.py
+# checks the committed notebooks are stripped and shaped as lessons;
+# tests/course/run.py executes them (two at a time, 60 s each at most) into
+# build/course/; tests/course/render.py renders those to build/course/html/
+# (offline pages and an index); tests/course/browser.py opens every page in
+# headless Chromium (no console error, every figure loaded) and saves
+# build/course/screenshots/.  make test runs it all (pytest tests/course
+# tests the tools themselves).
+COURSE_NB := $(sort $(wildcard docs/course/*.ipynb))
+COURSE    := $(BUILD)/course
+.PHONY: course
+course: $(BIN) $(SOLIB)
+ifeq ($(COURSE_NB),)
+	@echo "course: docs/course has no notebooks yet: nothing to run"
+else
+	$(PYTHON) tests/course/clean.py
+	rm -rf $(COURSE) && NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) \
+	    $(PYTHON) tests/course/run.py --out $(COURSE) $(COURSE_NB)
+	$(PYTHON) tests/course/render.py $(COURSE)/html $(addprefix $(COURSE)/,$(notdir $(COURSE_NB)))
+	$(PYTHON) tests/course/browser.py --shots $(COURSE)/screenshots --no-figure-ok index.html \
+	    $(COURSE)/html/index.html $(patsubst %.ipynb,$(COURSE)/html/%.html,$(notdir $(COURSE_NB)))
+endif
 
 # The slowest Criterion tests (suites named *_slow: sweeps over every model
 # kind and plan, comparisons with R that take seconds each), the Python
