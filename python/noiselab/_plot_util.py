@@ -216,22 +216,6 @@ def legend(ax, avoid=()):
     return place(ax, make, avoid)
 
 
-def textbox(ax, text_, avoid=()):
-    """A framed text box in ax, where it covers no data."""
-    from matplotlib.offsetbox import AnchoredText
-
-    def make(loc):
-        if isinstance(loc, tuple):
-            a = AnchoredText(text_, loc=loc[0], bbox_to_anchor=loc[1], bbox_transform=ax.transAxes,
-                             prop=dict(size="small"), borderpad=0.0)
-        else:
-            a = AnchoredText(text_, loc=loc if loc != "best" else "upper left", prop=dict(size="small"))
-        a.patch.set_alpha(0.85)
-        ax.add_artist(a)
-        return a
-    return place(ax, make, avoid)
-
-
 def colorbar(ax, mappable, label):
     """A labelled colour bar right of ax, as tall as its (aspect-kept) map:
     an inset of the axes, so that it follows the map's box."""

@@ -11,7 +11,7 @@ multi-panel ones).  Every axis is labelled with its unit in parentheses:
 `unit` names the length unit (default "samples" at spacing 1, else "length
 units"), `value_unit` the field's values (default: none, "value^2" for a
 variance); frequencies are in cycles per length unit; colour bars are
-labelled.  Legends and text boxes go where they cover the fewest plotted
+labelled.  Legends go where they cover the fewest plotted
 points (outside the axes, on the right, when no place inside is clear).
 
 Every number drawn comes from noiselab's own functions (acf with bands,
@@ -28,7 +28,7 @@ from ._dist import Dist, band_chisq, welch_edf
 from ._krige import _extent
 from ._model import Model
 from ._plot_util import (axes, colorbar, finish, legend, length_unit, map_figsize, overlay_points, per, per_dim,
-                         short_spec, squared, text, textbox, value_axis)
+                         short_spec, squared, text, value_axis)
 from ._plot_geo import conditional, kriging, variogram
 
 __all__ = ["field", "acf", "spectrum", "periodogram_welch", "histogram", "nonlinearity", "variogram", "kriging",
@@ -287,7 +287,7 @@ def histogram(fields, against=None, bins=50, ax=None, unit=None, label="value", 
     fields, noiselab.ensemble_hist) of the values.  With `against` (a law:
     "gauss", "laplace:a=1", ...): the law's density (noiselab.Dist(against)
     .pdf) and the verdict of noiselab.hist(..., against=, draws=) (of the
-    first field of a list) in a text box clear of the data: the overall
+    first field of a list) as the legend's last entry, clear of the data: the overall
     p-value and the test it comes from (the smallest).  `unit` is unused
     (the axis is in the values' unit, value_unit)."""
     fl = _fields(fields)
@@ -309,16 +309,22 @@ def histogram(fields, against=None, bins=50, ax=None, unit=None, label="value", 
     dens = counts / (n * np.diff(edges))
     ax_.bar(edges[:-1], dens, width=np.diff(edges), align="edge", color="C0", alpha=0.55, edgecolor="C0", lw=0.3,
             label="histogram of %d values" % mom["n"])
-    boxes = []
     if against is not None:
         pad = 0.05 * (edges[-1] - edges[0])
         y = np.linspace(edges[0] - pad, edges[-1] + pad, 400)
-        ax_.plot(y, law.pdf(y), "k-", lw=1.3, label="density of " + law.spec)
+        pdf = law.pdf(y)
+        ax_.plot(y, pdf, "k-", lw=1.3, label="density of " + law.spec)
+        # headroom above the bars and the curve: the legend and the verdict
+        # go in the upper corners, clear of the data
+        top = max(float(dens.max()), float(np.nanmax(pdf)) if np.isfinite(pdf).any() else 0.0)
+        ax_.set_ylim(0.0, 1.6 * top)
         t = r[3]
         verdict = "test against %s%s:\np = %.3g (%s, %d null draws)" % (
             law.spec, "" if len(fl) == 1 else " (field 1)", t["p"], t["p_from"], t["draws"])
-        boxes.append(legend(ax_))
-        textbox(ax_, verdict, avoid=boxes)
+        # the verdict is the legend's last entry (no handle): one box, clear
+        # of the bars in the headroom above them
+        ax_.plot([], [], " ", label=verdict)
+        legend(ax_)
     else:
         legend(ax_)
     finish(ax_, value_axis(label, vu), "probability density (per %s)" % (vu or "unit of %s" % label), title)

@@ -1,7 +1,7 @@
 #!/bin/sh
 # The documentation test: every command shown on the pages runs, as shown.
 #
-# usage: tests/doc/run.sh BINDIR [PAGE.md...]   (default: README.md docs/tour.md docs/geostatistics.md docs/meuse.md docs/scale-out.md docs/validating.md docs/expressions.md docs/formats.md)
+# usage: tests/doc/run.sh BINDIR [PAGE.md...]   (default: README.md docs/tour.md docs/geostatistics.md docs/meuse.md docs/scale-out.md docs/validating.md docs/expressions.md docs/formats.md docs/course/README.md)
 #
 # Each page's commands (tests/doc/extract.awk: the lines of its indented code
 # blocks) run in order, one `sh -c` each, in a fresh empty folder `try/`
@@ -40,7 +40,7 @@ si=${shard%/*} sn=${shard#*/}
 top=$(cd "$(dirname "$0")/../.." && pwd)
 bin=$(cd "$1" && pwd)
 shift
-[ $# -gt 0 ] || set -- "$top/README.md" "$top/docs/tour.md" "$top/docs/geostatistics.md" "$top/docs/meuse.md" "$top/docs/scale-out.md" "$top/docs/validating.md" "$top/docs/expressions.md" "$top/docs/formats.md"
+[ $# -gt 0 ] || set -- "$top/README.md" "$top/docs/tour.md" "$top/docs/geostatistics.md" "$top/docs/meuse.md" "$top/docs/scale-out.md" "$top/docs/validating.md" "$top/docs/expressions.md" "$top/docs/formats.md" "$top/docs/course/README.md"
 # docs/scale-out.md's mpirun lines, as CI runs them (root; 2 processes on 2 cores)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 secs=${CMD_SECONDS:-120}
