@@ -38,16 +38,25 @@ def code_cell(nb, text):
 
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory):
-    """One runner on tiny and a variant whose first check fails, one on a variant
-    that sleeps past a 4 s budget, side by side; their outputs."""
+    """One runner on tiny, a variant whose first check fails and two whose
+    slider breaks, one on a variant that sleeps past a 4 s budget, side by
+    side; their outputs."""
     tmp = tmp_path_factory.mktemp("runs")
     wrong = variant(tmp, "wrong-answer.ipynb",
                     lambda nb: setattr(code_cell(nb, "answer_1 ="), "source", "answer_1 = rho[7]"))
     # no imports: only the sleep can use the budget up, however loaded the machine
     slow = variant(tmp, "overrun.ipynb", lambda nb: setattr(nb, "cells", [
         nbformat.v4.new_code_cell("import time"), nbformat.v4.new_code_cell("time.sleep(120)")]))
+    # sliders: one that raises at its maximum, one that draws nothing at its minimum
+    def guard(cond, act):
+        def edit(nb):
+            c = code_cell(nb, "def draw(")
+            c.source = c.source.replace('    mm = noiselab', '    if %s:\n        %s\n    mm = noiselab' % (cond, act), 1)
+        return edit
+    breaks = variant(tmp, "slider-breaks.ipynb", guard("scale > 39", 'raise ValueError("scale too large")'))
+    blank = variant(tmp, "slider-blank.ipynb", guard("scale < 2", "return"))
     out = tmp / "executed"
-    a = subprocess.Popen([PY, os.path.join(HERE, "run.py"), "--out", out, TINY, wrong],
+    a = subprocess.Popen([PY, os.path.join(HERE, "run.py"), "--out", out, TINY, wrong, breaks, blank],
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     b = subprocess.Popen([PY, os.path.join(HERE, "run.py"), "--budget", "4", slow],
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
@@ -70,6 +79,17 @@ def test_runner_passes_tiny_and_fails_a_wrong_answer(runs):
     assert bad.startswith("FAILED"), text
     # the failing cell's first line and the assertion's message
     assert "| # closed form exp(-8/8)" in bad and "AssertionError: rho(8) should be exp(-1)" in bad, bad
+
+
+def test_runner_moves_every_slider(runs):
+    """Each slider is set to its minimum and maximum and back: a redraw that
+    raises or draws nothing fails the notebook, naming the slider's value."""
+    rc, text = runs["both"]
+    assert "3 slider moves (1 interact)" in report(text, "tiny.ipynb"), text
+    bad = report(text, "slider-breaks.ipynb")
+    assert bad.startswith("FAILED") and "draw() with scale = 40.0: ValueError: scale too large" in bad, text
+    bad = report(text, "slider-blank.ipynb")
+    assert bad.startswith("FAILED") and "draw() with scale = 1.0 drew no figure" in bad, text
 
 
 def test_runner_stops_a_notebook_past_its_budget(runs):
