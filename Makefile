@@ -226,7 +226,7 @@ test: all test-api gdal-off-check $(BUILD)/tests/run $(BUILD)/tests/finite $(EXP
 	    "SHARD=1/2 sh tests/bad/run.sh $(BIN) $(BUILD)/tests/finite"
 	NOISELAB_FFTW=estimate sh tests/par.sh "SHARD=0/2 sh tests/doc/run.sh $(BINDIR)" "SHARD=1/2 sh tests/doc/run.sh $(BINDIR)"
 	sh tests/plots/run.sh
-	$(if $(findstring sanitize,$(OPT)),@echo "python: skipped (a sanitized library does not load into $(PYTHON))",NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) $(PYTHON) -m pytest -q -p no:cacheprovider -m "not slow" python/tests tests/course)
+	$(if $(findstring sanitize,$(OPT)),@echo "python: skipped (a sanitized library does not load into $(PYTHON))",NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) $(PYTHON) -m pytest -q -p no:cacheprovider -m "not heavy" python/tests tests/course)
 	$(if $(findstring sanitize,$(OPT)),@echo "course: skipped (a sanitized library does not load into $(PYTHON))",@$(MAKE) --no-print-directory course)
 	NOISELAB=$(abspath $(BIN)) NOISELAB_EXPERIMENTS=$(abspath $(BUILD)/experiments) \
 	    sh experiments/quick.sh $(BUILD)/quick-figures
@@ -257,13 +257,13 @@ endif
 
 # The slowest Criterion tests (suites named *_slow: sweeps over every model
 # kind and plan, comparisons with R that take seconds each), the Python
-# tests marked slow, and the distributed tests on 1 and 4 processes (make
+# tests marked heavy, and the distributed tests on 1 and 4 processes (make
 # test runs them on 2 and 3), kept out of `make test`'s 10 minutes; CI
 # (.ci/run) runs them after it.
 test-slow: all $(BUILD)/tests/run $(MPITEST_BIN)
 	NOISELAB_FFTW=estimate NOISELAB=$(abspath $(BIN)) $(BUILD)/tests/run --jobs 2 --filter '*_slow/*'
 	MPI_NPS="1 4" NOISELAB_FFTW=estimate sh tests/mpi/run.sh $(BINDIR) $(BUILD)/tests/mpi
-	NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) $(PYTHON) -m pytest -q -p no:cacheprovider -m slow python/tests
+	NOISELAB=$(abspath $(BIN)) NOISELAB_LIB=$(abspath $(SOLIB)) $(PYTHON) -m pytest -q -p no:cacheprovider -m heavy python/tests
 .PHONY: test-slow
 
 # The installed API: every installed header compiles alone as C and as C++

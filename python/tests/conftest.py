@@ -19,7 +19,7 @@ sys.path.insert(0, os.path.join(TOP, "python"))
 
 
 def pytest_configure(config):
-    config.addinivalue_line("markers", "slow: tens of seconds: run by make test-slow, not make test")
+    config.addinivalue_line("markers", "heavy: tens of seconds: run by make test-slow, not make test")
 
 
 def cli_path():

@@ -42,7 +42,7 @@ def ensemble(axis):
     return lag, mean, se, target
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_ensemble_acf_within_band():
     for axis in ("x", "y"):
         lag, mean, se, target = ensemble(axis)

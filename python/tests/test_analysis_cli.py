@@ -85,7 +85,7 @@ def test_hist_against(cli, field):
         noiselab.hist(f, against="gauss", draws=1)
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_check(cli):
     j = js(cli, "check", "--acf", "oscillatory:scale=4,omega=2", "--dim", "2")
     c = noiselab.check(acf="oscillatory:scale=4,omega=2", dim=2)
@@ -173,7 +173,7 @@ def test_models(cli):
         assert n in out
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_fit_ml_points(cli, tmp_path):
     f = noiselab.synth("fft", acf="markov:scale=6", size=(64, 64), seed=11)
     rng = np.random.default_rng(3)

@@ -124,7 +124,7 @@ def test_bad_input_raises(call, words, tmp_path, monkeypatch):
     assert str(e.value)  # a message, always
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_clean_exit_after_threaded_fft():
     """The interpreter exits cleanly after FFTW ran on OpenMP threads: the
     library must stay mapped while their idle workers live (cffi would

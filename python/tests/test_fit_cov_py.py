@@ -31,7 +31,7 @@ def meuse(tmp_path_factory):
     return np.ascontiguousarray(t[:, :2]), t[:, 2].copy(), t[:, 3].copy(), str(path)
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_reml_sdist_equals_python(cli, meuse):
     pts, z, sdist, path = meuse
     j = json.loads(cli("fit", path, "--model", "spherical", "--nugget", "--method", "reml", "--drift", "sdist",

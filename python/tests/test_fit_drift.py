@@ -18,7 +18,7 @@ def data():
     return pts, val
 
 
-@pytest.mark.slow
+@pytest.mark.heavy
 def test_linear_drift_equals_cli(cli, tmp_path, data):
     pts, val = data
     path = tmp_path / "p.tsv"
